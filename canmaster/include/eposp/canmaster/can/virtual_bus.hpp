@@ -1,0 +1,117 @@
+#pragma once
+
+#include "eposp/canmaster/can/port.hpp"
+#include "eposp/core/event_loop.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace eposp::can {
+
+struct BusConfig {
+    std::string name = "can0";         ///< the interface name traces record
+    std::uint32_t bitrate = 1'000'000; ///< bit/s: one of CiA 301's rates, 10 kbit/s ... 1 Mbit/s
+    std::size_t tx_queue_capacity = 64;
+    std::size_t rx_queue_capacity = 64;
+};
+
+/// Something that passed the wire: a frame that was received, or an error frame signalled
+/// while a frame was being sent. Traces and statistics are built from these.
+struct WireEvent {
+    core::TimePoint start; ///< start of frame
+    core::TimePoint end;   ///< end of frame: the time a receiver timestamps it
+    Frame frame;           ///< `frame.error` is set for an error frame
+    std::string_view sender;
+};
+
+struct BusStatistics {
+    std::uint64_t frames = 0;         ///< frames that reached their receivers
+    std::uint64_t error_frames = 0;   ///< error frames signalled
+    std::uint64_t dropped_frames = 0; ///< frames lost by fault injection
+    std::uint64_t bits = 0;           ///< bit times the bus was busy, stuff bits included
+    std::uint64_t stuff_bits = 0;
+    core::Duration busy{};    ///< time the bus was not idle
+    core::Duration elapsed{}; ///< time since the bus was created
+    /// busy / elapsed, 0..1
+    double load() const;
+};
+
+struct PortStatistics {
+    std::uint64_t tx_frames = 0;
+    std::uint64_t rx_frames = 0;
+    std::uint64_t tx_overflows = 0; ///< frames refused because the transmit queue was full
+    std::uint64_t rx_overflows = 0; ///< frames lost because the receive queue was full
+    unsigned transmit_error_counter = 0;
+    unsigned receive_error_counter = 0;
+    ErrorState state = ErrorState::Active;
+};
+
+class VirtualBus;
+
+/// A node's controller on a VirtualBus. Destroying it detaches it from the bus.
+class VirtualPort final : public Port {
+public:
+    ~VirtualPort() override;
+    VirtualPort(const VirtualPort&) = delete;
+    VirtualPort& operator=(const VirtualPort&) = delete;
+
+    SendStatus send(const Frame& frame) override;
+    ErrorState error_state() const override;
+    std::string_view name() const override { return name_; }
+
+    PortStatistics statistics() const;
+
+    /// While paused (a reader that cannot keep up), received frames wait in the receive queue;
+    /// beyond its capacity they are lost and counted as receive overflows. Resuming delivers
+    /// the queued frames in order.
+    void pause_receive(bool paused);
+
+    class Impl;
+
+private:
+    friend class VirtualBus;
+    VirtualPort(VirtualBus& bus, std::string name);
+
+    VirtualBus* bus_;
+    std::string name_;
+    std::unique_ptr<Impl> impl_;
+};
+
+/// An in-process CAN bus on the event loop: identifier arbitration between the ports that want
+/// to send, each frame occupying the wire for its true duration at the bit rate (stuff bits
+/// counted from the frame's actual bits, interframe space included), per-port queues, error
+/// confinement and fault injection.
+class VirtualBus {
+public:
+    using Observer = std::function<void(const WireEvent&)>;
+    using ObserverId = std::uint64_t;
+    using FrameFilter = std::function<bool(const Frame&)>;
+
+    VirtualBus(core::EventLoop& loop, BusConfig config = {});
+    ~VirtualBus();
+    VirtualBus(const VirtualBus&) = delete;
+    VirtualBus& operator=(const VirtualBus&) = delete;
+
+    /// Attaches a new controller named `name` (for statistics and traces).
+    std::unique_ptr<VirtualPort> connect(std::string name);
+
+    const BusConfig& config() const { return config_; }
+    core::EventLoop& loop() const { return loop_; }
+    core::Duration bit_time() const;
+    BusStatistics statistics() const;
+
+    ObserverId add_observer(Observer observer);
+    void remove_observer(ObserverId id);
+
+    class Impl;
+
+private:
+    friend class VirtualPort;
+    core::EventLoop& loop_;
+    BusConfig config_;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace eposp::can

@@ -1,0 +1,57 @@
+# Helpers that give every target of ours the same language level, warnings and sanitizers.
+# Third-party and generated code never goes through these, so it keeps its own flags.
+
+set(EPOSP_WARNINGS -Wall -Wextra -Wpedantic -Werror -Wshadow -Wnon-virtual-dtor -Wconversion
+    -Wno-sign-conversion)
+set(EPOSP_SANITIZERS -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+
+function(eposp_apply_defaults target scope)
+    target_compile_features(${target} ${scope} cxx_std_20)
+    if(NOT scope STREQUAL "INTERFACE")
+        target_compile_options(${target} PRIVATE ${EPOSP_WARNINGS})
+    endif()
+    if(EPOSP_SANITIZE)
+        if(NOT scope STREQUAL "INTERFACE")
+            target_compile_options(${target} PRIVATE ${EPOSP_SANITIZERS})
+        endif()
+        target_link_options(${target} ${scope} ${EPOSP_SANITIZERS})
+    endif()
+endfunction()
+
+# eposp_add_library(<folder> [SOURCES ...] [DEPENDS ...]) defines eposp::<folder> with its public
+# headers in <folder>/include. A folder without sources yet is an INTERFACE library.
+function(eposp_add_library name)
+    cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+    set(target eposp_${name})
+    if(ARG_SOURCES)
+        add_library(${target} STATIC ${ARG_SOURCES})
+        set(scope PUBLIC)
+    else()
+        add_library(${target} INTERFACE)
+        set(scope INTERFACE)
+    endif()
+    add_library(eposp::${name} ALIAS ${target})
+    target_include_directories(${target} ${scope} ${CMAKE_CURRENT_SOURCE_DIR}/include)
+    target_link_libraries(${target} ${scope} ${ARG_DEPENDS})
+    eposp_apply_defaults(${target} ${scope})
+endfunction()
+
+# eposp_add_executable(<name> SOURCES ... [DEPENDS ...])
+function(eposp_add_executable name)
+    cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+    add_executable(${name} ${ARG_SOURCES})
+    target_link_libraries(${name} PRIVATE ${ARG_DEPENDS})
+    eposp_apply_defaults(${name} PRIVATE)
+endfunction()
+
+# eposp_add_test_suite(<folder> SOURCES ... [DEPENDS ...]): one GoogleTest binary per top-level
+# folder, each test registered with CTest and labelled with the folder (ctest -L <folder>).
+function(eposp_add_test_suite folder)
+    cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+    set(target eposp_${folder}_tests)
+    eposp_add_executable(${target} SOURCES ${ARG_SOURCES}
+        DEPENDS ${ARG_DEPENDS} GTest::gtest_main GTest::gmock)
+    target_compile_definitions(${target} PRIVATE
+        EPOSP_SOURCE_DIR="${PROJECT_SOURCE_DIR}" EPOSP_BINARY_DIR="${PROJECT_BINARY_DIR}")
+    gtest_discover_tests(${target} PROPERTIES LABELS ${folder} DISCOVERY_TIMEOUT 60)
+endfunction()

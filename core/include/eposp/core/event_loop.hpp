@@ -1,0 +1,118 @@
+#pragma once
+
+#include "eposp/core/time.hpp"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+namespace boost::asio {
+class io_context;
+}
+
+namespace eposp::core {
+
+/// How the loop's clock advances (docs/architecture.md, "One clock, two speeds").
+enum class Pace {
+    Virtual,  ///< jump from event to event as fast as the CPU allows; deterministic
+    RealTime, ///< follow the wall clock and wait on file descriptors while no event is due
+};
+
+/// Identifies a scheduled callback so that it can be cancelled. The value 0 is never used.
+struct TimerId {
+    std::uint64_t value = 0;
+    explicit operator bool() const { return value != 0; }
+    friend bool operator==(TimerId, TimerId) = default;
+};
+
+class TimerQueue;
+
+/// The one discrete-event loop that everything with time is scheduled on: task cycles, SYNC,
+/// heartbeats, bus frame times, drive control loops. Events at the same instant run in the
+/// order they were scheduled, so a virtual run is bit-for-bit repeatable.
+///
+/// Single-threaded: every member is called from the thread that runs the loop, except stop().
+class EventLoop {
+public:
+    using Callback = std::function<void()>;
+
+    explicit EventLoop(Pace pace = Pace::Virtual);
+    ~EventLoop();
+    EventLoop(const EventLoop&) = delete;
+    EventLoop& operator=(const EventLoop&) = delete;
+
+    Pace pace() const { return pace_; }
+    TimePoint now() const;
+
+    /// Runs `fn` at `when`; a time in the past means "now, after what is already due".
+    TimerId at(TimePoint when, Callback fn);
+    TimerId after(Duration delay, Callback fn);
+    /// Runs `fn` at `first`, `first + period`, `first + 2*period`, ... The times are computed
+    /// from the schedule, not from when the callback ran, so the timer never drifts.
+    TimerId every(Duration period, TimePoint first, Callback fn);
+    /// As above with the first run one period from now.
+    TimerId every(Duration period, Callback fn);
+    /// Runs `fn` now, after the events already due (a deferred call).
+    TimerId post(Callback fn) { return after(Duration::zero(), std::move(fn)); }
+
+    /// Cancels a pending timer; safe from within its own callback. Returns false when the timer
+    /// already ran (one-shot) or was cancelled before.
+    bool cancel(TimerId id);
+    bool pending(TimerId id) const;
+    /// Number of timers scheduled and not cancelled.
+    std::size_t pending_count() const;
+
+    /// Runs events until `end` (inclusive) or stop(); afterwards now() == end unless stopped.
+    /// Returns the number of timer callbacks run.
+    std::uint64_t run_until(TimePoint end);
+    std::uint64_t run_for(Duration d) { return run_until(now() + d); }
+    /// Virtual pace: until no event is left. Real-time pace: until stop().
+    std::uint64_t run();
+
+    /// Makes the running run_*() return after the current callback. Thread-safe, so a signal
+    /// watcher or another thread may call it.
+    void stop();
+    bool stop_requested() const { return stop_requested_.load(); }
+
+    /// The Boost.Asio context that components waiting on file descriptors (sockets, serial
+    /// ports, SocketCAN) use. Its handlers run inside run_*(), interleaved with timer events:
+    /// in real-time pace the loop blocks in it while no event is due, in virtual pace it is
+    /// polled between events.
+    boost::asio::io_context& io();
+
+private:
+    void dispatch_next();
+    void run_virtual(TimePoint end);
+    void run_real_time(TimePoint end);
+    TimePoint wall_now() const;
+
+    Pace pace_;
+    mutable TimePoint now_{};
+    bool dispatching_ = false;
+    std::atomic<bool> stop_requested_{false};
+    std::uint64_t dispatched_ = 0;
+    std::unique_ptr<TimerQueue> timers_;
+    std::unique_ptr<boost::asio::io_context> io_;
+    std::chrono::steady_clock::time_point wall_origin_;
+};
+
+/// Owns a timer and cancels it when destroyed, so that a callback never outlives its object.
+class ScopedTimer {
+public:
+    ScopedTimer() = default;
+    ScopedTimer(EventLoop& loop, TimerId id) : loop_(&loop), id_(id) {}
+    ScopedTimer(ScopedTimer&& other) noexcept;
+    ScopedTimer& operator=(ScopedTimer&& other) noexcept;
+    ~ScopedTimer() { cancel(); }
+
+    void cancel();
+    bool pending() const { return loop_ && loop_->pending(id_); }
+    TimerId id() const { return id_; }
+
+private:
+    EventLoop* loop_ = nullptr;
+    TimerId id_{};
+};
+
+} // namespace eposp::core

@@ -1,0 +1,156 @@
+#include "eposp/core/event_loop.hpp"
+
+#include "timer_queue.hpp"
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/post.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+namespace eposp::core {
+
+EventLoop::EventLoop(Pace pace)
+    : pace_(pace), timers_(std::make_unique<TimerQueue>()),
+      wall_origin_(std::chrono::steady_clock::now()) {}
+
+EventLoop::~EventLoop() = default;
+
+TimePoint EventLoop::wall_now() const {
+    return TimePoint{std::chrono::duration_cast<Duration>(std::chrono::steady_clock::now() -
+                                                          wall_origin_)};
+}
+
+TimePoint EventLoop::now() const {
+    // In real time, code outside a timer callback (an I/O handler, the caller before run())
+    // sees the wall clock; a timer callback sees its scheduled time unless something already
+    // saw a later wall time: the clock never goes backwards.
+    if (pace_ == Pace::RealTime && !dispatching_) {
+        now_ = std::max(now_, wall_now());
+    }
+    return now_;
+}
+
+TimerId EventLoop::at(TimePoint when, Callback fn) {
+    return timers_->schedule(std::max(when, now()), Duration::zero(), std::move(fn));
+}
+
+TimerId EventLoop::after(Duration delay, Callback fn) { return at(now() + delay, std::move(fn)); }
+
+TimerId EventLoop::every(Duration period, TimePoint first, Callback fn) {
+    if (period <= Duration::zero()) {
+        throw std::invalid_argument("EventLoop::every: the period must be positive");
+    }
+    return timers_->schedule(std::max(first, now()), period, std::move(fn));
+}
+
+TimerId EventLoop::every(Duration period, Callback fn) {
+    return every(period, now() + period, std::move(fn));
+}
+
+bool EventLoop::cancel(TimerId id) { return timers_->cancel(id); }
+bool EventLoop::pending(TimerId id) const { return timers_->pending(id); }
+std::size_t EventLoop::pending_count() const { return timers_->size(); }
+
+boost::asio::io_context& EventLoop::io() {
+    if (!io_) {
+        io_ = std::make_unique<boost::asio::io_context>(1);
+    }
+    return *io_;
+}
+
+void EventLoop::stop() {
+    stop_requested_ = true;
+    if (io_) {
+        boost::asio::post(*io_, [] {}); // wakes a real-time loop blocked in the io_context
+    }
+}
+
+void EventLoop::dispatch_next() {
+    dispatching_ = true;
+    timers_->run_next([this](TimePoint when) { now_ = std::max(now_, when); });
+    dispatching_ = false;
+    ++dispatched_;
+}
+
+std::uint64_t EventLoop::run_until(TimePoint end) {
+    stop_requested_ = false;
+    const std::uint64_t before = dispatched_;
+    if (pace_ == Pace::Virtual) {
+        run_virtual(end);
+    } else {
+        run_real_time(end);
+    }
+    return dispatched_ - before;
+}
+
+std::uint64_t EventLoop::run() { return run_until(TimePoint::max()); }
+
+void EventLoop::run_virtual(TimePoint end) {
+    while (!stop_requested_) {
+        if (io_) {
+            io_->poll();
+        }
+        const auto next = timers_->next_time();
+        if (!next || *next > end) {
+            if (end != TimePoint::max()) {
+                now_ = std::max(now_, end);
+            }
+            return;
+        }
+        dispatch_next();
+    }
+}
+
+void EventLoop::run_real_time(TimePoint end) {
+    auto& context = io();
+    auto work = boost::asio::make_work_guard(context);
+    context.restart();
+    while (!stop_requested_) {
+        context.poll();
+        if (stop_requested_) {
+            return;
+        }
+        const auto next = timers_->next_time();
+        const TimePoint target = next ? std::min(*next, end) : end;
+        if (target > wall_now()) {
+            // Block on file descriptors until the target time; an I/O handler may schedule an
+            // earlier event, so the target is computed again after every handler.
+            const auto wall_deadline =
+                target == TimePoint::max()
+                    ? std::chrono::steady_clock::time_point::max()
+                    : wall_origin_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                         target.time_since_epoch());
+            context.run_one_until(wall_deadline);
+            continue;
+        }
+        if (next && *next <= end) {
+            dispatch_next();
+        } else {
+            return; // reached `end`
+        }
+    }
+}
+
+ScopedTimer::ScopedTimer(ScopedTimer&& other) noexcept
+    : loop_(std::exchange(other.loop_, nullptr)), id_(std::exchange(other.id_, TimerId{})) {}
+
+ScopedTimer& ScopedTimer::operator=(ScopedTimer&& other) noexcept {
+    if (this != &other) {
+        cancel();
+        loop_ = std::exchange(other.loop_, nullptr);
+        id_ = std::exchange(other.id_, TimerId{});
+    }
+    return *this;
+}
+
+void ScopedTimer::cancel() {
+    if (loop_ && id_) {
+        loop_->cancel(id_);
+    }
+    id_ = TimerId{};
+}
+
+} // namespace eposp::core

@@ -1,0 +1,3 @@
+#include "eposp/device/cli.hpp"
+
+int main(int argc, char** argv) { return eposp::device::run_cli(argc, argv); }

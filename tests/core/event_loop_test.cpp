@@ -1,0 +1,200 @@
+#include "eposp/core/event_loop.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+namespace eposp::core {
+namespace {
+
+using namespace std::chrono_literals;
+
+TimePoint at_ns(std::int64_t ns) { return TimePoint{Duration{ns}}; }
+
+TEST(EventLoop, VirtualClockJumpsToEachEventAndThenToTheEnd) {
+    EventLoop loop;
+    std::vector<TimePoint> seen;
+    loop.after(5ms, [&] { seen.push_back(loop.now()); });
+    loop.after(1ms, [&] { seen.push_back(loop.now()); });
+    EXPECT_EQ(loop.run_for(10ms), 2U);
+    EXPECT_EQ(seen, (std::vector{TimePoint{1ms}, TimePoint{5ms}}));
+    EXPECT_EQ(loop.now(), TimePoint{10ms});
+}
+
+TEST(EventLoop, EventsAtTheSameInstantRunInSchedulingOrder) {
+    EventLoop loop;
+    std::string order;
+    loop.at(at_ns(100), [&] { order += 'a'; });
+    loop.at(at_ns(100), [&] { order += 'b'; });
+    loop.at(at_ns(50), [&] {
+        order += 'x';
+        loop.at(at_ns(100), [&] { order += 'c'; }); // scheduled later, so it runs later
+    });
+    loop.run();
+    EXPECT_EQ(order, "xabc");
+}
+
+TEST(EventLoop, NanosecondResolution) {
+    EventLoop loop;
+    TimePoint fired{};
+    loop.at(at_ns(1), [&] { fired = loop.now(); });
+    loop.run();
+    EXPECT_EQ(fired, at_ns(1));
+}
+
+TEST(EventLoop, TimeInThePastRunsNowAndNeverGoesBackwards) {
+    EventLoop loop;
+    loop.run_for(10ms);
+    TimePoint fired{};
+    loop.at(TimePoint{1ms}, [&] { fired = loop.now(); });
+    loop.run();
+    EXPECT_EQ(fired, TimePoint{10ms});
+}
+
+TEST(EventLoop, CancelledTimerDoesNotRun) {
+    EventLoop loop;
+    bool ran = false;
+    const TimerId id = loop.after(1ms, [&] { ran = true; });
+    EXPECT_TRUE(loop.pending(id));
+    EXPECT_TRUE(loop.cancel(id));
+    EXPECT_FALSE(loop.cancel(id));
+    loop.run();
+    EXPECT_FALSE(ran);
+    EXPECT_EQ(loop.pending_count(), 0U);
+}
+
+TEST(EventLoop, OneShotIsNoLongerPendingAfterItRan) {
+    EventLoop loop;
+    const TimerId id = loop.after(1ms, [] {});
+    loop.run();
+    EXPECT_FALSE(loop.pending(id));
+    EXPECT_FALSE(loop.cancel(id));
+}
+
+TEST(EventLoop, PeriodicTimerCanCancelItselfFromItsCallback) {
+    EventLoop loop;
+    int runs = 0;
+    TimerId id;
+    id = loop.every(1ms, [&] {
+        if (++runs == 3) {
+            loop.cancel(id);
+        }
+    });
+    loop.run_for(1s);
+    EXPECT_EQ(runs, 3);
+}
+
+TEST(EventLoop, PeriodicTimerHasNoDriftOverAMillionPeriods) {
+    EventLoop loop;
+    // 333'333 ns is not a divisor of any larger unit: rounding anywhere would show.
+    constexpr Duration kPeriod{333'333};
+    std::int64_t runs = 0;
+    bool on_schedule = true;
+    loop.every(kPeriod, TimePoint{kPeriod}, [&] {
+        ++runs;
+        on_schedule = on_schedule && loop.now() == TimePoint{kPeriod * runs};
+    });
+    loop.run_until(TimePoint{kPeriod * 1'000'000});
+    EXPECT_EQ(runs, 1'000'000);
+    EXPECT_TRUE(on_schedule);
+}
+
+TEST(EventLoop, PeriodicTimerStaysOnScheduleWhenOtherEventsInterleave) {
+    EventLoop loop;
+    std::vector<TimePoint> ticks;
+    loop.every(1ms, [&] { ticks.push_back(loop.now()); });
+    loop.every(Duration{700'001}, [] {});
+    loop.run_for(5ms);
+    EXPECT_EQ(ticks, (std::vector{TimePoint{1ms}, TimePoint{2ms}, TimePoint{3ms}, TimePoint{4ms},
+                                  TimePoint{5ms}}));
+}
+
+TEST(EventLoop, EveryRejectsANonPositivePeriod) {
+    EventLoop loop;
+    EXPECT_THROW(loop.every(Duration::zero(), [] {}), std::invalid_argument);
+}
+
+TEST(EventLoop, StopReturnsAfterTheCurrentCallback) {
+    EventLoop loop;
+    int runs = 0;
+    loop.every(1ms, [&] {
+        if (++runs == 4) {
+            loop.stop();
+        }
+    });
+    loop.run_for(1s);
+    EXPECT_EQ(runs, 4);
+    EXPECT_EQ(loop.now(), TimePoint{4ms});
+    loop.run_for(2ms); // a new run starts afresh
+    EXPECT_EQ(runs, 6);
+}
+
+TEST(EventLoop, RunReturnsWhenNoEventIsLeft) {
+    EventLoop loop;
+    loop.after(3s, [] {});
+    EXPECT_EQ(loop.run(), 1U);
+    EXPECT_EQ(loop.now(), TimePoint{3s});
+}
+
+TEST(EventLoop, ScopedTimerCancelsOnDestruction) {
+    EventLoop loop;
+    bool ran = false;
+    {
+        ScopedTimer timer(loop, loop.after(1ms, [&] { ran = true; }));
+        EXPECT_TRUE(timer.pending());
+    }
+    loop.run();
+    EXPECT_FALSE(ran);
+}
+
+TEST(EventLoop, ScopedTimerMoveKeepsOneOwner) {
+    EventLoop loop;
+    int runs = 0;
+    ScopedTimer outer;
+    {
+        ScopedTimer inner(loop, loop.every(1ms, [&] { ++runs; }));
+        outer = std::move(inner);
+    }
+    loop.run_for(3ms);
+    EXPECT_EQ(runs, 3);
+    outer.cancel();
+    loop.run_for(3ms);
+    EXPECT_EQ(runs, 3);
+}
+
+// A workload with timers scheduling, cancelling and re-arming each other, driven by a seeded
+// generator: the trace of (time, event) must be identical on every run.
+std::vector<std::pair<std::int64_t, int>> random_workload_trace(unsigned seed) {
+    EventLoop loop;
+    std::mt19937 random(seed);
+    std::vector<std::pair<std::int64_t, int>> trace;
+    std::vector<TimerId> ids;
+    for (int i = 0; i < 200; ++i) {
+        const Duration delay{std::uniform_int_distribution<std::int64_t>(0, 1'000'000)(random)};
+        ids.push_back(loop.after(delay, [&, i] {
+            trace.emplace_back(loop.now().time_since_epoch().count(), i);
+            const Duration next{std::uniform_int_distribution<std::int64_t>(0, 50'000)(random)};
+            if (i % 3 == 0) {
+                loop.after(next, [&, i] { trace.emplace_back(loop.now().time_since_epoch().count(), -i); });
+            }
+            if (i % 7 == 0 && !ids.empty()) {
+                loop.cancel(ids[random() % ids.size()]);
+            }
+        }));
+    }
+    loop.every(Duration{12'345}, [&] { trace.emplace_back(loop.now().time_since_epoch().count(), 1000); });
+    loop.run_for(2ms);
+    return trace;
+}
+
+TEST(EventLoop, VirtualRunsAreDeterministic) {
+    const auto first = random_workload_trace(42);
+    const auto second = random_workload_trace(42);
+    EXPECT_GT(first.size(), 300U);
+    EXPECT_EQ(first, second);
+}
+
+} // namespace
+} // namespace eposp::core
