@@ -2,11 +2,10 @@
 
 #include "timer_queue.hpp"
 
+#include <algorithm>
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
-
-#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -19,8 +18,8 @@ EventLoop::EventLoop(Pace pace)
 EventLoop::~EventLoop() = default;
 
 TimePoint EventLoop::wall_now() const {
-    return TimePoint{std::chrono::duration_cast<Duration>(std::chrono::steady_clock::now() -
-                                                          wall_origin_)};
+    return TimePoint{
+        std::chrono::duration_cast<Duration>(std::chrono::steady_clock::now() - wall_origin_)};
 }
 
 TimePoint EventLoop::now() const {
@@ -37,7 +36,9 @@ TimerId EventLoop::at(TimePoint when, Callback fn) {
     return timers_->schedule(std::max(when, now()), Duration::zero(), std::move(fn));
 }
 
-TimerId EventLoop::after(Duration delay, Callback fn) { return at(now() + delay, std::move(fn)); }
+TimerId EventLoop::after(Duration delay, Callback fn) {
+    return at(now() + delay, std::move(fn));
+}
 
 TimerId EventLoop::every(Duration period, TimePoint first, Callback fn) {
     if (period <= Duration::zero()) {
@@ -50,9 +51,15 @@ TimerId EventLoop::every(Duration period, Callback fn) {
     return every(period, now() + period, std::move(fn));
 }
 
-bool EventLoop::cancel(TimerId id) { return timers_->cancel(id); }
-bool EventLoop::pending(TimerId id) const { return timers_->pending(id); }
-std::size_t EventLoop::pending_count() const { return timers_->size(); }
+bool EventLoop::cancel(TimerId id) {
+    return timers_->cancel(id);
+}
+bool EventLoop::pending(TimerId id) const {
+    return timers_->pending(id);
+}
+std::size_t EventLoop::pending_count() const {
+    return timers_->size();
+}
 
 boost::asio::io_context& EventLoop::io() {
     if (!io_) {
@@ -86,7 +93,9 @@ std::uint64_t EventLoop::run_until(TimePoint end) {
     return dispatched_ - before;
 }
 
-std::uint64_t EventLoop::run() { return run_until(TimePoint::max()); }
+std::uint64_t EventLoop::run() {
+    return run_until(TimePoint::max());
+}
 
 void EventLoop::run_virtual(TimePoint end) {
     while (!stop_requested_) {
@@ -121,8 +130,9 @@ void EventLoop::run_real_time(TimePoint end) {
             const auto wall_deadline =
                 target == TimePoint::max()
                     ? std::chrono::steady_clock::time_point::max()
-                    : wall_origin_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                         target.time_since_epoch());
+                    : wall_origin_ +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              target.time_since_epoch());
             context.run_one_until(wall_deadline);
             continue;
         }

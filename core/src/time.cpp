@@ -3,7 +3,6 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-
 #include <fmt/format.h>
 
 namespace eposp::core {
@@ -16,8 +15,12 @@ struct Unit {
 
 // Longest suffixes first so that "ms" is not read as "m" followed by garbage.
 constexpr std::array kUnits{
-    Unit{"ns", 1},          Unit{"us", 1'000},           Unit{"ms", 1'000'000},
-    Unit{"s", 1'000'000'000}, Unit{"m", 60'000'000'000}, Unit{"h", 3'600'000'000'000},
+    Unit{"ns", 1},
+    Unit{"us", 1'000},
+    Unit{"ms", 1'000'000},
+    Unit{"s", 1'000'000'000},
+    Unit{"m", 60'000'000'000},
+    Unit{"h", 3'600'000'000'000},
 };
 
 } // namespace

@@ -11,7 +11,9 @@ TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callbac
     return TimerId{id};
 }
 
-bool TimerQueue::cancel(TimerId id) { return entries_.erase(id.value) > 0; }
+bool TimerQueue::cancel(TimerId id) {
+    return entries_.erase(id.value) > 0;
+}
 
 void TimerQueue::push(TimePoint when, std::uint64_t id) {
     heap_.push(Slot{when, next_sequence_++, id});

@@ -1,3 +1,5 @@
 #include "eposp/device/cli.hpp"
 
-int main(int argc, char** argv) { return eposp::device::run_cli(argc, argv); }
+int main(int argc, char** argv) {
+    return eposp::device::run_cli(argc, argv);
+}

@@ -19,8 +19,8 @@ void BM_PeriodicTimers(benchmark::State& state) {
         }
         loop.run_for(std::chrono::milliseconds(100));
         benchmark::DoNotOptimize(fired);
-        state.counters["events"] =
-            benchmark::Counter(static_cast<double>(fired), benchmark::Counter::kIsIterationInvariantRate);
+        state.counters["events"] = benchmark::Counter(
+            static_cast<double>(fired), benchmark::Counter::kIsIterationInvariantRate);
     }
 }
 BENCHMARK(BM_PeriodicTimers)->Arg(1)->Arg(8)->Arg(64);

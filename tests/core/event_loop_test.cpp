@@ -1,7 +1,6 @@
 #include "eposp/core/event_loop.hpp"
 
 #include <gtest/gtest.h>
-
 #include <random>
 #include <string>
 #include <vector>
@@ -11,7 +10,9 @@ namespace {
 
 using namespace std::chrono_literals;
 
-TimePoint at_ns(std::int64_t ns) { return TimePoint{Duration{ns}}; }
+TimePoint at_ns(std::int64_t ns) {
+    return TimePoint{Duration{ns}};
+}
 
 TEST(EventLoop, VirtualClockJumpsToEachEventAndThenToTheEnd) {
     EventLoop loop;
@@ -177,14 +178,17 @@ std::vector<std::pair<std::int64_t, int>> random_workload_trace(unsigned seed) {
             trace.emplace_back(loop.now().time_since_epoch().count(), i);
             const Duration next{std::uniform_int_distribution<std::int64_t>(0, 50'000)(random)};
             if (i % 3 == 0) {
-                loop.after(next, [&, i] { trace.emplace_back(loop.now().time_since_epoch().count(), -i); });
+                loop.after(next, [&, i] {
+                    trace.emplace_back(loop.now().time_since_epoch().count(), -i);
+                });
             }
             if (i % 7 == 0 && !ids.empty()) {
                 loop.cancel(ids[random() % ids.size()]);
             }
         }));
     }
-    loop.every(Duration{12'345}, [&] { trace.emplace_back(loop.now().time_since_epoch().count(), 1000); });
+    loop.every(Duration{12'345},
+               [&] { trace.emplace_back(loop.now().time_since_epoch().count(), 1000); });
     loop.run_for(2ms);
     return trace;
 }

@@ -2,14 +2,13 @@
 // here are a few milliseconds of the loop's own blocking, never a sleep.
 #include "eposp/core/event_loop.hpp"
 
+#include <array>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/local/connect_pair.hpp>
 #include <boost/asio/local/stream_protocol.hpp>
 #include <boost/asio/read.hpp>
 #include <boost/asio/write.hpp>
 #include <gtest/gtest.h>
-
-#include <array>
 #include <thread>
 
 namespace eposp::core {

@@ -41,8 +41,8 @@ bool Frame::valid() const {
 }
 
 bool operator==(const Frame& a, const Frame& b) {
-    return a.id == b.id && a.extended == b.extended && a.remote == b.remote &&
-           a.error == b.error && a.dlc == b.dlc && std::ranges::equal(a.payload(), b.payload());
+    return a.id == b.id && a.extended == b.extended && a.remote == b.remote && a.error == b.error &&
+           a.dlc == b.dlc && std::ranges::equal(a.payload(), b.payload());
 }
 
 } // namespace eposp::can
