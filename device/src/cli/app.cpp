@@ -1,3 +1,4 @@
+#include "commands.hpp"
 #include "eposp/device/cli.hpp"
 #include "eposp/device/version.hpp"
 
@@ -9,8 +10,18 @@ int run_cli(int argc, char** argv) {
     CLI::App app{"eposp - a soft-PLC reimplementation of the maxon EPOS P", "eposp"};
     app.set_version_flag("--version", std::string("eposp ") + kVersion);
     app.require_subcommand(1);
-    CLI11_PARSE(app, argc, argv);
-    return 0;
+    app.fallthrough(false);
+
+    int exit_code = 0;
+    cli::add_bus_command(app, exit_code);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // --help and --version end here with 0; every usage error is a user error: 1.
+        return app.exit(error) == 0 ? 0 : 1;
+    }
+    return exit_code;
 }
 
 } // namespace eposp::device

@@ -10,15 +10,26 @@
 
 namespace eposp::can {
 
+/// How a bus-off controller comes back (ISO 11898-1:2015, 12.1.4): in both cases it becomes
+/// error-active with both counters 0 after it has seen 128 occurrences of 11 consecutive
+/// recessive bits on the bus; what differs is when it starts counting them.
+enum class BusOffRecovery {
+    Automatic, ///< at once on entering bus-off, like controllers with automatic bus-off recovery
+    OnRequest, ///< only after VirtualPort::recover(), like `ip link set canX type can restart`
+};
+
 struct BusConfig {
     std::string name = "can0";         ///< the interface name traces record
-    std::uint32_t bitrate = 1'000'000; ///< bit/s: one of CiA 301's rates, 10 kbit/s ... 1 Mbit/s
+    std::uint32_t bitrate = 1'000'000; ///< bit/s, 10 kbit/s ... 1 Mbit/s, a divisor of 10^9
     std::size_t tx_queue_capacity = 64;
     std::size_t rx_queue_capacity = 64;
+    BusOffRecovery bus_off_recovery = BusOffRecovery::Automatic;
 };
 
 /// Something that passed the wire: a frame that was received, or an error frame signalled
-/// while a frame was being sent. Traces and statistics are built from these.
+/// while a frame was being sent. Traces and statistics are built from these. An error frame
+/// (error_frame.hpp has its encoding) lasts from the start of the error flag to the end of the
+/// error delimiter; a frame lost by fault injection is not reported.
 struct WireEvent {
     core::TimePoint start; ///< start of frame
     core::TimePoint end;   ///< end of frame: the time a receiver timestamps it
@@ -50,9 +61,14 @@ struct PortStatistics {
 
 class VirtualBus;
 
+/// A queue that was full, and so lost a frame.
+enum class Overflow { Transmit, Receive };
+
 /// A node's controller on a VirtualBus. Destroying it detaches it from the bus.
 class VirtualPort final : public Port {
 public:
+    using OverflowHandler = std::function<void(Overflow, const Frame& lost)>;
+
     ~VirtualPort() override;
     VirtualPort(const VirtualPort&) = delete;
     VirtualPort& operator=(const VirtualPort&) = delete;
@@ -67,6 +83,22 @@ public:
     /// beyond its capacity they are lost and counted as receive overflows. Resuming delivers
     /// the queued frames in order.
     void pause_receive(bool paused);
+
+    /// Told of every frame lost to a full queue, besides the counts in statistics().
+    void on_overflow(OverflowHandler handler);
+
+    /// Starts bus-off recovery under BusOffRecovery::OnRequest; does nothing unless bus-off.
+    void recover();
+
+    // Fault injection.
+
+    /// Sets the error counters to the first value of `state` (TEC 0, 128 or 256, REC 0), as if
+    /// the errors had happened; a bus-off port then recovers as configured.
+    void force_error_state(ErrorState state);
+    /// A babbling idiot: the controller sends `frame` back to back until stop_babbling(),
+    /// ahead of its transmit queue; lower-priority traffic starves.
+    void babble(const Frame& frame);
+    void stop_babbling();
 
     class Impl;
 
@@ -104,6 +136,20 @@ public:
 
     ObserverId add_observer(Observer observer);
     void remove_observer(ObserverId id);
+
+    // Fault injection. Each fault takes the next `count` frames that start on the wire and match
+    // `filter` (every frame when it is empty); faults are tried in the order they were added.
+    using FaultId = std::uint64_t;
+
+    /// The frames occupy the wire and count as sent, but no receiver or observer gets them;
+    /// BusStatistics::dropped_frames counts them.
+    FaultId drop_frames(FrameFilter filter = {}, std::uint64_t count = 1);
+    /// A disturbance inverts the last bit of each frame's CRC sequence: the transmitter sees a
+    /// bit error, an error frame follows, the error counters move, and the controller sends the
+    /// frame again.
+    FaultId corrupt_frames(FrameFilter filter = {}, std::uint64_t count = 1);
+    /// Removes a fault before it has taken all its frames; false when it is already gone.
+    bool cancel_fault(FaultId id);
 
     class Impl;
 

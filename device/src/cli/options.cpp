@@ -1,0 +1,31 @@
+#include "options.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+
+namespace eposp::device::cli {
+
+int report_user_error(std::string_view command, std::string_view message) {
+    fmt::print(stderr, "eposp {}: error: {}\n", command, message);
+    return 1;
+}
+
+CLI::Option* add_duration_option(CLI::App& command, const std::string& name,
+                                 std::optional<core::Duration>& target,
+                                 const std::string& description) {
+    return command
+        .add_option_function<std::string>(
+            name,
+            [&target](const std::string& text) {
+                target = core::parse_duration(text);
+                if (!target) {
+                    throw CLI::ValidationError(
+                        "--for", "'" + text + "' is not a duration (examples: 10s, 250ms, 2m)");
+                }
+            },
+            description)
+        ->type_name("DURATION");
+}
+
+} // namespace eposp::device::cli

@@ -1,0 +1,22 @@
+#pragma once
+
+#include "eposp/core/time.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace eposp::device::cli {
+
+/// Adds `--for DURATION` (`10s`, `250ms`, `2m`, ...), the bound every long-running command takes.
+CLI::Option* add_duration_option(CLI::App& command, const std::string& name,
+                                 std::optional<core::Duration>& target,
+                                 const std::string& description);
+
+/// Reports a user-facing failure as `eposp <command>: error: <message>` on stderr and returns
+/// the exit code for it, 1.
+int report_user_error(std::string_view command, std::string_view message);
+
+} // namespace eposp::device::cli

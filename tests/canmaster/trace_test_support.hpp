@@ -1,0 +1,73 @@
+#pragma once
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace eposp::can::testing_support {
+
+/// Names a table-driven test after the `name` field of its row.
+template <typename Row>
+std::string row_name(const testing::TestParamInfo<Row>& row) {
+    return std::string(row.param.name);
+}
+
+/// A file path for the running test, in the temporary directory, removed afterwards.
+class TempFile {
+public:
+    explicit TempFile(std::string_view extension) {
+        const auto* test = testing::UnitTest::GetInstance()->current_test_info();
+        path_ = std::filesystem::temp_directory_path() /
+                (std::string("eposp-") + test->test_suite_name() + "-" + test->name() +
+                 std::string(extension));
+    }
+    ~TempFile() {
+        std::error_code ignored;
+        std::filesystem::remove(path_, ignored);
+    }
+    TempFile(const TempFile&) = delete;
+    TempFile& operator=(const TempFile&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+
+    std::string contents() const {
+        std::ifstream in(path_, std::ios::binary);
+        return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    }
+
+private:
+    std::filesystem::path path_;
+};
+
+struct CommandRun {
+    int status = -1; ///< as pclose() returns it: 0 on success
+    std::vector<std::string> lines;
+};
+
+/// Runs a shell command (for tools such as tshark and log2asc) and collects its standard output.
+inline CommandRun run_command(const std::string& command) {
+    CommandRun run;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (pipe == nullptr) {
+        return run;
+    }
+    std::string output;
+    std::array<char, 4096> buffer{};
+    while (const std::size_t read = std::fread(buffer.data(), 1, buffer.size(), pipe)) {
+        output.append(buffer.data(), read);
+    }
+    run.status = pclose(pipe);
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);) {
+        run.lines.push_back(line);
+    }
+    return run;
+}
+
+} // namespace eposp::can::testing_support

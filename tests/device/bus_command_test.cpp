@@ -1,0 +1,127 @@
+// `eposp bus` driven as a user drives it, on the files in examples/.
+#include "eposp/test/run_command.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace eposp::device {
+namespace {
+
+using test::run_command;
+using testing::HasSubstr;
+
+const std::string kEposp = EPOSP_EXECUTABLE;
+const std::string kNetworkLog = std::string(EPOSP_SOURCE_DIR) + "/examples/bus-demo/canopen-network.log";
+
+class BusCommand : public testing::Test {
+protected:
+    std::filesystem::path scratch(const std::string& name) const {
+        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+        const auto dir = std::filesystem::path(EPOSP_BINARY_DIR) / "test-output" / info->name();
+        std::filesystem::create_directories(dir);
+        return dir / name;
+    }
+};
+
+std::string read_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+TEST_F(BusCommand, VirtualReplayCarriesEveryFrameOfTheLog) {
+    const auto log = scratch("bus.log");
+    const auto pcap = scratch("bus.pcap");
+    const auto result = run_command(kEposp + " bus --virtual --for 1s --replay " + kNetworkLog +
+                                    " --log " + log.string() + " --pcap " + pcap.string());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("replay: 113 frames sent, 0 refused"));
+    EXPECT_THAT(result.output, HasSubstr("113 frames, 0 error frames"));
+
+    const std::string recorded = read_file(log);
+    EXPECT_EQ(std::count(recorded.begin(), recorded.end(), '\n'), 113);
+    EXPECT_THAT(recorded, HasSubstr(" can0 701#00\n"));
+    // pcap: 24-byte file header, then per frame a 16-byte record header and 16 bytes of data.
+    EXPECT_EQ(std::filesystem::file_size(pcap), 24U + 113U * 32U);
+}
+
+TEST_F(BusCommand, VirtualRunsAreDeterministic) {
+    const auto first = scratch("first.log");
+    const auto second = scratch("second.log");
+    for (const auto& log : {first, second}) {
+        ASSERT_EQ(run_command(kEposp + " bus --virtual --bitrate 125000 --replay " + kNetworkLog +
+                              " --log " + log.string())
+                      .exit_code,
+                  0);
+    }
+    EXPECT_EQ(read_file(first), read_file(second));
+    EXPECT_FALSE(read_file(first).empty());
+}
+
+TEST_F(BusCommand, NonCanopenBitrateIsRefused) {
+    const auto result = run_command(kEposp + " bus --virtual --bitrate 123456");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("not a CANopen bit rate"));
+}
+
+TEST_F(BusCommand, VirtualTimeRefusesOutsideClients) {
+    const auto result = run_command(kEposp + " bus --virtual --socketcand 127.0.0.1:0");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("--virtual"));
+}
+
+TEST_F(BusCommand, MissingReplayFileIsAUserError) {
+    const auto result = run_command(kEposp + " bus --virtual --replay /no/such/file.log");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("/no/such/file.log"));
+}
+
+TEST_F(BusCommand, MalformedReplayFileIsAUserErrorNamingTheLine) {
+    const auto bad = scratch("bad.log");
+    std::ofstream(bad) << "(0.000000) can0 123#00\n(0.001000) can0 12G#00\n";
+    const auto result = run_command(kEposp + " bus --virtual --replay " + bad.string());
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr(":2:"));
+}
+
+TEST_F(BusCommand, UnwritableTraceIsAUserError) {
+    const auto result = run_command(kEposp + " bus --virtual --log /no/such/dir/bus.log");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("/no/such/dir/bus.log"));
+}
+
+// Starts `eposp bus --socketcand 127.0.0.1:0` in the background of a shell script, waits until
+// it listens, and leaves its address in $address and its pid in $pid.
+std::string start_real_time_bus(const std::filesystem::path& out) {
+    return kEposp + " bus --socketcand 127.0.0.1:0 > " + out.string() +
+           " & pid=$!; for i in $(seq 200); do address=$(sed -n \"s/^socketcand: listening on "
+           "\\([^ ]*\\).*/\\1/p\" " +
+           out.string() + "); [ -n \"$address\" ] && break; sleep 0.05; done; ";
+}
+
+TEST_F(BusCommand, AddressInUseIsAUserError) {
+    const auto out = scratch("first.out");
+    const auto result = run_command("sh -c '" + start_real_time_bus(out) + kEposp +
+                                    " bus --socketcand $address --for 1s; code=$?; "
+                                    "kill -INT $pid; wait $pid; exit $code'");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("127.0.0.1:"));
+}
+
+TEST_F(BusCommand, SigintEndsARealTimeRunCleanlyWithItsSummary) {
+    const auto out = scratch("bus.out");
+    const auto result =
+        run_command("sh -c '" + start_real_time_bus(out) + "kill -INT $pid; wait $pid'");
+    EXPECT_EQ(result.exit_code, 0) << read_file(out);
+    const std::string printed = read_file(out);
+    EXPECT_THAT(printed, HasSubstr("interrupted"));
+    EXPECT_THAT(printed, HasSubstr("bus can0 at 1000 kbit/s"));
+}
+
+} // namespace
+} // namespace eposp::device
