@@ -34,7 +34,7 @@ for _ in $(seq 100); do # the bus prints its address once it listens
     sleep 0.1
 done
 [ -n "$address" ] || { echo "the bus did not start:"; cat "$out/socketcand.out"; exit 1; }
-/usr/bin/python3 "$here/python_can_exchange.py" "${address%:*}" "${address##*:}"
+/usr/bin/python3 "$here/python_can_clients.py" "${address%:*}" "${address##*:}"
 kill -INT "$bus_pid"
 wait "$bus_pid"
 trap - EXIT

@@ -92,25 +92,25 @@ TEST(SocketCanPort, FramesTravelBetweenTwoSocketsOnVcan) {
             loop.stop();
         }
     };
-    a->on_receive([&](const Frame& frame) {
+    (*a)->on_receive([&](const Frame& frame) {
         a_received.push_back(frame);
         check_done();
     });
-    b->on_receive([&](const Frame& frame) {
+    (*b)->on_receive([&](const Frame& frame) {
         b_received.push_back(frame);
         check_done();
     });
     for (const Frame& frame : a_sends) {
-        ASSERT_EQ(a->send(frame), SendStatus::Queued);
+        ASSERT_EQ((*a)->send(frame), SendStatus::Queued);
     }
-    ASSERT_EQ(b->send(b_sends), SendStatus::Queued);
+    ASSERT_EQ((*b)->send(b_sends), SendStatus::Queued);
     loop.run_for(5s);
 
     EXPECT_EQ(b_received, a_sends);
     ASSERT_EQ(a_received.size(), 1U); // and not its own frames
     EXPECT_EQ(a_received[0], b_sends);
-    EXPECT_EQ(a->error_state(), ErrorState::Active);
-    EXPECT_EQ(a->name(), "vcan0");
+    EXPECT_EQ((*a)->error_state(), ErrorState::Active);
+    EXPECT_EQ((*a)->name(), "vcan0");
 }
 
 TEST(SocketCanPort, InvalidFramesAreRefusedBeforeTheKernel) {
@@ -120,7 +120,7 @@ TEST(SocketCanPort, InvalidFramesAreRefusedBeforeTheKernel) {
     core::EventLoop loop(core::Pace::RealTime);
     auto port = SocketCanPort::open(loop, kVirtualInterface);
     ASSERT_TRUE(port) << port.error();
-    EXPECT_EQ(port->send(Frame::data_frame(0x800, {})), SendStatus::InvalidFrame);
+    EXPECT_EQ((*port)->send(Frame::data_frame(0x800, {})), SendStatus::InvalidFrame);
 }
 
 // ---- error frames -----------------------------------------------------------------------------

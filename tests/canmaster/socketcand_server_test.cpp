@@ -4,12 +4,14 @@
 #include "eposp/canmaster/can/socketcand_protocol.hpp"
 #include "eposp/canmaster/can/socketcand_server.hpp"
 
+#include <algorithm>
 #include <array>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/write.hpp>
+#include <cctype>
 #include <deque>
 #include <gtest/gtest.h>
-#include <regex>
+#include <optional>
 
 namespace eposp::can {
 namespace {
@@ -19,6 +21,49 @@ using boost::asio::ip::tcp;
 
 constexpr core::Duration kEpoch = 1'700'000'000s;
 constexpr core::Duration kDeadline = 5s;
+
+struct ReceivedFrame {
+    Frame frame;
+    std::string stamp;
+};
+
+bool all_hex(std::string_view text) {
+    return std::ranges::all_of(text, [](char c) { return std::isxdigit(c) && !std::islower(c); });
+}
+
+/// `< frame ID SEC.USEC DATA >` exactly as socketcand writes it: ID with 3 or 8 upper-case hex
+/// digits, SEC.USEC with 6 decimals, DATA as upper-case hex without spaces, single spaces
+/// between the fields.
+std::optional<ReceivedFrame> parse_frame_message(std::string_view message) {
+    constexpr std::string_view kStart = "< frame ";
+    constexpr std::string_view kEnd = " >";
+    if (!message.starts_with(kStart) || !message.ends_with(kEnd)) {
+        return std::nullopt;
+    }
+    const std::string_view fields =
+        message.substr(kStart.size(), message.size() - kStart.size() - kEnd.size());
+    const std::size_t first = fields.find(' ');
+    const std::size_t second = fields.find(' ', first + 1);
+    if (first == std::string_view::npos || second == std::string_view::npos) {
+        return std::nullopt;
+    }
+    const std::string_view id = fields.substr(0, first);
+    const std::string_view stamp = fields.substr(first + 1, second - first - 1);
+    const std::string_view data = fields.substr(second + 1);
+    const std::size_t dot = stamp.find('.');
+    if ((id.size() != 3 && id.size() != 8) || !all_hex(id) || !all_hex(data) ||
+        data.size() % 2 != 0 || data.size() > 2 * kMaxDataLength || dot == std::string_view::npos ||
+        stamp.size() - dot - 1 != 6) {
+        return std::nullopt;
+    }
+    std::vector<std::uint8_t> bytes;
+    for (std::size_t i = 0; i < data.size(); i += 2) {
+        bytes.push_back(
+            static_cast<std::uint8_t>(std::stoul(std::string(data.substr(i, 2)), nullptr, 16)));
+    }
+    const auto value = static_cast<std::uint32_t>(std::stoul(std::string(id), nullptr, 16));
+    return ReceivedFrame{Frame::data_frame(value, bytes, id.size() == 8), std::string(stamp)};
+}
 
 /// A socketcand client on the loop's io_context: writes what it is given in order and collects
 /// every `< ... >` message the server sends.
@@ -64,25 +109,13 @@ public:
 
     const std::vector<std::string>& messages() const { return messages_; }
     bool closed() const { return closed_; }
-    /// The frames received, parsed the way python-can reads `< frame ID SEC.USEC DATA >`.
+    /// The frames received, in order.
     std::vector<Frame> frames() const {
-        static const std::regex kFrame(
-            R"(< frame ([0-9A-F]{3}|[0-9A-F]{8}) \d+\.\d{6} ([0-9A-F]*) >)");
         std::vector<Frame> frames;
         for (const std::string& message : messages_) {
-            std::smatch match;
-            if (!std::regex_match(message, match, kFrame)) {
-                continue;
+            if (const auto received = parse_frame_message(message)) {
+                frames.push_back(received->frame);
             }
-            const std::string id = match[1].str();
-            const std::string data = match[2].str();
-            std::vector<std::uint8_t> bytes;
-            for (std::size_t i = 0; i < data.size(); i += 2) {
-                bytes.push_back(
-                    static_cast<std::uint8_t>(std::stoul(data.substr(i, 2), nullptr, 16)));
-            }
-            frames.push_back(Frame::data_frame(
-                static_cast<std::uint32_t>(std::stoul(id, nullptr, 16)), bytes, id.size() == 8));
         }
         return frames;
     }
@@ -153,7 +186,7 @@ protected:
         config.epoch_offset = kEpoch;
         auto opened = SocketcandServer::open(bus, std::move(config));
         ASSERT_TRUE(opened) << opened.error();
-        server = opened.take();
+        server = std::move(*opened);
         server->on_client_event([this](const SocketcandClientEvent& event) {
             events.push_back(event);
             progress();
@@ -242,10 +275,10 @@ TEST_F(SocketcandServerTest, FullSessionCarriesFramesBothWays) {
 
     ASSERT_EQ(node->send(Frame::data_frame(0x181, {0x01, 0x02})), SendStatus::Queued);
     ASSERT_TRUE(run_until([&] { return client->messages().size() == 4; }));
-    static const std::regex kFrame(R"(< frame 181 (\d+)\.\d{6} 0102 >)");
-    std::smatch match;
-    ASSERT_TRUE(std::regex_match(client->messages()[3], match, kFrame)) << client->messages()[3];
-    const auto seconds = std::stoll(match[1].str());
+    const auto received = parse_frame_message(client->messages()[3]);
+    ASSERT_TRUE(received) << client->messages()[3];
+    EXPECT_EQ(received->frame, Frame::data_frame(0x181, {0x01, 0x02}));
+    const auto seconds = std::stoll(received->stamp);
     EXPECT_GE(seconds, kEpoch.count() / 1'000'000'000); // loop time plus the epoch offset
     EXPECT_LT(seconds, kEpoch.count() / 1'000'000'000 + 60);
 

@@ -1,11 +1,10 @@
 // `eposp bus` driven as a user drives it, on the files in examples/.
 #include "eposp/test/run_command.hpp"
 
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 #include <sstream>
 
 namespace eposp::device {
@@ -15,7 +14,8 @@ using test::run_command;
 using testing::HasSubstr;
 
 const std::string kEposp = EPOSP_EXECUTABLE;
-const std::string kNetworkLog = std::string(EPOSP_SOURCE_DIR) + "/examples/bus-demo/canopen-network.log";
+const std::string kNetworkLog =
+    std::string(EPOSP_SOURCE_DIR) + "/examples/bus-demo/canopen-network.log";
 
 class BusCommand : public testing::Test {
 protected:
@@ -95,10 +95,10 @@ TEST_F(BusCommand, UnwritableTraceIsAUserError) {
     EXPECT_THAT(result.output, HasSubstr("/no/such/dir/bus.log"));
 }
 
-// Starts `eposp bus --socketcand 127.0.0.1:0` in the background of a shell script, waits until
-// it listens, and leaves its address in $address and its pid in $pid.
-std::string start_real_time_bus(const std::filesystem::path& out) {
-    return kEposp + " bus --socketcand 127.0.0.1:0 > " + out.string() +
+// Starts `eposp bus --socketcand 127.0.0.1:0 [options]` in the background of a shell script,
+// waits until it listens, and leaves its address in $address and its pid in $pid.
+std::string start_real_time_bus(const std::filesystem::path& out, const std::string& options = "") {
+    return kEposp + " bus --socketcand 127.0.0.1:0 " + options + " > " + out.string() +
            " & pid=$!; for i in $(seq 200); do address=$(sed -n \"s/^socketcand: listening on "
            "\\([^ ]*\\).*/\\1/p\" " +
            out.string() + "); [ -n \"$address\" ] && break; sleep 0.05; done; ";
@@ -121,6 +121,36 @@ TEST_F(BusCommand, SigintEndsARealTimeRunCleanlyWithItsSummary) {
     const std::string printed = read_file(out);
     EXPECT_THAT(printed, HasSubstr("interrupted"));
     EXPECT_THAT(printed, HasSubstr("bus can0 at 1000 kbit/s"));
+}
+
+// The issue's acceptance run: two independent socketcand clients (python-can) exchange frames
+// through `eposp bus`, and the pcap it writes holds every one of them.
+TEST_F(BusCommand, PythonCanClientsExchangeFramesAndThePcapHoldsThem) {
+    const auto out = scratch("bus.out");
+    const auto pcap = scratch("bus.pcap");
+    const std::string clients =
+        std::string(EPOSP_SOURCE_DIR) + "/examples/bus-demo/python_can_clients.py";
+    const auto result =
+        run_command("sh -c '" + start_real_time_bus(out, "--pcap " + pcap.string()) +
+                    "/usr/bin/python3 " + clients +
+                    " ${address%:*} ${address##*:}; code=$?; "
+                    "kill -INT $pid; wait $pid; exit $code'");
+    if (result.exit_code == 77) {
+        GTEST_SKIP() << "python-can is not installed (Debian: python3-can)";
+    }
+    ASSERT_EQ(result.exit_code, 0) << result.output << read_file(out);
+    EXPECT_THAT(result.output, HasSubstr("ok: 20 frames a -> b and 20 frames b -> a"));
+    // 24-byte pcap header, then 16 + 16 bytes per frame.
+    EXPECT_EQ(std::filesystem::file_size(pcap), 24U + 40U * 32U);
+}
+
+TEST_F(BusCommand, TheDemoRunsToTheEnd) {
+    const auto dir = scratch("demo");
+    const auto result = run_command("EPOSP_DEMO_DIR=" + dir.string() + " " + EPOSP_SOURCE_DIR +
+                                    "/examples/bus-demo/run.sh " + kEposp);
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("replay: 113 frames sent"));
+    EXPECT_THAT(result.output, HasSubstr("socketcand: listening on"));
 }
 
 } // namespace

@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 #include <iterator>
 #include <limits>
-#include <optional>
 #include <vector>
 
 namespace eposp::can {
@@ -20,8 +19,8 @@ constexpr std::size_t kMicrosecondDigits = 6;
 // The last whole second a TraceTime (signed 64-bit nanoseconds) can hold.
 constexpr std::uint64_t kMaxSeconds = std::numeric_limits<std::int64_t>::max() / 1'000'000'000 - 1;
 
-TraceError error(std::string message) {
-    return TraceError{std::move(message)};
+core::Error error(std::string message) {
+    return core::Error{std::move(message)};
 }
 
 // Names a character in a message without echoing control bytes of untrusted input.
@@ -38,7 +37,7 @@ bool is_blank(char c) {
 }
 
 // Reads all of `digits` as an unsigned number of at most 32 bits in `base`.
-TraceResult<std::uint32_t> parse_number(std::string_view digits, int base, std::string_view what) {
+core::Result<std::uint32_t> parse_number(std::string_view digits, int base, std::string_view what) {
     if (digits.empty()) {
         return error(fmt::format("missing {}", what));
     }
@@ -62,7 +61,7 @@ struct Identifier {
 };
 
 // can-utils tells the formats apart by length: 3 digits standard, 8 digits extended or error.
-TraceResult<Identifier> parse_identifier(std::string_view digits) {
+core::Result<Identifier> parse_identifier(std::string_view digits) {
     if (digits.size() != kStandardIdDigits && digits.size() != kExtendedIdDigits) {
         return error(fmt::format("identifier must have 3 (standard) or 8 (extended) hex digits, "
                                  "not {}",
@@ -70,7 +69,7 @@ TraceResult<Identifier> parse_identifier(std::string_view digits) {
     }
     auto value = parse_number(digits, 16, "identifier");
     if (!value) {
-        return TraceError{value.error()};
+        return core::Error{value.error()};
     }
     if (digits.size() == kStandardIdDigits) {
         if (*value > kMaxStandardId) {
@@ -92,7 +91,7 @@ TraceResult<Identifier> parse_identifier(std::string_view digits) {
 }
 
 // `R` followed by nothing (DLC 0) or one DLC digit, as can-utils writes remote frames.
-TraceResult<std::uint8_t> parse_remote_dlc(std::string_view text) {
+core::Result<std::uint8_t> parse_remote_dlc(std::string_view text) {
     if (text.empty()) {
         return std::uint8_t{0};
     }
@@ -103,7 +102,7 @@ TraceResult<std::uint8_t> parse_remote_dlc(std::string_view text) {
 }
 
 // Pairs of hex digits, optionally separated by '.'.
-TraceResult<Frame> parse_data(std::string_view text, Frame frame) {
+core::Result<Frame> parse_data(std::string_view text, Frame frame) {
     frame.dlc = 0;
     while (!text.empty()) {
         if (text[0] == '.') {
@@ -119,7 +118,7 @@ TraceResult<Frame> parse_data(std::string_view text, Frame frame) {
         const auto byte =
             parse_number(text.substr(0, 2), 16, fmt::format("data byte {}", frame.dlc + 1));
         if (!byte) {
-            return TraceError{byte.error()};
+            return core::Error{byte.error()};
         }
         frame.data[frame.dlc++] = static_cast<std::uint8_t>(*byte);
         text.remove_prefix(2);
@@ -128,7 +127,7 @@ TraceResult<Frame> parse_data(std::string_view text, Frame frame) {
 }
 
 // `seconds.microseconds`, the microseconds always 6 digits as candump writes them.
-TraceResult<TraceTime> parse_timestamp(std::string_view text) {
+core::Result<TraceTime> parse_timestamp(std::string_view text) {
     const auto dot = text.find('.');
     if (dot == std::string_view::npos) {
         return error("timestamp must be seconds.microseconds");
@@ -149,7 +148,7 @@ TraceResult<TraceTime> parse_timestamp(std::string_view text) {
     }
     const auto micros = parse_number(micro_digits, 10, "timestamp microseconds");
     if (!micros) {
-        return TraceError{micros.error()};
+        return core::Error{micros.error()};
     }
     return TraceTime(std::chrono::seconds(static_cast<std::int64_t>(seconds)) +
                      std::chrono::microseconds(*micros));
@@ -202,14 +201,14 @@ std::string format_candump_frame(const Frame& frame) {
     return text;
 }
 
-TraceResult<Frame> parse_candump_frame(std::string_view text) {
+core::Result<Frame> parse_candump_frame(std::string_view text) {
     const auto hash = text.find('#');
     if (hash == std::string_view::npos) {
         return error("missing '#' between identifier and data");
     }
     const auto identifier = parse_identifier(text.substr(0, hash));
     if (!identifier) {
-        return TraceError{identifier.error()};
+        return core::Error{identifier.error()};
     }
     Frame frame;
     frame.id = identifier->id;
@@ -226,7 +225,7 @@ TraceResult<Frame> parse_candump_frame(std::string_view text) {
         }
         const auto dlc = parse_remote_dlc(body.substr(1));
         if (!dlc) {
-            return TraceError{dlc.error()};
+            return core::Error{dlc.error()};
         }
         frame.remote = true;
         frame.dlc = *dlc;
@@ -243,7 +242,7 @@ std::string format_candump_line(const CandumpRecord& record) {
                        record.interface_name, format_candump_frame(record.frame));
 }
 
-TraceResult<CandumpRecord> parse_candump_line(std::string_view line) {
+core::Result<CandumpRecord> parse_candump_line(std::string_view line) {
     if (!line.starts_with('(')) {
         return error("a log line must start with '(' and a timestamp");
     }
@@ -253,7 +252,7 @@ TraceResult<CandumpRecord> parse_candump_line(std::string_view line) {
     }
     auto time = parse_timestamp(line.substr(1, close - 1));
     if (!time) {
-        return TraceError{time.error()};
+        return core::Error{time.error()};
     }
     const auto fields = split_fields(line.substr(close + 1));
     if (fields.empty()) {
@@ -267,7 +266,7 @@ TraceResult<CandumpRecord> parse_candump_line(std::string_view line) {
     }
     auto frame = parse_candump_frame(fields[1]);
     if (!frame) {
-        return TraceError{frame.error()};
+        return core::Error{frame.error()};
     }
     return CandumpRecord{*time, std::string(fields[0]), *frame};
 }

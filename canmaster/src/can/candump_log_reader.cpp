@@ -7,8 +7,8 @@
 
 namespace eposp::can {
 
-TraceResult<std::vector<CandumpRecord>> read_candump_log(std::istream& in,
-                                                         std::string_view source_name) {
+core::Result<std::vector<CandumpRecord>> read_candump_log(std::istream& in,
+                                                          std::string_view source_name) {
     std::vector<CandumpRecord> records;
     std::string line;
     for (std::size_t number = 1; std::getline(in, line); ++number) {
@@ -17,20 +17,20 @@ TraceResult<std::vector<CandumpRecord>> read_candump_log(std::istream& in,
         }
         auto record = parse_candump_line(line);
         if (!record) {
-            return TraceError{fmt::format("{}:{}: {}", source_name, number, record.error())};
+            return core::Error{fmt::format("{}:{}: {}", source_name, number, record.error())};
         }
         records.push_back(std::move(record).value());
     }
     if (in.bad()) {
-        return TraceError{fmt::format("{}: read error", source_name)};
+        return core::Error{fmt::format("{}: read error", source_name)};
     }
     return records;
 }
 
-TraceResult<std::vector<CandumpRecord>> read_candump_log_file(const std::filesystem::path& path) {
+core::Result<std::vector<CandumpRecord>> read_candump_log_file(const std::filesystem::path& path) {
     auto file = open_trace_file(path);
     if (!file) {
-        return TraceError{file.error()};
+        return core::Error{file.error()};
     }
     return read_candump_log(*file, path.string());
 }

@@ -34,8 +34,11 @@ void CandumpReplay::schedule_next() {
 }
 
 void CandumpReplay::send_next() {
-    const SendStatus status = port_.send(records_[next_].frame);
-    ++(status == SendStatus::Queued ? report_.sent : report_.refused);
+    if (port_.send(records_[next_].frame) == SendStatus::Queued) {
+        ++report_.sent;
+    } else {
+        ++report_.refused;
+    }
     ++next_;
     schedule_next();
 }

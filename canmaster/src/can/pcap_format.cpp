@@ -34,16 +34,16 @@ CanFrameBytes encode_can_frame(const Frame& frame) {
     return bytes;
 }
 
-TraceResult<Frame> decode_can_frame(std::span<const std::uint8_t> bytes) {
+core::Result<Frame> decode_can_frame(std::span<const std::uint8_t> bytes) {
     if (bytes.size() < kCanHeaderSize) {
-        return TraceError{
+        return core::Error{
             fmt::format("{} bytes are too short for a SocketCAN frame header", bytes.size())};
     }
     const std::uint32_t id = (std::uint32_t{bytes[0]} << 24) | (std::uint32_t{bytes[1]} << 16) |
                              (std::uint32_t{bytes[2]} << 8) | std::uint32_t{bytes[3]};
     const std::uint8_t length = bytes[kLengthOffset];
     if (length > kMaxDataLength) {
-        return TraceError{
+        return core::Error{
             fmt::format("payload length {} is above 8 (CAN FD is not supported)", length)};
     }
     Frame frame;
@@ -53,13 +53,13 @@ TraceResult<Frame> decode_can_frame(std::span<const std::uint8_t> bytes) {
     frame.id = id & socketcan::kIdMask;
     frame.dlc = length;
     if (!frame.extended && !frame.error && frame.id > kMaxStandardId) {
-        return TraceError{fmt::format("standard identifier 0x{:X} is above 0x7FF", frame.id)};
+        return core::Error{fmt::format("standard identifier 0x{:X} is above 0x7FF", frame.id)};
     }
     if (frame.remote) {
         return frame;
     }
     if (bytes.size() < kCanHeaderSize + length) {
-        return TraceError{fmt::format("payload of {} bytes is cut short", length)};
+        return core::Error{fmt::format("payload of {} bytes is cut short", length)};
     }
     std::copy_n(bytes.begin() + kCanHeaderSize, length, frame.data.begin());
     return frame;

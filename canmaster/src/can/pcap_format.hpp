@@ -1,7 +1,7 @@
 #pragma once
 
 #include "eposp/canmaster/can/frame.hpp"
-#include "eposp/canmaster/can/trace_result.hpp"
+#include "eposp/core/result.hpp"
 
 #include <array>
 #include <cstddef>
@@ -30,6 +30,6 @@ using CanFrameBytes = std::array<std::uint8_t, kCanFrameSize>;
 
 CanFrameBytes encode_can_frame(const Frame& frame);
 /// Reads a frame from a record's packet data; `bytes` may be longer than the frame needs.
-TraceResult<Frame> decode_can_frame(std::span<const std::uint8_t> bytes);
+core::Result<Frame> decode_can_frame(std::span<const std::uint8_t> bytes);
 
 } // namespace eposp::can::pcap

@@ -15,8 +15,8 @@ constexpr std::uint32_t kPcapngMagic = 0x0A0D'0D0A;
 constexpr std::uint32_t kNanosecondsPerSecond = 1'000'000'000;
 constexpr std::uint32_t kMicrosecondsPerSecond = 1'000'000;
 
-TraceError error(std::string message) {
-    return TraceError{std::move(message)};
+core::Error error(std::string message) {
+    return core::Error{std::move(message)};
 }
 
 // Takes fields off the front of the file in its byte order; callers check remaining() first.
@@ -53,7 +53,7 @@ bool is_pcap_magic(std::uint32_t magic) {
     return magic == pcap::kMicrosecondMagic || magic == pcap::kNanosecondMagic;
 }
 
-TraceResult<PcapHeader> read_header(FieldReader& in) {
+core::Result<PcapHeader> read_header(FieldReader& in) {
     if (in.remaining() < pcap::kFileHeaderSize) {
         return error("too short for a pcap file header");
     }
@@ -95,7 +95,7 @@ TraceResult<PcapHeader> read_header(FieldReader& in) {
     return header;
 }
 
-TraceResult<PcapRecord> read_record(FieldReader& in, const PcapHeader& header) {
+core::Result<PcapRecord> read_record(FieldReader& in, const PcapHeader& header) {
     if (in.remaining() < pcap::kRecordHeaderSize) {
         return error("record header is cut short");
     }
@@ -119,7 +119,7 @@ TraceResult<PcapRecord> read_record(FieldReader& in, const PcapHeader& header) {
     }
     auto frame = pcap::decode_can_frame(in.take(captured));
     if (!frame) {
-        return TraceError{frame.error()};
+        return core::Error{frame.error()};
     }
     const core::Duration sub_second =
         nanoseconds ? core::Duration(fraction) : std::chrono::microseconds(fraction);
@@ -128,7 +128,7 @@ TraceResult<PcapRecord> read_record(FieldReader& in, const PcapHeader& header) {
 
 } // namespace
 
-TraceResult<PcapCapture> read_pcap(std::istream& in) {
+core::Result<PcapCapture> read_pcap(std::istream& in) {
     const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in),
                                           std::istreambuf_iterator<char>()};
     if (in.bad()) {
@@ -137,7 +137,7 @@ TraceResult<PcapCapture> read_pcap(std::istream& in) {
     FieldReader fields(bytes);
     auto header = read_header(fields);
     if (!header) {
-        return TraceError{header.error()};
+        return core::Error{header.error()};
     }
     PcapCapture capture{*header, {}};
     while (fields.remaining() > 0) {
@@ -150,10 +150,10 @@ TraceResult<PcapCapture> read_pcap(std::istream& in) {
     return capture;
 }
 
-TraceResult<PcapCapture> read_pcap_file(const std::filesystem::path& path) {
+core::Result<PcapCapture> read_pcap_file(const std::filesystem::path& path) {
     auto file = open_trace_file(path);
     if (!file) {
-        return TraceError{file.error()};
+        return core::Error{file.error()};
     }
     auto capture = read_pcap(*file);
     if (!capture) {

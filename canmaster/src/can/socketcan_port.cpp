@@ -101,22 +101,22 @@ private:
     bool failed_ = false;
 };
 
-OpenResult<SocketCanPort> SocketCanPort::open(core::EventLoop& loop, std::string interface) {
-    using Result = OpenResult<SocketCanPort>;
+core::Result<std::unique_ptr<SocketCanPort>> SocketCanPort::open(core::EventLoop& loop,
+                                                                 std::string interface) {
     if (interface.empty() || interface.size() >= IFNAMSIZ) {
-        return Result::failure(fmt::format("'{}' is not a network interface name", interface));
+        return core::Error{fmt::format("'{}' is not a network interface name", interface)};
     }
     const int socket = ::socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
     if (socket < 0) {
         if (errno == EAFNOSUPPORT || errno == EPROTONOSUPPORT) {
-            return Result::failure(
-                "this kernel has no AF_CAN support (SocketCAN needs the can and can_raw modules)");
+            return core::Error{
+                "this kernel has no AF_CAN support (SocketCAN needs the can and can_raw modules)"};
         }
-        return Result::failure(fmt::format("cannot create a CAN socket: {}", errno_text(errno)));
+        return core::Error{fmt::format("cannot create a CAN socket: {}", errno_text(errno))};
     }
     const auto fail = [socket](std::string message) {
         ::close(socket);
-        return Result::failure(std::move(message));
+        return core::Error{std::move(message)};
     };
     const unsigned index = ::if_nametoindex(interface.c_str());
     if (index == 0) {
@@ -136,8 +136,7 @@ OpenResult<SocketCanPort> SocketCanPort::open(core::EventLoop& loop, std::string
         }
         return fail(fmt::format("cannot bind to {}: {}", interface, errno_text(errno)));
     }
-    return Result::success(
-        std::unique_ptr<SocketCanPort>(new SocketCanPort(loop, std::move(interface), socket)));
+    return std::unique_ptr<SocketCanPort>(new SocketCanPort(loop, std::move(interface), socket));
 }
 
 SocketCanPort::SocketCanPort(core::EventLoop& loop, std::string interface, int socket)

@@ -114,13 +114,12 @@ void SocketcandServer::Impl::stop() {
     }
 }
 
-OpenResult<SocketcandServer> SocketcandServer::open(VirtualBus& bus,
-                                                    SocketcandServerConfig config) {
-    using Result = OpenResult<SocketcandServer>;
+core::Result<std::unique_ptr<SocketcandServer>>
+SocketcandServer::open(VirtualBus& bus, SocketcandServerConfig config) {
     const auto address = parse_listen_address(config.listen);
     if (!address) {
-        return Result::failure(
-            fmt::format("'{}' is not an address to listen on (HOST:PORT)", config.listen));
+        return core::Error{
+            fmt::format("'{}' is not an address to listen on (HOST:PORT)", config.listen)};
     }
     auto& io = bus.loop().io();
     boost::system::error_code error;
@@ -128,14 +127,13 @@ OpenResult<SocketcandServer> SocketcandServer::open(VirtualBus& bus,
         tcp::resolver(io).resolve(address->host, std::to_string(address->port),
                                   tcp::resolver::passive | tcp::resolver::numeric_service, error);
     if (error || resolved.empty()) {
-        return Result::failure(
-            fmt::format("cannot listen on {}: {}", config.listen, error.message()));
+        return core::Error{fmt::format("cannot listen on {}: {}", config.listen, error.message())};
     }
     const tcp::endpoint endpoint = resolved.begin()->endpoint();
     tcp::acceptor acceptor(io);
     const auto failed = [&](std::string_view step) {
-        return Result::failure(fmt::format("cannot listen on {}: {} failed: {}", config.listen,
-                                           step, error.message()));
+        return core::Error{fmt::format("cannot listen on {}: {} failed: {}", config.listen, step,
+                                       error.message())};
     };
     if (acceptor.open(endpoint.protocol(), error)) {
         return failed("socket");
@@ -152,7 +150,7 @@ OpenResult<SocketcandServer> SocketcandServer::open(VirtualBus& bus,
     }
     auto impl = std::make_shared<Impl>(bus, std::move(config), std::move(acceptor));
     impl->accept();
-    return Result::success(std::unique_ptr<SocketcandServer>(new SocketcandServer(impl)));
+    return std::unique_ptr<SocketcandServer>(new SocketcandServer(impl));
 }
 
 SocketcandServer::SocketcandServer(std::shared_ptr<Impl> impl) : impl_(std::move(impl)) {}

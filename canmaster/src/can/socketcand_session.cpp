@@ -30,8 +30,9 @@ SocketcandSession::SocketcandSession(boost::asio::ip::tcp::socket socket, std::s
     boost::system::error_code error;
     const auto endpoint = socket_.remote_endpoint(error);
     remote_ = error ? std::string("unknown address") : format_endpoint(endpoint);
-    // Each reply goes out as soon as it is written: python-can reads the handshake replies
-    // one recv() each.
+    // Tuning, which a socket that refuses it works without: each reply goes out as soon as it
+    // is written (python-can reads the handshake replies one recv() each), and the kernel's
+    // buffer stays small (see SocketcandServerConfig).
     socket_.set_option(boost::asio::ip::tcp::no_delay(true), error);
     socket_.set_option(boost::asio::socket_base::send_buffer_size(config_.socket_send_buffer_bytes),
                        error);

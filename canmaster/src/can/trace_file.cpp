@@ -6,13 +6,13 @@
 
 namespace eposp::can {
 
-TraceError file_error(std::string_view verb, const std::filesystem::path& path) {
+core::Error file_error(std::string_view verb, const std::filesystem::path& path) {
     // The standard streams leave errno as open(2) set it on every library we build with.
     const std::string reason = std::generic_category().message(errno);
-    return TraceError{fmt::format("cannot {} {}: {}", verb, path.string(), reason)};
+    return core::Error{fmt::format("cannot {} {}: {}", verb, path.string(), reason)};
 }
 
-TraceResult<std::ifstream> open_trace_file(const std::filesystem::path& path) {
+core::Result<std::ifstream> open_trace_file(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
     if (!file) {
         return file_error("open", path);

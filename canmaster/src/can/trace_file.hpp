@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eposp/canmaster/can/trace_result.hpp"
+#include "eposp/core/result.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -10,9 +10,9 @@
 namespace eposp::can {
 
 /// `cannot <verb> <path>: <reason from errno>`, for a stream that just failed to open.
-TraceError file_error(std::string_view verb, const std::filesystem::path& path);
+core::Error file_error(std::string_view verb, const std::filesystem::path& path);
 
 /// Opens `path` for reading in binary mode.
-TraceResult<std::ifstream> open_trace_file(const std::filesystem::path& path);
+core::Result<std::ifstream> open_trace_file(const std::filesystem::path& path);
 
 } // namespace eposp::can

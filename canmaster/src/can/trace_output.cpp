@@ -7,7 +7,7 @@ namespace eposp::can {
 TraceOutput::TraceOutput(std::unique_ptr<std::ofstream> file)
     : file_(std::move(file)), stream_(file_.get()) {}
 
-TraceResult<TraceOutput> TraceOutput::create(const std::filesystem::path& path) {
+core::Result<TraceOutput> TraceOutput::create(const std::filesystem::path& path) {
     auto file = std::make_unique<std::ofstream>(path, std::ios::binary | std::ios::trunc);
     if (!*file) {
         return file_error("create", path);

@@ -14,12 +14,11 @@
 #include "options.hpp"
 #include "run_control.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <fmt/format.h>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -144,7 +143,7 @@ int run_bus(const BusOptions& options) {
         if (!opened) {
             return report_user_error(kCommand, opened.error());
         }
-        server = opened.take();
+        server = std::move(*opened);
         server->on_client_event([](const can::SocketcandClientEvent& event) {
             if (event.kind == can::SocketcandClientEvent::Kind::Connected) {
                 fmt::print("socketcand: {} joined from {}\n", event.client, event.remote);
@@ -164,7 +163,7 @@ int run_bus(const BusOptions& options) {
         if (!opened) {
             return report_user_error(kCommand, opened.error());
         }
-        socketcan = opened.take();
+        socketcan = std::move(*opened);
         socketcan_side = bus.connect("socketcan:" + *options.socketcan);
         bridge = std::make_unique<can::PortBridge>(*socketcan_side, *socketcan);
         own_ports.push_back(socketcan_side.get());
@@ -207,10 +206,8 @@ void add_bus_command(CLI::App& app, int& exit_code) {
                         "Serve the socketcand protocol on HOST:PORT (e.g. 127.0.0.1:29536)");
     command->add_option("--socketcan", options->socketcan,
                         "Bridge a Linux CAN interface (e.g. can0, vcan0) onto the bus");
-    command->add_option("--name", options->name, "The bus's interface name")
-        ->capture_default_str();
-    command->add_option("--bitrate", options->bitrate, "Bit rate in bit/s")
-        ->capture_default_str();
+    command->add_option("--name", options->name, "The bus's interface name")->capture_default_str();
+    command->add_option("--bitrate", options->bitrate, "Bit rate in bit/s")->capture_default_str();
     command->add_option("--log", options->log, "Record a candump -L log to FILE");
     command->add_option("--pcap", options->pcap, "Record a pcap (LINKTYPE_CAN_SOCKETCAN) to FILE");
     command->add_option("--replay", options->replay, "Play a candump -L log onto the bus")

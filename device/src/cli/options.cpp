@@ -1,8 +1,7 @@
 #include "options.hpp"
 
-#include <fmt/format.h>
-
 #include <cstdio>
+#include <fmt/format.h>
 
 namespace eposp::device::cli {
 

@@ -3,7 +3,6 @@
 #include "eposp/core/time.hpp"
 
 #include <CLI/CLI.hpp>
-
 #include <optional>
 #include <string>
 #include <string_view>

@@ -1,7 +1,6 @@
 #include "run_control.hpp"
 
 #include <boost/asio/signal_set.hpp>
-
 #include <csignal>
 
 namespace eposp::device::cli {

@@ -2,7 +2,7 @@
 
 #include "eposp/canmaster/can/frame.hpp"
 #include "eposp/canmaster/can/trace_clock.hpp"
-#include "eposp/canmaster/can/trace_result.hpp"
+#include "eposp/core/result.hpp"
 
 #include <string>
 #include <string_view>
@@ -26,7 +26,7 @@ std::string format_candump_frame(const Frame& frame);
 
 /// Reads a frame written as format_candump_frame() describes, also accepting lowercase hex and
 /// `.` between data bytes as cansend does. CAN FD (`##`) is refused.
-TraceResult<Frame> parse_candump_frame(std::string_view text);
+core::Result<Frame> parse_candump_frame(std::string_view text);
 
 /// `(%010ld.%06ld) <interface> <frame>` without a line end; the time is truncated to µs.
 std::string format_candump_line(const CandumpRecord& record);
@@ -34,6 +34,6 @@ std::string format_candump_line(const CandumpRecord& record);
 /// Reads one log line (a trailing `\r` or `\n` is allowed, as is the ` R`/` T` direction field
 /// that newer candump versions append with -x, which is ignored). Any malformed line yields an
 /// error that says what is wrong; no input makes it crash.
-TraceResult<CandumpRecord> parse_candump_line(std::string_view line);
+core::Result<CandumpRecord> parse_candump_line(std::string_view line);
 
 } // namespace eposp::can

@@ -2,7 +2,7 @@
 
 #include "eposp/canmaster/can/frame.hpp"
 #include "eposp/canmaster/can/trace_clock.hpp"
-#include "eposp/canmaster/can/trace_result.hpp"
+#include "eposp/core/result.hpp"
 
 #include <bit>
 #include <cstdint>
@@ -36,9 +36,9 @@ struct PcapCapture {
 /// ns, either byte order), version 2.4, link type LINKTYPE_CAN_SOCKETCAN, a snap length above 0,
 /// and records that are not truncated, fit the snap length and hold a whole classic CAN frame.
 /// An error names the record (counted from 1).
-TraceResult<PcapCapture> read_pcap(std::istream& in);
+core::Result<PcapCapture> read_pcap(std::istream& in);
 
 /// As above from a file; errors name the file.
-TraceResult<PcapCapture> read_pcap_file(const std::filesystem::path& path);
+core::Result<PcapCapture> read_pcap_file(const std::filesystem::path& path);
 
 } // namespace eposp::can

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "eposp/canmaster/can/open_result.hpp"
 #include "eposp/canmaster/can/port.hpp"
 #include "eposp/core/event_loop.hpp"
+#include "eposp/core/result.hpp"
 
 #include <memory>
 #include <string>
@@ -18,7 +18,8 @@ class SocketCanPort final : public Port {
 public:
     /// Opens `interface`, or says why not ("this kernel has no AF_CAN support", "no such CAN
     /// interface vcan0", ...).
-    static OpenResult<SocketCanPort> open(core::EventLoop& loop, std::string interface);
+    static core::Result<std::unique_ptr<SocketCanPort>> open(core::EventLoop& loop,
+                                                             std::string interface);
 
     ~SocketCanPort() override;
     SocketCanPort(const SocketCanPort&) = delete;

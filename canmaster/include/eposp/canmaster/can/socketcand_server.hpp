@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eposp/canmaster/can/open_result.hpp"
 #include "eposp/canmaster/can/virtual_bus.hpp"
+#include "eposp/core/result.hpp"
 #include "eposp/core/time.hpp"
 
 #include <cstddef>
@@ -64,7 +64,8 @@ public:
 
     /// Starts listening, or says why it cannot (bad address, address in use, ...). The bus and
     /// its loop must outlive the server.
-    static OpenResult<SocketcandServer> open(VirtualBus& bus, SocketcandServerConfig config = {});
+    static core::Result<std::unique_ptr<SocketcandServer>> open(VirtualBus& bus,
+                                                                SocketcandServerConfig config = {});
 
     /// Disconnects every client and stops listening.
     ~SocketcandServer();

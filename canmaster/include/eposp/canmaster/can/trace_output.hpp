@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eposp/canmaster/can/trace_result.hpp"
+#include "eposp/core/result.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -18,7 +18,7 @@ public:
     explicit TraceOutput(std::ostream& stream) : stream_(&stream) {}
 
     /// Creates or truncates `path`, in binary mode.
-    static TraceResult<TraceOutput> create(const std::filesystem::path& path);
+    static core::Result<TraceOutput> create(const std::filesystem::path& path);
 
     void write(std::string_view bytes);
     /// False once a write failed (disk full, closed pipe, ...).

@@ -114,7 +114,20 @@ private:
 /// An in-process CAN bus on the event loop: identifier arbitration between the ports that want
 /// to send, each frame occupying the wire for its true duration at the bit rate (stuff bits
 /// counted from the frame's actual bits, interframe space included), per-port queues, error
-/// confinement and fault injection.
+/// confinement and fault injection. Deterministic: no threads, no wall clock.
+///
+/// - When the bus is idle, every port with a queued frame competes, including those that queue
+///   one later at the same loop instant (arbitration is a deferred event); the head of each
+///   port's FIFO queue takes part and the lowest arbitration field wins (arbitration.hpp).
+///   Equal fields, an error on a real bus, go to the port connected first.
+/// - Receivers get a frame at the end of its EOF (WireEvent::end); the next start of frame can
+///   follow the 3-bit intermission; an error-passive transmitter waits 8 more bits.
+/// - A frame is acknowledged when some other connected port is not bus-off (a paused one
+///   acknowledges too); otherwise it ends in an ACK error and is sent again, so a node alone on
+///   the bus becomes error-passive and goes on trying, as a real controller does.
+/// - Errors move the counters as ISO 11898-1 says (error_counters.hpp); a controller whose
+///   state changes is told through Port::on_error_state. A bus-off controller keeps its queue,
+///   refuses new frames, receives nothing and recovers as BusConfig::bus_off_recovery says.
 class VirtualBus {
 public:
     using Observer = std::function<void(const WireEvent&)>;

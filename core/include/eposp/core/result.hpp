@@ -4,21 +4,22 @@
 #include <string>
 #include <utility>
 
-namespace eposp::can {
+namespace eposp::core {
 
-/// Why a trace could not be read or written: a message for the user, naming the file, line or
-/// record where that applies.
-struct TraceError {
+/// Why something the user asked for could not be done, in words for that user: it names the
+/// file and line, the address, the interface or the object where that applies.
+struct Error {
     std::string message;
 };
 
-/// A value or the TraceError that explains its absence: the error-as-value that the trace
-/// readers, parsers and file openers return.
+/// A value, or the Error that explains its absence. Failures that the user can fix (a file that
+/// will not parse, an address in use, a missing interface) are returned as values; exceptions
+/// are kept for programming errors.
 template <typename T>
-class TraceResult {
+class Result {
 public:
-    TraceResult(T value) : value_(std::move(value)) {}
-    TraceResult(TraceError error) : error_(std::move(error)) {}
+    Result(T value) : value_(std::move(value)) {}
+    Result(Error error) : error_(std::move(error)) {}
 
     bool ok() const { return value_.has_value(); }
     explicit operator bool() const { return ok(); }
@@ -29,6 +30,7 @@ public:
     T&& value() && { return std::move(value_).value(); }
     T& operator*() & { return value(); }
     const T& operator*() const& { return value(); }
+    T&& operator*() && { return std::move(*this).value(); }
     T* operator->() { return &value(); }
     const T* operator->() const { return &value(); }
 
@@ -37,7 +39,7 @@ public:
 
 private:
     std::optional<T> value_;
-    TraceError error_;
+    Error error_;
 };
 
-} // namespace eposp::can
+} // namespace eposp::core

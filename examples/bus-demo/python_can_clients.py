@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Two python-can `socketcand` clients exchange frames through a socketcand server.
 
-Usage: socketcand_python_clients.py HOST PORT [CHANNEL]
+Usage: python_can_clients.py HOST PORT [CHANNEL]
 
 Connects two python-can buses to the server (e.g. `eposp bus --socketcand HOST:PORT`), sends
 standard and extended frames of every length 0..8 each way and checks that every frame arrives
@@ -77,8 +77,12 @@ def main(argv):
     host, port = argv[1], int(argv[2])
     channel = argv[3] if len(argv) == 4 else "can0"
 
-    bus_a = can.Bus(interface="socketcand", channel=channel, host=host, port=port)
-    bus_b = can.Bus(interface="socketcand", channel=channel, host=host, port=port)
+    try:
+        bus_a = can.Bus(interface="socketcand", channel=channel, host=host, port=port)
+        bus_b = can.Bus(interface="socketcand", channel=channel, host=host, port=port)
+    except (can.CanError, OSError) as error:
+        print(f"cannot join bus {channel} at {host}:{port}: {error}", file=sys.stderr)
+        return 1
     try:
         a_sends, b_sends = frames(1), frames(2)
         for message in a_sends:
