@@ -1,4 +1,5 @@
 #include "eposp/canmaster/can/candump_log_writer.hpp"
+#include "eposp/test/run_command.hpp"
 #include "trace_test_support.hpp"
 
 #include <chrono>
@@ -35,12 +36,13 @@ TEST(Log2asc, ConvertsOurCandumpLog) {
         writer.record(t0 + 2124us, "can0", Frame::remote_frame(0x701, 1));
     }
 
-    auto run = testing_support::run_command(kLog2asc.string() + " -I '" + file.path().string() +
-                                            "' can0 2>&1");
+    auto run =
+        test::run_command(kLog2asc.string() + " -I '" + file.path().string() + "' can0 2>&1");
 
-    ASSERT_EQ(run.status, 0);
-    ASSERT_GE(run.lines.size(), 3U);
-    run.lines.erase(run.lines.begin(), run.lines.begin() + 3); // date, base and events headers
+    ASSERT_EQ(run.exit_code, 0);
+    auto lines = run.lines();
+    ASSERT_GE(lines.size(), 3U);
+    lines.erase(lines.begin(), lines.begin() + 3); // date, base and events headers
     const std::vector<std::string> expected = {
         "   0.000000 1  0               Rx   d 2 01 00",
         "   0.000974 1  ErrorFrame",
@@ -48,7 +50,7 @@ TEST(Log2asc, ConvertsOurCandumpLog) {
         "   0.002022 1  1ABCDEF0x       Rx   d 1 11",
         "   0.002124 1  701             Rx   r 1",
     };
-    EXPECT_EQ(run.lines, expected);
+    EXPECT_EQ(lines, expected);
 }
 
 } // namespace

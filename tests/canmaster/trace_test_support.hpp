@@ -1,14 +1,10 @@
 #pragma once
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <iterator>
-#include <sstream>
 #include <string>
-#include <vector>
 
 namespace eposp::can::testing_support {
 
@@ -44,30 +40,5 @@ public:
 private:
     std::filesystem::path path_;
 };
-
-struct CommandRun {
-    int status = -1; ///< as pclose() returns it: 0 on success
-    std::vector<std::string> lines;
-};
-
-/// Runs a shell command (for tools such as tshark and log2asc) and collects its standard output.
-inline CommandRun run_command(const std::string& command) {
-    CommandRun run;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (pipe == nullptr) {
-        return run;
-    }
-    std::string output;
-    std::array<char, 4096> buffer{};
-    while (const std::size_t read = std::fread(buffer.data(), 1, buffer.size(), pipe)) {
-        output.append(buffer.data(), read);
-    }
-    run.status = pclose(pipe);
-    std::istringstream lines(output);
-    for (std::string line; std::getline(lines, line);) {
-        run.lines.push_back(line);
-    }
-    return run;
-}
 
 } // namespace eposp::can::testing_support

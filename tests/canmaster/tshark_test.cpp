@@ -1,4 +1,5 @@
 #include "eposp/canmaster/can/pcap_writer.hpp"
+#include "eposp/test/run_command.hpp"
 #include "trace_test_support.hpp"
 
 #include <chrono>
@@ -19,15 +20,15 @@ const std::filesystem::path kTshark = "/usr/bin/tshark";
 
 // Runs tshark on `file`, decoding CAN payloads as CANopen, one line of `|`-separated fields per
 // frame.
-testing_support::CommandRun decode_as_canopen(const std::filesystem::path& file,
-                                              std::initializer_list<std::string_view> fields) {
+test::CommandResult decode_as_canopen(const std::filesystem::path& file,
+                                      std::initializer_list<std::string_view> fields) {
     std::string command = kTshark.string() + " -r '" + file.string() +
                           "' -d can.subdissector,canopen -T fields -E separator='|'";
     for (const auto field : fields) {
         command += " -e ";
         command += field;
     }
-    return testing_support::run_command(command + " 2>/dev/null");
+    return test::run_command(command + " 2>/dev/null");
 }
 
 TEST(Tshark, DecodesOurPcapAsCanopen) {
@@ -51,7 +52,7 @@ TEST(Tshark, DecodesOurPcapAsCanopen) {
     const auto run = decode_as_canopen(
         file.path(), {"frame.time_epoch", "frame.protocols", "_ws.col.Protocol", "_ws.col.Info"});
 
-    ASSERT_EQ(run.status, 0);
+    ASSERT_EQ(run.exit_code, 0);
     const std::vector<std::string> expected = {
         "1436509052.000000001|can:canopen|CANopen|NMT: Start remote node [All]",
         "1436509052.000000002|can|CANopen|SYNC",
@@ -59,7 +60,7 @@ TEST(Tshark, DecodesOurPcapAsCanopen) {
         "1436509052.000000004|can:canopen|CANopen|PDO1 (tx)",
         "1436509052.000000005|can:canopen|CANopen|NMT Error Control: Operational [0x1]",
     };
-    EXPECT_EQ(run.lines, expected);
+    EXPECT_EQ(run.lines(), expected);
 }
 
 TEST(Tshark, ShowsErrorRemoteAndExtendedFrames) {
@@ -81,13 +82,13 @@ TEST(Tshark, ShowsErrorRemoteAndExtendedFrames) {
     const auto run = decode_as_canopen(
         file.path(), {"can.flags.err", "can.flags.rtr", "can.flags.xtd", "can.len", "can.id"});
 
-    ASSERT_EQ(run.status, 0);
+    ASSERT_EQ(run.exit_code, 0);
     const std::vector<std::string> expected = {
         "1|||8|", // an error frame has no identifier of its own
         "0|1|0|1|1793",
         "0|0|1|1|448585456",
     };
-    EXPECT_EQ(run.lines, expected);
+    EXPECT_EQ(run.lines(), expected);
 }
 
 } // namespace

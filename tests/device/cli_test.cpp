@@ -1,46 +1,65 @@
 // The `eposp` command as a user meets it: exit codes and messages.
-#include "eposp/test/run_command.hpp"
+#include "eposp_command.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 namespace eposp::device {
 namespace {
 
-using test::run_command;
 using testing::HasSubstr;
 
-const std::string kEposp = EPOSP_EXECUTABLE;
-
 TEST(Cli, VersionPrintsTheVersion) {
-    const auto result = run_command(kEposp + " --version");
+    const auto result = eposp("--version");
     EXPECT_EQ(result.exit_code, 0);
     EXPECT_THAT(result.output, HasSubstr("eposp 0."));
 }
 
 TEST(Cli, HelpListsTheSubcommands) {
-    const auto result = run_command(kEposp + " --help");
+    const auto result = eposp("--help");
     EXPECT_EQ(result.exit_code, 0);
     EXPECT_THAT(result.output, HasSubstr("bus"));
 }
 
-TEST(Cli, MissingSubcommandIsAUserError) {
-    const auto result = run_command(kEposp);
-    EXPECT_EQ(result.exit_code, 1);
-    EXPECT_THAT(result.output, HasSubstr("subcommand"));
+struct UserErrorCase {
+    const char* name;
+    const char* arguments;
+    const char* message; ///< what the message must mention
+
+    friend void PrintTo(const UserErrorCase& row, std::ostream* out) {
+        *out << "eposp " << row.arguments;
+    }
+};
+
+class UserError : public testing::TestWithParam<UserErrorCase> {};
+
+// Every user error exits with 1 and a message that names what was wrong.
+TEST_P(UserError, ExitsWithOneAndSaysWhy) {
+    const auto result = eposp(GetParam().arguments);
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_THAT(result.output, HasSubstr(GetParam().message));
 }
 
-TEST(Cli, UnknownOptionIsAUserError) {
-    const auto result = run_command(kEposp + " bus --no-such-option");
-    EXPECT_EQ(result.exit_code, 1);
-    EXPECT_THAT(result.output, HasSubstr("--no-such-option"));
-}
-
-TEST(Cli, MalformedDurationIsAUserError) {
-    const auto result = run_command(kEposp + " bus --virtual --for tomorrow");
-    EXPECT_EQ(result.exit_code, 1);
-    EXPECT_THAT(result.output, HasSubstr("not a duration"));
-}
+INSTANTIATE_TEST_SUITE_P(
+    Cli, UserError,
+    testing::Values(
+        UserErrorCase{"MissingSubcommand", "", "subcommand"},
+        UserErrorCase{"UnknownOption", "bus --no-such-option", "--no-such-option"},
+        UserErrorCase{"MalformedDuration", "bus --virtual --for tomorrow", "not a duration"},
+        UserErrorCase{"NonCanopenBitrate", "bus --virtual --bitrate 123456",
+                      "not a CANopen bit rate"},
+        UserErrorCase{"VirtualTimeWithOutsideClients", "bus --virtual --socketcand 127.0.0.1:0",
+                      "--virtual"},
+        UserErrorCase{"MalformedListenAddress", "bus --socketcand nowhere:port",
+                      "not an address to listen on"},
+        UserErrorCase{"MissingReplayFile", "bus --virtual --replay /no/such/file.log",
+                      "/no/such/file.log"},
+        UserErrorCase{"UnwritableTrace", "bus --virtual --log /no/such/dir/bus.log",
+                      "/no/such/dir/bus.log"},
+        UserErrorCase{"MissingCanInterface", "bus --socketcan nosuchcan7 --for 1s", "nosuchcan7"}),
+    [](const testing::TestParamInfo<UserErrorCase>& row) { return row.param.name; });
 
 } // namespace
 } // namespace eposp::device

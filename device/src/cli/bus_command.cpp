@@ -161,7 +161,8 @@ int run_bus(const BusOptions& options) {
     if (options.socketcan) {
         auto opened = can::SocketCanPort::open(loop, *options.socketcan);
         if (!opened) {
-            return report_user_error(kCommand, opened.error());
+            return report_user_error(
+                kCommand, fmt::format("--socketcan {}: {}", *options.socketcan, opened.error()));
         }
         socketcan = std::move(*opened);
         socketcan_side = bus.connect("socketcan:" + *options.socketcan);

@@ -2,13 +2,23 @@
 
 #include <array>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
 
 namespace eposp::test {
 
+std::vector<std::string> CommandResult::lines() const {
+    std::vector<std::string> result;
+    std::istringstream in(output);
+    for (std::string line; std::getline(in, line);) {
+        result.push_back(line);
+    }
+    return result;
+}
+
 CommandResult run_command(const std::string& command) {
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    FILE* pipe = popen(command.c_str(), "r");
     if (pipe == nullptr) {
         throw std::runtime_error("cannot start: " + command);
     }
