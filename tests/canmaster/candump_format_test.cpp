@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <gtest/gtest.h>
+#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -21,6 +22,7 @@ struct FrameText {
     std::string_view name;
     Frame frame;
     std::string_view text;
+    friend void PrintTo(const FrameText& c, std::ostream* os) { *os << c.name; }
 };
 
 class CandumpFrameText : public testing::TestWithParam<FrameText> {};
@@ -98,6 +100,7 @@ TEST(CandumpFormat, LineRoundTrips) {
 struct GoodLine {
     std::string_view name;
     std::string_view line;
+    friend void PrintTo(const GoodLine& c, std::ostream* os) { *os << c.name; }
 };
 
 class CandumpLineVariant : public testing::TestWithParam<GoodLine> {};
@@ -128,6 +131,7 @@ struct BadLine {
     std::string_view name;
     std::string_view line;
     std::string_view reason; ///< a part of the error message
+    friend void PrintTo(const BadLine& c, std::ostream* os) { *os << c.name; }
 };
 
 class CandumpMalformedLine : public testing::TestWithParam<BadLine> {};

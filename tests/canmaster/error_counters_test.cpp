@@ -1,6 +1,7 @@
 #include "eposp/canmaster/can/error_counters.hpp"
 
 #include <gtest/gtest.h>
+#include <ostream>
 
 namespace eposp::can {
 namespace {
@@ -16,6 +17,9 @@ ErrorCounters after_transmit_errors(int count) {
 struct StateCase {
     int transmit_errors;
     ErrorState expected;
+    friend void PrintTo(const StateCase& c, std::ostream* os) {
+        *os << c.transmit_errors << " transmit errors";
+    }
 };
 
 class ErrorCountersStateTest : public ::testing::TestWithParam<StateCase> {};

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <gtest/gtest.h>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -116,6 +117,7 @@ struct BadPcap {
     std::string_view name;
     std::string file;
     std::string_view reason;
+    friend void PrintTo(const BadPcap& c, std::ostream* os) { *os << c.name; }
 };
 
 std::string header_with(std::size_t offset, std::initializer_list<unsigned> values) {

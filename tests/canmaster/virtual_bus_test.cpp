@@ -3,6 +3,7 @@
 #include "virtual_bus_test_support.hpp"
 
 #include <gtest/gtest.h>
+#include <ostream>
 #include <stdexcept>
 
 namespace eposp::can {
@@ -81,6 +82,7 @@ struct ArbitrationCase {
     const char* name;
     Frame winner;
     Frame loser;
+    friend void PrintTo(const ArbitrationCase& c, std::ostream* os) { *os << c.name; }
 };
 
 class ArbitrationTest : public VirtualBusTest,
