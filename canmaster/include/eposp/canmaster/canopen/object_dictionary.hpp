@@ -4,6 +4,7 @@
 #include "eposp/canmaster/canopen/data_type.hpp"
 #include "eposp/canmaster/canopen/value_codec.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -43,6 +44,10 @@ std::string_view to_string(Access access); ///< "rw", as in EDS files
 /// RECORD. Plain data plus two optional hooks with which the node's services compute a value on
 /// read or check and act on a write.
 struct SubObject {
+    /// Large enough for a program image in a DOMAIN, small enough that a remote client cannot
+    /// exhaust memory with an SDO size indication.
+    static constexpr std::size_t kDefaultMaxLength = std::size_t{1} << 20;
+
     /// Computes the value on every read (an error register, a counter); the stored value is
     /// not used then.
     using ReadHook = std::function<Bytes()>;
@@ -60,7 +65,9 @@ struct SubObject {
     Bytes default_value;
     std::optional<Bytes> low_limit;  ///< numeric types only, encoded as the type
     std::optional<Bytes> high_limit; ///< numeric types only, encoded as the type
-    Bytes value;                     ///< the current value
+    /// The longest value a remote write may store in a string or DOMAIN (LengthTooHigh beyond).
+    std::size_t max_length = kDefaultMaxLength;
+    Bytes value; ///< the current value
     ReadHook on_read;
     WriteHook on_write;
 };
@@ -107,6 +114,9 @@ public:
     /// hook's code; None when stored. Listeners are told after the value is stored.
     AbortCode write(std::uint16_t index, std::uint8_t sub_index,
                     std::span<const std::uint8_t> data);
+    /// The checks write() makes before it sees the data (existence, access, length), for a
+    /// value of `size` bytes: lets an SDO server refuse a download at its initiate request.
+    AbortCode check_write_size(std::uint16_t index, std::uint8_t sub_index, std::size_t size) const;
 
     /// The device's own access: the value (through the read hook if any). Asking for a missing
     /// object is a programming error (std::out_of_range).

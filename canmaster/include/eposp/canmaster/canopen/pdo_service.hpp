@@ -1,0 +1,47 @@
+#pragma once
+
+#include "eposp/canmaster/can/frame.hpp"
+#include "eposp/canmaster/can/port.hpp"
+#include "eposp/canmaster/canopen/emergency.hpp"
+#include "eposp/canmaster/canopen/nmt_state.hpp"
+#include "eposp/canmaster/canopen/object_dictionary.hpp"
+#include "eposp/canmaster/canopen/rpdo.hpp"
+#include "eposp/canmaster/canopen/tpdo.hpp"
+#include "eposp/core/event_loop.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace eposp::canopen {
+
+/// Every RPDO and TPDO whose objects a dictionary holds (add_pdo_objects()), as one service for
+/// a node to compose: frames, SYNC notifications and NMT state changes go to all of them. At a
+/// SYNC the TPDOs sample before the RPDOs apply what they received, so a synchronous TPDO
+/// reports the state of the cycle that ends.
+class PdoService {
+public:
+    PdoService(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
+               EmergencyCallback emergency = {});
+
+    void on_frame(const can::Frame& frame);
+    /// The SYNC consumer's notification; `counter` is 0 for a SYNC without counter.
+    void on_sync(std::uint8_t counter);
+    void set_nmt_state(NmtState state);
+    /// Re-reads every PDO's parameters (after ObjectDictionary::reset_to_defaults).
+    void reload();
+
+    std::size_t rpdo_count() const { return rpdos_.size(); }
+    std::size_t tpdo_count() const { return tpdos_.size(); }
+    /// PDO `number`, 1-based; out of range is a programming error (std::out_of_range).
+    Rpdo& rpdo(std::size_t number);
+    Tpdo& tpdo(std::size_t number);
+
+private:
+    std::vector<std::unique_ptr<Rpdo>> rpdos_;
+    std::vector<std::unique_ptr<Tpdo>> tpdos_;
+};
+
+} // namespace eposp::canopen

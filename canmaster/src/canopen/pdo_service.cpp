@@ -1,0 +1,70 @@
+#include "eposp/canmaster/canopen/pdo_service.hpp"
+
+#include "eposp/canmaster/canopen/pdo_objects.hpp"
+
+#include <fmt/format.h>
+#include <stdexcept>
+
+namespace eposp::canopen {
+
+PdoService::PdoService(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
+                       EmergencyCallback emergency) {
+    for (std::size_t n = 1; n <= count_pdos(od, PdoDirection::Receive); ++n) {
+        rpdos_.push_back(std::make_unique<Rpdo>(od, n, emergency));
+    }
+    for (std::size_t n = 1; n <= count_pdos(od, PdoDirection::Transmit); ++n) {
+        tpdos_.push_back(std::make_unique<Tpdo>(loop, port, od, n, emergency));
+    }
+}
+
+void PdoService::on_frame(const can::Frame& frame) {
+    for (auto& rpdo : rpdos_) {
+        rpdo->on_frame(frame);
+    }
+    for (auto& tpdo : tpdos_) {
+        tpdo->on_frame(frame);
+    }
+}
+
+void PdoService::on_sync(std::uint8_t counter) {
+    for (auto& tpdo : tpdos_) {
+        tpdo->on_sync(counter);
+    }
+    for (auto& rpdo : rpdos_) {
+        rpdo->on_sync(counter);
+    }
+}
+
+void PdoService::set_nmt_state(NmtState state) {
+    for (auto& rpdo : rpdos_) {
+        rpdo->set_nmt_state(state);
+    }
+    for (auto& tpdo : tpdos_) {
+        tpdo->set_nmt_state(state);
+    }
+}
+
+void PdoService::reload() {
+    for (auto& rpdo : rpdos_) {
+        rpdo->reload();
+    }
+    for (auto& tpdo : tpdos_) {
+        tpdo->reload();
+    }
+}
+
+Rpdo& PdoService::rpdo(std::size_t number) {
+    if (number == 0 || number > rpdos_.size()) {
+        throw std::out_of_range(fmt::format("no RPDO {}", number));
+    }
+    return *rpdos_[number - 1];
+}
+
+Tpdo& PdoService::tpdo(std::size_t number) {
+    if (number == 0 || number > tpdos_.size()) {
+        throw std::out_of_range(fmt::format("no TPDO {}", number));
+    }
+    return *tpdos_[number - 1];
+}
+
+} // namespace eposp::canopen
