@@ -58,8 +58,8 @@ struct SdoRequestId {
 /// abort code (AbortCode::None on success). Requests to one server are queued and run one at a
 /// time, as CiA 301 allows only one transfer per SDO; servers are served concurrently. Every
 /// protocol violation by a server aborts the transfer with its code, which is sent to the server
-/// and given to the callback. Every callback is called exactly once, never from inside
-/// upload() or download().
+/// and given to the callback. Every callback is called exactly once (unless the client is
+/// destroyed first), never from inside upload() or download().
 class SdoClient {
 public:
     using UploadCallback = std::function<void(AbortCode code, Bytes value)>;

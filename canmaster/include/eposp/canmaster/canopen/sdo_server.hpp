@@ -28,15 +28,16 @@ struct SdoServerConfig {
 };
 
 /// The default SDO server of a node (CiA 301 7.2.4): requests on COB-ID 0x600 + node-ID,
-/// responses on 0x580 + node-ID. Expedited, segmented and block transfers in both directions,
-/// each access going through the dictionary's remote read() / write(), whose abort code travels
-/// back unchanged; a download is checked against ObjectDictionary::check_write_size() at its
-/// initiate request and as its data grows, so that a refused value ends before its data
-/// travels. DOMAIN objects take values of any size up to their SubObject::max_length. One transfer
-/// at a time: a new initiate request ends a running transfer and is served (CiA 301 7.2.4.3.2
-/// / 7.2.4.3.5: the client alone decides when a transfer begins), an abort from the client ends it
-/// without reply. SDOs exist only in NMT pre-operational and operational (CiA 301 7.3.2.2, table
-/// 48); other frames are ignored.
+/// responses on 0x580 + node-ID; expedited, segmented and block transfers both ways.
+///
+/// - Every access goes through the dictionary's remote read() / write(), whose abort code goes
+///   back unchanged. A download is also checked with ObjectDictionary::check_write_size() at its
+///   initiate request and as its data grows, so that a refused value ends before all its data
+///   travelled. DOMAIN objects take values of any size up to their SubObject::max_length.
+/// - One transfer at a time: a new initiate request ends the running transfer without a reply
+///   and is served (the client gave the old one up); an abort from the client ends it silently.
+/// - SDOs exist only in NMT pre-operational and operational (CiA 301 7.3.2.2); in the other
+///   states every frame is ignored.
 class SdoServer {
 public:
     SdoServer(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary, NodeId node,
