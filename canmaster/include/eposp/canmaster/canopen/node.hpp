@@ -1,0 +1,117 @@
+#pragma once
+
+#include "eposp/canmaster/can/frame.hpp"
+#include "eposp/canmaster/can/port.hpp"
+#include "eposp/canmaster/canopen/emcy_producer.hpp"
+#include "eposp/canmaster/canopen/error_history.hpp"
+#include "eposp/canmaster/canopen/heartbeat_consumer.hpp"
+#include "eposp/canmaster/canopen/heartbeat_producer.hpp"
+#include "eposp/canmaster/canopen/lss_protocol.hpp"
+#include "eposp/canmaster/canopen/nmt_slave.hpp"
+#include "eposp/canmaster/canopen/nmt_state.hpp"
+#include "eposp/canmaster/canopen/node_guarding.hpp"
+#include "eposp/canmaster/canopen/object_dictionary.hpp"
+#include "eposp/canmaster/canopen/parameter_store.hpp"
+#include "eposp/canmaster/canopen/pdo_objects.hpp"
+#include "eposp/canmaster/canopen/pdo_service.hpp"
+#include "eposp/canmaster/canopen/sdo_server.hpp"
+#include "eposp/canmaster/canopen/sync_consumer.hpp"
+#include "eposp/canmaster/canopen/sync_objects.hpp"
+#include "eposp/canmaster/canopen/sync_producer.hpp"
+#include "eposp/core/event_loop.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+
+namespace eposp::canopen {
+
+inline constexpr std::uint16_t kDeviceTypeIndex = 0x1000;
+inline constexpr std::uint16_t kIdentityIndex = 0x1018;
+
+/// What a node needs beyond the device's own objects. The communication objects it describes
+/// are added only where the dictionary does not have them yet (e.g. one imported from an EDS).
+struct NodeConfig {
+    NodeId node_id = 1;
+    std::uint32_t device_type = 0;               ///< 0x1000
+    LssAddress identity;                         ///< 0x1018 sub 1..4, also the node's LSS address
+    std::uint8_t heartbeat_consumer_entries = 1; ///< 0x1016
+    std::uint8_t error_history_capacity = kEpos2ErrorHistoryEntries; ///< 0x1003
+    SyncObjectOptions sync;                                          ///< 0x1005..0x1007, 0x1019
+    bool emcy_inhibit_time = true;                                   ///< 0x1015
+    /// The PDOs when the dictionary has none; empty: CiA 301 defaults for 4 RPDOs and 4 TPDOs.
+    std::optional<PdoObjectsConfig> pdos;
+    /// The non-volatile memory behind 0x1010/0x1011; empty: the node has no stored values.
+    std::optional<std::filesystem::path> parameter_file;
+    SdoServerConfig sdo;
+};
+
+/// The error register bits of an emergency code a communication service raises (EPOS2 FW spec
+/// table 4-11: every CAN error 0x81xx/0x82xx is a communication error); generic otherwise.
+std::uint8_t error_register_bits(std::uint16_t emcy_error_code);
+
+/// A CANopen slave node (CiA 301), CANopenNode-style: a dictionary, a port and the services on
+/// them. The node owns the port's receive handler and hands every frame to every service, tells
+/// every service the NMT state, feeds SYNCs (received or its own) to the PDOs and the services'
+/// emergencies to its EMCY producer.
+///
+/// NMT reset communication sets the communication area (0x1000..0x1FFF) back to its stored
+/// values (or defaults) and reloads the PDOs; reset node first does the same for the rest of
+/// the dictionary and tells the device (on_reset_application). The dictionary must outlive the
+/// node and not move.
+class Node {
+public:
+    Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary, NodeConfig config);
+    ~Node();
+    Node(const Node&) = delete;
+    Node& operator=(const Node&) = delete;
+
+    /// Power-up: stored values, boot-up message, pre-operational (CiA 301 7.3.2.2, figure 48).
+    void start();
+
+    /// Told at power-up and at every NMT reset node, after the application area got its stored
+    /// values back: the device resets its own state.
+    void on_reset_application(std::function<void()> handler);
+
+    NmtState nmt_state() const { return nmt_.state(); }
+    NodeId node_id() const { return nmt_.node_id(); }
+    ObjectDictionary& dictionary() { return od_; }
+    /// What the last load of stored values found; NoneStored without a parameter file.
+    const StoredValuesReport& stored_values() const { return stored_values_; }
+
+    NmtSlave& nmt() { return nmt_; }
+    EmcyProducer& emcy() { return emcy_; }
+    HeartbeatConsumer& heartbeat_consumer() { return heartbeat_consumer_; }
+    NodeGuarding& node_guarding() { return guarding_; }
+    SyncConsumer& sync_consumer() { return sync_consumer_; }
+    PdoService& pdo() { return pdo_; }
+
+private:
+    void on_frame(const can::Frame& frame);
+    void set_nmt_state(NmtState state);
+    void raise_emergency(std::uint16_t error_code);
+    /// Stored values (or defaults) back in the communication area only, or in all of it.
+    void restore_stored_values(bool communication_area_only);
+    void reset_application();
+    void reset_communication();
+
+    can::Port& port_;
+    NodeConfig config_;
+    ObjectDictionary& od_; ///< with the communication objects added (see the constructor)
+    std::optional<ParameterStore> store_;
+    StoredValuesReport stored_values_;
+    std::function<void()> application_reset_handler_;
+
+    NmtSlave nmt_;
+    EmcyProducer emcy_;
+    SdoServer sdo_;
+    HeartbeatProducer heartbeat_producer_;
+    HeartbeatConsumer heartbeat_consumer_;
+    NodeGuarding guarding_;
+    SyncProducer sync_producer_;
+    SyncConsumer sync_consumer_;
+    PdoService pdo_;
+};
+
+} // namespace eposp::canopen
