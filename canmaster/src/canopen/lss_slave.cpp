@@ -36,9 +36,10 @@ void LssSlave::on_frame(const can::Frame& frame) {
     if (!cs || switch_phase_ == SwitchPhase::Switching || !accessible()) {
         return;
     }
-    if (*cs == LssCommand::SwitchStateGlobal) {
-        switch_state_global(frame.data[1]);
-    } else if (state_ == LssState::Waiting) {
+    if (on_command_of_any_state(*cs, frame)) {
+        return;
+    }
+    if (state_ == LssState::Waiting) {
         on_waiting_command(*cs, frame);
     } else {
         on_configuration_command(*cs, frame);
@@ -67,15 +68,13 @@ void LssSlave::enter(LssState state) {
     identify_matched_ = 0;
 }
 
-// EPOS2 FW spec 7.4.1, table 7-66: what each LSS state accepts.
-void LssSlave::on_waiting_command(LssCommand cs, const can::Frame& frame) {
+// EPOS2 FW spec 7.4.1, table 7-66: what each LSS state accepts. These commands are accepted in
+// both states; returns false for the others.
+bool LssSlave::on_command_of_any_state(LssCommand cs, const can::Frame& frame) {
     switch (cs) {
-    case LssCommand::SwitchStateSelectiveVendorId:
-    case LssCommand::SwitchStateSelectiveProductCode:
-    case LssCommand::SwitchStateSelectiveRevisionNumber:
-    case LssCommand::SwitchStateSelectiveSerialNumber:
-        switch_state_selective(cs, lss_u32(frame));
-        break;
+    case LssCommand::SwitchStateGlobal:
+        switch_state_global(frame.data[1]);
+        return true;
     case LssCommand::IdentifyRemoteSlaveVendorId:
     case LssCommand::IdentifyRemoteSlaveProductCode:
     case LssCommand::IdentifyRemoteSlaveRevisionLow:
@@ -83,9 +82,22 @@ void LssSlave::on_waiting_command(LssCommand cs, const can::Frame& frame) {
     case LssCommand::IdentifyRemoteSlaveSerialLow:
     case LssCommand::IdentifyRemoteSlaveSerialHigh:
         identify_remote_slave(cs, lss_u32(frame));
-        break;
+        return true;
     case LssCommand::IdentifyNonConfiguredRemoteSlave:
         identify_non_configured_remote_slave();
+        return true;
+    default:
+        return false;
+    }
+}
+
+void LssSlave::on_waiting_command(LssCommand cs, const can::Frame& frame) {
+    switch (cs) {
+    case LssCommand::SwitchStateSelectiveVendorId:
+    case LssCommand::SwitchStateSelectiveProductCode:
+    case LssCommand::SwitchStateSelectiveRevisionNumber:
+    case LssCommand::SwitchStateSelectiveSerialNumber:
+        switch_state_selective(cs, lss_u32(frame));
         break;
     case LssCommand::Fastscan:
         fastscan(frame);
@@ -119,17 +131,6 @@ void LssSlave::on_configuration_command(LssCommand cs, const can::Frame& frame) 
     }
     case LssCommand::InquireNodeId:
         respond(cs, {active_.node_id});
-        break;
-    case LssCommand::IdentifyRemoteSlaveVendorId:
-    case LssCommand::IdentifyRemoteSlaveProductCode:
-    case LssCommand::IdentifyRemoteSlaveRevisionLow:
-    case LssCommand::IdentifyRemoteSlaveRevisionHigh:
-    case LssCommand::IdentifyRemoteSlaveSerialLow:
-    case LssCommand::IdentifyRemoteSlaveSerialHigh:
-        identify_remote_slave(cs, lss_u32(frame));
-        break;
-    case LssCommand::IdentifyNonConfiguredRemoteSlave:
-        identify_non_configured_remote_slave();
         break;
     default:
         break;

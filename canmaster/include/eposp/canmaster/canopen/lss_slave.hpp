@@ -94,6 +94,7 @@ private:
     bool accessible() const;
     bool non_configured() const;
     void enter(LssState state);
+    bool on_command_of_any_state(LssCommand cs, const can::Frame& frame);
     void on_waiting_command(LssCommand cs, const can::Frame& frame);
     void on_configuration_command(LssCommand cs, const can::Frame& frame);
     void switch_state_global(std::uint8_t mode);
