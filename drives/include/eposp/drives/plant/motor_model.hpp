@@ -1,0 +1,96 @@
+#pragma once
+
+namespace eposp::drives::plant {
+
+/// Motor Type 0x6402 families the model covers.
+enum class MotorKind {
+    BrushedDc,
+    Ec, ///< brushless, ideally commutated: the terminal (phase-to-phase) data of maxon's sheets
+};
+
+/// A motor as maxon's data sheets describe it, in SI units.
+struct MotorParameters {
+    MotorKind kind = MotorKind::BrushedDc;
+    double terminal_resistance = 0; ///< Ω
+    double terminal_inductance = 0; ///< H
+    double torque_constant = 0;     ///< N·m/A
+    double speed_constant = 0;      ///< rpm/V
+    int pole_pairs = 1;             ///< EC only
+    double rotor_inertia = 0;       ///< kg·m²
+
+    /// Back-EMF constant in V·s/rad, from the speed constant.
+    double back_emf_constant() const;
+};
+
+/// What the shaft drives, on the output side of the gearhead.
+struct LoadParameters {
+    double inertia = 0;          ///< kg·m²
+    double viscous_friction = 0; ///< N·m·s/rad
+    double coulomb_friction = 0; ///< N·m
+};
+
+/// An optional gearhead; ratio 1 and efficiency 1 is a direct drive.
+struct GearheadParameters {
+    double ratio = 1;      ///< motor turns per output turn
+    double efficiency = 1; ///< applied to the load torques the motor must overcome
+};
+
+/// The power stage: PWM duty limits of the supply voltage.
+struct PowerStageParameters {
+    double supply_voltage = 24; ///< V
+    double max_duty = 0.9;      ///< fraction of the supply the bridge can apply
+    double max_voltage() const { return supply_voltage * max_duty; }
+};
+
+struct PlantParameters {
+    MotorParameters motor;
+    LoadParameters load;
+    GearheadParameters gearhead;
+    PowerStageParameters power_stage;
+};
+
+/// The electrical and mechanical state of the motor shaft.
+struct MotorState {
+    double current = 0; ///< A
+    double speed = 0;   ///< motor shaft, rad/s
+    double angle = 0;   ///< motor shaft, rad
+};
+
+/// The motor, gearhead and load seen from the motor shaft, integrated with a fixed step.
+///
+/// Solver: the RL circuit is discretised exactly for a voltage held over the step (the PWM
+/// average is held for a control period, and the back-EMF barely changes in 100 µs). Explicit
+/// Euler would be unstable once the step exceeds 2·L/R, and maxon's small motors have L/R of
+/// ~0.1 ms, the size of the step. The mechanical part (time constants of milliseconds) takes the
+/// step's mean current, with viscous friction implicit and Coulomb friction that sticks.
+class MotorModel {
+public:
+    explicit MotorModel(const PlantParameters& parameters);
+
+    /// Applies `voltage` (clamped to ±max voltage of the power stage) for `dt` seconds.
+    void step(double dt, double voltage);
+    /// The power stage switched off: the bridge is open, the current decays to zero at once (the
+    /// free-wheeling time is far below a step) and the shaft coasts.
+    void step_unpowered(double dt);
+
+    const MotorState& state() const { return state_; }
+    void set_state(const MotorState& state) { state_ = state; }
+    const PlantParameters& parameters() const { return parameters_; }
+
+    /// Inertia, friction and their combination seen at the motor shaft.
+    double reflected_inertia() const { return inertia_; }
+    /// The output-side angle (after the gearhead), rad.
+    double output_angle() const;
+
+private:
+    void integrate_mechanics(double dt, double mean_current);
+
+    PlantParameters parameters_;
+    MotorState state_;
+    double inertia_ = 0;
+    double viscous_ = 0;
+    double coulomb_ = 0;
+    double back_emf_constant_ = 0;
+};
+
+} // namespace eposp::drives::plant

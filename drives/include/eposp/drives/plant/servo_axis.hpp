@@ -1,0 +1,86 @@
+#pragma once
+
+#include "eposp/drives/plant/controller_gains.hpp"
+#include "eposp/drives/plant/motor_model.hpp"
+#include "eposp/drives/plant/pid_controller.hpp"
+
+#include <cstdint>
+
+namespace eposp::drives::plant {
+
+/// Which loop closes around the current controller (EPOS2 FW spec 5.9, 5.12, 5.14): position
+/// and velocity control each output a current demand; the power stage off runs no loop.
+enum class ControlMode { PowerOff, Current, Velocity, Position };
+
+/// The demand of the trajectory generator or the operating mode, in drive units: quadcounts,
+/// quadcounts/s, quadcounts/s² and amperes.
+struct AxisDemand {
+    double position = 0;
+    double velocity = 0;     ///< velocity demand, and velocity feed-forward in position mode
+    double acceleration = 0; ///< acceleration feed-forward
+    double current = 0;      ///< current mode only
+};
+
+struct ServoGains {
+    CurrentGains current;
+    VelocityGains velocity;
+    PositionGains position;
+    double current_limit = 1; ///< A, the output current limit the outer loops may demand
+};
+
+struct AxisParameters {
+    PlantParameters plant;
+    int encoder_pulses = 500; ///< 0x2210 pulses per turn, on the motor shaft
+    ServoGains gains;
+};
+
+/// One axis: motor model, encoder and the cascade at the EPOS2's rates. The current loop and
+/// the plant step at 10 kHz (0.1 ms, the sampling time of 8.2.47); position and velocity loops
+/// every tenth step (1 kHz), measuring velocity as quadcounts per millisecond as the EPOS2 does
+/// (8.2.48).
+class ServoAxis {
+public:
+    static constexpr double kCurrentLoopPeriod = 100e-6;
+    static constexpr int kCurrentStepsPerOuterLoop = 10;
+    static constexpr double kOuterLoopPeriod = kCurrentLoopPeriod * kCurrentStepsPerOuterLoop;
+
+    explicit ServoAxis(const AxisParameters& parameters);
+
+    /// Switching modes restarts the controllers (their integrators start from zero).
+    void set_mode(ControlMode mode);
+    ControlMode mode() const { return mode_; }
+    void set_demand(const AxisDemand& demand) { demand_ = demand; }
+
+    /// One 0.1 ms step of the current loop and the plant.
+    void step();
+
+    std::int64_t position_actual() const { return position_; }
+    double velocity_actual() const { return velocity_; } ///< quadcounts/s over the last 1 ms
+    double current_actual() const { return motor_.state().current; }
+    double current_demand() const { return current_demand_; }
+    bool index_passed() const { return index_passed_; } ///< during the last step
+    std::uint8_t hall_sensors() const;
+    const MotorModel& motor() const { return motor_; }
+    MotorModel& motor() { return motor_; }
+
+private:
+    void run_outer_loop();
+    void reset_controllers();
+
+    AxisParameters parameters_;
+    MotorModel motor_;
+    double radians_per_count_;
+    PidController current_controller_;
+    PidController velocity_controller_;
+    PidController position_controller_;
+    ControlMode mode_ = ControlMode::PowerOff;
+    AxisDemand demand_;
+    double current_demand_ = 0;
+    std::int64_t position_ = 0;
+    std::int64_t position_at_outer_loop_ = 0;
+    double velocity_ = 0;
+    bool index_passed_ = false;
+    int steps_until_outer_loop_ = 0;
+};
+
+} // namespace eposp::drives::plant

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+namespace eposp::drives::plant {
+
+/// EPOS2 FW spec 3.3.1: positions are quadcounts, 4 × encoder pulses per revolution (0x2210).
+std::int64_t counts_per_turn(int encoder_pulses);
+
+/// The quadcount reading of an incremental encoder on the motor shaft: the angle quantised
+/// downwards to whole counts, zero at angle zero.
+std::int64_t quadcounts(double motor_angle, int encoder_pulses);
+
+/// Whether the index channel pulsed between two readings: once per revolution, where the count
+/// is a multiple of counts_per_turn.
+bool index_passed(std::int64_t before, std::int64_t after, int encoder_pulses);
+
+/// The three hall sensor bits of an EC motor (8.2.46: bit 0 = sensor 1 …): six 60° sectors per
+/// electrical revolution, pole_pairs electrical revolutions per turn, in the usual 120° sequence
+/// 1, 3, 2, 6, 4, 5 for positive rotation.
+std::uint8_t hall_pattern(double motor_angle, int pole_pairs);
+
+/// Simulated switches at configurable positions in quadcounts; an absent switch never trips.
+struct SwitchLayout {
+    std::optional<std::int64_t> negative_limit; ///< active at and below this position
+    std::optional<std::int64_t> positive_limit; ///< active at and above this position
+    std::optional<std::int64_t> home;           ///< the home switch's edge
+    bool home_active_above = true;              ///< which side of the edge the switch is pressed
+};
+
+struct SwitchStates {
+    bool negative_limit = false;
+    bool positive_limit = false;
+    bool home = false;
+
+    friend bool operator==(const SwitchStates&, const SwitchStates&) = default;
+};
+
+SwitchStates switch_states(const SwitchLayout& layout, std::int64_t position);
+
+} // namespace eposp::drives::plant

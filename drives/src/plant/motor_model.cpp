@@ -1,0 +1,64 @@
+#include "eposp/drives/plant/motor_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace eposp::drives::plant {
+
+double MotorParameters::back_emf_constant() const {
+    return 60.0 / (2 * std::numbers::pi * speed_constant);
+}
+
+MotorModel::MotorModel(const PlantParameters& parameters)
+    : parameters_(parameters), back_emf_constant_(parameters.motor.back_emf_constant()) {
+    // Load quantities reflect through the gearhead by 1/N² (inertia, viscous) and 1/(N·η)
+    // (Coulomb torque the motor must supply).
+    const double ratio = parameters.gearhead.ratio;
+    inertia_ = parameters.motor.rotor_inertia + parameters.load.inertia / (ratio * ratio);
+    viscous_ = parameters.load.viscous_friction / (ratio * ratio);
+    coulomb_ = parameters.load.coulomb_friction / (ratio * parameters.gearhead.efficiency);
+}
+
+double MotorModel::output_angle() const {
+    return state_.angle / parameters_.gearhead.ratio;
+}
+
+void MotorModel::step(double dt, double voltage) {
+    const MotorParameters& motor = parameters_.motor;
+    const double limit = parameters_.power_stage.max_voltage();
+    const double applied = std::clamp(voltage, -limit, limit);
+    // i' = (u − e − R·i)/L with u and e held: i → i_final exponentially with τ = L/R.
+    const double r = motor.terminal_resistance;
+    const double x = dt * r / motor.terminal_inductance;
+    const double decay = std::exp(-x);
+    const double i_final = (applied - back_emf_constant_ * state_.speed) / r;
+    const double i_start = state_.current;
+    state_.current = i_final + (i_start - i_final) * decay;
+    // The exact mean of that exponential over the step drives the shaft.
+    const double mean_current = i_final + (i_start - i_final) * (1 - decay) / x;
+    integrate_mechanics(dt, mean_current);
+}
+
+void MotorModel::step_unpowered(double dt) {
+    state_.current = 0;
+    integrate_mechanics(dt, 0);
+}
+
+void MotorModel::integrate_mechanics(double dt, double mean_current) {
+    const double drive = parameters_.motor.torque_constant * mean_current;
+    const double omega = state_.speed;
+    if (omega == 0 && std::abs(drive) <= coulomb_) {
+        return; // static friction holds the shaft
+    }
+    const double direction = omega != 0 ? std::copysign(1.0, omega) : std::copysign(1.0, drive);
+    double next =
+        (omega + dt / inertia_ * (drive - coulomb_ * direction)) / (1 + dt * viscous_ / inertia_);
+    if (next * direction < 0 && std::abs(drive) <= coulomb_) {
+        next = 0; // friction brings the shaft to rest, it does not reverse it
+    }
+    state_.angle += 0.5 * (omega + next) * dt;
+    state_.speed = next;
+}
+
+} // namespace eposp::drives::plant

@@ -1,0 +1,93 @@
+#include "eposp/drives/plant/servo_axis.hpp"
+
+#include "eposp/drives/plant/shaft_sensors.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+namespace eposp::drives::plant {
+
+ServoAxis::ServoAxis(const AxisParameters& parameters)
+    : parameters_(parameters), motor_(parameters.plant),
+      radians_per_count_(2 * std::numbers::pi /
+                         static_cast<double>(counts_per_turn(parameters.encoder_pulses))),
+      current_controller_({parameters.gains.current.kp, parameters.gains.current.ki, 0},
+                          parameters.plant.power_stage.max_voltage()),
+      velocity_controller_({parameters.gains.velocity.kp, parameters.gains.velocity.ki, 0},
+                           parameters.gains.current_limit),
+      position_controller_({parameters.gains.position.kp, parameters.gains.position.ki,
+                            parameters.gains.position.kd},
+                           parameters.gains.current_limit) {}
+
+void ServoAxis::set_mode(ControlMode mode) {
+    if (mode != mode_) {
+        mode_ = mode;
+        reset_controllers();
+    }
+}
+
+void ServoAxis::reset_controllers() {
+    current_controller_.reset();
+    velocity_controller_.reset();
+    position_controller_.reset();
+    current_demand_ = 0;
+    steps_until_outer_loop_ = 0;
+}
+
+void ServoAxis::step() {
+    if (steps_until_outer_loop_ == 0) {
+        run_outer_loop();
+        steps_until_outer_loop_ = kCurrentStepsPerOuterLoop;
+    }
+    --steps_until_outer_loop_;
+    if (mode_ == ControlMode::PowerOff) {
+        motor_.step_unpowered(kCurrentLoopPeriod);
+    } else {
+        const double error = current_demand_ - motor_.state().current;
+        motor_.step(kCurrentLoopPeriod, current_controller_.update(error, kCurrentLoopPeriod));
+    }
+    const std::int64_t previous = position_;
+    position_ = quadcounts(motor_.state().angle, parameters_.encoder_pulses);
+    index_passed_ = plant::index_passed(previous, position_, parameters_.encoder_pulses);
+}
+
+void ServoAxis::run_outer_loop() {
+    velocity_ = static_cast<double>(position_ - position_at_outer_loop_) / kOuterLoopPeriod;
+    position_at_outer_loop_ = position_;
+    // Demands in quadcounts become motor-shaft radians, the unit of the gains.
+    const double velocity_demand = demand_.velocity * radians_per_count_;
+    const double acceleration_demand = demand_.acceleration * radians_per_count_;
+    switch (mode_) {
+    case ControlMode::PowerOff:
+        current_demand_ = 0;
+        break;
+    case ControlMode::Current:
+        current_demand_ = std::clamp(demand_.current, -parameters_.gains.current_limit,
+                                     parameters_.gains.current_limit);
+        break;
+    case ControlMode::Velocity: {
+        const VelocityGains& gains = parameters_.gains.velocity;
+        const double feed_forward = gains.velocity_feed_forward * velocity_demand +
+                                    gains.acceleration_feed_forward * acceleration_demand;
+        current_demand_ = velocity_controller_.update(
+            velocity_demand - velocity_ * radians_per_count_, kOuterLoopPeriod, feed_forward);
+        break;
+    }
+    case ControlMode::Position: {
+        const PositionGains& gains = parameters_.gains.position;
+        const double feed_forward = gains.velocity_feed_forward * velocity_demand +
+                                    gains.acceleration_feed_forward * acceleration_demand;
+        const double error =
+            (demand_.position - static_cast<double>(position_)) * radians_per_count_;
+        current_demand_ = position_controller_.update(error, kOuterLoopPeriod, feed_forward);
+        break;
+    }
+    }
+}
+
+std::uint8_t ServoAxis::hall_sensors() const {
+    const MotorParameters& motor = parameters_.plant.motor;
+    return motor.kind == MotorKind::Ec ? hall_pattern(motor_.state().angle, motor.pole_pairs) : 0;
+}
+
+} // namespace eposp::drives::plant

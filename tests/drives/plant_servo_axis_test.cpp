@@ -1,0 +1,103 @@
+#include "eposp/drives/motion/profile_planner.hpp"
+#include "eposp/drives/plant/servo_axis.hpp"
+#include "plant_test_motor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace eposp::drives::plant {
+namespace {
+
+void run_for(ServoAxis& axis, double seconds) {
+    for (int i = 0; i < static_cast<int>(std::lround(seconds / ServoAxis::kCurrentLoopPeriod));
+         ++i) {
+        axis.step();
+    }
+}
+
+TEST(ControllerGains, DictionaryUnitsConvertToSi) {
+    const CurrentGains current = to_si(CurrentControlParameterSet{500, 4000});
+    EXPECT_DOUBLE_EQ(current.kp, 0.5);
+    EXPECT_DOUBLE_EQ(current.ki, 4000);
+    const PositionGains position = to_si(PositionControlParameterSet{2000, 100, 400, 10, 250});
+    EXPECT_DOUBLE_EQ(position.kp, 2.0);
+    EXPECT_DOUBLE_EQ(position.ki, 0.1);
+    EXPECT_DOUBLE_EQ(position.kd, 0.04);
+    EXPECT_DOUBLE_EQ(position.velocity_feed_forward, 0.001);
+    EXPECT_DOUBLE_EQ(position.acceleration_feed_forward, 250e-6);
+}
+
+TEST(ServoAxis, CurrentLoopStepSettlesWithinTwoMilliseconds) {
+    AxisParameters parameters = test::tuned_axis();
+    parameters.plant.load.coulomb_friction = 100; // locked rotor: no back-EMF
+    ServoAxis axis(parameters);
+    axis.set_mode(ControlMode::Current);
+    axis.set_demand({.current = 1.0});
+    double peak = 0;
+    for (int i = 0; i < 20; ++i) {
+        axis.step();
+        peak = std::max(peak, axis.current_actual());
+    }
+    EXPECT_NEAR(axis.current_actual(), 1.0, 0.01);
+    EXPECT_LT(peak, 1.02); // the PI zero cancels the L/R pole: no overshoot to speak of
+}
+
+TEST(ServoAxis, VelocityLoopHoldsTheDemandedSpeed) {
+    ServoAxis axis(test::tuned_axis());
+    axis.set_mode(ControlMode::Velocity);
+    const double demand = 1000.0 / 60 * 2000; // 1000 rpm in quadcounts/s
+    axis.set_demand({.velocity = demand});
+    run_for(axis, 0.5);
+    // One quadcount per millisecond is the measurement's resolution.
+    EXPECT_NEAR(axis.velocity_actual(), demand, 1000);
+    EXPECT_NEAR(axis.motor().state().speed * 60 / (2 * std::numbers::pi), 1000, 5);
+}
+
+TEST(ServoAxis, PositionLoopFollowsAProfileAndSettlesOnTarget) {
+    ServoAxis axis(test::tuned_axis());
+    axis.set_mode(ControlMode::Position);
+    const motion::Trajectory move =
+        motion::plan_position_move({}, 20000, {50000, 200000, 200000, motion::RampShape::Linear});
+    double worst_following_error = 0;
+    double t = 0;
+    while (t < move.duration() + 0.3) {
+        const motion::MotionState demand = move.sample(t);
+        axis.set_demand({demand.position, demand.velocity, demand.acceleration, 0});
+        axis.step();
+        t += ServoAxis::kCurrentLoopPeriod;
+        worst_following_error =
+            std::max(worst_following_error,
+                     std::abs(demand.position - static_cast<double>(axis.position_actual())));
+    }
+    EXPECT_LE(std::abs(axis.position_actual() - 20000), 1);
+    EXPECT_LT(worst_following_error, 20); // feed-forward keeps it to a few quadcounts
+}
+
+TEST(ServoAxis, PowerOffLetsTheShaftCoast) {
+    ServoAxis axis(test::tuned_axis());
+    axis.motor().set_state({0, 100, 0});
+    run_for(axis, 0.01);
+    EXPECT_EQ(axis.current_actual(), 0);
+    EXPECT_GT(axis.position_actual(), 0);
+}
+
+TEST(ServoAxis, EcMotorReportsHallSensorsAndIndex) {
+    AxisParameters parameters = test::tuned_axis();
+    parameters.plant.motor.kind = MotorKind::Ec;
+    parameters.plant.motor.pole_pairs = 4;
+    ServoAxis axis(parameters);
+    axis.set_mode(ControlMode::Velocity);
+    axis.set_demand({.velocity = 100000});
+    int index_pulses = 0;
+    for (int i = 0; i < 5000; ++i) {
+        axis.step();
+        index_pulses += axis.index_passed() ? 1 : 0;
+        ASSERT_NE(axis.hall_sensors(), 0);
+        ASSERT_NE(axis.hall_sensors(), 7);
+    }
+    EXPECT_EQ(index_pulses, axis.position_actual() / 2000);
+}
+
+} // namespace
+} // namespace eposp::drives::plant
