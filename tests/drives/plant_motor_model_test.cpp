@@ -10,9 +10,9 @@ namespace {
 constexpr double kStep = 100e-6;
 
 MotorModel run(PlantParameters plant, double voltage, double seconds) {
-    MotorModel model(plant);
+    MotorModel model(plant, kStep);
     for (int i = 0; i < static_cast<int>(std::lround(seconds / kStep)); ++i) {
-        model.step(kStep, voltage);
+        model.step(voltage);
     }
     return model;
 }
@@ -38,9 +38,9 @@ TEST(MotorModel, LockedRotorCurrentRisesWithElectricalTimeConstant) {
     plant.load.coulomb_friction = 100; // holds the shaft
     const double r = plant.motor.terminal_resistance;
     const double tau = plant.motor.terminal_inductance / r;
-    MotorModel model(plant);
+    MotorModel model(plant, tau / 4);
     for (int i = 1; i <= 8; ++i) {
-        model.step(tau / 4, 10);
+        model.step(10);
         EXPECT_NEAR(model.state().current, 10 / r * (1 - std::exp(-i / 4.0)), 1e-12) << i;
     }
     EXPECT_EQ(model.state().speed, 0);
@@ -51,8 +51,8 @@ TEST(MotorModel, StepTenTimesTheElectricalTimeConstantStaysStable) {
     PlantParameters plant = test::free_motor();
     plant.load.coulomb_friction = 100;
     const double r = plant.motor.terminal_resistance;
-    MotorModel model(plant);
-    model.step(10 * plant.motor.terminal_inductance / r, 10);
+    MotorModel model(plant, 10 * plant.motor.terminal_inductance / r);
+    model.step(10);
     EXPECT_NEAR(model.state().current, 10 / r * (1 - std::exp(-10.0)), 1e-12);
 }
 
@@ -68,9 +68,9 @@ TEST(MotorModel, SpeedStepResponseMatchesSecondOrderClosedForm) {
     const double s1 = (-b + root) / (2 * a);
     const double s2 = (-b - root) / (2 * a);
     const double final_speed = 12 / ke;
-    MotorModel model(plant);
+    MotorModel model(plant, kStep);
     for (int i = 1; i <= 400; ++i) {
-        model.step(kStep, 12);
+        model.step(12);
         const double t = i * kStep;
         const double expected =
             final_speed * (1 - (s2 * std::exp(s1 * t) - s1 * std::exp(s2 * t)) / (s2 - s1));
@@ -90,10 +90,10 @@ TEST(MotorModel, VoltageIsLimitedByPwmDuty) {
 TEST(MotorModel, UnpoweredShaftCoastsDownWithViscousFriction) {
     PlantParameters plant = test::free_motor();
     plant.load.viscous_friction = 1e-6;
-    MotorModel model(plant);
+    MotorModel model(plant, kStep);
     model.set_state({0, 100, 0});
     for (int i = 0; i < 10000; ++i) {
-        model.step_unpowered(kStep);
+        model.step_unpowered();
     }
     const double expected = 100 * std::exp(-1e-6 * 1.0 / plant.motor.rotor_inertia);
     EXPECT_NEAR(model.state().speed, expected, expected * 0.01);
@@ -103,10 +103,10 @@ TEST(MotorModel, UnpoweredShaftCoastsDownWithViscousFriction) {
 TEST(MotorModel, CoulombFrictionStopsTheShaftWithoutReversing) {
     PlantParameters plant = test::free_motor();
     plant.load.coulomb_friction = 1e-3;
-    MotorModel model(plant);
+    MotorModel model(plant, kStep);
     model.set_state({0, 10, 0});
     for (int i = 0; i < 1000; ++i) {
-        model.step_unpowered(kStep);
+        model.step_unpowered();
     }
     EXPECT_EQ(model.state().speed, 0);
     // ω0²·J/(2·τc): the angle the shaft coasts
@@ -117,7 +117,7 @@ TEST(MotorModel, GearheadReflectsLoadAndDividesTheOutputAngle) {
     PlantParameters plant = test::free_motor();
     plant.load.inertia = 1e-3;
     plant.gearhead = {100, 0.8};
-    MotorModel model(plant);
+    MotorModel model(plant, kStep);
     EXPECT_NEAR(model.reflected_inertia(), 1.05e-6 + 1e-3 / 1e4, 1e-15);
     model.set_state({0, 0, 2 * std::numbers::pi * 100});
     EXPECT_NEAR(model.output_angle(), 2 * std::numbers::pi, 1e-12);

@@ -10,8 +10,13 @@ double MotorParameters::back_emf_constant() const {
     return 60.0 / (2 * std::numbers::pi * speed_constant);
 }
 
-MotorModel::MotorModel(const PlantParameters& parameters)
-    : parameters_(parameters), back_emf_constant_(parameters.motor.back_emf_constant()) {
+MotorModel::MotorModel(const PlantParameters& parameters, double step)
+    : parameters_(parameters), step_(step),
+      back_emf_constant_(parameters.motor.back_emf_constant()) {
+    const double x =
+        step * parameters.motor.terminal_resistance / parameters.motor.terminal_inductance;
+    current_decay_ = std::exp(-x);
+    mean_current_weight_ = (1 - current_decay_) / x;
     // Load quantities reflect through the gearhead by 1/N² (inertia, viscous) and 1/(N·η)
     // (Coulomb torque the motor must supply).
     const double ratio = parameters.gearhead.ratio;
@@ -24,28 +29,25 @@ double MotorModel::output_angle() const {
     return state_.angle / parameters_.gearhead.ratio;
 }
 
-void MotorModel::step(double dt, double voltage) {
-    const MotorParameters& motor = parameters_.motor;
+void MotorModel::step(double voltage) {
     const double limit = parameters_.power_stage.max_voltage();
     const double applied = std::clamp(voltage, -limit, limit);
     // i' = (u − e − R·i)/L with u and e held: i → i_final exponentially with τ = L/R.
-    const double r = motor.terminal_resistance;
-    const double x = dt * r / motor.terminal_inductance;
-    const double decay = std::exp(-x);
-    const double i_final = (applied - back_emf_constant_ * state_.speed) / r;
+    const double i_final =
+        (applied - back_emf_constant_ * state_.speed) / parameters_.motor.terminal_resistance;
     const double i_start = state_.current;
-    state_.current = i_final + (i_start - i_final) * decay;
+    state_.current = i_final + (i_start - i_final) * current_decay_;
     // The exact mean of that exponential over the step drives the shaft.
-    const double mean_current = i_final + (i_start - i_final) * (1 - decay) / x;
-    integrate_mechanics(dt, mean_current);
+    integrate_mechanics(i_final + (i_start - i_final) * mean_current_weight_);
 }
 
-void MotorModel::step_unpowered(double dt) {
+void MotorModel::step_unpowered() {
     state_.current = 0;
-    integrate_mechanics(dt, 0);
+    integrate_mechanics(0);
 }
 
-void MotorModel::integrate_mechanics(double dt, double mean_current) {
+void MotorModel::integrate_mechanics(double mean_current) {
+    const double dt = step_;
     const double drive = parameters_.motor.torque_constant * mean_current;
     const double omega = state_.speed;
     if (omega == 0 && std::abs(drive) <= coulomb_) {

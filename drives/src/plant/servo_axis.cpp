@@ -8,7 +8,7 @@
 namespace eposp::drives::plant {
 
 ServoAxis::ServoAxis(const AxisParameters& parameters)
-    : parameters_(parameters), motor_(parameters.plant),
+    : parameters_(parameters), motor_(parameters.plant, kCurrentLoopPeriod),
       radians_per_count_(2 * std::numbers::pi /
                          static_cast<double>(counts_per_turn(parameters.encoder_pulses))),
       current_controller_({parameters.gains.current.kp, parameters.gains.current.ki, 0},
@@ -41,10 +41,10 @@ void ServoAxis::step() {
     }
     --steps_until_outer_loop_;
     if (mode_ == ControlMode::PowerOff) {
-        motor_.step_unpowered(kCurrentLoopPeriod);
+        motor_.step_unpowered();
     } else {
         const double error = current_demand_ - motor_.state().current;
-        motor_.step(kCurrentLoopPeriod, current_controller_.update(error, kCurrentLoopPeriod));
+        motor_.step(current_controller_.update(error, kCurrentLoopPeriod));
     }
     const std::int64_t previous = position_;
     position_ = quadcounts(motor_.state().angle, parameters_.encoder_pulses);

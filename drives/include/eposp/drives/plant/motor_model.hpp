@@ -65,13 +65,15 @@ struct MotorState {
 /// step's mean current, with viscous friction implicit and Coulomb friction that sticks.
 class MotorModel {
 public:
-    explicit MotorModel(const PlantParameters& parameters);
+    /// `step` is the fixed integration step in seconds; the exponentials of the electrical
+    /// solution depend only on it and are computed once.
+    MotorModel(const PlantParameters& parameters, double step);
 
-    /// Applies `voltage` (clamped to ±max voltage of the power stage) for `dt` seconds.
-    void step(double dt, double voltage);
+    /// Applies `voltage` (clamped to ±max voltage of the power stage) for one step.
+    void step(double voltage);
     /// The power stage switched off: the bridge is open, the current decays to zero at once (the
     /// free-wheeling time is far below a step) and the shaft coasts.
-    void step_unpowered(double dt);
+    void step_unpowered();
 
     const MotorState& state() const { return state_; }
     void set_state(const MotorState& state) { state_ = state; }
@@ -83,9 +85,12 @@ public:
     double output_angle() const;
 
 private:
-    void integrate_mechanics(double dt, double mean_current);
+    void integrate_mechanics(double mean_current);
 
     PlantParameters parameters_;
+    double step_;
+    double current_decay_ = 0;       ///< e^(−step·R/L)
+    double mean_current_weight_ = 0; ///< (1 − e^(−step·R/L))/(step·R/L)
     MotorState state_;
     double inertia_ = 0;
     double viscous_ = 0;
