@@ -208,5 +208,17 @@ TEST(ProfilePositionGenerator, QuickStopUsesQuickStopDecelerationAndDropsSetpoin
     EXPECT_NEAR(generator.update(50).position, cruising.position + 50, kTight);
 }
 
+TEST(ProfilePositionGenerator, EndlessMovementRunsAtProfileVelocityInTheTargetsDirection) {
+    ProfilePositionGenerator generator;
+    const ProfileParameters p = linear(1000, 1000, 1000);
+    generator.new_setpoint(0, {-1, false, p, true}, true);
+    EXPECT_NEAR(generator.update(100).velocity, -1000, kTight);
+    EXPECT_FALSE(generator.finished(100));
+    EXPECT_TRUE(generator.new_setpoint(100, {0, false, p}, false)); // waits: never "finished"
+    EXPECT_NEAR(generator.update(200).velocity, -1000, kTight);
+    generator.set_halt(200, true);
+    EXPECT_NEAR(generator.update(201).velocity, 0, kTight);
+}
+
 } // namespace
 } // namespace eposp::drives::motion

@@ -43,9 +43,15 @@ void ProfilePositionGenerator::start(double now, const MotionState& from,
     }
     active_ = absolute;
     start_time_ = now;
-    trajectory_ = halted_
-                      ? plan_stop(from, absolute.parameters.deceleration, absolute.parameters.shape)
-                      : plan_position_move(from, absolute.target, absolute.parameters);
+    const ProfileParameters& parameters = absolute.parameters;
+    if (halted_) {
+        trajectory_ = plan_stop(from, parameters.deceleration, parameters.shape);
+    } else if (absolute.endless) {
+        trajectory_ = plan_velocity_change(
+            from, setpoint.target < 0 ? -parameters.velocity : parameters.velocity, parameters);
+    } else {
+        trajectory_ = plan_position_move(from, absolute.target, parameters);
+    }
 }
 
 void ProfilePositionGenerator::set_halt(double now, bool halt) {
@@ -68,7 +74,7 @@ void ProfilePositionGenerator::quick_stop(double now, double deceleration, RampS
 
 MotionState ProfilePositionGenerator::update(double now) {
     const double end = start_time_ + trajectory_.duration();
-    if (buffered_ && !halted_ && now >= end) {
+    if (buffered_ && !halted_ && at_rest(now)) {
         // The next move starts exactly when the last one ended, at rest on its target.
         const PositionSetpoint next = *buffered_;
         buffered_.reset();
@@ -78,7 +84,11 @@ MotionState ProfilePositionGenerator::update(double now) {
 }
 
 bool ProfilePositionGenerator::finished(double now) const {
-    return !buffered_ && now >= start_time_ + trajectory_.duration();
+    return !buffered_ && at_rest(now);
+}
+
+bool ProfilePositionGenerator::at_rest(double now) const {
+    return now >= start_time_ + trajectory_.duration() && trajectory_.final_velocity() == 0;
 }
 
 } // namespace eposp::drives::motion

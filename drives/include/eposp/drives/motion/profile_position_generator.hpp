@@ -11,6 +11,9 @@ struct PositionSetpoint {
     double target = 0;
     bool relative = false; ///< controlword bit 6: Pend = position demand value + target
     ProfileParameters parameters;
+    /// Controlword bit 15: move on at the profile velocity, in the direction of the target's
+    /// sign, until another setpoint, halt or quickstop.
+    bool endless = false;
 };
 
 /// The Profile Position trajectory generator (5.3.1) with its setpoint handling (5.3.2.3): a new
@@ -39,13 +42,14 @@ public:
 
     /// True while a buffered setpoint waits (statusword bit 12 stays set: no room for another).
     bool buffer_full() const { return buffered_.has_value(); }
-    /// The present move (or stop) has finished and nothing waits.
+    /// The present move (or stop) has come to rest and nothing waits.
     bool finished(double now) const;
     /// The end position of the present move (the target, or where a stop ends).
     double demand_target() const { return trajectory_.final_position(); }
 
 private:
     void start(double now, const MotionState& from, const PositionSetpoint& setpoint);
+    bool at_rest(double now) const;
 
     Trajectory trajectory_;
     double start_time_ = 0;
