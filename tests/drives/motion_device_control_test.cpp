@@ -277,6 +277,32 @@ TEST(DeviceControl, PowerStageFollowsTheState) {
     EXPECT_EQ(control.outputs(), (DriveOutputs{true, true, StopRamp::None}));
 }
 
+TEST(DeviceControl, OutputsOfEveryState) {
+    // Power stage per statusword bit 4 of table 3-4; drive function only where enabled.
+    const std::vector<std::pair<DriveState, DriveOutputs>> rows = {
+        {DriveState::Start, {}},
+        {DriveState::NotReadyToSwitchOn, {}},
+        {DriveState::SwitchOnDisabled, {}},
+        {DriveState::ReadyToSwitchOn, {}},
+        {DriveState::SwitchedOn, {}},
+        {DriveState::Refresh, {}},
+        {DriveState::MeasureInit, {true, false, StopRamp::None}},
+        {DriveState::OperationEnable, {true, true, StopRamp::None}},
+        {DriveState::QuickStopActive, {true, true, StopRamp::QuickStop}},
+        {DriveState::FaultReactionActiveDisabled, {}},
+        {DriveState::FaultReactionActiveEnabled, {true, true, StopRamp::QuickStop}},
+        {DriveState::Fault, {}},
+    };
+    for (const auto& [state, outputs] : rows) {
+        DeviceControl control;
+        reach(control, state);
+        ASSERT_EQ(control.state(), state);
+        EXPECT_EQ(control.outputs(), outputs) << to_string(state);
+        EXPECT_EQ(control.outputs().power_stage_on, (state_bits(state) & 0x10) != 0)
+            << to_string(state);
+    }
+}
+
 struct ReactionRow {
     std::string name;
     FaultClass fault_class;

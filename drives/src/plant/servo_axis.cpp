@@ -31,7 +31,7 @@ void ServoAxis::reset_controllers() {
     velocity_controller_.reset();
     position_controller_.reset();
     current_demand_ = 0;
-    steps_until_outer_loop_ = 0;
+    // The outer loop keeps its 1 ms rhythm, so the velocity measurement keeps its interval.
 }
 
 void ServoAxis::step() {
