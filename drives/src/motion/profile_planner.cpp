@@ -11,15 +11,10 @@ double sign(double value) {
     return value < 0 ? -1.0 : 1.0;
 }
 
-// A ramp's distance is k·(v1² − v0²)/(2A), k = 1 (linear) or 2 (sin²).
-double shape_factor(RampShape shape) {
-    return ramp_duration(1.0, 1.0, shape);
-}
-
 // From rest or moving towards the target with room to stop: accelerate to the peak velocity,
 // cruise, decelerate. Works in the frame where the target lies ahead (distance ≥ 0).
 std::vector<RampSegment> forward_move(double v0, double distance, const ProfileParameters& p) {
-    const double k = shape_factor(p.shape);
+    const double k = ramp_time_factor(p.shape);
     const double a = p.acceleration;
     const double d = p.deceleration;
     // Triangular when the distance is too short for the profile velocity:
@@ -74,11 +69,8 @@ Trajectory plan_position_move(const MotionState& start, double target,
     if (overshoots) {
         std::vector<RampSegment> segments{
             make_ramp(v0, 0, parameters.deceleration, parameters.shape)};
-        const double distance = target - stopping_point;
-        for (const RampSegment& segment :
-             mirrored(forward_move(0, std::abs(distance), parameters), sign(distance))) {
-            segments.push_back(segment);
-        }
+        const Trajectory back = plan_position_move({stopping_point, 0, 0}, target, parameters);
+        segments.insert(segments.end(), back.segments().begin(), back.segments().end());
         return {start.position, std::move(segments)};
     }
     const double distance = target - start.position;

@@ -5,16 +5,12 @@
 
 namespace eposp::drives::motion {
 
-namespace {
-
-double shape_factor(RampShape shape) {
+double ramp_time_factor(RampShape shape) {
     return shape == RampShape::SinSquared ? 2.0 : 1.0;
 }
 
-} // namespace
-
 double ramp_duration(double delta_v, double peak_acceleration, RampShape shape) {
-    return shape_factor(shape) * std::abs(delta_v) / peak_acceleration;
+    return ramp_time_factor(shape) * std::abs(delta_v) / peak_acceleration;
 }
 
 double ramp_distance(double v_start, double v_end, double peak_acceleration, RampShape shape) {

@@ -25,6 +25,9 @@ struct RampSegment {
     RampShape shape = RampShape::Linear;
 };
 
+/// k in "a ramp lasts k·|Δv|/A and covers k·(v1² − v0²)/(2A)": 1 linear, 2 sin².
+double ramp_time_factor(RampShape shape);
+
 /// Figures 5-8/5-9 name the profile acceleration Amax for both shapes, so it is the peak
 /// acceleration: a linear ramp takes |Δv|/A, a sin² ramp (mean acceleration A/2) twice as long.
 double ramp_duration(double delta_v, double peak_acceleration, RampShape shape);
