@@ -1,5 +1,6 @@
 #include "eposp/drives/motion/profile_planner.hpp"
 #include "eposp/drives/motion/profile_position_generator.hpp"
+#include "eposp/drives/motion/profile_velocity_generator.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -218,6 +219,38 @@ TEST(ProfilePositionGenerator, EndlessMovementRunsAtProfileVelocityInTheTargetsD
     EXPECT_NEAR(generator.update(200).velocity, -1000, kTight);
     generator.set_halt(200, true);
     EXPECT_NEAR(generator.update(201).velocity, 0, kTight);
+}
+
+TEST(ProfileVelocityGenerator, NewTargetRampsFromThePresentDemand) {
+    ProfileVelocityGenerator generator;
+    const ProfileParameters p = linear(0, 1000, 500);
+    generator.set_target(0, 2000, p);
+    const MotionState mid_ramp = generator.update(1);
+    generator.set_target(1, 0, p);
+    EXPECT_NEAR(generator.update(1).velocity, mid_ramp.velocity, kTight);
+    EXPECT_NEAR(generator.update(1).position, mid_ramp.position, kTight);
+    EXPECT_FALSE(generator.ramp_finished(2.9));
+    EXPECT_TRUE(generator.ramp_finished(3)); // 1000 down at 500/s
+    EXPECT_NEAR(generator.update(3).position, 500 + 1000, kTight);
+}
+
+TEST(ProfileVelocityGenerator, HaltStopsWithProfileDecelerationAndReleaseResumes) {
+    ProfileVelocityGenerator generator;
+    const ProfileParameters p = linear(0, 1000, 500);
+    generator.set_target(0, 1000, p);
+    generator.set_halt(5, true);
+    EXPECT_NEAR(generator.update(6).velocity, 500, kTight);
+    EXPECT_NEAR(generator.update(7).velocity, 0, kTight);
+    generator.set_halt(7, false);
+    EXPECT_NEAR(generator.update(8).velocity, 1000, kTight);
+}
+
+TEST(ProfileVelocityGenerator, QuickStopUsesItsOwnDeceleration) {
+    ProfileVelocityGenerator generator;
+    generator.set_target(0, -1000, linear(0, 1000, 500));
+    generator.quick_stop(2, 10000);
+    EXPECT_NEAR(generator.update(2.1).velocity, 0, kTight);
+    EXPECT_NEAR(generator.update(5).position, generator.update(2.1).position, kTight);
 }
 
 } // namespace
