@@ -99,5 +99,18 @@ TEST(ServoAxis, EcMotorReportsHallSensorsAndIndex) {
     EXPECT_EQ(index_pulses, axis.position_actual() / 2000);
 }
 
+TEST(ServoAxis, SwitchesTripWhereTheAxisIs) {
+    AxisParameters parameters = test::tuned_axis();
+    parameters.switches = {-500, 4000, 1000, true};
+    ServoAxis axis(parameters);
+    axis.set_mode(ControlMode::Position);
+    axis.set_demand({.position = 1500});
+    run_for(axis, 0.3);
+    EXPECT_EQ(axis.switches(), (SwitchStates{false, false, true}));
+    axis.set_demand({.position = -800});
+    run_for(axis, 0.3);
+    EXPECT_EQ(axis.switches(), (SwitchStates{true, false, false}));
+}
+
 } // namespace
 } // namespace eposp::drives::plant

@@ -1,7 +1,5 @@
 #include "eposp/drives/plant/servo_axis.hpp"
 
-#include "eposp/drives/plant/shaft_sensors.hpp"
-
 #include <algorithm>
 #include <numbers>
 

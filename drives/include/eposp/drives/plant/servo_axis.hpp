@@ -3,6 +3,7 @@
 #include "eposp/drives/plant/controller_gains.hpp"
 #include "eposp/drives/plant/motor_model.hpp"
 #include "eposp/drives/plant/pid_controller.hpp"
+#include "eposp/drives/plant/shaft_sensors.hpp"
 
 #include <cstdint>
 
@@ -32,6 +33,7 @@ struct AxisParameters {
     PlantParameters plant;
     int encoder_pulses = 500; ///< 0x2210 pulses per turn, on the motor shaft
     ServoGains gains;
+    SwitchLayout switches; ///< limit and home switches along the axis, in quadcounts
 };
 
 /// One axis: motor model, encoder and the cascade at the EPOS2's rates. The current loop and
@@ -60,6 +62,8 @@ public:
     double current_demand() const { return current_demand_; }
     bool index_passed() const { return index_passed_; } ///< during the last step
     std::uint8_t hall_sensors() const;
+    /// The switches at the present position, for the digital inputs.
+    SwitchStates switches() const { return switch_states(parameters_.switches, position_); }
     const MotorModel& motor() const { return motor_; }
     MotorModel& motor() { return motor_; }
 
