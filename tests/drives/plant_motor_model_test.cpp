@@ -135,5 +135,24 @@ TEST(MotorModel, GearheadReflectsLoadAndDividesTheOutputAngle) {
     EXPECT_NEAR(model.output_angle(), 2 * std::numbers::pi, 1e-12);
 }
 
+TEST(MotorModel, MeaninglessParametersAreRefused) {
+    EXPECT_TRUE(validate(test::free_motor()).ok());
+    const auto refused = [](auto change) {
+        PlantParameters plant = test::free_motor();
+        change(plant);
+        return !validate(plant).ok();
+    };
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.motor.terminal_inductance = 0; }));
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.motor.terminal_resistance = -1; }));
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.motor.speed_constant = 0; }));
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.motor.rotor_inertia = 0; }));
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.motor.pole_pairs = 0; }));
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.load.coulomb_friction = -1e-3; }));
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.gearhead.efficiency = 1.2; }));
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.gearhead.ratio = 0; }));
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.power_stage.max_duty = 0; }));
+    EXPECT_TRUE(refused([](PlantParameters& p) { p.motor.torque_constant = std::nan(""); }));
+}
+
 } // namespace
 } // namespace eposp::drives::plant

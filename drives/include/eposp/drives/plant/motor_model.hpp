@@ -1,5 +1,7 @@
 #pragma once
 
+#include "eposp/core/result.hpp"
+
 namespace eposp::drives::plant {
 
 /// Motor Type 0x6402 families the model covers.
@@ -48,6 +50,11 @@ struct PlantParameters {
     GearheadParameters gearhead;
     PowerStageParameters power_stage;
 };
+
+/// The parameters unchanged, or which of them makes the model meaningless (a zero resistance,
+/// inductance, constant or inertia, a gear ratio or efficiency out of range, negative friction).
+/// MotorModel requires parameters that pass.
+core::Result<PlantParameters> validate(const PlantParameters& parameters);
 
 /// The electrical and mechanical state of the motor shaft.
 struct MotorState {
