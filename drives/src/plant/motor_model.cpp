@@ -49,6 +49,8 @@ MotorModel::MotorModel(const PlantParameters& parameters, double step)
     inertia_ = parameters.motor.rotor_inertia + parameters.load.inertia / (ratio * ratio);
     viscous_ = parameters.load.viscous_friction / (ratio * ratio);
     coulomb_ = parameters.load.coulomb_friction / (ratio * parameters.gearhead.efficiency);
+    step_over_inertia_ = step / inertia_;
+    viscous_decay_ = 1 / (1 + step * viscous_ / inertia_);
 }
 
 double MotorModel::output_angle() const {
@@ -73,19 +75,17 @@ void MotorModel::step_unpowered() {
 }
 
 void MotorModel::integrate_mechanics(double mean_current) {
-    const double dt = step_;
     const double drive = parameters_.motor.torque_constant * mean_current;
     const double omega = state_.speed;
     if (omega == 0 && std::abs(drive) <= coulomb_) {
         return; // static friction holds the shaft
     }
     const double direction = omega != 0 ? std::copysign(1.0, omega) : std::copysign(1.0, drive);
-    double next =
-        (omega + dt / inertia_ * (drive - coulomb_ * direction)) / (1 + dt * viscous_ / inertia_);
+    double next = (omega + step_over_inertia_ * (drive - coulomb_ * direction)) * viscous_decay_;
     if (next * direction < 0 && std::abs(drive) <= coulomb_) {
         next = 0; // friction brings the shaft to rest, it does not reverse it
     }
-    state_.angle += 0.5 * (omega + next) * dt;
+    state_.angle += 0.5 * (omega + next) * step_;
     state_.speed = next;
 }
 

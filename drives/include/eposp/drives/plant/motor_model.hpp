@@ -103,6 +103,8 @@ private:
     double viscous_ = 0;
     double coulomb_ = 0;
     double back_emf_constant_ = 0;
+    double step_over_inertia_ = 0;
+    double viscous_decay_ = 0; ///< implicit Euler factor 1/(1 + step·b/J)
 };
 
 } // namespace eposp::drives::plant
