@@ -155,6 +155,10 @@ void Tpdo::on_sync(std::uint8_t counter) {
     }
 }
 
+void Tpdo::on_window_closed() {
+    sampled_.reset();
+}
+
 void Tpdo::on_cyclic_sync(std::uint8_t counter) {
     const std::uint8_t every = comm_.transmission_type;
     if (syncs_to_go_ == 0) {
