@@ -3,12 +3,14 @@
 #include "eposp/canmaster/canopen/eds_export.hpp"
 #include "eposp/canmaster/canopen/eds_import.hpp"
 #include "eposp/canmaster/canopen/node.hpp"
+#include "eposp/canmaster/canopen/predefined_connection_set.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <unistd.h>
 #include <vector>
 
@@ -432,6 +434,8 @@ TEST_F(NodeWithParameterFileTest, LssNodeIdTakesEffectAtResetCommunicationAndSur
     EXPECT_EQ(exchange("000#8205"), Frames{"707#00"});
     EXPECT_FALSE(sdo_request({0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}));
     EXPECT_TRUE(sdo_request({0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}, 7));
+    EXPECT_EQ(exchange("707#R"), Frames{"707#7F"}); // node guarding (CiA 301 7.2.8.3.2.1)
+    EXPECT_EQ(exchange("705#R"), Frames{});
     EXPECT_EQ(exchange("000#8207"), Frames{"707#00"}); // kept across resets
     EXPECT_EQ(exchange("000#8107"), Frames{"707#00"});
 
@@ -449,6 +453,16 @@ TEST_F(NodeWithParameterFileTest, LssNodeIdThatWasNotStoredIsLostAtPowerUp) {
     const core::TimePoint power_on = bench.loop.now();
     power_up(config_with_file());
     EXPECT_EQ(device_frames_since(power_on), Frames{"705#00"});
+}
+
+TEST_F(NodeWithParameterFileTest, DamagedLssConfigurationRaisesEmcy6320AndKeepsTheConfiguredId) {
+    {
+        std::ofstream damaged(parameter_file().string() + ".lss", std::ios::binary);
+        damaged << "EPOSPLSS\x07";
+    }
+    const core::TimePoint power_on = bench.loop.now();
+    power_up(config_with_file());
+    EXPECT_EQ(device_frames_since(power_on), (Frames{"705#00", "085#2063200000000000"}));
 }
 
 TEST_F(NodeTest, LssStoreWithoutParameterFileIsNotSupported) {
@@ -584,10 +598,32 @@ TEST_F(NodeWithParameterFileTest, RestoreObjectsAskTheDeviceAndRestorePdoCobIds)
               "585#4300180185010080");
 }
 
+// CiA 301 7.3.5: the defaults that follow the node-ID, and those that do not.
+TEST(PredefinedConnectionSet, MovingTheNodeIdMovesOnlyThePredefinedDefaults) {
+    ObjectDictionary od;
+    PdoObjectsConfig pdos = cia301_pdo_defaults(5, 2, 2);
+    pdos.tpdos[1].cob_id = 0x4000'01A5; // chosen by the device, not predefined
+    add_pdo_objects(od, pdos);
+    add_emcy_objects(od, 5);
+    add_sdo_server_objects(od, 5);
+    move_node_id_defaults(od, 5, 0x42);
+    od.reset_to_defaults();
+    const std::vector<std::tuple<std::uint16_t, std::uint8_t, std::uint32_t>> expected = {
+        {0x1014, 0, 0xC2},        {0x1200, 1, 0x642},       {0x1200, 2, 0x5C2},
+        {0x1400, 1, 0x8000'0242}, {0x1401, 1, 0x8000'0342}, {0x1800, 1, 0xC000'01C2},
+        {0x1801, 1, 0x4000'01A5},
+    };
+    for (const auto& [index, sub_index, value] : expected) {
+        EXPECT_EQ(od.get_as<std::uint32_t>(index, sub_index), value)
+            << std::hex << index << " sub " << int{sub_index};
+    }
+}
+
 TEST(NodeErrorRegister, CommunicationCodesSetTheCommunicationBit) {
     EXPECT_EQ(error_register_bits(0x8130), error_register::kCommunication);
     EXPECT_EQ(error_register_bits(0x8240), error_register::kCommunication);
     EXPECT_EQ(error_register_bits(0x6100), error_register::kGeneric);
+    EXPECT_EQ(error_register_bits(0x6320), error_register::kDeviceProfile); // EPOS2 table 4-11
 }
 
 /// The "SDO browse" acceptance: a node built from the EDS of another answers every readable
