@@ -522,6 +522,34 @@ TEST_F(NodeTest, RemoteRequestForASynchronousTpdoAfterTheWindowGoesUnanswered) {
     EXPECT_EQ(device_frames_since(late), Frames{});
 }
 
+TEST_F(NodeTest, SynchronousTpdoStillQueuedWhenTheWindowClosesIsNeverSent) {
+    start();
+    od.set_as<std::uint32_t>(kTpdoVariable, 0, 0xA1B2'C3D4);
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1007, 0, 2000), "585#6007100000000000"); // 2 ms
+    bench.send("000#0105");
+    bench.run_for(1ms);
+    // A babbling node between SYNC and TPDO1 in priority holds the bus for 3 ms: TPDO1 (type 1)
+    // waits in the node's transmit queue until its window closes and is taken back.
+    const auto babbler = bench.bus.connect("babbler");
+    const can::Frame babble = *can::parse_candump_frame("100#00");
+    const core::TimePoint sync_at = bench.loop.now();
+    babbler->babble(babble);
+    bench.send("080#");
+    bench.run_for(3ms);
+    babbler->stop_babbling();
+    bench.run_for(5ms);
+    EXPECT_EQ(device_frames_since(sync_at), Frames{});
+    // Without the window it goes out once the bus is free.
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1007, 0, 0), "585#6007100000000000");
+    const core::TimePoint second_sync = bench.loop.now();
+    babbler->babble(babble);
+    bench.send("080#");
+    bench.run_for(3ms);
+    babbler->stop_babbling();
+    bench.run_for(5ms);
+    EXPECT_EQ(device_frames_since(second_sync), Frames{"185#D4C3B2A1"});
+}
+
 TEST_F(NodeTest, SynchronousRpdoAfterTheWindowIsDiscarded) {
     start();
     ASSERT_EQ(sdo_write<std::uint8_t>(0x1400, 2, 1), "585#6000140200000000"); // synchronous

@@ -11,4 +11,8 @@ SendStatus GatedPort::send(const Frame& frame) {
     return open_() ? inner_.send(frame) : SendStatus::Queued;
 }
 
+std::size_t GatedPort::withdraw(const std::function<bool(const Frame&)>& which) {
+    return inner_.withdraw(which);
+}
+
 } // namespace eposp::can

@@ -15,6 +15,7 @@ public:
     GatedPort(Port& inner, std::function<bool()> open);
 
     SendStatus send(const Frame& frame) override;
+    std::size_t withdraw(const std::function<bool(const Frame&)>& which) override;
     ErrorState error_state() const override { return inner_.error_state(); }
     std::string_view name() const override { return inner_.name(); }
 

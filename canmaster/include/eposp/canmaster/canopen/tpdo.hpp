@@ -35,9 +35,10 @@ inline constexpr std::uint16_t kEmcyTransmitCobIdCollision = 0x8150;
 /// consumers learn the initial values. Remote requests are answered only where the COB-ID
 /// allows RTR. Works in NMT Operational only.
 ///
-/// Synchronous window (CiA 301 7.5.2.8, 0x1007): once the window of a SYNC closed, the
-/// synchronous data sampled at it is no longer sent (a type 252 remote request then goes
-/// unanswered until the next SYNC).
+/// Synchronous window (CiA 301 7.5.2.8, 0x1007): once the window of a SYNC closed, a
+/// synchronous PDO (types 0..240, 252) still waiting in the controller's transmit queue is taken
+/// back (Port::withdraw), and the data sampled at that SYNC is no longer sent (a type 252 remote
+/// request goes unanswered until the next SYNC).
 class Tpdo {
 public:
     /// TPDO `number` (1..512) of `od`, whose objects add_pdo_objects() made.
