@@ -455,6 +455,19 @@ TEST_F(NodeWithParameterFileTest, LssNodeIdThatWasNotStoredIsLostAtPowerUp) {
     EXPECT_EQ(device_frames_since(power_on), Frames{"705#00"});
 }
 
+// CiA 305: configure node-ID 0xFF takes the node-ID away at the next reset communication.
+TEST_F(NodeWithParameterFileTest, NodeWhoseNodeIdLssRemovedFallsSilentButForLss) {
+    const Node& configured = power_up(config_with_file());
+    exchange("7E5#0401000000000000");
+    EXPECT_EQ(exchange("7E5#11FF000000000000"), Frames{"7E4#1100000000000000"});
+    exchange("7E5#0400000000000000");
+    EXPECT_EQ(exchange("000#8205"), Frames{}); // no boot-up
+    EXPECT_EQ(configured.nmt_state(), NmtState::Initialising);
+    EXPECT_FALSE(sdo_request({0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}));
+    // EPOS2 FW spec 7.4.2.13: it answers identify non-configured remote slave.
+    EXPECT_EQ(exchange("7E5#4C00000000000000"), Frames{"7E4#5000000000000000"});
+}
+
 TEST_F(NodeWithParameterFileTest, DamagedLssConfigurationRaisesEmcy6320AndKeepsTheConfiguredId) {
     {
         std::ofstream damaged(parameter_file().string() + ".lss", std::ios::binary);

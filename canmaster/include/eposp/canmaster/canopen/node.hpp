@@ -70,8 +70,9 @@ struct NodeConfig {
     bool lss_only_when_stopped = false;
 };
 
-/// The error register bits of an emergency code a communication service raises (EPOS2 FW spec
-/// table 4-11: every CAN error 0x81xx/0x82xx is a communication error); generic otherwise.
+/// The error register bits of an emergency code the node raises (EPOS2 FW spec table 4-11: every
+/// CAN error 0x81xx/0x82xx is a communication error, 0x6320 device profile specific); generic
+/// otherwise.
 std::uint8_t error_register_bits(std::uint16_t emcy_error_code);
 
 /// A CANopen slave node (CiA 301), CANopenNode-style: a dictionary, a port and the services on
