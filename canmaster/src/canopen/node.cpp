@@ -108,7 +108,7 @@ std::uint8_t error_register_bits(std::uint16_t emcy_error_code) {
 
 Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary, NodeConfig config)
     : port_(port), services_port_(port, [this] { return !lss_.silent(); }),
-      config_(with_stored_lss_configuration(std::move(config), stored_lss_refused_)),
+      config_(with_stored_lss_configuration(std::move(config), refused_store_to_report_)),
       od_(add_missing_communication_objects(dictionary, config_)),
       nmt_(services_port_, config_.node_id,
            {.application = [this] { reset_application(); },
@@ -168,7 +168,7 @@ LssSlaveHooks Node::lss_hooks() {
 }
 
 void Node::start() {
-    // The owner's bus may still run at the rate the node was configured with.
+    // The bit rate may be one LSS stored rather than the one the owner configured.
     if (config_.switch_bit_rate) {
         config_.switch_bit_rate(config_.bit_rate);
     }
@@ -199,7 +199,9 @@ void Node::set_nmt_state(NmtState state) {
     sync_consumer_.set_nmt_state(state);
     pdo_.set_nmt_state(state);
     lss_.set_nmt_state(state);
-    if (state == NmtState::PreOperational && (stored_values_.refused() || stored_lss_refused_)) {
+    // The boot-up after the load: the first moment an EMCY may go out (EPOS2 FW spec 7.3.5).
+    if (state == NmtState::PreOperational && refused_store_to_report_) {
+        refused_store_to_report_ = false;
         raise_emergency(kEmcySoftwareParameterError);
     }
 }
@@ -222,6 +224,7 @@ void Node::restore_stored_values(bool communication_area_only) {
     }
     if (store_) {
         stored_values_ = store_->load_stored_values();
+        refused_store_to_report_ = refused_store_to_report_ || stored_values_.refused();
     } else {
         od_.reset_to_defaults();
     }

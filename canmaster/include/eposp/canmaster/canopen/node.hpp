@@ -139,8 +139,8 @@ private:
     can::Port& port_;
     /// What the services send through: closed while the LSS slave is silent.
     can::GatedPort services_port_;
-    /// The stored LSS configuration was damaged: the node started on NodeConfig's.
-    bool stored_lss_refused_ = false;
+    /// Stored values or the stored LSS configuration were refused, and no EMCY told it yet.
+    bool refused_store_to_report_ = false;
     NodeConfig config_;    ///< with the stored LSS configuration applied
     ObjectDictionary& od_; ///< with the communication objects added (see the constructor)
     std::optional<ParameterStore> store_;
