@@ -1,12 +1,16 @@
+#include "canopen_lss_test_support.hpp"
 #include "canopen_service_bench.hpp"
 #include "eposp/canmaster/canopen/eds_export.hpp"
 #include "eposp/canmaster/canopen/eds_import.hpp"
 #include "eposp/canmaster/canopen/node.hpp"
+#include "eposp/canmaster/canopen/predefined_connection_set.hpp"
 
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <unistd.h>
 #include <vector>
 
@@ -63,13 +67,14 @@ protected:
         bench.tester->on_receive([this](const can::Frame& frame) { received.push_back(frame); });
     }
 
-    /// The server's answer to one request frame, or nullopt when it stays silent.
-    std::optional<can::Frame> sdo_request(std::vector<std::uint8_t> bytes) {
+    /// The answer of the server of `server` to one request frame, or nullopt when it stays
+    /// silent.
+    std::optional<can::Frame> sdo_request(std::vector<std::uint8_t> bytes, NodeId server = kNode) {
         received.clear();
-        bench.tester->send(can::Frame::data_frame(0x600 + kNode, bytes));
+        bench.tester->send(can::Frame::data_frame(0x600 + server, bytes));
         bench.run_for(5ms);
         for (const auto& frame : received) {
-            if (frame.id == 0x580u + kNode) {
+            if (frame.id == 0x580u + server) {
                 return frame;
             }
         }
@@ -77,10 +82,11 @@ protected:
     }
     /// An SDO upload, expedited or segmented (CiA 301 7.2.4.3.3 - 7.2.4.3.6); nullopt when
     /// aborted or unanswered.
-    std::optional<Bytes> sdo_upload(std::uint16_t index, std::uint8_t sub_index) {
+    std::optional<Bytes> sdo_upload(std::uint16_t index, std::uint8_t sub_index,
+                                    NodeId server = kNode) {
         const auto lo = static_cast<std::uint8_t>(index & 0xFF);
         const auto hi = static_cast<std::uint8_t>(index >> 8);
-        auto reply = sdo_request({0x40, lo, hi, sub_index, 0, 0, 0, 0});
+        auto reply = sdo_request({0x40, lo, hi, sub_index, 0, 0, 0, 0}, server);
         if (!reply || (reply->data[0] & 0xE0) != 0x40) {
             return std::nullopt;
         }
@@ -91,7 +97,8 @@ protected:
         }
         Bytes value;
         for (std::uint8_t toggle = 0;; toggle ^= 0x10) {
-            reply = sdo_request({static_cast<std::uint8_t>(0x60 | toggle), 0, 0, 0, 0, 0, 0, 0});
+            reply = sdo_request({static_cast<std::uint8_t>(0x60 | toggle), 0, 0, 0, 0, 0, 0, 0},
+                                server);
             if (!reply || (reply->data[0] & 0xF0) != toggle) {
                 return std::nullopt;
             }
@@ -102,11 +109,36 @@ protected:
             }
         }
     }
+    /// An expedited download of `value` (CiA 301 7.2.4.3.3); the server's answer.
+    template <typename T>
+    std::string sdo_write(std::uint16_t index, std::uint8_t sub_index, T value,
+                          NodeId server = kNode) {
+        const Bytes data = encode(value);
+        const auto command = static_cast<std::uint8_t>(0x23 | (4 - data.size()) << 2);
+        std::vector<std::uint8_t> request = {command, static_cast<std::uint8_t>(index & 0xFF),
+                                             static_cast<std::uint8_t>(index >> 8), sub_index};
+        request.insert(request.end(), data.begin(), data.end());
+        request.resize(8);
+        const auto reply = sdo_request(request, server);
+        return reply ? testing::candump(*reply) : "no answer";
+    }
     /// The device's frames with `id` from `from` on.
     std::vector<Sent> device_frames(std::uint32_t id, core::TimePoint from = {}) const {
+        return device_frames_where([id](std::uint32_t frame_id) { return frame_id == id; }, from);
+    }
+    /// Every frame the device sent from `from` on, in candump form.
+    std::vector<std::string> device_frames_since(core::TimePoint from) const {
+        std::vector<std::string> out;
+        for (const auto& sent : device_frames_where([](std::uint32_t) { return true; }, from)) {
+            out.push_back(sent.frame);
+        }
+        return out;
+    }
+    template <typename Predicate>
+    std::vector<Sent> device_frames_where(Predicate wanted, core::TimePoint from) const {
         std::vector<Sent> out;
         for (const auto& sent : bench.device_frames()) {
-            if (sent.at >= from && can::parse_candump_frame(sent.frame)->id == id) {
+            if (sent.at >= from && wanted(can::parse_candump_frame(sent.frame)->id)) {
                 out.push_back(sent);
             }
         }
@@ -217,14 +249,8 @@ TEST_F(NodeTest, StoppedNodeIsSilentButForItsHeartbeat) {
     bench.send("205#3412");
     bench.run_for(300ms);
     EXPECT_EQ(od.get_as<std::uint16_t>(kRpdoVariable, 0), 7);
-    const auto frames = bench.device_frames();
-    std::vector<std::string> since_stop;
-    for (const auto& sent : frames) {
-        if (sent.at >= stopped) {
-            since_stop.push_back(sent.frame);
-        }
-    }
-    EXPECT_EQ(since_stop, (std::vector<std::string>{"705#04", "705#04", "705#04"}));
+    EXPECT_EQ(device_frames_since(stopped),
+              (std::vector<std::string>{"705#04", "705#04", "705#04"}));
 }
 
 TEST_F(NodeTest, ResetCommunicationBootsAgainWithTheDefaultHeartbeatTime) {
@@ -282,16 +308,63 @@ protected:
     NodeWithParameterFileTest() { std::filesystem::create_directories(directory()); }
     ~NodeWithParameterFileTest() override { std::filesystem::remove_all(directory()); }
 
+    static std::filesystem::path parameter_file() { return directory() / "parameters.bin"; }
+    static NodeConfig config_with_file() {
+        NodeConfig config = test_config();
+        config.parameter_file = parameter_file();
+        return config;
+    }
+    /// A node without node-ID (CiA 305) and with the CiA 301 default PDOs.
+    static NodeConfig unconfigured_config() {
+        NodeConfig config = config_with_file();
+        config.node_id = kLssUnconfiguredNodeId;
+        config.pdos.reset();
+        return config;
+    }
+
+    /// Power-up of a device with `config`: the one before is switched off, a fresh dictionary
+    /// and node take the device port and start.
+    Node& power_up(NodeConfig config) {
+        powered_node.reset();
+        powered_od.emplace();
+        add_device_objects(*powered_od);
+        powered_node.emplace(bench.loop, *bench.device, *powered_od, std::move(config));
+        powered_node->start();
+        bench.run_for(1ms);
+        return *powered_node;
+    }
+
+    /// The tester sends `request`; every frame the device sent in the next 5 ms.
+    std::vector<std::string> exchange(const can::Frame& request) {
+        const core::TimePoint sent = bench.loop.now();
+        bench.tester->send(request);
+        bench.run_for(5ms);
+        return device_frames_since(sent);
+    }
+    std::vector<std::string> exchange(std::string_view request) {
+        return exchange(*can::parse_candump_frame(request));
+    }
+    /// LSS switch state selective with the test identity (EPOS2 FW spec 7.4.2.2): the answer.
+    std::vector<std::string> lss_switch_selective() {
+        const LssAddress address = test_config().identity;
+        exchange(
+            testing::master_frame_u32(LssCommand::SwitchStateSelectiveVendorId, address.vendor_id));
+        exchange(testing::master_frame_u32(LssCommand::SwitchStateSelectiveProductCode,
+                                           address.product_code));
+        exchange(testing::master_frame_u32(LssCommand::SwitchStateSelectiveRevisionNumber,
+                                           address.revision_number));
+        return exchange(testing::master_frame_u32(LssCommand::SwitchStateSelectiveSerialNumber,
+                                                  address.serial_number));
+    }
+
     ObjectDictionary stored_od = [] {
         ObjectDictionary dictionary;
         add_device_objects(dictionary);
         return dictionary;
     }();
-    Node stored_node{bench.loop, *bench.device, stored_od, [] {
-                         NodeConfig config = test_config();
-                         config.parameter_file = directory() / "parameters.bin";
-                         return config;
-                     }()};
+    Node stored_node{bench.loop, *bench.device, stored_od, config_with_file()};
+    std::optional<ObjectDictionary> powered_od;
+    std::optional<Node> powered_node;
 };
 
 TEST_F(NodeWithParameterFileTest, ResetCommunicationRestoresTheStoredHeartbeatTime) {
@@ -310,10 +383,288 @@ TEST_F(NodeWithParameterFileTest, ResetCommunicationRestoresTheStoredHeartbeatTi
               "585#4B17100064000000");
 }
 
+using Frames = std::vector<std::string>;
+
+// CiA 305 / EPOS2 FW spec 7.4: a node without node-ID gets one by LSS.
+TEST_F(NodeWithParameterFileTest, UnconfiguredNodeBootsWithTheNodeIdLssConfigured) {
+    const Node& unconfigured = power_up(unconfigured_config());
+    EXPECT_EQ(unconfigured.nmt_state(), NmtState::Initialising);
+    EXPECT_TRUE(bench.device_frames().empty()); // no boot-up without node-ID
+    EXPECT_FALSE(sdo_request({0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}, 0x7F));
+
+    EXPECT_EQ(lss_switch_selective(), Frames{"7E4#4400000000000000"});
+    EXPECT_EQ(exchange("7E5#110A000000000000"), Frames{"7E4#1100000000000000"}); // node-ID 10
+    EXPECT_EQ(exchange("7E5#1700000000000000"), Frames{"7E4#1700000000000000"}); // stored
+    // Back to waiting: the node leaves LSS through reset communication and boots as node 10.
+    EXPECT_EQ(exchange("7E5#0400000000000000"), Frames{"70A#00"});
+    EXPECT_EQ(unconfigured.nmt_state(), NmtState::PreOperational);
+    EXPECT_EQ(unconfigured.node_id(), 10);
+
+    // SDO server on 0x60A / 0x58A (CiA 301 7.3.5), 0x1200 and 0x1014 follow the node-ID.
+    EXPECT_EQ(testing::candump(*sdo_request({0x40, 0x00, 0x12, 0x01, 0, 0, 0, 0}, 10)),
+              "58A#430012010A060000");
+    EXPECT_EQ(testing::candump(*sdo_request({0x40, 0x14, 0x10, 0x00, 0, 0, 0, 0}, 10)),
+              "58A#431410008A000000");
+    // TPDO1 of the predefined connection set on 0x18A: mapped, made valid, sent at SYNC.
+    EXPECT_EQ(testing::candump(*sdo_request({0x40, 0x00, 0x18, 0x01, 0, 0, 0, 0}, 10)),
+              "58A#430018018A0100C0");
+    EXPECT_EQ(sdo_write<std::uint32_t>(0x1A00, 1, 0x2000'0020, 10), "58A#60001A0100000000");
+    EXPECT_EQ(sdo_write<std::uint8_t>(0x1A00, 0, 1, 10), "58A#60001A0000000000");
+    EXPECT_EQ(sdo_write<std::uint8_t>(0x1800, 2, 1, 10), "58A#6000180200000000");
+    EXPECT_EQ(sdo_write<std::uint32_t>(0x1800, 1, 0x4000'018A, 10), "58A#6000180100000000");
+    powered_od->set_as<std::uint32_t>(kTpdoVariable, 0, 0x0102'0304);
+    exchange("000#010A");
+    EXPECT_EQ(exchange("080#"), Frames{"18A#04030201"});
+    // EMCY on 0x8A (a SYNC with a counter is too long: 0x8240); heartbeat on 0x70A.
+    EXPECT_EQ(exchange("080#01"), Frames{"08A#4082100000000000"});
+    EXPECT_EQ(sdo_write<std::uint16_t>(0x1017, 0, 10, 10), "58A#6017100000000000");
+    bench.run_for(6ms);
+    EXPECT_EQ(device_frames(0x70A).back().frame, "70A#05");
+}
+
+TEST_F(NodeWithParameterFileTest, LssNodeIdTakesEffectAtResetCommunicationAndSurvivesPowerUp) {
+    const Node& configured = power_up(config_with_file());
+    EXPECT_EQ(exchange("7E5#0401000000000000"), Frames{}); // switch global: configuration
+    EXPECT_EQ(exchange("7E5#1107000000000000"), Frames{"7E4#1100000000000000"});
+    EXPECT_EQ(exchange("7E5#1700000000000000"), Frames{"7E4#1700000000000000"});
+    EXPECT_EQ(exchange("7E5#0400000000000000"), Frames{});
+    // Pending until reset communication (CiA 305): still node 5.
+    EXPECT_EQ(configured.node_id(), kNode);
+    EXPECT_TRUE(sdo_request({0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}));
+    EXPECT_EQ(exchange("000#8205"), Frames{"707#00"});
+    EXPECT_FALSE(sdo_request({0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}));
+    EXPECT_TRUE(sdo_request({0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}, 7));
+    EXPECT_EQ(exchange("707#R"), Frames{"707#7F"}); // node guarding (CiA 301 7.2.8.3.2.1)
+    EXPECT_EQ(exchange("705#R"), Frames{});
+    EXPECT_EQ(exchange("000#8207"), Frames{"707#00"}); // kept across resets
+    EXPECT_EQ(exchange("000#8107"), Frames{"707#00"});
+
+    const core::TimePoint power_on = bench.loop.now();
+    power_up(config_with_file());
+    EXPECT_EQ(device_frames_since(power_on), Frames{"707#00"});
+}
+
+TEST_F(NodeWithParameterFileTest, LssNodeIdThatWasNotStoredIsLostAtPowerUp) {
+    power_up(config_with_file());
+    exchange("7E5#0401000000000000");
+    exchange("7E5#1107000000000000");
+    exchange("7E5#0400000000000000");
+    EXPECT_EQ(exchange("000#8205"), Frames{"707#00"});
+    const core::TimePoint power_on = bench.loop.now();
+    power_up(config_with_file());
+    EXPECT_EQ(device_frames_since(power_on), Frames{"705#00"});
+}
+
+// CiA 305: configure node-ID 0xFF takes the node-ID away at the next reset communication.
+TEST_F(NodeWithParameterFileTest, NodeWhoseNodeIdLssRemovedFallsSilentButForLss) {
+    const Node& configured = power_up(config_with_file());
+    exchange("7E5#0401000000000000");
+    EXPECT_EQ(exchange("7E5#11FF000000000000"), Frames{"7E4#1100000000000000"});
+    exchange("7E5#0400000000000000");
+    EXPECT_EQ(exchange("000#8205"), Frames{}); // no boot-up
+    EXPECT_EQ(configured.nmt_state(), NmtState::Initialising);
+    EXPECT_FALSE(sdo_request({0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}));
+    // EPOS2 FW spec 7.4.2.13: it answers identify non-configured remote slave.
+    EXPECT_EQ(exchange("7E5#4C00000000000000"), Frames{"7E4#5000000000000000"});
+}
+
+TEST_F(NodeWithParameterFileTest, DamagedLssConfigurationRaisesEmcy6320AndKeepsTheConfiguredId) {
+    {
+        std::ofstream damaged(parameter_file().string() + ".lss", std::ios::binary);
+        damaged << "EPOSPLSS\x07";
+    }
+    const core::TimePoint power_on = bench.loop.now();
+    power_up(config_with_file());
+    EXPECT_EQ(device_frames_since(power_on), (Frames{"705#00", "085#2063200000000000"}));
+}
+
+TEST_F(NodeTest, LssStoreWithoutParameterFileIsNotSupported) {
+    start();
+    bench.send("7E5#0401000000000000");
+    bench.run_for(1ms);
+    received.clear();
+    bench.send("7E5#1700000000000000");
+    bench.run_for(5ms);
+    ASSERT_EQ(received.size(), 1u);
+    EXPECT_EQ(testing::candump(received[0]), "7E4#1701000000000000"); // EPOS2 FW spec 7.4.2.6
+}
+
+TEST_F(NodeWithParameterFileTest, ActivateBitTimingReachesTheOwnerAndSilencesTheNode) {
+    std::vector<std::uint32_t> switched;
+    NodeConfig config = config_with_file();
+    config.switch_bit_rate = [&switched](std::uint32_t rate) {
+        switched.push_back(rate);
+    };
+    power_up(std::move(config));
+    EXPECT_EQ(switched, (std::vector<std::uint32_t>{1'000'000}));
+    exchange("7E5#0401000000000000");
+    // EPOS2 FW spec 7.4.2.4: table 0, index 2: 500 kbit/s.
+    EXPECT_EQ(exchange("7E5#1300020000000000"), Frames{"7E4#1300000000000000"});
+    ASSERT_EQ(sdo_write<std::uint16_t>(0x1017, 0, 10), "585#6017100000000000");
+    const core::TimePoint activated = bench.loop.now();
+    bench.send("7E5#1564000000000000"); // switch delay 100 ms
+    bench.run_for(150ms);
+    EXPECT_EQ(switched, (std::vector<std::uint32_t>{1'000'000, 500'000}));
+    EXPECT_EQ(powered_node->bit_rate(), 500'000u);
+    // Two switch delays without a heartbeat, then it goes on.
+    bench.run_until(activated + 199ms);
+    EXPECT_EQ(device_frames(0x705, activated + 1ms), std::vector<Sent>{});
+    bench.run_for(20ms);
+    EXPECT_FALSE(device_frames(0x705, activated + 200ms).empty());
+}
+
+// CiA 301 7.5.2.8: 0x1007, the synchronous window after each SYNC.
+TEST_F(NodeTest, RemoteRequestForASynchronousTpdoAfterTheWindowGoesUnanswered) {
+    start();
+    od.set_as<std::uint32_t>(kTpdoVariable, 0, 0xA1B2'C3D4);
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1800, 1, 0x185), "585#6000180100000000"); // RTR allowed
+    ASSERT_EQ(sdo_write<std::uint8_t>(0x1800, 2, 252),
+              "585#6000180200000000"); // synchronous, RTR only
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1007, 0, 2000), "585#6007100000000000"); // 2 ms
+    bench.send("000#0105");
+    bench.send("080#");
+    bench.run_for(1ms);
+    const core::TimePoint in_window = bench.loop.now();
+    bench.send("185#R");
+    bench.run_for(1ms);
+    EXPECT_EQ(device_frames_since(in_window), Frames{"185#D4C3B2A1"});
+    bench.run_for(2ms);
+    const core::TimePoint late = bench.loop.now();
+    bench.send("185#R");
+    bench.run_for(5ms);
+    EXPECT_EQ(device_frames_since(late), Frames{});
+}
+
+TEST_F(NodeTest, SynchronousTpdoStillQueuedWhenTheWindowClosesIsNeverSent) {
+    start();
+    od.set_as<std::uint32_t>(kTpdoVariable, 0, 0xA1B2'C3D4);
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1007, 0, 2000), "585#6007100000000000"); // 2 ms
+    bench.send("000#0105");
+    bench.run_for(1ms);
+    // A babbling node between SYNC and TPDO1 in priority holds the bus for 3 ms: TPDO1 (type 1)
+    // waits in the node's transmit queue until its window closes and is taken back.
+    const auto babbler = bench.bus.connect("babbler");
+    const can::Frame babble = *can::parse_candump_frame("100#00");
+    const core::TimePoint sync_at = bench.loop.now();
+    babbler->babble(babble);
+    bench.send("080#");
+    bench.run_for(3ms);
+    babbler->stop_babbling();
+    bench.run_for(5ms);
+    EXPECT_EQ(device_frames_since(sync_at), Frames{});
+    // Without the window it goes out once the bus is free.
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1007, 0, 0), "585#6007100000000000");
+    const core::TimePoint second_sync = bench.loop.now();
+    babbler->babble(babble);
+    bench.send("080#");
+    bench.run_for(3ms);
+    babbler->stop_babbling();
+    bench.run_for(5ms);
+    EXPECT_EQ(device_frames_since(second_sync), Frames{"185#D4C3B2A1"});
+}
+
+TEST_F(NodeTest, SynchronousRpdoAfterTheWindowIsDiscarded) {
+    start();
+    ASSERT_EQ(sdo_write<std::uint8_t>(0x1400, 2, 1), "585#6000140200000000"); // synchronous
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1007, 0, 2000), "585#6007100000000000");
+    bench.send("000#0105");
+    bench.send("080#");
+    bench.run_for(3ms); // the window closed
+    bench.send("205#3412");
+    bench.run_for(1ms);
+    bench.send("080#");
+    bench.run_for(1ms);
+    EXPECT_EQ(od.get_as<std::uint16_t>(kRpdoVariable, 0), 7);
+    bench.send("205#7856"); // within the window of that SYNC: applied at the next one
+    bench.run_for(500us);
+    bench.send("080#");
+    bench.run_for(1ms);
+    EXPECT_EQ(od.get_as<std::uint16_t>(kRpdoVariable, 0), 0x5678);
+}
+
+// CiA 301 7.5.2.35: the event timer of an RPDO is its deadline.
+TEST_F(NodeTest, RpdoMissingItsDeadlineRaisesEmcy8250) {
+    start();
+    ASSERT_EQ(sdo_write<std::uint16_t>(0x1400, 5, 100), "585#6000140500000000");
+    bench.send("000#0105");
+    bench.run_for(150ms);
+    EXPECT_TRUE(device_frames(0x085).empty()); // monitoring starts with the first RPDO
+    bench.send("205#3412");
+    bench.run_for(90ms);
+    bench.send("205#3412");
+    bench.run_for(90ms);
+    EXPECT_TRUE(device_frames(0x085).empty());
+    const core::TimePoint last = bench.loop.now() - 90ms;
+    bench.run_for(20ms);
+    const auto emcys = device_frames(0x085);
+    ASSERT_EQ(emcys.size(), 1u);
+    EXPECT_EQ(emcys[0].frame, "085#5082100000000000");
+    EXPECT_GE(emcys[0].at, last + 100ms);
+}
+
+TEST_F(NodeWithParameterFileTest, CorruptParameterFileRaisesEmcy6320AndRunsOnDefaults) {
+    {
+        std::ofstream corrupt(parameter_file(), std::ios::binary);
+        corrupt << "not a parameter file";
+    }
+    stored_node.start();
+    bench.run_for(1ms);
+    EXPECT_EQ(stored_node.stored_values().status, StoredValuesStatus::Corrupt);
+    // EPOS2 FW spec table 4-11: 0x6320 Software Parameter Error, error register 0010 0000b.
+    EXPECT_EQ(device_frames_since({}), (Frames{"705#00", "085#2063200000000000"}));
+    EXPECT_EQ(testing::candump(*sdo_request({0x40, 0x17, 0x10, 0x00, 0, 0, 0, 0})),
+              "585#4B17100000000000");
+}
+
+// EPOS2 FW spec 8.2.9: restore needs permission; 0x1011 sub 5 restores the PDO COB-IDs.
+TEST_F(NodeWithParameterFileTest, RestoreObjectsAskTheDeviceAndRestorePdoCobIds) {
+    bool permitted = false;
+    NodeConfig config = config_with_file();
+    config.restore_pdo_cob_ids = true;
+    config.store_restore.restore_permitted = [&permitted] {
+        return permitted ? AbortCode::None : AbortCode::DeviceState;
+    };
+    power_up(std::move(config));
+    EXPECT_EQ(sdo_write<std::uint32_t>(0x1011, 1, kLoadSignature), "585#8011100122000008");
+    EXPECT_EQ(sdo_write<std::uint32_t>(0x1011, 5, kLoadSignature), "585#8011100522000008");
+    permitted = true;
+    // TPDO1 moved to 0x1A5, stored; "load" in sub 5 brings 0x185 back at the next save.
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1800, 1, 0x8000'0185), "585#6000180100000000");
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1800, 1, 0x8000'01A5), "585#6000180100000000");
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1010, 1, kSaveSignature), "585#6010100100000000");
+    EXPECT_EQ(sdo_write<std::uint32_t>(0x1011, 5, kLoadSignature), "585#6011100500000000");
+    ASSERT_EQ(sdo_write<std::uint32_t>(0x1010, 1, kSaveSignature), "585#6010100100000000");
+    exchange("000#8205");
+    EXPECT_EQ(testing::candump(*sdo_request({0x40, 0x00, 0x18, 0x01, 0, 0, 0, 0})),
+              "585#4300180185010080");
+}
+
+// CiA 301 7.3.5: the defaults that follow the node-ID, and those that do not.
+TEST(PredefinedConnectionSet, MovingTheNodeIdMovesOnlyThePredefinedDefaults) {
+    ObjectDictionary od;
+    PdoObjectsConfig pdos = cia301_pdo_defaults(5, 2, 2);
+    pdos.tpdos[1].cob_id = 0x4000'01A5; // chosen by the device, not predefined
+    add_pdo_objects(od, pdos);
+    add_emcy_objects(od, 5);
+    add_sdo_server_objects(od, 5);
+    move_node_id_defaults(od, 5, 0x42);
+    od.reset_to_defaults();
+    const std::vector<std::tuple<std::uint16_t, std::uint8_t, std::uint32_t>> expected = {
+        {0x1014, 0, 0xC2},        {0x1200, 1, 0x642},       {0x1200, 2, 0x5C2},
+        {0x1400, 1, 0x8000'0242}, {0x1401, 1, 0x8000'0342}, {0x1800, 1, 0xC000'01C2},
+        {0x1801, 1, 0x4000'01A5},
+    };
+    for (const auto& [index, sub_index, value] : expected) {
+        EXPECT_EQ(od.get_as<std::uint32_t>(index, sub_index), value)
+            << std::hex << index << " sub " << int{sub_index};
+    }
+}
+
 TEST(NodeErrorRegister, CommunicationCodesSetTheCommunicationBit) {
     EXPECT_EQ(error_register_bits(0x8130), error_register::kCommunication);
     EXPECT_EQ(error_register_bits(0x8240), error_register::kCommunication);
     EXPECT_EQ(error_register_bits(0x6100), error_register::kGeneric);
+    EXPECT_EQ(error_register_bits(0x6320), error_register::kDeviceProfile); // EPOS2 table 4-11
 }
 
 /// The "SDO browse" acceptance: a node built from the EDS of another answers every readable

@@ -370,11 +370,12 @@ TEST(PdoObjects, Cia301DefaultsUseThePredefinedConnectionSetForTheFirstFourPdos)
     ObjectDictionary od;
     add_pdo_objects(od, kNode, 6, 6);
     expect_values(od, {
-                          {0x1400, 0, 2},
+                          {0x1400, 0, 5}, // CiA 301 7.5.2.35: sub 5, the deadline
                           {0x1400, 1, 0x8000'0205},
                           {0x1403, 1, 0x8000'0505},
                           {0x1404, 1, 0x8000'0000},
                           {0x1405, 2, 255},
+                          {0x1405, 5, 0},
                           {0x1600, 0, 0},
                           {0x1800, 0, 6},
                           {0x1800, 1, 0xC000'0185},

@@ -231,6 +231,43 @@ TEST(SdoClient, ServerAbortWithoutACodeIsAGeneralError) {
     EXPECT_EQ(outcome.code, AbortCode::GeneralError);
 }
 
+// CiA 301 7.2.4.3.9 / 7.2.4.3.13: a server without block transfer aborts the block initiate
+// with 0x05040001; the client asks again, segmented.
+
+TEST(SdoClient, BlockDownloadRefusedByTheServerIsRetriedSegmented) {
+    SdoClientBench bench;
+    Outcome outcome;
+    bench.client.download(kServerNode, 0x2100, 0, counting_bytes(10), outcome.download(),
+                          {.protocol = SdoProtocol::Block});
+    EXPECT_EQ(bench.settle(), Replies{"605#C60021000A000000"});
+    EXPECT_EQ(bench.exchange("585#8000210001000405"), Replies{"605#210021000A000000"});
+    EXPECT_EQ(bench.exchange("585#6000210000000000"), Replies{"605#0001020304050607"});
+    EXPECT_EQ(bench.exchange("585#2000000000000000"), Replies{"605#1908090A00000000"});
+    EXPECT_EQ(bench.exchange("585#3000000000000000"), Replies{});
+    EXPECT_EQ(outcome.code, AbortCode::None);
+    EXPECT_EQ(outcome.calls, 1);
+}
+
+TEST(SdoClient, BlockUploadRefusedByTheServerIsRetriedSegmented) {
+    SdoClientBench bench;
+    Outcome outcome;
+    bench.client.upload(kServerNode, 0x2100, 0, outcome.upload(), {.protocol = SdoProtocol::Block});
+    EXPECT_EQ(bench.settle(), Replies{"605#A40021007F040000"});
+    EXPECT_EQ(bench.exchange("585#8000210001000405"), Replies{"605#4000210000000000"});
+    EXPECT_EQ(bench.exchange("585#4300210078563412"), Replies{});
+    EXPECT_EQ(outcome.code, AbortCode::None);
+    EXPECT_EQ(outcome.value, encode<std::uint32_t>(0x1234'5678));
+}
+
+TEST(SdoClient, OtherAbortsOfABlockInitiateEndTheTransfer) {
+    SdoClientBench bench;
+    Outcome outcome;
+    bench.client.upload(kServerNode, 0x2100, 0, outcome.upload(), {.protocol = SdoProtocol::Block});
+    bench.settle();
+    EXPECT_EQ(bench.exchange("585#8000210000000206"), Replies{});
+    EXPECT_EQ(outcome.code, AbortCode::ObjectDoesNotExist);
+}
+
 // Timeouts in virtual time.
 
 TEST(SdoClient, SilentServerTimesOutAfterOneSecond) {

@@ -156,6 +156,23 @@ TEST_F(VirtualBusTest, EachPortSendsItsQueueInOrder) {
     EXPECT_EQ(wire.ids(), (std::vector<std::uint32_t>{0x200, 0x300, 0x100}));
 }
 
+TEST_F(VirtualBusTest, WithdrawTakesBackQueuedFramesButNotTheOneOnTheWire) {
+    auto a = bus.connect("a");
+    auto b = bus.connect("b");
+    a->send(Frame::data_frame(0x181, {}));
+    a->send(Frame::data_frame(0x182, {}));
+    a->send(Frame::data_frame(0x300, {}));
+    a->send(Frame::data_frame(0x183, {}));
+    loop.run_for(microseconds(10)); // 0x181 is on the wire
+    const auto is_pdo = [](const Frame& frame) {
+        return frame.id >= 0x181 && frame.id <= 0x183;
+    };
+    EXPECT_EQ(a->withdraw(is_pdo), 2U);
+    EXPECT_EQ(b->withdraw(is_pdo), 0U);
+    loop.run();
+    EXPECT_EQ(wire.ids(), (std::vector<std::uint32_t>{0x181, 0x300}));
+}
+
 TEST_F(VirtualBusTest, BackToBackFramesFollowEachOtherWithoutGap) {
     auto a = bus.connect("a");
     auto b = bus.connect("b");

@@ -2,6 +2,10 @@
 
 namespace eposp::can {
 
+std::size_t Port::withdraw(const std::function<bool(const Frame&)>& /*which*/) {
+    return 0;
+}
+
 std::string_view to_string(ErrorState state) {
     switch (state) {
     case ErrorState::Active:

@@ -1,6 +1,7 @@
 #include "eposp/canmaster/can/virtual_bus.hpp"
 #include "virtual_bus_impl.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace eposp::can {
@@ -33,6 +34,20 @@ SendStatus VirtualPort::send(const Frame& frame) {
     impl_->tx_queue.push_back(frame);
     bus_->impl_->request_arbitration();
     return SendStatus::Queued;
+}
+
+std::size_t VirtualPort::withdraw(const std::function<bool(const Frame&)>& which) {
+    if (bus_ == nullptr) {
+        return 0;
+    }
+    std::deque<Frame>& queue = impl_->tx_queue;
+    const std::optional<Transmission>& on_wire = bus_->impl_->current;
+    const bool head_on_wire = on_wire && on_wire->sender == impl_.get() && on_wire->from_queue;
+    const auto first = queue.begin() + (head_on_wire && !queue.empty() ? 1 : 0);
+    const auto kept_end = std::remove_if(first, queue.end(), which);
+    const auto withdrawn = static_cast<std::size_t>(queue.end() - kept_end);
+    queue.erase(kept_end, queue.end());
+    return withdrawn;
 }
 
 ErrorState VirtualPort::error_state() const {

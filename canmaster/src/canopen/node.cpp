@@ -1,8 +1,9 @@
 #include "eposp/canmaster/canopen/node.hpp"
 
 #include "eposp/canmaster/canopen/emergency.hpp"
-#include "eposp/canmaster/canopen/store_restore_objects.hpp"
+#include "eposp/canmaster/canopen/predefined_connection_set.hpp"
 #include "eposp/canmaster/canopen/value_codec.hpp"
+#include "lss_configuration_file.hpp"
 
 #include <tuple>
 #include <utility>
@@ -69,35 +70,73 @@ ObjectDictionary& add_missing_communication_objects(ObjectDictionary& od,
     return od;
 }
 
+/// Where store configuration keeps the LSS configuration: beside the parameter file.
+std::optional<LssConfigurationFile> lss_configuration_file(const NodeConfig& config) {
+    if (!config.parameter_file) {
+        return std::nullopt;
+    }
+    std::filesystem::path path = *config.parameter_file;
+    path += ".lss";
+    return LssConfigurationFile(std::move(path));
+}
+
+/// The node-ID and bit rate a node starts with: those LSS stored, else the configuration's.
+NodeConfig with_stored_lss_configuration(NodeConfig config, bool& refused) {
+    const auto file = lss_configuration_file(config);
+    if (!file) {
+        return config;
+    }
+    const auto stored = file->load();
+    refused = !stored;
+    if (stored && stored->has_value()) {
+        config.node_id = (*stored)->node_id;
+        config.bit_rate = (*stored)->bit_rate;
+    }
+    return config;
+}
+
 } // namespace
 
 std::uint8_t error_register_bits(std::uint16_t emcy_error_code) {
+    if (emcy_error_code == kEmcySoftwareParameterError) {
+        return error_register::kDeviceProfile; // EPOS2 FW spec table 4-11
+    }
     const auto group = emcy_error_code & 0xFF00;
     return group == 0x8100 || group == 0x8200 ? error_register::kCommunication
                                               : error_register::kGeneric;
 }
 
 Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary, NodeConfig config)
-    : port_(port), config_(std::move(config)),
+    : port_(port), services_port_(port, [this] { return !lss_.silent(); }),
+      config_(with_stored_lss_configuration(std::move(config), refused_store_to_report_)),
       od_(add_missing_communication_objects(dictionary, config_)),
-      nmt_(port, config_.node_id,
+      nmt_(services_port_, config_.node_id,
            {.application = [this] { reset_application(); },
             .communication =
                 [this] {
                     reset_communication();
                 }}),
-      emcy_(loop, port, od_), sdo_(loop, port, od_, config_.node_id, config_.sdo),
-      heartbeat_producer_(loop, port, od_, config_.node_id),
+      emcy_(loop, services_port_, od_),
+      sdo_(loop, services_port_, od_, config_.node_id, config_.sdo),
+      heartbeat_producer_(loop, services_port_, od_, config_.node_id),
       heartbeat_consumer_(loop, od_, [this](std::uint16_t code) { raise_emergency(code); }),
-      guarding_(loop, port, od_, config_.node_id,
+      guarding_(loop, services_port_, od_, config_.node_id,
                 [this](std::uint16_t code) { raise_emergency(code); }),
-      sync_producer_(loop, port, od_),
+      sync_producer_(loop, services_port_, od_),
       sync_consumer_(loop, od_, [this](std::uint16_t code) { raise_emergency(code); }),
-      pdo_(loop, port, od_, [this](std::uint16_t code) { raise_emergency(code); }) {
+      pdo_(loop, services_port_, od_, [this](std::uint16_t code) { raise_emergency(code); }),
+      lss_(loop, port, config_.identity,
+           {.initial = {config_.node_id, config_.bit_rate},
+            .only_when_nmt_stopped = config_.lss_only_when_stopped},
+           lss_hooks()) {
     if (config_.parameter_file) {
         store_.emplace(od_, *config_.parameter_file);
         if (od_.find(kStoreParametersIndex) == nullptr) {
-            add_store_restore_objects(od_, *store_);
+            add_store_restore_objects(od_, *store_, config_.store_restore);
+            if (config_.restore_pdo_cob_ids) {
+                add_restore_pdo_cob_ids_object(
+                    od_, *store_, [this] { return node_id(); }, config_.store_restore);
+            }
         }
     }
     nmt_.on_state_change([this](NmtState state) { set_nmt_state(state); });
@@ -105,6 +144,7 @@ Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary,
     sync_producer_.on_sent([this](const can::Frame& frame) { sync_consumer_.on_frame(frame); });
     sync_consumer_.on_sync(
         [this](const SyncEvent& sync) { pdo_.on_sync(sync.counter.value_or(0)); });
+    sync_consumer_.on_window_closed([this] { pdo_.on_window_closed(); });
     port_.on_receive([this](const can::Frame& frame) { on_frame(frame); });
 }
 
@@ -112,7 +152,26 @@ Node::~Node() {
     port_.on_receive({});
 }
 
+LssSlaveHooks Node::lss_hooks() {
+    LssSlaveHooks hooks;
+    if (const auto file = lss_configuration_file(config_)) {
+        hooks.store_configuration = [file = *file](const LssConfiguration& configuration) {
+            return file.store(configuration);
+        };
+    }
+    hooks.switch_bit_rate = config_.switch_bit_rate;
+    // CiA 305: a node that got its first node-ID leaves LSS through NMT initialisation.
+    hooks.request_reset_communication = [this] {
+        nmt_.apply(NmtCommand::ResetCommunication);
+    };
+    return hooks;
+}
+
 void Node::start() {
+    // The bit rate may be one LSS stored rather than the one the owner configured.
+    if (config_.switch_bit_rate) {
+        config_.switch_bit_rate(config_.bit_rate);
+    }
     nmt_.boot();
 }
 
@@ -121,6 +180,7 @@ void Node::on_reset_application(std::function<void()> handler) {
 }
 
 void Node::on_frame(const can::Frame& frame) {
+    lss_.on_frame(frame);
     nmt_.on_frame(frame);
     sync_consumer_.on_frame(frame);
     sdo_.on_frame(frame);
@@ -138,6 +198,12 @@ void Node::set_nmt_state(NmtState state) {
     sync_producer_.set_nmt_state(state);
     sync_consumer_.set_nmt_state(state);
     pdo_.set_nmt_state(state);
+    lss_.set_nmt_state(state);
+    // The boot-up after the load: the first moment an EMCY may go out (EPOS2 FW spec 7.3.5).
+    if (state == NmtState::PreOperational && refused_store_to_report_) {
+        refused_store_to_report_ = false;
+        raise_emergency(kEmcySoftwareParameterError);
+    }
 }
 
 void Node::raise_emergency(std::uint16_t error_code) {
@@ -158,6 +224,7 @@ void Node::restore_stored_values(bool communication_area_only) {
     }
     if (store_) {
         stored_values_ = store_->load_stored_values();
+        refused_store_to_report_ = refused_store_to_report_ || stored_values_.refused();
     } else {
         od_.reset_to_defaults();
     }
@@ -175,9 +242,22 @@ void Node::reset_application() {
 }
 
 // CiA 301 7.3.2.2.1: reset communication, the communication area; the PDOs take its values.
+// CiA 305: a node-ID that LSS configured becomes active here.
 void Node::reset_communication() {
+    adopt_node_id(lss_.reset_communication());
     restore_stored_values(true);
     pdo_.reload();
+}
+
+void Node::adopt_node_id(NodeId node_id) {
+    if (node_id == nmt_.node_id()) {
+        return;
+    }
+    move_node_id_defaults(od_, nmt_.node_id(), node_id);
+    nmt_.set_node_id(node_id);
+    sdo_.set_node_id(node_id);
+    heartbeat_producer_.set_node_id(node_id);
+    guarding_.set_node_id(node_id);
 }
 
 } // namespace eposp::canopen

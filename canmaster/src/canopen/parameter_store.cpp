@@ -1,6 +1,7 @@
 #include "eposp/canmaster/canopen/parameter_store.hpp"
 
 #include "durable_file.hpp"
+#include "eposp/canmaster/canopen/predefined_connection_set.hpp"
 #include "parameter_file.hpp"
 
 #include <fmt/format.h>
@@ -18,18 +19,6 @@ void for_each_persistent(const ObjectDictionary& dictionary, Visit visit) {
             }
         }
     }
-}
-
-// CiA 301 7.3.5 (predefined connection set): RPDO n at 0x200 + 0x100 (n - 1) + node-ID, TPDO n
-// at 0x180 + 0x100 (n - 1) + node-ID, for n = 1..4.
-std::optional<std::uint32_t> predefined_pdo_cob_id(std::uint16_t index, NodeId node_id) {
-    if (index >= 0x1400 && index <= 0x1403) {
-        return 0x200U + 0x100U * (index - 0x1400U) + node_id;
-    }
-    if (index >= 0x1800 && index <= 0x1803) {
-        return 0x180U + 0x100U * (index - 0x1800U) + node_id;
-    }
-    return std::nullopt;
 }
 
 std::string object_name(std::uint16_t index, std::uint8_t sub_index) {

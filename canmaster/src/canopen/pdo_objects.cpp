@@ -128,6 +128,12 @@ void add_communication(ObjectDictionary& od, const Limits& limits, const PdoDefa
                                                                 : AbortCode::InvalidValue;
     });
     if (limits.direction == PdoDirection::Receive) {
+        // CiA 301 7.5.2.35: an RPDO's event timer is its deadline; sub-indices 3 and 6 are
+        // not used by RPDOs.
+        if (config.rpdo_event_timer) {
+            add_persistent(od, index, kPdoEventTimerSub, "Event timer", DataType::Unsigned16,
+                           encode(defaults.event_timer));
+        }
         return;
     }
     SubObject& inhibit = add_persistent(od, index, kPdoInhibitTimeSub, "Inhibit time",
@@ -273,6 +279,7 @@ PdoObjectsConfig epos2_pdo_defaults(NodeId node) {
     };
     config.mapping_entries = 8;
     config.tpdo_event_timer = false;
+    config.rpdo_event_timer = false;
     config.tpdo_sync_start = false;
     config.extended_ids = false; // tables 8-75 / 8-78: bit 29 is 0 (CAN base frame)
     config.can_id_range = CanIdRange{0x181, 0x57F};

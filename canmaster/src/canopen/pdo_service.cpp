@@ -10,7 +10,7 @@ namespace eposp::canopen {
 PdoService::PdoService(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
                        EmergencyCallback emergency) {
     for (std::size_t n = 1; n <= count_pdos(od, PdoDirection::Receive); ++n) {
-        rpdos_.push_back(std::make_unique<Rpdo>(od, n, emergency));
+        rpdos_.push_back(std::make_unique<Rpdo>(loop, od, n, emergency));
     }
     for (std::size_t n = 1; n <= count_pdos(od, PdoDirection::Transmit); ++n) {
         tpdos_.push_back(std::make_unique<Tpdo>(loop, port, od, n, emergency));
@@ -32,6 +32,15 @@ void PdoService::on_sync(std::uint8_t counter) {
     }
     for (auto& rpdo : rpdos_) {
         rpdo->on_sync(counter);
+    }
+}
+
+void PdoService::on_window_closed() {
+    for (auto& tpdo : tpdos_) {
+        tpdo->on_window_closed();
+    }
+    for (auto& rpdo : rpdos_) {
+        rpdo->on_window_closed();
     }
 }
 

@@ -4,8 +4,9 @@
 
 namespace eposp::canopen {
 
-Rpdo::Rpdo(ObjectDictionary& od, std::size_t number, EmergencyCallback emergency)
-    : od_(od), number_(number), emergency_(std::move(emergency)) {
+Rpdo::Rpdo(core::EventLoop& loop, ObjectDictionary& od, std::size_t number,
+           EmergencyCallback emergency)
+    : loop_(loop), od_(od), number_(number), emergency_(std::move(emergency)) {
     const auto reload_on_change = [this](std::uint16_t, std::uint8_t) {
         reload();
     };
@@ -29,6 +30,7 @@ void Rpdo::reload() {
     mapping_ = std::move(resolution.mapping);
     active_ = comm_.cob_id.valid() && resolution.error == AbortCode::None && !mapping_.empty();
     pending_.reset();
+    deadline_.cancel(); // a new event timer counts from the next RPDO
 }
 
 bool Rpdo::accepts(const can::Frame& frame) const {
@@ -49,8 +51,12 @@ void Rpdo::on_frame(const can::Frame& frame) {
     if (payload.size() > mapping_.size() && emergency_) {
         emergency_(kEmcyPdoLengthExceeded);
     }
+    restart_deadline();
     const auto data = payload.first(mapping_.size());
-    if (comm_.transmission_type <= kSyncCyclicMax) {
+    if (synchronous()) {
+        if (window_closed_) {
+            return;
+        }
         pending_ = Bytes(data.begin(), data.end()); // the last one before the SYNC counts
     } else {
         mapping_.unpack(od_, data);
@@ -58,6 +64,7 @@ void Rpdo::on_frame(const can::Frame& frame) {
 }
 
 void Rpdo::on_sync(std::uint8_t /*counter*/) {
+    window_closed_ = false;
     if (!pending_ || !operational_) {
         return;
     }
@@ -66,11 +73,27 @@ void Rpdo::on_sync(std::uint8_t /*counter*/) {
     mapping_.unpack(od_, data);
 }
 
+void Rpdo::on_window_closed() {
+    window_closed_ = true;
+}
+
 void Rpdo::set_nmt_state(NmtState state) {
     operational_ = state == NmtState::Operational;
     if (!operational_) {
         pending_.reset();
+        deadline_.cancel();
     }
+}
+
+void Rpdo::restart_deadline() {
+    if (comm_.event_timer == core::Duration::zero()) {
+        return;
+    }
+    deadline_ = core::ScopedTimer(loop_, loop_.after(comm_.event_timer, [this] {
+        if (emergency_) {
+            emergency_(kEmcyRpdoTimeout);
+        }
+    }));
 }
 
 } // namespace eposp::canopen

@@ -80,10 +80,29 @@ void SdoClientTransfer::on_message(MessageBytes bytes) {
     const bool in_sub_block = state_ == State::BlockUploadSubBlock;
     if (in_sub_block ? bytes[0] == kAbortCommand : command_specifier(bytes[0]) == kAbort) {
         const auto code = static_cast<AbortCode>(value_of(bytes));
+        if (code == AbortCode::CommandSpecifier && initiating_block_transfer()) {
+            return retry_segmented();
+        }
         return end(code == AbortCode::None ? AbortCode::GeneralError : code);
     }
     if (const AbortCode code = handle(bytes); code != AbortCode::None) {
         abort(code);
+    }
+}
+
+bool SdoClientTransfer::initiating_block_transfer() const {
+    return state_ == State::BlockDownloadInitiate || state_ == State::BlockUploadInitiate;
+}
+
+// CiA 301 7.2.4.3.9 / 7.2.4.3.13: a server without block transfer refuses its initiate with
+// 0x05040001; the value then travels by the segmented protocol every server supports.
+void SdoClientTransfer::retry_segmented() {
+    options_.protocol = SdoProtocol::Segmented;
+    const SdoRequestOptions options = options_;
+    if (state_ == State::BlockUploadInitiate) {
+        start_upload(request_cob_id_, mux_, options);
+    } else {
+        start_download(request_cob_id_, mux_, std::move(data_), options);
     }
 }
 

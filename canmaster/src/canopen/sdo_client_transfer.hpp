@@ -69,6 +69,9 @@ private:
     AbortCode block_upload_segment(MessageBytes bytes);
     AbortCode block_upload_end(MessageBytes bytes);
 
+    bool initiating_block_transfer() const;
+    /// The server refused block transfer: the same request again, segmented.
+    void retry_segmented();
     AbortCode check_multiplexer(MessageBytes bytes) const;
     AbortCode check_size(bool finished) const;
     void send_download_segment();

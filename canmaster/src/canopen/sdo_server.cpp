@@ -39,6 +39,12 @@ SdoServer::SdoServer(core::EventLoop& loop, can::Port& port, ObjectDictionary& d
     config_.block_size = std::clamp<std::uint8_t>(config_.block_size, 1, kMaxBlockSize);
 }
 
+void SdoServer::set_node_id(NodeId node) {
+    finish();
+    request_cob_id_ = default_request_cob_id(node);
+    response_cob_id_ = default_response_cob_id(node);
+}
+
 void SdoServer::set_nmt_state(NmtState state) {
     enabled_ = state == NmtState::PreOperational || state == NmtState::Operational;
     if (!enabled_) {

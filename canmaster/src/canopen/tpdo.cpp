@@ -155,6 +155,16 @@ void Tpdo::on_sync(std::uint8_t counter) {
     }
 }
 
+void Tpdo::on_window_closed() {
+    sampled_.reset();
+    // CiA 301 7.5.2.8: a synchronous PDO still waiting for the bus is too late now.
+    const std::uint8_t type = comm_.transmission_type;
+    if (type <= kSyncCyclicMax || type == kRtrSynchronous) {
+        port_.withdraw(
+            [this](const can::Frame& frame) { return matches(comm_.cob_id.raw, frame); });
+    }
+}
+
 void Tpdo::on_cyclic_sync(std::uint8_t counter) {
     const std::uint8_t every = comm_.transmission_type;
     if (syncs_to_go_ == 0) {

@@ -2,6 +2,7 @@
 
 #include "eposp/canmaster/can/frame.hpp"
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -37,6 +38,11 @@ public:
     virtual ~Port() = default;
 
     virtual SendStatus send(const Frame& frame) = 0;
+    /// A transmit abort: takes back the frames still waiting in the transmit queue for which
+    /// `which` is true (e.g. CANopen synchronous PDOs once their window closed, CiA 301
+    /// 7.5.2.8); a frame already on the wire goes on. Returns how many; a port that cannot abort
+    /// (the queue is the kernel's or a server's) takes none back.
+    virtual std::size_t withdraw(const std::function<bool(const Frame&)>& which);
     virtual ErrorState error_state() const = 0;
     virtual std::string_view name() const = 0;
 

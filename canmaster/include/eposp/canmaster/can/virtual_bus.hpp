@@ -74,6 +74,7 @@ public:
     VirtualPort& operator=(const VirtualPort&) = delete;
 
     SendStatus send(const Frame& frame) override;
+    std::size_t withdraw(const std::function<bool(const Frame&)>& which) override;
     ErrorState error_state() const override;
     std::string_view name() const override { return name_; }
 

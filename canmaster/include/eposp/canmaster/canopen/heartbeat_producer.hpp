@@ -27,6 +27,8 @@ public:
     HeartbeatProducer& operator=(const HeartbeatProducer&) = delete;
 
     void set_nmt_state(NmtState state);
+    /// A node-ID LSS configured, at the node's reset communication (CiA 305).
+    void set_node_id(NodeId node_id) { node_id_ = node_id; }
     bool producing() const { return timer_.pending(); }
 
 private:

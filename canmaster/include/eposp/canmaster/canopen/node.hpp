@@ -1,12 +1,14 @@
 #pragma once
 
 #include "eposp/canmaster/can/frame.hpp"
+#include "eposp/canmaster/can/gated_port.hpp"
 #include "eposp/canmaster/can/port.hpp"
 #include "eposp/canmaster/canopen/emcy_producer.hpp"
 #include "eposp/canmaster/canopen/error_history.hpp"
 #include "eposp/canmaster/canopen/heartbeat_consumer.hpp"
 #include "eposp/canmaster/canopen/heartbeat_producer.hpp"
 #include "eposp/canmaster/canopen/lss_protocol.hpp"
+#include "eposp/canmaster/canopen/lss_slave.hpp"
 #include "eposp/canmaster/canopen/nmt_slave.hpp"
 #include "eposp/canmaster/canopen/nmt_state.hpp"
 #include "eposp/canmaster/canopen/node_guarding.hpp"
@@ -15,6 +17,7 @@
 #include "eposp/canmaster/canopen/pdo_objects.hpp"
 #include "eposp/canmaster/canopen/pdo_service.hpp"
 #include "eposp/canmaster/canopen/sdo_server.hpp"
+#include "eposp/canmaster/canopen/store_restore_objects.hpp"
 #include "eposp/canmaster/canopen/sync_consumer.hpp"
 #include "eposp/canmaster/canopen/sync_objects.hpp"
 #include "eposp/canmaster/canopen/sync_producer.hpp"
@@ -30,9 +33,15 @@ namespace eposp::canopen {
 inline constexpr std::uint16_t kDeviceTypeIndex = 0x1000;
 inline constexpr std::uint16_t kIdentityIndex = 0x1018;
 
+/// EPOS2 FW spec table 4-11: "Software Parameter Error", here the stored parameters that were
+/// refused at a load (the node runs on its defaults).
+inline constexpr std::uint16_t kEmcySoftwareParameterError = 0x6320;
+
 /// What a node needs beyond the device's own objects. The communication objects it describes
 /// are added only where the dictionary does not have them yet (e.g. one imported from an EDS).
 struct NodeConfig {
+    /// 1..127, or kLssUnconfiguredNodeId: the node then waits for LSS to configure one (CiA
+    /// 305). A node-ID that LSS stored replaces it.
     NodeId node_id = 1;
     std::uint32_t device_type = 0;               ///< 0x1000
     LssAddress identity;                         ///< 0x1018 sub 1..4, also the node's LSS address
@@ -44,11 +53,26 @@ struct NodeConfig {
     std::optional<PdoObjectsConfig> pdos;
     /// The non-volatile memory behind 0x1010/0x1011; empty: the node has no stored values.
     std::optional<std::filesystem::path> parameter_file;
+    /// Who may restore the defaults (0x1011), e.g. the EPOS2 only in pre-operational.
+    StoreRestoreOptions store_restore;
+    /// EPOS2 FW spec 8.2.9: 0x1011 sub 5 "Restore Default PDO COB-IDs" (needs a parameter file).
+    bool restore_pdo_cob_ids = false;
     SdoServerConfig sdo;
+
+    /// LSS (CiA 305). The bit rate (bit/s) of the bus the node starts on; one that LSS stored
+    /// replaces it.
+    std::uint32_t bit_rate = 1'000'000;
+    /// Switches the node's CAN controller to another bit rate (LSS activate bit timing): the
+    /// node cannot do it itself; start() calls it with the rate the node starts at. Missing:
+    /// configure bit timing answers "not supported".
+    std::function<void(std::uint32_t bit_rate)> switch_bit_rate;
+    /// EPOS2 FW spec 7.4: LSS only in NMT stopped (a node without node-ID takes it always).
+    bool lss_only_when_stopped = false;
 };
 
-/// The error register bits of an emergency code a communication service raises (EPOS2 FW spec
-/// table 4-11: every CAN error 0x81xx/0x82xx is a communication error); generic otherwise.
+/// The error register bits of an emergency code the node raises (EPOS2 FW spec table 4-11: every
+/// CAN error 0x81xx/0x82xx is a communication error, 0x6320 device profile specific); generic
+/// otherwise.
 std::uint8_t error_register_bits(std::uint16_t emcy_error_code);
 
 /// A CANopen slave node (CiA 301), CANopenNode-style: a dictionary, a port and the services on
@@ -59,7 +83,17 @@ std::uint8_t error_register_bits(std::uint16_t emcy_error_code);
 /// NMT reset communication sets the communication area (0x1000..0x1FFF) back to its stored
 /// values (or defaults) and reloads the PDOs; reset node first does the same for the rest of
 /// the dictionary and tells the device (on_reset_application). The dictionary must outlive the
-/// node and not move.
+/// node and not move. Stored values that are refused (a damaged file) leave the defaults in
+/// place and raise EMCY 0x6320 once the node is pre-operational.
+///
+/// LSS (CiA 305): the node's LSS slave, addressed by NodeConfig::identity, gets every frame. A
+/// node-ID it configures becomes active at the next reset communication (right away for a
+/// node that had none, when it leaves LSS configuration), and everything that depends on the
+/// node-ID follows it: NMT addressing, boot-up and heartbeat, node guarding, the SDO server, and
+/// the defaults of 0x1014, 0x1200 and the PDO COB-IDs of the predefined connection set (CiA 301
+/// 7.3.5). Store configuration writes the pending node-ID and bit rate beside the parameter
+/// file ("<parameter file>.lss"); without one it is not supported. While the LSS slave switches
+/// the bit rate the node's services send nothing.
 class Node {
 public:
     Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary, NodeConfig config);
@@ -76,11 +110,14 @@ public:
 
     NmtState nmt_state() const { return nmt_.state(); }
     NodeId node_id() const { return nmt_.node_id(); }
+    /// The bit rate (bit/s) the node runs at, after LSS.
+    std::uint32_t bit_rate() const { return lss_.active_bit_rate(); }
     ObjectDictionary& dictionary() { return od_; }
     /// What the last load of stored values found; NoneStored without a parameter file.
     const StoredValuesReport& stored_values() const { return stored_values_; }
 
     NmtSlave& nmt() { return nmt_; }
+    LssSlave& lss() { return lss_; }
     EmcyProducer& emcy() { return emcy_; }
     HeartbeatConsumer& heartbeat_consumer() { return heartbeat_consumer_; }
     NodeGuarding& node_guarding() { return guarding_; }
@@ -95,9 +132,16 @@ private:
     void restore_stored_values(bool communication_area_only);
     void reset_application();
     void reset_communication();
+    /// Moves every node-ID-dependent service and default to `node_id` (CiA 305).
+    void adopt_node_id(NodeId node_id);
+    LssSlaveHooks lss_hooks();
 
     can::Port& port_;
-    NodeConfig config_;
+    /// What the services send through: closed while the LSS slave is silent.
+    can::GatedPort services_port_;
+    /// Stored values or the stored LSS configuration were refused, and no EMCY told it yet.
+    bool refused_store_to_report_ = false;
+    NodeConfig config_;    ///< with the stored LSS configuration applied
     ObjectDictionary& od_; ///< with the communication objects added (see the constructor)
     std::optional<ParameterStore> store_;
     StoredValuesReport stored_values_;
@@ -112,6 +156,7 @@ private:
     SyncProducer sync_producer_;
     SyncConsumer sync_consumer_;
     PdoService pdo_;
+    LssSlave lss_;
 };
 
 } // namespace eposp::canopen

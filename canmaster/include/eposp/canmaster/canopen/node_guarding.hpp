@@ -42,6 +42,8 @@ public:
 
     void on_frame(const can::Frame& frame);
     void set_nmt_state(NmtState state);
+    /// A node-ID LSS configured, at the node's reset communication (CiA 305).
+    void set_node_id(NodeId node_id) { node_id_ = node_id; }
     void on_life_guarding_event(LifeGuardingListener listener);
 
 private:

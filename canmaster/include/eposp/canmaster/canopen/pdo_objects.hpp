@@ -63,7 +63,7 @@ struct PdoDefaults {
     std::uint32_t cob_id = PdoCobId::kInvalid;
     std::uint8_t transmission_type = kEventDrivenProfile;
     std::uint16_t inhibit_time = 0;     ///< TPDO, in 100 us
-    std::uint16_t event_timer = 0;      ///< TPDO, in ms; 0 disables it
+    std::uint16_t event_timer = 0;      ///< TPDO event timer, RPDO deadline; ms, 0 = off
     std::uint8_t sync_start = 0;        ///< TPDO, 0 = not used
     std::vector<std::uint32_t> mapping; ///< raw entries; sub-index 0 defaults to their number
 };
@@ -80,6 +80,7 @@ struct PdoObjectsConfig {
     std::vector<PdoDefaults> tpdos;   ///< TPDO n at [n - 1]
     std::uint8_t mapping_entries = 8; ///< sub-indices 1..n of every mapping object
     bool tpdo_event_timer = true;     ///< TPDO communication sub-index 5 exists
+    bool rpdo_event_timer = true;     ///< RPDO communication sub-index 5 (deadline) exists
     bool tpdo_sync_start = true;      ///< TPDO communication sub-index 6 exists
     bool extended_ids = true;         ///< a COB-ID may set bit 29 (29-bit CAN-ID)
     /// The CAN-IDs a valid PDO may use, on top of the IDs CiA 301 7.3.5 restricts.

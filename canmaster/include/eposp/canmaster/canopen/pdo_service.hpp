@@ -29,6 +29,8 @@ public:
     void on_frame(const can::Frame& frame);
     /// The SYNC consumer's notification; `counter` is 0 for a SYNC without counter.
     void on_sync(std::uint8_t counter);
+    /// The synchronous window of the last SYNC closed (SyncConsumer::on_window_closed).
+    void on_window_closed();
     void set_nmt_state(NmtState state);
     /// Re-reads every PDO's parameters (after ObjectDictionary::reset_to_defaults).
     void reload();

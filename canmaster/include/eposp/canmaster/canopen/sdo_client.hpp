@@ -35,7 +35,10 @@ struct SdoClientConfig {
 /// always expedited; for uploads the server chooses between expedited and segmented.
 enum class SdoProtocol : std::uint8_t {
     Segmented, ///< CiA 301 7.2.4.3.2 / 7.2.4.3.5: what every server supports
-    Block,     ///< CiA 301 7.2.4.3.8 / 7.2.4.3.12: fewer frames for large values, with a CRC
+    /// CiA 301 7.2.4.3.8 / 7.2.4.3.12: fewer frames for large values, with a CRC. A server that
+    /// refuses the block initiate with 0x05040001 (no block transfer) gets the request again,
+    /// segmented.
+    Block,
 };
 
 struct SdoRequestOptions {

@@ -53,6 +53,9 @@ public:
 
     /// A transfer is running.
     bool busy() const { return state_ != State::Idle; }
+    /// A node-ID LSS configured, at the node's reset communication: the default COB-IDs follow
+    /// it (CiA 301 7.3.5); a running transfer ends without a reply.
+    void set_node_id(NodeId node);
     std::uint32_t request_cob_id() const { return request_cob_id_; }
     std::uint32_t response_cob_id() const { return response_cob_id_; }
 

@@ -34,6 +34,11 @@ inline constexpr std::uint16_t kEmcyTransmitCobIdCollision = 0x8150;
 /// restarted by every transmission). Becoming active in Operational is an event too, so that
 /// consumers learn the initial values. Remote requests are answered only where the COB-ID
 /// allows RTR. Works in NMT Operational only.
+///
+/// Synchronous window (CiA 301 7.5.2.8, 0x1007): once the window of a SYNC closed, a
+/// synchronous PDO (types 0..240, 252) still waiting in the controller's transmit queue is taken
+/// back (Port::withdraw), and the data sampled at that SYNC is no longer sent (a type 252 remote
+/// request goes unanswered until the next SYNC).
 class Tpdo {
 public:
     /// TPDO `number` (1..512) of `od`, whose objects add_pdo_objects() made.
@@ -47,6 +52,8 @@ public:
     void on_frame(const can::Frame& frame);
     /// The SYNC consumer's notification; `counter` is 0 for a SYNC without counter.
     void on_sync(std::uint8_t counter);
+    /// The synchronous window of the last SYNC closed (SyncConsumer::on_window_closed).
+    void on_window_closed();
     void set_nmt_state(NmtState state);
     /// An application event (transmission types 0, 254, 255).
     void trigger();
