@@ -54,7 +54,7 @@ run_tests() {
     ctest --test-dir "$dir" --output-on-failure -j "$(nproc)"
 }
 
-# fuzz SECONDS: each target in turn, one job, from its seed corpus; what it finds new goes to
+# fuzz SECONDS: each target in turn, one process, from its seed corpus; what it finds new goes to
 # build-fuzz/corpus/<target>/, a crashing input to build-fuzz/artifacts/<target>/.
 fuzz() {
     local seconds=$1 binary seeds name failed=()
@@ -62,7 +62,7 @@ fuzz() {
         name=$(basename "$seeds")
         log "fuzzing $name for $seconds s"
         mkdir -p "build-fuzz/corpus/$name" "build-fuzz/artifacts/$name"
-        "$binary" -max_total_time="$seconds" -jobs=1 -print_final_stats=1 \
+        "$binary" -max_total_time="$seconds" -timeout=10 -print_final_stats=1 \
             -artifact_prefix="build-fuzz/artifacts/$name/" "build-fuzz/corpus/$name" "$seeds" ||
             failed+=("$name")
     done <build-fuzz/tests/fuzz/fuzz_targets.txt
