@@ -4,6 +4,7 @@
 #   ./eposp.sh demo       set up, build and run the demo
 #   ./eposp.sh test       set up, build and run every test
 #   ./eposp.sh sanitize   set up, build with AddressSanitizer + UBSan and run every test
+#   ./eposp.sh fuzz [S]   set up clang, build the libFuzzer targets, run each for S seconds (60)
 #   ./eposp.sh build      set up and build only
 #   ./eposp.sh setup      install the Debian packages that are missing, nothing else
 #
@@ -16,6 +17,8 @@ readonly BUILD_PACKAGES=(g++ cmake ninja-build libboost-dev libfmt-dev libcli11-
     libgtest-dev libgmock-dev libbenchmark-dev)
 # Independent tools that the interoperability tests and the demo talk to.
 readonly TOOL_PACKAGES=(python3-can tshark)
+# Only for `fuzz`: clang and its sanitizer and libFuzzer runtimes.
+readonly FUZZ_PACKAGES=(clang libclang-rt-14-dev)
 
 log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
 
@@ -51,6 +54,21 @@ run_tests() {
     ctest --test-dir "$dir" --output-on-failure -j "$(nproc)"
 }
 
+# fuzz SECONDS: each target in turn, one process, from its seed corpus; what it finds new goes to
+# build-fuzz/corpus/<target>/, a crashing input to build-fuzz/artifacts/<target>/.
+fuzz() {
+    local seconds=$1 binary seeds name failed=()
+    while read -r binary seeds; do
+        name=$(basename "$seeds")
+        log "fuzzing $name for $seconds s"
+        mkdir -p "build-fuzz/corpus/$name" "build-fuzz/artifacts/$name"
+        "$binary" -max_total_time="$seconds" -timeout=10 -print_final_stats=1 \
+            -artifact_prefix="build-fuzz/artifacts/$name/" "build-fuzz/corpus/$name" "$seeds" ||
+            failed+=("$name")
+    done <build-fuzz/tests/fuzz/fuzz_targets.txt
+    [ ${#failed[@]} -eq 0 ] || { log "failing inputs found by: ${failed[*]}"; return 1; }
+}
+
 case "${1:-}" in
 setup) setup ;;
 build) setup && build build ;;
@@ -63,8 +81,17 @@ sanitize)
         -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g"
     run_tests build-sanitize
     ;;
+fuzz)
+    setup && install_missing "${FUZZ_PACKAGES[@]}"
+    log "building the fuzz targets in build-fuzz"
+    cmake -S . -B build-fuzz -G Ninja -DEPOSP_BUILD_FUZZERS=ON -DCMAKE_CXX_COMPILER=clang++ \
+        -DEPOSP_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+        >/dev/null
+    cmake --build build-fuzz --target eposp_fuzzers
+    fuzz "${2:-60}"
+    ;;
 *)
-    sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'
     exit 1
     ;;
 esac

@@ -4,6 +4,15 @@
 set(EPOSP_WARNINGS -Wall -Wextra -Wpedantic -Werror -Wshadow -Wnon-virtual-dtor -Wconversion
     -Wno-sign-conversion)
 set(EPOSP_SANITIZERS -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+if(EPOSP_BUILD_FUZZERS)
+    if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+        message(FATAL_ERROR "EPOSP_BUILD_FUZZERS needs clang: -DCMAKE_CXX_COMPILER=clang++")
+    endif()
+    # libFuzzer steers by the coverage of our code, so all of it is instrumented for it; the
+    # fuzzer's own main is linked into the fuzz binaries only (tests/fuzz).
+    set(EPOSP_SANITIZE ON)
+    list(APPEND EPOSP_SANITIZERS -fsanitize=fuzzer-no-link)
+endif()
 
 function(eposp_apply_defaults target scope)
     target_compile_features(${target} ${scope} cxx_std_20)
