@@ -425,7 +425,7 @@ const std::vector<SpecRange> kSpecRanges = {
     {0x2300, 4, 0, 1}, {0x2301, 3, -2, 0}, {0x2302, 3, -2, 0}, {0x2303, 3, -2, 0},
     {0x6007, 0, 1, 3}, {0x605B, 0, 0, 1}, {0x605C, 0, 0, 1}, {0x605E, 0, -1, 2},
     {0x6067, 0, 0, 2'147'483'647},
-    {0x607F, 0, 1, 4'294'967'295}, {0x6081, 0, 1, 4'294'967'295},
+    {0x607F, 0, 1, 4'294'967'295},
     {0x6083, 0, 1, 4'294'967'295}, {0x6084, 0, 1, 4'294'967'295},
     {0x6085, 0, 1, 4'294'967'295},
     {0x6089, 0, 0, 0}, {0x608A, 0, 0xAC, 0xAC}, {0x608B, 0, -3, 0}, {0x608C, 0, 0xA4, 0xA4},
@@ -440,6 +440,29 @@ const std::vector<SpecRange> kSpecRanges = {
     {0x6410, 4, 1, 4'294'967'295}, {0x6410, 5, 1, 5400},
 };
 // clang-format on
+
+/// Value ranges bounded by another entry ("1 ... Maximal Profile Velocity"); `symmetric` for
+/// "-Maximal profile velocity ... Maximal profile velocity".
+struct BoundedRange {
+    std::uint16_t index;
+    std::uint8_t sub;
+    std::uint16_t bound_index;
+    std::uint8_t bound_sub;
+    bool symmetric;
+};
+const std::vector<BoundedRange> kBoundedRanges = {
+    {0x2030, 0, 0x6410, 2, true},  // 8.2.50: output current limit
+    {0x206B, 0, 0x607F, 0, true},  // 8.2.54
+    {0x2302, 2, 0x607F, 0, true},  // 8.2.82
+    {0x6081, 0, 0x607F, 0, false}, // 8.2.107
+    {0x6083, 0, 0x60C5, 0, false}, // 8.2.108: max acceleration
+    {0x6084, 0, 0x60C5, 0, false}, // 8.2.109
+    {0x6085, 0, 0x60C5, 0, false}, // 8.2.110
+    {0x6099, 1, 0x607F, 0, false}, // 8.2.119
+    {0x6099, 2, 0x607F, 0, false}, // 8.2.119
+    {0x609A, 0, 0x60C5, 0, false}, // 8.2.120
+    {0x60FF, 0, 0x607F, 0, true},  // 8.2.128
+};
 
 constexpr canopen::NodeId kNode = 5;
 
@@ -567,6 +590,26 @@ TEST_F(Epos2ObjectTable, WritesInsideTheValueRangeAreAcceptedAndOutsideRefused) 
         }
         if (const auto above = bytes_of(type, range.high + 1)) {
             EXPECT_EQ(od.write(range.index, range.sub, *above), canopen::AbortCode::ValueTooHigh);
+        }
+    }
+}
+
+TEST_F(Epos2ObjectTable, WritesBeyondTheBoundingObjectAreRefused) {
+    constexpr std::int64_t kBound = 1000;
+    for (const BoundedRange& range : kBoundedRanges) {
+        SCOPED_TRACE(entry_name(range.index, range.sub));
+        const DataType bound_type = od.find(range.bound_index, range.bound_sub)->type;
+        ASSERT_EQ(od.write(range.bound_index, range.bound_sub, *bytes_of(bound_type, kBound)),
+                  canopen::AbortCode::None);
+        const DataType type = od.find(range.index, range.sub)->type;
+        const auto write = [&](std::int64_t value) {
+            return od.write(range.index, range.sub, *bytes_of(type, value));
+        };
+        EXPECT_EQ(write(kBound), canopen::AbortCode::None);
+        EXPECT_EQ(write(kBound + 1), canopen::AbortCode::ValueTooHigh);
+        if (range.symmetric) {
+            EXPECT_EQ(write(-kBound), canopen::AbortCode::None);
+            EXPECT_EQ(write(-kBound - 1), canopen::AbortCode::ValueTooLow);
         }
     }
 }

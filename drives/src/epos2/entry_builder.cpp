@@ -44,13 +44,37 @@ Entry& Entry::range(std::int64_t low, std::int64_t high) {
 Entry& Entry::one_of(std::initializer_list<std::int64_t> values) {
     const auto [low, high] = std::minmax(values);
     range(low, high);
-    sub_.on_write = [type = sub_.type, allowed = std::vector<std::int64_t>(values)](
+    set_write_check([type = sub_.type, allowed = std::vector<std::int64_t>(values)](
                         std::span<const std::uint8_t> value) {
         return std::ranges::find(allowed, decode_integer(type, value)) != allowed.end()
                    ? canopen::AbortCode::None
                    : canopen::AbortCode::InvalidValue;
-    };
+    });
     return *this;
+}
+
+Entry& Entry::at_most(const canopen::ObjectDictionary& od, std::uint16_t index,
+                      std::uint8_t sub_index, bool symmetric) {
+    // The bound is looked up at each write: it may be added after this entry.
+    set_write_check(
+        [&od, type = sub_.type, index, sub_index, symmetric](std::span<const std::uint8_t> value) {
+            const std::int64_t written = decode_integer(type, value);
+            const std::int64_t bound =
+                decode_integer(od.find(index, sub_index)->type, od.get(index, sub_index));
+            if (written > bound) {
+                return canopen::AbortCode::ValueTooHigh;
+            }
+            return symmetric && written < -bound ? canopen::AbortCode::ValueTooLow
+                                                 : canopen::AbortCode::None;
+        });
+    return *this;
+}
+
+void Entry::set_write_check(canopen::SubObject::WriteHook check) {
+    if (sub_.on_write) {
+        throw std::logic_error("Entry: an entry has one write check");
+    }
+    sub_.on_write = std::move(check);
 }
 
 Entry& Entry::persistent() {

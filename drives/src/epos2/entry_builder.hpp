@@ -23,6 +23,11 @@ public:
     /// A value range given as a list of codes (a table of the spec): other values are refused
     /// with 0x06090030 "value range of parameter exceeded".
     Entry& one_of(std::initializer_list<std::int64_t> values);
+    /// A value range bounded by another entry's current value ("1 ... Maximal Profile Velocity"):
+    /// values above it are refused with 0x06090031, and with `symmetric` ("-Maximal profile
+    /// velocity ... Maximal profile velocity") values below its negative with 0x06090032.
+    Entry& at_most(const canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index,
+                   bool symmetric = false);
     /// "Subindex of persistent parameters" (8.1.1): saved by 0x1010, restored by 0x1011.
     Entry& persistent();
     /// "PDO mappable parameters" (8.1.1).
@@ -31,6 +36,8 @@ public:
     canopen::SubObject& sub() { return sub_; }
 
 private:
+    void set_write_check(canopen::SubObject::WriteHook check);
+
     canopen::SubObject& sub_;
 };
 

@@ -1,7 +1,6 @@
 // The manufacturer-specific area of the EPOS2 (firmware specification 8.2.34 - 8.2.83) as data,
-// for an EPOS2 24/5 where the specification gives values per hardware. Value ranges that
-// depend on other objects ("-Maximal profile velocity ... Maximal profile velocity") and the
-// behaviour behind the objects belong to the device and are not checked here.
+// for an EPOS2 24/5 where the specification gives values per hardware. The behaviour behind the
+// objects belongs to the device and attaches to them through hooks and listeners.
 #include "entry_builder.hpp"
 #include "object_areas.hpp"
 #include "object_types.hpp"
@@ -52,14 +51,19 @@ void add_sensor_and_setting_values(canopen::ObjectDictionary& od) {
     add_var(od, 0x2027, "Current Actual Value Averaged", kI16, kRO, 0).pdo_mappable();
     add_var(od, 0x2028, "Velocity Actual Value Averaged", kI32, kRO, 0).pdo_mappable();
     add_var(od, 0x2029, "Auxiliary Velocity Actual Value Averaged", kI32, kRO, 0).pdo_mappable();
-    add_var(od, 0x2030, "Current Mode Setting Value", kI16, kRW, 0).pdo_mappable();
+    // 8.2.50: "-Output current limit ... Output current limit".
+    add_var(od, 0x2030, "Current Mode Setting Value", kI16, kRW, 0)
+        .at_most(od, 0x6410, 2, /*symmetric=*/true)
+        .pdo_mappable();
     // 8.2.51 types it INTEGER32, table 8-67 INTEGER16: the section wins.
     add_var(od, 0x2031, "Current Demand Value", kI32, kRO, 0).pdo_mappable();
     add_var(od, 0x2062, "Position Mode Setting Value", kI32, kRW, 0)
         .range(kI32Min, kI32Max)
         .pdo_mappable();
     add_var(od, 0x2069, "Auxiliary Velocity Sensor Actual Value", kI32, kRO, 0);
-    add_var(od, 0x206B, "Velocity Mode Setting Value", kI32, kRW, 0).pdo_mappable();
+    add_var(od, 0x206B, "Velocity Mode Setting Value", kI32, kRW, 0)
+        .at_most(od, 0x607F, 0, /*symmetric=*/true)
+        .pdo_mappable();
     add_var(od, 0x206C, "Auxiliary Velocity Actual Value", kI32, kRO, 0);
 }
 
@@ -239,6 +243,8 @@ void add_setpoint_input_objects(canopen::ObjectDictionary& od) {
     };
     analog(0x2301, "Current", kI16);
     analog(0x2302, "Velocity", kI32);
+    // 8.2.82: the velocity offset is within +/- Maximal Profile Velocity.
+    Entry(*od.find(0x2302, 2)).at_most(od, 0x607F, 0, /*symmetric=*/true);
     analog(0x2303, "Position", kI32);
 }
 

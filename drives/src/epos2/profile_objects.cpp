@@ -1,7 +1,8 @@
 // The CiA 402 profile area of the EPOS2 (firmware specification 8.2.84 - 8.2.131) as data, with
-// the units and factor group objects of 3.3 (0x6089 - 0x608E), for an EPOS2 24/5. Value ranges
-// bounded by other objects (e.g. "1 ... Maximal Profile Velocity") keep only their static bound
-// here; the device checks the rest when it uses the value.
+// the units and factor group objects of 3.3 (0x6089 - 0x608E), for an EPOS2 24/5. Ranges bounded
+// by another object ("1 ... Maximal Profile Velocity") are checked against its current value;
+// those of tables 8-119 and 8-126 (functions of motor type, pole pairs and gear) keep only their
+// static bound until the motor model computes them.
 #include "entry_builder.hpp"
 #include "object_areas.hpp"
 #include "object_types.hpp"
@@ -76,6 +77,7 @@ void add_profile_motion_objects(canopen::ObjectDictionary& od) {
         .persistent();
     add_var(od, 0x6081, "Profile Velocity", kU32, kRW, 1000)
         .range(1, kU32Max)
+        .at_most(od, 0x607F, 0)
         .persistent()
         .pdo_mappable();
     for (const auto& [index, name] :
@@ -83,6 +85,7 @@ void add_profile_motion_objects(canopen::ObjectDictionary& od) {
           std::pair{0x6085, "Quickstop Deceleration"}}) {
         add_var(od, static_cast<std::uint16_t>(index), name, kU32, kRW, 10'000)
             .range(1, kU32Max)
+            .at_most(od, 0x60C5, 0)
             .persistent()
             .pdo_mappable();
     }
@@ -110,9 +113,18 @@ void add_factor_group_objects(canopen::ObjectDictionary& od) {
 void add_homing_interpolation_objects(canopen::ObjectDictionary& od) {
     add_var(od, 0x6098, "Homing Method", kI8, kRW, 7).persistent().pdo_mappable();
     od.add_object(0x6099, "Homing Speeds", kArray);
-    add_entry(od, 0x6099, 1, "Speed for Switch Search", kU32, kRW, 100).persistent().pdo_mappable();
-    add_entry(od, 0x6099, 2, "Speed for Zero Search", kU32, kRW, 10).persistent().pdo_mappable();
-    add_var(od, 0x609A, "Homing Acceleration", kU32, kRW, 1000).persistent().pdo_mappable();
+    add_entry(od, 0x6099, 1, "Speed for Switch Search", kU32, kRW, 100)
+        .at_most(od, 0x607F, 0)
+        .persistent()
+        .pdo_mappable();
+    add_entry(od, 0x6099, 2, "Speed for Zero Search", kU32, kRW, 10)
+        .at_most(od, 0x607F, 0)
+        .persistent()
+        .pdo_mappable();
+    add_var(od, 0x609A, "Homing Acceleration", kU32, kRW, 1000)
+        .at_most(od, 0x60C5, 0)
+        .persistent()
+        .pdo_mappable();
 
     add_var(od, 0x60C0, "Interpolation Sub Mode Selection", kI16, kRW, -1).range(-1, -1);
     // 8.2.122 prints both entries as sub-index 0x01; the index is sub-index 2 (CiA 402).
@@ -162,7 +174,10 @@ void add_control_parameter_objects(canopen::ObjectDictionary& od) {
     gain(0x60FB, 3, "Position Regulator D-Gain");
     feed_forward(0x60FB, 4, "Velocity Feed Forward Factor");
     feed_forward(0x60FB, 5, "Acceleration Feed Forward Factor");
-    add_var(od, 0x60FF, "Target Velocity", kI32, kRW, 0).pdo_mappable();
+    // 8.2.128: "-Maximal profile velocity ... Maximal profile velocity".
+    add_var(od, 0x60FF, "Target Velocity", kI32, kRW, 0)
+        .at_most(od, 0x607F, 0, /*symmetric=*/true)
+        .pdo_mappable();
 }
 
 // 8.2.129 - 8.2.131

@@ -1,5 +1,6 @@
-// The EPOS2 dictionary as a master sees it: a canopen::Node runs on it on a virtual bus, and an
-// SDO client reads and writes it. Abort codes as EPOS2 FW spec table 4-12 lists them.
+// The EPOS2 dictionary as a master sees it: a canopen::Node runs on it on a virtual bus, an SDO
+// client reads and writes it, PDOs carry its default mappings. Abort codes as EPOS2 FW spec
+// table 4-12 lists them.
 #include "eposp/canmaster/can/virtual_bus.hpp"
 #include "eposp/canmaster/canopen/nmt_protocol.hpp"
 #include "eposp/canmaster/canopen/node.hpp"
@@ -29,15 +30,18 @@ struct Upload {
     Bytes value;
 };
 
-class Epos2DictionarySdo : public ::testing::Test {
+class Epos2DictionaryOnBus : public ::testing::Test {
 protected:
-    Epos2DictionarySdo() {
+    Epos2DictionaryOnBus() {
         std::filesystem::remove(parameter_file);
-        master->on_receive([this](const can::Frame& frame) { client.on_frame(frame); });
+        master->on_receive([this](const can::Frame& frame) {
+            received.push_back(frame);
+            client.on_frame(frame);
+        });
         node.start();
         loop.run_for(10ms);
     }
-    ~Epos2DictionarySdo() override { std::filesystem::remove(parameter_file); }
+    ~Epos2DictionaryOnBus() override { std::filesystem::remove(parameter_file); }
 
     static Epos2DictionaryConfig config(const std::filesystem::path& file) {
         Epos2DictionaryConfig config;
@@ -64,13 +68,13 @@ protected:
         EXPECT_TRUE(result.has_value()) << "no answer";
         return result.value_or(AbortCode::SdoTimeout);
     }
-    void reset_node() {
+    void nmt(canopen::NmtCommand command) {
         master->send(can::Frame::data_frame(
             canopen::kNmtCanId,
-            std::vector<std::uint8_t>{static_cast<std::uint8_t>(canopen::NmtCommand::ResetNode),
-                                      kNode}));
+            std::vector<std::uint8_t>{static_cast<std::uint8_t>(command), kNode}));
         loop.run_for(50ms);
     }
+    void reset_node() { nmt(canopen::NmtCommand::ResetNode); }
 
     const std::filesystem::path parameter_file =
         std::filesystem::temp_directory_path() /
@@ -83,15 +87,16 @@ protected:
     const std::size_t objects_before_node = dictionary.objects().objects().size();
     canopen::Node node{loop, *device, dictionary.objects(), dictionary.node_config()};
     canopen::SdoClient client{loop, *master};
+    std::vector<can::Frame> received;
 };
 
-TEST_F(Epos2DictionarySdo, NodeFindsEveryCommunicationObjectItNeeds) {
+TEST_F(Epos2DictionaryOnBus, NodeFindsEveryCommunicationObjectItNeeds) {
     EXPECT_EQ(dictionary.objects().objects().size(), objects_before_node);
     EXPECT_EQ(node.nmt_state(), canopen::NmtState::PreOperational);
 }
 
 // 8.2.1, 8.2.5, 8.2.15
-TEST_F(Epos2DictionarySdo, ReadsDeviceTypeNameAndIdentity) {
+TEST_F(Epos2DictionaryOnBus, ReadsDeviceTypeNameAndIdentity) {
     EXPECT_EQ(read(0x1000, 0).value, encode(std::uint32_t{0x0002'0192}));
     EXPECT_EQ(read(0x1008, 0).value, canopen::encode_string("EPOS2"));
     EXPECT_EQ(read(0x1018, 1).value, encode(std::uint32_t{0x0000'00FB}));
@@ -106,7 +111,7 @@ struct DefaultCase {
     Bytes value;
 };
 
-TEST_F(Epos2DictionarySdo, ReadsTheSpecifiedDefaults) {
+TEST_F(Epos2DictionaryOnBus, ReadsTheSpecifiedDefaults) {
     const std::vector<DefaultCase> cases = {
         {0x1005, 0, encode(std::uint32_t{0x80})},                // 8.2.4
         {0x1014, 0, encode(std::uint32_t{0x80 + kNode})},        // 8.2.12
@@ -138,7 +143,7 @@ struct RefusedWrite {
     std::uint32_t abort_code; ///< as table 4-12 prints it
 };
 
-TEST_F(Epos2DictionarySdo, RefusedWritesAbortWithTheSpecifiedCodes) {
+TEST_F(Epos2DictionaryOnBus, RefusedWritesAbortWithTheSpecifiedCodes) {
     const std::vector<RefusedWrite> cases = {
         {"read-only statusword", 0x6041, 0, encode(std::uint16_t{0}), 0x0601'0002},
         {"constant supported drive modes", 0x6502, 0, encode(std::uint32_t{0}), 0x0601'0002},
@@ -163,12 +168,12 @@ TEST_F(Epos2DictionarySdo, RefusedWritesAbortWithTheSpecifiedCodes) {
     }
 }
 
-TEST_F(Epos2DictionarySdo, ReadOfTheWriteOnlyInterpolationRecordIsRefused) {
+TEST_F(Epos2DictionaryOnBus, ReadOfTheWriteOnlyInterpolationRecordIsRefused) {
     EXPECT_EQ(static_cast<std::uint32_t>(read(0x20C1, 0).code), 0x0601'0001u);
 }
 
 // 8.2.8 / 8.2.9: "save" keeps values over a reset, "load" brings the defaults back at the next.
-TEST_F(Epos2DictionarySdo, SavedValuesSurviveAResetAndRestoredDefaultsReturnAfterOne) {
+TEST_F(Epos2DictionaryOnBus, SavedValuesSurviveAResetAndRestoredDefaultsReturnAfterOne) {
     ASSERT_EQ(write(0x6065, 0, encode(std::uint32_t{1234})), AbortCode::None);
     ASSERT_EQ(write(0x1010, 1, encode(canopen::kSaveSignature)), AbortCode::None);
     ASSERT_EQ(write(0x6067, 0, encode(std::uint32_t{10})), AbortCode::None); // not saved
@@ -179,6 +184,23 @@ TEST_F(Epos2DictionarySdo, SavedValuesSurviveAResetAndRestoredDefaultsReturnAfte
     ASSERT_EQ(write(0x1011, 1, encode(canopen::kLoadSignature)), AbortCode::None);
     reset_node();
     EXPECT_EQ(read(0x6065, 0).value, encode(std::uint32_t{2000}));
+}
+
+// 8.2.18 / 8.2.22 / 8.2.26 / 8.2.30: RPDO1 (0x200 + node-ID) carries the controlword, TPDO1
+// (0x180 + node-ID, event-driven) the statusword; both valid from power-up.
+TEST_F(Epos2DictionaryOnBus, DefaultPdo1CarriesControlwordInAndStatuswordOut) {
+    nmt(canopen::NmtCommand::Start);
+    master->send(can::Frame::data_frame(0x200 + kNode, std::vector<std::uint8_t>{0x0F, 0x00}));
+    loop.run_for(10ms);
+    EXPECT_EQ(dictionary.objects().get_as<std::uint16_t>(0x6040, 0), 0x000F);
+
+    received.clear();
+    dictionary.objects().set_as(0x6041, 0, std::uint16_t{0x0237});
+    loop.run_for(10ms);
+    ASSERT_EQ(received.size(), 1u);
+    EXPECT_EQ(received[0].id, 0x180u + kNode);
+    EXPECT_EQ(Bytes(received[0].payload().begin(), received[0].payload().end()),
+              (Bytes{0x37, 0x02}));
 }
 
 } // namespace
