@@ -622,6 +622,31 @@ TEST_F(Epos2ObjectTable, PositionWindowAcceptsTheDisableValue) {
               canopen::AbortCode::ValueTooHigh);
 }
 
+// 8.2.16: a changed configuration is no longer the verified one; bracketed objects of table
+// 8-67 and non-persistent ones do not count.
+TEST_F(Epos2ObjectTable, ChangedCheckedParameterResetsVerifyConfiguration) {
+    const auto stamp = [this] {
+        od.set_as(0x1020, 1, std::uint32_t{15'000});     // days since 1984-01-01
+        od.set_as(0x1020, 2, std::uint32_t{43'200'000}); // ms after midnight
+    };
+    const auto stamped = [this] {
+        return od.get_as<std::uint32_t>(0x1020, 1) == 15'000 &&
+               od.get_as<std::uint32_t>(0x1020, 2) == 43'200'000;
+    };
+    stamp();
+    ASSERT_EQ(od.write(0x6081, 0, canopen::encode(std::uint32_t{500})), canopen::AbortCode::None);
+    ASSERT_EQ(od.write(0x6040, 0, canopen::encode(std::uint16_t{6})), canopen::AbortCode::None);
+    EXPECT_TRUE(stamped()) << "profile velocity is bracketed, the controlword not persistent";
+
+    ASSERT_EQ(od.write(0x6065, 0, canopen::encode(std::uint32_t{500})), canopen::AbortCode::None);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1020, 1), 0u);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1020, 2), 0u);
+
+    stamp();
+    ASSERT_EQ(od.write(0x1400, 2, canopen::encode(std::uint8_t{1})), canopen::AbortCode::None);
+    EXPECT_FALSE(stamped()) << "a PDO's transmission type is checked";
+}
+
 // 8.2.5
 TEST_F(Epos2ObjectTable, ManufacturerDeviceNameIsAConstantEPOS2) {
     const canopen::SubObject* name = od.find(0x1008, 0);

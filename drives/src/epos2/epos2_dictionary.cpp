@@ -1,6 +1,7 @@
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
 
 #include "object_areas.hpp"
+#include "verify_configuration.hpp"
 
 #include <utility>
 
@@ -25,6 +26,7 @@ Epos2Dictionary::Epos2Dictionary(Epos2DictionaryConfig config)
     add_communication_objects(od_, store_, config_);
     add_manufacturer_objects(od_, config_);
     add_profile_objects(od_);
+    watch_verified_configuration(od_);
 }
 
 canopen::NodeConfig Epos2Dictionary::node_config() const {
