@@ -12,7 +12,10 @@
 #include "eposp/canmaster/canopen/sync_objects.hpp"
 #include "object_areas.hpp"
 
+#include <array>
 #include <fmt/format.h>
+#include <string>
+#include <utility>
 
 namespace eposp::drives::epos2 {
 namespace {

@@ -14,7 +14,7 @@ std::int64_t decode_integer(canopen::DataType type, std::span<const std::uint8_t
         raw |= std::uint64_t{bytes[i]} << (8 * i);
     }
     const std::size_t bits = 8 * bytes.size();
-    if (canopen::is_signed_integer(type) && bits < 64 && (raw >> (bits - 1)) != 0) {
+    if (canopen::is_signed_integer(type) && bits > 0 && bits < 64 && (raw >> (bits - 1)) != 0) {
         raw |= ~std::uint64_t{0} << bits; // sign-extend
     }
     return static_cast<std::int64_t>(raw);
@@ -24,7 +24,7 @@ std::int64_t decode_integer(canopen::DataType type, std::span<const std::uint8_t
 
 canopen::Bytes encode_integer(canopen::DataType type, std::int64_t value) {
     const auto size = canopen::fixed_size(type);
-    if (!size || !(canopen::is_numeric(type)) || canopen::is_real(type)) {
+    if (!size || !canopen::is_numeric(type) || canopen::is_real(type)) {
         throw std::invalid_argument("encode_integer: not an integer type");
     }
     canopen::Bytes bytes(*size);
