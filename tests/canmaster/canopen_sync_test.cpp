@@ -142,6 +142,17 @@ TEST_F(SyncProducerTest, ExtendedIdentifierWithBit29) {
     EXPECT_EQ(frames(), std::vector<std::string>{"00000080#"});
 }
 
+TEST(SyncProducer, OnADeviceWithoutProducerObjectsStaysSilent) {
+    // EPOS2 FW spec 8.1: no 0x1006 / 0x1019; a node on such a dictionary runs a producer anyway.
+    ServiceBench bench;
+    ObjectDictionary od;
+    add_sync_objects(od, {.producer = false, .window = false});
+    SyncProducer producer{bench.loop, *bench.device, od};
+    producer.set_nmt_state(NmtState::Operational);
+    bench.run_for(100ms);
+    EXPECT_TRUE(bench.device_frames().empty());
+}
+
 TEST_F(SyncProducerTest, HandsItsOwnSyncToTheNodesConsumer) {
     SyncConsumer consumer(bench.loop, od, {});
     consumer.set_nmt_state(NmtState::PreOperational);

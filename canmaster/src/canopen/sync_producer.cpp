@@ -40,9 +40,14 @@ void SyncProducer::on_sent(SentListener listener) {
 }
 
 SyncProducer::Config SyncProducer::read_config() const {
+    // A device without a SYNC producer (add_sync_objects with producer = false, e.g. an EPOS2)
+    // has neither 0x1006 nor 0x1019: it never produces.
+    const auto optional_value = [this]<typename T>(std::uint16_t index, T absent) {
+        return od_.find(index, 0) != nullptr ? od_.get_as<T>(index, 0) : absent;
+    };
     Config config{.cob_id = od_.get_as<std::uint32_t>(kCobIdSyncIndex, 0),
-                  .period_us = od_.get_as<std::uint32_t>(kCommunicationCyclePeriodIndex, 0),
-                  .overflow = od_.get_as<std::uint8_t>(kSyncCounterOverflowIndex, 0)};
+                  .period_us = optional_value(kCommunicationCyclePeriodIndex, std::uint32_t{0}),
+                  .overflow = optional_value(kSyncCounterOverflowIndex, std::uint8_t{0})};
     config.enabled =
         sends_sync(state_) && (config.cob_id & kCobIdGenerate) != 0 && config.period_us != 0;
     return config;

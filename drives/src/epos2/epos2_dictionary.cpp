@@ -1,0 +1,58 @@
+#include "eposp/drives/epos2/epos2_dictionary.hpp"
+
+#include "object_areas.hpp"
+#include "verify_configuration.hpp"
+
+#include <utility>
+
+namespace eposp::drives::epos2 {
+namespace {
+
+constexpr std::uint32_t high_low(std::uint16_t high, std::uint16_t low) {
+    return std::uint32_t{high} << 16 | low;
+}
+
+} // namespace
+
+canopen::LssAddress epos2_identity(std::uint64_t serial_number) {
+    return {.vendor_id = kMaxonVendorId,
+            .product_code = high_low(kHardwareVersion, kApplicationNumber),
+            .revision_number = high_low(kSoftwareVersion, kApplicationVersion),
+            .serial_number = static_cast<std::uint32_t>(serial_number)};
+}
+
+Epos2Dictionary::Epos2Dictionary(Epos2DictionaryConfig config)
+    : config_(std::move(config)), store_(od_, config_.parameter_file) {
+    add_communication_objects(od_, store_, config_);
+    add_manufacturer_objects(od_, config_);
+    add_profile_objects(od_);
+    watch_verified_configuration(od_);
+}
+
+canopen::NodeConfig Epos2Dictionary::node_config() const {
+    canopen::NodeConfig node;
+    node.node_id = config_.node_id;
+    node.device_type = kDeviceType;
+    node.identity = epos2_identity(config_.serial_number);
+    node.parameter_file = config_.parameter_file;
+    return node;
+}
+
+canopen::DeviceInfo epos2_device_info() {
+    const canopen::LssAddress identity = epos2_identity(0);
+    canopen::DeviceInfo info;
+    info.file.file_name = "epos2.eds";
+    info.file.description = "maxon EPOS2 24/5, simulated by eposp";
+    info.file.created_by = "eposp";
+    info.vendor_name = "maxon motor ag";
+    info.vendor_number = identity.vendor_id;
+    info.product_name = "EPOS2 24/5";
+    info.product_number = identity.product_code;
+    info.revision_number = identity.revision_number;
+    info.baud_rates_kbit = {20, 50, 125, 250, 500, 800, 1000}; // table 8-81
+    info.simple_boot_up_slave = true;
+    info.lss_supported = true;
+    return info;
+}
+
+} // namespace eposp::drives::epos2
