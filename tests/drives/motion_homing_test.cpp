@@ -3,6 +3,8 @@
 #include "eposp/drives/plant/servo_axis.hpp"
 #include "plant_test_motor.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <gtest/gtest.h>
@@ -79,6 +81,7 @@ public:
 
     void run_period() {
         const HomingStep step = homing_.update(now_, sense());
+        demand_ = step.demand;
         if (step.position_offset) {
             offset_ += *step.position_offset;
         }
@@ -121,6 +124,7 @@ public:
     }
 
     HomingProcedure& homing() { return homing_; }
+    const MotionState& demand() const { return demand_; }
     double now() const { return now_; }
     std::int64_t raw_position() const { return axis_.position_actual(); }
     std::int64_t position() const { return axis_.position_actual() + offset_; }
@@ -173,6 +177,7 @@ private:
     double now_ = 0;
     std::int64_t offset_ = 0;
     std::optional<std::int64_t> latched_index_;
+    MotionState demand_;
 };
 
 plant::SwitchLayout limits(std::optional<std::int64_t> negative,
@@ -263,6 +268,32 @@ TEST(Homing, SinSquaredRampsReachTheSameHome) {
     rig.start(p);
     ASSERT_TRUE(rig.run_until_settled());
     EXPECT_TRUE(within(rig.raw_position(), 2000, kFewQuadcounts));
+}
+
+TEST(Homing, DemandRampsWithTheHomingAccelerationUpToTheSearchSpeed) {
+    // Search, turn at the limit switch, cross the cam, index, home offset: every kind of move.
+    HomingRig rig(rig_with({-20000, 8000, 3300, true, 1000}, 5000));
+    const HomingParameters p = parameters(HomingMethod::HomeSwitchPositiveIndex, 700);
+    rig.start(p);
+    MotionState previous{5000, 0, 0}; // at rest where it starts
+    double peak_speed = 0;
+    bool reached_search_speed = false;
+    while (rig.homing().in_progress()) {
+        rig.run_period();
+        ASSERT_LT(rig.now(), 20);
+        const MotionState now = rig.demand();
+        if (rig.homing().in_progress()) { // the completing period re-zeroes the position
+            ASSERT_LE(std::abs(now.velocity - previous.velocity), p.acceleration * kPeriod * 1.001);
+            ASSERT_LE(std::abs(now.position - previous.position),
+                      std::max(std::abs(now.velocity), std::abs(previous.velocity)) * kPeriod +
+                          1e-6);
+        }
+        peak_speed = std::max(peak_speed, std::abs(now.velocity));
+        reached_search_speed = reached_search_speed || peak_speed == p.switch_search_speed;
+        previous = now;
+    }
+    EXPECT_TRUE(reached_search_speed);
+    EXPECT_LE(peak_speed, p.switch_search_speed);
 }
 
 TEST(Homing, ProgressReadsNoModeBits) {

@@ -203,6 +203,8 @@ void HomingProcedure::leave_switch(double now, const HomingInputs& sensed) {
     const bool leaving = demand(now).velocity * direction_ > 0;
     if (leaving && reference_switch_active(previous_) && !reference_switch_active(sensed)) {
         if (traits_.uses_index) {
+            // An index latched in this very period may lie on either side of the edge; like a
+            // real drive the search needs index and edge apart, and takes the next index.
             search_index_from(now, sensed.position, direction_);
         } else {
             start_home_move(now, sensed.position); // 5.4.3.5-8: the falling edge is home

@@ -66,7 +66,8 @@ struct HomingStep {
 ///
 /// Home switch methods reverse once at a limit switch ahead (CiA 402 methods 7…14); any other
 /// limit switch reached (ahead, or newly active) is an error, like an index that does not come
-/// within two turns. Errors and halts stop on the homing acceleration.
+/// within two turns. Errors and halts stop on the homing acceleration. Times are seconds on the
+/// caller's clock; positions quadcounts.
 class HomingProcedure {
 public:
     explicit HomingProcedure(double position = 0);
