@@ -101,7 +101,7 @@ TEST(ServoAxis, EcMotorReportsHallSensorsAndIndex) {
 
 TEST(ServoAxis, SwitchesTripWhereTheAxisIs) {
     AxisParameters parameters = test::tuned_axis();
-    parameters.switches = {-500, 4000, 1000, true};
+    parameters.switches = {-500, 4000, 1000, true, std::nullopt};
     ServoAxis axis(parameters);
     axis.set_mode(ControlMode::Position);
     axis.set_demand({.position = 1500});

@@ -51,15 +51,28 @@ TEST(ShaftSensors, HallSensorsStepThroughSixStatesPerElectricalTurn) {
 }
 
 TEST(ShaftSensors, SwitchesTripAtTheirConfiguredPositions) {
-    const SwitchLayout layout{-1000, 50000, 2000, true};
+    const SwitchLayout layout{-1000, 50000, 2000, true, std::nullopt};
     EXPECT_EQ(switch_states(layout, -1000), (SwitchStates{true, false, false}));
     EXPECT_EQ(switch_states(layout, -999), (SwitchStates{false, false, false}));
     EXPECT_EQ(switch_states(layout, 2000), (SwitchStates{false, false, true}));
     EXPECT_EQ(switch_states(layout, 50000), (SwitchStates{false, true, true}));
     EXPECT_EQ(switch_states(SwitchLayout{}, 1 << 30), SwitchStates{});
-    const SwitchLayout below{std::nullopt, std::nullopt, 0, false};
+    const SwitchLayout below{std::nullopt, std::nullopt, 0, false, std::nullopt};
     EXPECT_TRUE(switch_states(below, -1).home);
     EXPECT_FALSE(switch_states(below, 0).home);
+}
+
+TEST(ShaftSensors, HomeCamIsActiveOverItsLengthOnly) {
+    const SwitchLayout above{std::nullopt, std::nullopt, 100, true, 50};
+    EXPECT_FALSE(switch_states(above, 99).home);
+    EXPECT_TRUE(switch_states(above, 100).home);
+    EXPECT_TRUE(switch_states(above, 149).home);
+    EXPECT_FALSE(switch_states(above, 150).home);
+    const SwitchLayout below{std::nullopt, std::nullopt, 100, false, 50};
+    EXPECT_FALSE(switch_states(below, 100).home);
+    EXPECT_TRUE(switch_states(below, 99).home);
+    EXPECT_TRUE(switch_states(below, 50).home);
+    EXPECT_FALSE(switch_states(below, 49).home);
 }
 
 } // namespace

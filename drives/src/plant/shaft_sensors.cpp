@@ -44,7 +44,10 @@ SwitchStates switch_states(const SwitchLayout& layout, std::int64_t position) {
     states.negative_limit = layout.negative_limit && position <= *layout.negative_limit;
     states.positive_limit = layout.positive_limit && position >= *layout.positive_limit;
     if (layout.home) {
-        states.home = layout.home_active_above ? position >= *layout.home : position < *layout.home;
+        const std::int64_t beyond_edge =
+            layout.home_active_above ? position - *layout.home : *layout.home - 1 - position;
+        states.home =
+            beyond_edge >= 0 && (!layout.home_length || beyond_edge < *layout.home_length);
     }
     return states;
 }

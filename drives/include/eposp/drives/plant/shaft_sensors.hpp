@@ -27,6 +27,9 @@ struct SwitchLayout {
     std::optional<std::int64_t> positive_limit; ///< active at and above this position
     std::optional<std::int64_t> home;           ///< the home switch's edge
     bool home_active_above = true;              ///< which side of the edge the switch is pressed
+    /// A cam active over only a portion of the travel (EPOS2 FW spec 5.4.3.3): so many counts
+    /// from the edge on its active side; without it the switch stays pressed to the end.
+    std::optional<std::int64_t> home_length;
 };
 
 struct SwitchStates {
