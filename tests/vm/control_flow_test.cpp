@@ -24,6 +24,25 @@ TEST(ControlFlow, CountedLoopWithCompareAndBranch) {
     EXPECT_EQ(h.get<std::int32_t>(kSum), 5050);
 }
 
+// FOR i := 10 TO 1 BY -3 DO n := n + 1; last := i; END_FOR   (i = 10, 7, 4, 1)
+TEST(ControlFlow, ForLoopBackEdgeCountsDown) {
+    Harness h;
+    constexpr std::uint32_t kI = 0, kLimit = 8, kN = 16, kLast = 24;
+    h.init<std::int64_t>(kLimit, 1);
+    auto body = h.builder.label();
+    h.builder.emit(Opcode::Ldi64, self(kI), Operand::imm(10));
+    h.builder.bind(body);
+    h.builder.emit(Opcode::AddI16, self(kN), self(kN), imm(1));
+    h.builder.emit(Opcode::Mov64, self(kLast), self(kI));
+    h.builder.for_loop(Opcode::ForI64, body, self(kI), self(kLimit), -3);
+    h.builder.emit(Opcode::Ret);
+    h.end_main();
+    ASSERT_EQ(h.run(), RunState::Finished);
+    EXPECT_EQ(h.get<std::int16_t>(kN), 4);
+    EXPECT_EQ(h.get<std::int64_t>(kLast), 1);
+    EXPECT_EQ(h.get<std::int64_t>(kI), -2);
+}
+
 TEST(ControlFlow, ConditionalJumpsOnBool) {
     Harness h;
     h.init<std::uint8_t>(0, 1);

@@ -105,7 +105,7 @@ void Builder::emit(Opcode op, Operand a, Operand b, Operand c, std::uint16_t aux
     image_.code.push_back(Instruction{op, aux, a.raw, b.raw, c.raw});
 }
 
-void Builder::jump(Opcode op, Label target, Operand a, Operand b) {
+void Builder::jump(Opcode op, Label target, Operand a, Operand b, std::uint16_t aux) {
     const auto& info = opcode_info(op);
     const FieldSpec specs[] = {info.a, info.b, info.c};
     const Operand given[] = {a, b};
@@ -122,9 +122,13 @@ void Builder::jump(Opcode op, Label target, Operand a, Operand b) {
     if (target_field < 0) {
         throw std::logic_error("Builder::jump with an opcode that has no target");
     }
-    emit(op, Operand{ins.a}, Operand{ins.b}, Operand{ins.c});
+    emit(op, Operand{ins.a}, Operand{ins.b}, Operand{ins.c}, aux);
     fixups_.push_back(
         {static_cast<std::uint32_t>(image_.code.size() - 1), target_field, target.id});
+}
+
+void Builder::for_loop(Opcode op, Label body, Operand variable, Operand limit, std::int16_t step) {
+    jump(op, body, variable, limit, static_cast<std::uint16_t>(step));
 }
 
 std::uint32_t Builder::import(std::string name, NativeSignature signature) {

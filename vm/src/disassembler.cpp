@@ -104,7 +104,9 @@ std::string disassemble(const Image& image, const Instruction& ins) {
             separator = ", ";
         }
     }
-    if (info.aux_is_descriptor) {
+    if (info.aux == Aux::Step) {
+        text += fmt::format(" step {}", static_cast<std::int16_t>(ins.aux));
+    } else if (info.aux == Aux::Array) {
         if (ins.aux < image.arrays.size()) {
             const auto& array = image.arrays[ins.aux];
             text += fmt::format(" [{} +{} x{}]", array.lower, array.count, array.element_size);

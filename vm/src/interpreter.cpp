@@ -37,6 +37,22 @@ std::uint32_t line_at(const Pou& pou, std::uint32_t instruction) {
     return line;
 }
 
+// The loop's exits are plain functions of values: a lambda capturing the loop's variables by
+// reference would force `ip` into memory for the whole loop.
+std::uint64_t executed_in_run(std::uint64_t limit, std::int64_t remaining) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(limit) - remaining);
+}
+
+RunState stop(TaskState& task, const Pou& where, Trap trap, std::uint32_t pou,
+              std::uint32_t instruction) {
+    task.fault.trap = trap;
+    task.fault.pou = pou;
+    task.fault.instruction = instruction;
+    task.fault.line = line_at(where, instruction);
+    task.state = RunState::Faulted;
+    return task.state;
+}
+
 } // namespace
 
 RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskState& task,
@@ -66,20 +82,6 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     const Instruction* segment = ip;
     Trap trap = Trap::DivisionByZero;
     task.fault.native_reason.clear();
-
-    // Leaving the loop (not on the hot path).
-    const auto account = [&] {
-        task.executed += static_cast<std::uint64_t>(static_cast<std::int64_t>(limit) - remaining);
-    };
-    const auto stop_with = [&](Trap why) {
-        const auto at = static_cast<std::uint32_t>(ip - code);
-        task.fault.trap = why;
-        task.fault.pou = pou;
-        task.fault.instruction = at;
-        task.fault.line = line_at(pous[pou], at);
-        task.state = RunState::Faulted;
-        return task.state;
-    };
 
 #define VM_OPERAND(field) (base[(field) >> kBaseShift] + ((field)&kOffsetMask))
 #define A VM_OPERAND(ip->a)
@@ -303,6 +305,13 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
 #define VM_EXEC_JLt(T, T2) VM_COMPARE_BRANCH(T, <)
 #define VM_EXEC_JLe(T, T2) VM_COMPARE_BRANCH(T, <=)
 #define VM_EXEC_Abs(T, T2) VM_UNARY(T, T, abs(x))
+#define VM_EXEC_For(T, T2)                                                                         \
+    {                                                                                              \
+        const auto step = static_cast<std::int16_t>(ip->aux);                                      \
+        const T next = add(load<T>(A), static_cast<T>(step));                                      \
+        store<T>(A, next);                                                                         \
+        VM_BRANCH_IF(step > 0 ? next <= load<T>(B) : next >= load<T>(B), ip->c);                   \
+    }
 #define VM_EXEC_Sqrt(T, T2) VM_UNARY(T, T, std::sqrt(x))
 #define VM_EXEC_Trunc(T, R) VM_UNARY(T, R, (truncate<R>(x)))
 #define VM_EXEC_Cvt(T, R) VM_UNARY(T, R, (convert<R>(x)))
@@ -358,22 +367,23 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
 
 trapped:
     VM_CHARGE();
-    account();
-    return stop_with(trap);
+    task.executed += executed_in_run(limit, remaining);
+    return stop(task, pous[pou], trap, pou, static_cast<std::uint32_t>(ip - code));
 
 slice_used:
-    account();
+    task.executed += executed_in_run(limit, remaining);
     task.current = Activation{static_cast<std::uint32_t>(ip - code), pou,
                               static_cast<std::uint32_t>(base[1] - mem),
                               static_cast<std::uint32_t>(base[2] - mem)};
     if (task.executed >= task.budget) {
-        return stop_with(Trap::BudgetExceeded);
+        return stop(task, pous[pou], Trap::BudgetExceeded, pou,
+                    static_cast<std::uint32_t>(ip - code));
     }
     task.state = RunState::Suspended;
     return task.state;
 
 finished:
-    account();
+    task.executed += executed_in_run(limit, remaining);
     task.state = RunState::Finished;
     return task.state;
 }

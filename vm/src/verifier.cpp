@@ -45,7 +45,8 @@ public:
         }
         const auto& info = opcode_info(ins.opcode);
         where_ += " (" + std::string(info.name) + ")";
-        if (info.aux_is_descriptor ? ins.aux >= image_.arrays.size() : ins.aux != 0) {
+        if ((info.aux == Aux::Array && ins.aux >= image_.arrays.size()) ||
+            (info.aux == Aux::None && ins.aux != 0)) {
             return defect(where_ + ": invalid array descriptor " + std::to_string(ins.aux));
         }
         const FieldSpec specs[] = {info.a, info.b, info.c};

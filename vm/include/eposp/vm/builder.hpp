@@ -54,7 +54,10 @@ public:
     void emit(Opcode op, Operand a = {}, Operand b = {}, Operand c = {}, std::uint16_t aux = 0);
     /// Emits a jump or compare-and-branch: `target` goes into the opcode's target field, `a`
     /// and `b` into its other fields in order.
-    void jump(Opcode op, Label target, Operand a = {}, Operand b = {});
+    void jump(Opcode op, Label target, Operand a = {}, Operand b = {}, std::uint16_t aux = 0);
+    /// The back-edge of a FOR loop: `variable` += `step`, then on to `body` while it has not
+    /// passed `limit`.
+    void for_loop(Opcode op, Label body, Operand variable, Operand limit, std::int16_t step);
 
     // --- tables ------------------------------------------------------------------------------
     std::uint32_t import(std::string name, NativeSignature signature);

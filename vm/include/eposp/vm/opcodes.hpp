@@ -54,6 +54,9 @@
 //  Lt/Le<T>          [BOOL]   [x]      [y]      ordered compare (GT/GE: swap x and y)
 //  JLt/JLe<T>        [x]      [y]      target   compare and branch                (safe point)
 //  Abs<T>            [dst]    [x]      -        absolute value (MIN stays MIN)
+//  For<I>            [var]    [limit]  target   FOR loop back-edge, step in aux: [A] += step;
+//                                               if step > 0 ? [A] <= [B] : [A] >= [B] goto C
+//                                                                             (safe point)
 //  Add/Sub/Mul/Neg/Eq/Ne/JEq/JNe/Sqrt<F>        IEEE 754 (F32, F64)
 //  Cvt<T><U>         [dst U]  [src T]  -        IEC conversion: ints wrap, to BOOL is <> 0,
 //                                               REAL to int rounds half away from zero
@@ -77,6 +80,13 @@ enum class Field : std::uint8_t {
     Instance,   ///< an FB instance operand, sized by the POU in field B
     ArrayRead,  ///< an array operand, sized by the descriptor in aux; size is the access width
     ArrayWrite, ///< the same, written
+};
+
+/// What the aux field of an instruction holds.
+enum class Aux : std::uint8_t {
+    None,  ///< must be 0
+    Array, ///< an array descriptor index
+    Step,  ///< a signed 16-bit loop step
 };
 
 struct FieldSpec {
@@ -189,7 +199,7 @@ struct FieldSpec {
         ::eposp::vm::Field::ArrayWrite, 8                                                          \
     }
 
-// The lists: OP(name, family, T1, T2, aux_is_descriptor, A, B, C). `family` names the semantics
+// The lists: OP(name, family, T1, T2, aux, A, B, C). `family` names the semantics
 // (the interpreter defines one handler per family), T1/T2 are the C++ types it works on.
 #define EPOSP_VM_FOR_WIDTHS(M, OP)                                                                 \
     M(OP, 8, 1, std::uint8_t)                                                                      \
@@ -197,8 +207,9 @@ struct FieldSpec {
 #define EPOSP_VM_FOR_INTS(M, OP)                                                                   \
     M(OP, I8, 1, std::int8_t)                                                                      \
     M(OP, I16, 2, std::int16_t)                                                                    \
-    M(OP, I32, 4, std::int32_t) M(OP, I64, 8, std::int64_t) M(OP, U8, 1, std::uint8_t)             \
-        M(OP, U16, 2, std::uint16_t) M(OP, U32, 4, std::uint32_t) M(OP, U64, 8, std::uint64_t)
+    M(OP, I32, 4, std::int32_t)                                                                    \
+    M(OP, I64, 8, std::int64_t) M(OP, U8, 1, std::uint8_t) M(OP, U16, 2, std::uint16_t)            \
+        M(OP, U32, 4, std::uint32_t) M(OP, U64, 8, std::uint64_t)
 #define EPOSP_VM_FOR_FLOATS(M, OP) M(OP, F32, 4, float) M(OP, F64, 8, double)
 #define EPOSP_VM_FOR_SCALARS(M, OP)                                                                \
     M(OP, Bool, 1, ::eposp::vm::BoolByte) EPOSP_VM_FOR_INTS(M, OP) EPOSP_VM_FOR_FLOATS(M, OP)
@@ -207,84 +218,86 @@ struct FieldSpec {
 #define EPOSP_VM_FOR_SCALARS_INNER(M, ...)                                                         \
     M(Bool, 1, ::eposp::vm::BoolByte, __VA_ARGS__)                                                 \
     M(I8, 1, std::int8_t, __VA_ARGS__)                                                             \
-    M(I16, 2, std::int16_t, __VA_ARGS__) M(I32, 4, std::int32_t, __VA_ARGS__)                      \
-        M(I64, 8, std::int64_t, __VA_ARGS__) M(U8, 1, std::uint8_t, __VA_ARGS__)                   \
-            M(U16, 2, std::uint16_t, __VA_ARGS__) M(U32, 4, std::uint32_t, __VA_ARGS__)            \
-                M(U64, 8, std::uint64_t, __VA_ARGS__) M(F32, 4, float, __VA_ARGS__)                \
-                    M(F64, 8, double, __VA_ARGS__)
+    M(I16, 2, std::int16_t, __VA_ARGS__)                                                           \
+    M(I32, 4, std::int32_t, __VA_ARGS__) M(I64, 8, std::int64_t, __VA_ARGS__)                      \
+        M(U8, 1, std::uint8_t, __VA_ARGS__) M(U16, 2, std::uint16_t, __VA_ARGS__)                  \
+            M(U32, 4, std::uint32_t, __VA_ARGS__) M(U64, 8, std::uint64_t, __VA_ARGS__)            \
+                M(F32, 4, float, __VA_ARGS__) M(F64, 8, double, __VA_ARGS__)
 
 #define EPOSP_VM_F(X) EPOSP_VM_F_##X
 #define EPOSP_VM_OP(OP, name, family, T1, T2, aux, a, b, c)                                        \
-    OP(name, family, T1, T2, aux, EPOSP_VM_F(a), EPOSP_VM_F(b), EPOSP_VM_F(c))
+    OP(name, family, T1, T2, ::eposp::vm::Aux::aux, EPOSP_VM_F(a), EPOSP_VM_F(b), EPOSP_VM_F(c))
 
 #define EPOSP_VM_WIDTH_OPS(OP, B, N, T)                                                            \
-    EPOSP_VM_OP(OP, Mov##B, Mov, T, T, false, W##N, R##N, _)                                       \
-    EPOSP_VM_OP(OP, Ldi##B, Ldi, T, T, false, W##N, IM, IM)                                        \
-    EPOSP_VM_OP(OP, Ldx##B, Ldx, T, T, true, W##N, AR##N, R4)                                      \
-    EPOSP_VM_OP(OP, Stx##B, Stx, T, T, true, AW##N, R4, R##N)                                      \
-    EPOSP_VM_OP(OP, Ldp##B, Ldp, T, T, false, W##N, R8, IM)                                        \
-    EPOSP_VM_OP(OP, Stp##B, Stp, T, T, false, R8, R##N, IM)                                        \
-    EPOSP_VM_OP(OP, Add##B, Add, T, T, false, W##N, R##N, R##N)                                    \
-    EPOSP_VM_OP(OP, Sub##B, Sub, T, T, false, W##N, R##N, R##N)                                    \
-    EPOSP_VM_OP(OP, Mul##B, Mul, T, T, false, W##N, R##N, R##N)                                    \
-    EPOSP_VM_OP(OP, AddI##B, AddI, T, T, false, W##N, R##N, IM)                                    \
-    EPOSP_VM_OP(OP, Neg##B, Neg, T, T, false, W##N, R##N, _)                                       \
-    EPOSP_VM_OP(OP, Not##B, Not, T, T, false, W##N, R##N, _)                                       \
-    EPOSP_VM_OP(OP, And##B, And, T, T, false, W##N, R##N, R##N)                                    \
-    EPOSP_VM_OP(OP, Or##B, Or, T, T, false, W##N, R##N, R##N)                                      \
-    EPOSP_VM_OP(OP, Xor##B, Xor, T, T, false, W##N, R##N, R##N)                                    \
-    EPOSP_VM_OP(OP, Shl##B, Shl, T, T, false, W##N, R##N, R4)                                      \
-    EPOSP_VM_OP(OP, Shr##B, Shr, T, T, false, W##N, R##N, R4)                                      \
-    EPOSP_VM_OP(OP, Rol##B, Rol, T, T, false, W##N, R##N, R4)                                      \
-    EPOSP_VM_OP(OP, Ror##B, Ror, T, T, false, W##N, R##N, R4)                                      \
-    EPOSP_VM_OP(OP, Eq##B, Eq, T, T, false, W1, R##N, R##N)                                        \
-    EPOSP_VM_OP(OP, Ne##B, Ne, T, T, false, W1, R##N, R##N)                                        \
-    EPOSP_VM_OP(OP, JEq##B, JEq, T, T, false, R##N, R##N, JT)                                      \
-    EPOSP_VM_OP(OP, JNe##B, JNe, T, T, false, R##N, R##N, JT)
+    EPOSP_VM_OP(OP, Mov##B, Mov, T, T, None, W##N, R##N, _)                                        \
+    EPOSP_VM_OP(OP, Ldi##B, Ldi, T, T, None, W##N, IM, IM)                                         \
+    EPOSP_VM_OP(OP, Ldx##B, Ldx, T, T, Array, W##N, AR##N, R4)                                     \
+    EPOSP_VM_OP(OP, Stx##B, Stx, T, T, Array, AW##N, R4, R##N)                                     \
+    EPOSP_VM_OP(OP, Ldp##B, Ldp, T, T, None, W##N, R8, IM)                                         \
+    EPOSP_VM_OP(OP, Stp##B, Stp, T, T, None, R8, R##N, IM)                                         \
+    EPOSP_VM_OP(OP, Add##B, Add, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, Sub##B, Sub, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, Mul##B, Mul, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, AddI##B, AddI, T, T, None, W##N, R##N, IM)                                     \
+    EPOSP_VM_OP(OP, Neg##B, Neg, T, T, None, W##N, R##N, _)                                        \
+    EPOSP_VM_OP(OP, Not##B, Not, T, T, None, W##N, R##N, _)                                        \
+    EPOSP_VM_OP(OP, And##B, And, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, Or##B, Or, T, T, None, W##N, R##N, R##N)                                       \
+    EPOSP_VM_OP(OP, Xor##B, Xor, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, Shl##B, Shl, T, T, None, W##N, R##N, R4)                                       \
+    EPOSP_VM_OP(OP, Shr##B, Shr, T, T, None, W##N, R##N, R4)                                       \
+    EPOSP_VM_OP(OP, Rol##B, Rol, T, T, None, W##N, R##N, R4)                                       \
+    EPOSP_VM_OP(OP, Ror##B, Ror, T, T, None, W##N, R##N, R4)                                       \
+    EPOSP_VM_OP(OP, Eq##B, Eq, T, T, None, W1, R##N, R##N)                                         \
+    EPOSP_VM_OP(OP, Ne##B, Ne, T, T, None, W1, R##N, R##N)                                         \
+    EPOSP_VM_OP(OP, JEq##B, JEq, T, T, None, R##N, R##N, JT)                                       \
+    EPOSP_VM_OP(OP, JNe##B, JNe, T, T, None, R##N, R##N, JT)
 
 #define EPOSP_VM_ORDERED_OPS(OP, S, N, T)                                                          \
-    EPOSP_VM_OP(OP, Div##S, Div, T, T, false, W##N, R##N, R##N)                                    \
-    EPOSP_VM_OP(OP, Lt##S, Lt, T, T, false, W1, R##N, R##N)                                        \
-    EPOSP_VM_OP(OP, Le##S, Le, T, T, false, W1, R##N, R##N)                                        \
-    EPOSP_VM_OP(OP, JLt##S, JLt, T, T, false, R##N, R##N, JT)                                      \
-    EPOSP_VM_OP(OP, JLe##S, JLe, T, T, false, R##N, R##N, JT)                                      \
-    EPOSP_VM_OP(OP, Abs##S, Abs, T, T, false, W##N, R##N, _)
+    EPOSP_VM_OP(OP, Div##S, Div, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, Lt##S, Lt, T, T, None, W1, R##N, R##N)                                         \
+    EPOSP_VM_OP(OP, Le##S, Le, T, T, None, W1, R##N, R##N)                                         \
+    EPOSP_VM_OP(OP, JLt##S, JLt, T, T, None, R##N, R##N, JT)                                       \
+    EPOSP_VM_OP(OP, JLe##S, JLe, T, T, None, R##N, R##N, JT)                                       \
+    EPOSP_VM_OP(OP, Abs##S, Abs, T, T, None, W##N, R##N, _)
 
-#define EPOSP_VM_INT_OPS(OP, S, N, T) EPOSP_VM_OP(OP, Mod##S, Mod, T, T, false, W##N, R##N, R##N)
+#define EPOSP_VM_INT_OPS(OP, S, N, T)                                                              \
+    EPOSP_VM_OP(OP, Mod##S, Mod, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, For##S, For, T, T, Step, W##N, R##N, JT)
 
 #define EPOSP_VM_FLOAT_OPS(OP, S, N, T)                                                            \
-    EPOSP_VM_OP(OP, Add##S, Add, T, T, false, W##N, R##N, R##N)                                    \
-    EPOSP_VM_OP(OP, Sub##S, Sub, T, T, false, W##N, R##N, R##N)                                    \
-    EPOSP_VM_OP(OP, Mul##S, Mul, T, T, false, W##N, R##N, R##N)                                    \
-    EPOSP_VM_OP(OP, Neg##S, Neg, T, T, false, W##N, R##N, _)                                       \
-    EPOSP_VM_OP(OP, Sqrt##S, Sqrt, T, T, false, W##N, R##N, _)                                     \
-    EPOSP_VM_OP(OP, Eq##S, Eq, T, T, false, W1, R##N, R##N)                                        \
-    EPOSP_VM_OP(OP, Ne##S, Ne, T, T, false, W1, R##N, R##N)                                        \
-    EPOSP_VM_OP(OP, JEq##S, JEq, T, T, false, R##N, R##N, JT)                                      \
-    EPOSP_VM_OP(OP, JNe##S, JNe, T, T, false, R##N, R##N, JT)                                      \
-    EPOSP_VM_OP(OP, Trunc##S, Trunc, T, std::int64_t, false, W8, R##N, _)
+    EPOSP_VM_OP(OP, Add##S, Add, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, Sub##S, Sub, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, Mul##S, Mul, T, T, None, W##N, R##N, R##N)                                     \
+    EPOSP_VM_OP(OP, Neg##S, Neg, T, T, None, W##N, R##N, _)                                        \
+    EPOSP_VM_OP(OP, Sqrt##S, Sqrt, T, T, None, W##N, R##N, _)                                      \
+    EPOSP_VM_OP(OP, Eq##S, Eq, T, T, None, W1, R##N, R##N)                                         \
+    EPOSP_VM_OP(OP, Ne##S, Ne, T, T, None, W1, R##N, R##N)                                         \
+    EPOSP_VM_OP(OP, JEq##S, JEq, T, T, None, R##N, R##N, JT)                                       \
+    EPOSP_VM_OP(OP, JNe##S, JNe, T, T, None, R##N, R##N, JT)                                       \
+    EPOSP_VM_OP(OP, Trunc##S, Trunc, T, std::int64_t, None, W8, R##N, _)
 
 #define EPOSP_VM_CVT_CELL(D, DN, DT, OP, S, SN, ST)                                                \
-    EPOSP_VM_OP(OP, Cvt##S##D, Cvt, ST, DT, false, W##DN, R##SN, _)
+    EPOSP_VM_OP(OP, Cvt##S##D, Cvt, ST, DT, None, W##DN, R##SN, _)
 #define EPOSP_VM_CVT_ROW(OP, S, SN, ST) EPOSP_VM_FOR_SCALARS_INNER(EPOSP_VM_CVT_CELL, OP, S, SN, ST)
 
 #define EPOSP_VM_OPCODES(OP)                                                                       \
-    EPOSP_VM_OP(OP, Nop, Nop, void, void, false, _, _, _)                                          \
-    EPOSP_VM_OP(OP, Jmp, Jmp, void, void, false, JT, _, _)                                         \
-    EPOSP_VM_OP(OP, Jt, Jt, void, void, false, R1, JT, _)                                          \
-    EPOSP_VM_OP(OP, Jf, Jf, void, void, false, R1, JT, _)                                          \
-    EPOSP_VM_OP(OP, Call, Call, void, void, false, PO, _, _)                                       \
-    EPOSP_VM_OP(OP, CallFb, CallFb, void, void, false, IN, PO, _)                                  \
-    EPOSP_VM_OP(OP, CallFbP, CallFbP, void, void, false, R8, PO, _)                                \
-    EPOSP_VM_OP(OP, CallNative, CallNative, void, void, false, IX, _, _)                           \
-    EPOSP_VM_OP(OP, Ret, Ret, void, void, false, _, _, _)                                          \
-    EPOSP_VM_OP(OP, MovN, MovN, void, void, false, WN, RN, SZ)                                     \
-    EPOSP_VM_OP(OP, Addr, Addr, void, void, false, W8, RN, SZ)                                     \
-    EPOSP_VM_OP(OP, IdxA, IdxA, void, void, true, W8, AR0, R4)                                     \
-    EPOSP_VM_OP(OP, IdxAP, IdxAP, void, void, true, W8, R8, R4)                                    \
-    EPOSP_VM_OP(OP, LdpN, LdpN, void, void, false, WN, R8, SZ)                                     \
-    EPOSP_VM_OP(OP, StpN, StpN, void, void, false, R8, RN, SZ)                                     \
-    EPOSP_VM_OP(OP, NotB, NotB, void, void, false, W1, R1, _)                                      \
+    EPOSP_VM_OP(OP, Nop, Nop, void, void, None, _, _, _)                                           \
+    EPOSP_VM_OP(OP, Jmp, Jmp, void, void, None, JT, _, _)                                          \
+    EPOSP_VM_OP(OP, Jt, Jt, void, void, None, R1, JT, _)                                           \
+    EPOSP_VM_OP(OP, Jf, Jf, void, void, None, R1, JT, _)                                           \
+    EPOSP_VM_OP(OP, Call, Call, void, void, None, PO, _, _)                                        \
+    EPOSP_VM_OP(OP, CallFb, CallFb, void, void, None, IN, PO, _)                                   \
+    EPOSP_VM_OP(OP, CallFbP, CallFbP, void, void, None, R8, PO, _)                                 \
+    EPOSP_VM_OP(OP, CallNative, CallNative, void, void, None, IX, _, _)                            \
+    EPOSP_VM_OP(OP, Ret, Ret, void, void, None, _, _, _)                                           \
+    EPOSP_VM_OP(OP, MovN, MovN, void, void, None, WN, RN, SZ)                                      \
+    EPOSP_VM_OP(OP, Addr, Addr, void, void, None, W8, RN, SZ)                                      \
+    EPOSP_VM_OP(OP, IdxA, IdxA, void, void, Array, W8, AR0, R4)                                    \
+    EPOSP_VM_OP(OP, IdxAP, IdxAP, void, void, Array, W8, R8, R4)                                   \
+    EPOSP_VM_OP(OP, LdpN, LdpN, void, void, None, WN, R8, SZ)                                      \
+    EPOSP_VM_OP(OP, StpN, StpN, void, void, None, R8, RN, SZ)                                      \
+    EPOSP_VM_OP(OP, NotB, NotB, void, void, None, W1, R1, _)                                       \
     EPOSP_VM_FOR_WIDTHS(EPOSP_VM_WIDTH_OPS, OP)                                                    \
     EPOSP_VM_FOR_INTS(EPOSP_VM_ORDERED_OPS, OP)                                                    \
     EPOSP_VM_FOR_FLOATS(EPOSP_VM_ORDERED_OPS, OP)                                                  \
@@ -303,7 +316,7 @@ inline constexpr std::uint16_t kOpcodeCount = 0 EPOSP_VM_OPCODES(EPOSP_VM_COUNT)
 /// What the verifier and the disassembler need to know about one opcode.
 struct OpcodeInfo {
     std::string_view name;
-    bool aux_is_descriptor;
+    Aux aux;
     FieldSpec a, b, c;
 };
 
