@@ -335,7 +335,7 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
         VM_EXEC_##family(T1, T2)                                                                   \
     }
 
-#if defined(__GNUC__)
+#if defined(__GNUC__) && !defined(EPOSP_VM_PORTABLE_DISPATCH)
 // Label addresses and computed goto are the GNU extension this dispatch exists for.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpedantic"
@@ -353,16 +353,17 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     EPOSP_VM_OPCODES(VM_HANDLER)
 #pragma GCC diagnostic pop
 #else
+// Every handler leaves by goto (a `continue` inside the macros' do-while would not reach the
+// loop), and the verifier admits only known opcodes, so control never leaves the switch.
 #define VM_CASE(name) case Opcode::name:
-#define VM_DISPATCH() continue
+#define VM_DISPATCH() goto dispatch
 #define VM_NEXT()                                                                                  \
     do {                                                                                           \
         ++ip;                                                                                      \
-        continue;                                                                                  \
+        goto dispatch;                                                                             \
     } while (false)
-    for (;;) {
-        switch (ip->opcode) { EPOSP_VM_OPCODES(VM_HANDLER) }
-    }
+dispatch:
+    switch (ip->opcode) { EPOSP_VM_OPCODES(VM_HANDLER) }
 #endif
 
 trapped:
