@@ -30,6 +30,8 @@ public:
     void u32(const std::uint32_t& v) { out_.u32(v); }
     void u64(const std::uint64_t& v) { out_.u64(v); }
     void i32(const std::int32_t& v) { out_.i32(v); }
+    void boolean(const bool& v) { out_.u8(v ? 1 : 0); }
+    void opcode(const Opcode& op) { out_.u16(static_cast<std::uint16_t>(op)); }
     void string(const std::string& s) { out_.string(s); }
     void bytes(const std::vector<std::uint8_t>& v) {
         out_.u32(static_cast<std::uint32_t>(v.size()));
@@ -59,6 +61,9 @@ public:
     void u32(std::uint32_t& v) { v = in_.u32(); }
     void u64(std::uint64_t& v) { v = in_.u64(); }
     void i32(std::int32_t& v) { v = in_.i32(); }
+    void boolean(bool& v) { v = in_.u8() != 0; }
+    // Any value: the verifier refuses unknown opcodes with their instruction's position.
+    void opcode(Opcode& op) { op = static_cast<Opcode>(in_.u16()); }
     void string(std::string& s) { s = in_.string(); }
     void bytes(std::vector<std::uint8_t>& v) {
         const auto data = in_.raw(in_.count(1));
@@ -86,9 +91,7 @@ private:
 template <typename Io>
 void describe_code(Io& io, std::vector<Instruction>& code) {
     io.list(code, kInstructionSize, [&](Instruction& ins) {
-        auto op = static_cast<std::uint16_t>(ins.opcode);
-        io.u16(op);
-        ins.opcode = static_cast<Opcode>(op);
+        io.opcode(ins.opcode);
         io.u16(ins.aux);
         io.u32(ins.a);
         io.u32(ins.b);
@@ -194,9 +197,7 @@ template <typename Io>
 void describe_imports(Io& io, std::vector<NativeImport>& imports) {
     io.list(imports, 10, [&](NativeImport& i) {
         io.string(i.name);
-        std::uint8_t has_result = i.signature.has_result ? 1 : 0;
-        io.u8(has_result);
-        i.signature.has_result = has_result != 0;
+        io.boolean(i.signature.has_result);
         io.enumerator(i.signature.result, Scalar::Ptr, "scalar type");
         io.list(i.signature.parameters, 1,
                 [&](Scalar& s) { io.enumerator(s, Scalar::Ptr, "scalar type"); });
