@@ -37,6 +37,19 @@ std::uint32_t line_at(const Pou& pou, std::uint32_t instruction) {
     return line;
 }
 
+// A native call's arguments object lives here, not in the handler: no object with a destructor
+// may be in scope where a handler leaves by computed goto.
+bool call_native(const Program& program, std::uint32_t import, std::uint8_t* block,
+                 std::span<std::uint8_t> memory, std::string& failure) {
+    NativeArgs args(block, program.image().imports[import].signature, memory);
+    program.native(import)(args);
+    if (args.failed()) {
+        failure = args.failure();
+        return false;
+    }
+    return true;
+}
+
 // The loop's exits are plain functions of values: a lambda capturing the loop's variables by
 // reference would force `ip` into memory for the whole loop.
 std::uint64_t executed_in_run(std::uint64_t limit, std::int64_t remaining) {
@@ -162,10 +175,7 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     }
 #define VM_EXEC_CallNative(T1, T2)                                                                 \
     {                                                                                              \
-        NativeArgs args(base[3], image.imports[ip->a].signature, memory);                          \
-        program.native(ip->a)(args);                                                               \
-        if (args.failed()) {                                                                       \
-            task.fault.native_reason = args.failure();                                             \
+        if (!call_native(program, ip->a, base[3], memory, task.fault.native_reason)) {             \
             VM_TRAP(Trap::NativeError);                                                            \
         }                                                                                          \
         VM_CHARGE();                                                                               \
