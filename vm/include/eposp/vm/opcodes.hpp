@@ -94,110 +94,38 @@ struct FieldSpec {
     std::uint8_t size = 0; ///< bytes, for Read and Write
 };
 
-// Operand spellings used in the list below.
-#define EPOSP_VM_F__                                                                               \
-    ::eposp::vm::FieldSpec {}
-#define EPOSP_VM_F_R1                                                                              \
+// Operand spellings used in the list below. Array operands carry the width of the element
+// access (AR0: only its address is taken).
+#define EPOSP_VM_FIELD(kind, size)                                                                 \
     ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Read, 1                                                                \
+        ::eposp::vm::Field::kind, size                                                             \
     }
-#define EPOSP_VM_F_R2                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Read, 2                                                                \
-    }
-#define EPOSP_VM_F_R4                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Read, 4                                                                \
-    }
-#define EPOSP_VM_F_R8                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Read, 8                                                                \
-    }
-#define EPOSP_VM_F_W1                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Write, 1                                                               \
-    }
-#define EPOSP_VM_F_W2                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Write, 2                                                               \
-    }
-#define EPOSP_VM_F_W4                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Write, 4                                                               \
-    }
-#define EPOSP_VM_F_W8                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Write, 8                                                               \
-    }
-#define EPOSP_VM_F_RN                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ReadN, 0                                                               \
-    }
-#define EPOSP_VM_F_WN                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::WriteN, 0                                                              \
-    }
-#define EPOSP_VM_F_IM                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Imm, 0                                                                 \
-    }
-#define EPOSP_VM_F_SZ                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Size, 0                                                                \
-    }
-#define EPOSP_VM_F_JT                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Target, 0                                                              \
-    }
-#define EPOSP_VM_F_PO                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Pou, 0                                                                 \
-    }
-#define EPOSP_VM_F_IX                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Import, 0                                                              \
-    }
-#define EPOSP_VM_F_IN                                                                              \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::Instance, 0                                                            \
-    }
-// Array operands carry the width of the element access; 0 only takes the element's address.
-#define EPOSP_VM_F_AR0                                                                             \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ArrayRead, 0                                                           \
-    }
-#define EPOSP_VM_F_AR1                                                                             \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ArrayRead, 1                                                           \
-    }
-#define EPOSP_VM_F_AR2                                                                             \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ArrayRead, 2                                                           \
-    }
-#define EPOSP_VM_F_AR4                                                                             \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ArrayRead, 4                                                           \
-    }
-#define EPOSP_VM_F_AR8                                                                             \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ArrayRead, 8                                                           \
-    }
-#define EPOSP_VM_F_AW1                                                                             \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ArrayWrite, 1                                                          \
-    }
-#define EPOSP_VM_F_AW2                                                                             \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ArrayWrite, 2                                                          \
-    }
-#define EPOSP_VM_F_AW4                                                                             \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ArrayWrite, 4                                                          \
-    }
-#define EPOSP_VM_F_AW8                                                                             \
-    ::eposp::vm::FieldSpec {                                                                       \
-        ::eposp::vm::Field::ArrayWrite, 8                                                          \
-    }
+#define EPOSP_VM_F__ EPOSP_VM_FIELD(None, 0)
+#define EPOSP_VM_F_R1 EPOSP_VM_FIELD(Read, 1)
+#define EPOSP_VM_F_R2 EPOSP_VM_FIELD(Read, 2)
+#define EPOSP_VM_F_R4 EPOSP_VM_FIELD(Read, 4)
+#define EPOSP_VM_F_R8 EPOSP_VM_FIELD(Read, 8)
+#define EPOSP_VM_F_W1 EPOSP_VM_FIELD(Write, 1)
+#define EPOSP_VM_F_W2 EPOSP_VM_FIELD(Write, 2)
+#define EPOSP_VM_F_W4 EPOSP_VM_FIELD(Write, 4)
+#define EPOSP_VM_F_W8 EPOSP_VM_FIELD(Write, 8)
+#define EPOSP_VM_F_RN EPOSP_VM_FIELD(ReadN, 0)
+#define EPOSP_VM_F_WN EPOSP_VM_FIELD(WriteN, 0)
+#define EPOSP_VM_F_IM EPOSP_VM_FIELD(Imm, 0)
+#define EPOSP_VM_F_SZ EPOSP_VM_FIELD(Size, 0)
+#define EPOSP_VM_F_JT EPOSP_VM_FIELD(Target, 0)
+#define EPOSP_VM_F_PO EPOSP_VM_FIELD(Pou, 0)
+#define EPOSP_VM_F_IX EPOSP_VM_FIELD(Import, 0)
+#define EPOSP_VM_F_IN EPOSP_VM_FIELD(Instance, 0)
+#define EPOSP_VM_F_AR0 EPOSP_VM_FIELD(ArrayRead, 0)
+#define EPOSP_VM_F_AR1 EPOSP_VM_FIELD(ArrayRead, 1)
+#define EPOSP_VM_F_AR2 EPOSP_VM_FIELD(ArrayRead, 2)
+#define EPOSP_VM_F_AR4 EPOSP_VM_FIELD(ArrayRead, 4)
+#define EPOSP_VM_F_AR8 EPOSP_VM_FIELD(ArrayRead, 8)
+#define EPOSP_VM_F_AW1 EPOSP_VM_FIELD(ArrayWrite, 1)
+#define EPOSP_VM_F_AW2 EPOSP_VM_FIELD(ArrayWrite, 2)
+#define EPOSP_VM_F_AW4 EPOSP_VM_FIELD(ArrayWrite, 4)
+#define EPOSP_VM_F_AW8 EPOSP_VM_FIELD(ArrayWrite, 8)
 
 // The lists: OP(name, family, T1, T2, aux, A, B, C). `family` names the semantics
 // (the interpreter defines one handler per family), T1/T2 are the C++ types it works on.
@@ -208,8 +136,9 @@ struct FieldSpec {
     M(OP, I8, 1, std::int8_t)                                                                      \
     M(OP, I16, 2, std::int16_t)                                                                    \
     M(OP, I32, 4, std::int32_t)                                                                    \
-    M(OP, I64, 8, std::int64_t) M(OP, U8, 1, std::uint8_t) M(OP, U16, 2, std::uint16_t)            \
-        M(OP, U32, 4, std::uint32_t) M(OP, U64, 8, std::uint64_t)
+    M(OP, I64, 8, std::int64_t)                                                                    \
+    M(OP, U8, 1, std::uint8_t) M(OP, U16, 2, std::uint16_t) M(OP, U32, 4, std::uint32_t)           \
+        M(OP, U64, 8, std::uint64_t)
 #define EPOSP_VM_FOR_FLOATS(M, OP) M(OP, F32, 4, float) M(OP, F64, 8, double)
 #define EPOSP_VM_FOR_SCALARS(M, OP)                                                                \
     M(OP, Bool, 1, ::eposp::vm::BoolByte) EPOSP_VM_FOR_INTS(M, OP) EPOSP_VM_FOR_FLOATS(M, OP)
@@ -219,10 +148,11 @@ struct FieldSpec {
     M(Bool, 1, ::eposp::vm::BoolByte, __VA_ARGS__)                                                 \
     M(I8, 1, std::int8_t, __VA_ARGS__)                                                             \
     M(I16, 2, std::int16_t, __VA_ARGS__)                                                           \
-    M(I32, 4, std::int32_t, __VA_ARGS__) M(I64, 8, std::int64_t, __VA_ARGS__)                      \
-        M(U8, 1, std::uint8_t, __VA_ARGS__) M(U16, 2, std::uint16_t, __VA_ARGS__)                  \
-            M(U32, 4, std::uint32_t, __VA_ARGS__) M(U64, 8, std::uint64_t, __VA_ARGS__)            \
-                M(F32, 4, float, __VA_ARGS__) M(F64, 8, double, __VA_ARGS__)
+    M(I32, 4, std::int32_t, __VA_ARGS__)                                                           \
+    M(I64, 8, std::int64_t, __VA_ARGS__) M(U8, 1, std::uint8_t, __VA_ARGS__)                       \
+        M(U16, 2, std::uint16_t, __VA_ARGS__) M(U32, 4, std::uint32_t, __VA_ARGS__)                \
+            M(U64, 8, std::uint64_t, __VA_ARGS__) M(F32, 4, float, __VA_ARGS__)                    \
+                M(F64, 8, double, __VA_ARGS__)
 
 #define EPOSP_VM_F(X) EPOSP_VM_F_##X
 #define EPOSP_VM_OP(OP, name, family, T1, T2, aux, a, b, c)                                        \
