@@ -1,0 +1,307 @@
+#include "eposp/vm/image_format.hpp"
+
+#include "byte_stream.hpp"
+
+#include <array>
+#include <boost/crc.hpp>
+#include <string_view>
+
+namespace eposp::vm {
+namespace {
+
+using detail::ByteReader;
+using detail::ByteWriter;
+
+constexpr std::array<std::uint8_t, 4> kMagic{'E', 'P', 'X', 'I'};
+
+std::uint32_t crc32(std::span<const std::uint8_t> bytes) {
+    boost::crc_32_type crc;
+    crc.process_bytes(bytes.data(), bytes.size());
+    return crc.checksum();
+}
+
+// The layout is described once, by the `describe_*` functions below, against either of these
+// two adapters: one writes each field, the other reads it back into the same place.
+class Encoder {
+public:
+    explicit Encoder(ByteWriter& out) : out_(out) {}
+    void u8(const std::uint8_t& v) { out_.u8(v); }
+    void u16(const std::uint16_t& v) { out_.u16(v); }
+    void u32(const std::uint32_t& v) { out_.u32(v); }
+    void u64(const std::uint64_t& v) { out_.u64(v); }
+    void i32(const std::int32_t& v) { out_.i32(v); }
+    void boolean(const bool& v) { out_.u8(v ? 1 : 0); }
+    void opcode(const Opcode& op) { out_.u16(static_cast<std::uint16_t>(op)); }
+    void string(const std::string& s) { out_.string(s); }
+    void bytes(const std::vector<std::uint8_t>& v) {
+        out_.u32(static_cast<std::uint32_t>(v.size()));
+        out_.raw(v);
+    }
+    template <typename Enum>
+    void enumerator(const Enum& e, Enum /*last*/, std::string_view /*what*/) {
+        out_.u8(static_cast<std::uint8_t>(e));
+    }
+    template <typename T, typename Fn>
+    void list(const std::vector<T>& items, std::size_t /*min_size*/, Fn&& each) {
+        out_.u32(static_cast<std::uint32_t>(items.size()));
+        for (const auto& item : items) {
+            each(const_cast<T&>(item)); // the describe functions only read through an Encoder
+        }
+    }
+
+private:
+    ByteWriter& out_;
+};
+
+class Decoder {
+public:
+    explicit Decoder(ByteReader& in) : in_(in) {}
+    void u8(std::uint8_t& v) { v = in_.u8(); }
+    void u16(std::uint16_t& v) { v = in_.u16(); }
+    void u32(std::uint32_t& v) { v = in_.u32(); }
+    void u64(std::uint64_t& v) { v = in_.u64(); }
+    void i32(std::int32_t& v) { v = in_.i32(); }
+    void boolean(bool& v) { v = in_.u8() != 0; }
+    // Any value: the verifier refuses unknown opcodes with their instruction's position.
+    void opcode(Opcode& op) { op = static_cast<Opcode>(in_.u16()); }
+    void string(std::string& s) { s = in_.string(); }
+    void bytes(std::vector<std::uint8_t>& v) {
+        const auto data = in_.raw(in_.count(1));
+        v.assign(data.begin(), data.end());
+    }
+    template <typename Enum>
+    void enumerator(Enum& e, Enum last, std::string_view what) {
+        e = in_.enumerator(last, what);
+    }
+    template <typename T, typename Fn>
+    void list(std::vector<T>& items, std::size_t min_size, Fn&& each) {
+        items.resize(in_.count(min_size));
+        for (auto& item : items) {
+            each(item);
+            if (in_.failed()) {
+                return;
+            }
+        }
+    }
+
+private:
+    ByteReader& in_;
+};
+
+template <typename Io>
+void describe_code(Io& io, std::vector<Instruction>& code) {
+    io.list(code, kInstructionSize, [&](Instruction& ins) {
+        io.opcode(ins.opcode);
+        io.u16(ins.aux);
+        io.u32(ins.a);
+        io.u32(ins.b);
+        io.u32(ins.c);
+    });
+}
+
+template <typename Io>
+void describe_arrays(Io& io, std::vector<ArrayDescriptor>& arrays) {
+    io.list(arrays, 12, [&](ArrayDescriptor& d) {
+        io.i32(d.lower);
+        io.u32(d.count);
+        io.u32(d.element_size);
+    });
+}
+
+template <typename Io>
+void describe_static(Io& io, Image& image) {
+    io.u32(image.static_size);
+    io.bytes(image.static_init);
+}
+
+template <typename Io>
+void describe_retain(Io& io, std::vector<RetainRange>& retain) {
+    io.list(retain, 8, [&](RetainRange& r) {
+        io.u32(r.offset);
+        io.u32(r.size);
+    });
+}
+
+template <typename Io>
+void describe_tasks(Io& io, std::vector<Task>& tasks) {
+    io.list(tasks, 25, [&](Task& t) {
+        io.string(t.name);
+        io.enumerator(t.kind, TaskKind::Event, "task kind");
+        io.u64(t.interval_ns);
+        io.u32(t.event_offset);
+        io.u32(t.priority);
+        io.u32(t.stack_size);
+        io.list(t.entries, 8, [&](TaskEntry& e) {
+            io.u32(e.pou);
+            io.u32(e.instance);
+        });
+    });
+}
+
+template <typename Io>
+void describe_pous(Io& io, std::vector<Pou>& pous) {
+    io.list(pous, 29, [&](Pou& p) {
+        io.string(p.name);
+        io.enumerator(p.kind, PouKind::Program, "POU kind");
+        io.u32(p.code_begin);
+        io.u32(p.code_end);
+        io.u32(p.frame_size);
+        io.u32(p.out_size);
+        io.u32(p.instance_size);
+        io.list(p.lines, 8, [&](LineEntry& l) {
+            io.u32(l.instruction);
+            io.u32(l.line);
+        });
+    });
+}
+
+template <typename Io>
+void describe_types(Io& io, std::vector<TypeDescriptor>& types) {
+    io.list(types, 26, [&](TypeDescriptor& t) {
+        io.string(t.name);
+        io.enumerator(t.kind, TypeKind::Struct, "type kind");
+        io.enumerator(t.scalar, Scalar::Ptr, "scalar type");
+        io.u32(t.size);
+        io.u32(t.element);
+        io.i32(t.lower);
+        io.u32(t.count);
+        io.list(t.fields, 12, [&](TypeField& f) {
+            io.string(f.name);
+            io.u32(f.type);
+            io.u32(f.offset);
+        });
+    });
+}
+
+template <typename Io>
+void describe_symbols(Io& io, std::vector<Symbol>& symbols) {
+    io.list(symbols, 12, [&](Symbol& s) {
+        io.string(s.path);
+        io.u32(s.type);
+        io.u32(s.offset);
+    });
+}
+
+template <typename Io>
+void describe_bindings(Io& io, std::vector<IoBinding>& bindings) {
+    io.list(bindings, 11, [&](IoBinding& b) {
+        io.enumerator(b.area, IoArea::Memory, "I/O area");
+        io.enumerator(b.type, Scalar::Ptr, "scalar type");
+        io.u32(b.byte_address);
+        io.u8(b.bit);
+        io.u32(b.offset);
+    });
+}
+
+template <typename Io>
+void describe_imports(Io& io, std::vector<NativeImport>& imports) {
+    io.list(imports, 10, [&](NativeImport& i) {
+        io.string(i.name);
+        io.boolean(i.signature.has_result);
+        io.enumerator(i.signature.result, Scalar::Ptr, "scalar type");
+        io.list(i.signature.parameters, 1,
+                [&](Scalar& s) { io.enumerator(s, Scalar::Ptr, "scalar type"); });
+    });
+}
+
+// Calls `fn(id, name, describe)` for each section in file order.
+template <typename Io, typename Fn>
+void for_each_section(Image& image, Fn&& fn) {
+    fn(1, "code", [&](Io& io) { describe_code(io, image.code); });
+    fn(2, "arrays", [&](Io& io) { describe_arrays(io, image.arrays); });
+    fn(3, "static data", [&](Io& io) { describe_static(io, image); });
+    fn(4, "retain", [&](Io& io) { describe_retain(io, image.retain); });
+    fn(5, "tasks", [&](Io& io) { describe_tasks(io, image.tasks); });
+    fn(6, "POUs", [&](Io& io) { describe_pous(io, image.pous); });
+    fn(7, "types", [&](Io& io) { describe_types(io, image.types); });
+    fn(8, "symbols", [&](Io& io) { describe_symbols(io, image.symbols); });
+    fn(9, "bindings", [&](Io& io) { describe_bindings(io, image.bindings); });
+    fn(10, "imports", [&](Io& io) { describe_imports(io, image.imports); });
+}
+
+} // namespace
+
+std::vector<std::uint8_t> write_image(const Image& image) {
+    ByteWriter out;
+    out.raw(kMagic);
+    out.u16(kImageVersion);
+    out.u16(0);
+    out.u32(0); // payload size, patched below
+    out.u32(0); // CRC, patched below
+    Encoder encoder(out);
+    // The Encoder only reads, so the const_cast never leads to a write.
+    for_each_section<Encoder>(
+        const_cast<Image&>(image), [&](std::uint32_t id, std::string_view, auto&& describe) {
+            out.u32(id);
+            const auto length_at = out.size();
+            out.u32(0);
+            describe(encoder);
+            out.patch_u32(length_at, static_cast<std::uint32_t>(out.size() - length_at - 4));
+        });
+    auto& bytes = out.bytes();
+    const auto payload = std::span(bytes).subspan(kImageHeaderSize);
+    out.patch_u32(8, static_cast<std::uint32_t>(payload.size()));
+    out.patch_u32(12, crc32(payload));
+    return std::move(bytes);
+}
+
+core::Result<Image> read_image(std::span<const std::uint8_t> bytes) {
+    ByteReader header(bytes);
+    const auto magic = header.raw(kMagic.size());
+    if (header.failed() || !std::equal(magic.begin(), magic.end(), kMagic.begin())) {
+        return core::Error{"not a program image (bad magic)"};
+    }
+    const auto version = header.u16();
+    header.u16();
+    const auto payload_size = header.u32();
+    const auto crc = header.u32();
+    if (header.failed()) {
+        return core::Error{"truncated image header"};
+    }
+    if (version != kImageVersion) {
+        return core::Error{"image version " + std::to_string(version) +
+                           " is not supported (expected " + std::to_string(kImageVersion) + ")"};
+    }
+    if (payload_size != header.remaining()) {
+        return core::Error{"image size mismatch: header says " + std::to_string(payload_size) +
+                           " payload bytes, file has " + std::to_string(header.remaining())};
+    }
+    const auto payload = bytes.subspan(kImageHeaderSize);
+    if (crc32(payload) != crc) {
+        return core::Error{"image checksum mismatch (corrupt file)"};
+    }
+
+    Image image;
+    ByteReader in(payload);
+    std::string error;
+    for_each_section<Decoder>(image, [&](std::uint32_t id, std::string_view name, auto&& describe) {
+        if (!error.empty()) {
+            return;
+        }
+        const auto found = in.u32();
+        const auto length = in.u32();
+        const auto body = in.raw(length);
+        if (in.failed() || found != id) {
+            error = "section " + std::string(name) + " missing or truncated";
+            return;
+        }
+        ByteReader section(body);
+        Decoder decoder(section);
+        describe(decoder);
+        if (!section.failed() && section.remaining() != 0) {
+            section.fail(std::to_string(section.remaining()) + " trailing bytes");
+        }
+        if (section.failed()) {
+            error = "section " + std::string(name) + ": " + section.error();
+        }
+    });
+    if (!error.empty()) {
+        return core::Error{error};
+    }
+    if (in.remaining() != 0) {
+        return core::Error{"unexpected data after the last section"};
+    }
+    return image;
+}
+
+} // namespace eposp::vm

@@ -1,0 +1,402 @@
+#include "interpreter.hpp"
+
+#include "value_semantics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+// The dispatch loop. Every handler is one family macro (VM_EXEC_<family>) applied to the types
+// of the opcode list, so adding a type or an opcode never means a new hand-written handler.
+// With GCC or Clang each handler jumps straight to the next one through a label table
+// (computed goto, one indirect branch per handler); otherwise a switch in a loop.
+
+namespace eposp::vm::detail {
+namespace {
+
+template <typename T>
+T load(const std::uint8_t* p) {
+    T value;
+    std::memcpy(&value, p, sizeof(T));
+    return value;
+}
+
+template <typename T>
+void store(std::uint8_t* p, T value) {
+    std::memcpy(p, &value, sizeof(T));
+}
+
+std::uint32_t line_at(const Pou& pou, std::uint32_t instruction) {
+    std::uint32_t line = 0;
+    for (const auto& entry : pou.lines) {
+        if (entry.instruction > instruction) {
+            break;
+        }
+        line = entry.line;
+    }
+    return line;
+}
+
+// A native call's arguments object lives here, not in the handler: no object with a destructor
+// may be in scope where a handler leaves by computed goto.
+bool call_native(const Program& program, std::uint32_t import, std::uint8_t* block,
+                 std::span<std::uint8_t> memory, std::string& failure) {
+    NativeArgs args(block, program.image().imports[import].signature, memory);
+    program.native(import)(args);
+    if (args.failed()) {
+        failure = args.failure();
+        return false;
+    }
+    return true;
+}
+
+// The loop's exits are plain functions of values: a lambda capturing the loop's variables by
+// reference would force `ip` into memory for the whole loop.
+std::uint64_t executed_in_run(std::uint64_t limit, std::int64_t remaining) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(limit) - remaining);
+}
+
+RunState stop(TaskState& task, const Pou& where, Trap trap, std::uint32_t pou,
+              std::uint32_t instruction) {
+    task.fault.trap = trap;
+    task.fault.pou = pou;
+    task.fault.instruction = instruction;
+    task.fault.line = line_at(where, instruction);
+    task.state = RunState::Faulted;
+    return task.state;
+}
+
+} // namespace
+
+RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskState& task,
+                 std::uint64_t slice) {
+    const Image& image = program.image();
+    const Instruction* const code = image.code.data();
+    const Pou* const pous = image.pous.data();
+    const ArrayDescriptor* const arrays = image.arrays.data();
+    std::uint8_t* const mem = memory.data();
+    const std::uint64_t mem_size = memory.size();
+
+    // Restore the saved activation.
+    std::uint32_t pou = task.current.pou;
+    std::uint8_t* base[4];
+    base[static_cast<int>(Base::Static)] = mem;
+    base[static_cast<int>(Base::Frame)] = mem + task.current.frame;
+    base[static_cast<int>(Base::Self)] = mem + task.current.self;
+    base[static_cast<int>(Base::Out)] = mem + task.current.frame + pous[pou].frame_size;
+    const Instruction* ip = code + task.current.pc;
+
+    // Instruction counting: `segment` is where the current straight-line run started; at each
+    // taken jump, call and return the run's length is charged, so the count is exact without
+    // a counter update per instruction.
+    const std::uint64_t budget_left = task.budget > task.executed ? task.budget - task.executed : 0;
+    const std::uint64_t limit = std::min({slice, budget_left, std::uint64_t{INT64_MAX}});
+    std::int64_t remaining = static_cast<std::int64_t>(limit);
+    const Instruction* segment = ip;
+    Trap trap = Trap::DivisionByZero;
+    task.fault.native_reason.clear();
+
+#define VM_OPERAND(field) (base[(field) >> kBaseShift] + ((field)&kOffsetMask))
+#define A VM_OPERAND(ip->a)
+#define B VM_OPERAND(ip->b)
+#define C VM_OPERAND(ip->c)
+#define VM_CHARGE() (remaining -= (ip - segment) + 1)
+#define VM_TRAP(kind)                                                                              \
+    do {                                                                                           \
+        trap = (kind);                                                                             \
+        goto trapped;                                                                              \
+    } while (false)
+// A safe point: charge the run, continue at `target`, and stop there if the slice is used up.
+#define VM_JUMP(target)                                                                            \
+    do {                                                                                           \
+        VM_CHARGE();                                                                               \
+        ip = code + (target);                                                                      \
+        segment = ip;                                                                              \
+        if (remaining < 0) {                                                                       \
+            goto slice_used;                                                                       \
+        }                                                                                          \
+        VM_DISPATCH();                                                                             \
+    } while (false)
+#define VM_BRANCH_IF(condition, target)                                                            \
+    do {                                                                                           \
+        if (condition) {                                                                           \
+            VM_JUMP(target);                                                                       \
+        }                                                                                          \
+        VM_NEXT();                                                                                 \
+    } while (false)
+// Checked element address: index - lower must be below the descriptor's count.
+#define VM_ELEMENT(array, index_operand, out)                                                      \
+    const auto& descriptor = arrays[ip->aux];                                                      \
+    const auto element = std::int64_t{load<std::int32_t>(index_operand)} - descriptor.lower;       \
+    if (static_cast<std::uint64_t>(element) >= descriptor.count) {                                 \
+        VM_TRAP(Trap::IndexOutOfRange);                                                            \
+    }                                                                                              \
+    out = static_cast<std::uint64_t>(element) * descriptor.element_size
+// Checked pointer: not NULL (or into the guard) and `size` bytes at pointer+offset in memory.
+#define VM_DEREF(pointer_operand, offset, size, out)                                               \
+    const auto address = load<std::uint64_t>(pointer_operand);                                     \
+    if (address < kNullGuardSize) {                                                                \
+        VM_TRAP(Trap::NullDereference);                                                            \
+    }                                                                                              \
+    if (address > mem_size || std::uint64_t{offset} + (size) > mem_size - address) {               \
+        VM_TRAP(Trap::InvalidAddress);                                                             \
+    }                                                                                              \
+    out = mem + address + (offset)
+// Enters `callee` with its frame where the caller's out area is (the arguments already there).
+#define VM_ENTER(callee_index, self_pointer)                                                       \
+    do {                                                                                           \
+        const Pou& callee = pous[callee_index];                                                    \
+        const auto frame = static_cast<std::uint32_t>(base[3] - mem);                              \
+        if (task.depth == TaskState::kMaxCallDepth ||                                              \
+            std::uint64_t{frame} + callee.frame_size + callee.out_size > task.stack_end) {         \
+            VM_TRAP(Trap::StackOverflow);                                                          \
+        }                                                                                          \
+        task.calls[task.depth++] = Activation{static_cast<std::uint32_t>(ip - code) + 1, pou,      \
+                                              static_cast<std::uint32_t>(base[1] - mem),           \
+                                              static_cast<std::uint32_t>(base[2] - mem)};          \
+        pou = (callee_index);                                                                      \
+        base[1] = base[3];                                                                         \
+        base[2] = (self_pointer);                                                                  \
+        base[3] = base[1] + callee.frame_size;                                                     \
+        VM_JUMP(callee.code_begin);                                                                \
+    } while (false)
+
+#define VM_EXEC_Nop(T1, T2) VM_NEXT();
+#define VM_EXEC_Jmp(T1, T2) VM_JUMP(ip->a);
+#define VM_EXEC_Jt(T1, T2) VM_BRANCH_IF(load<std::uint8_t>(A) != 0, ip->b);
+#define VM_EXEC_Jf(T1, T2) VM_BRANCH_IF(load<std::uint8_t>(A) == 0, ip->b);
+#define VM_EXEC_Call(T1, T2) VM_ENTER(ip->a, base[2]);
+#define VM_EXEC_CallFb(T1, T2) VM_ENTER(ip->b, A);
+#define VM_EXEC_CallFbP(T1, T2)                                                                    \
+    {                                                                                              \
+        std::uint8_t* instance;                                                                    \
+        VM_DEREF(A, 0, pous[ip->b].instance_size, instance);                                       \
+        VM_ENTER(ip->b, instance);                                                                 \
+    }
+#define VM_EXEC_CallNative(T1, T2)                                                                 \
+    {                                                                                              \
+        if (!call_native(program, ip->a, base[3], memory, task.fault.native_reason)) {             \
+            VM_TRAP(Trap::NativeError);                                                            \
+        }                                                                                          \
+        VM_CHARGE();                                                                               \
+        segment = ip + 1;                                                                          \
+        if (remaining < 0) {                                                                       \
+            ++ip;                                                                                  \
+            goto slice_used;                                                                       \
+        }                                                                                          \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_Ret(T1, T2)                                                                        \
+    {                                                                                              \
+        VM_CHARGE();                                                                               \
+        if (task.depth == 0) {                                                                     \
+            goto finished;                                                                         \
+        }                                                                                          \
+        const Activation& caller = task.calls[--task.depth];                                       \
+        pou = caller.pou;                                                                          \
+        base[1] = mem + caller.frame;                                                              \
+        base[2] = mem + caller.self;                                                               \
+        base[3] = base[1] + pous[pou].frame_size;                                                  \
+        ip = code + caller.pc;                                                                     \
+        segment = ip;                                                                              \
+        VM_DISPATCH();                                                                             \
+    }
+#define VM_EXEC_MovN(T1, T2)                                                                       \
+    std::memmove(A, B, ip->c);                                                                     \
+    VM_NEXT();
+#define VM_EXEC_Addr(T1, T2)                                                                       \
+    store<std::uint64_t>(A, static_cast<std::uint64_t>(B - mem));                                  \
+    VM_NEXT();
+#define VM_EXEC_IdxA(T1, T2)                                                                       \
+    {                                                                                              \
+        std::uint64_t at;                                                                          \
+        VM_ELEMENT(B, C, at);                                                                      \
+        store<std::uint64_t>(A, static_cast<std::uint64_t>(B - mem) + at);                         \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_IdxAP(T1, T2)                                                                      \
+    {                                                                                              \
+        std::uint64_t at;                                                                          \
+        VM_ELEMENT(B, C, at);                                                                      \
+        store<std::uint64_t>(A, load<std::uint64_t>(B) + at);                                      \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_LdpN(T1, T2)                                                                       \
+    {                                                                                              \
+        std::uint8_t* source;                                                                      \
+        VM_DEREF(B, 0, ip->c, source);                                                             \
+        std::memmove(A, source, ip->c);                                                            \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_StpN(T1, T2)                                                                       \
+    {                                                                                              \
+        std::uint8_t* target;                                                                      \
+        VM_DEREF(A, 0, ip->c, target);                                                             \
+        std::memmove(target, B, ip->c);                                                            \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_NotB(T1, T2)                                                                       \
+    store<std::uint8_t>(A, load<std::uint8_t>(B) == 0 ? 1 : 0);                                    \
+    VM_NEXT();
+#define VM_EXEC_Mov(T, T2)                                                                         \
+    store<T>(A, load<T>(B));                                                                       \
+    VM_NEXT();
+#define VM_EXEC_Ldi(T, T2)                                                                         \
+    store<T>(A, static_cast<T>(std::uint64_t{ip->b} | std::uint64_t{ip->c} << 32));                \
+    VM_NEXT();
+#define VM_EXEC_Ldx(T, T2)                                                                         \
+    {                                                                                              \
+        std::uint64_t at;                                                                          \
+        VM_ELEMENT(B, C, at);                                                                      \
+        store<T>(A, load<T>(B + at));                                                              \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_Stx(T, T2)                                                                         \
+    {                                                                                              \
+        std::uint64_t at;                                                                          \
+        VM_ELEMENT(A, B, at);                                                                      \
+        store<T>(A + at, load<T>(C));                                                              \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_Ldp(T, T2)                                                                         \
+    {                                                                                              \
+        std::uint8_t* source;                                                                      \
+        VM_DEREF(B, ip->c, sizeof(T), source);                                                     \
+        store<T>(A, load<T>(source));                                                              \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_Stp(T, T2)                                                                         \
+    {                                                                                              \
+        std::uint8_t* target;                                                                      \
+        VM_DEREF(A, ip->c, sizeof(T), target);                                                     \
+        store<T>(target, load<T>(B));                                                              \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_BINARY(T, expression)                                                                   \
+    {                                                                                              \
+        const T x = load<T>(B);                                                                    \
+        const T y = load<T>(C);                                                                    \
+        store<T>(A, static_cast<T>(expression));                                                   \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_UNARY(T, R, expression)                                                                 \
+    {                                                                                              \
+        const T x = load<T>(B);                                                                    \
+        store<R>(A, expression);                                                                   \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_COMPARE(T, expression)                                                                  \
+    {                                                                                              \
+        const T x = load<T>(B);                                                                    \
+        const T y = load<T>(C);                                                                    \
+        store<std::uint8_t>(A, (expression) ? 1 : 0);                                              \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_COMPARE_BRANCH(T, expression) VM_BRANCH_IF((load<T>(A) expression load<T>(B)), ip->c);
+#define VM_EXEC_Add(T, T2) VM_BINARY(T, add(x, y))
+#define VM_EXEC_Sub(T, T2) VM_BINARY(T, sub(x, y))
+#define VM_EXEC_Mul(T, T2) VM_BINARY(T, mul(x, y))
+#define VM_EXEC_AddI(T, T2) VM_UNARY(T, T, add(x, static_cast<T>(static_cast<std::int32_t>(ip->c))))
+#define VM_EXEC_Neg(T, T2) VM_UNARY(T, T, neg(x))
+#define VM_EXEC_Not(T, T2) VM_UNARY(T, T, static_cast<T>(~x))
+#define VM_EXEC_And(T, T2) VM_BINARY(T, x& y)
+#define VM_EXEC_Or(T, T2) VM_BINARY(T, x | y)
+#define VM_EXEC_Xor(T, T2) VM_BINARY(T, x ^ y)
+#define VM_EXEC_Shl(T, T2) VM_UNARY(T, T, shift_left(x, load<std::uint32_t>(C)))
+#define VM_EXEC_Shr(T, T2) VM_UNARY(T, T, shift_right(x, load<std::uint32_t>(C)))
+#define VM_EXEC_Rol(T, T2) VM_UNARY(T, T, rotate_left(x, load<std::uint32_t>(C)))
+#define VM_EXEC_Ror(T, T2) VM_UNARY(T, T, rotate_right(x, load<std::uint32_t>(C)))
+#define VM_EXEC_Eq(T, T2) VM_COMPARE(T, x == y)
+#define VM_EXEC_Ne(T, T2) VM_COMPARE(T, x != y)
+#define VM_EXEC_Lt(T, T2) VM_COMPARE(T, x < y)
+#define VM_EXEC_Le(T, T2) VM_COMPARE(T, x <= y)
+#define VM_EXEC_JEq(T, T2) VM_COMPARE_BRANCH(T, ==)
+#define VM_EXEC_JNe(T, T2) VM_COMPARE_BRANCH(T, !=)
+#define VM_EXEC_JLt(T, T2) VM_COMPARE_BRANCH(T, <)
+#define VM_EXEC_JLe(T, T2) VM_COMPARE_BRANCH(T, <=)
+#define VM_EXEC_Abs(T, T2) VM_UNARY(T, T, abs(x))
+#define VM_EXEC_For(T, T2)                                                                         \
+    {                                                                                              \
+        const auto step = static_cast<std::int16_t>(ip->aux);                                      \
+        const T next = add(load<T>(A), static_cast<T>(step));                                      \
+        store<T>(A, next);                                                                         \
+        VM_BRANCH_IF(step > 0 ? next <= load<T>(B) : next >= load<T>(B), ip->c);                   \
+    }
+#define VM_EXEC_Sqrt(T, T2) VM_UNARY(T, T, std::sqrt(x))
+#define VM_EXEC_Trunc(T, R) VM_UNARY(T, R, (truncate<R>(x)))
+#define VM_EXEC_Cvt(T, R) VM_UNARY(T, R, (convert<R>(x)))
+#define VM_CHECKED_DIVISION(T, operation)                                                          \
+    {                                                                                              \
+        const T x = load<T>(B);                                                                    \
+        const T y = load<T>(C);                                                                    \
+        if constexpr (std::is_integral_v<T>) {                                                     \
+            if (y == 0) {                                                                          \
+                VM_TRAP(Trap::DivisionByZero);                                                     \
+            }                                                                                      \
+        }                                                                                          \
+        store<T>(A, operation(x, y));                                                              \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_Div(T, T2) VM_CHECKED_DIVISION(T, divide)
+#define VM_EXEC_Mod(T, T2) VM_CHECKED_DIVISION(T, modulo)
+
+#define VM_HANDLER(name, family, T1, T2, aux, a, b, c)                                             \
+    VM_CASE(name) {                                                                                \
+        VM_EXEC_##family(T1, T2)                                                                   \
+    }
+
+#if defined(__GNUC__) && !defined(EPOSP_VM_PORTABLE_DISPATCH)
+// Label addresses and computed goto are the GNU extension this dispatch exists for.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpedantic"
+#define VM_LABEL_ADDRESS(name, ...) &&handle_##name,
+    static constexpr void* kHandlers[] = {EPOSP_VM_OPCODES(VM_LABEL_ADDRESS)};
+#undef VM_LABEL_ADDRESS
+#define VM_CASE(name) handle_##name:
+#define VM_DISPATCH() goto* kHandlers[static_cast<std::uint16_t>(ip->opcode)]
+#define VM_NEXT()                                                                                  \
+    do {                                                                                           \
+        ++ip;                                                                                      \
+        VM_DISPATCH();                                                                             \
+    } while (false)
+    VM_DISPATCH();
+    EPOSP_VM_OPCODES(VM_HANDLER)
+#pragma GCC diagnostic pop
+#else
+// Every handler leaves by goto (a `continue` inside the macros' do-while would not reach the
+// loop), and the verifier admits only known opcodes, so control never leaves the switch.
+#define VM_CASE(name) case Opcode::name:
+#define VM_DISPATCH() goto dispatch
+#define VM_NEXT()                                                                                  \
+    do {                                                                                           \
+        ++ip;                                                                                      \
+        goto dispatch;                                                                             \
+    } while (false)
+dispatch:
+    switch (ip->opcode) { EPOSP_VM_OPCODES(VM_HANDLER) }
+#endif
+
+trapped:
+    VM_CHARGE();
+    task.executed += executed_in_run(limit, remaining);
+    return stop(task, pous[pou], trap, pou, static_cast<std::uint32_t>(ip - code));
+
+slice_used:
+    task.executed += executed_in_run(limit, remaining);
+    task.current = Activation{static_cast<std::uint32_t>(ip - code), pou,
+                              static_cast<std::uint32_t>(base[1] - mem),
+                              static_cast<std::uint32_t>(base[2] - mem)};
+    if (task.executed >= task.budget) {
+        return stop(task, pous[pou], Trap::BudgetExceeded, pou,
+                    static_cast<std::uint32_t>(ip - code));
+    }
+    task.state = RunState::Suspended;
+    return task.state;
+
+finished:
+    task.executed += executed_in_run(limit, remaining);
+    task.state = RunState::Finished;
+    return task.state;
+}
+
+} // namespace eposp::vm::detail
