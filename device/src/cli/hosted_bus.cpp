@@ -87,8 +87,7 @@ private:
 };
 
 HostedBus::HostedBus(const HostedBusOptions& options)
-    : options_(options),
-      loop_(options.virtual_time ? core::Pace::Virtual : core::Pace::RealTime),
+    : options_(options), loop_(options.virtual_time ? core::Pace::Virtual : core::Pace::RealTime),
       bus_(loop_, can::BusConfig{.name = options.name, .bitrate = options.bitrate}),
       clock_(trace_clock(loop_, options.virtual_time)),
       recording_(std::make_unique<Recording>(bus_, clock_)) {}

@@ -2,8 +2,8 @@
 // outside tools (python-can, CANopen browsers) join over socketcand or SocketCAN.
 #include "commands.hpp"
 #include "eposp/canmaster/canopen/eds_import.hpp"
-#include "eposp/canmaster/canopen/node.hpp"
 #include "eposp/canmaster/canopen/nmt_protocol.hpp"
+#include "eposp/canmaster/canopen/node.hpp"
 #include "hosted_bus.hpp"
 #include "options.hpp"
 
@@ -68,8 +68,8 @@ int run_node(const NodeOptions& options) {
     if (!text) {
         return report_user_error(kCommand, text.error());
     }
-    auto eds = canopen::import_eds(*text, options.eds,
-                                   static_cast<canopen::NodeId>(options.node_id));
+    auto eds =
+        canopen::import_eds(*text, options.eds, static_cast<canopen::NodeId>(options.node_id));
     if (!eds) {
         return report_user_error(kCommand, eds.error());
     }
