@@ -378,6 +378,34 @@ TEST_F(Conformance, LifeGuardingEventSendsAnEmcyAfterGuardTimeTimesLifeTimeFacto
     EXPECT_LT(emcys[0].at - guarded, 31ms);
 }
 
+TEST_F(Conformance, LifeGuardingRequestAfterTheEventIsAnsweredWithTheNextToggle) {
+    sdo_write(0x100C, 0, 10, 2);
+    sdo_write(0x100D, 0, 3, 1);
+    expect_reply("705#R", "705#7F");
+    bench.run_for(40ms);
+    EXPECT_EQ(exchange("705#R"), (std::vector<std::string>{"705#FF"}));
+}
+
+// --- Heartbeat consumer (CiA 301 7.2.8.3.2.2, 0x1016). ---
+
+TEST_F(Conformance, HeartbeatConsumerTimeoutSendsAnEmcyOneConsumerTimeAfterTheLastHeartbeat) {
+    sdo_write(0x1016, 1, 0x0010'0014, 4); // node 0x10 within 20 ms
+    for (int beat = 0; beat < 5; ++beat) {
+        bench.send("710#05");
+        bench.run_for(15ms);
+    }
+    EXPECT_EQ(frames_since(core::TimePoint{}, 0x085), std::vector<std::string>{});
+    const core::TimePoint last_beat = bench.loop.now();
+    bench.send("710#05");
+    bench.run_for(30ms);
+    const auto emcys = sent_since(last_beat, 0x085);
+    ASSERT_EQ(emcys.size(), 1u);
+    EXPECT_EQ(emcys[0].frame, "085#3081100000000000");
+    // Monitoring runs from the reception of the heartbeat (the end of its frame).
+    const core::TimePoint received = testing::end_of(last_beat, "710#05");
+    EXPECT_EQ(emcys[0].at, received + 20ms);
+}
+
 TEST_F(Conformance, HeartbeatProducerSilencesNodeGuarding) {
     sdo_write(0x1017, 0, 100, 2);
     EXPECT_EQ(exchange("705#R"), std::vector<std::string>{});
