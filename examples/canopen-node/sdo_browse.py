@@ -14,7 +14,8 @@ and checks that a missing object aborts with 0x06020000 and a missing sub-index 
 0x06090011. Prints every problem and a summary. Exit status: 0 when the node behaved as its EDS
 says, 1 when not, 77 (skipped) when python-can is not installed.
 
-The SDO client follows CiA 301 7.2.4.3 (python-canopen is not packaged by Debian).
+The SDO client follows CiA 301 7.2.4.3 (python-canopen is not packaged by Debian). Sub-objects
+an EDS gives only through CompactSubObj are not browsed (our export_eds writes every one).
 """
 
 import configparser
@@ -167,13 +168,15 @@ def eds_value(data_type, text, node_id):
 
 
 class Entry:
+    """One sub-object as its EDS section describes it (keys compared without regard to case)."""
+
     def __init__(self, index, sub_index, section, node_id):
         self.index = index
         self.sub_index = sub_index
-        self.name = section.get("ParameterName", "")
-        self.access = section.get("AccessType", "ro").strip().lower()
-        self.data_type = eds_number(section["DataType"], node_id)
-        self.default = eds_value(self.data_type, section.get("DefaultValue", ""), node_id)
+        self.name = section.get("parametername", "")
+        self.access = section.get("accesstype", "ro").strip().lower()
+        self.data_type = eds_number(section["datatype"], node_id)
+        self.default = eds_value(self.data_type, section.get("defaultvalue", ""), node_id)
 
     def label(self):
         return f"0x{self.index:04X} sub {self.sub_index} ({self.name})"
@@ -188,14 +191,11 @@ def read_eds(path, node_id):
     entries = []
     records = set()
     for name in parser.sections():
-        section = {key.lower(): value for key, value in parser[name].items()}
-        section = {"ParameterName": section.get("parametername", ""),
-                   "AccessType": section.get("accesstype", "ro"),
-                   "DataType": section.get("datatype", "0x0007"),
-                   "DefaultValue": section.get("defaultvalue", "")}
-        whole = re.fullmatch(r"([0-9A-Fa-f]{4})", name)
-        sub = re.fullmatch(r"([0-9A-Fa-f]{4})sub([0-9A-Fa-f]{1,2})", name)
-        if whole and eds_number(parser[name].get("objecttype", "0x7"), node_id) == 0x7:
+        section = parser[name]
+        whole = re.fullmatch(r"([0-9A-F]{4})", name, re.IGNORECASE)
+        sub = re.fullmatch(r"([0-9A-F]{4})sub([0-9A-F]{1,2})", name, re.IGNORECASE)
+        # CiA 306 4.6.3: a VAR (0x7) or DOMAIN (0x2) object is one value at sub-index 0.
+        if whole and eds_number(section.get("objecttype", "0x7"), node_id) in (0x2, 0x7):
             entries.append(Entry(int(whole[1], 16), 0, section, node_id))
         elif sub:
             records.add(int(sub[1], 16))

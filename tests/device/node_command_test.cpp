@@ -36,16 +36,23 @@ TEST(NodeCommand, VirtualRunBootsTheNodeAndPrintsItsSummary) {
     EXPECT_THAT(read_file(log), testing::EndsWith(" can0 705#00\n"));
 }
 
+/// Runs `eposp node` on the sample EDS (node 5, socketcand on a free port) and, against it,
+/// sdo_browse.py reading `browsed_eds`; the result is the script's.
+test::CommandResult browse_sample_node(const std::filesystem::path& out,
+                                       const std::string& browsed_eds) {
+    return run_command(
+        "sh -c '" +
+        start_in_background(out, "node --eds " + kSampleEds +
+                                     " --node-id 5 --socketcand 127.0.0.1:0 --for 60s") +
+        "/usr/bin/python3 " + kExampleDir + "/sdo_browse.py " + browsed_eds +
+        " 5 ${address%:*} ${address##*:} 2>&1; code=$?; kill -INT $pid; wait $pid; exit $code'");
+}
+
 // The acceptance run: an outside tool browses the whole dictionary of a node built
 // from an exported EDS, over the socketcand bridge.
 TEST(NodeCommand, PythonSdoBrowseReadsEveryEntryOfTheSampleDevice) {
     const auto out = scratch("node.out");
-    const auto result = run_command(
-        "sh -c '" +
-        start_in_background(out, "node --eds " + kSampleEds +
-                                     " --node-id 5 --socketcand 127.0.0.1:0 --for 60s") +
-        "/usr/bin/python3 " + kExampleDir + "/sdo_browse.py " + kSampleEds +
-        " 5 ${address%:*} ${address##*:} 2>&1; code=$?; kill -INT $pid; wait $pid; exit $code'");
+    const auto result = browse_sample_node(out, kSampleEds);
     if (result.exit_code == 77) {
         GTEST_SKIP() << "python-can is not installed (Debian: python3-can)";
     }
@@ -57,6 +64,25 @@ TEST(NodeCommand, PythonSdoBrowseReadsEveryEntryOfTheSampleDevice) {
                                       entries.all, entries.readable, entries.readable)));
     EXPECT_THAT(result.output, HasSubstr(", 0 mismatches"));
     EXPECT_THAT(read_file(out), HasSubstr("interrupted"));
+}
+
+TEST(NodeCommand, PythonSdoBrowseReportsAValueThatDiffersFromTheEds) {
+    std::string eds = read_file(kSampleEds);
+    const std::string unsigned16 = "ParameterName=Unsigned16\nObjectType=0x7\nDataType=0x0006\n"
+                                   "AccessType=rw\nDefaultValue=0xEA60";
+    ASSERT_NE(eds.find(unsigned16), std::string::npos);
+    eds.replace(eds.find(unsigned16) + unsigned16.size() - 4, 4, "EA61");
+    const auto changed = scratch("changed.eds");
+    std::ofstream(changed, std::ios::binary) << eds;
+
+    const auto result = browse_sample_node(scratch("node.out"), changed.string());
+    if (result.exit_code == 77) {
+        GTEST_SKIP() << "python-can is not installed (Debian: python3-can)";
+    }
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_THAT(result.output,
+                HasSubstr("MISMATCH 0x2000 sub 7 (Unsigned16): read 60ea, EDS default 61ea"));
+    EXPECT_THAT(result.output, HasSubstr(", 1 mismatches"));
 }
 
 struct UserError {
