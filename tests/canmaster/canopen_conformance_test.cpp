@@ -170,6 +170,8 @@ std::vector<SdoConversation> sdo_transfers() {
     };
 }
 
+// CiA 301 table 22. 0x06070010 (length does not match) never occurs: every length check of the
+// server knows which way the length is off and answers 0x06070012 or 0x06070013.
 std::vector<SdoConversation> sdo_aborts() {
     return {
         {"UploadOfAWriteOnlyObject",
@@ -189,6 +191,15 @@ std::vector<SdoConversation> sdo_aborts() {
         {"SegmentedDownloadShorterThanIndicated",
          {{"605#2103200009000000", {"585#6003200000000000"}},
           {"605#0501020304050600", {"585#8003200013000706"}}}}, // 0x06070013
+        {"SegmentedDownloadLongerThanIndicated",
+         {{"605#2103200005000000", {"585#6003200000000000"}},
+          {"605#0001020304050607", {"585#8003200012000706"}}}}, // 0x06070012
+        // 9 bytes indicated, 8 sent (6 unused in the last segment), with their right CRC.
+        {"BlockDownloadShorterThanIndicated",
+         {{"605#C603200009000000", {"585#A40320007F000000"}},
+          {"605#0101020304050607", {}},
+          {"605#8208000000000000", {"585#A2027F0000000000"}},
+          {"605#D9AC760000000000", {"585#8003200013000706"}}}}, // 0x06070013
         {"UnknownCommandSpecifier",
          {{"605#E000200000000000", {"585#8000200001000405"}}}}, // 0x05040001
         {"SegmentWithTheWrongToggle",
