@@ -107,6 +107,8 @@ INSTANTIATE_TEST_SUITE_P(
                       "/examples/bus-demo/canopen-network.log --node-id 5",
                   "eposp node: error: " + std::string(EPOSP_SOURCE_DIR) +
                       "/examples/bus-demo/canopen-network.log:1:"},
+        UserError{"--eds /dev/null --node-id 5",
+                  "eposp node: error: /dev/null: lists no object ([MandatoryObjects]"},
         UserError{"--eds " + kSampleEds + " --node-id 0", "--node-id: Value 0 not in range"},
         UserError{"--eds " + kSampleEds + " --node-id 128", "--node-id: Value 128 not in range"},
         UserError{"--node-id 5", "--eds is required"},

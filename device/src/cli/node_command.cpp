@@ -73,6 +73,14 @@ int run_node(const NodeOptions& options) {
     if (!eds) {
         return report_user_error(kCommand, eds.error());
     }
+    // The import tolerates missing sections; a file without any object is not a device's EDS
+    // (CiA 306 4.6.1: [MandatoryObjects] lists at least 0x1000, 0x1001 and 0x1018).
+    if (eds->dictionary.objects().empty()) {
+        return report_user_error(
+            kCommand, fmt::format("{}: lists no object ([MandatoryObjects], [OptionalObjects] and "
+                                  "[ManufacturerObjects] are missing or empty)",
+                                  options.eds));
+    }
     auto hosted = HostedBus::open(options.hosting);
     if (!hosted) {
         return report_user_error(kCommand, hosted.error());
