@@ -85,6 +85,47 @@ TEST(NodeCommand, PythonSdoBrowseReportsAValueThatDiffersFromTheEds) {
     EXPECT_THAT(result.output, HasSubstr(", 1 mismatches"));
 }
 
+// CiA 301 7.5.2.13: "save" to 0x1010 sub 1 stores the parameters in --parameter-file; the
+// next run of the node starts with them.
+TEST(NodeCommand, SavedParametersComeBackAtTheNextRun) {
+    const auto parameters = scratch("parameters.bin");
+    std::filesystem::remove(parameters);
+    const auto client = scratch("heartbeat_time.py");
+    std::ofstream(client) << "import sys\n"
+                             "sys.path.insert(0, sys.argv[1])\n"
+                             "import can, sdo_browse\n"
+                             "bus = can.Bus(interface='socketcand', channel='can0', "
+                             "host=sys.argv[2], port=int(sys.argv[3]))\n"
+                             "sdo = sdo_browse.SdoClient(bus, 5)\n"
+                             "if sys.argv[4] == 'save':\n"
+                             "    sdo.download(0x1017, 0, (250).to_bytes(2, 'little'))\n"
+                             "    sdo.download(0x1010, 1, b'save')\n"
+                             "print('heartbeat time', int.from_bytes(sdo.upload(0x1017, 0), "
+                             "'little'))\n"
+                             "bus.shutdown()\n";
+    const auto run = [&](const std::string& action) {
+        return run_command(
+            "sh -c '" +
+            start_in_background(scratch(action + ".out"),
+                                "node --eds " + kSampleEds +
+                                    " --node-id 5 --socketcand 127.0.0.1:0 --for 60s "
+                                    "--parameter-file " +
+                                    parameters.string()) +
+            "/usr/bin/python3 " + client.string() + " " + kExampleDir +
+            " ${address%:*} ${address##*:} " + action +
+            " 2>&1; code=$?; kill -INT $pid; wait $pid; exit $code'");
+    };
+    const auto saved = run("save");
+    if (saved.exit_code != 0 && saved.output.find("No module named 'can'") != std::string::npos) {
+        GTEST_SKIP() << "python-can is not installed (Debian: python3-can)";
+    }
+    ASSERT_EQ(saved.exit_code, 0) << saved.output;
+    EXPECT_THAT(saved.output, HasSubstr("heartbeat time 250"));
+    const auto read = run("read");
+    ASSERT_EQ(read.exit_code, 0) << read.output;
+    EXPECT_THAT(read.output, HasSubstr("heartbeat time 250"));
+}
+
 struct UserError {
     std::string arguments;
     std::string message;

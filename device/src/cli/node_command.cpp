@@ -2,6 +2,7 @@
 // outside tools (python-can, CANopen browsers) join over socketcand or SocketCAN.
 #include "commands.hpp"
 #include "eposp/canmaster/canopen/eds_import.hpp"
+#include "eposp/canmaster/canopen/error_history.hpp"
 #include "eposp/canmaster/canopen/nmt_protocol.hpp"
 #include "eposp/canmaster/canopen/node.hpp"
 #include "hosted_bus.hpp"
@@ -44,6 +45,22 @@ std::uint32_t u32_or(const canopen::ObjectDictionary& od, std::uint16_t index,
                                                 : fallback;
 }
 
+/// CiA 306 leaves persistence out of an EDS, so the node decides: 0x1010 "save all parameters"
+/// stores every writable entry but the error history and the store / restore commands.
+void make_parameters_persistent(canopen::ObjectDictionary& od) {
+    constexpr std::uint16_t kStoreParameters = 0x1010;
+    constexpr std::uint16_t kRestoreDefaultParameters = 0x1011;
+    for (const auto& [index, object] : od.objects()) {
+        if (index == canopen::kPreDefinedErrorFieldIndex || index == kStoreParameters ||
+            index == kRestoreDefaultParameters) {
+            continue;
+        }
+        for (const auto& [sub_index, sub] : object.subs) {
+            od.find(index, sub_index)->persistent = canopen::writable(sub.access);
+        }
+    }
+}
+
 /// The node's configuration beyond the EDS: 0x1000 and 0x1018 come from the EDS where it has
 /// them (the node adds only what the dictionary lacks), else from its [DeviceInfo].
 canopen::NodeConfig node_config(const NodeOptions& options, const canopen::ImportedEds& eds) {
@@ -81,6 +98,7 @@ int run_node(const NodeOptions& options) {
                                   "[ManufacturerObjects] are missing or empty)",
                                   options.eds));
     }
+    make_parameters_persistent(eds->dictionary);
     auto hosted = HostedBus::open(options.hosting);
     if (!hosted) {
         return report_user_error(kCommand, hosted.error());
