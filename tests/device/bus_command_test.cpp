@@ -5,7 +5,6 @@
 #include <fstream>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <sstream>
 
 namespace eposp::device {
 namespace {
@@ -16,24 +15,7 @@ using testing::HasSubstr;
 const std::string kNetworkLog =
     std::string(EPOSP_SOURCE_DIR) + "/examples/bus-demo/canopen-network.log";
 
-class BusCommand : public testing::Test {
-protected:
-    std::filesystem::path scratch(const std::string& name) const {
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        const auto dir = std::filesystem::path(EPOSP_BINARY_DIR) / "test-output" / info->name();
-        std::filesystem::create_directories(dir);
-        return dir / name;
-    }
-};
-
-std::string read_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-TEST_F(BusCommand, VirtualReplayCarriesEveryFrameOfTheLog) {
+TEST(BusCommand, VirtualReplayCarriesEveryFrameOfTheLog) {
     const auto log = scratch("bus.log");
     const auto pcap = scratch("bus.pcap");
     const auto result = eposp("bus --virtual --for 1s --replay " + kNetworkLog + " --log " +
@@ -49,7 +31,7 @@ TEST_F(BusCommand, VirtualReplayCarriesEveryFrameOfTheLog) {
     EXPECT_EQ(std::filesystem::file_size(pcap), 24U + 113U * 32U);
 }
 
-TEST_F(BusCommand, VirtualRunsAreDeterministic) {
+TEST(BusCommand, VirtualRunsAreDeterministic) {
     const auto first = scratch("first.log");
     const auto second = scratch("second.log");
     for (const auto& log : {first, second}) {
@@ -62,7 +44,7 @@ TEST_F(BusCommand, VirtualRunsAreDeterministic) {
     EXPECT_FALSE(read_file(first).empty());
 }
 
-TEST_F(BusCommand, MalformedReplayFileIsAUserErrorNamingTheLine) {
+TEST(BusCommand, MalformedReplayFileIsAUserErrorNamingTheLine) {
     const auto bad = scratch("bad.log");
     std::ofstream(bad) << "(0.000000) can0 123#00\n(0.001000) can0 12G#00\n";
     const auto result = eposp("bus --virtual --replay " + bad.string());
@@ -70,16 +52,12 @@ TEST_F(BusCommand, MalformedReplayFileIsAUserErrorNamingTheLine) {
     EXPECT_THAT(result.output, HasSubstr(":2:"));
 }
 
-// Starts `eposp bus --socketcand 127.0.0.1:0 [options]` in the background of a shell script,
-// waits until it listens, and leaves its address in $address and its pid in $pid.
+// Starts `eposp bus --socketcand 127.0.0.1:0 [options]` in the background of a shell script.
 std::string start_real_time_bus(const std::filesystem::path& out, const std::string& options = "") {
-    return kEposp + " bus --socketcand 127.0.0.1:0 " + options + " > " + out.string() +
-           " & pid=$!; for i in $(seq 200); do address=$(sed -n \"s/^socketcand: listening on "
-           "\\([^ ]*\\).*/\\1/p\" " +
-           out.string() + "); [ -n \"$address\" ] && break; sleep 0.05; done; ";
+    return start_in_background(out, "bus --socketcand 127.0.0.1:0 " + options);
 }
 
-TEST_F(BusCommand, AddressInUseIsAUserError) {
+TEST(BusCommand, AddressInUseIsAUserError) {
     const auto out = scratch("first.out");
     const auto result = run_command("sh -c '" + start_real_time_bus(out) + kEposp +
                                     " bus --socketcand $address --for 1s 2>&1; code=$?; "
@@ -88,7 +66,7 @@ TEST_F(BusCommand, AddressInUseIsAUserError) {
     EXPECT_THAT(result.output, HasSubstr("127.0.0.1:"));
 }
 
-TEST_F(BusCommand, SigintEndsARealTimeRunCleanlyWithItsSummary) {
+TEST(BusCommand, SigintEndsARealTimeRunCleanlyWithItsSummary) {
     const auto out = scratch("bus.out");
     const auto result =
         run_command("sh -c '" + start_real_time_bus(out) + "kill -INT $pid; wait $pid'");
@@ -100,7 +78,7 @@ TEST_F(BusCommand, SigintEndsARealTimeRunCleanlyWithItsSummary) {
 
 // The issue's acceptance run: two independent socketcand clients (python-can) exchange frames
 // through `eposp bus`, and the pcap it writes holds every one of them.
-TEST_F(BusCommand, PythonCanClientsExchangeFramesAndThePcapHoldsThem) {
+TEST(BusCommand, PythonCanClientsExchangeFramesAndThePcapHoldsThem) {
     const auto out = scratch("bus.out");
     const auto pcap = scratch("bus.pcap");
     const std::string clients =
@@ -119,7 +97,7 @@ TEST_F(BusCommand, PythonCanClientsExchangeFramesAndThePcapHoldsThem) {
     EXPECT_EQ(std::filesystem::file_size(pcap), 24U + 40U * 32U);
 }
 
-TEST_F(BusCommand, TheDemoRunsToTheEnd) {
+TEST(BusCommand, TheDemoRunsToTheEnd) {
     const auto dir = scratch("demo");
     const auto result = run_command("EPOSP_DEMO_DIR=" + dir.string() + " " + EPOSP_SOURCE_DIR +
                                     "/examples/bus-demo/run.sh " + kEposp + " 2>&1");

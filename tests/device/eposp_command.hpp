@@ -2,6 +2,10 @@
 
 #include "eposp/test/run_command.hpp"
 
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
 #include <string>
 
 namespace eposp::device {
@@ -11,6 +15,32 @@ inline const std::string kEposp = EPOSP_EXECUTABLE;
 /// Runs `eposp ARGUMENTS` as a user would in a shell; the output holds stdout and stderr.
 inline test::CommandResult eposp(const std::string& arguments) {
     return test::run_command(kEposp + " " + arguments + " 2>&1");
+}
+
+/// A path for file `name` in a directory of the running test's own.
+inline std::filesystem::path scratch(const std::string& name) {
+    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    const auto dir = std::filesystem::path(EPOSP_BINARY_DIR) / "test-output" / info->name();
+    std::filesystem::create_directories(dir);
+    return dir / name;
+}
+
+inline std::string read_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// A shell-script prefix that starts `eposp ARGUMENTS` (which must serve socketcand, e.g.
+/// `bus --socketcand 127.0.0.1:0`) in the background with its output in `out`, waits until it
+/// listens, and leaves its address in $address and its pid in $pid.
+inline std::string start_in_background(const std::filesystem::path& out,
+                                       const std::string& arguments) {
+    return kEposp + " " + arguments + " > " + out.string() +
+           " & pid=$!; for i in $(seq 200); do address=$(sed -n \"s/^socketcand: listening on "
+           "\\([^ ]*\\).*/\\1/p\" " +
+           out.string() + "); [ -n \"$address\" ] && break; sleep 0.05; done; ";
 }
 
 } // namespace eposp::device
