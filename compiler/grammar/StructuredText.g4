@@ -103,12 +103,13 @@ subrange : expression '..' expression ;
 enumValue : identifier (':=' expression)? ;
 
 // ---------------------------------------------------------------------------------------------
-// Statements (7.3.3)
+// Statements (7.3.3). An assignment or call starts with any expression, so that mistakes such as
+// `x = 1;` parse and get a precise message from the AST builder instead of a syntax error.
 
 statementList : statement* ;
 
 statement
-    : postfixExpression (':=' expression)? ';'                              # expressionStatement
+    : expression (':=' expression)? ';'                                     # expressionStatement
     | IF expression THEN statementList elsifClause* (ELSE statementList)? END_IF ';'  # ifStatement
     | CASE expression OF caseBranch* (ELSE statementList)? END_CASE ';'     # caseStatement
     | FOR identifier ':=' expression TO expression (BY expression)? DO statementList END_FOR ';'

@@ -225,8 +225,7 @@ ast::ExpressionPtr AstBuilder::literal_expression(antlr4::Token& token) {
         return literal(ast::BoolLiteral{false});
     case P::NULL_REFERENCE:
         return literal(ast::NullLiteral{});
-    case P::UNTERMINATED_STRING:
-        error(where, std::string("missing closing ") + token.getText().front() + " of string");
+    case P::UNTERMINATED_STRING: // reported with the other lexical errors, before parsing
         return literal(ast::StringLiteral{});
     default:
         break;

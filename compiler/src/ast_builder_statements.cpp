@@ -30,17 +30,20 @@ ast::StatementList AstBuilder::statements(P::StatementListContext* context) {
 ast::Statement AstBuilder::statement(P::StatementContext& context) {
     const SourceRange where = range(context);
     if (auto* simple = dynamic_cast<P::ExpressionStatementContext*>(&context)) {
-        ast::ExpressionPtr target = postfix(*simple->postfixExpression());
+        ast::ExpressionPtr target = expression(*simple->expression(0));
         if (simple->ASSIGN() != nullptr) {
             if (!is_assignable(*target)) {
                 error(target->range, "the left side of ':=' must be a variable");
             }
-            return {where,
-                    ast::AssignmentStatement{std::move(target), expression(*simple->expression())}};
+            return {where, ast::AssignmentStatement{std::move(target),
+                                                    expression(*simple->expression(1))}};
         }
         if (!std::holds_alternative<ast::CallExpression>(target->node)) {
-            error(target->range, "this statement does nothing; expected an assignment ':=' or a "
-                                 "call");
+            const auto* binary = std::get_if<ast::BinaryExpression>(&target->node);
+            error(target->range,
+                  binary != nullptr && binary->op == ast::BinaryOperator::Equal
+                      ? "this statement does nothing; did you mean ':=' instead of '='?"
+                      : "this statement does nothing; expected an assignment ':=' or a call");
         }
         return {where, ast::CallStatement{std::move(target)}};
     }

@@ -2,6 +2,7 @@
 
 #include "utf8.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -401,17 +402,18 @@ Result<ast::Literal> decode_string(std::string_view text, bool wide) {
         }
         const std::size_t hex_digits = wide ? 4 : 2;
         const std::string_view hex = body.substr(i + 1, hex_digits);
-        const Result<std::uint64_t> code =
-            hex.size() == hex_digits && hex.find('_') == std::string_view::npos
-                ? parse_digits(hex, 16)
-                : Result<std::uint64_t>(Error{});
-        if (!code) {
-            return Error{
-                "invalid escape " +
-                quoted(body.substr(i, std::min<std::size_t>(hex_digits + 1, body.size() - i))) +
-                " in string; use $$, $', $\", $L, $N, $P, $R, $T or $ followed by " +
-                std::to_string(hex_digits) + " hex digits"};
+        const bool all_hex =
+            hex.size() == hex_digits && std::all_of(hex.begin(), hex.end(), [](char c) {
+                return std::isxdigit(static_cast<unsigned char>(c)) != 0;
+            });
+        if (!all_hex) {
+            const std::size_t shown =
+                std::isxdigit(static_cast<unsigned char>(body[i + 1])) ? hex.size() + 1 : 2;
+            return Error{"invalid escape " + quoted(body.substr(i, shown)) +
+                         " in string; use $$, $', $\", $L, $N, $P, $R, $T or $ followed by " +
+                         std::to_string(hex_digits) + " hex digits"};
         }
+        const Result<std::uint64_t> code = parse_digits(hex, 16);
         append(static_cast<char32_t>(*code));
         i += 1 + hex_digits;
     }

@@ -50,22 +50,29 @@ std::string valid_utf8(const SourceManager& sources, FileId file, Diagnostics& d
     return text;
 }
 
-// An unclosed comment lexes as '(' '*' (or '/' '*') with nothing between: a pair that no ST
-// construct contains. Everything after it is comment text, so nothing else is worth reporting.
-bool report_unterminated_comment(antlr4::CommonTokenStream& tokens, FileId file,
-                                 Diagnostics& diagnostics) {
+// Lexical errors, reported before parsing. An unclosed comment lexes as '(' '*' (or '/' '*')
+// with nothing between, a pair that no ST construct contains; everything after it is comment
+// text, so the file is not parsed further. An unclosed string ends at the end of its line.
+bool report_lexical_errors(antlr4::CommonTokenStream& tokens, FileId file,
+                           Diagnostics& diagnostics) {
     const std::vector<antlr4::Token*>& all = tokens.getTokens();
-    for (std::size_t i = 0; i + 1 < all.size(); ++i) {
-        const std::size_t opening = all[i]->getType();
-        if ((opening == StructuredTextLexer::LEFT_PAREN || opening == StructuredTextLexer::SLASH) &&
-            all[i + 1]->getType() == StructuredTextLexer::STAR &&
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const std::size_t type = all[i]->getType();
+        if (type == StructuredTextLexer::UNTERMINATED_STRING) {
+            diagnostics.error(token_range(file, *all[i]), std::string("missing closing ") +
+                                                              all[i]->getText().front() +
+                                                              " at the end of this string");
+            continue;
+        }
+        if ((type == StructuredTextLexer::LEFT_PAREN || type == StructuredTextLexer::SLASH) &&
+            i + 1 < all.size() && all[i + 1]->getType() == StructuredTextLexer::STAR &&
             all[i + 1]->getStartIndex() == all[i]->getStartIndex() + 1) {
             diagnostics.error(token_range(file, *all[i], *all[i + 1]),
                               "comment opened with '" + all[i]->getText() + "*' is never closed");
-            return true;
+            return false;
         }
     }
-    return false;
+    return true;
 }
 
 void set_prediction_mode(StructuredTextParser& parser, antlr4::atn::PredictionMode mode) {
@@ -103,7 +110,7 @@ ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostic
     lexer.removeErrorListeners(); // INVALID_CHARACTER leaves the lexer nothing to report
     antlr4::CommonTokenStream tokens(&lexer);
     tokens.fill();
-    if (report_unterminated_comment(tokens, file, diagnostics) ||
+    if (!report_lexical_errors(tokens, file, diagnostics) ||
         !check_nesting(tokens.getTokens(), file, diagnostics)) {
         return ast::CompilationUnit{file, {}, {}, {}};
     }

@@ -158,6 +158,13 @@ std::string_view what_semicolon_ends(antlr4::ParserRuleContext* context) {
     }
 }
 
+// An unterminated string swallows the rest of its line, ';' included: what the parser then
+// misses is a consequence of the error already reported for the string.
+bool follows_unterminated_string(antlr4::Parser* parser) {
+    const antlr4::Token* previous = parser->getTokenStream()->LT(-1);
+    return previous != nullptr && previous->getType() == StructuredTextParser::UNTERMINATED_STRING;
+}
+
 } // namespace
 
 SyntaxErrorStrategy::SyntaxErrorStrategy(FileId file, Diagnostics& diagnostics)
@@ -165,6 +172,9 @@ SyntaxErrorStrategy::SyntaxErrorStrategy(FileId file, Diagnostics& diagnostics)
 
 void SyntaxErrorStrategy::report_unexpected(antlr4::Parser* parser, antlr4::Token* token,
                                             const antlr4::misc::IntervalSet& expected) {
+    if (follows_unterminated_string(parser)) {
+        return;
+    }
     const std::string description = describe_expected(parser->getVocabulary(), expected);
     std::string message;
     if (token->getType() == StructuredTextParser::INVALID_CHARACTER) {
@@ -197,6 +207,9 @@ void SyntaxErrorStrategy::reportUnwantedToken(antlr4::Parser* parser) {
         return;
     }
     beginErrorCondition(parser);
+    if (follows_unterminated_string(parser)) {
+        return;
+    }
     antlr4::Token* token = parser->getCurrentToken();
     const std::string message = token->getType() == StructuredTextParser::INVALID_CHARACTER
                                     ? "unexpected character " + found_name(*token)
@@ -212,6 +225,9 @@ void SyntaxErrorStrategy::reportMissingToken(antlr4::Parser* parser) {
         return;
     }
     beginErrorCondition(parser);
+    if (follows_unterminated_string(parser)) {
+        return;
+    }
     const antlr4::misc::IntervalSet expected = getExpectedTokens(parser);
     const std::string description = describe_expected(parser->getVocabulary(), expected);
     std::string message = description.empty()

@@ -125,13 +125,13 @@ public:
                            child(*v.selector);
                            for (const CaseBranch& branch : v.branches) {
                                out_ << " (";
-                               for (const CaseLabel& label : branch.labels) {
-                                   expression(*label.low);
-                                   if (label.high) {
+                               for (std::size_t i = 0; i < branch.labels.size(); ++i) {
+                                   out_ << (i > 0 ? " " : "");
+                                   expression(*branch.labels[i].low);
+                                   if (branch.labels[i].high) {
                                        out_ << "..";
-                                       expression(*label.high);
+                                       expression(*branch.labels[i].high);
                                    }
-                                   out_ << " ";
                                }
                                block(":", branch.body);
                                out_ << ")";
