@@ -10,10 +10,6 @@ bool is_string_type(ast::ElementaryType type) {
     return type == ast::ElementaryType::String || type == ast::ElementaryType::Wstring;
 }
 
-} // namespace
-
-namespace {
-
 // A type by name: an elementary type keyword, or a derived/FB type to resolve later.
 ast::TypeSpec named_type(ast::Identifier name) {
     const SourceRange where = name.range;

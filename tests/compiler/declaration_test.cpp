@@ -127,6 +127,9 @@ TEST(VarSection, LocatedVariables) {
     EXPECT_EQ(variables[2].address->area, Address::Area::Memory);
     EXPECT_EQ(variables[2].address->size, Address::Size::DoubleWord);
     EXPECT_TRUE(variables[3].address->path.empty());
+    EXPECT_EQ(ast::to_sexpr(parsed.unit),
+              "(program P (var i (at %IX0.7) BOOL) (var q (at %QW4) WORD) "
+              "(var m (at %MD10) DINT) (var any (at %I*) BYTE) (body))\n");
 }
 
 TEST(VarSection, AtWithSeveralNamesIsAnError) {

@@ -245,7 +245,7 @@ public:
             out_ << " " << name.name;
         }
         if (v.address) {
-            out_ << " (at " << v.address->path.size() << ")";
+            address(*v.address);
         }
         out_ << " ";
         type(v.type);
@@ -356,6 +356,16 @@ private:
             statement(s);
         }
         out_ << ")";
+    }
+    void address(const DirectAddress& a) {
+        static constexpr std::string_view kAreas = "IQM";
+        static constexpr std::string_view kSizes[] = {"", "X", "B", "W", "D", "L"};
+        out_ << " (at %" << kAreas[static_cast<std::size_t>(a.area)]
+             << kSizes[static_cast<std::size_t>(a.size)];
+        for (std::size_t i = 0; i < a.path.size(); ++i) {
+            out_ << (i > 0 ? "." : "") << a.path[i];
+        }
+        out_ << (a.path.empty() ? "*)" : ")");
     }
     void type_suffix(const std::optional<ElementaryType>& type) {
         if (type) {
