@@ -104,18 +104,19 @@ enumValue : identifier (':=' expression)? ;
 
 // ---------------------------------------------------------------------------------------------
 // Statements (7.3.3). An assignment or call starts with any expression, so that mistakes such as
-// `x = 1;` parse and get a precise message from the AST builder instead of a syntax error.
+// `x = 1;` parse and get a precise message from the AST builder instead of a syntax error. The
+// ';' after END_IF and the other END_ keywords may be left out, as common tools allow.
 
 statementList : statement* ;
 
 statement
     : expression (':=' expression)? ';'                                     # expressionStatement
-    | IF expression THEN statementList elsifClause* (ELSE statementList)? END_IF ';'  # ifStatement
-    | CASE expression OF caseBranch* (ELSE statementList)? END_CASE ';'     # caseStatement
-    | FOR identifier ':=' expression TO expression (BY expression)? DO statementList END_FOR ';'
+    | IF expression THEN statementList elsifClause* (ELSE statementList)? END_IF ';'?  # ifStatement
+    | CASE expression OF caseBranch* (ELSE statementList)? END_CASE ';'?     # caseStatement
+    | FOR identifier ':=' expression TO expression (BY expression)? DO statementList END_FOR ';'?
                                                                             # forStatement
-    | WHILE expression DO statementList END_WHILE ';'                       # whileStatement
-    | REPEAT statementList UNTIL expression END_REPEAT ';'                  # repeatStatement
+    | WHILE expression DO statementList END_WHILE ';'?                       # whileStatement
+    | REPEAT statementList UNTIL expression END_REPEAT ';'?                  # repeatStatement
     | EXIT ';'                                                              # exitStatement
     | CONTINUE ';'                                                          # continueStatement
     | RETURN ';'                                                            # returnStatement
@@ -165,6 +166,7 @@ primaryExpression
     | identifier                                                            # nameExpression
     | '(' expression ')'                                                    # parenthesizedExpression
     | REF '(' expression ')'                                                # refExpression
+    | DIRECT_ADDRESS                                                        # directAddressExpression
     ;
 
 argumentList : argument (',' argument)* ;

@@ -209,6 +209,12 @@ ast::ExpressionPtr AstBuilder::primary(P::PrimaryExpressionContext& context) {
     if (auto* parenthesized = dynamic_cast<P::ParenthesizedExpressionContext*>(&context)) {
         return expression(*parenthesized->expression());
     }
+    if (auto* located = dynamic_cast<P::DirectAddressExpressionContext*>(&context)) {
+        std::optional<ast::DirectAddress> address =
+            direct_address(*located->DIRECT_ADDRESS()->getSymbol());
+        return make(range(context),
+                    ast::DirectAddressExpression{address.value_or(ast::DirectAddress{})});
+    }
     auto& reference = dynamic_cast<P::RefExpressionContext&>(context);
     return make(range(context), ast::ReferenceExpression{expression(*reference.expression())});
 }

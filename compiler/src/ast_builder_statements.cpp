@@ -8,6 +8,7 @@ using P = generated::StructuredTextParser;
 
 bool is_assignable(const ast::Expression& target) {
     return std::holds_alternative<ast::NameExpression>(target.node) ||
+           std::holds_alternative<ast::DirectAddressExpression>(target.node) ||
            std::holds_alternative<ast::MemberExpression>(target.node) ||
            std::holds_alternative<ast::BitAccessExpression>(target.node) ||
            std::holds_alternative<ast::IndexExpression>(target.node) ||

@@ -39,6 +39,7 @@ constexpr std::size_t kExpressionStarts[] = {
     StructuredTextParser::PLUS,
     StructuredTextParser::NOT,
     StructuredTextParser::REF,
+    StructuredTextParser::DIRECT_ADDRESS,
 };
 constexpr std::size_t kStatementStarts[] = {
     StructuredTextParser::IF,       StructuredTextParser::CASE,   StructuredTextParser::FOR,
@@ -165,6 +166,27 @@ bool follows_unterminated_string(antlr4::Parser* parser) {
     return previous != nullptr && previous->getType() == StructuredTextParser::UNTERMINATED_STRING;
 }
 
+bool closes_a_block(std::size_t token) {
+    switch (token) {
+    case StructuredTextParser::END_IF:
+    case StructuredTextParser::END_CASE:
+    case StructuredTextParser::END_FOR:
+    case StructuredTextParser::END_WHILE:
+    case StructuredTextParser::END_REPEAT:
+    case StructuredTextParser::END_VAR:
+    case StructuredTextParser::END_STRUCT:
+    case StructuredTextParser::END_TYPE:
+    case StructuredTextParser::END_FUNCTION:
+    case StructuredTextParser::END_FUNCTION_BLOCK:
+    case StructuredTextParser::END_PROGRAM:
+    case StructuredTextParser::END_RESOURCE:
+    case StructuredTextParser::END_CONFIGURATION:
+        return true;
+    default:
+        return false;
+    }
+}
+
 } // namespace
 
 SyntaxErrorStrategy::SyntaxErrorStrategy(FileId file, Diagnostics& diagnostics)
@@ -218,6 +240,16 @@ void SyntaxErrorStrategy::reportUnwantedToken(antlr4::Parser* parser) {
         describe_expected(parser->getVocabulary(), getExpectedTokens(parser));
     diagnostics_.error(token_range(file_, *token),
                        description.empty() ? message : message + "; expected " + description);
+}
+
+// Dropping a block's closing keyword because the token after it fits (`x := 1 END_IF;`) would
+// leave the block open and cascade into errors up to the end of the file; the better guess is
+// that something is missing before the keyword.
+antlr4::Token* SyntaxErrorStrategy::singleTokenDeletion(antlr4::Parser* parser) {
+    if (closes_a_block(parser->getCurrentToken()->getType())) {
+        return nullptr;
+    }
+    return DefaultErrorStrategy::singleTokenDeletion(parser);
 }
 
 void SyntaxErrorStrategy::reportMissingToken(antlr4::Parser* parser) {

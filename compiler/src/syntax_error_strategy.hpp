@@ -22,6 +22,7 @@ protected:
                                const antlr4::FailedPredicateException& error) override;
     void reportUnwantedToken(antlr4::Parser* parser) override;
     void reportMissingToken(antlr4::Parser* parser) override;
+    antlr4::Token* singleTokenDeletion(antlr4::Parser* parser) override;
 
 private:
     void report_unexpected(antlr4::Parser* parser, antlr4::Token* token,

@@ -76,7 +76,7 @@ TEST(ErrorRecovery, ReportsEveryBrokenStatement) {
                                            "  a := 1\n"
                                            "  b := 2;\n"
                                            "  c := (3 + ;\n"
-                                           "  IF d THEN e := 4; END_IF\n"
+                                           "  IF d THEN e := 4 END_IF;\n"
                                            "  f := 5;\n"
                                            "END_PROGRAM\n");
     std::vector<std::pair<std::uint32_t, std::string>> errors;

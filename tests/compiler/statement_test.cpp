@@ -76,6 +76,17 @@ TEST(Statement, KeywordsAreCaseInsensitive) {
               "(int 2))))");
 }
 
+TEST(Statement, SemicolonAfterEndKeywordsMayBeOmitted) {
+    EXPECT_EQ(statements_sexpr("IF a THEN x := 1; END_IF WHILE b DO ; END_WHILE y := 2;"),
+              "(if (name a) (then (assign (name x) (int 1)))) (while (name b) (do (empty))) "
+              "(assign (name y) (int 2))");
+}
+
+TEST(Statement, DirectlyAddressedVariablesInCode) {
+    EXPECT_EQ(statements_sexpr("%QX1.0 := %IX0.7 AND NOT %MX3.1;"),
+              "(assign (at %QX1.0) (AND (at %IX0.7) (NOT (at %MX3.1))))");
+}
+
 TEST(Statement, CommentsAndPragmasAreSkipped) {
     EXPECT_EQ(statements_sexpr("(* a (* nested *) comment *) x := 1; // line\n/* c /* n */ */ "
                                "{attribute 'hide'} y := 2;"),

@@ -68,6 +68,7 @@ public:
         std::visit(Overloaded{
                        [&](const LiteralExpression& v) { literal(v.value); },
                        [&](const NameExpression& v) { out_ << "(name " << v.name.name << ")"; },
+                       [&](const DirectAddressExpression& v) { address(v.address); },
                        [&](const MemberExpression& v) {
                            open("member");
                            child(*v.object);
@@ -245,6 +246,7 @@ public:
             out_ << " " << name.name;
         }
         if (v.address) {
+            out_ << " ";
             address(*v.address);
         }
         out_ << " ";
@@ -360,7 +362,7 @@ private:
     void address(const DirectAddress& a) {
         static constexpr std::string_view kAreas = "IQM";
         static constexpr std::string_view kSizes[] = {"", "X", "B", "W", "D", "L"};
-        out_ << " (at %" << kAreas[static_cast<std::size_t>(a.area)]
+        out_ << "(at %" << kAreas[static_cast<std::size_t>(a.area)]
              << kSizes[static_cast<std::size_t>(a.size)];
         for (std::size_t i = 0; i < a.path.size(); ++i) {
             out_ << (i > 0 ? "." : "") << a.path[i];

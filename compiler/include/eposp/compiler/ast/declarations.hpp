@@ -1,5 +1,6 @@
 #pragma once
 
+#include "eposp/compiler/ast/direct_address.hpp"
 #include "eposp/compiler/ast/expressions.hpp"
 #include "eposp/compiler/ast/identifier.hpp"
 #include "eposp/compiler/ast/statements.hpp"
@@ -34,17 +35,6 @@ struct Initializer {
     SourceRange range;
     std::variant<ExpressionPtr, std::vector<ArrayInitElement>, std::vector<StructInitElement>>
         value;
-};
-
-/// `%IX0.0`, `%QW4`, `%MD10`, `%I*` (ed. 3, 6.5.5).
-struct DirectAddress {
-    enum class Area { Input, Output, Memory };
-    /// X (bit), B, W, D, L; `None` when no size prefix is written (a bit).
-    enum class Size { None, Bit, Byte, Word, DoubleWord, LongWord };
-    Area area = Area::Input;
-    Size size = Size::None;
-    std::vector<std::uint32_t> path; // empty for the unspecified `*`
-    SourceRange range;
 };
 
 /// `a, b AT %IX0.0 : INT := 5;` (AT only with a single name).

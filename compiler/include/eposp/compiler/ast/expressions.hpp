@@ -1,5 +1,6 @@
 #pragma once
 
+#include "eposp/compiler/ast/direct_address.hpp"
 #include "eposp/compiler/ast/identifier.hpp"
 #include "eposp/compiler/ast/literals.hpp"
 
@@ -40,6 +41,11 @@ struct LiteralExpression {
 /// A variable, constant, POU, enumeration value or type named on its own.
 struct NameExpression {
     Identifier name;
+};
+
+/// `%IX0.0` used directly in code.
+struct DirectAddressExpression {
+    DirectAddress address;
 };
 
 /// `object.member`: structure element, FB instance variable (later also method).
@@ -98,9 +104,9 @@ struct BinaryExpression {
 
 struct Expression {
     SourceRange range;
-    std::variant<LiteralExpression, NameExpression, MemberExpression, BitAccessExpression,
-                 IndexExpression, DereferenceExpression, ReferenceExpression, CallExpression,
-                 UnaryExpression, BinaryExpression>
+    std::variant<LiteralExpression, NameExpression, DirectAddressExpression, MemberExpression,
+                 BitAccessExpression, IndexExpression, DereferenceExpression, ReferenceExpression,
+                 CallExpression, UnaryExpression, BinaryExpression>
         node;
 };
 
