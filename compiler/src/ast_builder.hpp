@@ -1,0 +1,75 @@
+#pragma once
+
+#include "StructuredTextParser.h"
+#include "eposp/compiler/ast/compilation_unit.hpp"
+#include "eposp/compiler/diagnostics.hpp"
+
+namespace eposp::compiler {
+
+/// Turns a parse tree without syntax errors into our typed AST: literal values decoded, names
+/// and locations kept, everything the grammar matched loosely checked here with a precise
+/// message. The parse tree can be dropped afterwards.
+ast::CompilationUnit build_ast(generated::StructuredTextParser::CompilationUnitContext& tree,
+                               FileId file, Diagnostics& diagnostics);
+
+/// The builder's state, shared by its parts (declarations, statements, expressions), each in
+/// its own file.
+class AstBuilder {
+public:
+    using P = generated::StructuredTextParser;
+
+    AstBuilder(FileId file, Diagnostics& diagnostics) : file_(file), diagnostics_(diagnostics) {}
+
+    ast::CompilationUnit compilation_unit(P::CompilationUnitContext& context);
+
+    // ast_builder_declarations.cpp
+    ast::TypeDeclaration type_declaration(P::TypeDeclarationContext& context);
+    ast::Pou function(P::FunctionDeclarationContext& context);
+    ast::Pou function_block(P::FunctionBlockDeclarationContext& context);
+    ast::Pou program(P::ProgramDeclarationContext& context);
+    ast::Configuration configuration(P::ConfigurationDeclarationContext& context);
+    ast::Resource resource(P::ResourceBodyContext& body, ast::Identifier name,
+                           std::optional<ast::Identifier> processor, SourceRange range);
+    ast::TaskDeclaration task(P::TaskDeclarationContext& context);
+    ast::ProgramInstance program_instance(P::ProgramConfigurationContext& context);
+    std::vector<ast::DeclarationSection> sections(const std::vector<P::VarSectionContext*>& all);
+    ast::VariableDeclaration variable(P::VarDeclarationContext& context);
+    std::optional<ast::DirectAddress> direct_address(antlr4::Token& token);
+    ast::InitializerPtr initializer(P::InitializerContext* context);
+
+    // ast_builder_types.cpp
+    ast::TypeSpec type_spec(P::TypeSpecContext& context);
+
+    // ast_builder_statements.cpp
+    ast::StatementList statements(P::StatementListContext* context);
+    ast::Statement statement(P::StatementContext& context);
+
+    // ast_builder_expressions.cpp
+    ast::ExpressionPtr expression(P::ExpressionContext& context);
+    ast::ExpressionPtr postfix(P::PostfixExpressionContext& context);
+    std::vector<ast::Argument> arguments(P::ArgumentListContext* context);
+    ast::ExpressionPtr literal_expression(antlr4::Token& token);
+
+    ast::Identifier identifier(P::IdentifierContext& context);
+    SourceRange range(antlr4::ParserRuleContext& context) const;
+    SourceRange range(antlr4::Token& token) const;
+    void error(const SourceRange& range, std::string message);
+
+private:
+    template <typename Operand>
+    ast::ExpressionPtr binary_chain(antlr4::ParserRuleContext& context);
+    ast::ExpressionPtr operand(P::XorExpressionContext& context);
+    ast::ExpressionPtr operand(P::AndExpressionContext& context);
+    ast::ExpressionPtr operand(P::EqualityExpressionContext& context);
+    ast::ExpressionPtr operand(P::ComparisonExpressionContext& context);
+    ast::ExpressionPtr operand(P::AdditiveExpressionContext& context);
+    ast::ExpressionPtr operand(P::MultiplicativeExpressionContext& context);
+    ast::ExpressionPtr operand(P::PowerExpressionContext& context);
+    ast::ExpressionPtr operand(P::UnaryExpressionContext& context);
+    ast::ExpressionPtr primary(P::PrimaryExpressionContext& context);
+
+    FileId file_;
+    Diagnostics& diagnostics_;
+};
+
+} // namespace eposp::compiler

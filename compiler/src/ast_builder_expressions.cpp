@@ -1,0 +1,303 @@
+#include "ast_builder.hpp"
+#include "literal_decoder.hpp"
+#include "token_range.hpp"
+
+namespace eposp::compiler {
+
+namespace {
+
+using P = generated::StructuredTextParser;
+
+template <typename Node>
+ast::ExpressionPtr make(SourceRange range, Node node) {
+    return std::make_unique<ast::Expression>(ast::Expression{range, std::move(node)});
+}
+
+SourceRange span(const SourceRange& first, const SourceRange& last) {
+    return {first.file, first.begin, last.end};
+}
+
+// IEC 61131-3 ed. 3, table 71.
+ast::BinaryOperator binary_operator(std::size_t token) {
+    switch (token) {
+    case P::POWER:
+        return ast::BinaryOperator::Power;
+    case P::STAR:
+        return ast::BinaryOperator::Multiply;
+    case P::SLASH:
+        return ast::BinaryOperator::Divide;
+    case P::MOD:
+        return ast::BinaryOperator::Modulo;
+    case P::PLUS:
+        return ast::BinaryOperator::Add;
+    case P::MINUS:
+        return ast::BinaryOperator::Subtract;
+    case P::LESS:
+        return ast::BinaryOperator::Less;
+    case P::GREATER:
+        return ast::BinaryOperator::Greater;
+    case P::LESS_EQUAL:
+        return ast::BinaryOperator::LessEqual;
+    case P::GREATER_EQUAL:
+        return ast::BinaryOperator::GreaterEqual;
+    case P::EQUAL:
+        return ast::BinaryOperator::Equal;
+    case P::NOT_EQUAL:
+        return ast::BinaryOperator::NotEqual;
+    case P::AND:
+    case P::AMPERSAND:
+        return ast::BinaryOperator::And;
+    case P::XOR:
+        return ast::BinaryOperator::Xor;
+    default:
+        return ast::BinaryOperator::Or;
+    }
+}
+
+std::optional<LiteralForm> literal_form(std::size_t token) {
+    switch (token) {
+    case P::INTEGER:
+        return LiteralForm::Integer;
+    case P::BASED_INTEGER:
+        return LiteralForm::BasedInteger;
+    case P::REAL_LITERAL:
+        return LiteralForm::Real;
+    case P::STRING_LITERAL:
+        return LiteralForm::String;
+    case P::WSTRING_LITERAL:
+        return LiteralForm::WideString;
+    case P::TIME_LITERAL:
+        return LiteralForm::Duration;
+    case P::DATE_LITERAL:
+        return LiteralForm::Date;
+    case P::TIME_OF_DAY_LITERAL:
+        return LiteralForm::TimeOfDay;
+    case P::DATE_AND_TIME_LITERAL:
+        return LiteralForm::DateAndTime;
+    case P::TYPED_LITERAL:
+        return LiteralForm::Typed;
+    default:
+        return std::nullopt;
+    }
+}
+
+// `-5` is the literal -5, not a negation of 5, so that -2^63 fits a LINT and typed contexts see
+// the literal value. Typed literals carry their own sign (`INT#-5`).
+bool negate_literal(ast::Expression& operand) {
+    auto* literal = std::get_if<ast::LiteralExpression>(&operand.node);
+    if (literal == nullptr) {
+        return false;
+    }
+    if (auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value);
+        integer != nullptr && !integer->type && !integer->negative) {
+        integer->negative = integer->magnitude != 0;
+        return true;
+    }
+    if (auto* real = std::get_if<ast::RealLiteral>(&literal->value);
+        real != nullptr && !real->type && real->value >= 0.0) {
+        real->value = -real->value;
+        return true;
+    }
+    return false;
+}
+
+} // namespace
+
+template <typename Operand>
+ast::ExpressionPtr AstBuilder::binary_chain(antlr4::ParserRuleContext& context) {
+    ast::ExpressionPtr result;
+    ast::BinaryOperator pending = ast::BinaryOperator::Or;
+    for (antlr4::tree::ParseTree* child : context.children) {
+        if (auto* terminal = dynamic_cast<antlr4::tree::TerminalNode*>(child)) {
+            pending = binary_operator(terminal->getSymbol()->getType());
+            continue;
+        }
+        ast::ExpressionPtr value = operand(*static_cast<Operand*>(child));
+        if (!result) {
+            result = std::move(value);
+            continue;
+        }
+        const SourceRange whole = span(result->range, value->range);
+        result = make(whole, ast::BinaryExpression{pending, std::move(result), std::move(value)});
+    }
+    return result;
+}
+
+ast::ExpressionPtr AstBuilder::expression(P::ExpressionContext& context) {
+    return binary_chain<P::XorExpressionContext>(context);
+}
+ast::ExpressionPtr AstBuilder::operand(P::XorExpressionContext& context) {
+    return binary_chain<P::AndExpressionContext>(context);
+}
+ast::ExpressionPtr AstBuilder::operand(P::AndExpressionContext& context) {
+    return binary_chain<P::EqualityExpressionContext>(context);
+}
+ast::ExpressionPtr AstBuilder::operand(P::EqualityExpressionContext& context) {
+    return binary_chain<P::ComparisonExpressionContext>(context);
+}
+ast::ExpressionPtr AstBuilder::operand(P::ComparisonExpressionContext& context) {
+    return binary_chain<P::AdditiveExpressionContext>(context);
+}
+ast::ExpressionPtr AstBuilder::operand(P::AdditiveExpressionContext& context) {
+    return binary_chain<P::MultiplicativeExpressionContext>(context);
+}
+ast::ExpressionPtr AstBuilder::operand(P::MultiplicativeExpressionContext& context) {
+    return binary_chain<P::PowerExpressionContext>(context);
+}
+ast::ExpressionPtr AstBuilder::operand(P::PowerExpressionContext& context) {
+    return binary_chain<P::UnaryExpressionContext>(context);
+}
+
+ast::ExpressionPtr AstBuilder::operand(P::UnaryExpressionContext& context) {
+    if (context.op == nullptr) {
+        return postfix(*context.postfixExpression());
+    }
+    ast::ExpressionPtr value = operand(*context.unaryExpression());
+    const SourceRange whole = span(range(*context.op), value->range);
+    if (context.op->getType() == P::MINUS && negate_literal(*value)) {
+        value->range = whole;
+        return value;
+    }
+    const ast::UnaryOperator op = context.op->getType() == P::MINUS  ? ast::UnaryOperator::Negate
+                                  : context.op->getType() == P::PLUS ? ast::UnaryOperator::Plus
+                                                                     : ast::UnaryOperator::Not;
+    return make(whole, ast::UnaryExpression{op, std::move(value)});
+}
+
+ast::ExpressionPtr AstBuilder::postfix(P::PostfixExpressionContext& context) {
+    ast::ExpressionPtr result = primary(*context.primaryExpression());
+    for (P::PostfixOperatorContext* op : context.postfixOperator()) {
+        const SourceRange whole = span(result->range, range(*op));
+        if (auto* member = dynamic_cast<P::MemberAccessContext*>(op)) {
+            result = make(
+                whole, ast::MemberExpression{std::move(result), identifier(*member->identifier())});
+        } else if (auto* bit = dynamic_cast<P::BitAccessContext*>(op)) {
+            const auto index = decode_literal(LiteralForm::Integer, bit->INTEGER()->getText());
+            const auto* value = index ? std::get_if<ast::IntegerLiteral>(&*index) : nullptr;
+            if (value == nullptr || value->magnitude > 63) {
+                error(range(*bit), "bit number " + bit->INTEGER()->getText() +
+                                       " is out of range; the widest bit string (LWORD) has "
+                                       "bits 0 to 63");
+            }
+            const auto number = static_cast<std::uint32_t>(value != nullptr ? value->magnitude : 0);
+            result = make(whole, ast::BitAccessExpression{std::move(result), number});
+        } else if (auto* index = dynamic_cast<P::IndexAccessContext*>(op)) {
+            std::vector<ast::ExpressionPtr> indices;
+            for (P::ExpressionContext* subscript : index->expression()) {
+                indices.push_back(expression(*subscript));
+            }
+            result = make(whole, ast::IndexExpression{std::move(result), std::move(indices)});
+        } else if (dynamic_cast<P::DereferenceContext*>(op) != nullptr) {
+            result = make(whole, ast::DereferenceExpression{std::move(result)});
+        } else if (auto* call = dynamic_cast<P::CallArgumentsContext*>(op)) {
+            result = make(whole,
+                          ast::CallExpression{std::move(result), arguments(call->argumentList())});
+        }
+    }
+    return result;
+}
+
+ast::ExpressionPtr AstBuilder::primary(P::PrimaryExpressionContext& context) {
+    if (auto* literal = dynamic_cast<P::LiteralExpressionContext*>(&context)) {
+        return literal_expression(*literal->literal()->getStart());
+    }
+    if (auto* name = dynamic_cast<P::NameExpressionContext*>(&context)) {
+        ast::Identifier id = identifier(*name->identifier());
+        const SourceRange where = id.range;
+        return make(where, ast::NameExpression{std::move(id)});
+    }
+    if (auto* parenthesized = dynamic_cast<P::ParenthesizedExpressionContext*>(&context)) {
+        return expression(*parenthesized->expression());
+    }
+    if (auto* located = dynamic_cast<P::DirectAddressExpressionContext*>(&context)) {
+        std::optional<ast::DirectAddress> address =
+            direct_address(*located->DIRECT_ADDRESS()->getSymbol());
+        return make(range(context),
+                    ast::DirectAddressExpression{address.value_or(ast::DirectAddress{})});
+    }
+    auto& reference = dynamic_cast<P::RefExpressionContext&>(context);
+    return make(range(context), ast::ReferenceExpression{expression(*reference.expression())});
+}
+
+ast::ExpressionPtr AstBuilder::literal_expression(antlr4::Token& token) {
+    const SourceRange where = range(token);
+    const auto literal = [&](ast::Literal value) {
+        return make(where, ast::LiteralExpression{std::move(value)});
+    };
+    switch (token.getType()) {
+    case P::TRUE:
+        return literal(ast::BoolLiteral{true});
+    case P::FALSE:
+        return literal(ast::BoolLiteral{false});
+    case P::NULL_REFERENCE:
+        return literal(ast::NullLiteral{});
+    case P::UNTERMINATED_STRING: // reported with the other lexical errors, before parsing
+        return literal(ast::StringLiteral{});
+    default:
+        break;
+    }
+    core::Result<ast::Literal> decoded =
+        decode_literal(*literal_form(token.getType()), token.getText());
+    if (!decoded) {
+        error(where, decoded.error());
+        return literal(ast::IntegerLiteral{}); // placeholder; the unit has errors anyway
+    }
+    if (auto* enum_value = std::get_if<ast::EnumValueLiteral>(&*decoded)) {
+        // Names are ASCII, so their lengths in bytes are lengths in columns.
+        const auto prefix = static_cast<std::uint32_t>(enum_value->type_name.name.size());
+        enum_value->type_name.range = {
+            file_, where.begin, {where.begin.line, where.begin.column + prefix - 1}};
+        enum_value->value.range = {
+            file_, {where.begin.line, where.begin.column + prefix + 1}, where.end};
+    }
+    return literal(std::move(*decoded));
+}
+
+std::vector<ast::Argument> AstBuilder::arguments(P::ArgumentListContext* context) {
+    std::vector<ast::Argument> result;
+    if (context == nullptr) {
+        return result;
+    }
+    for (P::ArgumentContext* argument : context->argument()) {
+        ast::Argument built;
+        built.range = range(*argument);
+        if (auto* input = dynamic_cast<P::InputArgumentContext*>(argument)) {
+            built.kind = ast::Argument::Kind::Input;
+            built.name = identifier(*input->identifier());
+            built.value = expression(*input->expression());
+        } else if (auto* output = dynamic_cast<P::OutputArgumentContext*>(argument)) {
+            built.kind = ast::Argument::Kind::Output;
+            built.name = identifier(*output->identifier());
+            built.negated = output->NOT() != nullptr;
+            built.value = expression(*output->expression());
+        } else {
+            built.value =
+                expression(*dynamic_cast<P::PositionalArgumentContext&>(*argument).expression());
+        }
+        result.push_back(std::move(built));
+    }
+    return result;
+}
+
+ast::Identifier AstBuilder::identifier(P::IdentifierContext& context) {
+    return {context.getText(), range(context)};
+}
+
+SourceRange AstBuilder::range(antlr4::ParserRuleContext& context) const {
+    antlr4::Token* start = context.getStart();
+    antlr4::Token* stop = context.getStop();
+    if (stop == nullptr || stop->getTokenIndex() < start->getTokenIndex()) {
+        return token_range(file_, *start); // an empty rule such as an empty statement list
+    }
+    return token_range(file_, *start, *stop);
+}
+
+SourceRange AstBuilder::range(antlr4::Token& token) const {
+    return token_range(file_, token);
+}
+
+void AstBuilder::error(const SourceRange& where, std::string message) {
+    diagnostics_.error(where, std::move(message));
+}
+
+} // namespace eposp::compiler

@@ -1,0 +1,112 @@
+#include "ast_builder.hpp"
+
+namespace eposp::compiler {
+
+namespace {
+
+using P = generated::StructuredTextParser;
+
+bool is_assignable(const ast::Expression& target) {
+    return std::holds_alternative<ast::NameExpression>(target.node) ||
+           std::holds_alternative<ast::DirectAddressExpression>(target.node) ||
+           std::holds_alternative<ast::MemberExpression>(target.node) ||
+           std::holds_alternative<ast::BitAccessExpression>(target.node) ||
+           std::holds_alternative<ast::IndexExpression>(target.node) ||
+           std::holds_alternative<ast::DereferenceExpression>(target.node);
+}
+
+} // namespace
+
+ast::StatementList AstBuilder::statements(P::StatementListContext* context) {
+    ast::StatementList result;
+    if (context == nullptr) {
+        return result;
+    }
+    for (P::StatementContext* statement_context : context->statement()) {
+        result.push_back(statement(*statement_context));
+    }
+    return result;
+}
+
+ast::Statement AstBuilder::statement(P::StatementContext& context) {
+    const SourceRange where = range(context);
+    if (auto* simple = dynamic_cast<P::ExpressionStatementContext*>(&context)) {
+        ast::ExpressionPtr target = expression(*simple->expression(0));
+        if (simple->ASSIGN() != nullptr) {
+            if (!is_assignable(*target)) {
+                error(target->range, "the left side of ':=' must be a variable");
+            }
+            return {where, ast::AssignmentStatement{std::move(target),
+                                                    expression(*simple->expression(1))}};
+        }
+        if (!std::holds_alternative<ast::CallExpression>(target->node)) {
+            const auto* binary = std::get_if<ast::BinaryExpression>(&target->node);
+            error(target->range,
+                  binary != nullptr && binary->op == ast::BinaryOperator::Equal
+                      ? "this statement does nothing; did you mean ':=' instead of '='?"
+                      : "this statement does nothing; expected an assignment ':=' or a call");
+        }
+        return {where, ast::CallStatement{std::move(target)}};
+    }
+    if (auto* if_statement = dynamic_cast<P::IfStatementContext*>(&context)) {
+        ast::IfStatement result;
+        result.branches.push_back(
+            {expression(*if_statement->expression()), statements(if_statement->statementList(0))});
+        for (P::ElsifClauseContext* elsif : if_statement->elsifClause()) {
+            result.branches.push_back(
+                {expression(*elsif->expression()), statements(elsif->statementList())});
+        }
+        if (if_statement->ELSE() != nullptr) {
+            result.else_body = statements(if_statement->statementList(1));
+        }
+        return {where, std::move(result)};
+    }
+    if (auto* case_statement = dynamic_cast<P::CaseStatementContext*>(&context)) {
+        ast::CaseStatement result;
+        result.selector = expression(*case_statement->expression());
+        for (P::CaseBranchContext* branch : case_statement->caseBranch()) {
+            ast::CaseBranch built;
+            for (P::CaseLabelContext* label : branch->caseLabel()) {
+                ast::ExpressionPtr high =
+                    label->RANGE() != nullptr ? expression(*label->expression(1)) : nullptr;
+                built.labels.push_back(
+                    {expression(*label->expression(0)), std::move(high), range(*label)});
+            }
+            built.body = statements(branch->statementList());
+            result.branches.push_back(std::move(built));
+        }
+        result.else_body = statements(case_statement->statementList());
+        return {where, std::move(result)};
+    }
+    if (auto* for_statement = dynamic_cast<P::ForStatementContext*>(&context)) {
+        ast::ForStatement result;
+        result.control_variable = identifier(*for_statement->identifier());
+        result.from = expression(*for_statement->expression(0));
+        result.to = expression(*for_statement->expression(1));
+        if (for_statement->BY() != nullptr) {
+            result.by = expression(*for_statement->expression(2));
+        }
+        result.body = statements(for_statement->statementList());
+        return {where, std::move(result)};
+    }
+    if (auto* while_statement = dynamic_cast<P::WhileStatementContext*>(&context)) {
+        return {where, ast::WhileStatement{expression(*while_statement->expression()),
+                                           statements(while_statement->statementList())}};
+    }
+    if (auto* repeat = dynamic_cast<P::RepeatStatementContext*>(&context)) {
+        return {where, ast::RepeatStatement{statements(repeat->statementList()),
+                                            expression(*repeat->expression())}};
+    }
+    if (dynamic_cast<P::ExitStatementContext*>(&context) != nullptr) {
+        return {where, ast::ExitStatement{}};
+    }
+    if (dynamic_cast<P::ContinueStatementContext*>(&context) != nullptr) {
+        return {where, ast::ContinueStatement{}};
+    }
+    if (dynamic_cast<P::ReturnStatementContext*>(&context) != nullptr) {
+        return {where, ast::ReturnStatement{}};
+    }
+    return {where, ast::EmptyStatement{}};
+}
+
+} // namespace eposp::compiler

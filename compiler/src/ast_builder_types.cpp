@@ -1,0 +1,108 @@
+#include "ast_builder.hpp"
+
+namespace eposp::compiler {
+
+namespace {
+
+using P = generated::StructuredTextParser;
+
+bool is_string_type(ast::ElementaryType type) {
+    return type == ast::ElementaryType::String || type == ast::ElementaryType::Wstring;
+}
+
+// A type by name: an elementary type keyword, or a derived/FB type to resolve later.
+ast::TypeSpec named_type(ast::Identifier name) {
+    const SourceRange where = name.range;
+    if (const auto elementary = ast::elementary_type_from_name(name.name)) {
+        if (is_string_type(*elementary)) {
+            return {where, ast::StringTypeRef{*elementary, nullptr}};
+        }
+        return {where, ast::ElementaryTypeRef{*elementary}};
+    }
+    return {where, ast::NamedTypeRef{std::move(name)}};
+}
+
+std::vector<ast::EnumValue> enum_values(AstBuilder& builder,
+                                        const std::vector<P::EnumValueContext*>& values) {
+    std::vector<ast::EnumValue> result;
+    for (P::EnumValueContext* value : values) {
+        result.push_back(
+            {builder.identifier(*value->identifier()),
+             value->expression() != nullptr ? builder.expression(*value->expression()) : nullptr});
+    }
+    return result;
+}
+
+ast::Subrange subrange(AstBuilder& builder, P::SubrangeContext& context) {
+    return {builder.expression(*context.expression(0)), builder.expression(*context.expression(1))};
+}
+
+} // namespace
+
+// IEC 61131-3 ed. 3, 6.4.4.
+ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
+    const SourceRange where = range(context);
+    const auto pointer_to = [&](ast::ReferenceType::Kind kind, P::TypeSpecContext& target) {
+        return ast::TypeSpec{
+            where, ast::ReferenceType{kind, std::make_unique<ast::TypeSpec>(type_spec(target))}};
+    };
+    if (auto* structure = dynamic_cast<P::StructTypeContext*>(&context)) {
+        ast::StructType result;
+        for (P::VarDeclarationContext* member : structure->varDeclaration()) {
+            result.members.push_back(variable(*member));
+        }
+        return {where, std::move(result)};
+    }
+    if (auto* array = dynamic_cast<P::ArrayTypeContext*>(&context)) {
+        ast::ArrayType result;
+        for (P::ArrayDimensionContext* dimension : array->arrayDimension()) {
+            result.dimensions.push_back(
+                {dimension->subrange() != nullptr
+                     ? std::optional<ast::Subrange>(subrange(*this, *dimension->subrange()))
+                     : std::nullopt});
+        }
+        result.element = std::make_unique<ast::TypeSpec>(type_spec(*array->typeSpec()));
+        return {where, std::move(result)};
+    }
+    if (auto* reference = dynamic_cast<P::ReferenceTypeContext*>(&context)) {
+        return pointer_to(ast::ReferenceType::Kind::Reference, *reference->typeSpec());
+    }
+    if (auto* pointer = dynamic_cast<P::PointerTypeContext*>(&context)) {
+        return pointer_to(ast::ReferenceType::Kind::Pointer, *pointer->typeSpec());
+    }
+    if (auto* enumeration = dynamic_cast<P::EnumTypeContext*>(&context)) {
+        return {where, ast::EnumType{nullptr, enum_values(*this, enumeration->enumValue())}};
+    }
+    if (auto* typed_enum = dynamic_cast<P::TypedEnumTypeContext*>(&context)) {
+        return {where, ast::EnumType{std::make_unique<ast::TypeSpec>(
+                                         named_type(identifier(*typed_enum->identifier()))),
+                                     enum_values(*this, typed_enum->enumValue())}};
+    }
+    if (auto* sub = dynamic_cast<P::SubrangeTypeContext*>(&context)) {
+        return {where, ast::SubrangeType{std::make_unique<ast::TypeSpec>(
+                                             named_type(identifier(*sub->identifier()))),
+                                         subrange(*this, *sub->subrange())}};
+    }
+    if (auto* sized = dynamic_cast<P::SizedTypeContext*>(&context)) {
+        ast::Identifier base = identifier(*sized->identifier());
+        ast::ExpressionPtr length = expression(*sized->expression());
+        const auto elementary = ast::elementary_type_from_name(base.name);
+        if (elementary && is_string_type(*elementary)) {
+            return {where, ast::StringTypeRef{*elementary, std::move(length)}};
+        }
+        // `DWORD (Red)`: a typed enumeration with one value reads like a length in parentheses.
+        if (auto* name = std::get_if<ast::NameExpression>(&length->node);
+            name != nullptr && sized->LEFT_PAREN() != nullptr) {
+            std::vector<ast::EnumValue> values;
+            values.push_back({std::move(name->name), nullptr});
+            return {where,
+                    ast::EnumType{std::make_unique<ast::TypeSpec>(named_type(std::move(base))),
+                                  std::move(values)}};
+        }
+        error(base.range, "only STRING and WSTRING take a length; '" + base.name + "' does not");
+        return named_type(std::move(base));
+    }
+    return named_type(identifier(*dynamic_cast<P::NamedTypeContext&>(context).identifier()));
+}
+
+} // namespace eposp::compiler

@@ -1,0 +1,126 @@
+#include "eposp/compiler/parser.hpp"
+
+#include "StructuredTextLexer.h"
+#include "StructuredTextParser.h"
+#include "ast_builder.hpp"
+#include "nesting_limit.hpp"
+#include "syntax_error_strategy.hpp"
+#include "token_range.hpp"
+#include "utf8.hpp"
+
+#include <BailErrorStrategy.h>
+#include <CommonTokenStream.h>
+#include <Exceptions.h>
+#include <atn/ParserATNSimulator.h>
+#include <atn/PredictionMode.h>
+#include <memory>
+
+namespace eposp::compiler {
+
+namespace {
+
+using generated::StructuredTextLexer;
+using generated::StructuredTextParser;
+
+// The ANTLR runtime rejects invalid UTF-8 with an exception. Each invalid byte becomes a space
+// (one byte, one column, so positions stay true) and the first one is reported.
+std::string valid_utf8(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
+    std::string text = sources.text(file);
+    bool reported = false;
+    std::uint32_t line = 1;
+    std::uint32_t column = 1;
+    for (std::size_t position = 0; position < text.size();) {
+        const std::size_t start = position;
+        const std::optional<char32_t> code_point = utf8::decode(text, position);
+        if (!code_point) {
+            if (!reported) {
+                diagnostics.error({file, {line, column}, {line, column}},
+                                  "the file is not valid UTF-8 text here");
+                reported = true;
+            }
+            text[start] = ' ';
+        }
+        if (code_point == U'\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return text;
+}
+
+// Lexical errors, reported before parsing. An unclosed comment lexes as '(' '*' (or '/' '*')
+// with nothing between, a pair that no ST construct contains; everything after it is comment
+// text, so the file is not parsed further. An unclosed string ends at the end of its line.
+bool report_lexical_errors(antlr4::CommonTokenStream& tokens, FileId file,
+                           Diagnostics& diagnostics) {
+    const std::vector<antlr4::Token*>& all = tokens.getTokens();
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const std::size_t type = all[i]->getType();
+        if (type == StructuredTextLexer::UNTERMINATED_STRING) {
+            diagnostics.error(token_range(file, *all[i]), std::string("missing closing ") +
+                                                              all[i]->getText().front() +
+                                                              " at the end of this string");
+            continue;
+        }
+        if ((type == StructuredTextLexer::LEFT_PAREN || type == StructuredTextLexer::SLASH) &&
+            i + 1 < all.size() && all[i + 1]->getType() == StructuredTextLexer::STAR &&
+            all[i + 1]->getStartIndex() == all[i]->getStartIndex() + 1) {
+            diagnostics.error(token_range(file, *all[i], *all[i + 1]),
+                              "comment opened with '" + all[i]->getText() + "*' is never closed");
+            return false;
+        }
+    }
+    return true;
+}
+
+void set_prediction_mode(StructuredTextParser& parser, antlr4::atn::PredictionMode mode) {
+    parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(mode);
+}
+
+// Two-stage parsing: the fast SLL prediction with bail-out on the first error succeeds for
+// nearly all correct input; only when it fails is the file parsed again with full LL prediction
+// and error recovery, which also decides whether the error is real.
+StructuredTextParser::CompilationUnitContext* parse_two_stage(StructuredTextParser& parser,
+                                                              antlr4::CommonTokenStream& tokens,
+                                                              FileId file,
+                                                              Diagnostics& diagnostics) {
+    parser.removeErrorListeners();
+    parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
+    set_prediction_mode(parser, antlr4::atn::PredictionMode::SLL);
+    try {
+        return parser.compilationUnit();
+    } catch (const antlr4::ParseCancellationException&) {
+        tokens.seek(0);
+        parser.reset();
+        parser.setErrorHandler(std::make_shared<SyntaxErrorStrategy>(file, diagnostics));
+        set_prediction_mode(parser, antlr4::atn::PredictionMode::LL);
+        return parser.compilationUnit();
+    }
+}
+
+} // namespace
+
+ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
+    const std::size_t errors_before = diagnostics.error_count();
+    const std::string text = valid_utf8(sources, file, diagnostics);
+    antlr4::ANTLRInputStream input(text);
+    StructuredTextLexer lexer(&input);
+    lexer.removeErrorListeners(); // INVALID_CHARACTER leaves the lexer nothing to report
+    antlr4::CommonTokenStream tokens(&lexer);
+    tokens.fill();
+    if (!report_lexical_errors(tokens, file, diagnostics) ||
+        !check_nesting(tokens.getTokens(), file, diagnostics)) {
+        return ast::CompilationUnit{file, {}, {}, {}};
+    }
+    StructuredTextParser parser(&tokens);
+    StructuredTextParser::CompilationUnitContext* tree =
+        parse_two_stage(parser, tokens, file, diagnostics);
+    if (diagnostics.error_count() != errors_before) {
+        return ast::CompilationUnit{file, {}, {}, {}};
+    }
+    return build_ast(*tree, file, diagnostics);
+}
+
+} // namespace eposp::compiler

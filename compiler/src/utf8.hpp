@@ -1,0 +1,17 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace eposp::compiler::utf8 {
+
+/// Decodes the code point starting at `position` and advances past it. An invalid or truncated
+/// sequence yields nothing and advances by one byte, so that every byte is visited once.
+std::optional<char32_t> decode(std::string_view text, std::size_t& position);
+
+/// Byte offset of the 1-based `column` (in code points) of `line`, clamped to its end.
+std::size_t offset_of_column(std::string_view line, std::uint32_t column);
+
+} // namespace eposp::compiler::utf8
