@@ -165,5 +165,59 @@ TEST(StringFunctions, PointerToSomethingElseIsRefused) {
         << call.harness.machine->describe_fault(0);
 }
 
+/// A WSTRING[capacity] holding `text` in static data; returns its offset.
+std::uint32_t wstring(StdlibCall& call, std::uint32_t capacity, std::u16string_view text) {
+    const auto bytes = stdlib::wstring_image(capacity, text);
+    const auto offset = call.harness.builder.allocate(static_cast<std::uint32_t>(bytes.size()),
+                                                      stdlib::kStringAlign);
+    call.harness.builder.initialise(offset, bytes);
+    return offset;
+}
+
+/// The units of the WSTRING at `offset` after the run, and its terminator.
+std::u16string wtext(const StdlibCall& call, std::uint32_t offset) {
+    const auto* at = call.harness.machine->memory().data() + offset;
+    std::uint16_t length;
+    std::memcpy(&length, at + 2, 2);
+    std::u16string units(length + 1U, u'\0');
+    std::memcpy(units.data(), at + stdlib::kStringHeaderSize, 2U * (length + 1U));
+    return units;
+}
+
+TEST(WstringFunctions, LenCountsUtf16Units) {
+    StdlibCall call;
+    const auto w = wstring(call, 10, u"\u00c4x\u20ac");
+    ASSERT_EQ(call.call("LEN_WSTRING", {StdlibCall::string_arg(w)}), RunState::Finished);
+    EXPECT_EQ(call.result<std::int32_t>(), 3);
+}
+
+TEST(WstringFunctions, ToStringKeepsLatin1AndMarksTheRest) {
+    StdlibCall call;
+    const auto w = wstring(call, 10, u"A\u00e4\u20acZ");
+    const auto s = call.string(3);
+    ASSERT_EQ(
+        call.call("WSTRING_TO_STRING", {StdlibCall::string_arg(s), StdlibCall::string_arg(w)}),
+        RunState::Finished);
+    EXPECT_EQ(call.text(s), "A\xE4?");
+}
+
+TEST(WstringFunctions, FromStringWidensAndTruncates) {
+    StdlibCall call;
+    const auto w = wstring(call, 4, u"old");
+    ASSERT_EQ(
+        call.call("STRING_TO_WSTRING", {StdlibCall::string_arg(w), call.string_arg(80, "ab\xE9"
+                                                                                       "cdef")}),
+        RunState::Finished);
+    EXPECT_EQ(wtext(call, w), std::u16string(u"ab\u00e9c\0", 5));
+}
+
+TEST(WstringFunctions, InconsistentHeaderIsRefused) {
+    StdlibCall call;
+    const auto not_a_wstring = call.harness.builder.constant(std::uint32_t{0x0003'0002});
+    ASSERT_EQ(call.call("LEN_WSTRING", {value(std::uint64_t{not_a_wstring})}), RunState::Faulted);
+    EXPECT_EQ(call.harness.machine->task(0).fault.native_reason,
+              "pointer does not point to a WSTRING");
+}
+
 } // namespace
 } // namespace eposp::vm::test

@@ -10,5 +10,6 @@ void register_string_functions(NativeRegistry& registry);
 void register_string_conversions(NativeRegistry& registry);
 void register_numeric_functions(NativeRegistry& registry);
 void register_time_functions(NativeRegistry& registry);
+void register_wstring_functions(NativeRegistry& registry);
 
 } // namespace eposp::vm::stdlib

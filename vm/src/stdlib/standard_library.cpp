@@ -9,6 +9,7 @@ void register_standard_library(NativeRegistry& registry) {
     register_string_conversions(registry);
     register_numeric_functions(registry);
     register_time_functions(registry);
+    register_wstring_functions(registry);
 }
 
 } // namespace eposp::vm::stdlib

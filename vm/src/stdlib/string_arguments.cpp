@@ -6,10 +6,7 @@
 #include <cstring>
 
 namespace eposp::vm::stdlib {
-namespace {
-
-/// The whole STRING parameter `index` points to, or empty after failing the call.
-std::span<std::uint8_t> string_bytes(NativeArgs& args, std::size_t index) {
+std::span<std::uint8_t> string_bytes(NativeArgs& args, std::size_t index, CharWidth width) {
     const auto address = args.get<std::uint64_t>(index);
     const auto header = args.memory(address, kStringHeaderSize);
     if (header.empty()) {
@@ -18,18 +15,17 @@ std::span<std::uint8_t> string_bytes(NativeArgs& args, std::size_t index) {
     }
     std::uint16_t capacity;
     std::memcpy(&capacity, header.data(), sizeof capacity);
-    const auto bytes = args.memory(address, string_size(capacity));
-    if (bytes.empty() || !string_capacity(bytes)) {
-        args.fail("pointer does not point to a STRING");
+    const auto bytes = args.memory(address, string_size(capacity, width));
+    if (bytes.empty() || !string_capacity(bytes, width)) {
+        args.fail(width == CharWidth::Wide ? "pointer does not point to a WSTRING"
+                                           : "pointer does not point to a STRING");
         return {};
     }
     return bytes;
 }
 
-} // namespace
-
 std::optional<std::string_view> string_parameter(NativeArgs& args, std::size_t index) {
-    const auto bytes = string_bytes(args, index);
+    const auto bytes = string_bytes(args, index, CharWidth::Narrow);
     if (bytes.empty()) {
         return std::nullopt;
     }
@@ -37,7 +33,7 @@ std::optional<std::string_view> string_parameter(NativeArgs& args, std::size_t i
 }
 
 void store_string(NativeArgs& args, std::size_t index, std::string_view text) {
-    const auto bytes = string_bytes(args, index);
+    const auto bytes = string_bytes(args, index, CharWidth::Narrow);
     if (!bytes.empty()) {
         write_string(bytes, text);
     }

@@ -5,6 +5,7 @@
 // pointer is checked against VM memory and the header it points to before use.
 
 #include "eposp/vm/native.hpp"
+#include "eposp/vm/stdlib/string_layout.hpp"
 
 #include <array>
 #include <cstdint>
@@ -12,6 +13,10 @@
 #include <string_view>
 
 namespace eposp::vm::stdlib {
+
+/// The whole STRING or WSTRING (header included) parameter `index` points to; empty after
+/// failing the call if the pointer is NULL, outside memory or not at a consistent header.
+std::span<std::uint8_t> string_bytes(NativeArgs& args, std::size_t index, CharWidth width);
 
 /// The text of STRING parameter `index`; fails the call (and returns nothing) if the pointer is
 /// NULL, outside memory or not at a consistent string header.
