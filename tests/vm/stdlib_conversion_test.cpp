@@ -142,20 +142,23 @@ INSTANTIATE_TEST_SUITE_P(Reals, FromString,
 
 INSTANTIATE_TEST_SUITE_P(
     TimesAndDates, FromString,
-    ::testing::Values(FromStringCase{"STRING_TO_TIME", "T#1h2m3s4ms",
-                                     bits((3600 + 120 + 3) * kS + 4 * kMs)},
-                      FromStringCase{"STRING_TO_TIME", "time#1.5s", bits(1500 * kMs)},
-                      FromStringCase{"STRING_TO_TIME", "T#-250ms", bits(-250 * kMs)},
-                      FromStringCase{"STRING_TO_TIME", "1d_2h", bits(kDay + 2 * 3600 * kS)},
-                      FromStringCase{"STRING_TO_TIME", "T#", 0},
-                      FromStringCase{"STRING_TO_LTIME", "LTIME#5us7ns", 5'007},
-                      FromStringCase{"STRING_TO_DATE", "D#2024-01-31", bits(kDate20240131)},
-                      FromStringCase{"STRING_TO_DATE", "DATE#2024-02-30", 0},
-                      FromStringCase{"STRING_TO_TOD", "TOD#12:34:56.789", bits(kTod123456789)},
-                      FromStringCase{"STRING_TO_TOD", "TIME_OF_DAY#24:00:00", 0},
-                      FromStringCase{"STRING_TO_DT", "DT#2024-01-31-12:34:56.789",
-                                     bits(kDate20240131 + kTod123456789)},
-                      FromStringCase{"STRING_TO_DT", "DT#2024-01-31", 0}));
+    ::testing::Values(
+        FromStringCase{"STRING_TO_TIME", "T#1h2m3s4ms", bits((3600 + 120 + 3) * kS + 4 * kMs)},
+        FromStringCase{"STRING_TO_TIME", "time#1.5s", bits(1500 * kMs)},
+        FromStringCase{"STRING_TO_TIME", "T#-250ms", bits(-250 * kMs)},
+        FromStringCase{"STRING_TO_TIME", "1d_2h", bits(kDay + 2 * 3600 * kS)},
+        FromStringCase{"STRING_TO_TIME", "T#", 0},
+        FromStringCase{"STRING_TO_LTIME", "LTIME#5us7ns", 5'007},
+        FromStringCase{"STRING_TO_DATE", "D#2024-01-31", bits(kDate20240131)},
+        FromStringCase{"STRING_TO_DATE", "DATE#2024-02-30", 0},
+        FromStringCase{"STRING_TO_DATE", "D#9999-12-31", 0}, // past 2262: no 64-bit ns count
+        FromStringCase{"STRING_TO_DT", "DT#2262-04-11-23:47:16.854775807", 0x7FFFFFFFFFFFFFFF},
+        FromStringCase{"STRING_TO_DT", "DT#2262-04-11-23:47:16.854775808", 0},
+        FromStringCase{"STRING_TO_TOD", "TOD#12:34:56.789", bits(kTod123456789)},
+        FromStringCase{"STRING_TO_TOD", "TIME_OF_DAY#24:00:00", 0},
+        FromStringCase{"STRING_TO_DT", "DT#2024-01-31-12:34:56.789",
+                       bits(kDate20240131 + kTod123456789)},
+        FromStringCase{"STRING_TO_DT", "DT#2024-01-31", 0}));
 
 TEST(FromString, EveryPrintedValueReadsBack) {
     const std::pair<const char*, std::int64_t> values[] = {

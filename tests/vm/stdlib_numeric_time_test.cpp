@@ -109,6 +109,11 @@ INSTANTIATE_TEST_SUITE_P(
         TimeCase{"ADD_TOD_TIME_negative", "ADD_TOD_TIME", {value(1 * kH), value(-2 * kH)}, 23 * kH},
         TimeCase{
             "ADD_TOD_TIME_days", "ADD_TOD_TIME", {value(1 * kH), value(3 * kDay + kS)}, kH + kS},
+        TimeCase{"ADD_TOD_TIME_extreme_operands",
+                 "ADD_TOD_TIME",
+                 {value(std::numeric_limits<std::int64_t>::max()),
+                  value(std::numeric_limits<std::int64_t>::max())},
+                 2 * (std::numeric_limits<std::int64_t>::max() % kDay) - kDay},
         TimeCase{"SUB_TOD_TIME_wraps", "SUB_TOD_TIME", {value(1 * kH), value(2 * kH)}, 23 * kH},
         TimeCase{"DT_TO_DATE", "DT_TO_DATE", {value(5 * kDay + 7 * kH)}, 5 * kDay},
         TimeCase{"DT_TO_DATE_before_1970", "DT_TO_DATE", {value(-kH)}, -kDay},

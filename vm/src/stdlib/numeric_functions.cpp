@@ -21,35 +21,37 @@ std::string real_name(const char* function) {
     return std::string(function) + (sizeof(F) == 4 ? "_REAL" : "_LREAL");
 }
 
-template <typename F, F (*function)(F)>
-void add_unary(NativeRegistry& registry, const char* name) {
+// The functions come in as captureless lambdas: taking the address of a std:: function is not
+// allowed.
+template <typename F>
+void add_unary(NativeRegistry& registry, const char* name, F (*function)(F)) {
     constexpr auto s = real_scalar<F>();
     registry.add(real_name<F>(name), {true, s, {s}},
-                 [](NativeArgs& args) { args.set_result(function(args.get<F>(0))); });
+                 [function](NativeArgs& args) { args.set_result(function(args.get<F>(0))); });
 }
 
-template <typename F, F (*function)(F, F)>
-void add_binary(NativeRegistry& registry, const char* name) {
+template <typename F>
+void add_binary(NativeRegistry& registry, const char* name, F (*function)(F, F)) {
     constexpr auto s = real_scalar<F>();
-    registry.add(real_name<F>(name), {true, s, {s, s}}, [](NativeArgs& args) {
+    registry.add(real_name<F>(name), {true, s, {s, s}}, [function](NativeArgs& args) {
         args.set_result(function(args.get<F>(0), args.get<F>(1)));
     });
 }
 
 template <typename F>
 void add_real_functions(NativeRegistry& registry) {
-    add_unary<F, static_cast<F (*)(F)>(std::log)>(registry, "LN");
-    add_unary<F, static_cast<F (*)(F)>(std::log10)>(registry, "LOG");
-    add_unary<F, static_cast<F (*)(F)>(std::exp)>(registry, "EXP");
-    add_unary<F, static_cast<F (*)(F)>(std::sin)>(registry, "SIN");
-    add_unary<F, static_cast<F (*)(F)>(std::cos)>(registry, "COS");
-    add_unary<F, static_cast<F (*)(F)>(std::tan)>(registry, "TAN");
-    add_unary<F, static_cast<F (*)(F)>(std::asin)>(registry, "ASIN");
-    add_unary<F, static_cast<F (*)(F)>(std::acos)>(registry, "ACOS");
-    add_unary<F, static_cast<F (*)(F)>(std::atan)>(registry, "ATAN");
-    add_binary<F, static_cast<F (*)(F, F)>(std::atan2)>(registry, "ATAN2");
+    add_unary<F>(registry, "LN", [](F x) { return std::log(x); });
+    add_unary<F>(registry, "LOG", [](F x) { return std::log10(x); });
+    add_unary<F>(registry, "EXP", [](F x) { return std::exp(x); });
+    add_unary<F>(registry, "SIN", [](F x) { return std::sin(x); });
+    add_unary<F>(registry, "COS", [](F x) { return std::cos(x); });
+    add_unary<F>(registry, "TAN", [](F x) { return std::tan(x); });
+    add_unary<F>(registry, "ASIN", [](F x) { return std::asin(x); });
+    add_unary<F>(registry, "ACOS", [](F x) { return std::acos(x); });
+    add_unary<F>(registry, "ATAN", [](F x) { return std::atan(x); });
+    add_binary<F>(registry, "ATAN2", [](F y, F x) { return std::atan2(y, x); });
     // EXPT(IN1, IN2) = IN1 ** IN2; an integral IN2 of a negative IN1 is exact (pow is).
-    add_binary<F, static_cast<F (*)(F, F)>(std::pow)>(registry, "EXPT");
+    add_binary<F>(registry, "EXPT", [](F base, F exponent) { return std::pow(base, exponent); });
 }
 
 } // namespace

@@ -47,13 +47,14 @@ std::int64_t wrapping_mul(std::int64_t a, std::int64_t b) {
 
 void register_time_functions(NativeRegistry& registry) {
     const NativeSignature two_times{true, S::I64, {S::I64, S::I64}};
+    // Both operands are reduced to one day first, so that no sum overflows whatever they hold.
     registry.add("ADD_TOD_TIME", two_times, [](NativeArgs& args) {
-        args.set_result(
-            wrap_to_day(args.get<std::int64_t>(0) + args.get<std::int64_t>(1) % kNsPerDay));
+        args.set_result(wrap_to_day(wrap_to_day(args.get<std::int64_t>(0)) +
+                                    wrap_to_day(args.get<std::int64_t>(1))));
     });
     registry.add("SUB_TOD_TIME", two_times, [](NativeArgs& args) {
-        args.set_result(
-            wrap_to_day(args.get<std::int64_t>(0) - args.get<std::int64_t>(1) % kNsPerDay));
+        args.set_result(wrap_to_day(wrap_to_day(args.get<std::int64_t>(0)) -
+                                    wrap_to_day(args.get<std::int64_t>(1))));
     });
     registry.add("DT_TO_DATE", {true, S::I64, {S::I64}}, [](NativeArgs& args) {
         args.set_result(floor_to_day(args.get<std::int64_t>(0)));

@@ -342,10 +342,21 @@ std::int64_t parse_duration(std::string_view text) {
     return static_cast<std::int64_t>(negative ? ~total + 1 : total);
 }
 
+/// `days` since 1970 plus `ns_of_day`, if a 64-bit nanosecond count holds it (1677..2262).
+std::optional<std::int64_t> to_ns(std::int64_t days, std::int64_t ns_of_day) {
+    std::int64_t ns = 0;
+    if (__builtin_mul_overflow(days, kNsPerDay, &ns) ||
+        __builtin_add_overflow(ns, ns_of_day, &ns)) {
+        return std::nullopt;
+    }
+    return ns;
+}
+
 std::int64_t parse_date(std::string_view text) {
     Cursor c(text);
     accept_any(c, {"DATE#", "D#"});
-    return read_date(c).value_or(0) * kNsPerDay;
+    const auto days = read_date(c);
+    return days ? to_ns(*days, 0).value_or(0) : 0;
 }
 
 std::int64_t parse_time_of_day(std::string_view text) {
@@ -362,7 +373,7 @@ std::int64_t parse_date_and_time(std::string_view text) {
         return 0;
     }
     const auto time = read_time_of_day(c);
-    return time ? *days * kNsPerDay + *time : 0;
+    return time ? to_ns(*days, *time).value_or(0) : 0;
 }
 
 } // namespace eposp::vm::stdlib
