@@ -34,7 +34,7 @@ public:
     std::string_view view() const { return {chars_.data(), size_}; }
 
 private:
-    std::array<char, 0xFFFF> chars_;
+    std::array<char, kMaxStringCapacity> chars_;
     std::size_t size_ = 0;
 };
 
