@@ -85,6 +85,12 @@ INSTANTIATE_TEST_SUITE_P(
                                      reseal(b);
                                  },
                                  "section code missing or truncated"},
+                      Corruption{"BooleanOtherThan0Or1", // the import's has_result
+                                 [](auto& b) {
+                                     b[b.size() - 7] = 2;
+                                     reseal(b);
+                                 },
+                                 "section imports: invalid boolean 2"},
                       Corruption{
                           "HugeElementCount",
                           [](auto& b) {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <boost/crc.hpp>
+#include <string>
 #include <string_view>
 
 namespace eposp::vm {
@@ -61,7 +62,14 @@ public:
     void u32(std::uint32_t& v) { v = in_.u32(); }
     void u64(std::uint64_t& v) { v = in_.u64(); }
     void i32(std::int32_t& v) { v = in_.i32(); }
-    void boolean(bool& v) { v = in_.u8() != 0; }
+    // Only 0 or 1, so that every image read is exactly what write_image makes of it (fuzzed).
+    void boolean(bool& v) {
+        const auto byte = in_.u8();
+        if (byte > 1) {
+            in_.fail("invalid boolean " + std::to_string(byte));
+        }
+        v = byte == 1;
+    }
     // Any value: the verifier refuses unknown opcodes with their instruction's position.
     void opcode(Opcode& op) { op = static_cast<Opcode>(in_.u16()); }
     void string(std::string& s) { s = in_.string(); }
