@@ -7,5 +7,6 @@ namespace eposp::device::cli {
 // Each subcommand adds itself to the application; when it is chosen and its options parse, its
 // callback runs it and stores the process exit code in `exit_code`.
 void add_bus_command(CLI::App& app, int& exit_code);
+void add_drive_command(CLI::App& app, int& exit_code);
 
 } // namespace eposp::device::cli

@@ -66,6 +66,7 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     set_default(0x60FB, 1, gain(gains.position.kp, 1e-3));
     set_default(0x60FB, 2, gain(gains.position.ki, 1e-3));
     set_default(0x60FB, 3, gain(gains.position.kd, 1e-4));
+    read_counts_per_turn();
     watch_dictionary();
     node_.on_reset_application([this] { reset_application(); });
 }
@@ -85,6 +86,7 @@ void Epos2Drive::watch_dictionary() {
         loop_.post([this, controlword] { on_controlword(controlword); });
     });
     od.on_change(0x6060, [this](std::uint16_t, std::uint8_t) { on_mode_written(); });
+    od.on_change(0x2210, [this](std::uint16_t, std::uint8_t) { read_counts_per_turn(); });
     od.on_change(0x60FF, [this](std::uint16_t, std::uint8_t) {
         if (mode_ == OperatingMode::ProfileVelocity) {
             velocity_profile_.set_target(
@@ -118,6 +120,8 @@ void Epos2Drive::watch_dictionary() {
 
 // Power-on and NMT reset node (transition 19, then 0 and 1 of table 3-5).
 void Epos2Drive::reset_application() {
+    read_counts_per_turn();
+    published_.reset(); // the reset stored the defaults behind the computed objects
     device_control_.node_reset();
     device_control_.initialise();
     device_control_.initialisation_finished();
@@ -416,30 +420,42 @@ std::uint16_t Epos2Drive::digital_input_states() const {
         states |= kPositiveLimitInput;
     if (switches.home)
         states |= kHomeSwitchInput;
-    return states & dictionary_.objects().get_as<std::uint16_t>(0x2071, 2);
+    return states == 0 ? 0 : states & dictionary_.objects().get_as<std::uint16_t>(0x2071, 2);
 }
 
 // The computed objects (8.2.86, 8.2.92 - 8.2.97, 8.2.57), stored when they change so that the
 // listeners of event-driven TPDOs hear it.
 void Epos2Drive::publish(const MotionState& demand) {
-    auto& od = dictionary_.objects();
-    const auto update = [&od](std::uint16_t index, std::uint8_t sub, auto value) {
-        if (od.get_as<decltype(value)>(index, sub) != value) {
-            od.set_as(index, sub, value);
-        }
-    };
     const auto to_i32 = [](double value) {
         return static_cast<std::int32_t>(std::lround(value));
     };
-    const std::uint16_t statusword =
-        static_cast<std::uint16_t>(device_control_.statusword() | mode_statusword_bits(seconds()));
-    update(0x6041, 0, statusword);
-    update(0x6062, 0, to_i32(demand.position));
-    update(0x6064, 0, static_cast<std::int32_t>(position_actual()));
-    update(0x606B, 0, to_i32(counts_to_rpm(demand.velocity)));
-    update(0x606C, 0, to_i32(counts_to_rpm(axis_.velocity_actual())));
-    update(0x6078, 0, static_cast<std::int16_t>(std::lround(axis_.current_actual() * 1000)));
-    update(0x2071, 1, digital_input_states());
+    const PublishedValues now{
+        .statusword = static_cast<std::uint16_t>(device_control_.statusword() |
+                                                 mode_statusword_bits(seconds())),
+        .position_demand = to_i32(demand.position),
+        .position_actual = static_cast<std::int32_t>(position_actual()),
+        .velocity_demand = to_i32(counts_to_rpm(demand.velocity)),
+        .velocity_actual = to_i32(counts_to_rpm(axis_.velocity_actual())),
+        .current_actual = static_cast<std::int16_t>(std::lround(axis_.current_actual() * 1000)),
+        .digital_inputs = digital_input_states(),
+    };
+    // Compared with what was stored last, not read back: a dictionary read per object and
+    // millisecond would cost more than the whole motor model.
+    auto& od = dictionary_.objects();
+    const auto store = [&od, this](std::uint16_t index, std::uint8_t sub, auto value, auto last) {
+        if (!published_ || value != last) {
+            od.set_as(index, sub, value);
+        }
+    };
+    const PublishedValues& last = published_.value_or(now);
+    store(0x6041, 0, now.statusword, last.statusword);
+    store(0x6062, 0, now.position_demand, last.position_demand);
+    store(0x6064, 0, now.position_actual, last.position_actual);
+    store(0x606B, 0, now.velocity_demand, last.velocity_demand);
+    store(0x606C, 0, now.velocity_actual, last.velocity_actual);
+    store(0x6078, 0, now.current_actual, last.current_actual);
+    store(0x2071, 1, now.digital_inputs, last.digital_inputs);
+    published_ = now;
 }
 
 motion::ProfileParameters Epos2Drive::profile_parameters() const {
@@ -462,7 +478,7 @@ motion::HomingParameters Epos2Drive::homing_parameters() const {
     parameters.home_offset = od.get_as<std::int32_t>(0x607C, 0);
     parameters.home_position = od.get_as<std::int32_t>(0x2081, 0);
     parameters.current_threshold = od.get_as<std::uint16_t>(0x2080, 0) / 1000.0;
-    parameters.counts_per_turn = static_cast<std::int64_t>(counts_per_turn());
+    parameters.counts_per_turn = static_cast<std::int64_t>(counts_per_turn_);
     return parameters;
 }
 
@@ -470,9 +486,9 @@ double Epos2Drive::seconds() const {
     return std::chrono::duration<double>(loop_.now().time_since_epoch()).count();
 }
 
-// 8.2.64: quadcounts are four per encoder pulse.
-double Epos2Drive::counts_per_turn() const {
-    return 4.0 * dictionary_.objects().get_as<std::uint32_t>(0x2210, 1);
+// 8.2.74: quadcounts are four per encoder pulse.
+void Epos2Drive::read_counts_per_turn() {
+    counts_per_turn_ = 4.0 * dictionary_.objects().get_as<std::uint32_t>(0x2210, 1);
 }
 
 Epos2Network make_epos2_network(core::EventLoop& loop, std::size_t count,

@@ -80,9 +80,9 @@ private:
     motion::ProfileParameters profile_parameters() const;
     motion::HomingParameters homing_parameters() const;
     double seconds() const;
-    double counts_per_turn() const;
-    double rpm_to_counts(double rpm) const { return rpm * counts_per_turn() / 60.0; }
-    double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn(); }
+    void read_counts_per_turn();
+    double rpm_to_counts(double rpm) const { return rpm * counts_per_turn_ / 60.0; }
+    double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn_; }
     std::int64_t position_actual() const { return axis_.position_actual() + position_offset_; }
 
     core::EventLoop& loop_;
@@ -109,6 +109,19 @@ private:
     double stop_start_ = 0;
     std::int64_t position_offset_ = 0;        ///< what homing added to the axis' counter
     std::optional<std::int64_t> index_latch_; ///< an index pulse since the last control period
+    double counts_per_turn_ = 0;              ///< 4 × 0x2210 sub 1
+
+    /// The computed objects as last stored (none yet after a reset).
+    struct PublishedValues {
+        std::uint16_t statusword;
+        std::int32_t position_demand;
+        std::int32_t position_actual;
+        std::int32_t velocity_demand;
+        std::int32_t velocity_actual;
+        std::int16_t current_actual;
+        std::uint16_t digital_inputs;
+    };
+    std::optional<PublishedValues> published_;
     core::ScopedTimer control_timer_;
 };
 
