@@ -314,6 +314,34 @@ TEST_F(Epos2DriveOnBus, TargetBeyondSoftwareLimitRaisesFF09) {
     EXPECT_NEAR(tpdos.back().position, 0, 5);
 }
 
+// 8.2.105: an endless movement (no target to check) is stopped by the actual position crossing
+// the limit: 0xFF09, fault.
+TEST_F(Epos2DriveOnBus, EndlessMoveBeyondSoftwareLimitRaisesFF09) {
+    write(0x607D, 2, encode(std::int32_t{10000}));
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint | 0x8000, 1);
+    run_with_sync(1000ms);
+    ASSERT_FALSE(emcys.empty());
+    EXPECT_EQ(emcys.front()[0], 0x09);
+    EXPECT_EQ(emcys.front()[1], 0xFF);
+    EXPECT_NE(emcys.front()[2] & 0x80, 0) << "manufacturer specific error";
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+    EXPECT_GE(tpdos.back().position, 10000);
+}
+
+// 8.2.89: a fault reaction option code written by the master applies: -1 signals only.
+TEST_F(Epos2DriveWithBlockedLoad, FaultReactionOptionCodeMinusOneOnlyWarns) {
+    write(0x605E, 0, encode(std::int16_t{-1}));
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint, 20000);
+    run_with_sync(500ms);
+    ASSERT_FALSE(emcys.empty());
+    EXPECT_EQ(emcys.front()[1], 0x86);
+    EXPECT_EQ(drive.state(), motion::DriveState::OperationEnable);
+    EXPECT_NE(tpdos.back().statusword & 0x0080, 0) << "warning";
+    EXPECT_NE(tpdos.back().statusword & 0x2000, 0) << "following error";
+}
+
 TEST(Epos2Network, EveryDriveBootsWithItsOwnNodeId) {
     core::EventLoop loop;
     Epos2Network network = make_epos2_network(loop, 3, drive_config(plant::test::tuned_axis()), 5);

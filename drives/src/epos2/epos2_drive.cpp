@@ -5,6 +5,7 @@
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/statusword_bits.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -87,6 +88,10 @@ void Epos2Drive::watch_dictionary() {
     });
     od.on_change(0x6060, [this](std::uint16_t, std::uint8_t) { on_mode_written(); });
     od.on_change(0x2210, [this](std::uint16_t, std::uint8_t) { read_counts_per_turn(); });
+    for (const std::uint16_t option_code :
+         std::array<std::uint16_t, 4>{0x6007, 0x605B, 0x605C, 0x605E}) {
+        od.on_change(option_code, [this](std::uint16_t, std::uint8_t) { read_option_codes(); });
+    }
     od.on_change(0x60FF, [this](std::uint16_t, std::uint8_t) {
         if (mode_ == OperatingMode::ProfileVelocity) {
             velocity_profile_.set_target(
@@ -121,6 +126,7 @@ void Epos2Drive::watch_dictionary() {
 // Power-on and NMT reset node (transition 19, then 0 and 1 of table 3-5).
 void Epos2Drive::reset_application() {
     read_counts_per_turn();
+    read_option_codes();
     published_.reset(); // the reset stored the defaults behind the computed objects
     device_control_.node_reset();
     device_control_.initialise();
@@ -142,6 +148,9 @@ void Epos2Drive::on_mode_written() {
     setpoint_acknowledged_ = false;
     following_error_ =
         motion::FollowingErrorMonitor(dictionary_.objects().get_as<std::uint32_t>(0x6065, 0));
+    position_limit_ = motion::SoftwarePositionLimitMonitor(
+        {dictionary_.objects().get_as<std::int32_t>(0x607D, 1),
+         dictionary_.objects().get_as<std::int32_t>(0x607D, 2)});
     if (mode_ == OperatingMode::ProfileVelocity && power_stage_on_) {
         velocity_profile_.set_target(
             now, rpm_to_counts(dictionary_.objects().get_as<std::int32_t>(0x60FF, 0)),
@@ -362,6 +371,13 @@ void Epos2Drive::watch_motion(double now, const MotionState& demand) {
                 raise_device_error(*error);
             }
         }
+        // 8.2.105: the actual position leaving the limits; homing runs before the limits mean
+        // anything (they are relative to the home position).
+        if (mode_ != OperatingMode::Homing) {
+            if (const auto error = position_limit_.update(actual)) {
+                raise_device_error(*error);
+            }
+        }
     }
     const double velocity_rpm = counts_to_rpm(axis_.velocity_actual());
     switch (mode_) {
@@ -458,12 +474,19 @@ void Epos2Drive::publish(const MotionState& demand) {
     published_ = now;
 }
 
+// 5.3.2.1 / 5.10.2.1: the profile clamped to Maximal Profile Velocity 0x607F and Max
+// Acceleration 0x60C5 (all of them at least 1 by their value ranges, so the clamp cannot fail).
 motion::ProfileParameters Epos2Drive::profile_parameters() const {
     const auto& od = dictionary_.objects();
-    return {.velocity = rpm_to_counts(od.get_as<std::uint32_t>(0x6081, 0)),
-            .acceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x6083, 0)),
-            .deceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x6084, 0)),
-            .shape = static_cast<motion::RampShape>(od.get_as<std::int16_t>(0x6086, 0))};
+    const motion::ProfileParameters written{
+        .velocity = rpm_to_counts(od.get_as<std::uint32_t>(0x6081, 0)),
+        .acceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x6083, 0)),
+        .deceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x6084, 0)),
+        .shape = static_cast<motion::RampShape>(od.get_as<std::int16_t>(0x6086, 0))};
+    const motion::ProfileLimits limits{
+        .max_velocity = rpm_to_counts(od.get_as<std::uint32_t>(0x607F, 0)),
+        .max_acceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x60C5, 0))};
+    return *motion::clamp_to_limits(written, limits);
 }
 
 motion::HomingParameters Epos2Drive::homing_parameters() const {
@@ -484,6 +507,15 @@ motion::HomingParameters Epos2Drive::homing_parameters() const {
 
 double Epos2Drive::seconds() const {
     return std::chrono::duration<double>(loop_.now().time_since_epoch()).count();
+}
+
+// 8.2.84, 8.2.87 - 8.2.89.
+void Epos2Drive::read_option_codes() {
+    const auto& od = dictionary_.objects();
+    device_control_.set_option_codes({.abort_connection = od.get_as<std::int16_t>(0x6007, 0),
+                                      .shutdown = od.get_as<std::int16_t>(0x605B, 0),
+                                      .disable_operation = od.get_as<std::int16_t>(0x605C, 0),
+                                      .fault_reaction = od.get_as<std::int16_t>(0x605E, 0)});
 }
 
 // 8.2.74: quadcounts are four per encoder pulse.

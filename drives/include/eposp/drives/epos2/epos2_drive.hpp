@@ -10,6 +10,7 @@
 #include "eposp/drives/motion/homing_procedure.hpp"
 #include "eposp/drives/motion/profile_position_generator.hpp"
 #include "eposp/drives/motion/profile_velocity_generator.hpp"
+#include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/standstill_monitor.hpp"
 #include "eposp/drives/motion/target_reached_monitor.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
@@ -81,6 +82,7 @@ private:
     motion::HomingParameters homing_parameters() const;
     double seconds() const;
     void read_counts_per_turn();
+    void read_option_codes();
     double rpm_to_counts(double rpm) const { return rpm * counts_per_turn_ / 60.0; }
     double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn_; }
     std::int64_t position_actual() const { return axis_.position_actual() + position_offset_; }
@@ -94,6 +96,7 @@ private:
     motion::ProfileVelocityGenerator velocity_profile_;
     motion::HomingProcedure homing_;
     motion::FollowingErrorMonitor following_error_;
+    motion::SoftwarePositionLimitMonitor position_limit_;
     motion::TargetReachedMonitor target_reached_{{}};
     motion::StandstillMonitor standstill_;
 
