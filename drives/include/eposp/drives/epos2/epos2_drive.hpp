@@ -14,6 +14,7 @@
 #include "eposp/drives/motion/standstill_monitor.hpp"
 #include "eposp/drives/motion/target_reached_monitor.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
+#include "eposp/drives/plant/reference_axis.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
 
 #include <cstdint>
@@ -32,7 +33,7 @@ struct Epos2DriveConfig {
     Epos2DictionaryConfig dictionary;
     /// Motor, load, encoder pulses, switches and the controller gains. The pulses and gains are
     /// written into 0x2210, 0x60F6, 0x60F9 and 0x60FB as their defaults.
-    plant::AxisParameters axis;
+    plant::AxisParameters axis = plant::reference_axis();
 };
 
 /// A simulated maxon EPOS2 24/5 on a CAN port: a canopen::Node on the EPOS2 dictionary, the
