@@ -342,6 +342,41 @@ TEST_F(Epos2DriveWithBlockedLoad, FaultReactionOptionCodeMinusOneOnlyWarns) {
     EXPECT_NE(tpdos.back().statusword & 0x2000, 0) << "following error";
 }
 
+class Epos2DriveWithLimitSwitch : public Epos2DriveOnBus {
+protected:
+    static plant::AxisParameters axis_with_limit() {
+        plant::AxisParameters axis = plant::test::tuned_axis();
+        axis.switches.positive_limit = 5000;
+        return axis;
+    }
+    Epos2DriveWithLimitSwitch() : Epos2DriveOnBus(axis_with_limit()) {}
+};
+
+// 8.2.57 / 4.2.28: the positive limit switch, executed once its bit of 0x2071 sub 4 is set,
+// raises 0xFF07 (error register bit 7) and faults.
+TEST_F(Epos2DriveWithLimitSwitch, ExecutedPositiveLimitSwitchRaisesFF07) {
+    write(0x2071, 4, encode(std::uint16_t{0x000B})); // limit switches and position marker
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint, 20000);
+    run_with_sync(600ms);
+    ASSERT_FALSE(emcys.empty());
+    EXPECT_EQ(emcys.front()[0], 0x07);
+    EXPECT_EQ(emcys.front()[1], 0xFF);
+    EXPECT_NE(emcys.front()[2] & 0x80, 0);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+    EXPECT_NE(read<std::uint16_t>(0x2071, 1) & 0x0002, 0) << "the switch shows in the state";
+}
+
+// Table 8-89: with the default execution mask (0x0008) the switch is only displayed.
+TEST_F(Epos2DriveWithLimitSwitch, LimitSwitchNotInTheExecutionMaskIsOnlyDisplayed) {
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint, 8000);
+    run_with_sync(600ms);
+    EXPECT_TRUE(emcys.empty());
+    EXPECT_NEAR(tpdos.back().position, 8000, 5);
+    EXPECT_NE(read<std::uint16_t>(0x2071, 1) & 0x0002, 0);
+}
+
 TEST(Epos2Network, EveryDriveBootsWithItsOwnNodeId) {
     core::EventLoop loop;
     Epos2Network network = make_epos2_network(loop, 3, drive_config(plant::test::tuned_axis()), 5);

@@ -371,6 +371,7 @@ void Epos2Drive::watch_motion(double now, const MotionState& demand) {
                 raise_device_error(*error);
             }
         }
+        watch_limit_switches();
         // 8.2.105: the actual position leaving the limits; homing runs before the limits mean
         // anything (they are relative to the home position).
         if (mode_ != OperatingMode::Homing) {
@@ -399,6 +400,26 @@ void Epos2Drive::watch_motion(double now, const MotionState& demand) {
     }
     case OperatingMode::Homing:
         break;
+    }
+}
+
+// 8.2.57, table 8-89: a limit switch functionality that goes high while its bit of the execution
+// mask (0x2071 sub 4) is set raises 0xFF06 / 0xFF07 (4.2.27, 4.2.28). During homing the switches
+// are references, which the homing procedure handles. The plant gives the functionalities'
+// states directly, so the polarity (sub 3) has no pin level to invert.
+void Epos2Drive::watch_limit_switches() {
+    const std::uint16_t states = digital_input_states();
+    const std::uint16_t rising = states & ~limit_inputs_before_;
+    limit_inputs_before_ = states;
+    if (rising == 0 || mode_ == OperatingMode::Homing) {
+        return;
+    }
+    const auto executed = dictionary_.objects().get_as<std::uint16_t>(0x2071, 4);
+    if ((rising & executed & kNegativeLimitInput) != 0) {
+        raise_device_error(motion::kNegativeLimitSwitchErrorCode);
+    }
+    if ((rising & executed & kPositiveLimitInput) != 0) {
+        raise_device_error(motion::kPositiveLimitSwitchErrorCode);
     }
 }
 

@@ -73,6 +73,7 @@ private:
     motion::MotionState mode_demand(double now);
     motion::MotionState homing_demand(double now);
     void watch_motion(double now, const motion::MotionState& demand);
+    void watch_limit_switches();
     void raise_device_error(std::uint16_t code);
     void publish(const motion::MotionState& demand);
     std::uint16_t mode_statusword_bits(double now) const;
@@ -114,6 +115,7 @@ private:
     std::int64_t position_offset_ = 0;        ///< what homing added to the axis' counter
     std::optional<std::int64_t> index_latch_; ///< an index pulse since the last control period
     double counts_per_turn_ = 0;              ///< 4 × 0x2210 sub 1
+    std::uint16_t limit_inputs_before_ = 0;   ///< 0x2071 sub 1 in the last control period
 
     /// The computed objects as last stored (none yet after a reset).
     struct PublishedValues {
