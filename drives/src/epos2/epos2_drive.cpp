@@ -80,11 +80,19 @@ void Epos2Drive::start() {
 
 void Epos2Drive::watch_dictionary() {
     auto& od = dictionary_.objects();
-    // Deferred: an RPDO maps the controlword before the target (8.2.20), and a new setpoint
-    // must see the target of the same PDO.
+    // Deferred to the end of the event: an RPDO maps the controlword before the target
+    // (8.2.20), and a new setpoint must see the target of the same PDO. Queued in order, so
+    // that no edge of a controlword written twice at one instant is lost.
     od.on_change(0x6040, [this](std::uint16_t, std::uint8_t) {
-        const auto controlword = dictionary_.objects().get_as<std::uint16_t>(0x6040, 0);
-        loop_.post([this, controlword] { on_controlword(controlword); });
+        pending_controlwords_.push_back(dictionary_.objects().get_as<std::uint16_t>(0x6040, 0));
+        if (pending_controlwords_.size() == 1) {
+            controlword_timer_ = core::ScopedTimer(loop_, loop_.post([this] {
+                while (!pending_controlwords_.empty()) {
+                    on_controlword(pending_controlwords_.front());
+                    pending_controlwords_.pop_front();
+                }
+            }));
+        }
     });
     od.on_change(0x6060, [this](std::uint16_t, std::uint8_t) { on_mode_written(); });
     od.on_change(0x2210, [this](std::uint16_t, std::uint8_t) { read_counts_per_turn(); });

@@ -18,6 +18,7 @@
 #include "eposp/drives/plant/servo_axis.hpp"
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -128,6 +129,8 @@ private:
         std::uint16_t digital_inputs;
     };
     std::optional<PublishedValues> published_;
+    std::deque<std::uint16_t> pending_controlwords_; ///< written, not yet handled
+    core::ScopedTimer controlword_timer_;
     core::ScopedTimer control_timer_;
 };
 
