@@ -1,0 +1,148 @@
+#pragma once
+
+#include "eposp/canmaster/can/port.hpp"
+#include "eposp/canmaster/can/virtual_bus.hpp"
+#include "eposp/canmaster/canopen/node.hpp"
+#include "eposp/core/event_loop.hpp"
+#include "eposp/drives/epos2/epos2_dictionary.hpp"
+#include "eposp/drives/motion/device_control.hpp"
+#include "eposp/drives/motion/following_error_monitor.hpp"
+#include "eposp/drives/motion/homing_procedure.hpp"
+#include "eposp/drives/motion/profile_position_generator.hpp"
+#include "eposp/drives/motion/profile_velocity_generator.hpp"
+#include "eposp/drives/motion/software_position_limit.hpp"
+#include "eposp/drives/motion/standstill_monitor.hpp"
+#include "eposp/drives/motion/target_reached_monitor.hpp"
+#include "eposp/drives/motion/trajectory.hpp"
+#include "eposp/drives/plant/reference_axis.hpp"
+#include "eposp/drives/plant/servo_axis.hpp"
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace eposp::drives::epos2 {
+
+/// EPOS2 FW spec 8.2.90, table 8-118: the modes of operation this simulation runs. The others of
+/// the table (7 IPM, -1 position, -2 velocity, -3 current, -5 master encoder, -6 step/direction)
+/// are refused with "not yet" (see docs/epos2.md).
+enum class OperatingMode : std::int8_t { ProfilePosition = 1, ProfileVelocity = 3, Homing = 6 };
+
+struct Epos2DriveConfig {
+    Epos2DictionaryConfig dictionary;
+    /// Motor, load, encoder pulses, switches and the controller gains. The pulses and gains are
+    /// written into 0x2210, 0x60F6, 0x60F9 and 0x60FB as their defaults.
+    plant::AxisParameters axis = plant::reference_axis();
+};
+
+/// A simulated maxon EPOS2 24/5 on a CAN port: a canopen::Node on the EPOS2 dictionary, the
+/// CiA 402 device control, Profile Position, Profile Velocity and Homing Mode, and the motor
+/// model, stepped on the event loop (EPOS2 FW spec 5.9: current loop every 0.1 ms, position and
+/// velocity loops every 1 ms). The master sees only the dictionary: controlword, mode and
+/// profile objects written by SDO or RPDO act through change listeners; the computed objects
+/// (statusword, actual values, digital inputs) are stored each millisecond when they change, so
+/// that SDO, synchronous and event-driven TPDOs read them alike.
+///
+/// Neither copyable nor movable: the dictionary's listeners refer to it.
+class Epos2Drive {
+public:
+    Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig config);
+    ~Epos2Drive();
+    Epos2Drive(const Epos2Drive&) = delete;
+    Epos2Drive& operator=(const Epos2Drive&) = delete;
+
+    /// Power-up: boot-up message, NMT pre-operational, device control in Switch On Disabled.
+    void start();
+
+    canopen::Node& node() { return node_; }
+    canopen::ObjectDictionary& objects() { return dictionary_.objects(); }
+    motion::DriveState state() const { return device_control_.state(); }
+    const plant::ServoAxis& axis() const { return axis_; }
+
+private:
+    void watch_dictionary();
+    void reset_application();
+    void on_controlword(std::uint16_t controlword);
+    void on_mode_written();
+    void on_error_recorded();
+    void control_period();
+    void follow_power_stage();
+    void finish_device_control_transitions();
+    motion::MotionState stop_ramp(double now);
+    motion::MotionState mode_demand(double now);
+    motion::MotionState homing_demand(double now);
+    void watch_motion(double now, const motion::MotionState& demand);
+    void watch_limit_switches();
+    void raise_device_error(std::uint16_t code);
+    void publish(const motion::MotionState& demand);
+    std::uint16_t mode_statusword_bits(double now) const;
+    std::uint16_t digital_input_states() const;
+
+    bool new_position_setpoint(double now, std::uint16_t controlword);
+    motion::ProfileParameters profile_parameters() const;
+    motion::HomingParameters homing_parameters() const;
+    double seconds() const;
+    void read_counts_per_turn();
+    void read_option_codes();
+    double rpm_to_counts(double rpm) const { return rpm * counts_per_turn_ / 60.0; }
+    double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn_; }
+    std::int64_t position_actual() const { return axis_.position_actual() + position_offset_; }
+
+    core::EventLoop& loop_;
+    Epos2Dictionary dictionary_;
+    canopen::Node node_;
+    plant::ServoAxis axis_;
+    motion::DeviceControl device_control_;
+    motion::ProfilePositionGenerator position_profile_;
+    motion::ProfileVelocityGenerator velocity_profile_;
+    motion::HomingProcedure homing_;
+    motion::FollowingErrorMonitor following_error_;
+    motion::SoftwarePositionLimitMonitor position_limit_;
+    motion::TargetReachedMonitor target_reached_{{}};
+    motion::StandstillMonitor standstill_;
+
+    OperatingMode mode_ = OperatingMode::ProfilePosition;
+    std::uint16_t controlword_ = 0;
+    bool power_stage_on_ = false;
+    bool stopping_ = false;              ///< a stop ramp of the device control has begun
+    bool setpoint_acknowledged_ = false; ///< PPM statusword bit 12
+    bool target_reached_now_ = false;    ///< PPM / PVM statusword bit 10, this period
+    bool standstill_now_ = false;        ///< PVM statusword bit 12
+    motion::MotionState last_demand_;    ///< of the last control period
+    motion::Trajectory stop_;            ///< the stop ramp in progress
+    double stop_start_ = 0;
+    std::int64_t position_offset_ = 0;        ///< what homing added to the axis' counter
+    std::optional<std::int64_t> index_latch_; ///< an index pulse since the last control period
+    double counts_per_turn_ = 0;              ///< 4 × 0x2210 sub 1
+    std::uint16_t limit_inputs_before_ = 0;   ///< 0x2071 sub 1 in the last control period
+
+    /// The computed objects as last stored (none yet after a reset).
+    struct PublishedValues {
+        std::uint16_t statusword;
+        std::int32_t position_demand;
+        std::int32_t position_actual;
+        std::int32_t velocity_demand;
+        std::int32_t velocity_actual;
+        std::int16_t current_actual;
+        std::uint16_t digital_inputs;
+    };
+    std::optional<PublishedValues> published_;
+    std::deque<std::uint16_t> pending_controlwords_; ///< written, not yet handled
+    core::ScopedTimer controlword_timer_;
+    core::ScopedTimer control_timer_;
+};
+
+/// N simulated EPOS2s on one virtual bus in one process, node-IDs first_node_id, +1, …; the
+/// caller connects its master to `bus`. Every drive gets `config` with its own node-ID and
+/// serial number (and no parameter file).
+struct Epos2Network {
+    std::unique_ptr<can::VirtualBus> bus;
+    std::vector<std::unique_ptr<can::VirtualPort>> ports;
+    std::vector<std::unique_ptr<Epos2Drive>> drives;
+};
+Epos2Network make_epos2_network(core::EventLoop& loop, std::size_t count,
+                                const Epos2DriveConfig& config, canopen::NodeId first_node_id = 1);
+
+} // namespace eposp::drives::epos2

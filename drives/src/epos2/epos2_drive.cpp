@@ -1,0 +1,573 @@
+#include "eposp/drives/epos2/epos2_drive.hpp"
+
+#include "eposp/drives/motion/device_error_codes.hpp"
+#include "eposp/drives/motion/profile_planner.hpp"
+#include "eposp/drives/motion/software_position_limit.hpp"
+#include "eposp/drives/motion/statusword_bits.hpp"
+
+#include <array>
+#include <chrono>
+#include <cmath>
+
+namespace eposp::drives::epos2 {
+namespace {
+
+using motion::DriveState;
+using motion::MotionState;
+
+// EPOS2 FW spec 8.2.85, tables 8-112 / 8-113 and 5.3.2.3 / 5.4.2.3 / 5.10.2.3: the controlword
+// bits the operating modes own.
+constexpr std::uint16_t kNewSetpointBit = 1U << 4; ///< PPM; homing operation start in HMM
+constexpr std::uint16_t kChangeImmediatelyBit = 1U << 5;
+constexpr std::uint16_t kRelativeBit = 1U << 6;
+constexpr std::uint16_t kHaltBit = 1U << 8;
+constexpr std::uint16_t kEndlessMovementBit = 1U << 15;
+
+// Table 8-115 (0x2071 sub 1): the functionalities the simulated switches drive.
+constexpr std::uint16_t kNegativeLimitInput = 1U << 0;
+constexpr std::uint16_t kPositiveLimitInput = 1U << 1;
+constexpr std::uint16_t kHomeSwitchInput = 1U << 2;
+
+// Table 4-11: the error register bits of the errors this drive raises.
+constexpr std::uint8_t kMotionErrorBits = 0x20;       ///< following error
+constexpr std::uint8_t kManufacturerErrorBits = 0x80; ///< 0xFFxx
+std::uint8_t device_error_register_bits(std::uint16_t code) {
+    return code >= 0xFF00 ? kManufacturerErrorBits : kMotionErrorBits;
+}
+
+// Table 4-11: CAN errors (0x81xx, 0x82xx) are "a" errors, reacting after 0x6007.
+bool is_communication_error(std::uint16_t code) {
+    return (code & 0xFF00) == 0x8100 || (code & 0xFF00) == 0x8200;
+}
+
+constexpr std::chrono::microseconds kControlPeriod{1000};
+
+} // namespace
+
+Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig config)
+    : loop_(loop), dictionary_(config.dictionary),
+      node_(loop, port, dictionary_.objects(), dictionary_.node_config()), axis_(config.axis),
+      control_timer_(loop, loop.every(kControlPeriod, [this] { control_period(); })) {
+    auto& od = dictionary_.objects();
+    // The motor configuration is the device's defaults (8.2.64, 8.2.125 - 8.2.127).
+    const auto set_default = [&od](std::uint16_t index, std::uint8_t sub, canopen::Bytes value) {
+        canopen::SubObject& entry = *od.find(index, sub);
+        entry.default_value = value;
+        entry.value = std::move(value);
+    };
+    set_default(0x2210, 1, canopen::encode(static_cast<std::uint32_t>(config.axis.encoder_pulses)));
+    const auto gain = [](double si, double unit) {
+        return canopen::encode(static_cast<std::int16_t>(std::lround(si / unit)));
+    };
+    const plant::ServoGains& gains = config.axis.gains;
+    set_default(0x60F6, 1, gain(gains.current.kp, 1e-3));
+    set_default(0x60F6, 2, gain(gains.current.ki, 1.0));
+    set_default(0x60F9, 1, gain(gains.velocity.kp, 1e-4));
+    set_default(0x60F9, 2, gain(gains.velocity.ki, 1e-3));
+    set_default(0x60FB, 1, gain(gains.position.kp, 1e-3));
+    set_default(0x60FB, 2, gain(gains.position.ki, 1e-3));
+    set_default(0x60FB, 3, gain(gains.position.kd, 1e-4));
+    read_counts_per_turn();
+    watch_dictionary();
+    node_.on_reset_application([this] { reset_application(); });
+}
+
+Epos2Drive::~Epos2Drive() = default;
+
+void Epos2Drive::start() {
+    node_.start();
+}
+
+void Epos2Drive::watch_dictionary() {
+    auto& od = dictionary_.objects();
+    // Deferred to the end of the event: an RPDO maps the controlword before the target
+    // (8.2.20), and a new setpoint must see the target of the same PDO. Queued in order, so
+    // that no edge of a controlword written twice at one instant is lost.
+    od.on_change(0x6040, [this](std::uint16_t, std::uint8_t) {
+        pending_controlwords_.push_back(dictionary_.objects().get_as<std::uint16_t>(0x6040, 0));
+        if (pending_controlwords_.size() == 1) {
+            controlword_timer_ = core::ScopedTimer(loop_, loop_.post([this] {
+                while (!pending_controlwords_.empty()) {
+                    on_controlword(pending_controlwords_.front());
+                    pending_controlwords_.pop_front();
+                }
+            }));
+        }
+    });
+    od.on_change(0x6060, [this](std::uint16_t, std::uint8_t) { on_mode_written(); });
+    od.on_change(0x2210, [this](std::uint16_t, std::uint8_t) { read_counts_per_turn(); });
+    for (const std::uint16_t option_code :
+         std::array<std::uint16_t, 4>{0x6007, 0x605B, 0x605C, 0x605E}) {
+        od.on_change(option_code, [this](std::uint16_t, std::uint8_t) { read_option_codes(); });
+    }
+    od.on_change(0x60FF, [this](std::uint16_t, std::uint8_t) {
+        if (mode_ == OperatingMode::ProfileVelocity) {
+            velocity_profile_.set_target(
+                seconds(), rpm_to_counts(dictionary_.objects().get_as<std::int32_t>(0x60FF, 0)),
+                profile_parameters());
+        }
+    });
+    od.on_change(0x1003, [this](std::uint16_t, std::uint8_t sub) {
+        if (sub == 1) {
+            on_error_recorded();
+        }
+    });
+    // 8.2.90: the modes this simulation does not run yet are refused like a value out of range.
+    canopen::SubObject& modes = *od.find(0x6060, 0);
+    modes.on_write = [checked = modes.on_write](std::span<const std::uint8_t> value) {
+        if (checked) {
+            if (const canopen::AbortCode code = checked(value); code != canopen::AbortCode::None) {
+                return code;
+            }
+        }
+        switch (canopen::decode<std::int8_t>(value)) {
+        case static_cast<std::int8_t>(OperatingMode::ProfilePosition):
+        case static_cast<std::int8_t>(OperatingMode::ProfileVelocity):
+        case static_cast<std::int8_t>(OperatingMode::Homing):
+            return canopen::AbortCode::None;
+        default:
+            return canopen::AbortCode::InvalidValue;
+        }
+    };
+}
+
+// Power-on and NMT reset node (transition 19, then 0 and 1 of table 3-5).
+void Epos2Drive::reset_application() {
+    read_counts_per_turn();
+    read_option_codes();
+    published_.reset(); // the reset stored the defaults behind the computed objects
+    device_control_.node_reset();
+    device_control_.initialise();
+    device_control_.initialisation_finished();
+    controlword_ = 0;
+    mode_ = OperatingMode::ProfilePosition;
+    on_mode_written();
+    publish(MotionState{static_cast<double>(position_actual()), 0, 0});
+}
+
+void Epos2Drive::on_mode_written() {
+    const auto written = dictionary_.objects().get_as<std::int8_t>(0x6060, 0);
+    const double now = seconds();
+    mode_ = static_cast<OperatingMode>(written);
+    const auto here = static_cast<double>(position_actual());
+    position_profile_.reset(here);
+    velocity_profile_.reset(here);
+    homing_.reset(here);
+    setpoint_acknowledged_ = false;
+    following_error_ =
+        motion::FollowingErrorMonitor(dictionary_.objects().get_as<std::uint32_t>(0x6065, 0));
+    position_limit_ = motion::SoftwarePositionLimitMonitor(
+        {dictionary_.objects().get_as<std::int32_t>(0x607D, 1),
+         dictionary_.objects().get_as<std::int32_t>(0x607D, 2)});
+    if (mode_ == OperatingMode::ProfileVelocity && power_stage_on_) {
+        velocity_profile_.set_target(
+            now, rpm_to_counts(dictionary_.objects().get_as<std::int32_t>(0x60FF, 0)),
+            profile_parameters());
+    }
+    target_reached_ = motion::TargetReachedMonitor(
+        mode_ == OperatingMode::ProfileVelocity
+            ? motion::TargetWindow{dictionary_.objects().get_as<std::uint32_t>(0x606D, 0),
+                                   dictionary_.objects().get_as<std::uint16_t>(0x606E, 0)}
+            : motion::TargetWindow{dictionary_.objects().get_as<std::uint32_t>(0x6067, 0),
+                                   dictionary_.objects().get_as<std::uint16_t>(0x6068, 0)});
+    // 8.2.91: the display follows the mode once it is active.
+    dictionary_.objects().set_as(0x6061, 0, written);
+}
+
+void Epos2Drive::on_controlword(std::uint16_t controlword) {
+    const std::uint16_t rising = controlword & ~controlword_;
+    const std::uint16_t falling = controlword_ & ~controlword;
+    controlword_ = controlword;
+    const bool was_fault = device_control_.state() == DriveState::Fault;
+    device_control_.write_controlword(controlword);
+    if (was_fault && device_control_.state() != DriveState::Fault) {
+        // 3.2.3 transition 15: fault reset ends every error (one EMCY 0x0000).
+        node_.emcy().clear_all();
+        following_error_ =
+            motion::FollowingErrorMonitor(dictionary_.objects().get_as<std::uint32_t>(0x6065, 0));
+    }
+    const bool enabled = device_control_.outputs().drive_function_enabled;
+    const double now = seconds();
+    switch (mode_) {
+    case OperatingMode::ProfilePosition:
+        if ((rising & kNewSetpointBit) != 0 && enabled) {
+            setpoint_acknowledged_ = new_position_setpoint(now, controlword);
+        }
+        if ((falling & kNewSetpointBit) != 0) {
+            setpoint_acknowledged_ = position_profile_.buffer_full();
+        }
+        if (((rising | falling) & kHaltBit) != 0) {
+            position_profile_.set_halt(now, (controlword & kHaltBit) != 0);
+        }
+        break;
+    case OperatingMode::ProfileVelocity:
+        if (((rising | falling) & kHaltBit) != 0) {
+            velocity_profile_.set_halt(now, (controlword & kHaltBit) != 0);
+        }
+        break;
+    case OperatingMode::Homing:
+        if ((rising & kNewSetpointBit) != 0 && enabled) {
+            homing_.start(now, homing_parameters(), last_demand_);
+        }
+        if ((falling & kNewSetpointBit) != 0) {
+            homing_.interrupt(now);
+        }
+        if (((rising | falling) & kHaltBit) != 0) {
+            homing_.set_halt(now, (controlword & kHaltBit) != 0);
+        }
+        break;
+    }
+}
+
+// 5.3.2.3: a new setpoint, unless the buffer is full or its end lies outside 0x607D (5.3.2.1).
+bool Epos2Drive::new_position_setpoint(double now, std::uint16_t controlword) {
+    const auto& od = dictionary_.objects();
+    motion::PositionSetpoint setpoint;
+    setpoint.target = od.get_as<std::int32_t>(0x607A, 0);
+    setpoint.relative = (controlword & kRelativeBit) != 0;
+    setpoint.endless = (controlword & kEndlessMovementBit) != 0;
+    setpoint.parameters = profile_parameters();
+    const motion::SoftwarePositionLimit limit{od.get_as<std::int32_t>(0x607D, 1),
+                                              od.get_as<std::int32_t>(0x607D, 2)};
+    const double end =
+        setpoint.relative ? position_profile_.demand_target() + setpoint.target : setpoint.target;
+    if (!setpoint.endless) {
+        if (const auto error = limit.check_target(end)) {
+            raise_device_error(*error);
+            return false;
+        }
+    }
+    target_reached_.reset();
+    return position_profile_.new_setpoint(now, setpoint,
+                                          (controlword & kChangeImmediatelyBit) != 0);
+}
+
+// 4.2: an error recorded in 0x1003 that the node's services raised (heartbeat, guarding, PDO
+// length, SYNC): the "a" fault reaction.
+void Epos2Drive::on_error_recorded() {
+    const auto entry = dictionary_.objects().get_as<std::uint32_t>(0x1003, 1);
+    const auto code = static_cast<std::uint16_t>(entry & 0xFFFF);
+    if (is_communication_error(code)) {
+        device_control_.fault_occurred(motion::FaultClass::Communication);
+    }
+}
+
+void Epos2Drive::raise_device_error(std::uint16_t code) {
+    node_.emcy().raise(code, device_error_register_bits(code));
+    device_control_.fault_occurred(motion::FaultClass::Device);
+}
+
+// One millisecond: the device control's pending transitions, the mode's demand, ten steps of
+// the current loop and the plant, the monitors, the computed objects.
+void Epos2Drive::control_period() {
+    const double now = seconds();
+    finish_device_control_transitions();
+    follow_power_stage();
+    const motion::DriveOutputs outputs = device_control_.outputs();
+    MotionState demand{static_cast<double>(position_actual()), 0, 0};
+    if (outputs.ramp != motion::StopRamp::None) {
+        demand = stop_ramp(now);
+    } else if (outputs.drive_function_enabled) {
+        demand = mode_demand(now);
+    } else if (power_stage_on_) {
+        demand = position_profile_.update(now); // hold where the drive stands
+    }
+    axis_.set_demand({.position = demand.position - static_cast<double>(position_offset_),
+                      .velocity = demand.velocity,
+                      .acceleration = demand.acceleration});
+    for (int step = 0; step < plant::ServoAxis::kCurrentStepsPerOuterLoop; ++step) {
+        axis_.step();
+        if (axis_.index_passed()) {
+            index_latch_ = position_actual();
+        }
+    }
+    last_demand_ = demand;
+    watch_motion(now, demand);
+    publish(demand);
+}
+
+// Refresh (20) and Measure Init (21) take one control period here.
+void Epos2Drive::finish_device_control_transitions() {
+    if (device_control_.state() == DriveState::Refresh) {
+        device_control_.refresh_finished();
+    } else if (device_control_.state() == DriveState::MeasureInit) {
+        device_control_.measure_init_finished();
+    }
+}
+
+// Power stage switched on: the controllers start on the actual position, at rest.
+void Epos2Drive::follow_power_stage() {
+    const bool on = device_control_.outputs().power_stage_on;
+    if (on == power_stage_on_) {
+        return;
+    }
+    power_stage_on_ = on;
+    axis_.set_mode(on ? plant::ControlMode::Position : plant::ControlMode::PowerOff);
+    stopping_ = false;
+    if (on) {
+        on_mode_written();
+    } else if (homing_.in_progress()) {
+        homing_.drive_disabled(seconds());
+    }
+}
+
+// A quickstop, slow-down or fault reaction ramp (3.2.3): the demand stops from where it is
+// with the quickstop (0x6085) or the mode's deceleration; the device control hears when the axis
+// stands still (8.2.73) or the standstill timeout elapsed.
+MotionState Epos2Drive::stop_ramp(double now) {
+    const auto& od = dictionary_.objects();
+    if (!stopping_) {
+        stopping_ = true;
+        const bool quick = device_control_.outputs().ramp == motion::StopRamp::QuickStop;
+        stop_ = motion::plan_stop(
+            last_demand_, rpm_to_counts(od.get_as<std::uint32_t>(quick ? 0x6085 : 0x6084, 0)),
+            static_cast<motion::RampShape>(od.get_as<std::int16_t>(0x6086, 0)));
+        stop_start_ = now;
+        standstill_.stop_started(now);
+        if (homing_.in_progress()) {
+            homing_.drive_disabled(now);
+        }
+    }
+    const MotionState demand = stop_.sample(now - stop_start_);
+    standstill_.update(now, counts_to_rpm(axis_.velocity_actual()),
+                       now - stop_start_ >= stop_.duration());
+    if (standstill_.stop_completed(now)) {
+        stopping_ = false;
+        // The mode starts over at rest where the stop ended, its setpoints dropped.
+        position_profile_.reset(demand.position);
+        velocity_profile_.reset(demand.position);
+        homing_.reset(demand.position);
+        device_control_.stop_completed();
+    }
+    return demand;
+}
+
+MotionState Epos2Drive::mode_demand(double now) {
+    switch (mode_) {
+    case OperatingMode::ProfilePosition:
+        return position_profile_.update(now);
+    case OperatingMode::ProfileVelocity:
+        return velocity_profile_.update(now);
+    case OperatingMode::Homing:
+        return homing_demand(now);
+    }
+    return {};
+}
+
+MotionState Epos2Drive::homing_demand(double now) {
+    const plant::SwitchStates switches = axis_.switches();
+    const motion::HomingStep step = homing_.update(now, {.position = position_actual(),
+                                                         .negative_limit = switches.negative_limit,
+                                                         .positive_limit = switches.positive_limit,
+                                                         .home_switch = switches.home,
+                                                         .index_position = index_latch_,
+                                                         .current = axis_.current_actual()});
+    index_latch_.reset();
+    if (step.position_offset) {
+        position_offset_ += *step.position_offset;
+    }
+    return step.demand;
+}
+
+// Following error (5.9.1.2) in the position-controlled modes; target reached and speed zero.
+void Epos2Drive::watch_motion(double now, const MotionState& demand) {
+    const auto actual = static_cast<double>(position_actual());
+    const bool position_controlled = mode_ != OperatingMode::ProfileVelocity;
+    if (power_stage_on_ && device_control_.state() != DriveState::Fault) {
+        if (position_controlled) {
+            if (const auto error = following_error_.update(demand.position, actual)) {
+                raise_device_error(*error);
+            }
+        }
+        watch_limit_switches();
+        // 8.2.105: the actual position leaving the limits; homing runs before the limits mean
+        // anything (they are relative to the home position).
+        if (mode_ != OperatingMode::Homing) {
+            if (const auto error = position_limit_.update(actual)) {
+                raise_device_error(*error);
+            }
+        }
+    }
+    const double velocity_rpm = counts_to_rpm(axis_.velocity_actual());
+    switch (mode_) {
+    case OperatingMode::ProfilePosition:
+        if ((controlword_ & kNewSetpointBit) == 0) {
+            setpoint_acknowledged_ = position_profile_.buffer_full();
+        }
+        target_reached_now_ = target_reached_.update(now, position_profile_.finished(now), actual,
+                                                     position_profile_.demand_target());
+        break;
+    case OperatingMode::ProfileVelocity: {
+        const double target = (controlword_ & kHaltBit) != 0
+                                  ? 0.0
+                                  : dictionary_.objects().get_as<std::int32_t>(0x60FF, 0);
+        target_reached_now_ =
+            target_reached_.update(now, velocity_profile_.ramp_finished(now), velocity_rpm, target);
+        standstill_now_ = standstill_.update(now, velocity_rpm, demand.velocity == 0);
+        break;
+    }
+    case OperatingMode::Homing:
+        break;
+    }
+}
+
+// 8.2.57, table 8-89: a limit switch functionality that goes high while its bit of the execution
+// mask (0x2071 sub 4) is set raises 0xFF06 / 0xFF07 (4.2.27, 4.2.28). During homing the switches
+// are references, which the homing procedure handles. The plant gives the functionalities'
+// states directly, so the polarity (sub 3) has no pin level to invert.
+void Epos2Drive::watch_limit_switches() {
+    const std::uint16_t states = digital_input_states();
+    const std::uint16_t rising = states & ~limit_inputs_before_;
+    limit_inputs_before_ = states;
+    if (rising == 0 || mode_ == OperatingMode::Homing) {
+        return;
+    }
+    const auto executed = dictionary_.objects().get_as<std::uint16_t>(0x2071, 4);
+    if ((rising & executed & kNegativeLimitInput) != 0) {
+        raise_device_error(motion::kNegativeLimitSwitchErrorCode);
+    }
+    if ((rising & executed & kPositiveLimitInput) != 0) {
+        raise_device_error(motion::kPositiveLimitSwitchErrorCode);
+    }
+}
+
+// Table 8-114 and 5.3.2.3 / 5.4.2.3 / 5.10.2.3: the bits the present mode owns.
+std::uint16_t Epos2Drive::mode_statusword_bits(double now) const {
+    std::uint16_t bits = homing_.referenced() ? motion::kPositionReferencedBit : 0;
+    switch (mode_) {
+    case OperatingMode::ProfilePosition:
+        if (target_reached_now_)
+            bits |= motion::kTargetReachedBit;
+        if (setpoint_acknowledged_)
+            bits |= motion::kSetpointAcknowledgeBit;
+        if (following_error_.active())
+            bits |= motion::kFollowingErrorBit;
+        break;
+    case OperatingMode::ProfileVelocity:
+        if (target_reached_now_)
+            bits |= motion::kTargetReachedBit;
+        if (standstill_now_)
+            bits |= motion::kSpeedZeroBit;
+        break;
+    case OperatingMode::Homing:
+        bits |= homing_.statusword_bits(now);
+        break;
+    }
+    return bits;
+}
+
+std::uint16_t Epos2Drive::digital_input_states() const {
+    const plant::SwitchStates switches = axis_.switches();
+    std::uint16_t states = 0;
+    if (switches.negative_limit)
+        states |= kNegativeLimitInput;
+    if (switches.positive_limit)
+        states |= kPositiveLimitInput;
+    if (switches.home)
+        states |= kHomeSwitchInput;
+    return states == 0 ? 0 : states & dictionary_.objects().get_as<std::uint16_t>(0x2071, 2);
+}
+
+// The computed objects (8.2.86, 8.2.92 - 8.2.97, 8.2.57), stored when they change so that the
+// listeners of event-driven TPDOs hear it.
+void Epos2Drive::publish(const MotionState& demand) {
+    const auto to_i32 = [](double value) {
+        return static_cast<std::int32_t>(std::lround(value));
+    };
+    const PublishedValues now{
+        .statusword = static_cast<std::uint16_t>(device_control_.statusword() |
+                                                 mode_statusword_bits(seconds())),
+        .position_demand = to_i32(demand.position),
+        .position_actual = static_cast<std::int32_t>(position_actual()),
+        .velocity_demand = to_i32(counts_to_rpm(demand.velocity)),
+        .velocity_actual = to_i32(counts_to_rpm(axis_.velocity_actual())),
+        .current_actual = static_cast<std::int16_t>(std::lround(axis_.current_actual() * 1000)),
+        .digital_inputs = digital_input_states(),
+    };
+    // Compared with what was stored last, not read back: a dictionary read per object and
+    // millisecond would cost more than the whole motor model.
+    auto& od = dictionary_.objects();
+    const auto store = [&od, this](std::uint16_t index, std::uint8_t sub, auto value, auto last) {
+        if (!published_ || value != last) {
+            od.set_as(index, sub, value);
+        }
+    };
+    const PublishedValues& last = published_.value_or(now);
+    store(0x6041, 0, now.statusword, last.statusword);
+    store(0x6062, 0, now.position_demand, last.position_demand);
+    store(0x6064, 0, now.position_actual, last.position_actual);
+    store(0x606B, 0, now.velocity_demand, last.velocity_demand);
+    store(0x606C, 0, now.velocity_actual, last.velocity_actual);
+    store(0x6078, 0, now.current_actual, last.current_actual);
+    store(0x2071, 1, now.digital_inputs, last.digital_inputs);
+    published_ = now;
+}
+
+// 5.3.2.1 / 5.10.2.1: the profile clamped to Maximal Profile Velocity 0x607F and Max
+// Acceleration 0x60C5 (all of them at least 1 by their value ranges, so the clamp cannot fail).
+motion::ProfileParameters Epos2Drive::profile_parameters() const {
+    const auto& od = dictionary_.objects();
+    const motion::ProfileParameters written{
+        .velocity = rpm_to_counts(od.get_as<std::uint32_t>(0x6081, 0)),
+        .acceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x6083, 0)),
+        .deceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x6084, 0)),
+        .shape = static_cast<motion::RampShape>(od.get_as<std::int16_t>(0x6086, 0))};
+    const motion::ProfileLimits limits{
+        .max_velocity = rpm_to_counts(od.get_as<std::uint32_t>(0x607F, 0)),
+        .max_acceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x60C5, 0))};
+    return *motion::clamp_to_limits(written, limits);
+}
+
+motion::HomingParameters Epos2Drive::homing_parameters() const {
+    const auto& od = dictionary_.objects();
+    motion::HomingParameters parameters;
+    parameters.method = motion::to_homing_method(od.get_as<std::int8_t>(0x6098, 0))
+                            .value_or(motion::HomingMethod::ActualPosition);
+    parameters.switch_search_speed = rpm_to_counts(od.get_as<std::uint32_t>(0x6099, 1));
+    parameters.zero_search_speed = rpm_to_counts(od.get_as<std::uint32_t>(0x6099, 2));
+    parameters.acceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x609A, 0));
+    parameters.shape = static_cast<motion::RampShape>(od.get_as<std::int16_t>(0x6086, 0));
+    parameters.home_offset = od.get_as<std::int32_t>(0x607C, 0);
+    parameters.home_position = od.get_as<std::int32_t>(0x2081, 0);
+    parameters.current_threshold = od.get_as<std::uint16_t>(0x2080, 0) / 1000.0;
+    parameters.counts_per_turn = static_cast<std::int64_t>(counts_per_turn_);
+    return parameters;
+}
+
+double Epos2Drive::seconds() const {
+    return std::chrono::duration<double>(loop_.now().time_since_epoch()).count();
+}
+
+// 8.2.84, 8.2.87 - 8.2.89.
+void Epos2Drive::read_option_codes() {
+    const auto& od = dictionary_.objects();
+    device_control_.set_option_codes({.abort_connection = od.get_as<std::int16_t>(0x6007, 0),
+                                      .shutdown = od.get_as<std::int16_t>(0x605B, 0),
+                                      .disable_operation = od.get_as<std::int16_t>(0x605C, 0),
+                                      .fault_reaction = od.get_as<std::int16_t>(0x605E, 0)});
+}
+
+// 8.2.74: quadcounts are four per encoder pulse.
+void Epos2Drive::read_counts_per_turn() {
+    counts_per_turn_ = 4.0 * dictionary_.objects().get_as<std::uint32_t>(0x2210, 1);
+}
+
+Epos2Network make_epos2_network(core::EventLoop& loop, std::size_t count,
+                                const Epos2DriveConfig& config, canopen::NodeId first_node_id) {
+    Epos2Network network;
+    network.bus = std::make_unique<can::VirtualBus>(loop);
+    for (std::size_t n = 0; n < count; ++n) {
+        Epos2DriveConfig drive_config = config;
+        drive_config.dictionary.node_id = static_cast<canopen::NodeId>(first_node_id + n);
+        drive_config.dictionary.serial_number = config.dictionary.serial_number + n;
+        drive_config.dictionary.parameter_file.clear();
+        network.ports.push_back(
+            network.bus->connect("epos2-" + std::to_string(drive_config.dictionary.node_id)));
+        network.drives.push_back(
+            std::make_unique<Epos2Drive>(loop, *network.ports.back(), drive_config));
+        network.drives.back()->start();
+    }
+    return network;
+}
+
+} // namespace eposp::drives::epos2

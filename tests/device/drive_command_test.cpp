@@ -1,0 +1,31 @@
+// `eposp drive epos2` run as a user runs it.
+#include "eposp_command.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace eposp::device {
+namespace {
+
+using testing::HasSubstr;
+
+TEST(DriveCommand, VirtualRunBootsTheDriveAndEndsAfterItsDuration) {
+    const auto result = eposp("drive epos2 --node-id 5 --virtual --for 200ms");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("epos2: node 5 on the bus"));
+    EXPECT_THAT(result.output, HasSubstr("stopped in Switch On Disabled"));
+}
+
+TEST(DriveCommand, VirtualRunWithoutDurationIsAUserError) {
+    const auto result = eposp("drive epos2 --virtual");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("--virtual needs --for"));
+}
+
+TEST(DriveCommand, NodeIdOutsideOneTo127IsRefused) {
+    EXPECT_EQ(eposp("drive epos2 --node-id 128 --virtual --for 1ms").exit_code, 1);
+    EXPECT_EQ(eposp("drive epos2 --node-id 0 --virtual --for 1ms").exit_code, 1);
+}
+
+} // namespace
+} // namespace eposp::device

@@ -1,0 +1,394 @@
+// A simulated EPOS2 driven purely through CAN frames, the way a CANopen master configures and
+// moves a real one: NMT, SDO writes of the mode and profile, controlword and target by RPDO,
+// statusword and position by TPDO on SYNC, EMCY on errors. All in virtual time.
+#include "eposp/canmaster/can/virtual_bus.hpp"
+#include "eposp/canmaster/canopen/nmt_protocol.hpp"
+#include "eposp/canmaster/canopen/sdo_client.hpp"
+#include "eposp/drives/epos2/epos2_drive.hpp"
+#include "plant_test_motor.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <optional>
+#include <set>
+#include <vector>
+
+namespace eposp::drives::epos2 {
+namespace {
+
+using namespace std::chrono_literals;
+using canopen::AbortCode;
+using canopen::encode;
+
+constexpr canopen::NodeId kNode = 2;
+constexpr std::uint32_t kSyncId = 0x080;
+constexpr std::uint32_t kEmcyId = 0x080 + kNode;
+constexpr std::uint32_t kRpdo1Id = 0x200 + kNode; // controlword (8.2.18)
+constexpr std::uint32_t kRpdo3Id = 0x400 + kNode; // controlword, target position (8.2.20)
+constexpr std::uint32_t kTpdo3Id = 0x380 + kNode; // statusword, position actual (8.2.28)
+
+// Table 3-4 under the mask of CiA 402 (bits 0-3, 5, 6).
+constexpr std::uint16_t kStateMask = 0x006F;
+constexpr std::uint16_t kOperationEnabled = 0x0027;
+constexpr std::uint16_t kSwitchOnDisabled = 0x0040;
+constexpr std::uint16_t kFault = 0x0008;
+
+// Table 3-6.
+constexpr std::uint16_t kShutdown = 0x0006;
+constexpr std::uint16_t kSwitchOn = 0x0007;
+constexpr std::uint16_t kEnableOperation = 0x000F;
+constexpr std::uint16_t kFaultReset = 0x0080;
+constexpr std::uint16_t kNewSetpoint = 0x0010;
+constexpr std::uint16_t kChangeImmediately = 0x0020;
+
+struct Tpdo {
+    double time = 0; ///< seconds of virtual time
+    std::uint16_t statusword = 0;
+    std::int32_t position = 0;
+};
+
+Epos2DriveConfig drive_config(plant::AxisParameters axis) {
+    Epos2DriveConfig config;
+    config.dictionary.node_id = kNode;
+    config.axis = axis;
+    return config;
+}
+
+class Epos2DriveOnBus : public ::testing::Test {
+protected:
+    explicit Epos2DriveOnBus(plant::AxisParameters axis = plant::test::tuned_axis())
+        : drive(loop, *device, drive_config(axis)) {
+        master->on_receive([this](const can::Frame& frame) { receive(frame); });
+        drive.start();
+        loop.run_for(10ms);
+    }
+
+    double now() const {
+        return std::chrono::duration<double>(loop.now().time_since_epoch()).count();
+    }
+    void receive(const can::Frame& frame) {
+        client.on_frame(frame);
+        if (frame.id == kTpdo3Id) {
+            tpdos.push_back({now(), canopen::decode<std::uint16_t>(frame.payload().subspan(0, 2)),
+                             canopen::decode<std::int32_t>(frame.payload().subspan(2, 4))});
+        } else if (frame.id == kEmcyId) {
+            emcys.emplace_back(frame.payload().begin(), frame.payload().end());
+        }
+    }
+
+    void write(std::uint16_t index, std::uint8_t sub, canopen::Bytes value) {
+        std::optional<AbortCode> result;
+        client.download(kNode, index, sub, std::move(value),
+                        [&result](AbortCode code) { result = code; });
+        loop.run_for(20ms);
+        ASSERT_EQ(result, AbortCode::None) << fmt::format("0x{:04X} sub {}", index, sub);
+    }
+    template <typename T>
+    T read(std::uint16_t index, std::uint8_t sub) {
+        std::optional<canopen::Bytes> value;
+        client.upload(kNode, index, sub, [&value](AbortCode code, canopen::Bytes bytes) {
+            EXPECT_EQ(code, AbortCode::None);
+            value = std::move(bytes);
+        });
+        loop.run_for(20ms);
+        EXPECT_TRUE(value.has_value());
+        return canopen::decode<T>(value.value_or(canopen::Bytes(sizeof(T))));
+    }
+
+    void nmt(canopen::NmtCommand command) {
+        master->send(can::Frame::data_frame(canopen::kNmtCanId,
+                                            {static_cast<std::uint8_t>(command), kNode}));
+        loop.run_for(5ms);
+    }
+    void controlword(std::uint16_t word) {
+        master->send(can::Frame::data_frame(kRpdo1Id, {static_cast<std::uint8_t>(word & 0xFF),
+                                                       static_cast<std::uint8_t>(word >> 8)}));
+    }
+    void controlword_and_target(std::uint16_t word, std::int32_t target) {
+        const canopen::Bytes t = encode(target);
+        master->send(can::Frame::data_frame(kRpdo3Id, {static_cast<std::uint8_t>(word & 0xFF),
+                                                       static_cast<std::uint8_t>(word >> 8), t[0],
+                                                       t[1], t[2], t[3]}));
+    }
+    /// The master's SYNC every millisecond for `duration`.
+    void run_with_sync(std::chrono::milliseconds duration) {
+        for (auto elapsed = 0ms; elapsed < duration; elapsed += 1ms) {
+            master->send(can::Frame::data_frame(kSyncId, {}));
+            loop.run_for(1ms);
+        }
+    }
+
+    /// What a master does to a fresh EPOS2: TPDO 3 on every SYNC, NMT start, profile
+    /// parameters, enable by RPDO.
+    void configure_and_enable(std::int8_t mode) {
+        write(0x1802, 2, encode(std::uint8_t{1}));                       // synchronous, every SYNC
+        write(0x1802, 1, encode(std::uint32_t{0x4000'0000 | kTpdo3Id})); // valid, no RTR
+        write(0x6060, 0, encode(mode));
+        write(0x6081, 0, encode(std::uint32_t{1000}));  // rpm
+        write(0x6083, 0, encode(std::uint32_t{10000})); // rpm/s
+        write(0x6084, 0, encode(std::uint32_t{10000}));
+        nmt(canopen::NmtCommand::Start);
+        for (const std::uint16_t word : {kShutdown, kSwitchOn, kEnableOperation}) {
+            controlword(word);
+            run_with_sync(10ms);
+        }
+        ASSERT_FALSE(tpdos.empty());
+        ASSERT_EQ(tpdos.back().statusword & kStateMask, kOperationEnabled);
+    }
+
+    std::optional<Tpdo> first_tpdo_with(std::uint16_t bit, double after) const {
+        for (const Tpdo& tpdo : tpdos) {
+            if (tpdo.time > after && (tpdo.statusword & bit) != 0) {
+                return tpdo;
+            }
+        }
+        return std::nullopt;
+    }
+
+    core::EventLoop loop;
+    can::VirtualBus bus{loop};
+    std::unique_ptr<can::VirtualPort> device = bus.connect("epos2");
+    std::unique_ptr<can::VirtualPort> master = bus.connect("master");
+    canopen::SdoClient client{loop, *master};
+    Epos2Drive drive;
+    std::vector<Tpdo> tpdos;
+    std::vector<std::vector<std::uint8_t>> emcys;
+};
+
+// 5.3: an absolute move of 20000 qc at 1000 rpm, 10000 rpm/s on a 500-pulse encoder
+// (2000 qc/turn): v = 33 333 qc/s, a = 333 333 qc/s², so 0.1 s ramps and 0.5 s cruise.
+TEST_F(Epos2DriveOnBus, ProfilePositionMoveByPdoReachesTargetAtTheTrapezoidTime) {
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint | kChangeImmediately, 20000);
+    const double commanded = now();
+    run_with_sync(5ms);
+    const Tpdo acknowledged = tpdos.back();
+    EXPECT_NE(acknowledged.statusword & 0x1000, 0) << "set-point acknowledge";
+    EXPECT_EQ(acknowledged.statusword & 0x0400, 0) << "target reached cleared by the new move";
+    controlword_and_target(kEnableOperation, 20000);
+    run_with_sync(900ms);
+
+    const double v = 1000.0 * 2000 / 60;
+    const double a = 10000.0 * 2000 / 60;
+    const double move_time = v / a + 20000 / v;
+    const std::optional<Tpdo> reached = first_tpdo_with(0x0400, commanded + 0.01);
+    ASSERT_TRUE(reached.has_value());
+    EXPECT_NEAR(reached->time - commanded, move_time, 0.002); // one control period + one SYNC
+    EXPECT_NEAR(tpdos.back().position, 20000, 5);
+    EXPECT_EQ(tpdos.back().statusword & 0x1000, 0) << "acknowledge follows bit 4 back";
+    EXPECT_EQ(read<std::int32_t>(0x6064, 0), tpdos.back().position);
+}
+
+// 8.2.85: a relative target adds to the last target.
+TEST_F(Epos2DriveOnBus, RelativeMoveAddsToThePosition) {
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint | 0x0040, -3000);
+    run_with_sync(5ms);
+    controlword_and_target(kEnableOperation | 0x0040, -3000);
+    run_with_sync(500ms);
+    EXPECT_NEAR(tpdos.back().position, -3000, 5);
+    EXPECT_NE(tpdos.back().statusword & 0x0400, 0);
+}
+
+// 5.10: Profile Velocity reaches its target velocity and says so.
+TEST_F(Epos2DriveOnBus, ProfileVelocityReachesTheTargetVelocity) {
+    configure_and_enable(3);
+    EXPECT_EQ(read<std::int8_t>(0x6061, 0), 3);
+    EXPECT_NE(tpdos.back().statusword & 0x1000, 0) << "speed is equal 0 at rest";
+    write(0x60FF, 0, encode(std::int32_t{500}));
+    run_with_sync(300ms);
+    // Velocity is measured in quadcounts per millisecond (8.2.48): 30 rpm steps at 2000 qc/turn.
+    EXPECT_NEAR(read<std::int32_t>(0x606C, 0), 500, 35);
+    EXPECT_NE(tpdos.back().statusword & 0x0400, 0) << "target reached";
+    EXPECT_EQ(tpdos.back().statusword & 0x1000, 0) << "speed no longer 0";
+}
+
+// 8.2.90: the modes this simulation does not run yet are refused.
+TEST_F(Epos2DriveOnBus, ModesNotYetSimulatedAreRefused) {
+    std::optional<AbortCode> result;
+    client.download(kNode, 0x6060, 0, encode(std::int8_t{7}),
+                    [&result](AbortCode code) { result = code; });
+    loop.run_for(20ms);
+    EXPECT_EQ(result, AbortCode::InvalidValue);
+    EXPECT_EQ(read<std::int8_t>(0x6061, 0), 1);
+}
+
+// 5.4.3.10: method 35 makes the actual position the home position, by SDO only.
+TEST_F(Epos2DriveOnBus, HomingOnActualPositionBySdo) {
+    configure_and_enable(6);
+    write(0x6098, 0, encode(std::int8_t{35}));
+    write(0x2081, 0, encode(std::int32_t{1234}));
+    write(0x6040, 0, encode(std::uint16_t{kEnableOperation | kNewSetpoint}));
+    run_with_sync(20ms);
+    const std::uint16_t statusword = read<std::uint16_t>(0x6041, 0);
+    EXPECT_NE(statusword & 0x1000, 0) << "homing attained";
+    EXPECT_NE(statusword & 0x0400, 0) << "target reached";
+    EXPECT_NE(statusword & 0x8000, 0) << "referenced";
+    EXPECT_NEAR(read<std::int32_t>(0x6064, 0), 1234, 2);
+}
+
+class Epos2DriveWithHomeSwitch : public Epos2DriveOnBus {
+protected:
+    static plant::AxisParameters axis_with_switch() {
+        plant::AxisParameters axis = plant::test::tuned_axis();
+        axis.switches.home = 3000;
+        return axis;
+    }
+    Epos2DriveWithHomeSwitch() : Epos2DriveOnBus(axis_with_switch()) {}
+};
+
+// 5.4.3.7: method 23, falling edge of the home switch on the positive side, found by SDO.
+TEST_F(Epos2DriveWithHomeSwitch, HomingOnTheHomeSwitchEdge) {
+    configure_and_enable(6);
+    write(0x6098, 0, encode(std::int8_t{23}));
+    write(0x6099, 1, encode(std::uint32_t{200}));
+    write(0x6099, 2, encode(std::uint32_t{20}));
+    write(0x609A, 0, encode(std::uint32_t{5000}));
+    write(0x6040, 0, encode(std::uint16_t{kEnableOperation | kNewSetpoint}));
+    EXPECT_EQ(read<std::uint16_t>(0x2071, 1) & 0x0004, 0) << "home switch not pressed yet";
+    run_with_sync(3000ms);
+    const std::uint16_t statusword = read<std::uint16_t>(0x6041, 0);
+    EXPECT_NE(statusword & 0x1000, 0) << "homing attained";
+    EXPECT_NE(statusword & 0x8000, 0) << "referenced";
+    EXPECT_NEAR(read<std::int32_t>(0x6064, 0), 0, 3);
+}
+
+class Epos2DriveWithBlockedLoad : public Epos2DriveOnBus {
+protected:
+    static plant::AxisParameters blocked_axis() {
+        plant::AxisParameters axis = plant::test::tuned_axis();
+        axis.plant.load.coulomb_friction = 100; // far beyond the motor's torque: it cannot turn
+        return axis;
+    }
+    Epos2DriveWithBlockedLoad() : Epos2DriveOnBus(blocked_axis()) {}
+};
+
+// 4.2.22, table 4-11: following error 0x8611 with error register bit 5 (motion error), in the
+// history, the fault reaction ending in Fault; fault reset clears it.
+TEST_F(Epos2DriveWithBlockedLoad, FollowingErrorRaisesEmcyAndFaults) {
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint, 20000);
+    run_with_sync(1000ms);
+    ASSERT_FALSE(emcys.empty());
+    const std::vector<std::uint8_t>& emcy = emcys.front();
+    ASSERT_EQ(emcy.size(), 8U);
+    EXPECT_EQ(emcy[0], 0x11);
+    EXPECT_EQ(emcy[1], 0x86);
+    EXPECT_NE(emcy[2] & 0x20, 0) << "motion error";
+    EXPECT_EQ(read<std::uint32_t>(0x1003, 1) & 0xFFFF, 0x8611U);
+    EXPECT_NE(read<std::uint8_t>(0x1001, 0) & 0x20, 0);
+    EXPECT_EQ(tpdos.back().statusword & kStateMask, kFault);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(tpdos.back().statusword & kStateMask, kSwitchOnDisabled);
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0);
+    ASSERT_GE(emcys.size(), 2U);
+    EXPECT_EQ(emcys.back()[0], 0x00);
+    EXPECT_EQ(emcys.back()[1], 0x00);
+}
+
+// 4.2 / 8.2.84: a CAN error the node raises (RPDO 1 too short: 0x8210) is an "a" error whose
+// default reaction (0x6007 = 3, quickstop) ends in Fault.
+TEST_F(Epos2DriveOnBus, PdoLengthErrorTriggersTheCommunicationFaultReaction) {
+    configure_and_enable(1);
+    master->send(can::Frame::data_frame(kRpdo1Id, {0x0F}));
+    run_with_sync(100ms);
+    EXPECT_EQ(read<std::uint32_t>(0x1003, 1) & 0xFFFF, 0x8210U);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+}
+
+// 8.2.105 / 5.3.2.1: a target beyond the software position limit is refused with 0xFF09.
+TEST_F(Epos2DriveOnBus, TargetBeyondSoftwareLimitRaisesFF09) {
+    write(0x607D, 2, encode(std::int32_t{10000}));
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint, 20000);
+    run_with_sync(100ms); // the quickstop ends after the standstill time (0x2101 sub 2: 50 ms)
+    ASSERT_FALSE(emcys.empty());
+    EXPECT_EQ(emcys.front()[0], 0x09);
+    EXPECT_EQ(emcys.front()[1], 0xFF);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+    EXPECT_NEAR(tpdos.back().position, 0, 5);
+}
+
+// 8.2.105: an endless movement (no target to check) is stopped by the actual position crossing
+// the limit: 0xFF09, fault.
+TEST_F(Epos2DriveOnBus, EndlessMoveBeyondSoftwareLimitRaisesFF09) {
+    write(0x607D, 2, encode(std::int32_t{10000}));
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint | 0x8000, 1);
+    run_with_sync(1000ms);
+    ASSERT_FALSE(emcys.empty());
+    EXPECT_EQ(emcys.front()[0], 0x09);
+    EXPECT_EQ(emcys.front()[1], 0xFF);
+    EXPECT_NE(emcys.front()[2] & 0x80, 0) << "manufacturer specific error";
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+    EXPECT_GE(tpdos.back().position, 10000);
+}
+
+// 8.2.89: a fault reaction option code written by the master applies: -1 signals only.
+TEST_F(Epos2DriveWithBlockedLoad, FaultReactionOptionCodeMinusOneOnlyWarns) {
+    write(0x605E, 0, encode(std::int16_t{-1}));
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint, 20000);
+    run_with_sync(500ms);
+    ASSERT_FALSE(emcys.empty());
+    EXPECT_EQ(emcys.front()[1], 0x86);
+    EXPECT_EQ(drive.state(), motion::DriveState::OperationEnable);
+    EXPECT_NE(tpdos.back().statusword & 0x0080, 0) << "warning";
+    EXPECT_NE(tpdos.back().statusword & 0x2000, 0) << "following error";
+}
+
+class Epos2DriveWithLimitSwitch : public Epos2DriveOnBus {
+protected:
+    static plant::AxisParameters axis_with_limit() {
+        plant::AxisParameters axis = plant::test::tuned_axis();
+        axis.switches.positive_limit = 5000;
+        return axis;
+    }
+    Epos2DriveWithLimitSwitch() : Epos2DriveOnBus(axis_with_limit()) {}
+};
+
+// 8.2.57 / 4.2.28: the positive limit switch, executed once its bit of 0x2071 sub 4 is set,
+// raises 0xFF07 (error register bit 7) and faults.
+TEST_F(Epos2DriveWithLimitSwitch, ExecutedPositiveLimitSwitchRaisesFF07) {
+    write(0x2071, 4, encode(std::uint16_t{0x000B})); // limit switches and position marker
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint, 20000);
+    run_with_sync(600ms);
+    ASSERT_FALSE(emcys.empty());
+    EXPECT_EQ(emcys.front()[0], 0x07);
+    EXPECT_EQ(emcys.front()[1], 0xFF);
+    EXPECT_NE(emcys.front()[2] & 0x80, 0);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+    EXPECT_NE(read<std::uint16_t>(0x2071, 1) & 0x0002, 0) << "the switch shows in the state";
+}
+
+// Table 8-89: with the default execution mask (0x0008) the switch is only displayed.
+TEST_F(Epos2DriveWithLimitSwitch, LimitSwitchNotInTheExecutionMaskIsOnlyDisplayed) {
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint, 8000);
+    run_with_sync(600ms);
+    EXPECT_TRUE(emcys.empty());
+    EXPECT_NEAR(tpdos.back().position, 8000, 5);
+    EXPECT_NE(read<std::uint16_t>(0x2071, 1) & 0x0002, 0);
+}
+
+TEST(Epos2Network, EveryDriveBootsWithItsOwnNodeId) {
+    core::EventLoop loop;
+    Epos2Network network = make_epos2_network(loop, 3, drive_config(plant::test::tuned_axis()), 5);
+    std::vector<std::uint32_t> boot_ups;
+    auto master = network.bus->connect("master");
+    master->on_receive([&boot_ups](const can::Frame& frame) { boot_ups.push_back(frame.id); });
+    // Reset node to all: each answers with its boot-up (CiA 301 7.2.8.3.2).
+    master->send(can::Frame::data_frame(canopen::kNmtCanId, {0x81, 0x00}));
+    loop.run_for(50ms);
+    const std::set<std::uint32_t> nodes_booted(boot_ups.begin(), boot_ups.end());
+    EXPECT_EQ(nodes_booted, (std::set<std::uint32_t>{0x705, 0x706, 0x707}));
+}
+
+} // namespace
+} // namespace eposp::drives::epos2
