@@ -407,8 +407,8 @@ private:
             if (member != nullptr) {
                 model_.bind(element.member, *member);
             }
-            // Without a member, its value is still resolved against the structure's own type
-            // only for names: nested aggregates then go unchecked.
+            // An unknown member's value is still searched for undeclared names; its nested
+            // aggregates, of unknown type, are not checked against any members.
             const ast::TypeSpec& member_type =
                 member != nullptr && member->variable != nullptr ? member->variable->type : type;
             resolve_initializer(element.value.get(), member_type, scope);

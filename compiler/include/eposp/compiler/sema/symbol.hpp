@@ -29,7 +29,8 @@ struct Symbol {
     SymbolKind kind = SymbolKind::Variable;
     std::string name{};     // as first written
     SourceRange declared{}; // empty for the standard library
-    /// Variable: its section; POU, struct or FB type: the scope of its members.
+    /// Variable: the VAR section declaring it. The pointers below lead to the declaring AST
+    /// node, the one that matches `kind`.
     ast::VarSectionKind section = ast::VarSectionKind::Var;
     const ast::VariableDeclaration* variable = nullptr;
     const ast::Pou* pou = nullptr;
