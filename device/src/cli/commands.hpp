@@ -8,5 +8,6 @@ namespace eposp::device::cli {
 // callback runs it and stores the process exit code in `exit_code`.
 void add_bus_command(CLI::App& app, int& exit_code);
 void add_node_command(CLI::App& app, int& exit_code);
+void add_check_command(CLI::App& app, int& exit_code);
 
 } // namespace eposp::device::cli
