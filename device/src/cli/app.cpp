@@ -16,6 +16,7 @@ int run_cli(int argc, char** argv) {
     cli::add_bus_command(app, exit_code);
     cli::add_node_command(app, exit_code);
     cli::add_drive_command(app, exit_code);
+    cli::add_check_command(app, exit_code);
 
     try {
         app.parse(argc, argv);

@@ -9,5 +9,6 @@ namespace eposp::device::cli {
 void add_bus_command(CLI::App& app, int& exit_code);
 void add_node_command(CLI::App& app, int& exit_code);
 void add_drive_command(CLI::App& app, int& exit_code);
+void add_check_command(CLI::App& app, int& exit_code);
 
 } // namespace eposp::device::cli

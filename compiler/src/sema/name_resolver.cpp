@@ -1,0 +1,613 @@
+#include "name_resolver.hpp"
+
+#include "eposp/compiler/sema/standard_library.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::sema {
+namespace {
+
+/// What member access and indexing need to know about the value an expression denotes: enough
+/// to resolve `a.b[i].c`, not a type system (that is the type checker's job).
+struct ValueShape {
+    bool known = false;
+    std::string type_name{};             // for messages
+    const ast::TypeSpec* spec = nullptr; // arrays and references: indexing and `^`
+    const Scope* members = nullptr;      // structs and FB instances
+};
+
+// Aliases of aliases are followed this deep; a longer chain is a cycle.
+constexpr int kMaxAliasDepth = 32;
+
+class NameResolver {
+public:
+    explicit NameResolver(ResolverState& state)
+        : state_(state), model_(state.model), global_(state.model.global_scope()) {}
+
+    void resolve(const ast::CompilationUnit& unit) {
+        for (const ast::TypeDeclaration& declaration : unit.types) {
+            resolve_type(declaration.type);
+            resolve_initializer(declaration.initial_value.get(), declaration.type, global_);
+        }
+        for (const ast::Pou& pou : unit.pous) {
+            resolve_pou(pou);
+        }
+        for (const ast::Configuration& configuration : unit.configurations) {
+            resolve_configuration(configuration);
+        }
+    }
+
+private:
+    void error(const SourceRange& range, std::string message) {
+        state_.diagnostics.error(range, std::move(message));
+    }
+
+    // --- Types -----------------------------------------------------------------------------
+
+    void resolve_type(const ast::TypeSpec& spec) {
+        std::visit([this](const auto& node) { resolve_type_node(node); }, spec.node);
+    }
+
+    void resolve_type_node(const ast::ElementaryTypeRef&) {}
+    void resolve_type_node(const ast::StringTypeRef& node) { resolve_optional(node.length); }
+    void resolve_type_node(const ast::NamedTypeRef& node) {
+        const Symbol* symbol = global_.find_member(node.name.name);
+        if (symbol == nullptr) {
+            error(node.name.range, fmt::format("unknown type '{}'", node.name.name));
+            return;
+        }
+        if (!names_a_type(*symbol)) {
+            error(node.name.range, fmt::format("'{}' is not a type", node.name.name));
+            return;
+        }
+        model_.bind(node.name, *symbol);
+    }
+    void resolve_type_node(const ast::ArrayType& node) {
+        for (const ast::ArrayDimension& dimension : node.dimensions) {
+            if (dimension.bounds) {
+                resolve_subrange(*dimension.bounds);
+            }
+        }
+        resolve_type(*node.element);
+    }
+    void resolve_type_node(const ast::SubrangeType& node) {
+        resolve_type(*node.base);
+        resolve_subrange(node.range);
+    }
+    void resolve_type_node(const ast::EnumType& node) {
+        if (node.base) {
+            resolve_type(*node.base);
+        }
+        for (const ast::EnumValue& value : node.values) {
+            resolve_optional(value.value);
+        }
+    }
+    void resolve_type_node(const ast::StructType& node) {
+        for (const ast::VariableDeclaration& member : node.members) {
+            resolve_variable(member, global_);
+        }
+    }
+    void resolve_type_node(const ast::ReferenceType& node) { resolve_type(*node.target); }
+
+    void resolve_subrange(const ast::Subrange& range) {
+        resolve_expression(*range.low, global_);
+        resolve_expression(*range.high, global_);
+    }
+
+    static bool names_a_type(const Symbol& symbol) {
+        return symbol.kind == SymbolKind::Type ||
+               symbol.kind == SymbolKind::StandardFunctionBlock ||
+               (symbol.kind == SymbolKind::Pou && symbol.pou->kind == ast::PouKind::FunctionBlock);
+    }
+
+    // --- Shapes of values ------------------------------------------------------------------
+
+    ValueShape shape_of(const ast::TypeSpec& spec, int depth = 0) const {
+        if (const auto* elementary = std::get_if<ast::ElementaryTypeRef>(&spec.node)) {
+            return {.known = true, .type_name = std::string(ast::name_of(elementary->type))};
+        }
+        if (const auto* string = std::get_if<ast::StringTypeRef>(&spec.node)) {
+            return {.known = true, .type_name = std::string(ast::name_of(string->type))};
+        }
+        if (const auto* named = std::get_if<ast::NamedTypeRef>(&spec.node)) {
+            // Looked up rather than taken from the model: the declaration naming this type
+            // may be in a file not resolved yet.
+            const Symbol* symbol = global_.find_member(named->name.name);
+            return symbol == nullptr || !names_a_type(*symbol)
+                       ? ValueShape{}
+                       : shape_of_type_symbol(*symbol, depth);
+        }
+        if (const auto* subrange = std::get_if<ast::SubrangeType>(&spec.node)) {
+            return shape_of(*subrange->base, depth);
+        }
+        if (std::holds_alternative<ast::StructType>(spec.node)) {
+            return {.known = true, .type_name = "STRUCT", .members = model_.struct_members(spec)};
+        }
+        if (std::holds_alternative<ast::ArrayType>(spec.node)) {
+            return {.known = true, .type_name = "ARRAY", .spec = &spec};
+        }
+        if (std::holds_alternative<ast::ReferenceType>(spec.node)) {
+            return {.known = true, .type_name = "REF_TO", .spec = &spec};
+        }
+        return {.known = true, .type_name = "enumeration"};
+    }
+
+    ValueShape shape_of_type_symbol(const Symbol& symbol, int depth) const {
+        if (symbol.kind != SymbolKind::Type) {
+            return {.known = true, .type_name = symbol.name, .members = symbol.members};
+        }
+        if (depth > kMaxAliasDepth) {
+            return {};
+        }
+        ValueShape shape = shape_of(symbol.type->type, depth + 1);
+        shape.type_name = symbol.name;
+        return shape;
+    }
+
+    ValueShape shape_of_symbol(const Symbol& symbol) const {
+        switch (symbol.kind) {
+        case SymbolKind::Variable:
+            if (symbol.variable != nullptr) {
+                return shape_of(symbol.variable->type);
+            }
+            return {.known = true, .type_name = std::string(symbol.standard_type)};
+        case SymbolKind::EnumValue:
+            return {.known = symbol.owner != nullptr,
+                    .type_name = symbol.owner != nullptr ? symbol.owner->name : ""};
+        case SymbolKind::Pou:
+            // A function's name in its own body is its result variable.
+            if (symbol.pou->return_type) {
+                return shape_of(*symbol.pou->return_type);
+            }
+            return {};
+        default:
+            return {};
+        }
+    }
+
+    // --- Expressions -----------------------------------------------------------------------
+
+    void resolve_optional(const ast::ExpressionPtr& expression) {
+        if (expression) {
+            resolve_expression(*expression, global_);
+        }
+    }
+
+    ValueShape resolve_expression(const ast::Expression& expression, const Scope& scope) {
+        return std::visit([&](const auto& node) { return resolve_node(node, scope); },
+                          expression.node);
+    }
+
+    ValueShape resolve_node(const ast::LiteralExpression& node, const Scope&) {
+        if (const auto* value = std::get_if<ast::EnumValueLiteral>(&node.value)) {
+            return resolve_qualified_enum_value(*value);
+        }
+        return {};
+    }
+
+    /// `Color#Red` (ed. 3, 6.4.4.2).
+    ValueShape resolve_qualified_enum_value(const ast::EnumValueLiteral& literal) {
+        const Symbol* type = global_.find_member(literal.type_name.name);
+        if (type == nullptr) {
+            error(literal.type_name.range,
+                  fmt::format("unknown type '{}'", literal.type_name.name));
+            return {};
+        }
+        if (type->kind != SymbolKind::Type ||
+            !std::holds_alternative<ast::EnumType>(type->type->type.node)) {
+            error(literal.type_name.range,
+                  fmt::format("'{}' is not an enumerated type", literal.type_name.name));
+            return {};
+        }
+        model_.bind(literal.type_name, *type);
+        const Symbol* value = type->members->find_member(literal.value.name);
+        if (value == nullptr) {
+            error(literal.value.range, fmt::format("enumerated type '{}' has no value '{}'",
+                                                   type->name, literal.value.name));
+            return {};
+        }
+        model_.bind(literal.value, *value);
+        return shape_of_symbol(*value);
+    }
+
+    ValueShape resolve_node(const ast::NameExpression& node, const Scope& scope) {
+        const Symbol* symbol = find_name(node.name, scope);
+        if (symbol == nullptr) {
+            return {};
+        }
+        model_.bind(node.name, *symbol);
+        return shape_of_symbol(*symbol);
+    }
+
+    /// Declared names first, then unqualified enumeration values, then the conversion
+    /// functions; reports the name when none of them has it.
+    const Symbol* find_name(const ast::Identifier& name, const Scope& scope) {
+        if (const Symbol* symbol = scope.find(name.name)) {
+            return symbol;
+        }
+        const std::string key = fold_case(name.name);
+        if (const auto it = state_.enum_values.find(key); it != state_.enum_values.end()) {
+            return unique_enum_value(name, it->second);
+        }
+        if (is_conversion_function(name.name)) {
+            auto [it, inserted] = conversions_.emplace(key, nullptr);
+            if (inserted) {
+                it->second = &model_.add({.kind = SymbolKind::StandardFunction, .name = key});
+            }
+            return it->second;
+        }
+        error(name.range, fmt::format("undeclared identifier '{}'", name.name));
+        return nullptr;
+    }
+
+    const Symbol* unique_enum_value(const ast::Identifier& name,
+                                    const std::vector<const Symbol*>& candidates) {
+        if (candidates.size() == 1) {
+            return candidates.front();
+        }
+        const Symbol* first = candidates.front();
+        Diagnostic diagnostic;
+        diagnostic.range = name.range;
+        diagnostic.message =
+            fmt::format("'{}' is ambiguous: qualify it with its type, as in {}#{}", name.name,
+                        first->owner != nullptr ? first->owner->name : "T", name.name);
+        for (const Symbol* candidate : candidates) {
+            diagnostic.notes.push_back(
+                {candidate->declared,
+                 fmt::format("'{}' is a value of '{}'", candidate->name,
+                             candidate->owner != nullptr ? candidate->owner->name : "?")});
+        }
+        state_.diagnostics.report(std::move(diagnostic));
+        return nullptr;
+    }
+
+    ValueShape resolve_node(const ast::DirectAddressExpression&, const Scope&) { return {}; }
+
+    ValueShape resolve_node(const ast::MemberExpression& node, const Scope& scope) {
+        const ValueShape object = resolve_expression(*node.object, scope);
+        if (!object.known) {
+            return {}; // already reported, or not knowable here
+        }
+        const Symbol* member =
+            object.members != nullptr ? object.members->find_member(node.member.name) : nullptr;
+        if (member == nullptr) {
+            error(node.member.range,
+                  fmt::format("'{}' has no member '{}'", object.type_name, node.member.name));
+            return {};
+        }
+        model_.bind(node.member, *member);
+        return shape_of_symbol(*member);
+    }
+
+    ValueShape resolve_node(const ast::BitAccessExpression& node, const Scope& scope) {
+        resolve_expression(*node.object, scope);
+        return {.known = true, .type_name = "BOOL"};
+    }
+
+    ValueShape resolve_node(const ast::IndexExpression& node, const Scope& scope) {
+        const ValueShape array = resolve_expression(*node.array, scope);
+        for (const ast::ExpressionPtr& index : node.indices) {
+            resolve_expression(*index, scope);
+        }
+        if (array.spec != nullptr) {
+            if (const auto* type = std::get_if<ast::ArrayType>(&array.spec->node)) {
+                return shape_of(*type->element);
+            }
+        }
+        return {};
+    }
+
+    ValueShape resolve_node(const ast::DereferenceExpression& node, const Scope& scope) {
+        const ValueShape reference = resolve_expression(*node.reference, scope);
+        if (reference.spec != nullptr) {
+            if (const auto* type = std::get_if<ast::ReferenceType>(&reference.spec->node)) {
+                return shape_of(*type->target);
+            }
+        }
+        return {};
+    }
+
+    ValueShape resolve_node(const ast::ReferenceExpression& node, const Scope& scope) {
+        resolve_expression(*node.target, scope);
+        return {};
+    }
+
+    ValueShape resolve_node(const ast::CallExpression& node, const Scope& scope) {
+        const ValueShape callee = resolve_expression(*node.callee, scope);
+        const Symbol* pou = called_pou(*node.callee);
+        // Formal names belong to the called POU, or to the FB type of the called instance.
+        const Scope* parameters = pou != nullptr ? pou->members : callee.members;
+        resolve_arguments(node.arguments, parameters, callee_name(pou, callee), scope);
+        return pou != nullptr ? callee : ValueShape{};
+    }
+
+    const Symbol* called_pou(const ast::Expression& callee) const {
+        const auto* name = std::get_if<ast::NameExpression>(&callee.node);
+        const Symbol* symbol = name != nullptr ? model_.resolved(name->name) : nullptr;
+        return symbol != nullptr && symbol->kind == SymbolKind::Pou ? symbol : nullptr;
+    }
+
+    static std::string callee_name(const Symbol* pou, const ValueShape& callee) {
+        return pou != nullptr ? pou->name : callee.type_name;
+    }
+
+    /// Formal names are checked where the callee's parameters are known; standard functions
+    /// (IN1, IN2… of extensible functions) are left to the type checker.
+    void resolve_arguments(const std::vector<ast::Argument>& arguments, const Scope* parameters,
+                           const std::string& callee, const Scope& scope) {
+        for (const ast::Argument& argument : arguments) {
+            if (argument.name && parameters != nullptr) {
+                if (const Symbol* formal = parameters->find_member(argument.name->name)) {
+                    model_.bind(*argument.name, *formal);
+                } else {
+                    error(argument.name->range,
+                          fmt::format("'{}' has no parameter '{}'", callee, argument.name->name));
+                }
+            }
+            resolve_expression(*argument.value, scope);
+        }
+    }
+
+    ValueShape resolve_node(const ast::UnaryExpression& node, const Scope& scope) {
+        resolve_expression(*node.operand, scope);
+        return {};
+    }
+
+    ValueShape resolve_node(const ast::BinaryExpression& node, const Scope& scope) {
+        resolve_expression(*node.left, scope);
+        resolve_expression(*node.right, scope);
+        return {};
+    }
+
+    // --- Initial values --------------------------------------------------------------------
+
+    void resolve_initializer(const ast::Initializer* initializer, const ast::TypeSpec& type,
+                             const Scope& scope) {
+        if (initializer == nullptr) {
+            return;
+        }
+        if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer->value)) {
+            resolve_expression(**expression, scope);
+        } else if (const auto* elements =
+                       std::get_if<std::vector<ast::ArrayInitElement>>(&initializer->value)) {
+            resolve_array_initializer(*elements, type, scope);
+        } else {
+            resolve_struct_initializer(
+                std::get<std::vector<ast::StructInitElement>>(initializer->value), type, scope);
+        }
+    }
+
+    void resolve_array_initializer(const std::vector<ast::ArrayInitElement>& elements,
+                                   const ast::TypeSpec& type, const Scope& scope) {
+        const ValueShape array = shape_of(type);
+        const auto* array_type =
+            array.spec != nullptr ? std::get_if<ast::ArrayType>(&array.spec->node) : nullptr;
+        for (const ast::ArrayInitElement& element : elements) {
+            if (element.repeat_count) {
+                resolve_expression(*element.repeat_count, scope);
+            }
+            if (element.value) {
+                resolve_initializer(element.value.get(),
+                                    array_type != nullptr ? *array_type->element : type, scope);
+            }
+        }
+    }
+
+    void resolve_struct_initializer(const std::vector<ast::StructInitElement>& elements,
+                                    const ast::TypeSpec& type, const Scope& scope) {
+        const ValueShape structure = shape_of(type);
+        for (const ast::StructInitElement& element : elements) {
+            const Symbol* member = structure.members != nullptr
+                                       ? structure.members->find_member(element.member.name)
+                                       : nullptr;
+            if (member == nullptr && structure.known) {
+                error(element.member.range, fmt::format("'{}' has no member '{}'",
+                                                        structure.type_name, element.member.name));
+            }
+            if (member != nullptr) {
+                model_.bind(element.member, *member);
+            }
+            // An unknown member's value is still searched for undeclared names; its nested
+            // aggregates, of unknown type, are not checked against any members.
+            const ast::TypeSpec& member_type =
+                member != nullptr && member->variable != nullptr ? member->variable->type : type;
+            resolve_initializer(element.value.get(), member_type, scope);
+        }
+    }
+
+    // --- Declarations ----------------------------------------------------------------------
+
+    void resolve_variable(const ast::VariableDeclaration& declaration, const Scope& scope) {
+        resolve_type(declaration.type);
+        resolve_initializer(declaration.initial_value.get(), declaration.type, scope);
+    }
+
+    void resolve_sections(const std::vector<ast::DeclarationSection>& sections,
+                          const Scope& scope) {
+        for (const ast::DeclarationSection& section : sections) {
+            const auto* variables = std::get_if<ast::VarSection>(&section);
+            if (variables == nullptr) {
+                continue;
+            }
+            for (const ast::VariableDeclaration& declaration : variables->variables) {
+                resolve_variable(declaration, scope);
+                if (variables->kind == ast::VarSectionKind::External) {
+                    bind_external(declaration);
+                }
+            }
+        }
+    }
+
+    /// Ed. 3, 6.5.2.2: a VAR_EXTERNAL names a VAR_GLOBAL of the configuration; its name in
+    /// the declaration is bound to that global.
+    void bind_external(const ast::VariableDeclaration& declaration) {
+        for (const ast::Identifier& name : declaration.names) {
+            const Symbol* global = global_.find_member(name.name);
+            if (global == nullptr || global->kind != SymbolKind::Variable ||
+                global->section != ast::VarSectionKind::Global) {
+                error(name.range,
+                      fmt::format("VAR_EXTERNAL '{}' has no matching VAR_GLOBAL", name.name));
+                continue;
+            }
+            model_.bind(name, *global);
+        }
+    }
+
+    void resolve_pou(const ast::Pou& pou) {
+        Scope& scope = *state_.pou_scopes.at(&pou);
+        if (pou.return_type) {
+            resolve_type(*pou.return_type);
+        }
+        resolve_base(pou, scope);
+        for (const ast::Identifier& interface : pou.implements) {
+            error(interface.range, fmt::format("unknown interface '{}'", interface.name));
+        }
+        resolve_sections(pou.sections, scope);
+        resolve_statements(pou.body, scope);
+    }
+
+    /// `FUNCTION_BLOCK B EXTENDS A`: B's members are looked up in A after B (ed. 3, 6.6.5.6).
+    void resolve_base(const ast::Pou& pou, Scope& scope) {
+        if (!pou.extends) {
+            return;
+        }
+        const ast::Identifier& name = *pou.extends;
+        const Symbol* base = global_.find_member(name.name);
+        if (base == nullptr) {
+            error(name.range, fmt::format("unknown function block '{}'", name.name));
+            return;
+        }
+        if (base->kind != SymbolKind::Pou || base->pou->kind != ast::PouKind::FunctionBlock) {
+            error(name.range, fmt::format("'{}' is not a function block", name.name));
+            return;
+        }
+        for (const Scope* ancestor = base->members; ancestor != nullptr;
+             ancestor = ancestor->base()) {
+            if (ancestor == &scope) {
+                error(name.range,
+                      fmt::format("'{}' extends itself through '{}'", pou.name.name, name.name));
+                return;
+            }
+        }
+        model_.bind(name, *base);
+        scope.set_base(base->members);
+    }
+
+    // --- Statements ------------------------------------------------------------------------
+
+    void resolve_statements(const ast::StatementList& statements, const Scope& scope) {
+        for (const ast::Statement& statement : statements) {
+            std::visit([&](const auto& node) { resolve_statement(node, scope); }, statement.node);
+        }
+    }
+
+    void resolve_statement(const ast::AssignmentStatement& node, const Scope& scope) {
+        resolve_expression(*node.target, scope);
+        resolve_expression(*node.value, scope);
+    }
+    void resolve_statement(const ast::CallStatement& node, const Scope& scope) {
+        resolve_expression(*node.call, scope);
+    }
+    void resolve_statement(const ast::IfStatement& node, const Scope& scope) {
+        for (const ast::ConditionalBlock& branch : node.branches) {
+            resolve_expression(*branch.condition, scope);
+            resolve_statements(branch.body, scope);
+        }
+        resolve_statements(node.else_body, scope);
+    }
+    void resolve_statement(const ast::CaseStatement& node, const Scope& scope) {
+        resolve_expression(*node.selector, scope);
+        for (const ast::CaseBranch& branch : node.branches) {
+            for (const ast::CaseLabel& label : branch.labels) {
+                resolve_expression(*label.low, scope);
+                if (label.high) {
+                    resolve_expression(*label.high, scope);
+                }
+            }
+            resolve_statements(branch.body, scope);
+        }
+        resolve_statements(node.else_body, scope);
+    }
+    void resolve_statement(const ast::ForStatement& node, const Scope& scope) {
+        if (const Symbol* variable = find_name(node.control_variable, scope)) {
+            model_.bind(node.control_variable, *variable);
+        }
+        resolve_expression(*node.from, scope);
+        resolve_expression(*node.to, scope);
+        if (node.by) {
+            resolve_expression(*node.by, scope);
+        }
+        resolve_statements(node.body, scope);
+    }
+    void resolve_statement(const ast::WhileStatement& node, const Scope& scope) {
+        resolve_expression(*node.condition, scope);
+        resolve_statements(node.body, scope);
+    }
+    void resolve_statement(const ast::RepeatStatement& node, const Scope& scope) {
+        resolve_statements(node.body, scope);
+        resolve_expression(*node.until, scope);
+    }
+    void resolve_statement(const ast::ExitStatement&, const Scope&) {}
+    void resolve_statement(const ast::ContinueStatement&, const Scope&) {}
+    void resolve_statement(const ast::ReturnStatement&, const Scope&) {}
+    void resolve_statement(const ast::EmptyStatement&, const Scope&) {}
+
+    // --- Configurations --------------------------------------------------------------------
+
+    void resolve_configuration(const ast::Configuration& configuration) {
+        resolve_sections(configuration.sections, global_);
+        for (const ast::Resource& resource : configuration.resources) {
+            resolve_sections(resource.sections, global_);
+            for (const ast::TaskDeclaration& task : resource.tasks) {
+                resolve_optional(task.single);
+                resolve_optional(task.interval);
+                resolve_optional(task.priority);
+            }
+            const Scope& resource_scope = *state_.resource_scopes.at(&resource);
+            for (const ast::ProgramInstance& instance : resource.programs) {
+                resolve_program_instance(instance, resource_scope);
+            }
+        }
+    }
+
+    /// `PROGRAM inst WITH task : Type (…)` (ed. 3, 6.8.2).
+    void resolve_program_instance(const ast::ProgramInstance& instance,
+                                  const Scope& resource_scope) {
+        if (instance.task) {
+            const Symbol* task = resource_scope.find_member(instance.task->name);
+            if (task == nullptr || task->kind != SymbolKind::Task) {
+                error(instance.task->range, fmt::format("unknown task '{}'", instance.task->name));
+            } else {
+                model_.bind(*instance.task, *task);
+            }
+        }
+        const Symbol* program = global_.find_member(instance.type.name);
+        if (program == nullptr || program->kind != SymbolKind::Pou ||
+            program->pou->kind != ast::PouKind::Program) {
+            error(instance.type.range,
+                  program == nullptr ? fmt::format("unknown program type '{}'", instance.type.name)
+                                     : fmt::format("'{}' is not a PROGRAM", instance.type.name));
+            resolve_arguments(instance.connections, nullptr, instance.type.name, global_);
+            return;
+        }
+        model_.bind(instance.type, *program);
+        resolve_arguments(instance.connections, program->members, program->name, global_);
+    }
+
+    ResolverState& state_;
+    SemanticModel& model_;
+    Scope& global_;
+    /// One symbol per conversion function actually used, created on first use.
+    std::unordered_map<std::string, const Symbol*> conversions_;
+};
+
+} // namespace
+
+void resolve_names(std::span<const ast::CompilationUnit> units, ResolverState& state) {
+    NameResolver resolver(state);
+    for (const ast::CompilationUnit& unit : units) {
+        resolver.resolve(unit);
+    }
+}
+
+} // namespace eposp::compiler::sema

@@ -1,0 +1,33 @@
+#include "eposp/compiler/sema/semantic_model.hpp"
+
+namespace eposp::compiler::sema {
+
+SemanticModel::SemanticModel() : global_(&scopes_.emplace_back()) {}
+
+const Symbol* SemanticModel::resolved(const ast::Identifier& identifier) const {
+    const auto it = references_.find(&identifier);
+    return it == references_.end() ? nullptr : it->second;
+}
+
+const Scope* SemanticModel::struct_members(const ast::TypeSpec& type) const {
+    const auto it = struct_scopes_.find(&type);
+    return it == struct_scopes_.end() ? nullptr : it->second;
+}
+
+const Symbol& SemanticModel::add(Symbol symbol) {
+    return symbols_.emplace_back(std::move(symbol));
+}
+
+Scope& SemanticModel::add_scope(const Scope* parent) {
+    return scopes_.emplace_back(parent);
+}
+
+void SemanticModel::bind(const ast::Identifier& identifier, const Symbol& symbol) {
+    references_[&identifier] = &symbol;
+}
+
+void SemanticModel::set_struct_members(const ast::TypeSpec& type, const Scope& members) {
+    struct_scopes_[&type] = &members;
+}
+
+} // namespace eposp::compiler::sema

@@ -1,0 +1,103 @@
+#include "eposp/compiler/sema/standard_library.hpp"
+
+#include "eposp/compiler/ast/elementary_type.hpp"
+
+#include <array>
+
+namespace eposp::compiler::sema {
+namespace {
+
+// Ed. 3, tables 22-36: numeric, bit-shift, selection, comparison, character string functions.
+constexpr std::array kStandardFunctions = {
+    "ABS",   "SQRT",  "LN",     "LOG",    "EXP",    "SIN",     "COS",  "TAN",   "ASIN", "ACOS",
+    "ATAN",  "ATAN2", "ADD",    "MUL",    "SUB",    "DIV",     "MOD",  "EXPT",  "MOVE", "SHL",
+    "SHR",   "ROL",   "ROR",    "AND",    "OR",     "XOR",     "NOT",  "SEL",   "MAX",  "MIN",
+    "LIMIT", "MUX",   "GT",     "GE",     "EQ",     "LE",      "LT",   "NE",    "LEN",  "LEFT",
+    "RIGHT", "MID",   "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND", "TRUNC",
+};
+
+struct Parameter {
+    std::string_view name;
+    ast::VarSectionKind section;
+    std::string_view type;
+};
+
+struct StandardFunctionBlock {
+    std::string_view name;
+    std::vector<Parameter> parameters;
+};
+
+constexpr auto In = ast::VarSectionKind::Input;
+constexpr auto Out = ast::VarSectionKind::Output;
+
+// Ed. 3, tables 43-46: bistables, edge detection, counters, timers.
+std::vector<StandardFunctionBlock> standard_function_blocks() {
+    return {
+        {"SR", {{"S1", In, "BOOL"}, {"R", In, "BOOL"}, {"Q1", Out, "BOOL"}}},
+        {"RS", {{"S", In, "BOOL"}, {"R1", In, "BOOL"}, {"Q1", Out, "BOOL"}}},
+        {"R_TRIG", {{"CLK", In, "BOOL"}, {"Q", Out, "BOOL"}}},
+        {"F_TRIG", {{"CLK", In, "BOOL"}, {"Q", Out, "BOOL"}}},
+        {"CTU",
+         {{"CU", In, "BOOL"},
+          {"R", In, "BOOL"},
+          {"PV", In, "INT"},
+          {"Q", Out, "BOOL"},
+          {"CV", Out, "INT"}}},
+        {"CTD",
+         {{"CD", In, "BOOL"},
+          {"LD", In, "BOOL"},
+          {"PV", In, "INT"},
+          {"Q", Out, "BOOL"},
+          {"CV", Out, "INT"}}},
+        {"CTUD",
+         {{"CU", In, "BOOL"},
+          {"CD", In, "BOOL"},
+          {"R", In, "BOOL"},
+          {"LD", In, "BOOL"},
+          {"PV", In, "INT"},
+          {"QU", Out, "BOOL"},
+          {"QD", Out, "BOOL"},
+          {"CV", Out, "INT"}}},
+        {"TP", {{"IN", In, "BOOL"}, {"PT", In, "TIME"}, {"Q", Out, "BOOL"}, {"ET", Out, "TIME"}}},
+        {"TON", {{"IN", In, "BOOL"}, {"PT", In, "TIME"}, {"Q", Out, "BOOL"}, {"ET", Out, "TIME"}}},
+        {"TOF", {{"IN", In, "BOOL"}, {"PT", In, "TIME"}, {"Q", Out, "BOOL"}, {"ET", Out, "TIME"}}},
+    };
+}
+
+bool is_elementary_name(std::string_view name) {
+    return ast::elementary_type_from_name(name).has_value();
+}
+
+} // namespace
+
+void declare_standard_library(SemanticModel& model) {
+    for (const char* name : kStandardFunctions) {
+        model.global_scope().declare(
+            model.add(Symbol{.kind = SymbolKind::StandardFunction, .name = name}));
+    }
+    for (const StandardFunctionBlock& block : standard_function_blocks()) {
+        Scope& members = model.add_scope(nullptr);
+        for (const Parameter& parameter : block.parameters) {
+            members.declare(model.add(Symbol{.kind = SymbolKind::Variable,
+                                             .name = std::string(parameter.name),
+                                             .section = parameter.section,
+                                             .standard_type = parameter.type}));
+        }
+        model.global_scope().declare(model.add(Symbol{.kind = SymbolKind::StandardFunctionBlock,
+                                                      .name = std::string(block.name),
+                                                      .members = &members}));
+    }
+}
+
+bool is_conversion_function(std::string_view name) {
+    const std::string folded = fold_case(name);
+    const std::string_view view = folded;
+    if (view.starts_with("TO_")) {
+        return is_elementary_name(view.substr(3));
+    }
+    const auto separator = view.find("_TO_");
+    return separator != std::string_view::npos && is_elementary_name(view.substr(0, separator)) &&
+           is_elementary_name(view.substr(separator + 4));
+}
+
+} // namespace eposp::compiler::sema

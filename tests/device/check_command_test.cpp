@@ -1,0 +1,73 @@
+// `eposp check` as a user meets it: exit 0 for a program whose names all resolve, 1 and a
+// compiler-style diagnostic with a caret otherwise.
+#include "eposp_command.hpp"
+
+#include <fstream>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace eposp::device {
+namespace {
+
+using testing::HasSubstr;
+
+std::string write_source(const std::string& name, const std::string& text) {
+    const auto path = scratch(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+}
+
+constexpr const char* kConfiguration = "CONFIGURATION Config0\n"
+                                       "  VAR_GLOBAL total : DINT; END_VAR\n"
+                                       "  RESOURCE Res0 ON PLC\n"
+                                       "    TASK Cyclic(INTERVAL := T#1ms, PRIORITY := 0);\n"
+                                       "    PROGRAM Inst0 WITH Cyclic : Main;\n"
+                                       "  END_RESOURCE\n"
+                                       "END_CONFIGURATION\n";
+
+TEST(CheckCommand, CorrectProgramInTwoFilesExitsWithZero) {
+    const std::string main = write_source("main.st", "PROGRAM Main\n"
+                                                     "  VAR_EXTERNAL total : DINT; END_VAR\n"
+                                                     "  total := total + 1;\n"
+                                                     "END_PROGRAM\n");
+    const std::string config = write_source("config.st", kConfiguration);
+    const auto result = eposp("check " + main + " " + config);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(result.output, "");
+}
+
+TEST(CheckCommand, UndeclaredIdentifierExitsWithOneAndShowsTheCaret) {
+    const std::string main = write_source("main.st", "PROGRAM Main\n"
+                                                     "  VAR_EXTERNAL total : DINT; END_VAR\n"
+                                                     "  total := totl + 1;\n"
+                                                     "END_PROGRAM\n");
+    const std::string config = write_source("config.st", kConfiguration);
+    const auto result = eposp("check " + main + " " + config);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr(main + ":3:12: error: undeclared identifier 'totl'\n"
+                                                "  total := totl + 1;\n"
+                                                "           ^~~~\n"));
+}
+
+TEST(CheckCommand, SyntaxErrorExitsWithOne) {
+    const std::string main = write_source("main.st", "PROGRAM Main\n  x := ;\nEND_PROGRAM\n");
+    const auto result = eposp("check " + main);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr(main + ":2:"));
+}
+
+TEST(CheckCommand, MissingFileIsAUserError) {
+    const auto result = eposp("check /nonexistent/main.st");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("eposp check: error:"));
+    EXPECT_THAT(result.output, HasSubstr("/nonexistent/main.st"));
+}
+
+TEST(CheckCommand, HelpDescribesTheCommand) {
+    const auto result = eposp("check --help");
+    EXPECT_EQ(result.exit_code, 0);
+    EXPECT_THAT(result.output, HasSubstr("files"));
+}
+
+} // namespace
+} // namespace eposp::device
