@@ -69,7 +69,9 @@ INSTANTIATE_TEST_SUITE_P(
     Sections, ImageCorruption,
     ::testing::Values(Corruption{"MissingSection",
                                  [](auto& b) {
-                                     b.resize(b.size() - 5);
+                                     // erase, not resize: GCC 12 at -O1 sees a resize that
+                                     // could grow and fails -Wstringop-overflow.
+                                     b.erase(b.end() - 5, b.end());
                                      reseal(b);
                                  },
                                  "section imports missing or truncated"},
