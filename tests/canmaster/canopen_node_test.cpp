@@ -5,6 +5,7 @@
 #include "eposp/canmaster/canopen/node.hpp"
 #include "eposp/canmaster/canopen/predefined_connection_set.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -691,6 +692,34 @@ TEST_F(NodeTest, NodeFromItsOwnEdsAnswersEveryReadWithTheSameValue) {
         }
     }
     EXPECT_GT(compared, 40u);
+}
+
+/// CiA 301 7.2.8.3.2: every node answers a reset node addressed to all with one boot-up.
+TEST(NodesOnOneBus, ResetNodeToAllGivesOneBootUpFromEachNode) {
+    ServiceBench bench;
+    const auto second_port = bench.bus.connect("second device");
+    ObjectDictionary first_od;
+    ObjectDictionary second_od;
+    NodeConfig first_config = test_config();
+    NodeConfig second_config = test_config();
+    second_config.node_id = kNode + 1;
+    second_config.pdos = cia301_pdo_defaults(kNode + 1, 1, 1);
+    Node first{bench.loop, *bench.device, first_od, first_config};
+    Node second{bench.loop, *second_port, second_od, second_config};
+    first.start();
+    second.start();
+    bench.run_for(10ms);
+
+    std::vector<std::uint32_t> boot_ups;
+    bench.tester->on_receive([&boot_ups](const can::Frame& frame) {
+        if (frame.id >= 0x700) {
+            boot_ups.push_back(frame.id);
+        }
+    });
+    bench.tester->send(can::Frame::data_frame(0x000, {0x81, 0x00}));
+    bench.run_for(50ms);
+    std::sort(boot_ups.begin(), boot_ups.end());
+    EXPECT_EQ(boot_ups, (std::vector<std::uint32_t>{0x705, 0x706}));
 }
 
 } // namespace

@@ -12,8 +12,17 @@ using testing::HasSubstr;
 TEST(DriveCommand, VirtualRunBootsTheDriveAndEndsAfterItsDuration) {
     const auto result = eposp("drive epos2 --node-id 5 --virtual --for 200ms");
     EXPECT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_THAT(result.output, HasSubstr("epos2: node 5 on the bus"));
+    EXPECT_THAT(result.output, HasSubstr("epos2: node 5 on bus can0"));
     EXPECT_THAT(result.output, HasSubstr("stopped in Switch On Disabled"));
+}
+
+TEST(DriveCommand, TraceOfAVirtualRunHoldsTheBootUpOfTheDrive) {
+    const auto log = scratch("drive.log");
+    const auto result = eposp("drive epos2 --node-id 5 --virtual --for 1s --log " + log.string());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const std::string recorded = read_file(log);
+    // CiA 301 7.2.8.3.2.2: the boot-up message is the heartbeat COB-ID with state 0x00.
+    EXPECT_THAT(recorded, HasSubstr("can0 705#00"));
 }
 
 TEST(DriveCommand, VirtualRunWithoutDurationIsAUserError) {
