@@ -543,5 +543,71 @@ TEST_F(EmcyConformance, InvalidEmcyCobIdSendsNothing) {
     EXPECT_EQ(exchange("205#0102"), std::vector<std::string>{});
 }
 
+// --- LSS (CiA 305): requests on 0x7E5, replies on 0x7E4, reserved bytes zero. ---
+
+class LssConformance : public Conformance {};
+
+TEST_F(LssConformance, InquireServicesAnswerTheIdentityAndTheNodeId) {
+    bench.send("7E5#0401000000000000"); // switch state global: configuration
+    bench.run_for(1ms);
+    expect_reply("7E5#5A00000000000000", "7E4#5AFB000000000000");
+    expect_reply("7E5#5B00000000000000", "7E4#5B01000000000000");
+    expect_reply("7E5#5C00000000000000", "7E4#5C02000000000000");
+    expect_reply("7E5#5D00000000000000", "7E4#5D03000000000000");
+    expect_reply("7E5#5E00000000000000", "7E4#5E05000000000000");
+}
+
+TEST_F(LssConformance, InWaitingStateOnlyIdentificationIsAnswered) {
+    EXPECT_EQ(exchange("7E5#5A00000000000000"), std::vector<std::string>{});
+    EXPECT_EQ(exchange("7E5#1107000000000000"), std::vector<std::string>{});
+}
+
+TEST_F(LssConformance, SwitchStateSelectiveIsConfirmedAfterTheSerialNumber) {
+    EXPECT_EQ(exchange("7E5#40FB000000000000"), std::vector<std::string>{});
+    EXPECT_EQ(exchange("7E5#4101000000000000"), std::vector<std::string>{});
+    EXPECT_EQ(exchange("7E5#4202000000000000"), std::vector<std::string>{});
+    expect_reply("7E5#4303000000000000", "7E4#4400000000000000");
+}
+
+TEST_F(LssConformance, SwitchStateSelectiveOfAnotherDeviceIsNotConfirmed) {
+    bench.send("7E5#40FB000000000000");
+    bench.send("7E5#4101000000000000");
+    bench.send("7E5#4202000000000000");
+    EXPECT_EQ(exchange("7E5#4304000000000000"), std::vector<std::string>{});
+}
+
+TEST_F(LssConformance, IdentifyRemoteSlaveAnswersWhenTheIdentityIsInTheRanges) {
+    for (const char* request : {"7E5#46FB000000000000", "7E5#4701000000000000",
+                                "7E5#4800000000000000", "7E5#4910000000000000",
+                                "7E5#4A00000000000000"}) {
+        EXPECT_EQ(exchange(request), std::vector<std::string>{}) << request;
+    }
+    expect_reply("7E5#4B03000000000000", "7E4#4F00000000000000");
+}
+
+TEST_F(LssConformance, ConfiguredNodeDoesNotAnswerIdentifyNonConfigured) {
+    EXPECT_EQ(exchange("7E5#4C00000000000000"), std::vector<std::string>{});
+}
+
+TEST_F(LssConformance, ConfiguredNodeIdTakesEffectAtResetCommunication) {
+    bench.send("7E5#0401000000000000");
+    bench.run_for(1ms);
+    expect_reply("7E5#1107000000000000", "7E4#1100000000000000");
+    // 0 and 128..254 are invalid node-IDs: error code 1 (CiA 305 8.3.2.1).
+    expect_reply("7E5#1180000000000000", "7E4#1101000000000000");
+    bench.send("7E5#0400000000000000"); // back to waiting
+    bench.run_for(1ms);
+    expect_reply("000#8205", "707#00");
+    expect_reply("607#4000100000000000", "587#4300100092010200");
+}
+
+TEST_F(LssConformance, BitTimingAndStoreAreRefusedWhereTheDeviceCannotDoThem) {
+    bench.send("7E5#0401000000000000");
+    bench.run_for(1ms);
+    // No bit rate switch and no parameter file in this node: "not supported" (error code 1).
+    expect_reply("7E5#1300000000000000", "7E4#1301000000000000");
+    expect_reply("7E5#1700000000000000", "7E4#1701000000000000");
+}
+
 } // namespace
 } // namespace eposp::canopen
