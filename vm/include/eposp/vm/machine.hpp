@@ -32,6 +32,7 @@ public:
     /// "division by zero in Main at line 12" for a faulted task.
     std::string describe_fault(std::size_t task) const;
 
+    const Program& program() const { return program_; }
     std::span<std::uint8_t> memory() { return memory_; }
     std::span<const std::uint8_t> memory() const { return memory_; }
 

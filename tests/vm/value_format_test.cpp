@@ -1,0 +1,69 @@
+// Values shown as IEC 61131-3 literals, by the type the image gives the variable.
+
+#include "eposp/vm/stdlib/string_layout.hpp"
+#include "eposp/vm/value_format.hpp"
+
+#include <cstring>
+#include <gtest/gtest.h>
+#include <vector>
+
+namespace eposp::vm {
+namespace {
+
+struct Case {
+    const char* type_name;
+    TypeKind kind;
+    Scalar scalar;
+    std::vector<std::uint8_t> bytes;
+    const char* text;
+};
+
+template <typename T>
+std::vector<std::uint8_t> bytes_of(T value) {
+    std::vector<std::uint8_t> bytes(sizeof(T));
+    std::memcpy(bytes.data(), &value, sizeof(T));
+    return bytes;
+}
+
+class FormatValue : public ::testing::TestWithParam<Case> {};
+
+TEST_P(FormatValue, ShowsTheLiteral) {
+    const Case& c = GetParam();
+    Image image;
+    TypeDescriptor type;
+    type.name = c.type_name;
+    type.kind = c.kind;
+    type.scalar = c.scalar;
+    type.size = static_cast<std::uint32_t>(c.bytes.size());
+    image.types.push_back(type);
+    EXPECT_EQ(format_value(image, c.bytes, VariableLocation{0, 0}), c.text);
+}
+
+constexpr std::int64_t kNsPerMs = 1'000'000;
+
+INSTANTIATE_TEST_SUITE_P(
+    Types, FormatValue,
+    ::testing::Values(
+        Case{"BOOL", TypeKind::Elementary, Scalar::Bool, {1}, "TRUE"},
+        Case{"BOOL", TypeKind::Elementary, Scalar::Bool, {0}, "FALSE"},
+        Case{"SINT", TypeKind::Elementary, Scalar::I8, bytes_of<std::int8_t>(-128), "-128"},
+        Case{"DINT", TypeKind::Elementary, Scalar::I32, bytes_of(-42), "-42"},
+        Case{"ULINT", TypeKind::Elementary, Scalar::U64, bytes_of(~std::uint64_t{0}),
+             "18446744073709551615"},
+        Case{"LREAL", TypeKind::Elementary, Scalar::F64, bytes_of(1.5), "1.5"},
+        Case{"REAL", TypeKind::Elementary, Scalar::F32, bytes_of(0.1F), "0.1"},
+        Case{"TIME", TypeKind::Elementary, Scalar::I64, bytes_of(1500 * kNsPerMs), "T#1s500ms"},
+        Case{"LTIME", TypeKind::Elementary, Scalar::I64, bytes_of(2 * kNsPerMs), "LTIME#2ms"},
+        Case{"DATE", TypeKind::Elementary, Scalar::I64,
+             bytes_of(std::int64_t{86'400} * 1000 * kNsPerMs), "D#1970-01-02"},
+        Case{"LINT", TypeKind::Elementary, Scalar::I64, bytes_of(std::int64_t{-7}), "-7"},
+        Case{"STRING[8]", TypeKind::String, Scalar::Bool, stdlib::string_image(8, "it's $5\n"),
+             "'it$'s $$5$0A'"},
+        Case{"ARRAY[1..2] OF INT",
+             TypeKind::Array,
+             Scalar::Bool,
+             {0, 0, 0, 0},
+             "<ARRAY[1..2] OF INT>"}));
+
+} // namespace
+} // namespace eposp::vm

@@ -1,0 +1,117 @@
+#include "eposp/vm/value_format.hpp"
+
+#include "eposp/vm/stdlib/string_layout.hpp"
+#include "stdlib/value_text.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <fmt/format.h>
+
+namespace eposp::vm {
+namespace {
+
+template <typename T>
+T load(std::span<const std::uint8_t> memory, std::uint32_t offset) {
+    T value;
+    std::memcpy(&value, memory.data() + offset, sizeof(T));
+    return value;
+}
+
+// TIME, DATE, TOD and DT are all I64 nanoseconds (vm/README.md): the type's name says which.
+void format_time_value(stdlib::ValueText& out, std::string_view type, std::int64_t ns) {
+    if (type == "TIME" || type == "LTIME") {
+        stdlib::format_duration(out, ns, type == "TIME" ? "T#" : "LTIME#");
+    } else if (type == "DATE") {
+        stdlib::format_date(out, ns);
+    } else if (type == "TIME_OF_DAY" || type == "TOD") {
+        stdlib::format_time_of_day(out, ns);
+    } else if (type == "DATE_AND_TIME" || type == "DT") {
+        stdlib::format_date_and_time(out, ns);
+    } else {
+        stdlib::format_signed(out, ns);
+    }
+}
+
+std::string format_scalar(const TypeDescriptor& type, std::span<const std::uint8_t> memory,
+                          std::uint32_t offset) {
+    stdlib::ValueText out;
+    switch (type.scalar) {
+    case Scalar::Bool:
+        return load<std::uint8_t>(memory, offset) != 0 ? "TRUE" : "FALSE";
+    case Scalar::I8:
+        stdlib::format_signed(out, load<std::int8_t>(memory, offset));
+        break;
+    case Scalar::I16:
+        stdlib::format_signed(out, load<std::int16_t>(memory, offset));
+        break;
+    case Scalar::I32:
+        stdlib::format_signed(out, load<std::int32_t>(memory, offset));
+        break;
+    case Scalar::I64:
+        format_time_value(out, type.name, load<std::int64_t>(memory, offset));
+        break;
+    case Scalar::U8:
+        stdlib::format_unsigned(out, load<std::uint8_t>(memory, offset));
+        break;
+    case Scalar::U16:
+        stdlib::format_unsigned(out, load<std::uint16_t>(memory, offset));
+        break;
+    case Scalar::U32:
+        stdlib::format_unsigned(out, load<std::uint32_t>(memory, offset));
+        break;
+    case Scalar::U64:
+    case Scalar::Ptr:
+        stdlib::format_unsigned(out, load<std::uint64_t>(memory, offset));
+        break;
+    case Scalar::F32:
+        stdlib::format_real(out, load<float>(memory, offset), true);
+        break;
+    case Scalar::F64:
+        stdlib::format_real(out, load<double>(memory, offset), false);
+        break;
+    }
+    return std::string(out.view());
+}
+
+// STRING / WSTRING contents as a literal, characters outside printable ASCII as $hh / $hhhh.
+std::string format_string(const TypeDescriptor& type, std::span<const std::uint8_t> memory,
+                          std::uint32_t offset) {
+    const bool wide = type.name.starts_with("WSTRING");
+    const char quote = wide ? '"' : '\'';
+    const auto length =
+        std::min(load<std::uint16_t>(memory, offset), load<std::uint16_t>(memory, offset + 2));
+    std::string text(1, quote);
+    for (std::uint32_t i = 0; i < length; ++i) {
+        const std::uint32_t at = offset + stdlib::kStringHeaderSize + (wide ? 2 * i : i);
+        const unsigned code =
+            wide ? load<std::uint16_t>(memory, at) : load<std::uint8_t>(memory, at);
+        if (code == '$' || code == static_cast<unsigned>(quote)) {
+            text += '$'; // IEC 61131-3 6.3.3: $$ and $' (or $") inside a literal
+        }
+        if (code < 0x20 || code > 0x7E) {
+            text += wide ? fmt::format("${:04X}", code) : fmt::format("${:02X}", code);
+        } else {
+            text += static_cast<char>(code);
+        }
+    }
+    return text + quote;
+}
+
+} // namespace
+
+std::string format_value(const Image& image, std::span<const std::uint8_t> memory,
+                         VariableLocation location) {
+    const TypeDescriptor& type = image.types.at(location.type);
+    switch (type.kind) {
+    case TypeKind::Elementary:
+        return format_scalar(type, memory, location.offset);
+    case TypeKind::String:
+        return format_string(type, memory, location.offset);
+    case TypeKind::Array:
+    case TypeKind::Struct:
+        break;
+    }
+    return "<" + type.name + ">";
+}
+
+} // namespace eposp::vm
