@@ -1,6 +1,6 @@
 #include "lss_configuration_file.hpp"
 
-#include "durable_file.hpp"
+#include "eposp/core/durable_file.hpp"
 #include "parameter_file.hpp"
 
 #include <algorithm>
@@ -26,12 +26,12 @@ LssStoreResult LssConfigurationFile::store(const LssConfiguration& configuration
     content.insert(content.end(), bit_rate.begin(), bit_rate.end());
     const Bytes crc = encode(crc32(content));
     content.insert(content.end(), crc.begin(), crc.end());
-    return write_file_durably(path_, content) ? LssStoreResult::StorageAccessError
+    return core::write_file_durably(path_, content) ? LssStoreResult::StorageAccessError
                                               : LssStoreResult::Stored;
 }
 
 core::Result<std::optional<LssConfiguration>> LssConfigurationFile::load() const {
-    auto content = read_whole_file(path_);
+    auto content = core::read_whole_file(path_);
     if (!content) {
         return core::Error{content.error()};
     }

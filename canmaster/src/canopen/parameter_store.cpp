@@ -1,6 +1,6 @@
 #include "eposp/canmaster/canopen/parameter_store.hpp"
 
-#include "durable_file.hpp"
+#include "eposp/core/durable_file.hpp"
 #include "eposp/canmaster/canopen/predefined_connection_set.hpp"
 #include "parameter_file.hpp"
 
@@ -82,7 +82,7 @@ AbortCode ParameterStore::save() {
         dictionary_, [&](std::uint16_t index, std::uint8_t sub_index, const SubObject& sub) {
             file.entries.push_back({index, sub_index, value_to_store(index, sub_index, sub)});
         });
-    if (write_file_durably(file_, serialize(file))) {
+    if (core::write_file_durably(file_, serialize(file))) {
         return AbortCode::HardwareError;
     }
     pdo_cob_id_node_.reset();
@@ -91,7 +91,7 @@ AbortCode ParameterStore::save() {
 
 AbortCode ParameterStore::restore_defaults() {
     pdo_cob_id_node_.reset();
-    return remove_file_durably(file_) ? AbortCode::HardwareError : AbortCode::None;
+    return core::remove_file_durably(file_) ? AbortCode::HardwareError : AbortCode::None;
 }
 
 void ParameterStore::restore_pdo_cob_ids_at_next_save(NodeId node_id) {
@@ -100,7 +100,7 @@ void ParameterStore::restore_pdo_cob_ids_at_next_save(NodeId node_id) {
 
 StoredValuesReport ParameterStore::load_stored_values() {
     dictionary_.reset_to_defaults();
-    const auto content = read_whole_file(file_);
+    const auto content = core::read_whole_file(file_);
     if (!content) {
         return {StoredValuesStatus::Corrupt, content.error()};
     }

@@ -1,4 +1,4 @@
-#include "durable_file.hpp"
+#include "eposp/core/durable_file.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -8,11 +8,11 @@
 #include <iterator>
 #include <unistd.h>
 
-namespace eposp::canopen {
+namespace eposp::core {
 namespace {
 
-core::Error system_error(std::string_view what, const std::filesystem::path& path) {
-    return core::Error{fmt::format("{} {}: {}", what, path.string(), std::strerror(errno))};
+Error system_error(std::string_view what, const std::filesystem::path& path) {
+    return Error{fmt::format("{} {}: {}", what, path.string(), std::strerror(errno))};
 }
 
 // Closes the descriptor on every path out of a function.
@@ -42,7 +42,7 @@ std::filesystem::path directory_of(const std::filesystem::path& path) {
     return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
 }
 
-std::optional<core::Error> sync_directory(const std::filesystem::path& path) {
+std::optional<Error> sync_directory(const std::filesystem::path& path) {
     const std::filesystem::path directory = directory_of(path);
     FileDescriptor fd(::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
     if (fd.get() < 0 || ::fsync(fd.get()) != 0) {
@@ -53,7 +53,7 @@ std::optional<core::Error> sync_directory(const std::filesystem::path& path) {
 
 } // namespace
 
-std::optional<core::Error> write_file_durably(const std::filesystem::path& path,
+std::optional<Error> write_file_durably(const std::filesystem::path& path,
                                               std::span<const std::uint8_t> content) {
     std::filesystem::path temporary = path;
     temporary += ".tmp";
@@ -87,7 +87,7 @@ std::optional<core::Error> write_file_durably(const std::filesystem::path& path,
     return sync_directory(path);
 }
 
-std::optional<core::Error> remove_file_durably(const std::filesystem::path& path) {
+std::optional<Error> remove_file_durably(const std::filesystem::path& path) {
     if (::unlink(path.c_str()) != 0) {
         if (errno == ENOENT) {
             return std::nullopt;
@@ -97,20 +97,20 @@ std::optional<core::Error> remove_file_durably(const std::filesystem::path& path
     return sync_directory(path);
 }
 
-core::Result<std::optional<Bytes>> read_whole_file(const std::filesystem::path& path) {
+Result<std::optional<std::vector<std::uint8_t>>> read_whole_file(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) {
         if (ec) {
-            return core::Error{fmt::format("cannot read {}: {}", path.string(), ec.message())};
+            return Error{fmt::format("cannot read {}: {}", path.string(), ec.message())};
         }
-        return std::optional<Bytes>{};
+        return std::optional<std::vector<std::uint8_t>>{};
     }
     std::ifstream in(path, std::ios::binary);
-    Bytes content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::vector<std::uint8_t> content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (in.bad() || !in.is_open()) {
-        return core::Error{fmt::format("cannot read {}", path.string())};
+        return Error{fmt::format("cannot read {}", path.string())};
     }
-    return std::optional<Bytes>{std::move(content)};
+    return std::optional<std::vector<std::uint8_t>>{std::move(content)};
 }
 
-} // namespace eposp::canopen
+} // namespace eposp::core
