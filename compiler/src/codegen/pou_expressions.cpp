@@ -281,7 +281,14 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         return unary(*node, hint, dest, expression.range);
     }
     if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
-        return binary(*node, hint, dest, expression.range);
+        auto value = binary(*node, hint, dest, expression.range, true);
+        if (value && value->iec != nullptr) {
+            // Computed wider than its type (see binary): cut to the type here.
+            const sema::Type& type = *value->iec;
+            value->iec = nullptr;
+            value = convert(*value, type, dest);
+        }
+        return value;
     }
     error(expression.range, "direct addresses and bit access in expressions are not supported yet");
     return std::nullopt;
@@ -393,28 +400,42 @@ std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Express
     std::optional<Value> l;
     std::optional<Value> r;
     if (is_untyped_literal(left) && !is_untyped_literal(right)) {
-        r = eval(right, hint);
+        r = operand_value(right, hint);
         l = r ? eval(left, r->type) : std::nullopt;
     } else {
-        l = eval(left, hint);
-        r = l ? eval(right, is_untyped_literal(right) ? l->type : hint) : std::nullopt;
+        l = operand_value(left, hint);
+        r = l ? operand_value(right, is_untyped_literal(right) ? l->type : hint) : std::nullopt;
     }
     if (!l || !r) {
         return std::nullopt;
     }
-    if (l->type == r->type || (sema::is_time_like(*l->type) && sema::is_time_like(*r->type)) ||
-        (l->type->kind == sema::TypeKind::String && r->type->kind == sema::TypeKind::String)) {
-        return std::pair(*l, *r);
+    return unify(*l, *r, range);
+}
+
+std::optional<std::pair<Value, Value>> PouGenerator::unify(const Value& l, const Value& r,
+                                                           const SourceRange& range) {
+    if (l.type == r.type || (sema::is_time_like(*l.type) && sema::is_time_like(*r.type)) ||
+        (l.type->kind == sema::TypeKind::String && r.type->kind == sema::TypeKind::String)) {
+        return std::pair(l, r);
     }
-    if (sema::converts_implicitly(*l->type, *r->type)) {
-        return std::pair(*convert(*l, *r->type, nullptr), *r);
+    if (sema::converts_implicitly(*l.type, *r.type)) {
+        Value converted = *convert(l, *r.type, nullptr);
+        converted.iec = l.iec != nullptr ? l.iec : l.type;
+        return std::pair(converted, r);
     }
-    if (sema::converts_implicitly(*r->type, *l->type)) {
-        return std::pair(*l, *convert(*r, *l->type, nullptr));
+    if (sema::converts_implicitly(*r.type, *l.type)) {
+        Value converted = *convert(r, *l.type, nullptr);
+        converted.iec = r.iec != nullptr ? r.iec : r.type;
+        return std::pair(l, converted);
     }
-    error(range, fmt::format("operands of types {} and {} do not match", l->type->name,
-                             r->type->name));
+    error(range, fmt::format("operands of types {} and {} do not match",
+                             (l.iec != nullptr ? l.iec : l.type)->name,
+                             (r.iec != nullptr ? r.iec : r.type)->name));
     return std::nullopt;
+}
+
+bool PouGenerator::is_small_integer(const sema::Type& type) {
+    return sema::is_integer(type) && type.size < 4;
 }
 
 std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const sema::Type* hint,
@@ -496,13 +517,34 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
     return Value{result, &boolean};
 }
 
+std::optional<Value> PouGenerator::operand_value(const ast::Expression& expression,
+                                                 const sema::Type* hint) {
+    if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
+        return binary(*node, hint, nullptr, expression.range, false);
+    }
+    return eval(expression, hint);
+}
+
+Value PouGenerator::widened(const Value& value) {
+    const sema::Type& dint = types_.elementary(E::Dint);
+    if (value.type == &dint) {
+        return value;
+    }
+    Value wide = *convert(value, dint, nullptr);
+    wide.iec = value.iec != nullptr ? value.iec : value.type;
+    return wide;
+}
+
 std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
                                           const sema::Type* hint, const Destination* dest,
-                                          const SourceRange& range) {
+                                          const SourceRange& range, bool top) {
     using Op = ast::BinaryOperator;
     const bool comparison = node.op == Op::Less || node.op == Op::Greater ||
                             node.op == Op::LessEqual || node.op == Op::GreaterEqual ||
                             node.op == Op::Equal || node.op == Op::NotEqual;
+    const bool arithmetic = node.op == Op::Add || node.op == Op::Subtract ||
+                            node.op == Op::Multiply || node.op == Op::Divide ||
+                            node.op == Op::Modulo;
     if (node.op == Op::Power) {
         const sema::Type& lreal = types_.elementary(E::Lreal);
         const auto base = value_as(*node.left, lreal);
@@ -514,27 +556,61 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
         call_native("EXPT_LREAL", signature, {*base, *exponent});
         return native_result(signature, lreal, dest);
     }
-    // A small constant right operand of + and - becomes the immediate of AddI.
-    if ((node.op == Op::Add || node.op == Op::Subtract) && !is_untyped_literal(*node.left)) {
-        if (const auto immediate = small_literal(*node.right)) {
-            const auto left = eval(*node.left, hint);
-            if (!left) {
-                return std::nullopt;
-            }
-            if (sema::is_integer(*left->type) || sema::is_bit_string(*left->type)) {
-                const Operand result = result_operand(*left->type, dest);
-                const std::int64_t delta = node.op == Op::Add ? *immediate : -std::int64_t{*immediate};
-                builder_.emit(op_width("AddI", *left->type), result, left->operand,
-                              Operand::imm(static_cast<std::uint32_t>(delta)));
-                return Value{result, left->type};
-            }
+    const auto immediate = (node.op == Op::Add || node.op == Op::Subtract) &&
+                                   !is_untyped_literal(*node.left)
+                               ? small_literal(*node.right)
+                               : std::nullopt;
+    std::optional<std::pair<Value, Value>> pair;
+    if (immediate) {
+        auto left = operand_value(*node.left, hint);
+        if (!left) {
+            return std::nullopt;
         }
+        if (sema::is_integer(*left->type) || sema::is_bit_string(*left->type)) {
+            // A small constant right operand of + and - is the immediate of AddI.
+            Value l = *left;
+            if (!top && l.iec == nullptr && is_small_integer(*l.type)) {
+                l = widened(l);
+            }
+            const Operand result = result_operand(*l.type, l.iec != nullptr ? nullptr : dest);
+            const std::int64_t delta = node.op == Op::Add ? *immediate : -std::int64_t{*immediate};
+            builder_.emit(op_width("AddI", *l.type), result, l.operand,
+                          Operand::imm(static_cast<std::uint32_t>(delta)));
+            return Value{result, l.type, l.iec};
+        }
+        const auto right = eval(*node.right, left->type);
+        pair = right ? unify(*left, *right, range) : std::nullopt;
+    } else {
+        pair = operands(*node.left, *node.right, comparison ? nullptr : hint, range);
     }
-    const auto pair = operands(*node.left, *node.right, comparison ? nullptr : hint, range);
     if (!pair) {
         return std::nullopt;
     }
-    return apply(node.op, pair->first, pair->second, dest, range);
+    auto [left, right] = *pair;
+    // Small integers (SINT, INT, USINT, UINT) are computed in DINT when the result feeds
+    // another operation, as CODESYS and C do: `(a * b) MOD 1000` does not overflow at INT,
+    // the value is cut to INT only where it is stored.
+    const sema::Type* left_iec = left.iec != nullptr ? left.iec : left.type;
+    const sema::Type* right_iec = right.iec != nullptr ? right.iec : right.type;
+    if (is_untyped_literal(*node.left)) {
+        left_iec = right_iec;
+    }
+    if (is_untyped_literal(*node.right)) {
+        right_iec = left_iec;
+    }
+    if ((arithmetic || comparison) && is_small_integer(*left_iec) &&
+        is_small_integer(*right_iec) &&
+        (left.iec != nullptr || right.iec != nullptr || (!top && arithmetic))) {
+        const sema::Type* iec =
+            sema::converts_implicitly(*left_iec, *right_iec) ? right_iec : left_iec;
+        auto result = apply(node.op, widened(left), widened(right), comparison ? dest : nullptr,
+                            range);
+        if (result && arithmetic) {
+            result->iec = iec;
+        }
+        return result;
+    }
+    return apply(node.op, left, right, dest, range);
 }
 
 std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,

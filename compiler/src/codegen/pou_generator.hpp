@@ -13,6 +13,8 @@ namespace eposp::compiler::codegen {
 struct Value {
     vm::Operand operand{};
     const sema::Type* type = nullptr;
+    /// Set when a small integer is held wider than its IEC type (computed in DINT).
+    const sema::Type* iec = nullptr;
 };
 
 /// Where a result should preferably go: evaluating straight into a variable saves a move.
@@ -78,8 +80,17 @@ private:
                                  const ast::LiteralExpression& node, const sema::Type* hint);
     std::optional<Value> unary(const ast::UnaryExpression& node, const sema::Type* hint,
                                const Destination* dest, const SourceRange& range);
+    /// `top` is false for an operand of another operator, whose small-integer result stays
+    /// in DINT (Value::iec).
     std::optional<Value> binary(const ast::BinaryExpression& node, const sema::Type* hint,
-                                const Destination* dest, const SourceRange& range);
+                                const Destination* dest, const SourceRange& range, bool top);
+    /// An operand of an operator: like eval, but a nested operation may stay wide.
+    std::optional<Value> operand_value(const ast::Expression& expression, const sema::Type* hint);
+    /// A small integer value as DINT.
+    Value widened(const Value& value);
+    std::optional<std::pair<Value, Value>> unify(const Value& left, const Value& right,
+                                                 const SourceRange& range);
+    static bool is_small_integer(const sema::Type& type);
     /// Both operands of a binary operator, widened to their common type. An untyped literal
     /// is evaluated after the other side and takes its type (literals have no side effects).
     std::optional<std::pair<Value, Value>> operands(const ast::Expression& left,
