@@ -21,12 +21,39 @@ std::uint32_t PouGenerator::generate() {
     end_ = builder_.label();
     initialise_frame();
     statements(pou_.body);
+    report_unused();
     builder_.bind(end_);
     builder_.emit(Opcode::Ret);
     const std::uint32_t frame = sema::align_up(frame_max_, 8);
     const std::uint32_t out = sema::align_up(out_max_, 8);
     builder_.end_body(frame, out);
     return frame + out;
+}
+
+void PouGenerator::report_unused() {
+    if (pou_.kind == ast::PouKind::Function && pou_.return_type && !result_assigned_) {
+        warning(pou_.name.range,
+                fmt::format("function '{}' never assigns its result", pou_.name.name));
+    }
+    for (const ast::DeclarationSection& section : pou_.sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables == nullptr || (variables->kind != ast::VarSectionKind::Var &&
+                                     variables->kind != ast::VarSectionKind::Temp &&
+                                     variables->kind != ast::VarSectionKind::External)) {
+            continue;
+        }
+        // A PROGRAM's variables are visible from outside (watch, configuration access).
+        if (pou_.kind == ast::PouKind::Program && variables->kind == ast::VarSectionKind::Var) {
+            continue;
+        }
+        for (const ast::VariableDeclaration& declaration : variables->variables) {
+            for (const ast::Identifier& name : declaration.names) {
+                if (!used_.contains(sema::fold_case(name.name))) {
+                    warning(name.range, fmt::format("variable '{}' is never used", name.name));
+                }
+            }
+        }
+    }
 }
 
 void PouGenerator::error(const SourceRange& range, std::string message) {
@@ -139,6 +166,7 @@ std::uint32_t PouGenerator::out_slot(std::uint32_t end) {
 }
 
 std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const SourceRange& range) {
+    used_.insert(sema::fold_case(symbol.name));
     if (symbol.kind == sema::SymbolKind::Variable &&
         (symbol.section == ast::VarSectionKind::External ||
          symbol.section == ast::VarSectionKind::Global)) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace eposp::compiler::codegen {
@@ -46,6 +47,8 @@ private:
     // --- pou_generator.cpp: variables, temporaries, moves ----------------------------------
     void declare_locals();
     void initialise_frame();
+    /// Warnings: variables never used, a function result never assigned.
+    void report_unused();
     vm::Operand temp(const sema::Type& type);
     std::uint32_t out_slot(std::uint32_t end);
     /// Whether `operand` is a temporary of the current statement (not a variable).
@@ -174,6 +177,7 @@ private:
     std::vector<Loop> loops_;
     std::vector<std::uint32_t> for_variables_; // operands of the enclosing FOR loops
     bool result_assigned_ = false;
+    std::unordered_set<std::string> used_; // folded names of the variables referred to
     vm::Label end_;
 };
 
