@@ -6,13 +6,27 @@
 
 namespace eposp::compiler::sema {
 
-SemanticModel resolve(std::span<const ast::CompilationUnit> units, Diagnostics& diagnostics) {
+namespace {
+
+SemanticModel resolve_with(std::span<const ast::CompilationUnit> units, Diagnostics& diagnostics,
+                           bool standard_function_blocks) {
     SemanticModel model;
-    declare_standard_library(model);
+    declare_standard_library(model, standard_function_blocks);
     ResolverState state{.model = model, .diagnostics = diagnostics};
     collect_declarations(units, state);
     resolve_names(units, state);
     return model;
+}
+
+} // namespace
+
+SemanticModel resolve(std::span<const ast::CompilationUnit> units, Diagnostics& diagnostics) {
+    return resolve_with(units, diagnostics, true);
+}
+
+SemanticModel resolve_library(std::span<const ast::CompilationUnit> units,
+                              Diagnostics& diagnostics) {
+    return resolve_with(units, diagnostics, false);
 }
 
 } // namespace eposp::compiler::sema

@@ -3,6 +3,7 @@
 #include "eposp/compiler/ast/elementary_type.hpp"
 
 #include <array>
+#include <string>
 
 namespace eposp::compiler::sema {
 namespace {
@@ -23,7 +24,7 @@ struct Parameter {
 };
 
 struct StandardFunctionBlock {
-    std::string_view name;
+    std::string name;
     std::vector<Parameter> parameters;
 };
 
@@ -32,7 +33,7 @@ constexpr auto Out = ast::VarSectionKind::Output;
 
 // Ed. 3, tables 43-46: bistables, edge detection, counters, timers.
 std::vector<StandardFunctionBlock> standard_function_blocks() {
-    return {
+    std::vector<StandardFunctionBlock> blocks{
         {"SR", {{"S1", In, "BOOL"}, {"R", In, "BOOL"}, {"Q1", Out, "BOOL"}}},
         {"RS", {{"S", In, "BOOL"}, {"R1", In, "BOOL"}, {"Q1", Out, "BOOL"}}},
         {"R_TRIG", {{"CLK", In, "BOOL"}, {"Q", Out, "BOOL"}}},
@@ -58,10 +59,25 @@ std::vector<StandardFunctionBlock> standard_function_blocks() {
           {"QU", Out, "BOOL"},
           {"QD", Out, "BOOL"},
           {"CV", Out, "INT"}}},
+        {"RTC", {{"IN", In, "BOOL"}, {"PDT", In, "DT"}, {"Q", Out, "BOOL"}, {"CDT", Out, "DT"}}},
         {"TP", {{"IN", In, "BOOL"}, {"PT", In, "TIME"}, {"Q", Out, "BOOL"}, {"ET", Out, "TIME"}}},
         {"TON", {{"IN", In, "BOOL"}, {"PT", In, "TIME"}, {"Q", Out, "BOOL"}, {"ET", Out, "TIME"}}},
         {"TOF", {{"IN", In, "BOOL"}, {"PT", In, "TIME"}, {"Q", Out, "BOOL"}, {"ET", Out, "TIME"}}},
     };
+    // The typed counters of table 45 (CTU_DINT…), with the parameters of CTU, CTD and CTUD.
+    for (const std::string_view suffix : {"_DINT", "_LINT", "_UDINT", "_ULINT"}) {
+        for (std::size_t i = 4; i < 7; ++i) {
+            StandardFunctionBlock typed = blocks[i];
+            typed.name += suffix;
+            for (Parameter& parameter : typed.parameters) {
+                if (parameter.type == "INT") {
+                    parameter.type = suffix.substr(1);
+                }
+            }
+            blocks.push_back(std::move(typed));
+        }
+    }
+    return blocks;
 }
 
 bool is_elementary_name(std::string_view name) {
@@ -70,12 +86,13 @@ bool is_elementary_name(std::string_view name) {
 
 } // namespace
 
-void declare_standard_library(SemanticModel& model) {
+void declare_standard_library(SemanticModel& model, bool function_blocks) {
     for (const char* name : kStandardFunctions) {
         model.global_scope().declare(
             model.add(Symbol{.kind = SymbolKind::StandardFunction, .name = name}));
     }
-    for (const StandardFunctionBlock& block : standard_function_blocks()) {
+    for (const StandardFunctionBlock& block :
+         function_blocks ? standard_function_blocks() : std::vector<StandardFunctionBlock>{}) {
         Scope& members = model.add_scope(nullptr);
         for (const Parameter& parameter : block.parameters) {
             members.declare(model.add(Symbol{.kind = SymbolKind::Variable,

@@ -16,4 +16,8 @@ namespace eposp::compiler::sema {
 /// unknown members are reported to `diagnostics`; resolution carries on past them.
 SemanticModel resolve(std::span<const ast::CompilationUnit> units, Diagnostics& diagnostics);
 
+/// The same for the built-in library, which declares the standard function blocks itself.
+SemanticModel resolve_library(std::span<const ast::CompilationUnit> units,
+                              Diagnostics& diagnostics);
+
 } // namespace eposp::compiler::sema

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "eposp/compiler/diagnostics.hpp"
+#include "eposp/compiler/source_manager.hpp"
+#include "eposp/vm/image.hpp"
+
+#include <optional>
+#include <span>
+
+namespace eposp::compiler {
+
+/// Parses, resolves, type-checks and generates the program image of the files of one program.
+/// Diagnostics (errors and warnings) go to `diagnostics`; nullopt when there are errors.
+///
+/// The image imports the natives of vm::stdlib::register_standard_library and, when the program
+/// uses a timer or RTC, vm::stdlib::kClockNative (vm::stdlib::register_clock). Symbols: a
+/// configuration global as `Config0.name`, a program instance as its instance name (`Inst0`,
+/// or the program's name when there is no configuration) with its variables below it
+/// (`Inst0.x`). A program without a configuration runs in a cyclic task of 10 ms.
+std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId> files,
+                                 Diagnostics& diagnostics);
+
+} // namespace eposp::compiler

@@ -1,0 +1,79 @@
+#pragma once
+
+#include "eposp/compiler/ast/declarations.hpp"
+#include "eposp/vm/scalar.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace eposp::compiler::sema {
+
+struct Type;
+
+/// A member of a STRUCT or a variable of an FB/PROGRAM instance, at its byte offset.
+struct Field {
+    std::string name{}; // as declared; compared case-insensitively
+    const Type* type = nullptr;
+    std::uint32_t offset = 0;
+    ast::VarSectionKind section = ast::VarSectionKind::Var;
+    const ast::VariableDeclaration* declaration = nullptr; // null for generated fields
+};
+
+struct ArrayDimension {
+    std::int64_t lower = 0;
+    std::uint32_t count = 0;
+};
+
+enum class TypeKind {
+    Elementary, ///< IEC 61131-3 ed. 3, table 10 (STRING excepted)
+    String,     ///< STRING[n] / WSTRING[n] (6.4.4.1)
+    Array,      ///< 6.4.4.5
+    Struct,     ///< 6.4.4.6
+    Enum,       ///< 6.4.4.2, held in its base type
+    Reference,  ///< REF_TO / POINTER TO (6.4.4.10): an address in VM memory
+    Instance,   ///< an FB or PROGRAM instance (6.6.3): its variables, base part first
+    Null,       ///< the type of NULL, assignable to every reference
+};
+
+/// One IEC data type with its memory layout. Subranges and aliases are their base type; an FB
+/// that EXTENDS another lays its base's instance out first, so the base part of a derived
+/// instance is a valid base instance (ed. 3, 6.6.5).
+struct Type {
+    TypeKind kind = TypeKind::Elementary;
+    std::string name{};
+    ast::ElementaryType elementary = ast::ElementaryType::Bool; ///< Elementary, Enum (its base)
+    std::uint32_t size = 0;
+    std::uint32_t align = 1;
+    std::uint32_t capacity = 0;                   ///< String
+    bool wide = false;                            ///< String: WSTRING
+    const Type* element = nullptr;                ///< Array element, Reference target
+    std::vector<ArrayDimension> dimensions{};       ///< Array
+    std::vector<Field> fields{};                  ///< Struct, Instance
+    const ast::Pou* pou = nullptr;                ///< Instance
+    const Type* base = nullptr;                   ///< Instance: the FB it EXTENDS
+    std::vector<std::pair<std::string, std::int64_t>> enumerators{}; ///< Enum
+
+    /// The field `name` (case-insensitive), searching the base part too.
+    const Field* field(std::string_view field_name) const;
+};
+
+bool is_integer(const Type& type);   ///< ANY_INT
+bool is_bit_string(const Type& type); ///< ANY_BIT without BOOL
+bool is_real(const Type& type);       ///< ANY_REAL
+bool is_numeric(const Type& type);    ///< ANY_NUM
+bool is_bool(const Type& type);
+bool is_time_like(const Type& type); ///< TIME, LTIME, DATE, TOD, DT and long forms
+bool is_signed(const Type& type);
+/// Types held in one VM scalar (elementary, enum, reference).
+bool is_scalar(const Type& type);
+/// The VM representation of a scalar type.
+vm::Scalar scalar_of(const Type& type);
+
+/// IEC 61131-3 ed. 3, 6.6.1.6 figure 11: the implicit widening conversions. True when a value
+/// of `from` may be used where `to` is expected without a conversion function.
+bool converts_implicitly(const Type& from, const Type& to);
+
+} // namespace eposp::compiler::sema

@@ -1,0 +1,77 @@
+#pragma once
+
+#include "eposp/compiler/diagnostics.hpp"
+#include "eposp/compiler/sema/semantic_model.hpp"
+#include "eposp/compiler/sema/type.hpp"
+
+#include <deque>
+#include <functional>
+#include <map>
+#include <optional>
+#include <unordered_map>
+
+namespace eposp::compiler::sema {
+
+/// Owns every type of a program and gives each declaration its type and layout (IEC 61131-3
+/// ed. 3, 6.4): elementary, STRING[n] and REF_TO types are interned, so two of them are the
+/// same type exactly when they are the same object. Constant expressions in types (array
+/// bounds, string lengths, enumeration values) are folded here.
+class TypeTable {
+public:
+    /// `library` finds the POU implementing a standard FB (`TON`) in the built-in library.
+    TypeTable(const SemanticModel& model, Diagnostics& diagnostics,
+              std::function<const ast::Pou*(std::string_view)> library);
+
+    const Type& elementary(ast::ElementaryType type);
+    const Type& string(std::uint32_t capacity, bool wide);
+    const Type& reference(const Type* target);
+    const Type& null();
+
+    /// The type a declaration spells; null after reporting an error.
+    const Type* resolve(const ast::TypeSpec& spec);
+    /// The type a type name, FB or standard FB symbol denotes; null if it has none.
+    const Type* named(const Symbol& symbol);
+    /// The instance layout of an FB or PROGRAM.
+    const Type* instance(const ast::Pou& pou);
+    /// What a POU keeps on the task stack (ed. 3, 6.6.2.2): for a FUNCTION its result (named
+    /// after it, at offset 0), parameters in declaration order, VAR and VAR_TEMP; for an FB or
+    /// PROGRAM its VAR_TEMP.
+    const Type* frame(const ast::Pou& pou);
+    /// The enumeration an enumerated value belongs to, and the value's number.
+    const Type* enumeration_of(const Symbol& value);
+    std::optional<std::int64_t> enumerator(const Symbol& value);
+
+    /// Folds a constant integer expression: literals, enumeration values, constants, + - * /
+    /// MOD and parentheses (ed. 3, 6.4.2). Nothing when the expression is not constant.
+    std::optional<std::int64_t> fold_integer(const ast::Expression& expression);
+
+private:
+    Type& add(Type type);
+    const Type* resolve_uncached(const ast::TypeSpec& spec);
+    const Type* array(const ast::ArrayType& spec, const SourceRange& range);
+    const Type* structure(const ast::StructType& spec);
+    const Type* enumeration(const ast::EnumType& spec, std::string name);
+    void lay_out(Type& type, const std::vector<const ast::VariableDeclaration*>& declarations,
+                 const std::vector<ast::VarSectionKind>& sections, std::uint32_t start);
+
+    const SemanticModel& model_;
+    Diagnostics& diagnostics_;
+    std::function<const ast::Pou*(std::string_view)> library_;
+    std::deque<Type> types_;
+    std::map<ast::ElementaryType, const Type*> elementary_;
+    std::map<std::pair<std::uint32_t, bool>, const Type*> strings_;
+    std::map<const Type*, const Type*> references_;
+    const Type* null_ = nullptr;
+    std::unordered_map<const ast::TypeSpec*, const Type*> specs_;
+    std::unordered_map<const ast::Pou*, const Type*> instances_;
+    std::unordered_map<const ast::Pou*, const Type*> frames_;
+    std::unordered_map<const ast::TypeSpec*, bool> in_progress_;
+    std::unordered_map<const ast::EnumValue*, std::pair<const Type*, std::int64_t>> enum_values_;
+};
+
+/// Rounds `offset` up to a multiple of `align`.
+constexpr std::uint32_t align_up(std::uint32_t offset, std::uint32_t align) {
+    return (offset + align - 1) / align * align;
+}
+
+} // namespace eposp::compiler::sema

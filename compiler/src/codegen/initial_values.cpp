@@ -1,0 +1,230 @@
+// Initial values of variables (IEC 61131-3 ed. 3, 6.5.1.3 and 6.4.2): the type's default
+// (zero, an empty STRING with its capacity in the header), the declared defaults of structure
+// members and FB variables, then the initializer written at the declaration.
+
+#include "eposp/compiler/sema/symbol.hpp"
+#include "eposp/vm/stdlib/string_layout.hpp"
+#include "program_generator.hpp"
+
+#include <cstring>
+#include <fmt/format.h>
+
+namespace eposp::compiler::codegen {
+
+namespace {
+
+template <typename T>
+std::vector<std::uint8_t> bytes_of(T value) {
+    std::vector<std::uint8_t> bytes(sizeof(T));
+    std::memcpy(bytes.data(), &value, sizeof(T));
+    return bytes;
+}
+
+/// An integer held in a scalar of `size` bytes (two's complement truncation).
+std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) {
+    std::vector<std::uint8_t> bytes(size);
+    const auto raw = static_cast<std::uint64_t>(value);
+    for (std::uint32_t i = 0; i < size; ++i) {
+        bytes[i] = static_cast<std::uint8_t>(raw >> (8 * i));
+    }
+    return bytes;
+}
+
+bool fits_integer(std::int64_t value, const sema::Type& type) {
+    const auto range = ast::integer_range(type.elementary);
+    return !range || (value >= range->min &&
+                      (value < 0 || static_cast<std::uint64_t>(value) <= range->max));
+}
+
+} // namespace
+
+std::optional<std::vector<std::uint8_t>>
+ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type,
+                                 const sema::SemanticModel& model) {
+    const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
+    if (type.kind == sema::TypeKind::String) {
+        const auto* text =
+            literal != nullptr ? std::get_if<ast::StringLiteral>(&literal->value) : nullptr;
+        if (text == nullptr) {
+            return std::nullopt;
+        }
+        if (const auto* narrow = std::get_if<std::string>(&text->value)) {
+            return type.wide ? std::nullopt
+                             : std::optional(vm::stdlib::string_image(type.capacity, *narrow));
+        }
+        return type.wide ? std::optional(vm::stdlib::wstring_image(
+                               type.capacity, std::get<std::u16string>(text->value)))
+                         : std::nullopt;
+    }
+    if (!sema::is_scalar(type)) {
+        return std::nullopt;
+    }
+    if (sema::is_real(type)) {
+        double value = 0;
+        const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node);
+        const ast::Expression& inner =
+            unary != nullptr && unary->op != ast::UnaryOperator::Not ? *unary->operand : expression;
+        const double sign = unary != nullptr && unary->op == ast::UnaryOperator::Negate ? -1 : 1;
+        const auto* inner_literal = std::get_if<ast::LiteralExpression>(&inner.node);
+        if (inner_literal == nullptr) {
+            return std::nullopt;
+        }
+        if (const auto* real = std::get_if<ast::RealLiteral>(&inner_literal->value)) {
+            value = real->value;
+        } else if (const auto* integer = std::get_if<ast::IntegerLiteral>(&inner_literal->value)) {
+            value = static_cast<double>(integer->magnitude) * (integer->negative ? -1 : 1);
+        } else {
+            return std::nullopt;
+        }
+        value *= sign;
+        return type.size == 4 ? bytes_of(static_cast<float>(value)) : bytes_of(value);
+    }
+    if (literal != nullptr) {
+        if (const auto* boolean = std::get_if<ast::BoolLiteral>(&literal->value)) {
+            return sema::is_bool(type) || sema::is_bit_string(type) || sema::is_integer(type)
+                       ? std::optional(integer_bytes(boolean->value ? 1 : 0, type.size))
+                       : std::nullopt;
+        }
+        if (const auto* duration = std::get_if<ast::DurationLiteral>(&literal->value)) {
+            return sema::is_time_like(type) ? std::optional(bytes_of(duration->nanoseconds))
+                                            : std::nullopt;
+        }
+        if (const auto* date = std::get_if<ast::DateTimeLiteral>(&literal->value)) {
+            return sema::is_time_like(type) ? std::optional(bytes_of(date->nanoseconds))
+                                            : std::nullopt;
+        }
+        if (std::holds_alternative<ast::NullLiteral>(literal->value)) {
+            return type.kind == sema::TypeKind::Reference
+                       ? std::optional(std::vector<std::uint8_t>(8, 0))
+                       : std::nullopt;
+        }
+    }
+    if (type.kind == sema::TypeKind::Reference || sema::is_real(type) ||
+        sema::is_time_like(type)) {
+        return std::nullopt;
+    }
+    (void)model;
+    if (literal != nullptr) {
+        if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
+            // Directly from the magnitude, so that ULINT values above LINT's range work.
+            const auto range = ast::integer_range(type.elementary);
+            const bool fits = integer->negative
+                                  ? range && integer->magnitude <= static_cast<std::uint64_t>(-(range->min + 1)) + 1
+                                  : !range || integer->magnitude <= range->max;
+            if (!fits && type.kind != sema::TypeKind::Enum) {
+                diagnostics_.error(expression.range,
+                                   fmt::format("the value {}{} does not fit in {}",
+                                               integer->negative ? "-" : "", integer->magnitude,
+                                               type.name));
+            }
+            const std::uint64_t bits = integer->negative ? 0 - integer->magnitude : integer->magnitude;
+            return integer_bytes(static_cast<std::int64_t>(bits), type.size);
+        }
+    }
+    const auto value = types_.fold_integer(expression);
+    if (!value) {
+        return std::nullopt;
+    }
+    if (!fits_integer(*value, type) && type.kind != sema::TypeKind::Enum) {
+        diagnostics_.error(expression.range,
+                           fmt::format("the value {} does not fit in {}", *value, type.name));
+    }
+    return integer_bytes(*value, type.size);
+}
+
+void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initializer* initializer,
+                                     const sema::SemanticModel& model,
+                                     std::span<std::uint8_t> bytes) {
+    switch (type.kind) {
+    case sema::TypeKind::String: {
+        const auto empty = vm::stdlib::string_image(type.capacity, "");
+        std::copy(empty.begin(), empty.begin() + vm::stdlib::kStringHeaderSize, bytes.begin());
+        break;
+    }
+    case sema::TypeKind::Array: {
+        const std::uint32_t count = type.size / std::max<std::uint32_t>(type.element->size, 1);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            initial_value(*type.element, nullptr, model,
+                          bytes.subspan(i * type.element->size, type.element->size));
+        }
+        break;
+    }
+    case sema::TypeKind::Struct:
+    case sema::TypeKind::Instance:
+        for (const sema::Type* part = &type; part != nullptr; part = part->base) {
+            const sema::SemanticModel& own =
+                part->pou != nullptr && pou_models_.contains(part->pou) ? *pou_models_.at(part->pou)
+                                                                       : model;
+            for (const sema::Field& field : part->fields) {
+                if (field.section == ast::VarSectionKind::InOut) {
+                    continue; // a reference, bound at each call
+                }
+                initial_value(*field.type,
+                              field.declaration != nullptr ? field.declaration->initial_value.get()
+                                                           : nullptr,
+                              own, bytes.subspan(field.offset, field.type->size));
+            }
+        }
+        break;
+    default:
+        break;
+    }
+    if (initializer == nullptr) {
+        return;
+    }
+    if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer->value)) {
+        if (const auto value = constant_value(**expression, type, model)) {
+            std::copy(value->begin(), value->end(), bytes.begin());
+        } else {
+            diagnostics_.error((*expression)->range,
+                               fmt::format("the initial value must be a constant {}", type.name));
+        }
+        return;
+    }
+    if (const auto* elements = std::get_if<std::vector<ast::ArrayInitElement>>(&initializer->value)) {
+        if (type.kind != sema::TypeKind::Array) {
+            diagnostics_.error(initializer->range, fmt::format("{} is not an array", type.name));
+            return;
+        }
+        const std::uint32_t size = type.element->size;
+        const std::uint32_t count = type.size / std::max<std::uint32_t>(size, 1);
+        std::uint32_t next = 0;
+        for (const ast::ArrayInitElement& element : *elements) {
+            std::int64_t repeat = 1;
+            if (element.repeat_count) {
+                repeat = types_.fold_integer(*element.repeat_count).value_or(-1);
+                if (repeat < 0) {
+                    diagnostics_.error(element.repeat_count->range,
+                                       "a repetition count must be a constant >= 0");
+                    return;
+                }
+            }
+            for (std::int64_t i = 0; i < repeat; ++i, ++next) {
+                if (next >= count) {
+                    diagnostics_.error(initializer->range,
+                                       fmt::format("too many initial values for {}", type.name));
+                    return;
+                }
+                if (element.value) {
+                    initial_value(*type.element, element.value.get(), model,
+                                  bytes.subspan(next * size, size));
+                }
+            }
+        }
+        return;
+    }
+    const auto& members = std::get<std::vector<ast::StructInitElement>>(initializer->value);
+    for (const ast::StructInitElement& member : members) {
+        const sema::Field* field = type.field(member.member.name);
+        if (field == nullptr ||
+            (type.kind != sema::TypeKind::Struct && type.kind != sema::TypeKind::Instance)) {
+            diagnostics_.error(member.member.range, fmt::format("'{}' has no member '{}'",
+                                                                type.name, member.member.name));
+            continue;
+        }
+        initial_value(*field->type, member.value.get(), model,
+                      bytes.subspan(field->offset, field->type->size));
+    }
+}
+
+} // namespace eposp::compiler::codegen

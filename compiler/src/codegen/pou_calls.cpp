@@ -1,0 +1,349 @@
+// Calls of functions, function block instances and host functions (IEC 61131-3 ed. 3, 6.6.1.7
+// and 7.3.3.2). A function's arguments are written into the caller's out area, which becomes
+// the callee's frame; an FB's inputs are written into its instance before CallFb.
+
+#include "eposp/compiler/sema/standard_library.hpp"
+#include "eposp/compiler/sema/symbol.hpp"
+#include "pou_generator.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::codegen {
+
+using vm::Opcode;
+using vm::Operand;
+
+std::optional<Value> PouGenerator::call(const ast::CallExpression& node, const sema::Type* hint,
+                                        const Destination* dest, const SourceRange& range) {
+    if (const auto* name = std::get_if<ast::NameExpression>(&node.callee->node)) {
+        const sema::Symbol* symbol = model_.resolved(name->name);
+        if (symbol == nullptr) {
+            return std::nullopt;
+        }
+        switch (symbol->kind) {
+        case sema::SymbolKind::Pou:
+            if (symbol->pou->kind == ast::PouKind::Function) {
+                return call_function(*symbol->pou, node, dest, range);
+            }
+            error(range, fmt::format("'{}' is a {} type: call an instance of it", symbol->name,
+                                     symbol->pou->kind == ast::PouKind::Program ? "PROGRAM"
+                                                                               : "FUNCTION_BLOCK"));
+            return std::nullopt;
+        case sema::SymbolKind::StandardFunction:
+            if (const ast::Pou* pou = program_.library_pou(symbol->name);
+                pou != nullptr && pou->kind == ast::PouKind::Function) {
+                return call_function(*pou, node, dest, range);
+            }
+            return standard_function(sema::fold_case(symbol->name), node, hint, dest, range);
+        case sema::SymbolKind::StandardFunctionBlock:
+            error(range, fmt::format("'{}' is a function block type: call an instance of it",
+                                     symbol->name));
+            return std::nullopt;
+        default:
+            break;
+        }
+    }
+    const auto instance = place(*node.callee);
+    if (!instance) {
+        return std::nullopt;
+    }
+    if (instance->type->kind != sema::TypeKind::Instance) {
+        error(node.callee->range,
+              fmt::format("a {} cannot be called: it is not a function block instance",
+                          instance->type->name));
+        return std::nullopt;
+    }
+    call_instance(*instance, node, range);
+    return Value{};
+}
+
+namespace {
+
+/// The field an argument names, or the next positional input.
+const sema::Field* formal(const sema::Type& frame, const ast::Argument& argument,
+                          std::size_t& positional) {
+    if (argument.name) {
+        const sema::Field* field = frame.field(argument.name->name);
+        return field != nullptr && field->declaration != nullptr ? field : nullptr;
+    }
+    std::size_t seen = 0;
+    for (const sema::Field& field : frame.fields) {
+        if (field.declaration != nullptr && (field.section == ast::VarSectionKind::Input ||
+                                             field.section == ast::VarSectionKind::InOut)) {
+            if (seen++ == positional) {
+                ++positional;
+                return &field;
+            }
+        }
+    }
+    return nullptr;
+}
+
+bool is_parameter(ast::VarSectionKind section) {
+    return section == ast::VarSectionKind::Input || section == ast::VarSectionKind::InOut ||
+           section == ast::VarSectionKind::Output;
+}
+
+} // namespace
+
+std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
+                                                 const ast::CallExpression& node,
+                                                 const Destination* dest,
+                                                 const SourceRange& range) {
+    const sema::Type& frame = *types_.frame(function);
+    if (program_.is_host_function(function)) {
+        return call_host(function, frame, node, dest, range);
+    }
+    const std::uint32_t index = program_.pou_index(function);
+    struct Bound {
+        const sema::Field* field;
+        const ast::Argument* argument;
+        std::optional<Value> value; // evaluated before the out area is written
+    };
+    std::vector<Bound> bound;
+    std::size_t positional = 0;
+    std::uint32_t end = 0;
+    bool ok = true;
+    for (const sema::Field& field : frame.fields) {
+        if (field.declaration == nullptr || is_parameter(field.section)) {
+            end = std::max(end, field.offset + field.type->size);
+        }
+    }
+    for (const ast::Argument& argument : node.arguments) {
+        const sema::Field* field = formal(frame, argument, positional);
+        const bool output = argument.kind == ast::Argument::Kind::Output;
+        if (field == nullptr || !is_parameter(field->section) ||
+            output != (field->section == ast::VarSectionKind::Output)) {
+            error(argument.range,
+                  argument.name ? fmt::format("'{}' has no {} '{}'", function.name.name,
+                                              output ? "output" : "input", argument.name->name)
+                                : fmt::format("too many arguments for '{}'", function.name.name));
+            ok = false;
+            continue;
+        }
+        bound.push_back({field, &argument, std::nullopt});
+    }
+    // First everything that may itself call (and so use the out area) or needs a native.
+    for (Bound& b : bound) {
+        if (b.field->section == ast::VarSectionKind::InOut) {
+            const auto target = place(*b.argument->value);
+            if (!target) {
+                ok = false;
+                continue;
+            }
+            if (target->type != b.field->type->element) {
+                error(b.argument->range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
+                                                     b.field->name, b.field->type->element->name));
+                ok = false;
+                continue;
+            }
+            b.value = Value{address_of(*target), b.field->type};
+        } else if (b.field->section == ast::VarSectionKind::Input &&
+                   (contains_call(*b.argument->value) ||
+                    b.field->type->kind == sema::TypeKind::String)) {
+            const Operand slot = temp(*b.field->type);
+            const Destination into{slot, b.field->type};
+            b.value = value_as(*b.argument->value, *b.field->type, &into);
+            if (b.value) {
+                move(slot, *b.field->type, *b.value);
+                b.value = Value{slot, b.field->type};
+            }
+            ok = ok && b.value.has_value();
+        }
+    }
+    if (!ok) {
+        return std::nullopt;
+    }
+    for (const sema::Field& field : frame.fields) {
+        if (field.declaration == nullptr || field.section == ast::VarSectionKind::Output ||
+            !is_parameter(field.section)) {
+            continue;
+        }
+        const Operand slot = Operand::out(field.offset);
+        const auto it = std::find_if(bound.begin(), bound.end(),
+                                     [&](const Bound& b) { return b.field == &field; });
+        if (it == bound.end()) {
+            if (field.section == ast::VarSectionKind::InOut) {
+                error(range, fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", field.name,
+                                         function.name.name));
+                return std::nullopt;
+            }
+            // 6.6.1.7: an input left out takes its initial value.
+            std::vector<std::uint8_t> bytes(field.type->size);
+            program_.initial_value(*field.type, field.declaration->initial_value.get(), model_,
+                                   bytes);
+            move(slot, *field.type, Value{program_.constant(bytes, 8), field.type});
+        } else if (it->value) {
+            builder_.emit(sema::is_scalar(*field.type) ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(*field.type))) : Opcode::MovN,
+                          slot, it->value->operand, Operand::imm(sema::is_scalar(*field.type) ? 0 : field.type->size));
+        } else {
+            const Destination into{slot, field.type};
+            const auto value = value_as(*it->argument->value, *field.type, &into);
+            if (!value) {
+                return std::nullopt;
+            }
+            move(slot, *field.type, *value);
+        }
+    }
+    out_slot(end);
+    builder_.emit(Opcode::Call, Operand::imm(index));
+    std::optional<Value> result = Value{};
+    if (!frame.fields.empty() && frame.fields.front().declaration == nullptr) {
+        const sema::Type& type = *frame.fields.front().type;
+        const Operand operand = result_operand(type, dest);
+        builder_.emit(sema::is_scalar(type) ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(type))) : Opcode::MovN,
+                      operand, Operand::out(0), Operand::imm(sema::is_scalar(type) ? 0 : type.size));
+        result = Value{operand, &type};
+    }
+    for (const Bound& b : bound) {
+        if (b.field->section != ast::VarSectionKind::Output) {
+            continue;
+        }
+        const auto target = place(*b.argument->value);
+        if (target) {
+            const Operand copy = temp(*b.field->type);
+            builder_.emit(Opcode::MovN, copy, Operand::out(b.field->offset),
+                          Operand::imm(b.field->type->size));
+            store(*target, Value{copy, b.field->type});
+        }
+    }
+    return result;
+}
+
+std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sema::Type& frame,
+                                             const ast::CallExpression& node,
+                                             const Destination* dest, const SourceRange& range) {
+    vm::NativeSignature signature;
+    std::vector<Value> arguments;
+    std::size_t positional = 0;
+    for (const ast::Argument& argument : node.arguments) {
+        const sema::Field* field = formal(frame, argument, positional);
+        if (field == nullptr || field->section != ast::VarSectionKind::Input) {
+            error(argument.range, fmt::format("bad argument for '{}'", function.name.name));
+            return std::nullopt;
+        }
+        const auto value = value_as(*argument.value, *field->type);
+        if (!value) {
+            return std::nullopt;
+        }
+        signature.parameters.push_back(sema::scalar_of(*field->type));
+        arguments.push_back(*value);
+    }
+    const sema::Type* result = frame.fields.empty() || frame.fields.front().declaration != nullptr
+                                   ? nullptr
+                                   : frame.fields.front().type;
+    signature.has_result = result != nullptr;
+    signature.result = result != nullptr ? sema::scalar_of(*result) : vm::Scalar::Bool;
+    call_native(function.name.name, signature, arguments);
+    (void)range;
+    return result != nullptr ? native_result(signature, *result, dest) : std::optional(Value{});
+}
+
+void PouGenerator::call_instance(const Place& instance, const ast::CallExpression& node,
+                                 const SourceRange& range) {
+    const sema::Type& type = *instance.type;
+    const std::uint32_t index = program_.pou_index(*type.pou);
+    std::vector<std::pair<const sema::Field*, const ast::Argument*>> outputs;
+    for (const ast::Argument& argument : node.arguments) {
+        const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
+        if (field == nullptr) {
+            error(argument.range,
+                  argument.name ? fmt::format("'{}' has no parameter '{}'", type.name,
+                                              argument.name->name)
+                                : "a function block call needs formal arguments (IN := x)");
+            continue;
+        }
+        const bool output = argument.kind == ast::Argument::Kind::Output;
+        if (output != (field->section == ast::VarSectionKind::Output) ||
+            !is_parameter(field->section)) {
+            error(argument.range, fmt::format("'{}' is not an {} of '{}'", field->name,
+                                              output ? "output" : "input", type.name));
+            continue;
+        }
+        if (output) {
+            outputs.emplace_back(field, &argument);
+            continue;
+        }
+        const Place slot = member(instance, field->offset, *field->type);
+        if (field->section == ast::VarSectionKind::InOut) {
+            const auto target = place(*argument.value);
+            if (!target) {
+                continue;
+            }
+            if (target->type != field->type->element) {
+                error(argument.range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
+                                                  field->name, field->type->element->name));
+                continue;
+            }
+            store(slot, Value{address_of(*target), field->type});
+            continue;
+        }
+        if (slot.kind == Place::Kind::Direct) {
+            const Destination into{slot.operand, field->type};
+            if (const auto value = value_as(*argument.value, *field->type, &into)) {
+                move(slot.operand, *field->type, *value);
+            }
+        } else if (const auto value = value_as(*argument.value, *field->type)) {
+            store(slot, *value);
+        }
+    }
+    (void)range;
+    if (instance.kind == Place::Kind::Direct) {
+        builder_.emit(Opcode::CallFb, instance.operand, Operand::imm(index));
+    } else {
+        builder_.emit(Opcode::CallFbP, address_of(instance), Operand::imm(index));
+    }
+    for (const auto& [field, argument] : outputs) {
+        const auto target = place(*argument->value);
+        if (!target) {
+            continue;
+        }
+        Value value = load(member(instance, field->offset, *field->type));
+        if (argument->negated) {
+            const Operand negated = temp(*field->type);
+            builder_.emit(Opcode::NotB, negated, value.operand);
+            value.operand = negated;
+        }
+        if (!sema::converts_implicitly(*field->type, *target->type)) {
+            error(argument->range, fmt::format("a {} output cannot be stored in a {}",
+                                               field->type->name, target->type->name));
+            continue;
+        }
+        store(*target, *convert(value, *target->type, nullptr));
+    }
+}
+
+void PouGenerator::call_native(const std::string& name, const vm::NativeSignature& signature,
+                               const std::vector<Value>& arguments) {
+    const std::uint32_t import = program_.import(name, signature);
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        const Operand slot = Operand::out(vm::parameter_offset(signature, i));
+        const Value& argument = arguments[i];
+        if (signature.parameters[i] == vm::Scalar::Ptr &&
+            argument.type->kind != sema::TypeKind::Reference &&
+            argument.type->kind != sema::TypeKind::Null) {
+            builder_.emit(Opcode::Addr, slot, argument.operand, Operand::imm(argument.type->size));
+        } else {
+            builder_.emit(program_.opcodes().get("Mov", width_suffix(signature.parameters[i])), slot,
+                          argument.operand);
+        }
+    }
+    out_slot(vm::argument_block_size(signature));
+    builder_.emit(Opcode::CallNative, Operand::imm(import));
+}
+
+std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& signature,
+                                                 const sema::Type& type, const Destination* dest) {
+    const Operand result = result_operand(type, dest);
+    const vm::Scalar want = sema::scalar_of(type);
+    if (signature.result == want) {
+        builder_.emit(program_.opcodes().get("Mov", width_suffix(want)), result, Operand::out(0));
+    } else {
+        builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(signature.result)) +
+                                                        std::string(type_suffix(want))),
+                      result, Operand::out(0));
+    }
+    return Value{result, &type};
+}
+
+} // namespace eposp::compiler::codegen

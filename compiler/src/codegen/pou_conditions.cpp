@@ -1,0 +1,103 @@
+// Conditions of IF, WHILE, REPEAT and CASE compiled to compare-and-branch instructions
+// (IEC 61131-3 ed. 3, 7.3.3.3): `IF a < b THEN` is one JLe to the ELSE part.
+
+#include "pou_generator.hpp"
+
+namespace eposp::compiler::codegen {
+
+using Op = ast::BinaryOperator;
+
+namespace {
+
+bool is_comparison(Op op) {
+    return op == Op::Less || op == Op::Greater || op == Op::LessEqual || op == Op::GreaterEqual ||
+           op == Op::Equal || op == Op::NotEqual;
+}
+
+Op negated(Op op) {
+    switch (op) {
+    case Op::Less: return Op::GreaterEqual;
+    case Op::Greater: return Op::LessEqual;
+    case Op::LessEqual: return Op::Greater;
+    case Op::GreaterEqual: return Op::Less;
+    case Op::Equal: return Op::NotEqual;
+    default: return Op::Equal;
+    }
+}
+
+} // namespace
+
+void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label target) {
+    const sema::Type& boolean = types_.elementary(ast::ElementaryType::Bool);
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&condition.node);
+        unary != nullptr && unary->op == ast::UnaryOperator::Not) {
+        const auto* operand = unary->operand.get();
+        // NOT on BOOL only: NOT of a bit string is a value, not a condition.
+        if (!std::holds_alternative<ast::LiteralExpression>(operand->node)) {
+            branch(*operand, !when, target);
+            return;
+        }
+    }
+    const auto* binary = std::get_if<ast::BinaryExpression>(&condition.node);
+    // AND / OR as jumps, when skipping the right side cannot skip a call's side effects.
+    if (binary != nullptr && (binary->op == Op::And || binary->op == Op::Or) &&
+        !contains_call(*binary->right)) {
+        // A condition is BOOL, so AND and OR here are logical (a bit string is reported as
+        // not BOOL by the sides).
+        const bool conjunction = binary->op == Op::And;
+        if (conjunction != when) {
+            // AND jumping when false / OR jumping when true: either side decides.
+            branch(*binary->left, when, target);
+            branch(*binary->right, when, target);
+        } else {
+            const vm::Label skip = builder_.label();
+            branch(*binary->left, !when, skip);
+            branch(*binary->right, when, target);
+            builder_.bind(skip);
+        }
+        return;
+    }
+    if (binary != nullptr && is_comparison(binary->op)) {
+        const auto pair = operands(*binary->left, *binary->right, nullptr, condition.range);
+        if (!pair) {
+            return;
+        }
+        const auto& [left, right] = *pair;
+        const sema::Type& type = *left.type;
+        const bool real = sema::is_real(type);
+        if (sema::is_scalar(type) && !(real && !when)) {
+            // With NaN a negated float comparison is not the opposite one: only direct forms.
+            const Op op = when ? binary->op : negated(binary->op);
+            const bool swap = op == Op::Greater || op == Op::GreaterEqual;
+            const Value& a = swap ? right : left;
+            const Value& b = swap ? left : right;
+            std::string_view suffix = type_suffix(sema::scalar_of(type));
+            if (suffix == "Bool") {
+                suffix = "U8";
+            }
+            vm::Opcode opcode{};
+            if (op == Op::Equal) {
+                opcode = op_width("JEq", type);
+            } else if (op == Op::NotEqual) {
+                opcode = op_width("JNe", type);
+            } else if (op == Op::Less || op == Op::Greater) {
+                opcode = program_.opcodes().get("JLt", suffix);
+            } else {
+                opcode = program_.opcodes().get("JLe", suffix);
+            }
+            builder_.jump(opcode, target, a.operand, b.operand);
+            return;
+        }
+        const auto value = apply(binary->op, left, right, nullptr, condition.range);
+        if (value) {
+            builder_.jump(when ? vm::Opcode::Jt : vm::Opcode::Jf, target, value->operand);
+        }
+        return;
+    }
+    const auto value = value_as(condition, boolean);
+    if (value) {
+        builder_.jump(when ? vm::Opcode::Jt : vm::Opcode::Jf, target, value->operand);
+    }
+}
+
+} // namespace eposp::compiler::codegen

@@ -1,0 +1,681 @@
+// Expressions of IEC 61131-3 ed. 3, 7.3.2 (table 71): variables, literals, operators.
+
+#include "eposp/compiler/sema/symbol.hpp"
+#include "pou_generator.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::codegen {
+
+using E = ast::ElementaryType;
+using vm::Opcode;
+using vm::Operand;
+
+bool PouGenerator::is_untyped_literal(const ast::Expression& expression) {
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        return unary->op != ast::UnaryOperator::Not && is_untyped_literal(*unary->operand);
+    }
+    const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
+    if (literal == nullptr) {
+        return false;
+    }
+    if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
+        return !integer->type;
+    }
+    if (const auto* real = std::get_if<ast::RealLiteral>(&literal->value)) {
+        return !real->type;
+    }
+    return std::holds_alternative<ast::StringLiteral>(literal->value) ||
+           std::holds_alternative<ast::NullLiteral>(literal->value);
+}
+
+bool PouGenerator::contains_call(const ast::Expression& expression) {
+    return std::visit(
+        [](const auto& node) -> bool {
+            using T = std::decay_t<decltype(node)>;
+            if constexpr (std::is_same_v<T, ast::CallExpression>) {
+                return true;
+            } else if constexpr (std::is_same_v<T, ast::MemberExpression> ||
+                                 std::is_same_v<T, ast::BitAccessExpression>) {
+                return contains_call(*node.object);
+            } else if constexpr (std::is_same_v<T, ast::IndexExpression>) {
+                bool any = contains_call(*node.array);
+                for (const auto& index : node.indices) {
+                    any = any || contains_call(*index);
+                }
+                return any;
+            } else if constexpr (std::is_same_v<T, ast::DereferenceExpression>) {
+                return contains_call(*node.reference);
+            } else if constexpr (std::is_same_v<T, ast::ReferenceExpression>) {
+                return contains_call(*node.target);
+            } else if constexpr (std::is_same_v<T, ast::UnaryExpression>) {
+                return contains_call(*node.operand);
+            } else if constexpr (std::is_same_v<T, ast::BinaryExpression>) {
+                return contains_call(*node.left) || contains_call(*node.right);
+            } else {
+                return false;
+            }
+        },
+        expression.node);
+}
+
+Operand PouGenerator::result_operand(const sema::Type& type, const Destination* dest) {
+    return dest != nullptr && dest->type == &type ? dest->operand : temp(type);
+}
+
+// --- Places ----------------------------------------------------------------------------------
+
+std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
+    if (const auto* name = std::get_if<ast::NameExpression>(&expression.node)) {
+        const sema::Symbol* symbol = model_.resolved(name->name);
+        if (symbol == nullptr) {
+            return std::nullopt; // reported by the resolver
+        }
+        return variable(*symbol, expression.range);
+    }
+    if (const auto* node = std::get_if<ast::MemberExpression>(&expression.node)) {
+        auto object = place(*node->object);
+        if (!object) {
+            return std::nullopt;
+        }
+        const sema::Type& type = *object->type;
+        const sema::Field* field =
+            type.kind == sema::TypeKind::Struct || type.kind == sema::TypeKind::Instance
+                ? type.field(node->member.name)
+                : nullptr;
+        if (field == nullptr) {
+            error(node->member.range,
+                  fmt::format("'{}' has no member '{}'", type.name, node->member.name));
+            return std::nullopt;
+        }
+        if (type.kind == sema::TypeKind::Instance &&
+            (field->section == ast::VarSectionKind::Var ||
+             field->section == ast::VarSectionKind::InOut)) {
+            // 6.5.2.2: only inputs and outputs of an instance are visible outside it.
+            error(node->member.range, fmt::format("'{}' is internal to '{}'", field->name, type.name));
+            return std::nullopt;
+        }
+        Place result = member(*object, field->offset, *field->type);
+        if (type.kind == sema::TypeKind::Instance && field->section == ast::VarSectionKind::Output) {
+            result.writable = false;
+        }
+        return result;
+    }
+    if (const auto* node = std::get_if<ast::IndexExpression>(&expression.node)) {
+        return index(*node, expression.range);
+    }
+    if (const auto* node = std::get_if<ast::DereferenceExpression>(&expression.node)) {
+        const auto pointer = eval(*node->reference, nullptr);
+        if (!pointer) {
+            return std::nullopt;
+        }
+        if (pointer->type->kind != sema::TypeKind::Reference || pointer->type->element == nullptr) {
+            error(expression.range, fmt::format("'^' needs a reference, not {}", pointer->type->name));
+            return std::nullopt;
+        }
+        return Place{.kind = Place::Kind::Indirect,
+                     .type = pointer->type->element,
+                     .operand = pointer->operand};
+    }
+    error(expression.range, "this expression is not a variable");
+    return std::nullopt;
+}
+
+std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
+                                         const SourceRange& range) {
+    auto array = place(*node.array);
+    if (!array) {
+        return std::nullopt;
+    }
+    const sema::Type& type = *array->type;
+    if (type.kind != sema::TypeKind::Array) {
+        error(range, fmt::format("{} is not an array", type.name));
+        return std::nullopt;
+    }
+    if (node.indices.size() != type.dimensions.size()) {
+        error(range, fmt::format("{} needs {} indices", type.name, type.dimensions.size()));
+        return std::nullopt;
+    }
+    const sema::Type& element = *type.element;
+    const sema::Type& dint = types_.elementary(E::Dint);
+    // Constant indices are checked now and cost nothing at run time.
+    std::int64_t constant = 0;
+    bool all_constant = true;
+    for (std::size_t d = 0; d < node.indices.size(); ++d) {
+        const auto folded = types_.fold_integer(*node.indices[d]);
+        const auto& dimension = type.dimensions[d];
+        if (!folded) {
+            all_constant = false;
+            break;
+        }
+        if (*folded < dimension.lower ||
+            *folded >= dimension.lower + static_cast<std::int64_t>(dimension.count)) {
+            error(node.indices[d]->range,
+                  fmt::format("index {} is outside {}", *folded, type.name));
+            return std::nullopt;
+        }
+        constant = constant * dimension.count + (*folded - dimension.lower);
+    }
+    if (all_constant) {
+        return member(*array, static_cast<std::uint32_t>(constant) * element.size, element);
+    }
+    // The linear index: sum of (i_d - lower_d) * stride_d, for one dimension just i.
+    Operand linear{};
+    for (std::size_t d = 0; d < node.indices.size(); ++d) {
+        auto value = eval(*node.indices[d], &dint);
+        if (!value) {
+            return std::nullopt;
+        }
+        if (!sema::is_integer(*value->type) && value->type->kind != sema::TypeKind::Enum) {
+            error(node.indices[d]->range,
+                  fmt::format("an array index must be an integer, not {}", value->type->name));
+            return std::nullopt;
+        }
+        if (value->type != &dint) {
+            const Operand converted = temp(dint);
+            builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32"),
+                          converted, value->operand);
+            value = Value{converted, &dint};
+        }
+        if (node.indices.size() == 1) {
+            linear = value->operand;
+            break;
+        }
+        const auto& dimension = type.dimensions[d];
+        const Operand term = temp(dint);
+        builder_.emit(Opcode::AddI32, term, value->operand,
+                      Operand::imm(static_cast<std::uint32_t>(-dimension.lower)));
+        if (d == 0) {
+            linear = term;
+        } else {
+            builder_.emit(Opcode::Mul32, linear, linear,
+                          program_.constant({static_cast<std::uint8_t>(dimension.count),
+                                             static_cast<std::uint8_t>(dimension.count >> 8),
+                                             static_cast<std::uint8_t>(dimension.count >> 16),
+                                             static_cast<std::uint8_t>(dimension.count >> 24)},
+                                            4));
+            builder_.emit(Opcode::Add32, linear, linear, term);
+        }
+    }
+    std::uint32_t count = 1;
+    for (const auto& dimension : type.dimensions) {
+        count *= dimension.count;
+    }
+    const bool one = type.dimensions.size() == 1;
+    const std::uint16_t descriptor =
+        builder_.array(one ? static_cast<std::int32_t>(type.dimensions[0].lower) : 0, count,
+                       element.size);
+    if (array->kind == Place::Kind::Direct && sema::is_scalar(element)) {
+        return Place{.kind = Place::Kind::Element,
+                     .type = &element,
+                     .operand = array->operand,
+                     .index = linear,
+                     .array = descriptor,
+                     .writable = array->writable};
+    }
+    const Operand pointer = temp(types_.reference(&element));
+    if (array->kind == Place::Kind::Direct) {
+        builder_.emit(Opcode::IdxA, pointer, array->operand, linear, descriptor);
+    } else {
+        builder_.emit(Opcode::IdxAP, pointer, address_of(*array), linear, descriptor);
+    }
+    return Place{.kind = Place::Kind::Indirect,
+                 .type = &element,
+                 .operand = pointer,
+                 .writable = array->writable};
+}
+
+// --- Values ----------------------------------------------------------------------------------
+
+std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const sema::Type* hint,
+                                        const Destination* dest) {
+    if (const auto* node = std::get_if<ast::LiteralExpression>(&expression.node)) {
+        return literal(expression, *node, hint);
+    }
+    if (const auto* node = std::get_if<ast::NameExpression>(&expression.node)) {
+        const sema::Symbol* symbol = model_.resolved(node->name);
+        if (symbol == nullptr) {
+            return std::nullopt;
+        }
+        if (symbol->kind == sema::SymbolKind::EnumValue) {
+            const sema::Type* type = types_.enumeration_of(*symbol);
+            const auto value = types_.enumerator(*symbol);
+            if (type == nullptr || !value) {
+                return std::nullopt;
+            }
+            std::vector<std::uint8_t> bytes(type->size);
+            for (std::uint32_t i = 0; i < type->size; ++i) {
+                bytes[i] = static_cast<std::uint8_t>(static_cast<std::uint64_t>(*value) >> (8 * i));
+            }
+            return Value{program_.constant(bytes, type->align), type};
+        }
+        if (symbol->kind != sema::SymbolKind::Variable &&
+            !(symbol->kind == sema::SymbolKind::Pou && symbol->pou == &pou_)) {
+            error(expression.range, fmt::format("'{}' is not a value", symbol->name));
+            return std::nullopt;
+        }
+    }
+    if (std::holds_alternative<ast::NameExpression>(expression.node) ||
+        std::holds_alternative<ast::MemberExpression>(expression.node) ||
+        std::holds_alternative<ast::IndexExpression>(expression.node) ||
+        std::holds_alternative<ast::DereferenceExpression>(expression.node)) {
+        const auto where = place(expression);
+        return where ? std::optional(load(*where, dest)) : std::nullopt;
+    }
+    if (const auto* node = std::get_if<ast::ReferenceExpression>(&expression.node)) {
+        const auto target = place(*node->target);
+        if (!target) {
+            return std::nullopt;
+        }
+        return Value{address_of(*target), &types_.reference(target->type)};
+    }
+    if (const auto* node = std::get_if<ast::CallExpression>(&expression.node)) {
+        auto value = call(*node, hint, dest, expression.range);
+        if (value && value->type == nullptr) {
+            error(expression.range, "this call has no value");
+            return std::nullopt;
+        }
+        return value;
+    }
+    if (const auto* node = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        return unary(*node, hint, dest, expression.range);
+    }
+    if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
+        auto value = binary(*node, hint, dest, expression.range, true);
+        if (value && value->iec != nullptr) {
+            // Computed wider than its type (see binary): cut to the type here.
+            const sema::Type& type = *value->iec;
+            value->iec = nullptr;
+            value = convert(*value, type, dest);
+        }
+        return value;
+    }
+    error(expression.range, "direct addresses and bit access in expressions are not supported yet");
+    return std::nullopt;
+}
+
+std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
+                                           const ast::LiteralExpression& node,
+                                           const sema::Type* hint) {
+    const sema::Type* type = nullptr;
+    const bool numeric_hint =
+        hint != nullptr && (sema::is_numeric(*hint) || sema::is_bit_string(*hint));
+    if (const auto* integer = std::get_if<ast::IntegerLiteral>(&node.value)) {
+        if (integer->type) {
+            type = &types_.elementary(*integer->type);
+        } else if (numeric_hint) {
+            type = hint;
+        } else {
+            const bool fits = integer->negative ? integer->magnitude <= 0x80000000ULL
+                                                : integer->magnitude <= 0x7FFFFFFFULL;
+            type = &types_.elementary(fits ? E::Dint : E::Lint);
+        }
+    } else if (const auto* real = std::get_if<ast::RealLiteral>(&node.value)) {
+        type = real->type ? &types_.elementary(*real->type)
+               : hint != nullptr && sema::is_real(*hint) ? hint
+                                                          : &types_.elementary(E::Lreal);
+    } else if (std::holds_alternative<ast::BoolLiteral>(node.value)) {
+        type = &types_.elementary(E::Bool);
+    } else if (const auto* duration = std::get_if<ast::DurationLiteral>(&node.value)) {
+        type = &types_.elementary(duration->type);
+    } else if (const auto* date = std::get_if<ast::DateTimeLiteral>(&node.value)) {
+        type = &types_.elementary(date->type);
+    } else if (const auto* text = std::get_if<ast::StringLiteral>(&node.value)) {
+        const bool wide = text->type == E::Wstring || text->type == E::Wchar;
+        const std::size_t length = wide ? std::get<std::u16string>(text->value).size()
+                                        : std::get<std::string>(text->value).size();
+        // Laid out at the capacity of the string it goes to, so that assigning it is one copy.
+        type = hint != nullptr && hint->kind == sema::TypeKind::String && hint->wide == wide &&
+                       hint->capacity >= length
+                   ? hint
+                   : &types_.string(static_cast<std::uint32_t>(std::max<std::size_t>(length, 1)),
+                                    wide);
+    } else if (const auto* enumerated = std::get_if<ast::EnumValueLiteral>(&node.value)) {
+        const sema::Symbol* symbol = model_.resolved(enumerated->value);
+        type = symbol != nullptr ? types_.enumeration_of(*symbol) : nullptr;
+        if (type == nullptr) {
+            return std::nullopt;
+        }
+    } else {
+        type = hint != nullptr && hint->kind == sema::TypeKind::Reference ? hint : &types_.null();
+    }
+    auto bytes = program_.constant_value(expression, *type, model_);
+    if (!bytes) {
+        error(expression.range, fmt::format("this literal is not a valid {}", type->name));
+        return std::nullopt;
+    }
+    return Value{program_.constant(*bytes, std::max<std::uint32_t>(type->align, 1)), type};
+}
+
+std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type& want,
+                                           const Destination* dest) {
+    if (value.type == &want || !sema::is_scalar(want) || !sema::is_scalar(*value.type)) {
+        return value; // strings keep their own capacity: they are assigned by their header
+    }
+    const vm::Scalar from = sema::scalar_of(*value.type);
+    const vm::Scalar to = sema::scalar_of(want);
+    if (from == to || (from == vm::Scalar::Ptr && to == vm::Scalar::Ptr)) {
+        return Value{value.operand, &want};
+    }
+    const Operand result = result_operand(want, dest);
+    builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(from)) +
+                                                    std::string(type_suffix(to))),
+                  result, value.operand);
+    return Value{result, &want};
+}
+
+std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
+                                            const sema::Type& want, const Destination* dest) {
+    auto value = eval(expression, &want, dest);
+    if (!value) {
+        return std::nullopt;
+    }
+    if (!sema::converts_implicitly(*value->type, want)) {
+        error(expression.range, fmt::format("a {} value cannot be used as {}{}", value->type->name,
+                                            want.name,
+                                            sema::is_scalar(*value->type) && sema::is_scalar(want)
+                                                ? fmt::format(" (convert it with {}_TO_{})",
+                                                              value->type->name, want.name)
+                                                : ""));
+        return std::nullopt;
+    }
+    return convert(*value, want, dest);
+}
+
+std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& expression) {
+    if (!is_untyped_literal(expression)) {
+        return std::nullopt;
+    }
+    const auto value = types_.fold_integer(expression);
+    if (!value || *value < INT32_MIN || *value > INT32_MAX) {
+        return std::nullopt;
+    }
+    return static_cast<std::int32_t>(*value);
+}
+
+std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Expression& left,
+                                                              const ast::Expression& right,
+                                                              const sema::Type* hint,
+                                                              const SourceRange& range) {
+    std::optional<Value> l;
+    std::optional<Value> r;
+    if (is_untyped_literal(left) && !is_untyped_literal(right)) {
+        r = operand_value(right, hint);
+        l = r ? eval(left, r->type) : std::nullopt;
+    } else {
+        l = operand_value(left, hint);
+        r = l ? operand_value(right, is_untyped_literal(right) ? l->type : hint) : std::nullopt;
+    }
+    if (!l || !r) {
+        return std::nullopt;
+    }
+    return unify(*l, *r, range);
+}
+
+std::optional<std::pair<Value, Value>> PouGenerator::unify(const Value& l, const Value& r,
+                                                           const SourceRange& range) {
+    if (l.type == r.type || (sema::is_time_like(*l.type) && sema::is_time_like(*r.type)) ||
+        (l.type->kind == sema::TypeKind::String && r.type->kind == sema::TypeKind::String)) {
+        return std::pair(l, r);
+    }
+    if (sema::converts_implicitly(*l.type, *r.type)) {
+        Value converted = *convert(l, *r.type, nullptr);
+        converted.iec = l.iec != nullptr ? l.iec : l.type;
+        return std::pair(converted, r);
+    }
+    if (sema::converts_implicitly(*r.type, *l.type)) {
+        Value converted = *convert(r, *l.type, nullptr);
+        converted.iec = r.iec != nullptr ? r.iec : r.type;
+        return std::pair(l, converted);
+    }
+    error(range, fmt::format("operands of types {} and {} do not match",
+                             (l.iec != nullptr ? l.iec : l.type)->name,
+                             (r.iec != nullptr ? r.iec : r.type)->name));
+    return std::nullopt;
+}
+
+bool PouGenerator::is_small_integer(const sema::Type& type) {
+    return sema::is_integer(type) && type.size < 4;
+}
+
+std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const sema::Type* hint,
+                                         const Destination* dest, const SourceRange& range) {
+    if (node.op == ast::UnaryOperator::Plus) {
+        return eval(*node.operand, hint, dest);
+    }
+    const auto value = eval(*node.operand, hint);
+    if (!value) {
+        return std::nullopt;
+    }
+    const sema::Type& type = *value->type;
+    if (node.op == ast::UnaryOperator::Negate) {
+        if (!sema::is_numeric(type) && !(sema::is_time_like(type) && type.elementary <= E::Ltime)) {
+            error(range, fmt::format("'-' needs a number, not {}", type.name));
+            return std::nullopt;
+        }
+        const Operand result = result_operand(type, dest);
+        builder_.emit(op_width("Neg", type), result, value->operand);
+        return Value{result, &type};
+    }
+    const Operand result = result_operand(type, dest);
+    if (sema::is_bool(type)) {
+        builder_.emit(Opcode::NotB, result, value->operand);
+    } else if (sema::is_bit_string(type) || sema::is_integer(type)) {
+        builder_.emit(op_width("Not", type), result, value->operand);
+    } else {
+        error(range, fmt::format("NOT needs a BOOL or bit string, not {}", type.name));
+        return std::nullopt;
+    }
+    return Value{result, &type};
+}
+
+std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& left,
+                                           const Value& right, const Destination* dest) {
+    const sema::Type& boolean = types_.elementary(E::Bool);
+    const sema::Type& type = *left.type;
+    if (type.kind == sema::TypeKind::String) {
+        static constexpr std::pair<ast::BinaryOperator, const char*> kNames[] = {
+            {ast::BinaryOperator::Less, "LT_STRING"},   {ast::BinaryOperator::Greater, "GT_STRING"},
+            {ast::BinaryOperator::LessEqual, "LE_STRING"},
+            {ast::BinaryOperator::GreaterEqual, "GE_STRING"},
+            {ast::BinaryOperator::Equal, "EQ_STRING"},  {ast::BinaryOperator::NotEqual, "NE_STRING"}};
+        for (const auto& [candidate, name] : kNames) {
+            if (candidate == op) {
+                const vm::NativeSignature signature{true, vm::Scalar::Bool,
+                                                    {vm::Scalar::Ptr, vm::Scalar::Ptr}};
+                call_native(name, signature, {left, right});
+                return native_result(signature, boolean, dest);
+            }
+        }
+    }
+    if (!sema::is_scalar(type)) {
+        return std::nullopt;
+    }
+    const Operand result = result_operand(boolean, dest);
+    const bool swap = op == ast::BinaryOperator::Greater || op == ast::BinaryOperator::GreaterEqual;
+    const Value& a = swap ? right : left;
+    const Value& b = swap ? left : right;
+    std::string_view suffix = type_suffix(sema::scalar_of(type));
+    if (suffix == "Bool") {
+        suffix = "U8";
+    }
+    switch (op) {
+    case ast::BinaryOperator::Equal:
+        builder_.emit(op_width("Eq", type), result, a.operand, b.operand);
+        break;
+    case ast::BinaryOperator::NotEqual:
+        builder_.emit(op_width("Ne", type), result, a.operand, b.operand);
+        break;
+    case ast::BinaryOperator::Less:
+    case ast::BinaryOperator::Greater:
+        builder_.emit(program_.opcodes().get("Lt", suffix), result, a.operand, b.operand);
+        break;
+    default:
+        builder_.emit(program_.opcodes().get("Le", suffix), result, a.operand, b.operand);
+        break;
+    }
+    return Value{result, &boolean};
+}
+
+std::optional<Value> PouGenerator::operand_value(const ast::Expression& expression,
+                                                 const sema::Type* hint) {
+    if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
+        return binary(*node, hint, nullptr, expression.range, false);
+    }
+    return eval(expression, hint);
+}
+
+Value PouGenerator::widened(const Value& value) {
+    const sema::Type& dint = types_.elementary(E::Dint);
+    if (value.type == &dint) {
+        return value;
+    }
+    Value wide = *convert(value, dint, nullptr);
+    wide.iec = value.iec != nullptr ? value.iec : value.type;
+    return wide;
+}
+
+std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
+                                          const sema::Type* hint, const Destination* dest,
+                                          const SourceRange& range, bool top) {
+    using Op = ast::BinaryOperator;
+    const bool comparison = node.op == Op::Less || node.op == Op::Greater ||
+                            node.op == Op::LessEqual || node.op == Op::GreaterEqual ||
+                            node.op == Op::Equal || node.op == Op::NotEqual;
+    const bool arithmetic = node.op == Op::Add || node.op == Op::Subtract ||
+                            node.op == Op::Multiply || node.op == Op::Divide ||
+                            node.op == Op::Modulo;
+    if (node.op == Op::Power) {
+        const sema::Type& lreal = types_.elementary(E::Lreal);
+        const auto base = value_as(*node.left, lreal);
+        const auto exponent = base ? value_as(*node.right, lreal) : std::nullopt;
+        if (!exponent) {
+            return std::nullopt;
+        }
+        const vm::NativeSignature signature{true, vm::Scalar::F64, {vm::Scalar::F64, vm::Scalar::F64}};
+        call_native("EXPT_LREAL", signature, {*base, *exponent});
+        return native_result(signature, lreal, dest);
+    }
+    const auto immediate = (node.op == Op::Add || node.op == Op::Subtract) &&
+                                   !is_untyped_literal(*node.left)
+                               ? small_literal(*node.right)
+                               : std::nullopt;
+    std::optional<std::pair<Value, Value>> pair;
+    if (immediate) {
+        auto left = operand_value(*node.left, hint);
+        if (!left) {
+            return std::nullopt;
+        }
+        if (sema::is_integer(*left->type) || sema::is_bit_string(*left->type)) {
+            // A small constant right operand of + and - is the immediate of AddI.
+            Value l = *left;
+            if (!top && l.iec == nullptr && is_small_integer(*l.type)) {
+                l = widened(l);
+            }
+            const Operand result = result_operand(*l.type, l.iec != nullptr ? nullptr : dest);
+            const std::int64_t delta = node.op == Op::Add ? *immediate : -std::int64_t{*immediate};
+            builder_.emit(op_width("AddI", *l.type), result, l.operand,
+                          Operand::imm(static_cast<std::uint32_t>(delta)));
+            return Value{result, l.type, l.iec};
+        }
+        const auto right = eval(*node.right, left->type);
+        pair = right ? unify(*left, *right, range) : std::nullopt;
+    } else {
+        pair = operands(*node.left, *node.right, comparison ? nullptr : hint, range);
+    }
+    if (!pair) {
+        return std::nullopt;
+    }
+    auto [left, right] = *pair;
+    // Small integers (SINT, INT, USINT, UINT) are computed in DINT when the result feeds
+    // another operation, as CODESYS and C do: `(a * b) MOD 1000` does not overflow at INT,
+    // the value is cut to INT only where it is stored.
+    const sema::Type* left_iec = left.iec != nullptr ? left.iec : left.type;
+    const sema::Type* right_iec = right.iec != nullptr ? right.iec : right.type;
+    if (is_untyped_literal(*node.left)) {
+        left_iec = right_iec;
+    }
+    if (is_untyped_literal(*node.right)) {
+        right_iec = left_iec;
+    }
+    if ((arithmetic || comparison) && is_small_integer(*left_iec) &&
+        is_small_integer(*right_iec) &&
+        (left.iec != nullptr || right.iec != nullptr || (!top && arithmetic))) {
+        const sema::Type* iec =
+            sema::converts_implicitly(*left_iec, *right_iec) ? right_iec : left_iec;
+        auto result = apply(node.op, widened(left), widened(right), comparison ? dest : nullptr,
+                            range);
+        if (result && arithmetic) {
+            result->iec = iec;
+        }
+        return result;
+    }
+    return apply(node.op, left, right, dest, range);
+}
+
+std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,
+                                         const Value& right, const Destination* dest,
+                                         const SourceRange& range) {
+    using Op = ast::BinaryOperator;
+    const sema::Type& type = *left.type;
+    if (oper == Op::Less || oper == Op::Greater || oper == Op::LessEqual || oper == Op::GreaterEqual ||
+        oper == Op::Equal || oper == Op::NotEqual) {
+        if (auto result = compare(oper, left, right, dest)) {
+            return result;
+        }
+        error(range, fmt::format("values of type {} cannot be compared", type.name));
+        return std::nullopt;
+    }
+    if (oper == Op::And || oper == Op::Or || oper == Op::Xor) {
+        if (!sema::is_bool(type) && !sema::is_bit_string(type)) {
+            error(range, fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", type.name));
+            return std::nullopt;
+        }
+        const Operand result = result_operand(type, dest);
+        const char* family = oper == Op::And ? "And" : oper == Op::Or ? "Or" : "Xor";
+        builder_.emit(op_width(family, type), result, left.operand, right.operand);
+        return Value{result, &type};
+    }
+    const sema::Type* result_type = &type;
+    if (sema::is_time_like(type) || sema::is_time_like(*right.type)) {
+        // 6.6.2.5.5 table 30: ADD/SUB of durations and points in time, all in nanoseconds.
+        const bool durations = (type.elementary == E::Time || type.elementary == E::Ltime) &&
+                               (right.type->elementary == E::Time ||
+                                right.type->elementary == E::Ltime);
+        const bool point_plus_duration =
+            sema::is_time_like(*right.type) &&
+            (right.type->elementary == E::Time || right.type->elementary == E::Ltime);
+        if (oper == Op::Subtract && !point_plus_duration && type.elementary == right.type->elementary) {
+            result_type = &types_.elementary(type.elementary == E::Ltime || type.elementary == E::Ldt ? E::Ltime : E::Time);
+        } else if (!((oper == Op::Add || oper == Op::Subtract) &&
+                     (durations || point_plus_duration) && type.elementary != E::TimeOfDay &&
+                     type.elementary != E::Ltod && type.elementary != E::Date)) {
+            error(range, fmt::format("this operation is not defined on {} and {} (use the "
+                                     "functions of IEC 61131-3 table 30)",
+                                     type.name, right.type->name));
+            return std::nullopt;
+        }
+    } else if (!sema::is_numeric(type)) {
+        error(range, fmt::format("arithmetic needs numbers, not {}", type.name));
+        return std::nullopt;
+    }
+    if (oper == Op::Modulo && !sema::is_integer(type)) {
+        error(range, fmt::format("MOD needs integers, not {}", type.name));
+        return std::nullopt;
+    }
+    const Operand result = result_operand(*result_type, dest);
+    switch (oper) {
+    case Op::Add: builder_.emit(op_width("Add", type), result, left.operand, right.operand); break;
+    case Op::Subtract:
+        builder_.emit(op_width("Sub", type), result, left.operand, right.operand);
+        break;
+    case Op::Multiply:
+        builder_.emit(op_width("Mul", type), result, left.operand, right.operand);
+        break;
+    case Op::Divide: builder_.emit(op("Div", type), result, left.operand, right.operand); break;
+    default: builder_.emit(op("Mod", type), result, left.operand, right.operand); break;
+    }
+    return Value{result, result_type};
+}
+
+} // namespace eposp::compiler::codegen

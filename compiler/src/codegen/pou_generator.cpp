@@ -1,0 +1,304 @@
+#include "pou_generator.hpp"
+
+#include "eposp/compiler/sema/symbol.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::codegen {
+
+using vm::Opcode;
+using vm::Operand;
+
+PouGenerator::PouGenerator(ProgramGenerator& program, const sema::SemanticModel& model,
+                           const ast::Pou& pou, std::uint32_t index)
+    : program_(program), model_(model), pou_(pou), index_(index), builder_(program.builder()),
+      types_(program.types()) {}
+
+std::uint32_t PouGenerator::generate() {
+    builder_.begin_body(index_);
+    builder_.line(pou_.range.begin.line);
+    declare_locals();
+    end_ = builder_.label();
+    initialise_frame();
+    statements(pou_.body);
+    report_unused();
+    builder_.bind(end_);
+    builder_.emit(Opcode::Ret);
+    const std::uint32_t frame = sema::align_up(frame_max_, 8);
+    const std::uint32_t out = sema::align_up(out_max_, 8);
+    builder_.end_body(frame, out);
+    return frame + out;
+}
+
+void PouGenerator::report_unused() {
+    if (pou_.kind == ast::PouKind::Function && pou_.return_type && !result_assigned_) {
+        warning(pou_.name.range,
+                fmt::format("function '{}' never assigns its result", pou_.name.name));
+    }
+    for (const ast::DeclarationSection& section : pou_.sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables == nullptr || (variables->kind != ast::VarSectionKind::Var &&
+                                     variables->kind != ast::VarSectionKind::Temp &&
+                                     variables->kind != ast::VarSectionKind::External)) {
+            continue;
+        }
+        // A PROGRAM's variables are visible from outside (watch, configuration access).
+        if (pou_.kind == ast::PouKind::Program && variables->kind == ast::VarSectionKind::Var) {
+            continue;
+        }
+        for (const ast::VariableDeclaration& declaration : variables->variables) {
+            for (const ast::Identifier& name : declaration.names) {
+                if (!used_.contains(sema::fold_case(name.name))) {
+                    warning(name.range, fmt::format("variable '{}' is never used", name.name));
+                }
+            }
+        }
+    }
+}
+
+void PouGenerator::error(const SourceRange& range, std::string message) {
+    program_.diagnostics().error(range, std::move(message));
+}
+
+void PouGenerator::warning(const SourceRange& range, std::string message) {
+    program_.diagnostics().warning(range, std::move(message));
+}
+
+namespace {
+
+/// Whether `declaration` is in a VAR CONSTANT section of `pou`.
+bool is_constant(const ast::Pou& pou, const ast::VariableDeclaration* declaration) {
+    for (const ast::DeclarationSection& section : pou.sections) {
+        if (const auto* variables = std::get_if<ast::VarSection>(&section)) {
+            for (const ast::VariableDeclaration& candidate : variables->variables) {
+                if (&candidate == declaration) {
+                    return variables->constant;
+                }
+            }
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+void PouGenerator::declare_locals() {
+    const bool function = pou_.kind == ast::PouKind::Function;
+    auto declare = [&](const sema::Field& field, Operand operand) {
+        // Inputs are read-only inside the POU (6.5.2.2), as are constants.
+        const bool writable = field.section != ast::VarSectionKind::Input &&
+                              !is_constant(pou_, field.declaration);
+        Place place = Place::direct(*field.type, operand, writable);
+        if (field.section == ast::VarSectionKind::InOut) {
+            place = {.kind = Place::Kind::Indirect,
+                     .type = field.type->element,
+                     .operand = operand,
+                     .writable = true};
+        }
+        locals_[sema::fold_case(field.name)] = {place, field.section};
+    };
+    const sema::Type* frame = types_.frame(pou_);
+    if (!function) {
+        for (const sema::Type* part = types_.instance(pou_); part != nullptr; part = part->base) {
+            for (const sema::Field& field : part->fields) {
+                if (!locals_.contains(sema::fold_case(field.name))) {
+                    declare(field, Operand::self(field.offset));
+                }
+            }
+        }
+    }
+    for (const sema::Field& field : frame->fields) {
+        declare(field, Operand::local(field.offset));
+    }
+    locals_end_ = frame_top_ = frame_max_ = frame->size;
+}
+
+void PouGenerator::initialise_frame() {
+    // 6.5.1.3: a function's variables and every VAR_TEMP start from their initial values at
+    // each call. Runs of consecutive non-parameter fields are copied from one template each.
+    const sema::Type& frame = *types_.frame(pou_);
+    std::vector<std::uint8_t> bytes(frame.size);
+    program_.initial_value(frame, nullptr, model_, bytes);
+    std::uint32_t begin = 0;
+    std::uint32_t end = 0;
+    auto flush = [&] {
+        if (end > begin) {
+            const std::vector<std::uint8_t> part(bytes.begin() + begin, bytes.begin() + end);
+            builder_.emit(Opcode::MovN, Operand::local(begin), program_.constant(part, 8),
+                          Operand::imm(end - begin));
+        }
+    };
+    for (const sema::Field& field : frame.fields) {
+        const bool parameter = field.section == ast::VarSectionKind::Input ||
+                               field.section == ast::VarSectionKind::InOut;
+        if (parameter) {
+            flush();
+            begin = end = field.offset + field.type->size;
+        } else {
+            if (end == begin) {
+                begin = field.offset;
+            }
+            end = field.offset + field.type->size;
+        }
+    }
+    flush();
+}
+
+Operand PouGenerator::temp(const sema::Type& type) {
+    frame_top_ = sema::align_up(frame_top_, std::max<std::uint32_t>(type.align, 1));
+    const Operand operand = Operand::local(frame_top_);
+    frame_top_ += type.size;
+    frame_max_ = std::max(frame_max_, frame_top_);
+    if (type.kind == sema::TypeKind::String) {
+        // The header: capacity, length 0.
+        builder_.emit(Opcode::Ldi32, operand, Operand::imm(type.capacity));
+    }
+    return operand;
+}
+
+bool PouGenerator::is_temporary(Operand operand) const {
+    return operand.base() == vm::Base::Frame && operand.offset() >= locals_end_;
+}
+
+std::uint32_t PouGenerator::out_slot(std::uint32_t end) {
+    out_max_ = std::max(out_max_, end);
+    return end;
+}
+
+std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const SourceRange& range) {
+    used_.insert(sema::fold_case(symbol.name));
+    if (symbol.kind == sema::SymbolKind::Variable &&
+        (symbol.section == ast::VarSectionKind::External ||
+         symbol.section == ast::VarSectionKind::Global)) {
+        auto global = program_.global(symbol.name);
+        if (!global) {
+            error(range, fmt::format("no global variable '{}' in the configuration", symbol.name));
+            return std::nullopt;
+        }
+        if (symbol.section == ast::VarSectionKind::External && symbol.variable != nullptr &&
+            is_constant(pou_, symbol.variable)) {
+            global->writable = false;
+        }
+        return global;
+    }
+    if (symbol.kind == sema::SymbolKind::Variable ||
+        (symbol.kind == sema::SymbolKind::Pou && symbol.pou == &pou_)) {
+        if (const auto it = locals_.find(sema::fold_case(symbol.name)); it != locals_.end()) {
+            return it->second.place;
+        }
+    }
+    error(range, fmt::format("'{}' is not a variable", symbol.name));
+    return std::nullopt;
+}
+
+Opcode PouGenerator::op(std::string_view family, const sema::Type& type) const {
+    return program_.opcodes().get(family, type_suffix(sema::scalar_of(type)));
+}
+
+Opcode PouGenerator::op_width(std::string_view family, const sema::Type& type) const {
+    const vm::Scalar scalar = sema::scalar_of(type);
+    const bool real = scalar == vm::Scalar::F32 || scalar == vm::Scalar::F64;
+    return program_.opcodes().get(family, real ? type_suffix(scalar) : width_suffix(scalar));
+}
+
+void PouGenerator::load_immediate(Operand dst, const sema::Type& type, std::int64_t value) {
+    const auto raw = static_cast<std::uint64_t>(value);
+    builder_.emit(program_.opcodes().get("Ldi", width_suffix(sema::scalar_of(type))), dst, Operand::imm(static_cast<std::uint32_t>(raw)),
+                  Operand::imm(static_cast<std::uint32_t>(raw >> 32)));
+}
+
+void PouGenerator::move(Operand dst, const sema::Type& dst_type, const Value& src) {
+    if (dst.raw == src.operand.raw) {
+        return;
+    }
+    if (sema::is_scalar(dst_type)) {
+        builder_.emit(program_.opcodes().get("Mov", width_suffix(sema::scalar_of(dst_type))), dst,
+                      src.operand);
+        return;
+    }
+    if (dst_type.kind == sema::TypeKind::String && src.type != &dst_type) {
+        call_native(dst_type.wide ? "ASSIGN_WSTRING" : "ASSIGN_STRING",
+                    {false, vm::Scalar::Bool, {vm::Scalar::Ptr, vm::Scalar::Ptr}},
+                    {Value{dst, &dst_type}, src});
+        return;
+    }
+    builder_.emit(Opcode::MovN, dst, src.operand, Operand::imm(dst_type.size));
+}
+
+Value PouGenerator::load(const Place& place, const Destination* dest) {
+    const sema::Type& type = *place.type;
+    if (place.kind == Place::Kind::Direct) {
+        return {place.operand, &type};
+    }
+    const Operand result = result_operand(type, dest);
+    if (place.kind == Place::Kind::Element) {
+        builder_.emit(program_.opcodes().get("Ldx", width_suffix(sema::scalar_of(type))), result,
+                      place.operand, place.index, place.array);
+    } else if (sema::is_scalar(type)) {
+        builder_.emit(program_.opcodes().get("Ldp", width_suffix(sema::scalar_of(type))), result,
+                      place.operand, Operand::imm(place.offset));
+    } else {
+        builder_.emit(Opcode::LdpN, result, address_of(place), Operand::imm(type.size));
+    }
+    return {result, &type};
+}
+
+void PouGenerator::store(const Place& place, const Value& value) {
+    const sema::Type& type = *place.type;
+    if (place.kind == Place::Kind::Direct) {
+        move(place.operand, type, value);
+    } else if (place.kind == Place::Kind::Element) {
+        builder_.emit(program_.opcodes().get("Stx", width_suffix(sema::scalar_of(type))),
+                      place.operand, place.index, value.operand, place.array);
+    } else if (sema::is_scalar(type)) {
+        builder_.emit(program_.opcodes().get("Stp", width_suffix(sema::scalar_of(type))),
+                      place.operand, value.operand, Operand::imm(place.offset));
+    } else if (type.kind == sema::TypeKind::String && value.type != &type) {
+        call_native(type.wide ? "ASSIGN_WSTRING" : "ASSIGN_STRING",
+                    {false, vm::Scalar::Bool, {vm::Scalar::Ptr, vm::Scalar::Ptr}},
+                    {Value{address_of(place), &types_.reference(&type)}, value});
+    } else {
+        builder_.emit(Opcode::StpN, address_of(place), value.operand, Operand::imm(type.size));
+    }
+}
+
+Place PouGenerator::member(const Place& place, std::uint32_t delta, const sema::Type& type) {
+    switch (place.kind) {
+    case Place::Kind::Direct:
+        return Place::direct(type, shifted(place.operand, delta), place.writable);
+    case Place::Kind::Element:
+        return {.kind = Place::Kind::Indirect,
+                .type = &type,
+                .operand = address_of(place),
+                .offset = delta,
+                .writable = place.writable};
+    case Place::Kind::Indirect:
+        break;
+    }
+    Place result = place;
+    result.type = &type;
+    result.offset += delta;
+    return result;
+}
+
+Operand PouGenerator::address_of(const Place& place) {
+    const sema::Type& pointer = types_.reference(place.type);
+    if (place.kind == Place::Kind::Indirect && place.offset == 0) {
+        return place.operand;
+    }
+    const Operand result = temp(pointer);
+    switch (place.kind) {
+    case Place::Kind::Direct:
+        builder_.emit(Opcode::Addr, result, place.operand, Operand::imm(place.type->size));
+        break;
+    case Place::Kind::Element:
+        builder_.emit(Opcode::IdxA, result, place.operand, place.index, place.array);
+        break;
+    case Place::Kind::Indirect:
+        builder_.emit(Opcode::AddI64, result, place.operand, Operand::imm(place.offset));
+        break;
+    }
+    return result;
+}
+
+} // namespace eposp::compiler::codegen

@@ -1,0 +1,184 @@
+#pragma once
+
+#include "program_generator.hpp"
+
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace eposp::compiler::codegen {
+
+/// A value in memory: where it is and its type.
+struct Value {
+    vm::Operand operand{};
+    const sema::Type* type = nullptr;
+    /// Set when a small integer is held wider than its IEC type (computed in DINT).
+    const sema::Type* iec = nullptr;
+};
+
+/// Where a result should preferably go: evaluating straight into a variable saves a move.
+struct Destination {
+    vm::Operand operand{};
+    const sema::Type* type = nullptr;
+};
+
+/// Type-checks and generates the body of one POU (IEC 61131-3 ed. 3, 7.3: ST expressions and
+/// statements). Expressions are evaluated memory to memory: a variable is its own operand,
+/// intermediate results go to temporaries on the frame, released after each statement.
+class PouGenerator {
+public:
+    PouGenerator(ProgramGenerator& program, const sema::SemanticModel& model, const ast::Pou& pou,
+                 std::uint32_t index);
+    /// Emits the body; returns the bytes it needs on the task stack (frame and out area).
+    std::uint32_t generate();
+
+private:
+    struct Loop {
+        vm::Label exit;
+        vm::Label next;
+    };
+    struct Local {
+        Place place;
+        ast::VarSectionKind section;
+    };
+
+    // --- pou_generator.cpp: variables, temporaries, moves ----------------------------------
+    void declare_locals();
+    void initialise_frame();
+    /// Warnings: variables never used, a function result never assigned.
+    void report_unused();
+    vm::Operand temp(const sema::Type& type);
+    std::uint32_t out_slot(std::uint32_t end);
+    /// Whether `operand` is a temporary of the current statement (not a variable).
+    bool is_temporary(vm::Operand operand) const;
+    std::optional<Place> variable(const sema::Symbol& symbol, const SourceRange& range);
+    void error(const SourceRange& range, std::string message);
+    void warning(const SourceRange& range, std::string message);
+    vm::Opcode op(std::string_view family, const sema::Type& type) const;
+    vm::Opcode op_width(std::string_view family, const sema::Type& type) const;
+    /// `dst := src` of the same type (strings of other capacities are truncated).
+    void move(vm::Operand dst, const sema::Type& dst_type, const Value& src);
+    void load_immediate(vm::Operand dst, const sema::Type& type, std::int64_t value);
+    Value load(const Place& place, const Destination* dest = nullptr);
+    void store(const Place& place, const Value& value);
+    /// The place `delta` bytes into `place`, of type `type`.
+    Place member(const Place& place, std::uint32_t delta, const sema::Type& type);
+    /// The address `place` lives at, as a pointer operand (a temporary when computed).
+    vm::Operand address_of(const Place& place);
+
+    // --- pou_expressions.cpp -----------------------------------------------------------------
+    std::optional<Place> place(const ast::Expression& expression);
+    std::optional<Place> index(const ast::IndexExpression& node, const SourceRange& range);
+    /// The value of `expression` of its own type; an untyped literal takes `hint`.
+    std::optional<Value> eval(const ast::Expression& expression, const sema::Type* hint,
+                              const Destination* dest = nullptr);
+    /// The value of `expression` as `want` (implicitly widened, else an error).
+    std::optional<Value> value_as(const ast::Expression& expression, const sema::Type& want,
+                                  const Destination* dest = nullptr);
+    std::optional<Value> convert(const Value& value, const sema::Type& want,
+                                 const Destination* dest);
+    std::optional<Value> literal(const ast::Expression& expression,
+                                 const ast::LiteralExpression& node, const sema::Type* hint);
+    std::optional<Value> unary(const ast::UnaryExpression& node, const sema::Type* hint,
+                               const Destination* dest, const SourceRange& range);
+    /// `top` is false for an operand of another operator, whose small-integer result stays
+    /// in DINT (Value::iec).
+    std::optional<Value> binary(const ast::BinaryExpression& node, const sema::Type* hint,
+                                const Destination* dest, const SourceRange& range, bool top);
+    /// An operand of an operator: like eval, but a nested operation may stay wide.
+    std::optional<Value> operand_value(const ast::Expression& expression, const sema::Type* hint);
+    /// A small integer value as DINT.
+    Value widened(const Value& value);
+    std::optional<std::pair<Value, Value>> unify(const Value& left, const Value& right,
+                                                 const SourceRange& range);
+    static bool is_small_integer(const sema::Type& type);
+    /// Both operands of a binary operator, widened to their common type. An untyped literal
+    /// is evaluated after the other side and takes its type (literals have no side effects).
+    std::optional<std::pair<Value, Value>> operands(const ast::Expression& left,
+                                                    const ast::Expression& right,
+                                                    const sema::Type* hint,
+                                                    const SourceRange& range);
+    /// The immediate of an untyped integer literal that fits 32 bits signed.
+    std::optional<std::int32_t> small_literal(const ast::Expression& expression);
+    /// A binary operator on operands already of their common type.
+    std::optional<Value> apply(ast::BinaryOperator op, const Value& left, const Value& right,
+                               const Destination* dest, const SourceRange& range);
+    std::optional<Value> compare(ast::BinaryOperator op, const Value& left, const Value& right,
+                                 const Destination* dest);
+    vm::Operand result_operand(const sema::Type& type, const Destination* dest);
+    static bool is_untyped_literal(const ast::Expression& expression);
+    static bool contains_call(const ast::Expression& expression);
+
+    // --- pou_conditions.cpp ------------------------------------------------------------------
+    /// Jumps to `target` when `condition` has the value `when`, with compare-and-branch
+    /// instructions where the condition is a comparison.
+    void branch(const ast::Expression& condition, bool when, vm::Label target);
+
+    // --- pou_statements.cpp ------------------------------------------------------------------
+    void statements(const ast::StatementList& list);
+    void statement(const ast::Statement& statement);
+    void assignment(const ast::AssignmentStatement& node, const SourceRange& range);
+    void if_statement(const ast::IfStatement& node);
+    void case_statement(const ast::CaseStatement& node);
+    void for_statement(const ast::ForStatement& node, const SourceRange& range);
+    void while_statement(const ast::WhileStatement& node);
+    void repeat_statement(const ast::RepeatStatement& node);
+
+    // --- pou_calls.cpp -----------------------------------------------------------------------
+    std::optional<Value> call(const ast::CallExpression& node, const sema::Type* hint,
+                              const Destination* dest, const SourceRange& range);
+    std::optional<Value> call_function(const ast::Pou& function, const ast::CallExpression& node,
+                                       const Destination* dest, const SourceRange& range);
+    std::optional<Value> call_host(const ast::Pou& function, const sema::Type& frame,
+                                   const ast::CallExpression& node, const Destination* dest,
+                                   const SourceRange& range);
+    void call_instance(const Place& instance, const ast::CallExpression& node,
+                       const SourceRange& range);
+    /// Calls native `name`; `arguments` already evaluated, strings passed by address.
+    void call_native(const std::string& name, const vm::NativeSignature& signature,
+                     const std::vector<Value>& arguments);
+    std::optional<Value> native_result(const vm::NativeSignature& signature,
+                                       const sema::Type& type, const Destination* dest);
+
+    // --- standard_functions.cpp --------------------------------------------------------------
+    std::optional<Value> standard_function(const std::string& name,
+                                           const ast::CallExpression& node,
+                                           const sema::Type* hint, const Destination* dest,
+                                           const SourceRange& range);
+    std::optional<Value> conversion(const std::string& name, const ast::CallExpression& node,
+                                    const Destination* dest, const SourceRange& range);
+    std::optional<Value> string_function(const std::string& name, const ast::CallExpression& node,
+                                         const Destination* dest, const SourceRange& range);
+    std::optional<Value> selection(const std::string& name, const ast::CallExpression& node,
+                                   const sema::Type* hint, const Destination* dest,
+                                   const SourceRange& range);
+    /// The value of an integer expression as DINT (positions and lengths of the natives).
+    std::optional<Value> as_dint(const ast::Expression& expression);
+    /// A conversion `X_TO_Y` between any two elementary types.
+    std::optional<Value> explicit_convert(const Value& value, const sema::Type& want,
+                                          const Destination* dest, const SourceRange& range);
+    std::optional<Value> numeric_function(const std::string& name,
+                                          const ast::CallExpression& node, const sema::Type* hint,
+                                          const Destination* dest, const SourceRange& range);
+
+    ProgramGenerator& program_;
+    const sema::SemanticModel& model_;
+    const ast::Pou& pou_;
+    std::uint32_t index_;
+    vm::Builder& builder_;
+    sema::TypeTable& types_;
+    std::unordered_map<std::string, Local> locals_; // by folded name
+    std::uint32_t locals_end_ = 0; // the frame's variables end here, temporaries follow
+    std::uint32_t frame_top_ = 0;
+    std::uint32_t frame_max_ = 0;
+    std::uint32_t out_max_ = 0;
+    std::vector<Loop> loops_;
+    std::vector<std::uint32_t> for_variables_; // operands of the enclosing FOR loops
+    bool result_assigned_ = false;
+    std::unordered_set<std::string> used_; // folded names of the variables referred to
+    vm::Label end_;
+};
+
+} // namespace eposp::compiler::codegen

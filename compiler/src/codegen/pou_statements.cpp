@@ -1,0 +1,288 @@
+// Statements of IEC 61131-3 ed. 3, 7.3.3 (table 72).
+
+#include "eposp/compiler/sema/symbol.hpp"
+#include "pou_generator.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace eposp::compiler::codegen {
+
+using vm::Opcode;
+using vm::Operand;
+
+void PouGenerator::statements(const ast::StatementList& list) {
+    bool reported = false;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        statement(list[i]);
+        const auto& node = list[i].node;
+        const bool leaves = std::holds_alternative<ast::ReturnStatement>(node) ||
+                            std::holds_alternative<ast::ExitStatement>(node) ||
+                            std::holds_alternative<ast::ContinueStatement>(node);
+        if (leaves && i + 1 < list.size() && !reported &&
+            !std::holds_alternative<ast::EmptyStatement>(list[i + 1].node)) {
+            warning(list[i + 1].range, "this statement is never executed");
+            reported = true;
+        }
+    }
+}
+
+void PouGenerator::statement(const ast::Statement& statement) {
+    builder_.line(statement.range.begin.line);
+    const std::uint32_t mark = frame_top_; // temporaries live for one statement
+    std::visit(
+        [&](const auto& node) {
+            using T = std::decay_t<decltype(node)>;
+            if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
+                assignment(node, statement.range);
+            } else if constexpr (std::is_same_v<T, ast::CallStatement>) {
+                const auto& call_node = std::get<ast::CallExpression>(node.call->node);
+                call(call_node, nullptr, nullptr, node.call->range);
+            } else if constexpr (std::is_same_v<T, ast::IfStatement>) {
+                if_statement(node);
+            } else if constexpr (std::is_same_v<T, ast::CaseStatement>) {
+                case_statement(node);
+            } else if constexpr (std::is_same_v<T, ast::ForStatement>) {
+                for_statement(node, statement.range);
+            } else if constexpr (std::is_same_v<T, ast::WhileStatement>) {
+                while_statement(node);
+            } else if constexpr (std::is_same_v<T, ast::RepeatStatement>) {
+                repeat_statement(node);
+            } else if constexpr (std::is_same_v<T, ast::ExitStatement> ||
+                                 std::is_same_v<T, ast::ContinueStatement>) {
+                if (loops_.empty()) {
+                    error(statement.range, std::is_same_v<T, ast::ExitStatement>
+                                               ? "EXIT outside a loop"
+                                               : "CONTINUE outside a loop");
+                } else {
+                    builder_.jump(Opcode::Jmp, std::is_same_v<T, ast::ExitStatement>
+                                                   ? loops_.back().exit
+                                                   : loops_.back().next);
+                }
+            } else if constexpr (std::is_same_v<T, ast::ReturnStatement>) {
+                builder_.jump(Opcode::Jmp, end_);
+            }
+        },
+        statement.node);
+    frame_top_ = mark;
+}
+
+void PouGenerator::assignment(const ast::AssignmentStatement& node, const SourceRange& range) {
+    const auto target = place(*node.target);
+    if (!target) {
+        eval(*node.value, nullptr); // still check the right-hand side
+        return;
+    }
+    if (!target->writable) {
+        error(node.target->range, "this variable cannot be assigned here (a constant, an input "
+                                  "or an output of another instance)");
+        return;
+    }
+    if (target->kind == Place::Kind::Direct &&
+        std::find(for_variables_.begin(), for_variables_.end(), target->operand.raw) !=
+            for_variables_.end()) {
+        error(node.target->range, "the control variable of a FOR loop cannot be assigned in "
+                                  "its body (IEC 61131-3 7.3.3.4.2)");
+        return;
+    }
+    if (const auto* name = std::get_if<ast::NameExpression>(&node.target->node)) {
+        const sema::Symbol* symbol = model_.resolved(name->name);
+        result_assigned_ = result_assigned_ || (symbol != nullptr && symbol->pou == &pou_);
+    }
+    if (target->type->kind == sema::TypeKind::Instance) {
+        error(range, "a function block instance cannot be assigned");
+        return;
+    }
+    if (target->kind == Place::Kind::Direct) {
+        const Destination dest{target->operand, target->type};
+        const auto value = value_as(*node.value, *target->type, &dest);
+        if (value) {
+            move(target->operand, *target->type, *value);
+        }
+        return;
+    }
+    if (const auto value = value_as(*node.value, *target->type)) {
+        store(*target, *value);
+    }
+}
+
+void PouGenerator::if_statement(const ast::IfStatement& node) {
+    const vm::Label end = builder_.label();
+    for (std::size_t i = 0; i < node.branches.size(); ++i) {
+        const ast::ConditionalBlock& block = node.branches[i];
+        const vm::Label next = builder_.label();
+        const std::uint32_t mark = frame_top_;
+        branch(*block.condition, false, next);
+        frame_top_ = mark;
+        statements(block.body);
+        if (i + 1 < node.branches.size() || !node.else_body.empty()) {
+            builder_.jump(Opcode::Jmp, end);
+        }
+        builder_.bind(next);
+    }
+    statements(node.else_body);
+    builder_.bind(end);
+}
+
+void PouGenerator::case_statement(const ast::CaseStatement& node) {
+    // 7.3.3.3.3: the selector is evaluated once, then compared with the labels in order.
+    auto selector = eval(*node.selector, nullptr);
+    if (!selector) {
+        return;
+    }
+    const sema::Type& type = *selector->type;
+    if (!sema::is_integer(type) && !sema::is_bit_string(type) &&
+        type.kind != sema::TypeKind::Enum) {
+        error(node.selector->range,
+              fmt::format("a CASE selector must be an integer or enumeration, not {}", type.name));
+        return;
+    }
+    const vm::Label end = builder_.label();
+    std::vector<vm::Label> bodies;
+    std::vector<std::pair<std::int64_t, std::int64_t>> seen;
+    for (const ast::CaseBranch& branch_node : node.branches) {
+        const vm::Label body = builder_.label();
+        bodies.push_back(body);
+        for (const ast::CaseLabel& label : branch_node.labels) {
+            const auto low_value = types_.fold_integer(*label.low);
+            const auto high_value = label.high ? types_.fold_integer(*label.high) : low_value;
+            if (!low_value || !high_value) {
+                error(label.range, "a CASE label must be a constant");
+                continue;
+            }
+            for (const auto& [a, b] : seen) {
+                if (*low_value <= b && a <= *high_value) {
+                    error(label.range, "this CASE label overlaps an earlier one");
+                }
+            }
+            seen.emplace_back(*low_value, *high_value);
+            const auto low = value_as(*label.low, type);
+            if (!low) {
+                continue;
+            }
+            if (!label.high) {
+                builder_.jump(op_width("JEq", type), body, selector->operand, low->operand);
+                continue;
+            }
+            const auto high = value_as(*label.high, type);
+            if (!high) {
+                continue;
+            }
+            const std::string_view suffix = type_suffix(sema::scalar_of(type));
+            const vm::Label skip = builder_.label();
+            builder_.jump(program_.opcodes().get("JLt", suffix), skip, selector->operand,
+                          low->operand);
+            builder_.jump(program_.opcodes().get("JLe", suffix), body, selector->operand,
+                          high->operand);
+            builder_.bind(skip);
+        }
+    }
+    statements(node.else_body);
+    builder_.jump(Opcode::Jmp, end);
+    for (std::size_t i = 0; i < node.branches.size(); ++i) {
+        builder_.bind(bodies[i]);
+        statements(node.branches[i].body);
+        if (i + 1 < node.branches.size()) {
+            builder_.jump(Opcode::Jmp, end);
+        }
+    }
+    builder_.bind(end);
+}
+
+void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRange& range) {
+    const sema::Symbol* symbol = model_.resolved(node.control_variable);
+    const auto control = symbol != nullptr ? variable(*symbol, node.control_variable.range)
+                                           : std::nullopt;
+    if (!control) {
+        return;
+    }
+    const sema::Type& type = *control->type;
+    if (!sema::is_integer(type) || control->kind != Place::Kind::Direct || !control->writable) {
+        error(node.control_variable.range,
+              "the control variable of a FOR loop must be a local integer variable (7.3.3.4.2)");
+        return;
+    }
+    std::int64_t step = 1;
+    if (node.by) {
+        const auto folded = types_.fold_integer(*node.by);
+        if (!folded || *folded == 0 || *folded < INT16_MIN || *folded > INT16_MAX) {
+            error(node.by->range, "BY must be a non-zero constant from -32768 to 32767");
+            return;
+        }
+        step = *folded;
+    }
+    if (!sema::is_signed(type) && step < 0) {
+        error(node.by->range, "a negative step needs a signed control variable");
+        return;
+    }
+    const Destination dest{control->operand, &type};
+    const auto from = value_as(*node.from, type, &dest);
+    if (!from) {
+        return;
+    }
+    move(control->operand, type, *from);
+    auto limit = value_as(*node.to, type);
+    if (!limit) {
+        return;
+    }
+    // The limit is evaluated once (as the loop's own copy), unless it is a constant.
+    const bool constant = limit->operand.base() == vm::Base::Static &&
+                          std::holds_alternative<ast::LiteralExpression>(node.to->node);
+    if (!constant && !is_temporary(limit->operand)) {
+        const Operand copy = temp(type);
+        move(copy, type, *limit);
+        limit = Value{copy, &type};
+    }
+    const std::string_view suffix = type_suffix(sema::scalar_of(type));
+    const Loop loop{builder_.label(), builder_.label()};
+    const vm::Label body = builder_.label();
+    if (step > 0) {
+        builder_.jump(program_.opcodes().get("JLt", suffix), loop.exit, limit->operand,
+                      control->operand);
+    } else {
+        builder_.jump(program_.opcodes().get("JLt", suffix), loop.exit, control->operand,
+                      limit->operand);
+    }
+    builder_.bind(body);
+    loops_.push_back(loop);
+    for_variables_.push_back(control->operand.raw);
+    statements(node.body);
+    for_variables_.pop_back();
+    loops_.pop_back();
+    builder_.bind(loop.next);
+    builder_.line(range.begin.line);
+    builder_.for_loop(program_.opcodes().get("For", suffix), body, control->operand,
+                      limit->operand, static_cast<std::int16_t>(step));
+    builder_.bind(loop.exit);
+}
+
+void PouGenerator::while_statement(const ast::WhileStatement& node) {
+    const Loop loop{builder_.label(), builder_.label()};
+    const vm::Label body = builder_.label();
+    builder_.jump(Opcode::Jmp, loop.next);
+    builder_.bind(body);
+    loops_.push_back(loop);
+    statements(node.body);
+    loops_.pop_back();
+    builder_.bind(loop.next);
+    const std::uint32_t mark = frame_top_;
+    branch(*node.condition, true, body);
+    frame_top_ = mark;
+    builder_.bind(loop.exit);
+}
+
+void PouGenerator::repeat_statement(const ast::RepeatStatement& node) {
+    const Loop loop{builder_.label(), builder_.label()};
+    const vm::Label body = builder_.label();
+    builder_.bind(body);
+    loops_.push_back(loop);
+    statements(node.body);
+    loops_.pop_back();
+    builder_.bind(loop.next);
+    const std::uint32_t mark = frame_top_;
+    branch(*node.until, false, body);
+    frame_top_ = mark;
+    builder_.bind(loop.exit);
+}
+
+} // namespace eposp::compiler::codegen

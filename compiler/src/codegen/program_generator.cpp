@@ -1,0 +1,420 @@
+#include "program_generator.hpp"
+
+#include "eposp/compiler/sema/symbol.hpp"
+#include "pou_generator.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::codegen {
+
+namespace {
+
+// IEC 61131-3 leaves the task of a program without a configuration to the implementer; this
+// is CODESYS's default cycle.
+constexpr std::uint64_t kDefaultIntervalNs = 10'000'000;
+constexpr std::uint32_t kStackMargin = 256;
+
+vm::PouKind vm_kind(ast::PouKind kind) {
+    switch (kind) {
+    case ast::PouKind::Function: return vm::PouKind::Function;
+    case ast::PouKind::FunctionBlock: return vm::PouKind::FunctionBlock;
+    case ast::PouKind::Program: return vm::PouKind::Program;
+    }
+    return vm::PouKind::Function;
+}
+
+} // namespace
+
+ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnostics& diagnostics)
+    : program_(program), library_(library), diagnostics_(diagnostics),
+      types_(program.model, diagnostics,
+             [this](std::string_view name) { return library_pou(name); }) {
+    for (const ast::CompilationUnit& unit : library_.units) {
+        for (const ast::Pou& pou : unit.pous) {
+            pou_models_[&pou] = &library_.model;
+        }
+    }
+    for (const ast::CompilationUnit& unit : program_.units) {
+        for (const ast::Pou& pou : unit.pous) {
+            pou_models_[&pou] = &program_.model;
+        }
+    }
+}
+
+const ast::Pou* ProgramGenerator::library_pou(std::string_view name) const {
+    const std::string key = sema::fold_case(name);
+    for (const ast::CompilationUnit& unit : library_.units) {
+        for (const ast::Pou& pou : unit.pous) {
+            if (sema::fold_case(pou.name.name) == key) {
+                return &pou;
+            }
+        }
+    }
+    return nullptr;
+}
+
+std::optional<Place> ProgramGenerator::global(std::string_view name) const {
+    const auto it = globals_.find(sema::fold_case(name));
+    return it == globals_.end() ? std::nullopt : std::optional(it->second);
+}
+
+std::uint32_t ProgramGenerator::pou_index(const ast::Pou& pou) {
+    if (const auto it = pou_indices_.find(&pou); it != pou_indices_.end()) {
+        return it->second;
+    }
+    const sema::Type* instance =
+        pou.kind == ast::PouKind::Function ? nullptr : types_.instance(pou);
+    const std::uint32_t index = builder_.declare_pou(pou.name.name, vm_kind(pou.kind),
+                                                     instance != nullptr ? instance->size : 0);
+    pou_indices_[&pou] = index;
+    queue_.push_back({&pou, pou_models_.at(&pou), index});
+    return index;
+}
+
+bool ProgramGenerator::is_host_function(const ast::Pou& pou) const {
+    const auto it = pou_models_.find(&pou);
+    return it != pou_models_.end() && it->second == &library_.model &&
+           pou.kind == ast::PouKind::Function && pou.body.empty();
+}
+
+std::uint32_t ProgramGenerator::import(const std::string& name,
+                                       const vm::NativeSignature& signature) {
+    if (const auto it = imports_.find(name); it != imports_.end()) {
+        return it->second;
+    }
+    const std::uint32_t index = builder_.import(name, signature);
+    imports_[name] = index;
+    return index;
+}
+
+vm::Operand ProgramGenerator::constant(const std::vector<std::uint8_t>& bytes,
+                                       std::uint32_t align) {
+    auto [it, inserted] = constants_.emplace(std::pair(bytes, align), 0);
+    if (inserted) {
+        it->second = builder_.constant(bytes, align);
+    }
+    return vm::Operand::global(it->second);
+}
+
+std::optional<vm::Image> ProgramGenerator::generate() {
+    bool has_configuration = false;
+    for (const ast::CompilationUnit& unit : program_.units) {
+        for (const ast::Configuration& configuration : unit.configurations) {
+            has_configuration = true;
+            lay_out_globals(configuration);
+        }
+    }
+    // Every user POU is generated, called or not, so that all its errors are reported.
+    for (const ast::CompilationUnit& unit : program_.units) {
+        for (const ast::Pou& pou : unit.pous) {
+            pou_index(pou);
+        }
+    }
+    if (has_configuration) {
+        for (const ast::CompilationUnit& unit : program_.units) {
+            for (const ast::Configuration& configuration : unit.configurations) {
+                lay_out_programs(configuration);
+            }
+        }
+    } else {
+        default_program_instances();
+    }
+    generate_bodies();
+    if (diagnostics_.has_errors()) {
+        return std::nullopt;
+    }
+    for (vm::Task& task : tasks_) {
+        task.stack_size = stack_size();
+        builder_.task(std::move(task));
+    }
+    auto image = builder_.finish();
+    if (!image) {
+        diagnostics_.error({}, "internal error: " + image.error());
+        return std::nullopt;
+    }
+    return std::move(*image);
+}
+
+void ProgramGenerator::generate_bodies() {
+    while (!queue_.empty()) {
+        const QueuedPou next = queue_.front();
+        queue_.pop_front();
+        PouGenerator generator(*this, *next.model, *next.pou, next.index);
+        pou_frames_total_ += generator.generate();
+    }
+}
+
+std::uint32_t ProgramGenerator::stack_size() const {
+    // Without recursion (6.6.1.1) a chain of calls holds each POU's frame at most once, so the
+    // sum of all frames bounds the stack any task needs.
+    return pou_frames_total_ + kStackMargin;
+}
+
+void ProgramGenerator::lay_out_globals(const ast::Configuration& configuration) {
+    lay_out_global_section(configuration, configuration.sections);
+    for (const ast::Resource& resource : configuration.resources) {
+        lay_out_global_section(configuration, resource.sections);
+    }
+}
+
+void ProgramGenerator::lay_out_global_section(
+    const ast::Configuration& configuration, const std::vector<ast::DeclarationSection>& sections) {
+    for (const ast::DeclarationSection& section : sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables == nullptr) {
+            continue;
+        }
+        for (const ast::VariableDeclaration& declaration : variables->variables) {
+            const sema::Type* type = types_.resolve(declaration.type);
+            if (type == nullptr) {
+                continue;
+            }
+            for (const ast::Identifier& name : declaration.names) {
+                const std::uint32_t offset = builder_.allocate(type->size, type->align);
+                std::vector<std::uint8_t> bytes(type->size);
+                initial_value(*type, declaration.initial_value.get(), program_.model, bytes);
+                builder_.initialise(offset, bytes);
+                globals_[sema::fold_case(name.name)] =
+                    Place::direct(*type, vm::Operand::global(offset), !variables->constant);
+                add_symbols(configuration.name.name + "." + name.name, *type, offset);
+                if (variables->retention == ast::Retention::Retain) {
+                    builder_.retain(offset, type->size);
+                }
+                if (declaration.address) {
+                    add_io_binding(*declaration.address, *type, offset);
+                }
+            }
+        }
+    }
+}
+
+std::uint32_t ProgramGenerator::program_instance(const ast::Pou& program, const std::string& path,
+                                                 bool retain) {
+    const sema::Type* type = types_.instance(program);
+    const std::uint32_t offset = builder_.allocate(type->size, type->align);
+    std::vector<std::uint8_t> bytes(type->size);
+    initial_value(*type, nullptr, program_.model, bytes);
+    builder_.initialise(offset, bytes);
+    add_symbols(path, *type, offset);
+    // RETAIN variables of the program (6.5.6), or all of it for a RETAIN instance.
+    if (retain) {
+        builder_.retain(offset, type->size);
+    }
+    for (const ast::DeclarationSection& section : program.sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables == nullptr) {
+            continue;
+        }
+        for (const ast::VariableDeclaration& declaration : variables->variables) {
+            for (const ast::Identifier& name : declaration.names) {
+                const sema::Field* field = type->field(name.name);
+                if (field == nullptr) {
+                    continue;
+                }
+                if (!retain && variables->retention == ast::Retention::Retain) {
+                    builder_.retain(offset + field->offset, field->type->size);
+                }
+                if (declaration.address) {
+                    add_io_binding(*declaration.address, *field->type, offset + field->offset);
+                }
+            }
+        }
+    }
+    return offset;
+}
+
+void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration) {
+    for (const ast::Resource& resource : configuration.resources) {
+        std::vector<std::size_t> task_of; // index into tasks_ per TASK of this resource
+        for (const ast::TaskDeclaration& declaration : resource.tasks) {
+            vm::Task task;
+            task.name = declaration.name.name;
+            if (declaration.priority) {
+                const auto priority = types_.fold_integer(*declaration.priority);
+                if (!priority || *priority < 0 || *priority > UINT32_MAX) {
+                    diagnostics_.error(declaration.priority->range,
+                                       "PRIORITY must be a constant from 0 upwards");
+                } else {
+                    task.priority = static_cast<std::uint32_t>(*priority);
+                }
+            }
+            if (declaration.single) {
+                task.kind = vm::TaskKind::Event;
+                const auto* name = std::get_if<ast::NameExpression>(&declaration.single->node);
+                const auto place = name != nullptr ? global(name->name.name) : std::nullopt;
+                if (!place || !sema::is_bool(*place->type)) {
+                    diagnostics_.error(declaration.single->range,
+                                       "SINGLE must name a global BOOL variable");
+                } else {
+                    task.event_offset = place->operand.offset();
+                }
+            } else {
+                task.interval_ns = task_interval(declaration);
+            }
+            task_of.push_back(tasks_.size());
+            tasks_.push_back(std::move(task));
+        }
+        for (const ast::ProgramInstance& instance : resource.programs) {
+            const sema::Symbol* symbol = program_.model.resolved(instance.type);
+            if (symbol == nullptr || symbol->kind != sema::SymbolKind::Pou) {
+                continue; // reported by the resolver
+            }
+            if (!instance.connections.empty()) {
+                diagnostics_.error(instance.range,
+                                   "connecting program parameters in a configuration is not "
+                                   "supported yet");
+            }
+            const std::uint32_t offset =
+                program_instance(*symbol->pou, instance.name.name,
+                                 instance.retention == ast::Retention::Retain);
+            const vm::TaskEntry entry{pou_index(*symbol->pou), offset};
+            std::size_t task = tasks_.size();
+            if (instance.task) {
+                for (std::size_t i = 0; i < resource.tasks.size(); ++i) {
+                    if (sema::fold_case(resource.tasks[i].name.name) ==
+                        sema::fold_case(instance.task->name)) {
+                        task = task_of[i];
+                    }
+                }
+            }
+            if (task == tasks_.size()) {
+                // 6.8.2: a program without a task runs in the background at the lowest priority.
+                vm::Task background;
+                background.name = instance.name.name + "Task";
+                background.interval_ns = kDefaultIntervalNs;
+                background.priority = UINT32_MAX;
+                tasks_.push_back(std::move(background));
+            }
+            tasks_[task].entries.push_back(entry);
+        }
+    }
+}
+
+std::uint64_t ProgramGenerator::task_interval(const ast::TaskDeclaration& task) {
+    if (!task.interval) {
+        return kDefaultIntervalNs;
+    }
+    const auto* literal = std::get_if<ast::LiteralExpression>(&task.interval->node);
+    const auto* duration =
+        literal != nullptr ? std::get_if<ast::DurationLiteral>(&literal->value) : nullptr;
+    if (duration == nullptr || duration->nanoseconds <= 0) {
+        diagnostics_.error(task.interval->range, "INTERVAL must be a positive TIME literal");
+        return kDefaultIntervalNs;
+    }
+    return static_cast<std::uint64_t>(duration->nanoseconds);
+}
+
+void ProgramGenerator::default_program_instances() {
+    for (const ast::CompilationUnit& unit : program_.units) {
+        for (const ast::Pou& pou : unit.pous) {
+            if (pou.kind != ast::PouKind::Program) {
+                continue;
+            }
+            const std::uint32_t offset = program_instance(pou, pou.name.name, false);
+            vm::Task task;
+            task.name = pou.name.name + "Task";
+            task.interval_ns = kDefaultIntervalNs;
+            task.entries.push_back({pou_index(pou), offset});
+            tasks_.push_back(std::move(task));
+        }
+    }
+}
+
+void ProgramGenerator::add_symbols(const std::string& path, const sema::Type& type,
+                                   std::uint32_t offset) {
+    builder_.symbol(path, type_descriptor(type), offset);
+}
+
+std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {
+    if (const auto it = descriptors_.find(&type); it != descriptors_.end()) {
+        return it->second;
+    }
+    vm::TypeDescriptor descriptor;
+    descriptor.name = type.name;
+    descriptor.size = type.size;
+    switch (type.kind) {
+    case sema::TypeKind::String:
+        descriptor.kind = vm::TypeKind::String;
+        break;
+    case sema::TypeKind::Array: {
+        // A multi-dimensional array is an array of arrays (as symbol_lookup walks it).
+        std::uint32_t element = type_descriptor(*type.element);
+        std::uint32_t size = type.element->size;
+        for (std::size_t d = type.dimensions.size(); d-- > 1;) {
+            size *= type.dimensions[d].count;
+            vm::TypeDescriptor row;
+            row.name = type.name;
+            row.kind = vm::TypeKind::Array;
+            row.size = size;
+            row.element = element;
+            row.lower = static_cast<std::int32_t>(type.dimensions[d].lower);
+            row.count = type.dimensions[d].count;
+            element = builder_.type(std::move(row));
+        }
+        descriptor.kind = vm::TypeKind::Array;
+        descriptor.element = element;
+        descriptor.lower = static_cast<std::int32_t>(type.dimensions.front().lower);
+        descriptor.count = type.dimensions.front().count;
+        break;
+    }
+    case sema::TypeKind::Struct:
+    case sema::TypeKind::Instance:
+        descriptor.kind = vm::TypeKind::Struct;
+        for (const sema::Type* part = &type; part != nullptr; part = part->base) {
+            for (const sema::Field& field : part->fields) {
+                descriptor.fields.push_back({field.name, type_descriptor(*field.type), field.offset});
+            }
+        }
+        break;
+    default:
+        descriptor.kind = vm::TypeKind::Elementary;
+        descriptor.scalar = sema::scalar_of(type);
+        descriptor.size = vm::scalar_size(descriptor.scalar);
+        break;
+    }
+    const std::uint32_t index = builder_.type(std::move(descriptor));
+    descriptors_[&type] = index;
+    return index;
+}
+
+void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const sema::Type& type,
+                                      std::uint32_t offset) {
+    if (address.path.empty()) {
+        return; // `%I*`: bound in the configuration (not supported yet)
+    }
+    if (!sema::is_scalar(type)) {
+        diagnostics_.error(address.range, "only elementary variables can be located");
+        return;
+    }
+    vm::IoBinding binding{.type = sema::scalar_of(type), .offset = offset};
+    switch (address.area) {
+    case ast::DirectAddress::Area::Input: binding.area = vm::IoArea::Input; break;
+    case ast::DirectAddress::Area::Output: binding.area = vm::IoArea::Output; break;
+    case ast::DirectAddress::Area::Memory: binding.area = vm::IoArea::Memory; break;
+    }
+    // Byte addressing as CODESYS: %IW4 is the word at byte 8, %IX1.3 bit 3 of byte 1.
+    std::uint32_t unit = 1;
+    switch (address.size) {
+    case ast::DirectAddress::Size::Word: unit = 2; break;
+    case ast::DirectAddress::Size::DoubleWord: unit = 4; break;
+    case ast::DirectAddress::Size::LongWord: unit = 8; break;
+    default: break;
+    }
+    const bool bit = address.size == ast::DirectAddress::Size::None ||
+                     address.size == ast::DirectAddress::Size::Bit;
+    if (bit) {
+        if (address.path.size() != 2 || address.path[1] > 7 || !sema::is_bool(type)) {
+            diagnostics_.error(address.range, "a bit address is %IX<byte>.<bit> on a BOOL");
+            return;
+        }
+        binding.bit = static_cast<std::uint8_t>(address.path[1]);
+    } else if (vm::scalar_size(binding.type) != unit) {
+        diagnostics_.error(address.range,
+                           fmt::format("a {}-byte address cannot hold a {}", unit, type.name));
+        return;
+    }
+    binding.byte_address = address.path[0] * unit;
+    builder_.binding(binding);
+}
+
+} // namespace eposp::compiler::codegen

@@ -1,0 +1,574 @@
+// The standard functions of IEC 61131-3 ed. 3, 6.6.2.5 (tables 22-36) that are opcodes or
+// natives: type conversions, numeric, bit shift, selection, comparison and string functions.
+
+#include "eposp/compiler/sema/standard_library.hpp"
+#include "eposp/compiler/sema/symbol.hpp"
+#include "pou_generator.hpp"
+
+#include <array>
+#include <fmt/format.h>
+
+namespace eposp::compiler::codegen {
+
+using E = ast::ElementaryType;
+using vm::Opcode;
+using vm::Operand;
+using S = vm::Scalar;
+
+namespace {
+
+bool one_of(const std::string& name, std::initializer_list<std::string_view> names) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+/// The spelling of a type in the names of the VM's natives (`TOD_TO_STRING`).
+std::string native_type_name(E type) {
+    switch (type) {
+    case E::TimeOfDay: return "TOD";
+    case E::DateAndTime: return "DT";
+    default: return std::string(ast::name_of(type));
+    }
+}
+
+/// Nanoseconds per unit when a time converts to or from a number (CODESYS: TIME and TOD in
+/// milliseconds, DATE and DT in seconds, the long forms in nanoseconds).
+std::int64_t time_unit(E type) {
+    switch (type) {
+    case E::Time: case E::TimeOfDay: return 1'000'000;
+    case E::Date: case E::DateAndTime: return 1'000'000'000;
+    default: return 1;
+    }
+}
+
+std::vector<std::uint8_t> int64_bytes(std::int64_t value) {
+    std::vector<std::uint8_t> bytes(8);
+    for (int i = 0; i < 8; ++i) {
+        bytes[static_cast<std::size_t>(i)] =
+            static_cast<std::uint8_t>(static_cast<std::uint64_t>(value) >> (8 * i));
+    }
+    return bytes;
+}
+
+} // namespace
+
+std::optional<Value> PouGenerator::standard_function(const std::string& name,
+                                                     const ast::CallExpression& node,
+                                                     const sema::Type* hint,
+                                                     const Destination* dest,
+                                                     const SourceRange& range) {
+    for (const ast::Argument& argument : node.arguments) {
+        if (argument.kind == ast::Argument::Kind::Output) {
+            error(argument.range, fmt::format("{} has no outputs", name));
+            return std::nullopt;
+        }
+    }
+    if (sema::is_conversion_function(name)) {
+        return conversion(name, node, dest, range);
+    }
+    if (one_of(name, {"LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE",
+                      "FIND"})) {
+        return string_function(name, node, dest, range);
+    }
+    if (one_of(name, {"SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE"})) {
+        return selection(name, node, hint, dest, range);
+    }
+    return numeric_function(name, node, hint, dest, range);
+}
+
+std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
+    const sema::Type& dint = types_.elementary(E::Dint);
+    const auto value = eval(expression, &dint);
+    if (!value) {
+        return std::nullopt;
+    }
+    if (!sema::is_integer(*value->type)) {
+        error(expression.range, fmt::format("an integer is needed here, not {}", value->type->name));
+        return std::nullopt;
+    }
+    return explicit_convert(*value, dint, nullptr, expression.range);
+}
+
+std::optional<Value> PouGenerator::explicit_convert(const Value& value, const sema::Type& want,
+                                                    const Destination* dest,
+                                                    const SourceRange& range) {
+    const sema::Type& from = *value.type;
+    if (&from == &want) {
+        return value;
+    }
+    const bool from_string = from.kind == sema::TypeKind::String;
+    const bool to_string = want.kind == sema::TypeKind::String;
+    if (from_string || to_string) {
+        if (from_string && to_string) {
+            const Operand result = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
+                                           dest->type->wide == want.wide
+                                       ? dest->operand
+                                       : temp(want);
+            const sema::Type& target = dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
+            call_native(from.wide ? "WSTRING_TO_STRING" : "STRING_TO_WSTRING",
+                        {false, S::Bool, {S::Ptr, S::Ptr}}, {Value{result, &target}, value});
+            return Value{result, &target};
+        }
+        if (to_string) {
+            if (!sema::is_scalar(from) || from.kind != sema::TypeKind::Elementary || want.wide) {
+                error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
+                return std::nullopt;
+            }
+            const Operand result = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
+                                           !dest->type->wide
+                                       ? dest->operand
+                                       : temp(want);
+            const sema::Type& target = dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
+            call_native(native_type_name(from.elementary) + "_TO_STRING",
+                        {false, S::Bool, {S::Ptr, sema::scalar_of(from)}},
+                        {Value{result, &target}, value});
+            return Value{result, &target};
+        }
+        if (from.wide || want.kind != sema::TypeKind::Elementary) {
+            error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
+            return std::nullopt;
+        }
+        const vm::NativeSignature signature{true, sema::scalar_of(want), {S::Ptr}};
+        call_native("STRING_TO_" + native_type_name(want.elementary), signature, {value});
+        return native_result(signature, want, dest);
+    }
+    if (!sema::is_scalar(from) || !sema::is_scalar(want) ||
+        from.kind == sema::TypeKind::Reference || want.kind == sema::TypeKind::Reference) {
+        error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
+        return std::nullopt;
+    }
+    const bool from_time = sema::is_time_like(from);
+    const bool to_time = sema::is_time_like(want);
+    if (from_time && to_time) {
+        if (from.elementary == E::DateAndTime && want.elementary != E::DateAndTime &&
+            (want.elementary == E::Date || want.elementary == E::TimeOfDay)) {
+            const vm::NativeSignature signature{true, S::I64, {S::I64}};
+            call_native(want.elementary == E::Date ? "DT_TO_DATE" : "DT_TO_TOD", signature, {value});
+            return native_result(signature, want, dest);
+        }
+        return Value{value.operand, &want}; // the same nanoseconds
+    }
+    Value source = value;
+    if (from_time && time_unit(from.elementary) != 1) {
+        // Durations and times count in nanoseconds; as numbers they count in their unit.
+        const sema::Type& lint = types_.elementary(E::Lint);
+        const Operand scaled = temp(lint);
+        builder_.emit(Opcode::DivI64, scaled, value.operand,
+                      program_.constant(int64_bytes(time_unit(from.elementary)), 8));
+        source = Value{scaled, &lint};
+    }
+    if (to_time) {
+        const sema::Type& lint = types_.elementary(E::Lint);
+        const auto as_lint = explicit_convert(source, lint, nullptr, range);
+        const Operand result = result_operand(want, dest);
+        builder_.emit(Opcode::Mul64, result, as_lint->operand,
+                      program_.constant(int64_bytes(time_unit(want.elementary)), 8));
+        return Value{result, &want};
+    }
+    const S a = sema::scalar_of(*source.type);
+    const S b = sema::scalar_of(want);
+    if (a == b) {
+        return Value{source.operand, &want};
+    }
+    const Operand result = result_operand(want, dest);
+    builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(a)) +
+                                                    std::string(type_suffix(b))),
+                  result, source.operand);
+    return Value{result, &want};
+}
+
+std::optional<Value> PouGenerator::conversion(const std::string& name,
+                                              const ast::CallExpression& node,
+                                              const Destination* dest, const SourceRange& range) {
+    if (node.arguments.size() != 1) {
+        error(range, fmt::format("{} takes one argument", name));
+        return std::nullopt;
+    }
+    const auto separator = name.starts_with("TO_") ? std::string::npos : name.find("_TO_");
+    const std::string target_name =
+        separator == std::string::npos ? name.substr(3) : name.substr(separator + 4);
+    const sema::Type& target = types_.elementary(*ast::elementary_type_from_name(target_name));
+    const ast::Expression& argument = *node.arguments.front().value;
+    std::optional<Value> value;
+    if (separator != std::string::npos) {
+        const sema::Type& source =
+            types_.elementary(*ast::elementary_type_from_name(name.substr(0, separator)));
+        value = eval(argument, &source);
+        if (value && value->type != &source &&
+            !(value->type->kind == sema::TypeKind::String && source.kind == sema::TypeKind::String &&
+              value->type->wide == source.wide)) {
+            if (!sema::converts_implicitly(*value->type, source)) {
+                error(argument.range, fmt::format("{} needs a {} argument, not {}", name,
+                                                  source.name, value->type->name));
+                return std::nullopt;
+            }
+            value = convert(*value, source, nullptr);
+        }
+    } else {
+        value = eval(argument, nullptr);
+    }
+    return value ? explicit_convert(*value, target, dest, range) : std::nullopt;
+}
+
+std::optional<Value> PouGenerator::string_function(const std::string& name,
+                                                   const ast::CallExpression& node,
+                                                   const Destination* dest,
+                                                   const SourceRange& range) {
+    // Text arguments, then positions and lengths, in the order of the native's parameters.
+    struct Shape {
+        std::string_view name;
+        int texts;
+        int integers;
+        bool returns_text;
+    };
+    static constexpr std::array kShapes{
+        Shape{"LEN", 1, 0, false},    Shape{"FIND", 2, 0, false},  Shape{"LEFT", 1, 1, true},
+        Shape{"RIGHT", 1, 1, true},   Shape{"MID", 1, 2, true},    Shape{"INSERT", 2, 1, true},
+        Shape{"DELETE", 1, 2, true},  Shape{"REPLACE", 2, 2, true}, Shape{"CONCAT", -1, 0, true},
+    };
+    const Shape shape = *std::find_if(kShapes.begin(), kShapes.end(),
+                                      [&](const Shape& s) { return s.name == name; });
+    const std::size_t texts = shape.texts < 0 ? node.arguments.size()
+                                              : static_cast<std::size_t>(shape.texts);
+    if ((shape.texts < 0 && node.arguments.size() < 2) ||
+        (shape.texts >= 0 &&
+         node.arguments.size() != texts + static_cast<std::size_t>(shape.integers))) {
+        error(range, fmt::format("{} takes {} arguments", name,
+                                 shape.texts < 0 ? "two or more" : std::to_string(texts + static_cast<std::size_t>(shape.integers))));
+        return std::nullopt;
+    }
+    std::vector<Value> arguments;
+    std::uint32_t capacity = 0;
+    for (std::size_t i = 0; i < node.arguments.size(); ++i) {
+        const ast::Expression& expression = *node.arguments[i].value;
+        auto value = i < texts ? eval(expression, nullptr) : as_dint(expression);
+        if (!value) {
+            return std::nullopt;
+        }
+        if (i < texts) {
+            if (value->type->kind != sema::TypeKind::String || value->type->wide) {
+                error(expression.range,
+                      fmt::format("{} needs a STRING here, not {}", name, value->type->name));
+                return std::nullopt;
+            }
+            capacity = shape.texts < 0 || name == "INSERT" || name == "REPLACE"
+                           ? capacity + value->type->capacity
+                           : std::max(capacity, value->type->capacity);
+        }
+        arguments.push_back(*value);
+    }
+    if (!shape.returns_text) {
+        const vm::NativeSignature signature{true, S::I32, std::vector<S>(texts, S::Ptr)};
+        call_native(std::string(name), signature, arguments);
+        // LEN and FIND are INT, as in CODESYS; the natives count in DINT.
+        return native_result(signature, types_.elementary(E::Int), dest);
+    }
+    const sema::Type& natural = types_.string(std::min<std::uint32_t>(capacity, 0xFFFF), false);
+    const bool into_dest = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
+                           !dest->type->wide;
+    Value result{into_dest ? dest->operand : temp(natural), into_dest ? dest->type : &natural};
+    if (shape.texts < 0) {
+        // CONCAT is binary in the VM: folded left to right into the result (vm/README).
+        for (std::size_t i = 2; into_dest && i < arguments.size(); ++i) {
+            if (arguments[i].operand.raw == result.operand.raw) {
+                result = Value{temp(natural), &natural};
+            }
+        }
+        const vm::NativeSignature signature{false, S::Bool, {S::Ptr, S::Ptr, S::Ptr}};
+        call_native("CONCAT", signature, {result, arguments[0], arguments[1]});
+        for (std::size_t i = 2; i < arguments.size(); ++i) {
+            call_native("CONCAT", signature, {result, result, arguments[i]});
+        }
+        return result;
+    }
+    std::vector<S> parameters{S::Ptr};
+    std::vector<Value> all{result};
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        parameters.push_back(i < texts ? S::Ptr : S::I32);
+        all.push_back(arguments[i]);
+    }
+    call_native(std::string(name), {false, S::Bool, parameters}, all);
+    return result;
+}
+
+std::optional<Value> PouGenerator::selection(const std::string& name,
+                                             const ast::CallExpression& node,
+                                             const sema::Type* hint, const Destination* dest,
+                                             const SourceRange& range) {
+    const auto& arguments = node.arguments;
+    const std::size_t first = name == "SEL" || name == "MUX" ? 1 : 0;
+    const std::size_t minimum = name == "MOVE" ? 1 : name == "LIMIT" ? 3 : 2;
+    if (arguments.size() < minimum + first - (name == "SEL" || name == "MUX" ? 0 : 0) ||
+        (name == "MOVE" && arguments.size() != 1) || (name == "LIMIT" && arguments.size() != 3) ||
+        (name == "SEL" && arguments.size() != 3)) {
+        error(range, fmt::format("wrong number of arguments for {}", name));
+        return std::nullopt;
+    }
+    if (name == "MOVE") {
+        return eval(*arguments[0].value, hint, dest);
+    }
+    std::optional<Value> selector;
+    if (name == "SEL") {
+        selector = value_as(*arguments[0].value, types_.elementary(E::Bool));
+    } else if (name == "MUX") {
+        selector = as_dint(*arguments[0].value);
+    }
+    if (first == 1 && !selector) {
+        return std::nullopt;
+    }
+    // The values, widened to their common type: non-literals first, so literals take it.
+    std::vector<std::optional<Value>> values(arguments.size());
+    const sema::Type* common = nullptr;
+    for (bool literals : {false, true}) {
+        for (std::size_t i = first; i < arguments.size(); ++i) {
+            if (is_untyped_literal(*arguments[i].value) != literals) {
+                continue;
+            }
+            values[i] = eval(*arguments[i].value, common != nullptr ? common : hint);
+            if (!values[i]) {
+                return std::nullopt;
+            }
+            if (common == nullptr || sema::converts_implicitly(*common, *values[i]->type)) {
+                common = values[i]->type;
+            } else if (!sema::converts_implicitly(*values[i]->type, *common)) {
+                error(arguments[i].range, fmt::format("{} mixes {} and {}", name, common->name,
+                                                      values[i]->type->name));
+                return std::nullopt;
+            }
+        }
+    }
+    for (std::size_t i = first; i < arguments.size(); ++i) {
+        values[i] = convert(*values[i], *common, nullptr);
+    }
+    const sema::Type& type = *common;
+    if (name != "SEL" && name != "MUX" && (!sema::is_scalar(type) || type.kind == sema::TypeKind::Reference)) {
+        error(range, fmt::format("{} needs numbers, not {}", name, type.name));
+        return std::nullopt;
+    }
+    // A temporary, so that no argument is overwritten before it is read.
+    const Operand result = temp(type);
+    const vm::Label done = builder_.label();
+    std::string_view suffix = type_suffix(sema::scalar_of(type));
+    if (suffix == "Bool") {
+        suffix = "U8";
+    }
+    if (name == "SEL") {
+        const vm::Label one = builder_.label();
+        builder_.jump(Opcode::Jt, one, selector->operand);
+        move(result, type, *values[1]);
+        builder_.jump(Opcode::Jmp, done);
+        builder_.bind(one);
+        move(result, type, *values[2]);
+    } else if (name == "MUX") {
+        // 6.6.2.5.9: K selects IN0..INn; out of range gives IN0 here.
+        move(result, type, *values[1]);
+        for (std::size_t i = 2; i < arguments.size(); ++i) {
+            const vm::Label next = builder_.label();
+            const std::int32_t k = static_cast<std::int32_t>(i - 1);
+            builder_.jump(Opcode::JNe32, next, selector->operand,
+                          program_.constant({static_cast<std::uint8_t>(k), 0, 0, 0}, 4));
+            move(result, type, *values[i]);
+            builder_.jump(Opcode::Jmp, done);
+            builder_.bind(next);
+        }
+    } else if (name == "LIMIT") {
+        const Value& low = *values[0];
+        const Value& in = *values[1];
+        const Value& high = *values[2];
+        const vm::Label above_low = builder_.label();
+        move(result, type, in);
+        builder_.jump(program_.opcodes().get("JLe", suffix), above_low, low.operand, result);
+        move(result, type, low);
+        builder_.jump(Opcode::Jmp, done);
+        builder_.bind(above_low);
+        builder_.jump(program_.opcodes().get("JLe", suffix), done, result, high.operand);
+        move(result, type, high);
+    } else {
+        move(result, type, *values[0]);
+        const bool maximum = name == "MAX";
+        for (std::size_t i = 1; i < arguments.size(); ++i) {
+            const vm::Label keep = builder_.label();
+            builder_.jump(program_.opcodes().get("JLe", suffix), keep,
+                          maximum ? values[i]->operand : result,
+                          maximum ? result : values[i]->operand);
+            move(result, type, *values[i]);
+            builder_.bind(keep);
+        }
+    }
+    builder_.bind(done);
+    return Value{result, &type};
+}
+
+std::optional<Value> PouGenerator::numeric_function(const std::string& name,
+                                                    const ast::CallExpression& node,
+                                                    const sema::Type* hint,
+                                                    const Destination* dest,
+                                                    const SourceRange& range) {
+    const auto& arguments = node.arguments;
+    auto arity = [&](std::size_t n) {
+        if (arguments.size() != n) {
+            error(range, fmt::format("{} takes {} argument{}", name, n, n == 1 ? "" : "s"));
+            return false;
+        }
+        return true;
+    };
+    using Op = ast::BinaryOperator;
+    static const std::vector<std::pair<std::string_view, Op>> kOperators{
+        {"ADD", Op::Add}, {"MUL", Op::Multiply}, {"SUB", Op::Subtract}, {"DIV", Op::Divide},
+        {"MOD", Op::Modulo}, {"AND", Op::And}, {"OR", Op::Or}, {"XOR", Op::Xor},
+        {"GT", Op::Greater}, {"GE", Op::GreaterEqual}, {"EQ", Op::Equal},
+        {"LE", Op::LessEqual}, {"LT", Op::Less}, {"NE", Op::NotEqual}};
+    for (const auto& [candidate, op] : kOperators) {
+        if (candidate != name) {
+            continue;
+        }
+        if (arguments.size() < 2) {
+            error(range, fmt::format("{} takes two or more arguments", name));
+            return std::nullopt;
+        }
+        const bool comparison = op >= Op::Less && op <= Op::NotEqual;
+        // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is
+        // a > b AND b > c; the other extensible functions fold left to right.
+        auto pair = operands(*arguments[0].value, *arguments[1].value, comparison ? nullptr : hint, range);
+        if (!pair) {
+            return std::nullopt;
+        }
+        auto result = apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr, range);
+        Value previous = pair->second;
+        for (std::size_t i = 2; result && i < arguments.size(); ++i) {
+            auto next = value_as(*arguments[i].value, *previous.type);
+            if (!next) {
+                return std::nullopt;
+            }
+            if (comparison) {
+                const auto step = apply(op, previous, *next, nullptr, range);
+                if (!step) {
+                    return std::nullopt;
+                }
+                builder_.emit(Opcode::And8, result->operand, result->operand, step->operand);
+                previous = *next;
+            } else {
+                result = apply(op, *result, *next, nullptr, range);
+            }
+        }
+        return result;
+    }
+    if (name == "NOT") {
+        if (!arity(1)) {
+            return std::nullopt;
+        }
+        const auto value = eval(*arguments[0].value, hint);
+        if (!value) {
+            return std::nullopt;
+        }
+        const Operand result = result_operand(*value->type, dest);
+        if (sema::is_bool(*value->type)) {
+            builder_.emit(Opcode::NotB, result, value->operand);
+        } else if (sema::is_bit_string(*value->type) || sema::is_integer(*value->type)) {
+            builder_.emit(op_width("Not", *value->type), result, value->operand);
+        } else {
+            error(range, fmt::format("NOT needs a BOOL or bit string, not {}", value->type->name));
+            return std::nullopt;
+        }
+        return Value{result, value->type};
+    }
+    if (one_of(name, {"SHL", "SHR", "ROL", "ROR"})) {
+        if (!arity(2)) {
+            return std::nullopt;
+        }
+        const auto value = eval(*arguments[0].value, hint);
+        const sema::Type& udint = types_.elementary(E::Udint);
+        auto count = value ? eval(*arguments[1].value, &udint) : std::nullopt;
+        if (!count) {
+            return std::nullopt;
+        }
+        if (!sema::is_bit_string(*value->type) && !sema::is_integer(*value->type)) {
+            error(range, fmt::format("{} needs a bit string, not {}", name, value->type->name));
+            return std::nullopt;
+        }
+        if (!sema::is_integer(*count->type)) {
+            error(arguments[1].range, "the shift count must be an integer");
+            return std::nullopt;
+        }
+        count = explicit_convert(*count, udint, nullptr, range);
+        const std::string family = name == "SHL" ? "Shl" : name == "SHR" ? "Shr" : name == "ROL" ? "Rol" : "Ror";
+        const Operand result = result_operand(*value->type, dest);
+        builder_.emit(op_width(family, *value->type), result, value->operand, count->operand);
+        return Value{result, value->type};
+    }
+    if (name == "TRUNC") {
+        if (!arity(1)) {
+            return std::nullopt;
+        }
+        const auto value = eval(*arguments[0].value, &types_.elementary(E::Lreal));
+        if (!value || !sema::is_real(*value->type)) {
+            if (value) {
+                error(range, "TRUNC needs a REAL or LREAL");
+            }
+            return std::nullopt;
+        }
+        const sema::Type& lint = types_.elementary(E::Lint);
+        const Operand wide = temp(lint);
+        builder_.emit(op("Trunc", *value->type), wide, value->operand);
+        return explicit_convert(Value{wide, &lint}, types_.elementary(E::Dint), dest, range);
+    }
+    if (name == "ABS") {
+        if (!arity(1)) {
+            return std::nullopt;
+        }
+        const auto value = eval(*arguments[0].value, hint);
+        if (!value || !sema::is_numeric(*value->type)) {
+            if (value) {
+                error(range, fmt::format("ABS needs a number, not {}", value->type->name));
+            }
+            return std::nullopt;
+        }
+        const Operand result = result_operand(*value->type, dest);
+        if (sema::is_signed(*value->type)) {
+            builder_.emit(op("Abs", *value->type), result, value->operand);
+        } else {
+            move(result, *value->type, *value);
+        }
+        return Value{result, value->type};
+    }
+    // The real functions: integer arguments are converted to the real type first.
+    const bool two = name == "ATAN2" || name == "EXPT";
+    if (!one_of(name, {"SQRT", "LN", "LOG", "EXP", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN",
+                       "ATAN2", "EXPT"})) {
+        error(range, fmt::format("the standard function {} is not supported yet", name));
+        return std::nullopt;
+    }
+    if (!arity(two ? 2 : 1)) {
+        return std::nullopt;
+    }
+    const sema::Type* real_hint = hint != nullptr && sema::is_real(*hint) ? hint : nullptr;
+    auto first = eval(*arguments[0].value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
+    if (!first || !sema::is_numeric(*first->type)) {
+        if (first) {
+            error(range, fmt::format("{} needs a number, not {}", name, first->type->name));
+        }
+        return std::nullopt;
+    }
+    const sema::Type& real = sema::is_real(*first->type) ? *first->type
+                             : real_hint != nullptr     ? *real_hint
+                                                        : types_.elementary(E::Lreal);
+    first = explicit_convert(*first, real, nullptr, range);
+    std::vector<Value> values{*first};
+    if (two) {
+        auto second = eval(*arguments[1].value, &real);
+        if (!second || !sema::is_numeric(*second->type)) {
+            return std::nullopt;
+        }
+        values.push_back(*explicit_convert(*second, real, nullptr, range));
+    }
+    if (name == "SQRT") {
+        const Operand result = result_operand(real, dest);
+        builder_.emit(op("Sqrt", real), result, values[0].operand);
+        return Value{result, &real};
+    }
+    const S scalar = sema::scalar_of(real);
+    const vm::NativeSignature signature{true, scalar, std::vector<S>(values.size(), scalar)};
+    call_native(name + (scalar == S::F32 ? "_REAL" : "_LREAL"), signature, values);
+    return native_result(signature, real, dest);
+}
+
+} // namespace eposp::compiler::codegen

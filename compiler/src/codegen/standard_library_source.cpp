@@ -1,0 +1,191 @@
+#include "standard_library_source.hpp"
+
+#include <string>
+
+namespace eposp::compiler::codegen {
+
+namespace {
+
+// Keep the parameters in step with sema/standard_library.cpp, which declares them for name
+// resolution. Counters count on rising edges (table 45); timers follow the timing diagrams of
+// table 46: a timer's ET is measured against PT at every call, so changing PT while the timer
+// runs takes effect at once, as in CODESYS.
+constexpr std::string_view kSource = R"ST(
+FUNCTION CURRENT_TIME : TIME
+END_FUNCTION
+
+FUNCTION_BLOCK SR
+  VAR_INPUT S1, R : BOOL; END_VAR
+  VAR_OUTPUT Q1 : BOOL; END_VAR
+  Q1 := S1 OR (NOT R AND Q1);
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK RS
+  VAR_INPUT S, R1 : BOOL; END_VAR
+  VAR_OUTPUT Q1 : BOOL; END_VAR
+  Q1 := NOT R1 AND (S OR Q1);
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK R_TRIG
+  VAR_INPUT CLK : BOOL; END_VAR
+  VAR_OUTPUT Q : BOOL; END_VAR
+  VAR M : BOOL; END_VAR
+  Q := CLK AND NOT M;
+  M := CLK;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK F_TRIG
+  VAR_INPUT CLK : BOOL; END_VAR
+  VAR_OUTPUT Q : BOOL; END_VAR
+  VAR M : BOOL; END_VAR
+  Q := NOT CLK AND NOT M;
+  M := NOT CLK;
+END_FUNCTION_BLOCK
+
+@COUNTERS(CTU, CTD, CTUD, INT, 32767, -32768)
+@COUNTERS(CTU_DINT, CTD_DINT, CTUD_DINT, DINT, 2147483647, -2147483648)
+@COUNTERS(CTU_LINT, CTD_LINT, CTUD_LINT, LINT, 9223372036854775807, -9223372036854775807)
+@COUNTERS(CTU_UDINT, CTD_UDINT, CTUD_UDINT, UDINT, 4294967295, 0)
+@COUNTERS(CTU_ULINT, CTD_ULINT, CTUD_ULINT, ULINT, 18446744073709551615, 0)
+
+FUNCTION_BLOCK TP
+  VAR_INPUT IN : BOOL; PT : TIME; END_VAR
+  VAR_OUTPUT Q : BOOL; ET : TIME; END_VAR
+  VAR start : TIME; M : BOOL; END_VAR
+  IF NOT Q AND IN AND NOT M THEN
+    start := CURRENT_TIME();
+    Q := TRUE;
+  END_IF;
+  IF Q THEN
+    ET := CURRENT_TIME() - start;
+    IF ET >= PT THEN ET := PT; Q := FALSE; END_IF;
+  ELSIF NOT IN THEN
+    ET := T#0s;
+  END_IF;
+  M := IN;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK TON
+  VAR_INPUT IN : BOOL; PT : TIME; END_VAR
+  VAR_OUTPUT Q : BOOL; ET : TIME; END_VAR
+  VAR start : TIME; running : BOOL; END_VAR
+  IF IN THEN
+    IF NOT running THEN start := CURRENT_TIME(); running := TRUE; END_IF;
+    ET := CURRENT_TIME() - start;
+    IF ET >= PT THEN ET := PT; Q := TRUE; ELSE Q := FALSE; END_IF;
+  ELSE
+    Q := FALSE; ET := T#0s; running := FALSE;
+  END_IF;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK TOF
+  VAR_INPUT IN : BOOL; PT : TIME; END_VAR
+  VAR_OUTPUT Q : BOOL; ET : TIME; END_VAR
+  VAR start : TIME; running : BOOL; END_VAR
+  IF IN THEN
+    Q := TRUE; ET := T#0s; running := FALSE;
+  ELSIF Q THEN
+    IF NOT running THEN start := CURRENT_TIME(); running := TRUE; END_IF;
+    ET := CURRENT_TIME() - start;
+    IF ET >= PT THEN ET := PT; Q := FALSE; running := FALSE; END_IF;
+  END_IF;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK RTC
+  VAR_INPUT IN : BOOL; PDT : DT; END_VAR
+  VAR_OUTPUT Q : BOOL; CDT : DT; END_VAR
+  VAR start : TIME; M : BOOL; END_VAR
+  IF IN AND NOT M THEN start := CURRENT_TIME(); CDT := PDT; END_IF;
+  IF IN THEN CDT := PDT + (CURRENT_TIME() - start); END_IF;
+  Q := IN;
+  M := IN;
+END_FUNCTION_BLOCK
+)ST";
+
+constexpr std::string_view kCounters = R"ST(
+FUNCTION_BLOCK @CTU
+  VAR_INPUT CU, R : BOOL; PV : @T; END_VAR
+  VAR_OUTPUT Q : BOOL; CV : @T; END_VAR
+  VAR M : BOOL; END_VAR
+  IF R THEN CV := 0;
+  ELSIF CU AND NOT M AND CV < @MAX THEN CV := CV + 1;
+  END_IF;
+  M := CU;
+  Q := CV >= PV;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK @CTD
+  VAR_INPUT CD, LD : BOOL; PV : @T; END_VAR
+  VAR_OUTPUT Q : BOOL; CV : @T; END_VAR
+  VAR M : BOOL; END_VAR
+  IF LD THEN CV := PV;
+  ELSIF CD AND NOT M AND CV > @MIN THEN CV := CV - 1;
+  END_IF;
+  M := CD;
+  Q := CV <= 0;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK @CTUD
+  VAR_INPUT CU, CD, R, LD : BOOL; PV : @T; END_VAR
+  VAR_OUTPUT QU, QD : BOOL; CV : @T; END_VAR
+  VAR MU, MD : BOOL; END_VAR
+  IF R THEN CV := 0;
+  ELSIF LD THEN CV := PV;
+  ELSIF NOT (CU AND NOT MU AND CD AND NOT MD) THEN
+    IF CU AND NOT MU AND CV < @MAX THEN CV := CV + 1;
+    ELSIF CD AND NOT MD AND CV > @MIN THEN CV := CV - 1;
+    END_IF;
+  END_IF;
+  MU := CU;
+  MD := CD;
+  QU := CV >= PV;
+  QD := CV <= 0;
+END_FUNCTION_BLOCK
+)ST";
+
+void replace_all(std::string& text, std::string_view from, std::string_view to) {
+    for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+        text.replace(at, from.size(), to);
+    }
+}
+
+/// The source with each `@COUNTERS(up, down, updown, type, max, min)` line expanded.
+std::string expand() {
+    std::string result;
+    std::string_view rest = kSource;
+    while (!rest.empty()) {
+        const auto line_end = rest.find('\n');
+        std::string_view line = rest.substr(0, line_end);
+        rest = line_end == std::string_view::npos ? std::string_view{} : rest.substr(line_end + 1);
+        if (!line.starts_with("@COUNTERS(")) {
+            result.append(line).append("\n");
+            continue;
+        }
+        line.remove_prefix(10);
+        line.remove_suffix(1);
+        std::string fields[6];
+        for (auto& field : fields) {
+            const auto comma = line.find(',');
+            field = std::string(line.substr(0, comma));
+            line = comma == std::string_view::npos ? std::string_view{} : line.substr(comma + 2);
+        }
+        std::string block(kCounters);
+        replace_all(block, "@CTUD", fields[2]);
+        replace_all(block, "@CTU", fields[0]);
+        replace_all(block, "@CTD", fields[1]);
+        replace_all(block, "@T", fields[3]);
+        replace_all(block, "@MAX", fields[4]);
+        replace_all(block, "@MIN", fields[5]);
+        result += block;
+    }
+    return result;
+}
+
+} // namespace
+
+std::string_view standard_library_source() {
+    static const std::string source = expand(); // immutable once built
+    return source;
+}
+
+} // namespace eposp::compiler::codegen

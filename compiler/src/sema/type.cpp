@@ -1,0 +1,149 @@
+#include "eposp/compiler/sema/type.hpp"
+
+#include "eposp/compiler/sema/symbol.hpp"
+
+namespace eposp::compiler::sema {
+
+using E = ast::ElementaryType;
+
+const Field* Type::field(std::string_view field_name) const {
+    const std::string key = fold_case(field_name);
+    for (const Type* type = this; type != nullptr; type = type->base) {
+        for (const Field& candidate : type->fields) {
+            if (fold_case(candidate.name) == key) {
+                return &candidate;
+            }
+        }
+    }
+    return nullptr;
+}
+
+namespace {
+
+bool elementary_in(const Type& type, std::initializer_list<E> set) {
+    if (type.kind != TypeKind::Elementary) {
+        return false;
+    }
+    for (E e : set) {
+        if (type.elementary == e) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/// Rank within a widening chain (figure 11): a value converts implicitly to a type of the same
+/// chain with a higher rank.
+struct Chain {
+    int chain;
+    int rank;
+};
+
+std::optional<Chain> chain_of(E e) {
+    switch (e) {
+    case E::Sint: return Chain{0, 0};
+    case E::Int: return Chain{0, 1};
+    case E::Dint: return Chain{0, 2};
+    case E::Lint: return Chain{0, 3};
+    case E::Usint: return Chain{1, 0};
+    case E::Uint: return Chain{1, 1};
+    case E::Udint: return Chain{1, 2};
+    case E::Ulint: return Chain{1, 3};
+    case E::Byte: return Chain{2, 0};
+    case E::Word: return Chain{2, 1};
+    case E::Dword: return Chain{2, 2};
+    case E::Lword: return Chain{2, 3};
+    case E::Real: return Chain{3, 0};
+    case E::Lreal: return Chain{3, 1};
+    default: return std::nullopt;
+    }
+}
+
+} // namespace
+
+bool is_integer(const Type& type) {
+    return elementary_in(type, {E::Sint, E::Int, E::Dint, E::Lint, E::Usint, E::Uint, E::Udint,
+                                E::Ulint});
+}
+bool is_bit_string(const Type& type) {
+    return elementary_in(type, {E::Byte, E::Word, E::Dword, E::Lword});
+}
+bool is_real(const Type& type) { return elementary_in(type, {E::Real, E::Lreal}); }
+bool is_numeric(const Type& type) { return is_integer(type) || is_real(type); }
+bool is_bool(const Type& type) { return elementary_in(type, {E::Bool}); }
+bool is_time_like(const Type& type) {
+    return elementary_in(type, {E::Time, E::Ltime, E::Date, E::Ldate, E::TimeOfDay, E::Ltod,
+                                E::DateAndTime, E::Ldt});
+}
+bool is_signed(const Type& type) {
+    return elementary_in(type, {E::Sint, E::Int, E::Dint, E::Lint}) || is_real(type) ||
+           is_time_like(type);
+}
+bool is_scalar(const Type& type) {
+    return type.kind == TypeKind::Elementary || type.kind == TypeKind::Enum ||
+           type.kind == TypeKind::Reference || type.kind == TypeKind::Null;
+}
+
+vm::Scalar scalar_of(const Type& type) {
+    using S = vm::Scalar;
+    if (type.kind == TypeKind::Reference || type.kind == TypeKind::Null) {
+        return S::Ptr;
+    }
+    switch (type.elementary) {
+    case E::Bool: return S::Bool;
+    case E::Sint: return S::I8;
+    case E::Int: return S::I16;
+    case E::Dint: return S::I32;
+    case E::Lint: return S::I64;
+    case E::Usint: case E::Byte: case E::Char: return S::U8;
+    case E::Uint: case E::Word: case E::Wchar: return S::U16;
+    case E::Udint: case E::Dword: return S::U32;
+    case E::Ulint: case E::Lword: return S::U64;
+    case E::Real: return S::F32;
+    case E::Lreal: return S::F64;
+    default: return S::I64; // the time and date types: nanoseconds
+    }
+}
+
+bool converts_implicitly(const Type& from, const Type& to) {
+    if (&from == &to) {
+        return true;
+    }
+    if (from.kind == TypeKind::Null) {
+        return to.kind == TypeKind::Reference;
+    }
+    if (from.kind == TypeKind::Elementary && to.kind == TypeKind::Elementary) {
+        if (from.elementary == to.elementary) {
+            return true;
+        }
+        // TIME and LTIME share their representation; TIME widens to LTIME.
+        if (from.elementary == E::Time && to.elementary == E::Ltime) {
+            return true;
+        }
+        const auto f = chain_of(from.elementary);
+        const auto t = chain_of(to.elementary);
+        if (!f || !t) {
+            return from.elementary == E::Bool && t && t->chain == 2; // BOOL widens to BYTE...
+        }
+        if (f->chain == t->chain) {
+            return f->rank <= t->rank;
+        }
+        // Unsigned to the next wider signed; integers to REAL/LREAL (figure 11).
+        if (f->chain == 1 && t->chain == 0) {
+            return f->rank < t->rank;
+        }
+        if ((f->chain == 0 || f->chain == 1) && t->chain == 3) {
+            return f->rank <= 1 + t->rank * 2;
+        }
+        return false;
+    }
+    if (from.kind == TypeKind::String && to.kind == TypeKind::String) {
+        return from.wide == to.wide;
+    }
+    if (from.kind == TypeKind::Reference && to.kind == TypeKind::Reference) {
+        return from.element == to.element || from.element == nullptr || to.element == nullptr;
+    }
+    return false;
+}
+
+} // namespace eposp::compiler::sema

@@ -1,0 +1,419 @@
+#include "eposp/compiler/sema/type_table.hpp"
+
+#include "eposp/vm/stdlib/string_layout.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::sema {
+
+namespace {
+
+using E = ast::ElementaryType;
+
+// Limits that keep every layout inside the VM's 30-bit operand offsets.
+constexpr std::uint64_t kMaxTypeSize = 1U << 28;
+
+std::uint32_t elementary_size(E type) {
+    switch (type) {
+    case E::Bool: case E::Sint: case E::Usint: case E::Byte: case E::Char: return 1;
+    case E::Int: case E::Uint: case E::Word: case E::Wchar: return 2;
+    case E::Dint: case E::Udint: case E::Dword: case E::Real: return 4;
+    default: return 8;
+    }
+}
+
+} // namespace
+
+TypeTable::TypeTable(const SemanticModel& model, Diagnostics& diagnostics,
+                     std::function<const ast::Pou*(std::string_view)> library)
+    : model_(model), diagnostics_(diagnostics), library_(std::move(library)) {}
+
+Type& TypeTable::add(Type type) { return types_.emplace_back(std::move(type)); }
+
+const Type& TypeTable::elementary(E type) {
+    if (type == E::String || type == E::Wstring) {
+        return string(vm::stdlib::kDefaultStringCapacity, type == E::Wstring);
+    }
+    auto& slot = elementary_[type];
+    if (slot == nullptr) {
+        const std::uint32_t size = elementary_size(type);
+        slot = &add({.kind = TypeKind::Elementary,
+                     .name = std::string(ast::name_of(type)),
+                     .elementary = type,
+                     .size = size,
+                     .align = size});
+    }
+    return *slot;
+}
+
+const Type& TypeTable::string(std::uint32_t capacity, bool wide) {
+    auto& slot = strings_[{capacity, wide}];
+    if (slot == nullptr) {
+        slot = &add({.kind = TypeKind::String,
+                     .name = fmt::format("{}[{}]", wide ? "WSTRING" : "STRING", capacity),
+                     .elementary = wide ? E::Wstring : E::String,
+                     .size = vm::stdlib::string_size(
+                         capacity, wide ? vm::stdlib::CharWidth::Wide : vm::stdlib::CharWidth::Narrow),
+                     .align = vm::stdlib::kStringAlign,
+                     .capacity = capacity,
+                     .wide = wide});
+    }
+    return *slot;
+}
+
+const Type& TypeTable::reference(const Type* target) {
+    auto& slot = references_[target];
+    if (slot == nullptr) {
+        slot = &add({.kind = TypeKind::Reference,
+                     .name = "REF_TO " + (target != nullptr ? target->name : std::string("?")),
+                     .size = 8,
+                     .align = 8,
+                     .element = target});
+    }
+    return *slot;
+}
+
+const Type& TypeTable::null() {
+    if (null_ == nullptr) {
+        null_ = &add({.kind = TypeKind::Null, .name = "NULL", .size = 8, .align = 8});
+    }
+    return *null_;
+}
+
+const Type* TypeTable::resolve(const ast::TypeSpec& spec) {
+    if (const auto it = specs_.find(&spec); it != specs_.end()) {
+        return it->second;
+    }
+    if (in_progress_[&spec]) {
+        diagnostics_.error(spec.range, "this type contains itself");
+        return nullptr;
+    }
+    in_progress_[&spec] = true;
+    const Type* type = resolve_uncached(spec);
+    in_progress_[&spec] = false;
+    specs_[&spec] = type;
+    return type;
+}
+
+const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
+    if (const auto* node = std::get_if<ast::ElementaryTypeRef>(&spec.node)) {
+        return &elementary(node->type);
+    }
+    if (const auto* node = std::get_if<ast::StringTypeRef>(&spec.node)) {
+        std::int64_t capacity = vm::stdlib::kDefaultStringCapacity;
+        if (node->length) {
+            const auto folded = fold_integer(*node->length);
+            if (!folded || *folded < 1 || *folded > vm::stdlib::kMaxStringCapacity) {
+                diagnostics_.error(node->length->range,
+                                   "a string length must be a constant from 1 to 65535");
+                return nullptr;
+            }
+            capacity = *folded;
+        }
+        return &string(static_cast<std::uint32_t>(capacity), node->type == E::Wstring);
+    }
+    if (const auto* node = std::get_if<ast::NamedTypeRef>(&spec.node)) {
+        const Symbol* symbol = model_.resolved(node->name);
+        return symbol != nullptr ? named(*symbol) : nullptr; // unresolved: already reported
+    }
+    if (const auto* node = std::get_if<ast::ArrayType>(&spec.node)) {
+        return array(*node, spec.range);
+    }
+    if (const auto* node = std::get_if<ast::SubrangeType>(&spec.node)) {
+        // 6.4.4.4: a subrange holds values of its base type (range checks are not done).
+        return resolve(*node->base);
+    }
+    if (const auto* node = std::get_if<ast::EnumType>(&spec.node)) {
+        return enumeration(*node, "enumeration");
+    }
+    if (const auto* node = std::get_if<ast::StructType>(&spec.node)) {
+        return structure(*node);
+    }
+    const auto& node = std::get<ast::ReferenceType>(spec.node);
+    const Type* target = resolve(*node.target);
+    return target != nullptr ? &reference(target) : nullptr;
+}
+
+const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& range) {
+    const Type* element = resolve(*spec.element);
+    if (element == nullptr) {
+        return nullptr;
+    }
+    Type type{.kind = TypeKind::Array, .align = element->align, .element = element};
+    std::uint64_t count = 1;
+    std::string bounds;
+    for (const ast::ArrayDimension& dimension : spec.dimensions) {
+        if (!dimension.bounds) {
+            diagnostics_.error(range, "ARRAY[*] is only allowed for VAR_IN_OUT (not supported yet)");
+            return nullptr;
+        }
+        const auto low = fold_integer(*dimension.bounds->low);
+        const auto high = fold_integer(*dimension.bounds->high);
+        if (!low || !high) {
+            diagnostics_.error(dimension.bounds->low->range, "array bounds must be constants");
+            return nullptr;
+        }
+        if (*high < *low || *low < INT32_MIN || *high > INT32_MAX) {
+            diagnostics_.error(dimension.bounds->low->range,
+                               fmt::format("array bounds {}..{} are empty or too large", *low, *high));
+            return nullptr;
+        }
+        const auto n = static_cast<std::uint64_t>(*high - *low + 1);
+        count *= n;
+        if (count * element->size > kMaxTypeSize) {
+            diagnostics_.error(range, "this array is too large");
+            return nullptr;
+        }
+        type.dimensions.push_back({*low, static_cast<std::uint32_t>(n)});
+        bounds += fmt::format("{}{}..{}", bounds.empty() ? "" : ",", *low, *high);
+    }
+    type.size = static_cast<std::uint32_t>(count * element->size);
+    type.name = fmt::format("ARRAY[{}] OF {}", bounds, element->name);
+    return &add(std::move(type));
+}
+
+void TypeTable::lay_out(Type& type,
+                        const std::vector<const ast::VariableDeclaration*>& declarations,
+                        const std::vector<ast::VarSectionKind>& sections, std::uint32_t start) {
+    std::uint64_t offset = start;
+    for (std::size_t i = 0; i < declarations.size(); ++i) {
+        const ast::VariableDeclaration& declaration = *declarations[i];
+        const Type* member = resolve(declaration.type);
+        if (member == nullptr) {
+            continue;
+        }
+        // VAR_IN_OUT is passed by reference (6.5.1.2).
+        if (sections[i] == ast::VarSectionKind::InOut) {
+            member = &reference(member);
+        }
+        for (const ast::Identifier& name : declaration.names) {
+            offset = align_up(static_cast<std::uint32_t>(offset), member->align);
+            type.fields.push_back({name.name, member, static_cast<std::uint32_t>(offset),
+                                   sections[i], &declaration});
+            offset += member->size;
+            type.align = std::max(type.align, member->align);
+            if (offset > kMaxTypeSize) {
+                diagnostics_.error(declaration.range, "this structure or instance is too large");
+                return;
+            }
+        }
+    }
+    type.size = align_up(static_cast<std::uint32_t>(offset), type.align);
+}
+
+
+const Type* TypeTable::structure(const ast::StructType& spec) {
+    Type type{.kind = TypeKind::Struct, .name = "STRUCT"};
+    std::vector<const ast::VariableDeclaration*> declarations;
+    for (const ast::VariableDeclaration& member : spec.members) {
+        declarations.push_back(&member);
+    }
+    lay_out(type, declarations,
+            std::vector<ast::VarSectionKind>(declarations.size(), ast::VarSectionKind::Var), 0);
+    return &add(std::move(type));
+}
+
+const Type* TypeTable::enumeration(const ast::EnumType& spec, std::string name) {
+    const Type* base = spec.base ? resolve(*spec.base) : &elementary(E::Int);
+    if (base == nullptr || !(is_integer(*base) || is_bit_string(*base))) {
+        diagnostics_.error(spec.values.empty() ? SourceRange{} : spec.values.front().name.range,
+                           "an enumeration's base type must be an integer type");
+        return nullptr;
+    }
+    Type& type = add({.kind = TypeKind::Enum,
+                      .name = std::move(name),
+                      .elementary = base->elementary,
+                      .size = base->size,
+                      .align = base->align});
+    // 6.4.4.2: implicit values count on from the previous one, starting at 0.
+    std::int64_t next = 0;
+    for (const ast::EnumValue& value : spec.values) {
+        if (value.value) {
+            if (const auto folded = fold_integer(*value.value)) {
+                next = *folded;
+            } else {
+                diagnostics_.error(value.value->range, "an enumeration value must be a constant");
+            }
+        }
+        type.enumerators.emplace_back(value.name.name, next);
+        enum_values_[&value] = {&type, next};
+        ++next;
+    }
+    return &type;
+}
+
+const Type* TypeTable::named(const Symbol& symbol) {
+    if (symbol.kind == SymbolKind::StandardFunctionBlock) {
+        const ast::Pou* pou = library_(symbol.name);
+        return pou != nullptr ? instance(*pou) : nullptr;
+    }
+    if (symbol.kind == SymbolKind::Pou) {
+        return symbol.pou->kind == ast::PouKind::Function ? nullptr : instance(*symbol.pou);
+    }
+    if (symbol.kind != SymbolKind::Type) {
+        return nullptr;
+    }
+    const ast::TypeSpec& spec = symbol.type->type;
+    if (const auto* enumeration_spec = std::get_if<ast::EnumType>(&spec.node)) {
+        if (const auto it = specs_.find(&spec); it != specs_.end()) {
+            return it->second;
+        }
+        return specs_[&spec] = enumeration(*enumeration_spec, symbol.name);
+    }
+    const Type* type = resolve(spec);
+    if (type != nullptr && std::holds_alternative<ast::StructType>(spec.node) &&
+        type->name == "STRUCT") {
+        const_cast<Type*>(type)->name = symbol.name; // named on first use, for messages
+    }
+    return type;
+}
+
+const Type* TypeTable::instance(const ast::Pou& pou) {
+    if (const auto it = instances_.find(&pou); it != instances_.end()) {
+        return it->second;
+    }
+    Type& type = add({.kind = TypeKind::Instance, .name = pou.name.name, .pou = &pou});
+    instances_[&pou] = &type;
+    std::uint32_t start = 0;
+    if (pou.extends) {
+        const Symbol* base = model_.resolved(*pou.extends);
+        if (base != nullptr && base->kind == SymbolKind::Pou) {
+            type.base = instance(*base->pou);
+            start = type.base->size;
+            type.align = type.base->align;
+        }
+    }
+    std::vector<const ast::VariableDeclaration*> declarations;
+    std::vector<ast::VarSectionKind> sections;
+    for (const ast::DeclarationSection& section : pou.sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables == nullptr || variables->kind == ast::VarSectionKind::Temp ||
+            variables->kind == ast::VarSectionKind::External) {
+            continue; // temporaries live in the frame, externals in the configuration
+        }
+        for (const ast::VariableDeclaration& declaration : variables->variables) {
+            declarations.push_back(&declaration);
+            sections.push_back(variables->kind);
+        }
+    }
+    lay_out(type, declarations, sections, start);
+    type.size = std::max<std::uint32_t>(type.size, 1);
+    return &type;
+}
+
+const Type* TypeTable::frame(const ast::Pou& pou) {
+    if (const auto it = frames_.find(&pou); it != frames_.end()) {
+        return it->second;
+    }
+    Type& type = add({.kind = TypeKind::Struct, .name = pou.name.name, .pou = &pou});
+    frames_[&pou] = &type;
+    const bool function = pou.kind == ast::PouKind::Function;
+    std::uint32_t start = 0;
+    if (function && pou.return_type) {
+        if (const Type* result = resolve(*pou.return_type)) {
+            type.fields.push_back({pou.name.name, result, 0, ast::VarSectionKind::Output, nullptr});
+            start = result->size;
+            type.align = result->align;
+        }
+    }
+    std::vector<const ast::VariableDeclaration*> declarations;
+    std::vector<ast::VarSectionKind> sections;
+    for (const ast::DeclarationSection& section : pou.sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables == nullptr || variables->kind == ast::VarSectionKind::External ||
+            (!function && variables->kind != ast::VarSectionKind::Temp)) {
+            continue;
+        }
+        for (const ast::VariableDeclaration& declaration : variables->variables) {
+            declarations.push_back(&declaration);
+            sections.push_back(variables->kind);
+        }
+    }
+    lay_out(type, declarations, sections, start);
+    type.size = align_up(type.size, 8);
+    return &type;
+}
+
+const Type* TypeTable::enumeration_of(const Symbol& value) {
+    if (value.owner != nullptr) {
+        named(*value.owner);
+    }
+    const auto it = enum_values_.find(value.enum_value);
+    return it == enum_values_.end() ? nullptr : it->second.first;
+}
+
+std::optional<std::int64_t> TypeTable::enumerator(const Symbol& value) {
+    if (value.owner != nullptr) {
+        named(*value.owner);
+    }
+    const auto it = enum_values_.find(value.enum_value);
+    return it == enum_values_.end() ? std::nullopt : std::optional(it->second.second);
+}
+
+std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expression) {
+    if (const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node)) {
+        if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
+            if (integer->magnitude > static_cast<std::uint64_t>(INT64_MAX)) {
+                return integer->negative ? std::optional(INT64_MIN) : std::nullopt;
+            }
+            const auto magnitude = static_cast<std::int64_t>(integer->magnitude);
+            return integer->negative ? -magnitude : magnitude;
+        }
+        if (const auto* enumerated = std::get_if<ast::EnumValueLiteral>(&literal->value)) {
+            const Symbol* symbol = model_.resolved(enumerated->value);
+            return symbol != nullptr ? enumerator(*symbol) : std::nullopt;
+        }
+        return std::nullopt;
+    }
+    if (const auto* name = std::get_if<ast::NameExpression>(&expression.node)) {
+        const Symbol* symbol = model_.resolved(name->name);
+        if (symbol == nullptr) {
+            return std::nullopt;
+        }
+        if (symbol->kind == SymbolKind::EnumValue) {
+            return enumerator(*symbol);
+        }
+        // A constant's value (VAR CONSTANT / VAR_GLOBAL CONSTANT) with a plain initial value.
+        if (symbol->kind == SymbolKind::Variable && symbol->variable != nullptr &&
+            symbol->variable->initial_value) {
+            if (const auto* value =
+                    std::get_if<ast::ExpressionPtr>(&symbol->variable->initial_value->value)) {
+                return fold_integer(**value);
+            }
+        }
+        return std::nullopt;
+    }
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        const auto operand = fold_integer(*unary->operand);
+        if (!operand || unary->op == ast::UnaryOperator::Not) {
+            return std::nullopt;
+        }
+        return unary->op == ast::UnaryOperator::Negate
+                   ? static_cast<std::int64_t>(0ULL - static_cast<std::uint64_t>(*operand))
+                   : *operand;
+    }
+    const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
+    if (binary == nullptr) {
+        return std::nullopt;
+    }
+    const auto left = fold_integer(*binary->left);
+    const auto right = fold_integer(*binary->right);
+    if (!left || !right) {
+        return std::nullopt;
+    }
+    const auto l = static_cast<std::uint64_t>(*left);
+    const auto r = static_cast<std::uint64_t>(*right);
+    switch (binary->op) {
+    case ast::BinaryOperator::Add: return static_cast<std::int64_t>(l + r);
+    case ast::BinaryOperator::Subtract: return static_cast<std::int64_t>(l - r);
+    case ast::BinaryOperator::Multiply: return static_cast<std::int64_t>(l * r);
+    case ast::BinaryOperator::Divide:
+        return *right == 0 || (*left == INT64_MIN && *right == -1) ? std::nullopt
+                                                                    : std::optional(*left / *right);
+    case ast::BinaryOperator::Modulo:
+        return *right == 0 || *right == -1 ? std::nullopt : std::optional(*left % *right);
+    default: return std::nullopt;
+    }
+}
+
+} // namespace eposp::compiler::sema

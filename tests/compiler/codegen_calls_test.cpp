@@ -1,0 +1,99 @@
+// Calls compiled and run: functions (formal, positional, default inputs, outputs, VAR_IN_OUT,
+// nested calls), FB instances (also in arrays), programs in a configuration.
+#include "codegen_harness.hpp"
+
+#include <gtest/gtest.h>
+
+namespace eposp::compiler::test {
+namespace {
+
+TEST(FunctionCall, FormalPositionalDefaultsOutputsAndInOut) {
+    StProgram run(R"(
+FUNCTION Scale : DINT
+  VAR_INPUT v : DINT; k : DINT := 10; END_VAR
+  VAR_OUTPUT twice : DINT; END_VAR
+  VAR_IN_OUT acc : DINT; END_VAR
+  VAR tmp : DINT := 1; END_VAR
+  tmp := tmp + 1;
+  acc := acc + v;
+  twice := 2 * v;
+  Scale := v * k + tmp;
+END_FUNCTION
+
+FUNCTION Add3 : INT
+  VAR_INPUT a, b, c : INT; END_VAR
+  Add3 := a + b + c;
+END_FUNCTION
+
+PROGRAM Main
+VAR a, b, c, d, acc, t : DINT; n : INT; END_VAR
+a := Scale(v := 3, acc := acc);
+b := Scale(v := 3, k := 2, acc := acc, twice => t);
+c := Scale(Scale(v := 1, acc := acc), 1, acc);
+n := Add3(1, Add3(2, 3, 4), 5);
+d := acc;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int32_t>("Main.a"), 32); // 3 * 10 + 2: tmp starts at 1 every call
+    EXPECT_EQ(run.get<std::int32_t>("Main.b"), 8);
+    EXPECT_EQ(run.get<std::int32_t>("Main.t"), 6);
+    EXPECT_EQ(run.get<std::int32_t>("Main.c"), 14); // Scale(12, 1) = 12 + 2
+    EXPECT_EQ(run.get<std::int16_t>("Main.n"), 15);
+    EXPECT_EQ(run.get<std::int32_t>("Main.d"), 3 + 3 + 1 + 12);
+}
+
+TEST(FunctionBlockCall, InstancesKeepTheirStateAndOutputs) {
+    StProgram run(R"(
+FUNCTION_BLOCK Counter
+  VAR_INPUT step : INT := 1; END_VAR
+  VAR_OUTPUT value : INT; END_VAR
+  VAR_IN_OUT total : DINT; END_VAR
+  value := value + step;
+  total := total + step;
+END_FUNCTION_BLOCK
+
+PROGRAM Main
+VAR c1, c2 : Counter; arr : ARRAY[1..3] OF Counter; i : INT; v1, v2, s : INT; total : DINT; END_VAR
+c1(total := total);
+c2(step := 5, total := total, value => v2);
+v1 := c1.value;
+FOR i := 1 TO 3 DO arr[i](step := i, total := total); END_FOR;
+s := arr[1].value + arr[2].value + arr[3].value;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(3)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("Main.v1"), 3);
+    EXPECT_EQ(run.get<std::int16_t>("Main.v2"), 15);
+    EXPECT_EQ(run.get<std::int16_t>("Main.s"), 18);
+    EXPECT_EQ(run.get<std::int32_t>("Main.total"), 3 * (1 + 5 + 6));
+    EXPECT_EQ(run.get<std::int16_t>("Main.arr[2].value"), 6);
+}
+
+TEST(Configuration, GlobalsTasksAndInstancesByPath) {
+    StProgram run(R"(
+PROGRAM Prog
+  VAR_EXTERNAL g : DINT; END_VAR
+  VAR count : DINT := 100; END_VAR
+  count := count + 1;
+  g := g + count;
+END_PROGRAM
+
+CONFIGURATION Cell
+  VAR_GLOBAL g : DINT := 5; END_VAR
+  RESOURCE Cpu ON PLC
+    TASK Fast(INTERVAL := T#2ms, PRIORITY := 1);
+    PROGRAM P1 WITH Fast : Prog;
+  END_RESOURCE
+END_CONFIGURATION
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(2)) << run.fault();
+    EXPECT_EQ(run.get<std::int32_t>("P1.count"), 102);
+    EXPECT_EQ(run.get<std::int32_t>("Cell.g"), 5 + 101 + 102);
+}
+
+} // namespace
+} // namespace eposp::compiler::test

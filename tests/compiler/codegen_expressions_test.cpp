@@ -1,0 +1,136 @@
+// Expressions compiled and run: operators with IEC precedence, wrap-around, conversions,
+// implicit widening, selection and numeric standard functions, enumerations, arrays,
+// structures and references. Each case is a PROGRAM Main run for one scan.
+#include "codegen_harness.hpp"
+
+#include <gtest/gtest.h>
+
+namespace eposp::compiler::test {
+namespace {
+
+struct IntCase {
+    std::string name;
+    std::string declarations; // inside VAR ... END_VAR of Main, which also has `x : LINT;`
+    std::string body;
+    std::int64_t expected; // of x
+};
+
+class IntegerResult : public testing::TestWithParam<IntCase> {};
+
+TEST_P(IntegerResult, GivesTheExpectedValue) {
+    const IntCase& c = GetParam();
+    StProgram run("PROGRAM Main\nVAR x : LINT; " + c.declarations + " END_VAR\n" + c.body +
+                  "\nEND_PROGRAM\n");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int64_t>("Main.x"), c.expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Operators, IntegerResult,
+    testing::Values(
+        IntCase{"MultiplicationBindsTighter", "", "x := 2 + 3 * 4;", 14},
+        IntCase{"Parentheses", "", "x := (2 + 3) * 4;", 20},
+        IntCase{"SubtractionIsLeftAssociative", "", "x := 10 - 3 - 2;", 5},
+        IntCase{"DivisionTruncates", "", "x := -7 / 2;", -3},
+        IntCase{"ModTakesTheDividendsSign", "", "x := -7 MOD 3;", -1},
+        IntCase{"UnaryMinusOfVariable", "d : DINT := 5;", "x := -d;", -5},
+        IntCase{"IntOverflowWraps", "i : INT := 32767;", "i := i + 1; x := i;", -32768},
+        IntCase{"SintOverflowWraps", "s : SINT := 127;", "s := s + 1; x := s;", -128},
+        IntCase{"UsintUnderflowWraps", "u : USINT;", "u := u - 1; x := u;", 255},
+        IntCase{"DintMultiplyWraps", "d : DINT := 65536;", "d := d * d; x := d;", 0},
+        IntCase{"NestedIntArithmeticDoesNotOverflowBeforeMod", "a, b : INT := 300;",
+                "x := (a * b) MOD 1000;", 0},
+        IntCase{"IntWidensToLint", "i : INT := -3;", "x := i;", -3},
+        IntCase{"PowerIsLreal", "", "x := LREAL_TO_LINT(2 ** 10);", 1024},
+        IntCase{"BitAnd", "w : WORD := 16#F0F0;", "w := w AND 16#FF00; x := WORD_TO_LINT(w);", 0xF000},
+        IntCase{"BitOrXorNot", "w : WORD := 16#00F0;",
+                "w := (w OR 16#0F00) XOR 16#0FF0; x := WORD_TO_LINT(NOT w);", 0xFFFF},
+        IntCase{"ShiftLeft", "b : BYTE := 16#81;", "x := BYTE_TO_LINT(SHL(b, 1));", 0x02},
+        IntCase{"ShiftRight", "d : DWORD := 16#80000000;", "x := DWORD_TO_LINT(SHR(d, 31));", 1},
+        IntCase{"RotateLeft", "b : BYTE := 16#81;", "x := BYTE_TO_LINT(ROL(b, 1));", 0x03},
+        IntCase{"RotateRight", "b : BYTE := 16#81;", "x := BYTE_TO_LINT(ROR(b, 1));", 0xC0},
+        IntCase{"BooleanOperators", "b : BOOL;",
+                "b := (3 < 4) AND NOT (2 = 3) AND (1 <> 2 XOR FALSE); x := BOOL_TO_LINT(b);", 1},
+        IntCase{"RealToIntRoundsHalfAwayFromZero", "", "x := REAL_TO_INT(2.5);", 3},
+        IntCase{"NegativeRealRounds", "", "x := LREAL_TO_DINT(-2.5);", -3},
+        IntCase{"TruncTowardZero", "", "x := TRUNC(-2.7);", -2},
+        IntCase{"NarrowingConversionWraps", "", "x := DINT_TO_SINT(300);", 44},
+        IntCase{"TimeToDintInMilliseconds", "", "x := TIME_TO_DINT(T#1s500ms);", 1500},
+        IntCase{"DintToTime", "t : TIME;", "t := DINT_TO_TIME(250); x := TIME_TO_LINT(t);", 250},
+        IntCase{"TimeArithmetic", "t : TIME := T#1s;",
+                "t := t + T#500ms - T#250ms; x := TIME_TO_DINT(t);", 1250},
+        IntCase{"Max", "", "x := MAX(3, 7, 5);", 7},
+        IntCase{"Min", "a : INT := 4;", "x := MIN(a, 9, -2);", -2},
+        IntCase{"LimitAbove", "", "x := LIMIT(0, 15, 10);", 10},
+        IntCase{"LimitBelow", "", "x := LIMIT(0, -15, 10);", 0},
+        IntCase{"LimitInside", "", "x := LIMIT(0, 5, 10);", 5},
+        IntCase{"Sel", "", "x := SEL(TRUE, 1, 2);", 2},
+        IntCase{"Mux", "k : INT := 2;", "x := MUX(k, 10, 20, 30);", 30},
+        IntCase{"Abs", "d : DINT := -5;", "x := ABS(d);", 5},
+        IntCase{"Sqrt", "", "x := LREAL_TO_LINT(SQRT(16.0));", 4},
+        IntCase{"ExtensibleComparison", "", "x := BOOL_TO_LINT(GT(5, 4, 3) AND NOT GT(5, 6, 3));",
+                1},
+        IntCase{"AddFunction", "", "x := ADD(1, 2, 3, 4);", 10},
+        IntCase{"Move", "", "x := MOVE(42);", 42},
+        IntCase{"ArrayElement", "a : ARRAY[1..5] OF INT := [1, 2(7), 3];", "x := a[3] + a[4];", 10},
+        IntCase{"ArrayIndexedByVariable", "a : ARRAY[1..5] OF INT := [1, 2, 3, 4, 5]; i : INT := 5;",
+                "a[i] := 50; x := a[i] + a[1];", 51},
+        IntCase{"TwoDimensionalArray", "m : ARRAY[0..2, 1..3] OF DINT; i, j : INT;",
+                "FOR i := 0 TO 2 DO FOR j := 1 TO 3 DO m[i, j] := i * 10 + j; END_FOR; END_FOR;"
+                "i := 2; j := 3; x := m[i, j] + m[1, 2];",
+                35},
+        IntCase{"Reference", "d : DINT; p : REF_TO DINT;", "p := REF(d); p^ := 5; x := d + p^;",
+                10},
+        IntCase{"NullReferenceCompares", "p : REF_TO DINT;", "IF p = NULL THEN x := 1; END_IF;", 1},
+        IntCase{"UnsignedCompare", "u : UDINT := 16#FFFFFFFF;", "IF u > 1 THEN x := 1; END_IF;", 1}),
+    [](const auto& c) { return c.param.name; });
+
+TEST(StructsAndEnums, ArraysOfStructuresAndEnumerationsRun) {
+    StProgram run(R"(
+TYPE
+  Color : (Red, Green := 5, Blue);
+  Point : STRUCT x : DINT := 1; y : DINT; c : Color := Blue; END_STRUCT;
+END_TYPE
+PROGRAM Main
+VAR
+  pts : ARRAY[0..3] OF Point;
+  p : Point := (y := 7);
+  i : INT;
+  sum : DINT;
+  c : Color;
+  n : INT;
+END_VAR
+FOR i := 0 TO 3 DO pts[i].y := INT_TO_DINT(i) * 2; END_FOR;
+pts[2] := p;
+sum := 0;
+FOR i := 0 TO 3 DO sum := sum + pts[i].x + pts[i].y; END_FOR;
+c := Color#Green;
+IF c = Green AND pts[0].c = Blue THEN n := 6; END_IF;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    // x: 4 * 1; y: 0 + 2 + 7 + 6.
+    EXPECT_EQ(run.get<std::int32_t>("Main.sum"), 4 + 15);
+    EXPECT_EQ(run.get<std::int16_t>("Main.c"), 5);
+    EXPECT_EQ(run.get<std::int16_t>("Main.n"), 6);
+    EXPECT_EQ(run.get<std::int16_t>("Main.pts[3].c"), 6);
+}
+
+TEST(Reals, ArithmeticAndFunctions) {
+    StProgram run(R"(
+PROGRAM Main
+VAR a : REAL := 1.5; b : LREAL; c : LREAL; i : INT := 3; END_VAR
+b := a * 2.0 + i;
+c := SIN(0.0) + EXPT(2.0, 3.0) + ABS(-1.25);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_DOUBLE_EQ(run.get<double>("Main.b"), 6.0);
+    EXPECT_DOUBLE_EQ(run.get<double>("Main.c"), 9.25);
+}
+
+} // namespace
+} // namespace eposp::compiler::test
