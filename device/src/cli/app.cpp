@@ -17,6 +17,10 @@ int run_cli(int argc, char** argv) {
     cli::add_node_command(app, exit_code);
     cli::add_drive_command(app, exit_code);
     cli::add_check_command(app, exit_code);
+    cli::add_build_command(app, exit_code);
+    cli::add_dump_command(app, exit_code);
+    cli::add_run_command(app, exit_code);
+    cli::add_bench_command(app, exit_code);
 
     try {
         app.parse(argc, argv);

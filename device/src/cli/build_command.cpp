@@ -1,0 +1,56 @@
+// `eposp build FILES… [-o app.epx]`: compiles the Structured Text files of one program into a
+// program image, the file `eposp run`, `eposp dump` and a download take.
+#include "commands.hpp"
+#include "eposp/vm/image_format.hpp"
+#include "options.hpp"
+#include "program_input.hpp"
+
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <memory>
+
+namespace eposp::device::cli {
+namespace {
+
+constexpr std::string_view kCommand = "build";
+
+struct BuildOptions {
+    std::vector<std::string> paths;
+    std::string output; // empty: the first file's name with .epx
+};
+
+int run_build(const BuildOptions& options) {
+    const auto image = compile_sources(options.paths);
+    if (!image) {
+        return report_user_error(kCommand, image.error());
+    }
+    const std::string output =
+        options.output.empty()
+            ? std::filesystem::path(options.paths.front()).replace_extension(".epx").string()
+            : options.output;
+    const auto bytes = vm::write_image(*image);
+    std::ofstream out(output, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
+    if (!out.flush()) {
+        return report_user_error(kCommand, "cannot write " + output);
+    }
+    fmt::print("{}: {} bytes, {} POUs, {} tasks\n", output, bytes.size(), image->pous.size(),
+               image->tasks.size());
+    return 0;
+}
+
+} // namespace
+
+void add_build_command(CLI::App& app, int& exit_code) {
+    auto options = std::make_shared<BuildOptions>();
+    CLI::App* command =
+        app.add_subcommand("build", "Compile the Structured Text files of one program to an image");
+    command->add_option("files", options->paths, "The .st files of the program")->required();
+    command->add_option("-o,--output", options->output,
+                        "The image file to write (default: the first file with .epx)");
+    command->callback([options, &exit_code] { exit_code = run_build(*options); });
+}
+
+} // namespace eposp::device::cli

@@ -1,0 +1,138 @@
+// `eposp build`, `dump`, `run` and `bench` as a user meets them: ST files to an image and back
+// to text, a program's tasks run in virtual time, the benchmark programs scanned.
+#include "eposp_command.hpp"
+
+#include <fstream>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace eposp::device {
+namespace {
+
+using testing::HasSubstr;
+using testing::Not;
+
+std::string write_source(const std::string& name, const std::string& text) {
+    const auto path = scratch(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+}
+
+// Counts its cycles in a 1 ms task and divides by zero once `fail` is set.
+constexpr const char* kCounter = "PROGRAM Main\n"
+                                 "  VAR_EXTERNAL total : DINT; END_VAR\n"
+                                 "  VAR count : DINT; fail : BOOL; zero : DINT; END_VAR\n"
+                                 "  count := count + 1;\n"
+                                 "  total := total + 2;\n"
+                                 "  IF fail THEN\n"
+                                 "    count := count / zero;\n"
+                                 "  END_IF;\n"
+                                 "END_PROGRAM\n"
+                                 "CONFIGURATION Config0\n"
+                                 "  VAR_GLOBAL total : DINT; END_VAR\n"
+                                 "  RESOURCE Res0 ON PLC\n"
+                                 "    TASK Fast(INTERVAL := T#1ms, PRIORITY := 0);\n"
+                                 "    PROGRAM Inst0 WITH Fast : Main;\n"
+                                 "  END_RESOURCE\n"
+                                 "END_CONFIGURATION\n";
+
+TEST(BuildCommand, WritesAnImageThatDumpDisassembles) {
+    const std::string source = write_source("counter.st", kCounter);
+    const std::string image = scratch("counter.epx").string();
+    const auto built = eposp("build " + source + " -o " + image);
+    ASSERT_EQ(built.exit_code, 0) << built.output;
+    EXPECT_THAT(built.output, HasSubstr(image));
+    const auto dumped = eposp("dump " + image);
+    EXPECT_EQ(dumped.exit_code, 0) << dumped.output;
+    EXPECT_THAT(dumped.output, HasSubstr("PROGRAM Main"));
+    EXPECT_THAT(dumped.output, HasSubstr("Fast"));
+    EXPECT_THAT(dumped.output, HasSubstr("Inst0 : Main"));
+}
+
+TEST(BuildCommand, WithoutOutputWritesBesideTheFirstFile) {
+    const std::string source = write_source("counter.st", kCounter);
+    const auto built = eposp("build " + source);
+    ASSERT_EQ(built.exit_code, 0) << built.output;
+    EXPECT_TRUE(std::filesystem::exists(scratch("counter.epx")));
+}
+
+TEST(BuildCommand, ProgramWithErrorsWritesNothingAndExitsWithOne) {
+    const std::string source = write_source(
+        "bad.st", "PROGRAM Main\n  VAR x : INT; END_VAR\n  x := 'text';\nEND_PROGRAM\n");
+    const auto built = eposp("build " + source + " -o " + scratch("bad.epx").string());
+    EXPECT_EQ(built.exit_code, 1);
+    EXPECT_THAT(built.output, HasSubstr(source + ":3:"));
+    EXPECT_FALSE(std::filesystem::exists(scratch("bad.epx")));
+}
+
+TEST(DumpCommand, CorruptImageIsRefusedWithTheReason) {
+    const std::string source = write_source("counter.st", kCounter);
+    const std::string image = scratch("counter.epx").string();
+    ASSERT_EQ(eposp("build " + source + " -o " + image).exit_code, 0);
+    std::filesystem::resize_file(image, 100);
+    const auto dumped = eposp("dump " + image);
+    EXPECT_EQ(dumped.exit_code, 1);
+    EXPECT_THAT(dumped.output, HasSubstr("eposp dump: error: " + image + ": image size mismatch"));
+}
+
+TEST(RunCommand, RunsTheTaskAtItsIntervalForTheDuration) {
+    const std::string source = write_source("counter.st", kCounter);
+    const auto result =
+        eposp("run " + source + " --for 10ms --watch Inst0.count --watch Config0.total");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("Fast: 11 cycles, every 1ms (priority 0)"));
+    EXPECT_THAT(result.output, HasSubstr("Inst0.count = 11"));
+    EXPECT_THAT(result.output, HasSubstr("Config0.total = 22"));
+}
+
+TEST(RunCommand, ImageAndSourcesRunAlike) {
+    const std::string source = write_source("counter.st", kCounter);
+    const std::string image = scratch("counter.epx").string();
+    ASSERT_EQ(eposp("build " + source + " -o " + image).exit_code, 0);
+    const auto from_image = eposp("run " + image + " --for 5ms --watch Inst0.count");
+    const auto from_source = eposp("run " + source + " --for 5ms --watch Inst0.count");
+    EXPECT_EQ(from_image.exit_code, 0) << from_image.output;
+    EXPECT_EQ(from_image.output, from_source.output);
+}
+
+TEST(RunCommand, RunTimeErrorStopsTheTaskNamingThePouAndLine) {
+    const std::string source = write_source(
+        "failing.st", std::string(kCounter).replace(std::string(kCounter).find("fail : BOOL"), 11,
+                                                    "fail : BOOL := TRUE"));
+    const auto result = eposp("run " + source + " --for 10ms");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("Fast: stopped after 0 cycles: division by zero in Main "
+                                         "at line 7"));
+}
+
+TEST(RunCommand, UnknownWatchPathIsAUserErrorBeforeTheRun) {
+    const std::string source = write_source("counter.st", kCounter);
+    const auto result = eposp("run " + source + " --watch Inst0.nothing");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("eposp run: error: --watch Inst0.nothing"));
+    EXPECT_THAT(result.output, Not(HasSubstr("cycles")));
+}
+
+TEST(BenchCommand, BenchmarkProgramGivesTheTableResults) {
+    const auto result = eposp("bench " + std::string(EPOSP_SOURCE_DIR) +
+                              "/tests/compiler/inputs/crc32.st --scans 1000");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("cycles=1000 "));
+    EXPECT_THAT(result.output, HasSubstr("result=1099718708 "));
+    EXPECT_THAT(result.output, HasSubstr("r=514947.000000 "));
+    EXPECT_THAT(result.output, HasSubstr("us_per_scan="));
+}
+
+TEST(BenchCommand, ProgramWithoutCyclicTaskIsAUserError) {
+    const std::string source = write_source(
+        "event.st", "PROGRAM Main\n  VAR x : INT; END_VAR\n  x := x + 1;\nEND_PROGRAM\n"
+                    "CONFIGURATION C\n  VAR_GLOBAL go : BOOL; END_VAR\n  RESOURCE R ON PLC\n"
+                    "    TASK E(SINGLE := go, PRIORITY := 1);\n    PROGRAM I WITH E : Main;\n"
+                    "  END_RESOURCE\nEND_CONFIGURATION\n");
+    const auto result = eposp("bench " + source);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("no cyclic task"));
+}
+
+} // namespace
+} // namespace eposp::device
