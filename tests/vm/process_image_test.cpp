@@ -96,7 +96,7 @@ TEST(ProcessImage, InputsReachEveryKindOfLocatedVariable) {
                                     {IoArea::Input, Scalar::I16, 32, 0, 12},
                                     {IoArea::Input, Scalar::U32, 160, 0, 16}});
     std::vector<std::uint8_t> memory(64, 0xEE);
-    process.read_inputs(image, memory);
+    process.read_inputs(image.bindings, memory);
     EXPECT_EQ(load<std::int8_t>(memory, 8), -2);
     EXPECT_EQ(memory[9], 1);
     EXPECT_EQ(memory[10], 0);
@@ -110,10 +110,10 @@ TEST(ProcessImage, OutputBitsChangeOnlyTheirOwnBit) {
     const Image image = image_with({{IoArea::Output, Scalar::Bool, 0, 2, 8}});
     std::vector<std::uint8_t> memory(64, 0);
     memory[8] = 1;
-    process.write_outputs(image, memory);
+    process.write_outputs(image.bindings, memory);
     EXPECT_EQ(process.outputs()[0], 0b1000'0101);
     memory[8] = 0;
-    process.write_outputs(image, memory);
+    process.write_outputs(image.bindings, memory);
     EXPECT_EQ(process.outputs()[0], 0b1000'0001);
 }
 
@@ -123,7 +123,7 @@ TEST(ProcessImage, OutputWordsLandInTheirObjectEntries) {
     std::vector<std::uint8_t> memory(64, 0);
     const std::int32_t value = -123456;
     std::memcpy(memory.data() + 8, &value, 4);
-    process.write_outputs(image, memory);
+    process.write_outputs(image.bindings, memory);
     const auto entry = process.entry(0xA640, 1);
     std::int32_t published;
     std::memcpy(&published, entry->data(), 4);

@@ -1,6 +1,7 @@
 #include "eposp/vm/process_image.hpp"
 
-#include <cstring>
+#include "located_copy.hpp"
+
 #include <fmt/format.h>
 
 namespace eposp::vm {
@@ -9,10 +10,6 @@ namespace {
 std::span<const ProcessImageObject> objects_of(IoArea area) {
     return area == IoArea::Input ? std::span<const ProcessImageObject>(kInputObjects)
                                  : std::span<const ProcessImageObject>(kOutputObjects);
-}
-
-std::uint32_t binding_size(const IoBinding& binding) {
-    return binding.type == Scalar::Bool ? 1 : scalar_size(binding.type);
 }
 
 bool in_process_image(const IoBinding& binding) {
@@ -60,7 +57,7 @@ std::optional<core::Error> ProcessImage::check_bindings(const Image& image) {
             return core::Error{fmt::format("bit {} of a byte does not exist", binding.bit)};
         }
         if (in_process_image(binding) &&
-            binding.byte_address + binding_size(binding) > kProcessImageSize) {
+            binding.byte_address + detail::binding_size(binding) > kProcessImageSize) {
             return core::Error{
                 fmt::format("%{}{} is outside the process image (bytes 0..{} of the EPOS P)",
                             binding.area == IoArea::Input ? 'I' : 'Q', binding.byte_address,
@@ -70,33 +67,28 @@ std::optional<core::Error> ProcessImage::check_bindings(const Image& image) {
     return std::nullopt;
 }
 
-void ProcessImage::read_inputs(const Image& image, std::span<std::uint8_t> memory) const {
-    for (const IoBinding& binding : image.bindings) {
-        if (binding.area != IoArea::Input) {
-            continue;
-        }
-        if (binding.type == Scalar::Bool) {
-            memory[binding.offset] = (inputs_[binding.byte_address] >> binding.bit) & 1U;
-        } else {
-            std::memcpy(memory.data() + binding.offset, inputs_.data() + binding.byte_address,
-                        scalar_size(binding.type));
+void ProcessImage::read_inputs(std::span<const IoBinding> bindings,
+                               std::span<std::uint8_t> memory) const {
+    for (const IoBinding& binding : bindings) {
+        if (binding.area == IoArea::Input) {
+            detail::copy_into_variable(inputs_, binding, memory);
         }
     }
 }
 
-void ProcessImage::write_outputs(const Image& image, std::span<const std::uint8_t> memory) {
-    for (const IoBinding& binding : image.bindings) {
-        if (binding.area != IoArea::Output) {
-            continue;
+void ProcessImage::write_outputs(std::span<const IoBinding> bindings,
+                                 std::span<const std::uint8_t> memory) {
+    for (const IoBinding& binding : bindings) {
+        if (binding.area == IoArea::Output) {
+            detail::copy_into_area(outputs_, binding, memory);
         }
-        if (binding.type == Scalar::Bool) {
-            const auto mask = static_cast<std::uint8_t>(1U << binding.bit);
-            auto& byte = outputs_[binding.byte_address];
-            byte = memory[binding.offset] != 0 ? static_cast<std::uint8_t>(byte | mask)
-                                               : static_cast<std::uint8_t>(byte & ~mask);
-        } else {
-            std::memcpy(outputs_.data() + binding.byte_address, memory.data() + binding.offset,
-                        scalar_size(binding.type));
+    }
+}
+
+void ProcessImage::clear_outputs(std::span<const IoBinding> bindings) {
+    for (const IoBinding& binding : bindings) {
+        if (binding.area == IoArea::Output) {
+            detail::clear_in_area(outputs_, binding);
         }
     }
 }

@@ -51,7 +51,7 @@ bool is_configuration_global(const vm::Image& image, const vm::Symbol& symbol) {
 /// Reals with six decimals, the form of the expected-results table; other types as literals.
 std::string bench_value(PlcSession& session, const vm::Symbol& symbol) {
     const vm::TypeDescriptor& type = session.image().types.at(symbol.type);
-    const auto bytes = session.machine().memory().subspan(symbol.offset);
+    const auto bytes = session.runtime().memory().subspan(symbol.offset);
     if (type.kind == vm::TypeKind::Elementary && type.scalar == vm::Scalar::F64) {
         double value;
         std::memcpy(&value, bytes.data(), sizeof value);
@@ -85,13 +85,15 @@ int run_bench(const BenchOptions& options) {
         session.loop().now() + interval * static_cast<core::Duration::rep>(options.scans - 1);
 
     const auto wall_start = std::chrono::steady_clock::now();
-    session.scheduler().start();
+    if (const auto error = session.runtime().start(vm::StartMode::Cold)) {
+        return report_user_error(kCommand, error->message);
+    }
     session.loop().run_until(last_scan);
     const std::chrono::duration<double, std::micro> wall =
         std::chrono::steady_clock::now() - wall_start;
 
-    if (session.scheduler().faulted(*pacing)) {
-        return report_user_error(kCommand, session.machine().describe_fault(*pacing));
+    if (session.runtime().task_faulted(*pacing)) {
+        return report_user_error(kCommand, session.runtime().fault_text(*pacing));
     }
     for (const vm::Symbol& symbol : session.image().symbols) {
         if (is_configuration_global(session.image(), symbol)) {

@@ -1,6 +1,6 @@
-// `eposp run app.epx|FILES… [--for 10s] [--watch PATH]…`: runs a program's tasks as its
-// configuration declares them, in virtual time, and prints what each task did and the watched
-// variables at the end.
+// `eposp run app.epx|FILES… [--for 10s] [--watch PATH]… [--ns-per-instruction N]
+// [--retain FILE --start warm]`: runs a program in the PLC runtime in virtual time, and prints
+// each task's statistics, the errors raised and the watched variables at the end.
 #include "commands.hpp"
 #include "options.hpp"
 #include "plc_session.hpp"
@@ -20,25 +20,61 @@ struct RunOptions {
     std::vector<std::string> paths;
     std::optional<core::Duration> duration;
     std::vector<std::string> watch;
+    std::uint64_t ns_per_instruction = 0;
+    std::uint64_t watchdog = vm::RuntimeConfig{}.watchdog_instructions;
+    std::optional<std::string> retain_file;
+    std::string start = "cold";
 };
+
+std::string statistics_line(const vm::TaskStatistics& s) {
+    return fmt::format("execution last {} min {} avg {} max {}, jitter last {} max {}, "
+                       "{} overruns, {} instructions in the last cycle",
+                       core::format_duration(s.execution_last),
+                       core::format_duration(s.execution_min),
+                       core::format_duration(s.execution_average()),
+                       core::format_duration(s.execution_max), core::format_duration(s.jitter_last),
+                       core::format_duration(s.jitter_max), s.overruns, s.instructions_last);
+}
 
 void print_task_summary(PlcSession& session) {
     const auto& tasks = session.image().tasks;
+    vm::PlcRuntime& runtime = session.runtime();
     for (std::size_t task = 0; task < tasks.size(); ++task) {
         const vm::Task& spec = tasks[task];
-        const std::uint64_t cycles = session.scheduler().cycles(task);
+        const vm::TaskStatistics& statistics = runtime.statistics(task);
         const std::string when =
             spec.kind == vm::TaskKind::Cyclic
                 ? "every " + core::format_duration(core::Duration(spec.interval_ns))
                 : std::string("on its event");
-        if (session.scheduler().faulted(task)) {
-            fmt::print("  {}: stopped after {} cycles: {}\n", spec.name, cycles,
-                       session.machine().describe_fault(task));
+        if (runtime.task_faulted(task)) {
+            fmt::print("  {}: stopped after {} cycles: {}\n", spec.name, statistics.cycles,
+                       runtime.fault_text(task));
         } else {
-            fmt::print("  {}: {} cycles, {} (priority {})\n", spec.name, cycles, when,
+            fmt::print("  {}: {} cycles, {} (priority {})\n", spec.name, statistics.cycles, when,
                        spec.priority);
         }
+        fmt::print("    {}\n", statistics_line(statistics));
     }
+}
+
+void print_errors(const PlcSession& session) {
+    for (const RaisedError& error : session.errors()) {
+        fmt::print("  error 0x{:04X} at {}: {}\n", error.code,
+                   core::format_duration(error.when.time_since_epoch()), error.text);
+    }
+}
+
+std::optional<vm::StartMode> start_mode(const std::string& name) {
+    if (name == "cold") {
+        return vm::StartMode::Cold;
+    }
+    if (name == "warm") {
+        return vm::StartMode::Warm;
+    }
+    if (name == "hot") {
+        return vm::StartMode::Hot;
+    }
+    return std::nullopt;
 }
 
 int run_program(const RunOptions& options) {
@@ -46,7 +82,13 @@ int run_program(const RunOptions& options) {
     if (!image) {
         return report_user_error(kCommand, image.error());
     }
-    auto opened = PlcSession::open(std::move(*image));
+    vm::RuntimeConfig config;
+    config.cost.ns_per_instruction = options.ns_per_instruction;
+    config.watchdog_instructions = options.watchdog;
+    if (options.retain_file) {
+        config.retain_file = *options.retain_file;
+    }
+    auto opened = PlcSession::open(std::move(*image), std::move(config));
     if (!opened) {
         return report_user_error(kCommand, opened.error());
     }
@@ -57,16 +99,22 @@ int run_program(const RunOptions& options) {
             return report_user_error(kCommand, fmt::format("--watch {}: {}", path, value.error()));
         }
     }
-    bool faulted = false;
-    session.scheduler().on_fault([&faulted](std::size_t) { faulted = true; });
-    session.scheduler().start();
+    if (const auto error = session.runtime().start(*start_mode(options.start))) {
+        return report_user_error(kCommand, error->message);
+    }
     const core::Duration duration = options.duration.value_or(kDefaultDuration);
     session.loop().run_until(session.loop().now() + duration);
+    session.runtime().stop(); // saves the RETAIN variables
 
     fmt::print("ran {} of virtual time\n", core::format_duration(duration));
     print_task_summary(session);
+    print_errors(session);
     for (const std::string& path : options.watch) {
         fmt::print("{} = {}\n", path, *session.value_of(path));
+    }
+    bool faulted = false;
+    for (std::size_t task = 0; task < session.image().tasks.size(); ++task) {
+        faulted = faulted || session.runtime().task_faulted(task);
     }
     return faulted ? 1 : 0;
 }
@@ -82,6 +130,20 @@ void add_run_command(CLI::App& app, int& exit_code) {
     add_duration_option(*command, "--for", options->duration, "Virtual time to run (default 10s)");
     command->add_option("--watch", options->watch,
                         "Print this variable at the end (e.g. Inst0.counter); repeatable");
+    command
+        ->add_option("--ns-per-instruction", options->ns_per_instruction,
+                     "Virtual time one VM instruction takes (0: cycles take no time)")
+        ->capture_default_str();
+    command
+        ->add_option("--watchdog", options->watchdog,
+                     "Instructions one task cycle may execute before it is stopped")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    command->add_option("--retain", options->retain_file,
+                        "File the RETAIN variables are kept in between runs");
+    command->add_option("--start", options->start, "Start mode: cold, warm or hot")
+        ->check(CLI::IsMember({"cold", "warm", "hot"}))
+        ->capture_default_str();
     command->callback([options, &exit_code] { exit_code = run_program(*options); });
 }
 

@@ -68,12 +68,15 @@ public:
 
     /// Refuses an image with a %I or %Q binding outside the process image.
     static std::optional<core::Error> check_bindings(const Image& image);
-    /// Inputs into the variables bound to them (%IX bits as BOOL 0/1). The image must have
-    /// passed verify and check_bindings.
-    void read_inputs(const Image& image, std::span<std::uint8_t> memory) const;
+    /// Inputs into the variables bound to them (%IX bits as BOOL 0/1); other areas' bindings
+    /// are skipped. The bindings must have passed check_bindings: `bindings` is all of an
+    /// image's or those of the task about to run.
+    void read_inputs(std::span<const IoBinding> bindings, std::span<std::uint8_t> memory) const;
     /// The variables bound to outputs into the output image (%QX bits set or cleared).
-    void write_outputs(const Image& image, std::span<const std::uint8_t> memory);
-    /// Every output to zero: the safe state of a stopped or faulted program.
+    void write_outputs(std::span<const IoBinding> bindings, std::span<const std::uint8_t> memory);
+    /// The outputs of these bindings to zero: the safe state of a faulted task.
+    void clear_outputs(std::span<const IoBinding> bindings);
+    /// Every output to zero: the safe state of a stopped program.
     void clear_outputs() { outputs_.fill(0); }
 
 private:
