@@ -27,7 +27,7 @@ void TaskDispatcher::start() {
     for (Slot& slot : slots_) {
         slot.next_release = loop_.now();
     }
-    check_event_inputs();
+    release_on_rising_edges();
     dispatch();
 }
 
@@ -50,6 +50,11 @@ void TaskDispatcher::raise_event(std::size_t task) {
 }
 
 void TaskDispatcher::check_event_inputs() {
+    release_on_rising_edges();
+    dispatch();
+}
+
+void TaskDispatcher::release_on_rising_edges() {
     const auto memory = machine_.memory();
     for (std::size_t task = 0; task < slots_.size(); ++task) {
         Slot& slot = slots_[task];
@@ -183,7 +188,7 @@ void TaskDispatcher::end_slice(std::size_t task, Outcome outcome) {
         slot.statistics.record_cycle(slot.executed, cost_of(slot.executed),
                                      slot.started_at - slot.due);
         hooks_.after_cycle(task);
-        check_event_inputs();
+        release_on_rising_edges();
         return;
     case Outcome::Faulted:
         slot.active = slot.started = false;

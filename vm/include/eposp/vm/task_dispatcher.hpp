@@ -59,7 +59,8 @@ public:
     /// The device's event for an event task (a digital input edge, a CAN message or PDO, an
     /// error): releases it, or reports 0x6184 when it is still busy.
     void raise_event(std::size_t task);
-    /// Looks for rising edges of the event tasks' SINGLE variables (after an online write).
+    /// Looks for rising edges of the event tasks' SINGLE variables (after an online write) and
+    /// runs what they release.
     void check_event_inputs();
 
     /// Instructions one cycle of the task may execute (all its programs together).
@@ -88,6 +89,7 @@ private:
 
     bool releases_cyclically(const Slot& slot) const;
     void dispatch();
+    void release_on_rising_edges();
     void release_due_tasks();
     void release(std::size_t task, core::TimePoint due, std::uint16_t overrun_code);
     std::optional<std::size_t> next_to_run() const;
