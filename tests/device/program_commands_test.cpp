@@ -105,6 +105,38 @@ TEST(RunCommand, RunTimeErrorStopsTheTaskNamingThePouAndLine) {
                                          "at line 7"));
 }
 
+TEST(RunCommand, PrintsEachTasksTimingUnderTheCostModel) {
+    const std::string source = write_source("counter.st", kCounter);
+    const auto result = eposp("run " + source + " --for 10ms --ns-per-instruction 100");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    // The cycle due at 10 ms ends after it: ten complete cycles of 4 instructions.
+    EXPECT_THAT(result.output, HasSubstr("Fast: 10 cycles, every 1ms (priority 0)"));
+    EXPECT_THAT(result.output,
+                HasSubstr("execution last 400ns min 400ns avg 400ns max 400ns, jitter last "
+                          "0s max 0s, 0 overruns, 4 instructions in the last cycle"));
+}
+
+TEST(RunCommand, OverrunsAreReportedAsTimerTaskErrors) {
+    const std::string source = write_source("counter.st", kCounter);
+    const auto result = eposp("run " + source + " --for 3ms --ns-per-instruction 300000");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    // 1.2 ms per cycle in a 1 ms task: the release at 1 ms finds the first cycle running.
+    EXPECT_THAT(result.output, HasSubstr("error 0x6183 at 1ms: task Fast still running when its "
+                                         "next cycle was due; cycle skipped"));
+    EXPECT_THAT(result.output, HasSubstr("2 overruns")); // at 1 and 3 ms
+}
+
+TEST(RunCommand, WarmStartContinuesTheRetainVariablesOfTheLastRun) {
+    const std::string source = write_source(
+        "retain.st", "PROGRAM Main\n  VAR RETAIN n : DINT; END_VAR\n  n := n + 1;\nEND_PROGRAM\n");
+    const std::string retain = scratch("retain.bin").string();
+    std::filesystem::remove(retain);
+    const std::string run = "run " + source + " --for 25ms --watch Main.n --retain " + retain;
+    EXPECT_THAT(eposp(run).output, HasSubstr("Main.n = 3"));
+    EXPECT_THAT(eposp(run + " --start warm").output, HasSubstr("Main.n = 6"));
+    EXPECT_THAT(eposp(run + " --start cold").output, HasSubstr("Main.n = 3"));
+}
+
 TEST(RunCommand, UnknownWatchPathIsAUserErrorBeforeTheRun) {
     const std::string source = write_source("counter.st", kCounter);
     const auto result = eposp("run " + source + " --watch Inst0.nothing");
