@@ -37,7 +37,12 @@ Image counting_tasks(std::uint32_t tasks, std::optional<std::int32_t> iterations
         b.jump(Opcode::JLtI32, loop, Operand::self(0), Operand::self(4));
         b.emit(Opcode::Ret);
         b.end_body(0, 0);
-        b.task(Task{"T" + std::to_string(t), TaskKind::Cyclic, 1'000'000, 0, t, 64,
+        b.task(Task{"T" + std::to_string(t),
+                    TaskKind::Cyclic,
+                    1'000'000,
+                    0,
+                    t,
+                    64,
                     {TaskEntry{pou, instance}}});
     }
     auto image = b.finish();
@@ -74,9 +79,9 @@ void BM_UninterruptedLoop(benchmark::State& state) {
     for (auto _ : state) {
         machine.run_cycle(0);
     }
-    state.counters["per_iteration"] = benchmark::Counter(
-        static_cast<double>(state.iterations()) * kIterations,
-        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["per_iteration"] =
+        benchmark::Counter(static_cast<double>(state.iterations()) * kIterations,
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_UninterruptedLoop);
 
@@ -93,9 +98,9 @@ void BM_RuntimeCycle(benchmark::State& state) {
     for (auto _ : state) {
         loop.run_for(std::chrono::milliseconds(1));
     }
-    state.counters["per_cycle"] = benchmark::Counter(
-        static_cast<double>(state.iterations()), benchmark::Counter::kIsRate |
-                                                     benchmark::Counter::kInvert);
+    state.counters["per_cycle"] =
+        benchmark::Counter(static_cast<double>(state.iterations()),
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_RuntimeCycle);
 
@@ -109,8 +114,8 @@ void BM_ProcessImageCopy(benchmark::State& state) {
         for (const ProcessImageObject& object : objects) {
             const std::uint32_t size = scalar_size(object.type);
             for (std::uint32_t entry = 0; entry < kEntriesPerObject; ++entry) {
-                bindings.push_back({area, object.type, object.first_byte + entry * size, 0,
-                                    offset});
+                bindings.push_back(
+                    {area, object.type, object.first_byte + entry * size, 0, offset});
                 offset += 4;
             }
         }
@@ -123,9 +128,9 @@ void BM_ProcessImageCopy(benchmark::State& state) {
         benchmark::DoNotOptimize(memory.data());
         benchmark::DoNotOptimize(image.outputs().data());
     }
-    state.counters["per_entry"] = benchmark::Counter(
-        static_cast<double>(state.iterations() * bindings.size()),
-        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["per_entry"] =
+        benchmark::Counter(static_cast<double>(state.iterations() * bindings.size()),
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_ProcessImageCopy);
 

@@ -67,8 +67,7 @@ TEST_F(ProgramControl, StateAndObjectValueFollowStartAndStop) {
         ASSERT_FALSE(h.runtime->start(mode));
         EXPECT_EQ(h.runtime->state(), ProgramState::Running);
         EXPECT_EQ(h.runtime->program_control(), static_cast<std::uint16_t>(mode));
-        EXPECT_EQ(h.runtime->start(mode)->message,
-                  "the program is already running; stop it first");
+        EXPECT_EQ(h.runtime->start(mode)->message, "the program is already running; stop it first");
         EXPECT_EQ(h.runtime->load(*RuntimeHarness::compile_st(kCounters))->message,
                   "a program is running; stop it before loading another");
         h.runtime->stop();
@@ -164,7 +163,7 @@ TEST_F(ProgramControl, PeriodicSavesSurviveAPowerLossWithoutStop) {
         ASSERT_EQ(lost_power.load(kCounters), "");
         ASSERT_FALSE(lost_power.runtime->start(StartMode::Cold));
         lost_power.loop.run_for(33ms); // cycles at 0, 10, 20, 30; saves at 7, 14, 21, 28
-    } // destroyed running: no stop, no final save
+    }                                  // destroyed running: no stop, no final save
     RuntimeHarness h(with_retain());
     ASSERT_EQ(h.load(kCounters), "");
     ASSERT_FALSE(h.runtime->start(StartMode::Warm));

@@ -63,19 +63,19 @@ TEST_P(ProcessImageMapping, InputEntryReachesTheProgramAndItsResultTheOutputEntr
     auto output = h.runtime->process_image().entry(c.output, c.output_sub);
     ASSERT_TRUE(output) << output.error();
     const std::int64_t expected = read_entry(*input) + 1;
-    EXPECT_EQ(read_entry(*output), read_entry(std::span<const std::uint8_t>(
-                                       reinterpret_cast<const std::uint8_t*>(&expected),
-                                       output->size())));
+    EXPECT_EQ(read_entry(*output),
+              read_entry(std::span<const std::uint8_t>(
+                  reinterpret_cast<const std::uint8_t*>(&expected), output->size())));
 }
 
 INSTANTIATE_TEST_SUITE_P(
     EveryObject, ProcessImageMapping,
-    ::testing::Values(EntryCase{0xA000, 1, 0xA400, 1, -5},           // %IB0 SINT
-                      EntryCase{0xA000, 16, 0xA400, 16, 126},        // %IB15
-                      EntryCase{0xA040, 1, 0xA4C0, 1, 200},          // %IB16 BYTE
-                      EntryCase{0xA0C0, 1, 0xA540, 1, -30000},       // %IW16 INT
-                      EntryCase{0xA100, 16, 0xA580, 16, 65000},      // %IW47 UINT
-                      EntryCase{0xA1C0, 1, 0xA640, 1, -2'000'000'000}, // %ID24 DINT
+    ::testing::Values(EntryCase{0xA000, 1, 0xA400, 1, -5},                // %IB0 SINT
+                      EntryCase{0xA000, 16, 0xA400, 16, 126},             // %IB15
+                      EntryCase{0xA040, 1, 0xA4C0, 1, 200},               // %IB16 BYTE
+                      EntryCase{0xA0C0, 1, 0xA540, 1, -30000},            // %IW16 INT
+                      EntryCase{0xA100, 16, 0xA580, 16, 65000},           // %IW47 UINT
+                      EntryCase{0xA1C0, 1, 0xA640, 1, -2'000'000'000},    // %ID24 DINT
                       EntryCase{0xA200, 16, 0xA680, 16, 4'000'000'000})); // %ID55 UDINT
 
 TEST(ProcessImageBits, BitAddressesReadAndWriteOneBitOfTheirByte) {

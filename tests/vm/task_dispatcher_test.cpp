@@ -45,9 +45,8 @@ public:
 
 private:
     void add(const std::string& what, std::size_t task) {
-        events.push_back(
-            fmt::format("{} {} {}", loop_.now().time_since_epoch().count() / 1000, what,
-                        names.at(task)));
+        events.push_back(fmt::format("{} {} {}", loop_.now().time_since_epoch().count() / 1000,
+                                     what, names.at(task)));
     }
     core::EventLoop& loop_;
 };
@@ -83,7 +82,12 @@ public:
             const auto pou = b.declare_pou(spec.name + "Program", PouKind::Program, 8);
             const auto instance = b.allocate(8, 4);
             emit_busy_program(b, pou, instance, spec.instructions);
-            b.task(Task{spec.name, spec.kind, spec.interval_ns, 0, spec.priority, 64,
+            b.task(Task{spec.name,
+                        spec.kind,
+                        spec.interval_ns,
+                        0,
+                        spec.priority,
+                        64,
                         {TaskEntry{pou, instance}}});
             timeline.names.push_back(spec.name);
         }
@@ -114,12 +118,12 @@ TEST(TaskDispatcher, HigherPriorityPreemptsAtTheNextSafePointAndTheLowerResumes)
     // Low's slices end at the first safe point (a back-edge, every 2 instructions) at or after
     // High's release: exactly at it when Low's instructions so far are odd (2 ms), one
     // instruction later otherwise (4 and 6 ms), which is High's jitter then.
-    EXPECT_EQ(d.timeline.events, (std::vector<std::string>{
-                                     "0 begin High", "500 end High", "500 begin Low",
-                                     "2001 begin High", "2501 end High", // Low: 1501 done
-                                     "4001 begin High", "4501 end High", // Low: 3001 done
-                                     "6001 begin High", "6501 end High", // Low: 4501 done
-                                     "7000 end Low", "8000 begin High", "8500 end High"}));
+    EXPECT_EQ(d.timeline.events,
+              (std::vector<std::string>{"0 begin High", "500 end High", "500 begin Low",
+                                        "2001 begin High", "2501 end High", // Low: 1501 done
+                                        "4001 begin High", "4501 end High", // Low: 3001 done
+                                        "6001 begin High", "6501 end High", // Low: 4501 done
+                                        "7000 end Low", "8000 begin High", "8500 end High"}));
     const TaskStatistics& low = d.dispatcher->statistics(1);
     EXPECT_EQ(low.cycles, 1u);
     EXPECT_EQ(low.instructions_last, 5000u);
@@ -134,8 +138,8 @@ TEST(TaskDispatcher, HigherPriorityPreemptsAtTheNextSafePointAndTheLowerResumes)
 }
 
 TEST(TaskDispatcher, EqualPrioritiesRunInTableOrderWithoutPreemptingEachOther) {
-    Dispatched d({{"A", TaskKind::Cyclic, 3'000'000, 1, 2000},
-                  {"B", TaskKind::Cyclic, 1'000'000, 1, 500}});
+    Dispatched d(
+        {{"A", TaskKind::Cyclic, 3'000'000, 1, 2000}, {"B", TaskKind::Cyclic, 1'000'000, 1, 500}});
     d.dispatcher->start();
     d.loop.run_until(core::TimePoint{3ms});
     // Both are due at 0: A first, as the first in the table. B waits for A's whole cycle, so its
@@ -161,10 +165,9 @@ TEST(TaskDispatcher, CyclicTaskStillRunningAtItsNextReleaseIsATimerTaskError) {
     d.dispatcher->start();
     d.loop.run_until(core::TimePoint{4ms});
     EXPECT_EQ(d.timeline.events,
-              (std::vector<std::string>{"0 begin Slow", "1000 overrun 0x6183 Slow",
-                                        "1500 end Slow", "2000 begin Slow",
-                                        "3000 overrun 0x6183 Slow", "3500 end Slow",
-                                        "4000 begin Slow"}));
+              (std::vector<std::string>{"0 begin Slow", "1000 overrun 0x6183 Slow", "1500 end Slow",
+                                        "2000 begin Slow", "3000 overrun 0x6183 Slow",
+                                        "3500 end Slow", "4000 begin Slow"}));
     EXPECT_EQ(d.dispatcher->statistics(0).overruns, 2u);
     EXPECT_EQ(d.dispatcher->statistics(0).cycles, 2u);
 }
@@ -191,10 +194,10 @@ TEST(TaskDispatcher, EventTaskTriggeredWhileRunningIsAnInterruptTaskError) {
     d.loop.at(core::TimePoint{500us}, [&d] { d.dispatcher->raise_event(0); });
     d.loop.at(core::TimePoint{2ms}, [&d] { d.dispatcher->raise_event(0); });
     d.loop.run_until(core::TimePoint{5ms});
-    EXPECT_EQ(d.timeline.events,
-              (std::vector<std::string>{"0 begin OnInput", "500 overrun 0x6184 OnInput",
-                                        "1000 end OnInput", "2000 begin OnInput",
-                                        "3000 end OnInput"}));
+    EXPECT_EQ(
+        d.timeline.events,
+        (std::vector<std::string>{"0 begin OnInput", "500 overrun 0x6184 OnInput",
+                                  "1000 end OnInput", "2000 begin OnInput", "3000 end OnInput"}));
     EXPECT_EQ(d.dispatcher->statistics(0).overruns, 1u);
 }
 

@@ -47,9 +47,8 @@ std::optional<core::Error> PlcRuntime::load(Image image) {
     if (state() == ProgramState::Running) {
         return core::Error{"a program is running; stop it before loading another"};
     }
-    if (const auto error =
-            RetainStore(config_.retain_file.value_or(""), config_.retain_capacity)
-                .check_capacity(image)) {
+    if (const auto error = RetainStore(config_.retain_file.value_or(""), config_.retain_capacity)
+                               .check_capacity(image)) {
         return error;
     }
     if (const auto error = ProcessImage::check_bindings(image)) {
@@ -128,8 +127,9 @@ std::optional<std::size_t> PlcRuntime::task_index(std::string_view name) const {
     const auto& tasks = image().tasks;
     const auto it = std::find_if(tasks.begin(), tasks.end(),
                                  [name](const Task& task) { return task.name == name; });
-    return it == tasks.end() ? std::nullopt
-                             : std::optional<std::size_t>(static_cast<std::size_t>(it - tasks.begin()));
+    return it == tasks.end()
+               ? std::nullopt
+               : std::optional<std::size_t>(static_cast<std::size_t>(it - tasks.begin()));
 }
 
 void PlcRuntime::raise_event(std::size_t task) {
@@ -176,12 +176,12 @@ void PlcRuntime::on_fault(std::size_t task) {
 void PlcRuntime::on_overrun(std::size_t task, std::uint16_t code) {
     const std::string& name = image().tasks[task].name;
     markers_.record_overrun(task);
-    report(code,
-           code == error_code::kTimerTask
-               ? fmt::format("task {} still running when its next cycle was due; cycle skipped",
-                             name)
-               : fmt::format("task {} triggered again while running; event lost", name),
-           task);
+    report(
+        code,
+        code == error_code::kTimerTask
+            ? fmt::format("task {} still running when its next cycle was due; cycle skipped", name)
+            : fmt::format("task {} triggered again while running; event lost", name),
+        task);
 }
 
 void PlcRuntime::report(std::uint16_t code, std::string text, std::optional<std::size_t> task) {
@@ -276,10 +276,10 @@ void PlcRuntime::restore_retain() {
         return;
     case RetainOutcome::Corrupt:
     case RetainOutcome::OtherProgram:
-        report(error_code::kRetainVariable,
-               fmt::format("retain variables not restored ({}); cold start values",
-                           restored.reason),
-               std::nullopt);
+        report(
+            error_code::kRetainVariable,
+            fmt::format("retain variables not restored ({}); cold start values", restored.reason),
+            std::nullopt);
         return;
     }
 }

@@ -124,9 +124,9 @@ std::uint64_t TaskDispatcher::slice_for(std::size_t task) const {
         if (releases_cyclically(other) && other.spec->priority < slots_[task].spec->priority) {
             const auto until = static_cast<std::uint64_t>((other.next_release - now).count());
             // Instructions until the release (at least one: a slice ends at a safe point).
-            slice = std::min(slice, std::max<std::uint64_t>(
-                                        1, (until + cost_.ns_per_instruction - 1) /
-                                               cost_.ns_per_instruction));
+            slice =
+                std::min(slice, std::max<std::uint64_t>(1, (until + cost_.ns_per_instruction - 1) /
+                                                               cost_.ns_per_instruction));
         }
     }
     return slice;
@@ -232,10 +232,10 @@ void TaskDispatcher::dispatch() {
         // outputs of a finished cycle) happens then.
         slice_in_flight_ = true;
         slice_end_ = core::ScopedTimer(loop_, loop_.after(cost, [this, task = *task, outcome] {
-                                           slice_in_flight_ = false;
-                                           end_slice(task, outcome);
-                                           dispatch();
-                                       }));
+            slice_in_flight_ = false;
+            end_slice(task, outcome);
+            dispatch();
+        }));
         break;
     }
     dispatching_ = false;
@@ -256,7 +256,8 @@ void TaskDispatcher::arm_wake_up() {
 }
 
 core::Duration TaskDispatcher::cost_of(std::uint64_t instructions) const {
-    return core::Duration(static_cast<core::Duration::rep>(instructions * cost_.ns_per_instruction));
+    return core::Duration(
+        static_cast<core::Duration::rep>(instructions * cost_.ns_per_instruction));
 }
 
 } // namespace eposp::vm

@@ -18,11 +18,11 @@ inline constexpr std::uint32_t kSize = 1024;
 /// %MB0..%MB767: general purpose, zero at every start, for the programs' own use.
 inline constexpr std::uint32_t kGeneralPurposeSize = 768;
 /// %MB768..%MB1023: error information, written by the runtime, read-only for programs.
-inline constexpr std::uint32_t kLastErrorCode = 768;    ///< %MW384 UINT, 0 when none
-inline constexpr std::uint32_t kErrorCount = 770;       ///< %MW385 UINT, saturates at 65535
-inline constexpr std::uint32_t kLastErrorTask = 772;    ///< %MW386 UINT task number, or kNoTask
-inline constexpr std::uint32_t kLastOverrunTask = 774;  ///< %MW387 UINT task number, or kNoTask
-inline constexpr std::uint32_t kOverrunCount = 776;     ///< %MW388 UINT, saturates at 65535
+inline constexpr std::uint32_t kLastErrorCode = 768;   ///< %MW384 UINT, 0 when none
+inline constexpr std::uint32_t kErrorCount = 770;      ///< %MW385 UINT, saturates at 65535
+inline constexpr std::uint32_t kLastErrorTask = 772;   ///< %MW386 UINT task number, or kNoTask
+inline constexpr std::uint32_t kLastOverrunTask = 774; ///< %MW387 UINT task number, or kNoTask
+inline constexpr std::uint32_t kOverrunCount = 776;    ///< %MW388 UINT, saturates at 65535
 inline constexpr std::uint16_t kNoTask = 0xFFFF;
 } // namespace marker
 

@@ -102,13 +102,13 @@ public:
     const ForcedValues& forced() const { return forced_; }
 
     template <typename T>
-        requires std::is_trivially_copyable_v<T>
-    std::optional<core::Error> write_value(std::string_view path, T value) {
+    requires std::is_trivially_copyable_v<T> std::optional<core::Error>
+    write_value(std::string_view path, T value) {
         return write(path, as_bytes(value));
     }
     template <typename T>
-        requires std::is_trivially_copyable_v<T>
-    std::optional<core::Error> force_value(std::string_view path, T value) {
+    requires std::is_trivially_copyable_v<T> std::optional<core::Error>
+    force_value(std::string_view path, T value) {
         return force(path, as_bytes(value));
     }
 
