@@ -12,12 +12,6 @@ namespace {
 using testing::HasSubstr;
 using testing::Not;
 
-std::string write_source(const std::string& name, const std::string& text) {
-    const auto path = scratch(name);
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-}
-
 // Counts its cycles in a 1 ms task and divides by zero once `fail` is set.
 constexpr const char* kCounter = "PROGRAM Main\n"
                                  "  VAR_EXTERNAL total : DINT; END_VAR\n"
