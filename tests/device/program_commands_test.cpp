@@ -107,6 +107,16 @@ TEST(RunCommand, UnknownWatchPathIsAUserErrorBeforeTheRun) {
     EXPECT_THAT(result.output, Not(HasSubstr("cycles")));
 }
 
+// The README's example, as a user runs it.
+TEST(RunCommand, BlinkerExampleFlashesTwiceInASecond) {
+    const auto result = eposp("run " + std::string(EPOSP_SOURCE_DIR) +
+                              "/examples/plc-basics/blinker.st --for 1s --watch Cell.flashes");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("Cyclic: 101 cycles, every 10ms (priority 1)"));
+    // TON of 250 ms restarted one cycle after each expiry: the lamp turns on at 250 and 790 ms.
+    EXPECT_THAT(result.output, HasSubstr("Cell.flashes = 2"));
+}
+
 TEST(BenchCommand, BenchmarkProgramGivesTheTableResults) {
     const auto result = eposp("bench " + std::string(EPOSP_SOURCE_DIR) +
                               "/tests/compiler/inputs/crc32.st --scans 1000");
