@@ -11,12 +11,6 @@ namespace {
 
 using testing::HasSubstr;
 
-std::string write_source(const std::string& name, const std::string& text) {
-    const auto path = scratch(name);
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-}
-
 constexpr const char* kConfiguration = "CONFIGURATION Config0\n"
                                        "  VAR_GLOBAL total : DINT; END_VAR\n"
                                        "  RESOURCE Res0 ON PLC\n"

@@ -25,6 +25,13 @@ inline std::filesystem::path scratch(const std::string& name) {
     return dir / name;
 }
 
+/// Writes `text` to file `name` of the test's own directory; returns its path.
+inline std::string write_source(const std::string& name, const std::string& text) {
+    const auto path = scratch(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+}
+
 inline std::string read_file(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
@@ -34,11 +41,12 @@ inline std::string read_file(const std::filesystem::path& path) {
 
 /// A shell-script prefix that starts `eposp ARGUMENTS` (which must serve socketcand, e.g.
 /// `bus --socketcand 127.0.0.1:0`) in the background with its output in `out`, waits until it
-/// listens, and leaves its address in $address and its pid in $pid.
+/// listens (up to 30 s: a loaded CI machine starts it slowly), and leaves its address in
+/// $address and its pid in $pid.
 inline std::string start_in_background(const std::filesystem::path& out,
                                        const std::string& arguments) {
     return kEposp + " " + arguments + " > " + out.string() +
-           " & pid=$!; for i in $(seq 200); do address=$(sed -n \"s/^socketcand: listening on "
+           " & pid=$!; for i in $(seq 600); do address=$(sed -n \"s/^socketcand: listening on "
            "\\([^ ]*\\).*/\\1/p\" " +
            out.string() + "); [ -n \"$address\" ] && break; sleep 0.05; done; ";
 }

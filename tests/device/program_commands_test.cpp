@@ -12,12 +12,6 @@ namespace {
 using testing::HasSubstr;
 using testing::Not;
 
-std::string write_source(const std::string& name, const std::string& text) {
-    const auto path = scratch(name);
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-}
-
 // Counts its cycles in a 1 ms task and divides by zero once `fail` is set.
 constexpr const char* kCounter = "PROGRAM Main\n"
                                  "  VAR_EXTERNAL total : DINT; END_VAR\n"
@@ -143,6 +137,16 @@ TEST(RunCommand, UnknownWatchPathIsAUserErrorBeforeTheRun) {
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_THAT(result.output, HasSubstr("eposp run: error: --watch Inst0.nothing"));
     EXPECT_THAT(result.output, Not(HasSubstr("cycles")));
+}
+
+// The README's example, as a user runs it.
+TEST(RunCommand, BlinkerExampleFlashesTwiceInASecond) {
+    const auto result = eposp("run " + std::string(EPOSP_SOURCE_DIR) +
+                              "/examples/plc-basics/blinker.st --for 1s --watch Cell.flashes");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("Cyclic: 101 cycles, every 10ms (priority 1)"));
+    // TON of 250 ms restarted one cycle after each expiry: the lamp turns on at 250 and 790 ms.
+    EXPECT_THAT(result.output, HasSubstr("Cell.flashes = 2"));
 }
 
 TEST(BenchCommand, BenchmarkProgramGivesTheTableResults) {

@@ -72,6 +72,14 @@ INSTANTIATE_TEST_SUITE_P(
         TrapCase{"NullFbInstance", Trap::NullDereference, "NULL dereference in Main at line 7",
                  [](Builder& b) {
                      b.emit(Opcode::CallFbP, self(16), Operand::imm(0));
+                 }},
+        // An element of an array behind a NULL pointer (an unbound VAR_IN_OUT array): the
+        // element's address is past the NULL guard, but it is no element of anything.
+        TrapCase{"ElementOfANullArray", Trap::NullDereference, "NULL dereference in Main at line 7",
+                 [](Builder& b) {
+                     b.emit(Opcode::Ldi32, self(4), Operand::imm(3));
+                     b.emit(Opcode::IdxAP, self(24), self(16), self(4), b.array(0, 4, 4));
+                     b.emit(Opcode::Stp32, self(24), self(8), Operand::imm(0));
                  }}));
 
 TEST(RunTimeError, FaultInAFunctionNamesTheFunctionAndItsLine) {

@@ -214,11 +214,16 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
         store<std::uint64_t>(A, static_cast<std::uint64_t>(B - mem) + at);                         \
         VM_NEXT();                                                                                 \
     }
+// A NULL array pointer plus an index can point past the NULL guard: refuse it here.
 #define VM_EXEC_IdxAP(T1, T2)                                                                      \
     {                                                                                              \
         std::uint64_t at;                                                                          \
         VM_ELEMENT(B, C, at);                                                                      \
-        store<std::uint64_t>(A, load<std::uint64_t>(B) + at);                                      \
+        const auto array_address = load<std::uint64_t>(B);                                         \
+        if (array_address < kNullGuardSize) {                                                      \
+            VM_TRAP(Trap::NullDereference);                                                        \
+        }                                                                                          \
+        store<std::uint64_t>(A, array_address + at);                                               \
         VM_NEXT();                                                                                 \
     }
 #define VM_EXEC_LdpN(T1, T2)                                                                       \

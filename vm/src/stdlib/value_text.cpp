@@ -189,7 +189,9 @@ void append_clock(ValueText& out, std::int64_t ns_of_day) {
 
 void ValueText::append(std::string_view text) {
     const auto count = std::min(text.size(), chars_.size() - size_);
-    std::memcpy(chars_.data() + size_, text.data(), count);
+    if (count != 0) { // an empty view may have no data() at all
+        std::memcpy(chars_.data() + size_, text.data(), count);
+    }
     size_ += count;
 }
 
