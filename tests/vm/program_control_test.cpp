@@ -201,6 +201,24 @@ TEST_F(ProgramControl, StopEndsTheCyclesAndZeroesTheOutputs) {
     EXPECT_EQ(h.get<std::int16_t>("Main.n"), 3);
     EXPECT_EQ(h.runtime->process_image().outputs()[32], 0);
     EXPECT_EQ(h.runtime->statistics(0).cycles, 3u);
+    ASSERT_FALSE(h.runtime->start(StartMode::Cold));
+    EXPECT_EQ(h.runtime->statistics(0).cycles, 1u) << "a new run, new statistics";
+}
+
+TEST_F(ProgramControl, ARestartBeginsNewStatisticsAndKeepsATasksWatchdog) {
+    RuntimeHarness h;
+    ASSERT_EQ(h.load("PROGRAM Main VAR n : DINT; END_VAR WHILE n >= 0 DO n := n + 1; END_WHILE; "
+                     "END_PROGRAM"),
+              "");
+    h.runtime->set_watchdog(0, 1000);
+    ASSERT_FALSE(h.runtime->start(StartMode::Cold));
+    EXPECT_TRUE(h.runtime->task_faulted(0));
+    h.runtime->stop();
+    ASSERT_FALSE(h.runtime->start(StartMode::Cold));
+    EXPECT_TRUE(h.runtime->task_faulted(0)) << "the same watchdog stops it again";
+    EXPECT_EQ(h.error_codes(),
+              (std::vector<std::uint16_t>{error_code::kInterpreter, error_code::kInterpreter}));
+    EXPECT_EQ(h.runtime->statistics(0).cycles, 0u);
 }
 
 TEST_F(ProgramControl, StopWithHoldKeepsTheOutputs) {

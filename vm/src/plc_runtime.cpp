@@ -66,6 +66,9 @@ std::optional<core::Error> PlcRuntime::load(Image image) {
     program_ = std::make_unique<Program>(std::move(*program));
     machine_ = std::make_unique<Machine>(*program_);
     dispatcher_ = std::make_unique<TaskDispatcher>(loop_, *machine_, hooks(), config_.cost);
+    for (std::size_t task = 0; task < program_->image().tasks.size(); ++task) {
+        dispatcher_->set_watchdog(task, config_.watchdog_instructions);
+    }
     task_bindings_ = bindings_per_task(program_->image());
     forced_.release_all();
     retain_saved_.reset();
@@ -84,10 +87,6 @@ std::optional<core::Error> PlcRuntime::start(StartMode mode) {
     retain_saved_.reset(); // a cold start's values replace the store at the next save
     if (mode != StartMode::Cold) {
         restore_retain();
-    }
-    dispatcher_ = std::make_unique<TaskDispatcher>(loop_, *machine_, hooks(), config_.cost);
-    for (std::size_t task = 0; task < image().tasks.size(); ++task) {
-        dispatcher_->set_watchdog(task, config_.watchdog_instructions);
     }
     running_mode_ = mode;
     if (retain_store_ && !image().retain.empty() &&
@@ -133,7 +132,9 @@ std::optional<std::size_t> PlcRuntime::task_index(std::string_view name) const {
 }
 
 void PlcRuntime::raise_event(std::size_t task) {
-    dispatcher_->raise_event(task);
+    if (state() == ProgramState::Running) {
+        dispatcher_->raise_event(task);
+    }
 }
 
 void PlcRuntime::set_watchdog(std::size_t task, std::uint64_t instructions) {

@@ -23,8 +23,11 @@ bool TaskDispatcher::releases_cyclically(const Slot& slot) const {
 }
 
 void TaskDispatcher::start() {
+    stop();
     running_ = true;
     for (Slot& slot : slots_) {
+        // A new run: everything but the task and its watchdog starts afresh.
+        slot = Slot{.spec = slot.spec, .watchdog = slot.watchdog, .statistics = {}};
         slot.next_release = loop_.now();
     }
     release_on_rising_edges();

@@ -67,7 +67,7 @@ public:
     /// Verifies and links the image and checks that its RETAIN data, process-image and marker
     /// bindings fit this controller; refused with the reason, and while a program runs.
     std::optional<core::Error> load(Image image);
-    /// Refused when no program is loaded or one is running.
+    /// Refused when no program is loaded or one is running. Statistics start afresh.
     std::optional<core::Error> start(StartMode mode);
     /// Stops the tasks, saves the RETAIN variables and puts the outputs in the safe state.
     void stop();
@@ -78,8 +78,11 @@ public:
     // Tasks (table indices of the image's tasks).
     const Image& image() const { return program_->image(); }
     std::optional<std::size_t> task_index(std::string_view name) const;
-    /// The device's event for an event task: see TaskDispatcher::raise_event.
+    /// The device's event for an event task (see TaskDispatcher::raise_event); ignored while
+    /// the program is not running.
     void raise_event(std::size_t task);
+    /// The watchdog of one task, instead of RuntimeConfig::watchdog_instructions (kept until
+    /// the next load).
     void set_watchdog(std::size_t task, std::uint64_t instructions);
     const TaskStatistics& statistics(std::size_t task) const;
     bool task_faulted(std::size_t task) const;

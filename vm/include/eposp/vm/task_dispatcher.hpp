@@ -51,7 +51,8 @@ public:
     TaskDispatcher(const TaskDispatcher&) = delete;
     TaskDispatcher& operator=(const TaskDispatcher&) = delete;
 
-    /// Releases every cyclic task now and runs what is ready.
+    /// Releases every cyclic task now and runs what is ready; a start after a stop begins a new
+    /// run (statistics, faults and event edges afresh; the watchdogs stay).
     void start();
     /// No more cycles; a cycle in progress is abandoned where it is.
     void stop();
