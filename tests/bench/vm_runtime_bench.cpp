@@ -11,17 +11,20 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 namespace {
 
 using namespace eposp;
 using namespace eposp::vm;
 
-// `tasks` cyclic tasks of 1 ms, each running a program that counts in an endless loop (one
-// add and one back-edge, a safe point, per iteration), or `iterations` times when given.
-Image counting_tasks(std::uint32_t tasks, std::optional<std::int32_t> iterations) {
+// One cyclic task of 1 ms per element, task t of priority t, running a program that counts
+// `iterations[t]` times (one add and one back-edge, a safe point, per iteration), or without end
+// for nullopt.
+Image counting_tasks(const std::vector<std::optional<std::int32_t>>& iterations_per_task) {
     Builder b;
-    for (std::uint32_t t = 0; t < tasks; ++t) {
+    for (std::uint32_t t = 0; t < iterations_per_task.size(); ++t) {
+        const std::optional<std::int32_t> iterations = iterations_per_task[t];
         const auto pou = b.declare_pou("P" + std::to_string(t), PouKind::Program, 8);
         const auto instance = b.allocate(8, 4);
         const std::int32_t limit = iterations.value_or(1);
@@ -57,7 +60,7 @@ Image counting_tasks(std::uint32_t tasks, std::optional<std::int32_t> iterations
 // instructions without switching, it gives the cost of a switch.
 void BM_TaskSwitch(benchmark::State& state) {
     NativeRegistry natives;
-    const auto program = link(counting_tasks(2, std::nullopt), natives);
+    const auto program = link(counting_tasks({std::nullopt, std::nullopt}), natives);
     Machine machine(*program);
     machine.start(0, 0);
     machine.start(1, 0);
@@ -74,7 +77,7 @@ BENCHMARK(BM_TaskSwitch);
 void BM_UninterruptedLoop(benchmark::State& state) {
     constexpr std::int32_t kIterations = 100'000;
     NativeRegistry natives;
-    const auto program = link(counting_tasks(1, kIterations), natives);
+    const auto program = link(counting_tasks({kIterations}), natives);
     Machine machine(*program);
     for (auto _ : state) {
         machine.run_cycle(0);
@@ -92,7 +95,7 @@ void BM_RuntimeCycle(benchmark::State& state) {
     core::EventLoop loop;
     NativeRegistry natives;
     PlcRuntime runtime(loop, natives, {}, {});
-    if (runtime.load(counting_tasks(1, 1)) || runtime.start(StartMode::Cold)) {
+    if (runtime.load(counting_tasks({1})) || runtime.start(StartMode::Cold)) {
         throw std::runtime_error("cannot start");
     }
     for (auto _ : state) {
@@ -103,6 +106,35 @@ void BM_RuntimeCycle(benchmark::State& state) {
                            benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_RuntimeCycle);
+
+// Preemption on the event loop: T0 (priority 0, 4 instructions) every 10 µs interrupts T1
+// (priority 1), which counts without end, under a cost model of 100 ns per instruction. One
+// iteration is one 10 µs period: T1's slice ends at T0's release, T0 runs its cycle, T1 resumes;
+// about 96 of T1's instructions run in between (BM_UninterruptedLoop gives their cost).
+void BM_RuntimePreemption(benchmark::State& state) {
+    core::EventLoop loop;
+    NativeRegistry natives;
+    RuntimeConfig config;
+    config.cost.ns_per_instruction = 100;
+    PlcRuntime runtime(loop, natives, config, {});
+    Image image = counting_tasks({1, std::nullopt});
+    image.tasks[0].interval_ns = 10'000;
+    image.tasks[1].interval_ns = 1'000'000'000'000; // never due again while measured
+    if (runtime.load(std::move(image))) {
+        throw std::runtime_error("cannot load");
+    }
+    runtime.set_watchdog(1, kUnlimited);
+    if (runtime.start(StartMode::Cold)) {
+        throw std::runtime_error("cannot start");
+    }
+    for (auto _ : state) {
+        loop.run_for(std::chrono::microseconds(10));
+    }
+    state.counters["per_period"] =
+        benchmark::Counter(static_cast<double>(state.iterations()),
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_RuntimePreemption);
 
 // Copying a task's located variables in and out: all 96 input and 96 output entries bound (the
 // whole DS-405 image of the EPOS P), as read_inputs before and write_outputs after a cycle.
