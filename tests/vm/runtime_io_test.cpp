@@ -154,7 +154,7 @@ TEST(MarkerArea, ProgramsReadTheErrorInformationAndShareGeneralPurposeMarkers) {
     ASSERT_EQ(h.load(kOverrunWatcher), "");
     ASSERT_FALSE(h.runtime->start(StartMode::Cold));
     h.loop.run_for(25ms);
-    const auto slow = *h.runtime->task_index("Slow");
+    const auto slow = *h.runtime->task_index("slow");
     EXPECT_GT(h.runtime->statistics(slow).overruns, 0u);
     EXPECT_EQ(h.get<std::uint16_t>("WatchInst.seen_code"), error_code::kTimerTask);
     EXPECT_EQ(h.get<std::uint16_t>("WatchInst.overrun_task"), slow);

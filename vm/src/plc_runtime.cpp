@@ -3,6 +3,7 @@
 #include "eposp/vm/value_format.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fmt/format.h>
 
 namespace eposp::vm {
@@ -124,8 +125,15 @@ std::uint16_t PlcRuntime::program_control() const {
 
 std::optional<std::size_t> PlcRuntime::task_index(std::string_view name) const {
     const auto& tasks = image().tasks;
-    const auto it = std::find_if(tasks.begin(), tasks.end(),
-                                 [name](const Task& task) { return task.name == name; });
+    // IEC identifiers compare case-insensitively.
+    const auto same = [name](const Task& task) {
+        return std::equal(task.name.begin(), task.name.end(), name.begin(), name.end(),
+                          [](char a, char b) {
+                              return std::tolower(static_cast<unsigned char>(a)) ==
+                                     std::tolower(static_cast<unsigned char>(b));
+                          });
+    };
+    const auto it = std::find_if(tasks.begin(), tasks.end(), same);
     return it == tasks.end()
                ? std::nullopt
                : std::optional<std::size_t>(static_cast<std::size_t>(it - tasks.begin()));
