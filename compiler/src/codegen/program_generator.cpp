@@ -28,7 +28,23 @@ vm::PouKind vm_kind(ast::PouKind kind) {
 ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnostics& diagnostics)
     : program_(program), library_(library), diagnostics_(diagnostics),
       types_(program.model, diagnostics,
-             [this](std::string_view name) { return library_pou(name); }) {
+             [this](std::string_view name) { return library_pou(name); },
+             [this](const ast::VariableDeclaration& declaration) {
+                 return constants_declared_.contains(&declaration);
+             }) {
+    for (const PouSource* source : {&program_, &library_}) {
+        for (const ast::CompilationUnit& unit : source->units) {
+            for (const ast::Pou& pou : unit.pous) {
+                collect_constants(pou.sections);
+            }
+            for (const ast::Configuration& configuration : unit.configurations) {
+                collect_constants(configuration.sections);
+                for (const ast::Resource& resource : configuration.resources) {
+                    collect_constants(resource.sections);
+                }
+            }
+        }
+    }
     for (const ast::CompilationUnit& unit : library_.units) {
         for (const ast::Pou& pou : unit.pous) {
             pou_models_[&pou] = &library_.model;
@@ -37,6 +53,17 @@ ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnos
     for (const ast::CompilationUnit& unit : program_.units) {
         for (const ast::Pou& pou : unit.pous) {
             pou_models_[&pou] = &program_.model;
+        }
+    }
+}
+
+void ProgramGenerator::collect_constants(const std::vector<ast::DeclarationSection>& sections) {
+    for (const ast::DeclarationSection& section : sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables != nullptr && variables->constant) {
+            for (const ast::VariableDeclaration& declaration : variables->variables) {
+                constants_declared_.insert(&declaration);
+            }
         }
     }
 }

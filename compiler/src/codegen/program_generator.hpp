@@ -15,6 +15,7 @@
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace eposp::compiler::codegen {
@@ -67,6 +68,7 @@ private:
         std::uint32_t index;
     };
 
+    void collect_constants(const std::vector<ast::DeclarationSection>& sections);
     void lay_out_globals(const ast::Configuration& configuration);
     void lay_out_global_section(const ast::Configuration& configuration,
                                 const std::vector<ast::DeclarationSection>& sections);
@@ -97,6 +99,7 @@ private:
     std::unordered_map<const sema::Type*, std::uint32_t> descriptors_;
     std::vector<vm::Task> tasks_;
     std::uint32_t pou_frames_total_ = 0;
+    std::unordered_set<const ast::VariableDeclaration*> constants_declared_;
 };
 
 } // namespace eposp::compiler::codegen

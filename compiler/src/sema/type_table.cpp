@@ -25,8 +25,10 @@ std::uint32_t elementary_size(E type) {
 } // namespace
 
 TypeTable::TypeTable(const SemanticModel& model, Diagnostics& diagnostics,
-                     std::function<const ast::Pou*(std::string_view)> library)
-    : model_(model), diagnostics_(diagnostics), library_(std::move(library)) {}
+                     std::function<const ast::Pou*(std::string_view)> library,
+                     std::function<bool(const ast::VariableDeclaration&)> is_constant)
+    : model_(model), diagnostics_(diagnostics), library_(std::move(library)),
+      is_constant_(std::move(is_constant)) {}
 
 Type& TypeTable::add(Type type) { return types_.emplace_back(std::move(type)); }
 
@@ -375,7 +377,7 @@ std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expre
         }
         // A constant's value (VAR CONSTANT / VAR_GLOBAL CONSTANT) with a plain initial value.
         if (symbol->kind == SymbolKind::Variable && symbol->variable != nullptr &&
-            symbol->variable->initial_value) {
+            symbol->variable->initial_value && is_constant_(*symbol->variable)) {
             if (const auto* value =
                     std::get_if<ast::ExpressionPtr>(&symbol->variable->initial_value->value)) {
                 return fold_integer(**value);
