@@ -83,6 +83,11 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"Reference", "d : DINT; p : REF_TO DINT;", "p := REF(d); p^ := 5; x := d + p^;",
                 10},
         IntCase{"NullReferenceCompares", "p : REF_TO DINT;", "IF p = NULL THEN x := 1; END_IF;", 1},
+        IntCase{"BitRead", "w : WORD := 16#0008; b : BOOL;", "b := w.3; x := BOOL_TO_LINT(b);", 1},
+        IntCase{"BitWrite", "w : WORD := 16#00FF;", "w.0 := FALSE; w.15 := TRUE; x := WORD_TO_LINT(w);",
+                0x80FE},
+        IntCase{"Sizeof", "a : ARRAY[1..10] OF DINT;", "x := SIZEOF(a) + SIZEOF(x);", 48},
+        IntCase{"Adr", "d : DINT; p : POINTER TO DINT;", "p := ADR(d); p^ := 9; x := d;", 9},
         IntCase{"UnsignedCompare", "u : UDINT := 16#FFFFFFFF;", "IF u > 1 THEN x := 1; END_IF;", 1}),
     [](const auto& c) { return c.param.name; });
 

@@ -225,6 +225,35 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                  .writable = array->writable};
 }
 
+std::optional<Value> PouGenerator::bit_word(const ast::BitAccessExpression& node,
+                                            const SourceRange& range) {
+    const auto word = eval(*node.object, nullptr);
+    if (!word) {
+        return std::nullopt;
+    }
+    if (!sema::is_bit_string(*word->type) && !sema::is_integer(*word->type)) {
+        error(range, fmt::format("bit access needs a bit string, not {}", word->type->name));
+        return std::nullopt;
+    }
+    if (node.bit >= word->type->size * 8) {
+        error(range, fmt::format("{} has no bit {}", word->type->name, node.bit));
+        return std::nullopt;
+    }
+    return word;
+}
+
+Operand PouGenerator::bit_mask(const sema::Type& type, std::uint32_t bit, bool inverted) {
+    std::uint64_t mask = std::uint64_t{1} << bit;
+    if (inverted) {
+        mask = ~mask;
+    }
+    std::vector<std::uint8_t> bytes(type.size);
+    for (std::uint32_t i = 0; i < type.size; ++i) {
+        bytes[i] = static_cast<std::uint8_t>(mask >> (8 * i));
+    }
+    return program_.constant(bytes, type.align);
+}
+
 // --- Values ----------------------------------------------------------------------------------
 
 std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const sema::Type* hint,
@@ -290,7 +319,22 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         }
         return value;
     }
-    error(expression.range, "direct addresses and bit access in expressions are not supported yet");
+    if (const auto* node = std::get_if<ast::BitAccessExpression>(&expression.node)) {
+        const auto word = bit_word(*node, expression.range);
+        if (!word) {
+            return std::nullopt;
+        }
+        // 6.5.1.2 partial access: the bit is `(word AND 2#1 << n) <> 0`.
+        const sema::Type& type = *word->type;
+        const Operand masked = temp(type);
+        builder_.emit(op_width("And", type), masked, word->operand, bit_mask(type, node->bit, false));
+        const sema::Type& boolean = types_.elementary(E::Bool);
+        const Operand result = result_operand(boolean, dest);
+        builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(sema::scalar_of(type))) + "Bool"),
+                      result, masked);
+        return Value{result, &boolean};
+    }
+    error(expression.range, "direct addresses in expressions are not supported yet");
     return std::nullopt;
 }
 

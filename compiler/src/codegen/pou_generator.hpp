@@ -79,6 +79,10 @@ private:
                                   const Destination* dest = nullptr);
     std::optional<Value> convert(const Value& value, const sema::Type& want,
                                  const Destination* dest);
+    /// The word a bit access `w.3` reads, checked to have that bit.
+    std::optional<Value> bit_word(const ast::BitAccessExpression& node, const SourceRange& range);
+    /// The constant `1 << bit` (or its complement) of `type`.
+    vm::Operand bit_mask(const sema::Type& type, std::uint32_t bit, bool inverted);
     std::optional<Value> literal(const ast::Expression& expression,
                                  const ast::LiteralExpression& node, const sema::Type* hint);
     std::optional<Value> unary(const ast::UnaryExpression& node, const sema::Type* hint,
@@ -120,6 +124,8 @@ private:
     void statements(const ast::StatementList& list);
     void statement(const ast::Statement& statement);
     void assignment(const ast::AssignmentStatement& node, const SourceRange& range);
+    void bit_assignment(const ast::BitAccessExpression& target, const ast::Expression& value,
+                        const SourceRange& range);
     void if_statement(const ast::IfStatement& node);
     void case_statement(const ast::CaseStatement& node);
     void for_statement(const ast::ForStatement& node, const SourceRange& range);
@@ -154,6 +160,9 @@ private:
     std::optional<Value> selection(const std::string& name, const ast::CallExpression& node,
                                    const sema::Type* hint, const Destination* dest,
                                    const SourceRange& range);
+    /// ADR(x): the address of x as POINTER TO its type; SIZEOF(x or T): its size in bytes.
+    std::optional<Value> address_or_size(const std::string& name, const ast::CallExpression& node,
+                                         const SourceRange& range);
     /// The value of an integer expression as DINT (positions and lengths of the natives).
     std::optional<Value> as_dint(const ast::Expression& expression);
     /// A conversion `X_TO_Y` between any two elementary types.

@@ -67,7 +67,38 @@ void PouGenerator::statement(const ast::Statement& statement) {
     frame_top_ = mark;
 }
 
+void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
+                                  const ast::Expression& value, const SourceRange& range) {
+    const auto word_place = place(*target.object);
+    const auto word = word_place ? bit_word(target, range) : std::nullopt;
+    const auto bit = word ? value_as(value, types_.elementary(ast::ElementaryType::Bool))
+                          : std::nullopt;
+    if (!bit) {
+        return;
+    }
+    if (!word_place->writable) {
+        error(target.object->range, "this variable cannot be assigned here");
+        return;
+    }
+    // word := (word AND NOT mask) OR (BOOL_TO_<word>(bit) << n)
+    const sema::Type& type = *word->type;
+    const Operand cleared = temp(type);
+    builder_.emit(op_width("And", type), cleared, word->operand, bit_mask(type, target.bit, true));
+    const Operand shifted_bit = temp(type);
+    builder_.emit(program_.opcodes().get("Cvt", "Bool" + std::string(type_suffix(sema::scalar_of(type)))),
+                  shifted_bit, bit->operand);
+    const std::uint8_t count[4] = {static_cast<std::uint8_t>(target.bit), 0, 0, 0};
+    builder_.emit(op_width("Shl", type), shifted_bit, shifted_bit,
+                  program_.constant({count, count + 4}, 4));
+    builder_.emit(op_width("Or", type), cleared, cleared, shifted_bit);
+    store(*word_place, Value{cleared, &type});
+}
+
 void PouGenerator::assignment(const ast::AssignmentStatement& node, const SourceRange& range) {
+    if (const auto* bit = std::get_if<ast::BitAccessExpression>(&node.target->node)) {
+        bit_assignment(*bit, *node.value, range);
+        return;
+    }
     const auto target = place(*node.target);
     if (!target) {
         eval(*node.value, nullptr); // still check the right-hand side

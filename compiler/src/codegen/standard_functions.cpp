@@ -69,10 +69,48 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
                       "FIND"})) {
         return string_function(name, node, dest, range);
     }
+    if (name == "ADR" || name == "SIZEOF") {
+        return address_or_size(name, node, range);
+    }
     if (one_of(name, {"SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE"})) {
         return selection(name, node, hint, dest, range);
     }
     return numeric_function(name, node, hint, dest, range);
+}
+
+std::optional<Value> PouGenerator::address_or_size(const std::string& name,
+                                                   const ast::CallExpression& node,
+                                                   const SourceRange& range) {
+    if (node.arguments.size() != 1) {
+        error(range, fmt::format("{} takes one argument", name));
+        return std::nullopt;
+    }
+    const ast::Expression& argument = *node.arguments.front().value;
+    const sema::Type* type = nullptr;
+    std::optional<Place> target;
+    if (const auto* type_name = std::get_if<ast::NameExpression>(&argument.node)) {
+        const sema::Symbol* symbol = model_.resolved(type_name->name);
+        if (symbol != nullptr && symbol->kind != sema::SymbolKind::Variable) {
+            type = types_.named(*symbol);
+        }
+    }
+    if (type == nullptr || name == "ADR") {
+        target = place(argument);
+        if (!target) {
+            return std::nullopt;
+        }
+        type = target->type;
+    }
+    if (name == "ADR") {
+        return Value{address_of(*target), &types_.reference(type)};
+    }
+    // SIZEOF: bytes, as a DINT constant.
+    const sema::Type& dint = types_.elementary(E::Dint);
+    std::vector<std::uint8_t> bytes(4);
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        bytes[i] = static_cast<std::uint8_t>(type->size >> (8 * i));
+    }
+    return Value{program_.constant(bytes, 4), &dint};
 }
 
 std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {

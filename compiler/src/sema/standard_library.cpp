@@ -15,6 +15,7 @@ constexpr std::array kStandardFunctions = {
     "SHR",   "ROL",   "ROR",    "AND",    "OR",     "XOR",     "NOT",  "SEL",   "MAX",  "MIN",
     "LIMIT", "MUX",   "GT",     "GE",     "EQ",     "LE",      "LT",   "NE",    "LEN",  "LEFT",
     "RIGHT", "MID",   "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND", "TRUNC",
+    "ADR",   "SIZEOF", // CODESYS extensions of the pointer kind (POINTER TO is parsed)
 };
 
 struct Parameter {
