@@ -41,6 +41,9 @@ void store_string(NativeArgs& args, std::size_t index, std::string_view text) {
 
 void TextBuffer::append(std::string_view piece) {
     const auto count = std::min(piece.size(), chars_.size() - size_);
+    if (count == 0) {
+        return; // an empty view may have a null data(), which memcpy must not get
+    }
     std::memcpy(chars_.data() + size_, piece.data(), count);
     size_ += count;
 }
