@@ -43,7 +43,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "x := (a * b) MOD 1000;", 0},
         IntCase{"IntWidensToLint", "i : INT := -3;", "x := i;", -3},
         IntCase{"PowerIsLreal", "", "x := LREAL_TO_LINT(2 ** 10);", 1024},
-        IntCase{"BitAnd", "w : WORD := 16#F0F0;", "w := w AND 16#FF00; x := WORD_TO_LINT(w);", 0xF000},
+        IntCase{"BitAnd", "w : WORD := 16#F0F0;", "w := w AND 16#FF00; x := WORD_TO_LINT(w);",
+                0xF000},
         IntCase{"BitOrXorNot", "w : WORD := 16#00F0;",
                 "w := (w OR 16#0F00) XOR 16#0FF0; x := WORD_TO_LINT(NOT w);", 0xFFFF},
         IntCase{"ShiftLeft", "b : BYTE := 16#81;", "x := BYTE_TO_LINT(SHL(b, 1));", 0x02},
@@ -74,7 +75,8 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"AddFunction", "", "x := ADD(1, 2, 3, 4);", 10},
         IntCase{"Move", "", "x := MOVE(42);", 42},
         IntCase{"ArrayElement", "a : ARRAY[1..5] OF INT := [1, 2(7), 3];", "x := a[3] + a[4];", 10},
-        IntCase{"ArrayIndexedByVariable", "a : ARRAY[1..5] OF INT := [1, 2, 3, 4, 5]; i : INT := 5;",
+        IntCase{"ArrayIndexedByVariable",
+                "a : ARRAY[1..5] OF INT := [1, 2, 3, 4, 5]; i : INT := 5;",
                 "a[i] := 50; x := a[i] + a[1];", 51},
         IntCase{"TwoDimensionalArray", "m : ARRAY[0..2, 1..3] OF DINT; i, j : INT;",
                 "FOR i := 0 TO 2 DO FOR j := 1 TO 3 DO m[i, j] := i * 10 + j; END_FOR; END_FOR;"
@@ -84,11 +86,12 @@ INSTANTIATE_TEST_SUITE_P(
                 10},
         IntCase{"NullReferenceCompares", "p : REF_TO DINT;", "IF p = NULL THEN x := 1; END_IF;", 1},
         IntCase{"BitRead", "w : WORD := 16#0008; b : BOOL;", "b := w.3; x := BOOL_TO_LINT(b);", 1},
-        IntCase{"BitWrite", "w : WORD := 16#00FF;", "w.0 := FALSE; w.15 := TRUE; x := WORD_TO_LINT(w);",
-                0x80FE},
+        IntCase{"BitWrite", "w : WORD := 16#00FF;",
+                "w.0 := FALSE; w.15 := TRUE; x := WORD_TO_LINT(w);", 0x80FE},
         IntCase{"Sizeof", "a : ARRAY[1..10] OF DINT;", "x := SIZEOF(a) + SIZEOF(x);", 48},
         IntCase{"Adr", "d : DINT; p : POINTER TO DINT;", "p := ADR(d); p^ := 9; x := d;", 9},
-        IntCase{"UnsignedCompare", "u : UDINT := 16#FFFFFFFF;", "IF u > 1 THEN x := 1; END_IF;", 1}),
+        IntCase{"UnsignedCompare", "u : UDINT := 16#FFFFFFFF;", "IF u > 1 THEN x := 1; END_IF;",
+                1}),
     [](const auto& c) { return c.param.name; });
 
 TEST(StructsAndEnums, ArraysOfStructuresAndEnumerationsRun) {

@@ -32,8 +32,8 @@ std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) 
 
 bool fits_integer(std::int64_t value, const sema::Type& type) {
     const auto range = ast::integer_range(type.elementary);
-    return !range || (value >= range->min &&
-                      (value < 0 || static_cast<std::uint64_t>(value) <= range->max));
+    return !range ||
+           (value >= range->min && (value < 0 || static_cast<std::uint64_t>(value) <= range->max));
 }
 
 } // namespace
@@ -99,8 +99,7 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
                        : std::nullopt;
         }
     }
-    if (type.kind == sema::TypeKind::Reference || sema::is_real(type) ||
-        sema::is_time_like(type)) {
+    if (type.kind == sema::TypeKind::Reference || sema::is_real(type) || sema::is_time_like(type)) {
         return std::nullopt;
     }
     (void)model;
@@ -109,7 +108,8 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
             // Directly from the magnitude, so that ULINT values above LINT's range work.
             const auto range = ast::integer_range(type.elementary);
             const bool fits = integer->negative
-                                  ? range && integer->magnitude <= static_cast<std::uint64_t>(-(range->min + 1)) + 1
+                                  ? range && integer->magnitude <=
+                                                 static_cast<std::uint64_t>(-(range->min + 1)) + 1
                                   : !range || integer->magnitude <= range->max;
             if (!fits && type.kind != sema::TypeKind::Enum) {
                 diagnostics_.error(expression.range,
@@ -117,7 +117,8 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
                                                integer->negative ? "-" : "", integer->magnitude,
                                                type.name));
             }
-            const std::uint64_t bits = integer->negative ? 0 - integer->magnitude : integer->magnitude;
+            const std::uint64_t bits =
+                integer->negative ? 0 - integer->magnitude : integer->magnitude;
             return integer_bytes(static_cast<std::int64_t>(bits), type.size);
         }
     }
@@ -152,9 +153,9 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
     case sema::TypeKind::Struct:
     case sema::TypeKind::Instance:
         for (const sema::Type* part = &type; part != nullptr; part = part->base) {
-            const sema::SemanticModel& own =
-                part->pou != nullptr && pou_models_.contains(part->pou) ? *pou_models_.at(part->pou)
-                                                                       : model;
+            const sema::SemanticModel& own = part->pou != nullptr && pou_models_.contains(part->pou)
+                                                 ? *pou_models_.at(part->pou)
+                                                 : model;
             for (const sema::Field& field : part->fields) {
                 if (field.section == ast::VarSectionKind::InOut) {
                     continue; // a reference, bound at each call
@@ -181,7 +182,8 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
         }
         return;
     }
-    if (const auto* elements = std::get_if<std::vector<ast::ArrayInitElement>>(&initializer->value)) {
+    if (const auto* elements =
+            std::get_if<std::vector<ast::ArrayInitElement>>(&initializer->value)) {
         if (type.kind != sema::TypeKind::Array) {
             diagnostics_.error(initializer->range, fmt::format("{} is not an array", type.name));
             return;

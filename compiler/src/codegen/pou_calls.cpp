@@ -25,9 +25,10 @@ std::optional<Value> PouGenerator::call(const ast::CallExpression& node, const s
             if (symbol->pou->kind == ast::PouKind::Function) {
                 return call_function(*symbol->pou, node, dest, range);
             }
-            error(range, fmt::format("'{}' is a {} type: call an instance of it", symbol->name,
-                                     symbol->pou->kind == ast::PouKind::Program ? "PROGRAM"
-                                                                               : "FUNCTION_BLOCK"));
+            error(range,
+                  fmt::format("'{}' is a {} type: call an instance of it", symbol->name,
+                              symbol->pou->kind == ast::PouKind::Program ? "PROGRAM"
+                                                                         : "FUNCTION_BLOCK"));
             return std::nullopt;
         case sema::SymbolKind::StandardFunction:
             if (const ast::Pou* pou = program_.library_pou(symbol->name);
@@ -174,8 +175,12 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                                    bytes);
             move(slot, *field.type, Value{program_.constant(bytes, 8), field.type});
         } else if (it->value) {
-            builder_.emit(sema::is_scalar(*field.type) ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(*field.type))) : Opcode::MovN,
-                          slot, it->value->operand, Operand::imm(sema::is_scalar(*field.type) ? 0 : field.type->size));
+            builder_.emit(
+                sema::is_scalar(*field.type)
+                    ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(*field.type)))
+                    : Opcode::MovN,
+                slot, it->value->operand,
+                Operand::imm(sema::is_scalar(*field.type) ? 0 : field.type->size));
         } else {
             const Destination into{slot, field.type};
             const auto value = value_as(*it->argument->value, *field.type, &into);
@@ -191,8 +196,11 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     if (!frame.fields.empty() && frame.fields.front().declaration == nullptr) {
         const sema::Type& type = *frame.fields.front().type;
         const Operand operand = result_operand(type, dest);
-        builder_.emit(sema::is_scalar(type) ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(type))) : Opcode::MovN,
-                      operand, Operand::out(0), Operand::imm(sema::is_scalar(type) ? 0 : type.size));
+        builder_.emit(sema::is_scalar(type)
+                          ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(type)))
+                          : Opcode::MovN,
+                      operand, Operand::out(0),
+                      Operand::imm(sema::is_scalar(type) ? 0 : type.size));
         result = Value{operand, &type};
     }
     for (const Bound& b : bound) {
@@ -248,9 +256,9 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
         if (field == nullptr) {
             error(argument.range,
-                  argument.name ? fmt::format("'{}' has no parameter '{}'", type.name,
-                                              argument.name->name)
-                                : "a function block call needs formal arguments (IN := x)");
+                  argument.name
+                      ? fmt::format("'{}' has no parameter '{}'", type.name, argument.name->name)
+                      : "a function block call needs formal arguments (IN := x)");
             continue;
         }
         const bool output = argument.kind == ast::Argument::Kind::Output;
@@ -324,8 +332,8 @@ void PouGenerator::call_native(const std::string& name, const vm::NativeSignatur
             argument.type->kind != sema::TypeKind::Null) {
             builder_.emit(Opcode::Addr, slot, argument.operand, Operand::imm(argument.type->size));
         } else {
-            builder_.emit(program_.opcodes().get("Mov", width_suffix(signature.parameters[i])), slot,
-                          argument.operand);
+            builder_.emit(program_.opcodes().get("Mov", width_suffix(signature.parameters[i])),
+                          slot, argument.operand);
         }
     }
     out_slot(vm::argument_block_size(signature));

@@ -92,11 +92,13 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
             (field->section == ast::VarSectionKind::Var ||
              field->section == ast::VarSectionKind::InOut)) {
             // 6.5.2.2: only inputs and outputs of an instance are visible outside it.
-            error(node->member.range, fmt::format("'{}' is internal to '{}'", field->name, type.name));
+            error(node->member.range,
+                  fmt::format("'{}' is internal to '{}'", field->name, type.name));
             return std::nullopt;
         }
         Place result = member(*object, field->offset, *field->type);
-        if (type.kind == sema::TypeKind::Instance && field->section == ast::VarSectionKind::Output) {
+        if (type.kind == sema::TypeKind::Instance &&
+            field->section == ast::VarSectionKind::Output) {
             result.writable = false;
         }
         return result;
@@ -110,7 +112,8 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
             return std::nullopt;
         }
         if (pointer->type->kind != sema::TypeKind::Reference || pointer->type->element == nullptr) {
-            error(expression.range, fmt::format("'^' needs a reference, not {}", pointer->type->name));
+            error(expression.range,
+                  fmt::format("'^' needs a reference, not {}", pointer->type->name));
             return std::nullopt;
         }
         return Place{.kind = Place::Kind::Indirect,
@@ -173,8 +176,10 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         }
         if (value->type != &dint) {
             const Operand converted = temp(dint);
-            builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32"),
-                          converted, value->operand);
+            builder_.emit(
+                program_.opcodes().get(
+                    "Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32"),
+                converted, value->operand);
             value = Value{converted, &dint};
         }
         if (node.indices.size() == 1) {
@@ -202,9 +207,8 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         count *= dimension.count;
     }
     const bool one = type.dimensions.size() == 1;
-    const std::uint16_t descriptor =
-        builder_.array(one ? static_cast<std::int32_t>(type.dimensions[0].lower) : 0, count,
-                       element.size);
+    const std::uint16_t descriptor = builder_.array(
+        one ? static_cast<std::int32_t>(type.dimensions[0].lower) : 0, count, element.size);
     if (array->kind == Place::Kind::Direct && sema::is_scalar(element)) {
         return Place{.kind = Place::Kind::Element,
                      .type = &element,
@@ -327,11 +331,13 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         // 6.5.1.2 partial access: the bit is `(word AND 2#1 << n) <> 0`.
         const sema::Type& type = *word->type;
         const Operand masked = temp(type);
-        builder_.emit(op_width("And", type), masked, word->operand, bit_mask(type, node->bit, false));
+        builder_.emit(op_width("And", type), masked, word->operand,
+                      bit_mask(type, node->bit, false));
         const sema::Type& boolean = types_.elementary(E::Bool);
         const Operand result = result_operand(boolean, dest);
-        builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(sema::scalar_of(type))) + "Bool"),
-                      result, masked);
+        builder_.emit(
+            program_.opcodes().get("Cvt", std::string(type_suffix(sema::scalar_of(type))) + "Bool"),
+            result, masked);
         return Value{result, &boolean};
     }
     error(expression.range, "direct addresses in expressions are not supported yet");
@@ -355,9 +361,9 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
             type = &types_.elementary(fits ? E::Dint : E::Lint);
         }
     } else if (const auto* real = std::get_if<ast::RealLiteral>(&node.value)) {
-        type = real->type ? &types_.elementary(*real->type)
+        type = real->type                                ? &types_.elementary(*real->type)
                : hint != nullptr && sema::is_real(*hint) ? hint
-                                                          : &types_.elementary(E::Lreal);
+                                                         : &types_.elementary(E::Lreal);
     } else if (std::holds_alternative<ast::BoolLiteral>(node.value)) {
         type = &types_.elementary(E::Bool);
     } else if (const auto* duration = std::get_if<ast::DurationLiteral>(&node.value)) {
@@ -415,12 +421,12 @@ std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
         return std::nullopt;
     }
     if (!sema::converts_implicitly(*value->type, want)) {
-        error(expression.range, fmt::format("a {} value cannot be used as {}{}", value->type->name,
-                                            want.name,
-                                            sema::is_scalar(*value->type) && sema::is_scalar(want)
-                                                ? fmt::format(" (convert it with {}_TO_{})",
-                                                              value->type->name, want.name)
-                                                : ""));
+        error(expression.range,
+              fmt::format(
+                  "a {} value cannot be used as {}{}", value->type->name, want.name,
+                  sema::is_scalar(*value->type) && sema::is_scalar(want)
+                      ? fmt::format(" (convert it with {}_TO_{})", value->type->name, want.name)
+                      : ""));
         return std::nullopt;
     }
     return convert(*value, want, dest);
@@ -519,14 +525,16 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
     const sema::Type& type = *left.type;
     if (type.kind == sema::TypeKind::String) {
         static constexpr std::pair<ast::BinaryOperator, const char*> kNames[] = {
-            {ast::BinaryOperator::Less, "LT_STRING"},   {ast::BinaryOperator::Greater, "GT_STRING"},
+            {ast::BinaryOperator::Less, "LT_STRING"},
+            {ast::BinaryOperator::Greater, "GT_STRING"},
             {ast::BinaryOperator::LessEqual, "LE_STRING"},
             {ast::BinaryOperator::GreaterEqual, "GE_STRING"},
-            {ast::BinaryOperator::Equal, "EQ_STRING"},  {ast::BinaryOperator::NotEqual, "NE_STRING"}};
+            {ast::BinaryOperator::Equal, "EQ_STRING"},
+            {ast::BinaryOperator::NotEqual, "NE_STRING"}};
         for (const auto& [candidate, name] : kNames) {
             if (candidate == op) {
-                const vm::NativeSignature signature{true, vm::Scalar::Bool,
-                                                    {vm::Scalar::Ptr, vm::Scalar::Ptr}};
+                const vm::NativeSignature signature{
+                    true, vm::Scalar::Bool, {vm::Scalar::Ptr, vm::Scalar::Ptr}};
                 call_native(name, signature, {left, right});
                 return native_result(signature, boolean, dest);
             }
@@ -579,9 +587,9 @@ Value PouGenerator::widened(const Value& value) {
     return wide;
 }
 
-std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
-                                          const sema::Type* hint, const Destination* dest,
-                                          const SourceRange& range, bool top) {
+std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, const sema::Type* hint,
+                                          const Destination* dest, const SourceRange& range,
+                                          bool top) {
     using Op = ast::BinaryOperator;
     const bool comparison = node.op == Op::Less || node.op == Op::Greater ||
                             node.op == Op::LessEqual || node.op == Op::GreaterEqual ||
@@ -596,14 +604,15 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
         if (!exponent) {
             return std::nullopt;
         }
-        const vm::NativeSignature signature{true, vm::Scalar::F64, {vm::Scalar::F64, vm::Scalar::F64}};
+        const vm::NativeSignature signature{
+            true, vm::Scalar::F64, {vm::Scalar::F64, vm::Scalar::F64}};
         call_native("EXPT_LREAL", signature, {*base, *exponent});
         return native_result(signature, lreal, dest);
     }
-    const auto immediate = (node.op == Op::Add || node.op == Op::Subtract) &&
-                                   !is_untyped_literal(*node.left)
-                               ? small_literal(*node.right)
-                               : std::nullopt;
+    const auto immediate =
+        (node.op == Op::Add || node.op == Op::Subtract) && !is_untyped_literal(*node.left)
+            ? small_literal(*node.right)
+            : std::nullopt;
     std::optional<std::pair<Value, Value>> pair;
     if (immediate) {
         auto left = operand_value(*node.left, hint);
@@ -642,13 +651,12 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
     if (is_untyped_literal(*node.right)) {
         right_iec = left_iec;
     }
-    if ((arithmetic || comparison) && is_small_integer(*left_iec) &&
-        is_small_integer(*right_iec) &&
+    if ((arithmetic || comparison) && is_small_integer(*left_iec) && is_small_integer(*right_iec) &&
         (left.iec != nullptr || right.iec != nullptr || (!top && arithmetic))) {
         const sema::Type* iec =
             sema::converts_implicitly(*left_iec, *right_iec) ? right_iec : left_iec;
-        auto result = apply(node.op, widened(left), widened(right), comparison ? dest : nullptr,
-                            range);
+        auto result =
+            apply(node.op, widened(left), widened(right), comparison ? dest : nullptr, range);
         if (result && arithmetic) {
             result->iec = iec;
         }
@@ -662,8 +670,8 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
                                          const SourceRange& range) {
     using Op = ast::BinaryOperator;
     const sema::Type& type = *left.type;
-    if (oper == Op::Less || oper == Op::Greater || oper == Op::LessEqual || oper == Op::GreaterEqual ||
-        oper == Op::Equal || oper == Op::NotEqual) {
+    if (oper == Op::Less || oper == Op::Greater || oper == Op::LessEqual ||
+        oper == Op::GreaterEqual || oper == Op::Equal || oper == Op::NotEqual) {
         if (auto result = compare(oper, left, right, dest)) {
             return result;
         }
@@ -672,7 +680,8 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
     }
     if (oper == Op::And || oper == Op::Or || oper == Op::Xor) {
         if (!sema::is_bool(type) && !sema::is_bit_string(type)) {
-            error(range, fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", type.name));
+            error(range,
+                  fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", type.name));
             return std::nullopt;
         }
         const Operand result = result_operand(type, dest);
@@ -683,14 +692,16 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
     const sema::Type* result_type = &type;
     if (sema::is_time_like(type) || sema::is_time_like(*right.type)) {
         // 6.6.2.5.5 table 30: ADD/SUB of durations and points in time, all in nanoseconds.
-        const bool durations = (type.elementary == E::Time || type.elementary == E::Ltime) &&
-                               (right.type->elementary == E::Time ||
-                                right.type->elementary == E::Ltime);
+        const bool durations =
+            (type.elementary == E::Time || type.elementary == E::Ltime) &&
+            (right.type->elementary == E::Time || right.type->elementary == E::Ltime);
         const bool point_plus_duration =
             sema::is_time_like(*right.type) &&
             (right.type->elementary == E::Time || right.type->elementary == E::Ltime);
-        if (oper == Op::Subtract && !point_plus_duration && type.elementary == right.type->elementary) {
-            result_type = &types_.elementary(type.elementary == E::Ltime || type.elementary == E::Ldt ? E::Ltime : E::Time);
+        if (oper == Op::Subtract && !point_plus_duration &&
+            type.elementary == right.type->elementary) {
+            result_type = &types_.elementary(
+                type.elementary == E::Ltime || type.elementary == E::Ldt ? E::Ltime : E::Time);
         } else if (!((oper == Op::Add || oper == Op::Subtract) &&
                      (durations || point_plus_duration) && type.elementary != E::TimeOfDay &&
                      type.elementary != E::Ltod && type.elementary != E::Date)) {
@@ -709,15 +720,21 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
     }
     const Operand result = result_operand(*result_type, dest);
     switch (oper) {
-    case Op::Add: builder_.emit(op_width("Add", type), result, left.operand, right.operand); break;
+    case Op::Add:
+        builder_.emit(op_width("Add", type), result, left.operand, right.operand);
+        break;
     case Op::Subtract:
         builder_.emit(op_width("Sub", type), result, left.operand, right.operand);
         break;
     case Op::Multiply:
         builder_.emit(op_width("Mul", type), result, left.operand, right.operand);
         break;
-    case Op::Divide: builder_.emit(op("Div", type), result, left.operand, right.operand); break;
-    default: builder_.emit(op("Mod", type), result, left.operand, right.operand); break;
+    case Op::Divide:
+        builder_.emit(op("Div", type), result, left.operand, right.operand);
+        break;
+    default:
+        builder_.emit(op("Mod", type), result, left.operand, right.operand);
+        break;
     }
     return Value{result, result_type};
 }

@@ -86,8 +86,8 @@ void PouGenerator::declare_locals() {
     const bool function = pou_.kind == ast::PouKind::Function;
     auto declare = [&](const sema::Field& field, Operand operand) {
         // Inputs are read-only inside the POU (6.5.2.2), as are constants.
-        const bool writable = field.section != ast::VarSectionKind::Input &&
-                              !is_constant(pou_, field.declaration);
+        const bool writable =
+            field.section != ast::VarSectionKind::Input && !is_constant(pou_, field.declaration);
         Place place = Place::direct(*field.type, operand, writable);
         if (field.section == ast::VarSectionKind::InOut) {
             place = {.kind = Place::Kind::Indirect,
@@ -203,7 +203,8 @@ Opcode PouGenerator::op_width(std::string_view family, const sema::Type& type) c
 
 void PouGenerator::load_immediate(Operand dst, const sema::Type& type, std::int64_t value) {
     const auto raw = static_cast<std::uint64_t>(value);
-    builder_.emit(program_.opcodes().get("Ldi", width_suffix(sema::scalar_of(type))), dst, Operand::imm(static_cast<std::uint32_t>(raw)),
+    builder_.emit(program_.opcodes().get("Ldi", width_suffix(sema::scalar_of(type))), dst,
+                  Operand::imm(static_cast<std::uint32_t>(raw)),
                   Operand::imm(static_cast<std::uint32_t>(raw >> 32)));
 }
 

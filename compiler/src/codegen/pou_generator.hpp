@@ -145,12 +145,11 @@ private:
     /// Calls native `name`; `arguments` already evaluated, strings passed by address.
     void call_native(const std::string& name, const vm::NativeSignature& signature,
                      const std::vector<Value>& arguments);
-    std::optional<Value> native_result(const vm::NativeSignature& signature,
-                                       const sema::Type& type, const Destination* dest);
+    std::optional<Value> native_result(const vm::NativeSignature& signature, const sema::Type& type,
+                                       const Destination* dest);
 
     // --- standard_functions.cpp --------------------------------------------------------------
-    std::optional<Value> standard_function(const std::string& name,
-                                           const ast::CallExpression& node,
+    std::optional<Value> standard_function(const std::string& name, const ast::CallExpression& node,
                                            const sema::Type* hint, const Destination* dest,
                                            const SourceRange& range);
     std::optional<Value> conversion(const std::string& name, const ast::CallExpression& node,
@@ -168,9 +167,9 @@ private:
     /// A conversion `X_TO_Y` between any two elementary types.
     std::optional<Value> explicit_convert(const Value& value, const sema::Type& want,
                                           const Destination* dest, const SourceRange& range);
-    std::optional<Value> numeric_function(const std::string& name,
-                                          const ast::CallExpression& node, const sema::Type* hint,
-                                          const Destination* dest, const SourceRange& range);
+    std::optional<Value> numeric_function(const std::string& name, const ast::CallExpression& node,
+                                          const sema::Type* hint, const Destination* dest,
+                                          const SourceRange& range);
 
     ProgramGenerator& program_;
     const sema::SemanticModel& model_;

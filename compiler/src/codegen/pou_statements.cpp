@@ -71,8 +71,8 @@ void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
                                   const ast::Expression& value, const SourceRange& range) {
     const auto word_place = place(*target.object);
     const auto word = word_place ? bit_word(target, range) : std::nullopt;
-    const auto bit = word ? value_as(value, types_.elementary(ast::ElementaryType::Bool))
-                          : std::nullopt;
+    const auto bit =
+        word ? value_as(value, types_.elementary(ast::ElementaryType::Bool)) : std::nullopt;
     if (!bit) {
         return;
     }
@@ -85,8 +85,9 @@ void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
     const Operand cleared = temp(type);
     builder_.emit(op_width("And", type), cleared, word->operand, bit_mask(type, target.bit, true));
     const Operand shifted_bit = temp(type);
-    builder_.emit(program_.opcodes().get("Cvt", "Bool" + std::string(type_suffix(sema::scalar_of(type)))),
-                  shifted_bit, bit->operand);
+    builder_.emit(
+        program_.opcodes().get("Cvt", "Bool" + std::string(type_suffix(sema::scalar_of(type)))),
+        shifted_bit, bit->operand);
     const std::uint8_t count[4] = {static_cast<std::uint8_t>(target.bit), 0, 0, 0};
     builder_.emit(op_width("Shl", type), shifted_bit, shifted_bit,
                   program_.constant({count, count + 4}, 4));
@@ -222,8 +223,8 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
 
 void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRange& range) {
     const sema::Symbol* symbol = model_.resolved(node.control_variable);
-    const auto control = symbol != nullptr ? variable(*symbol, node.control_variable.range)
-                                           : std::nullopt;
+    const auto control =
+        symbol != nullptr ? variable(*symbol, node.control_variable.range) : std::nullopt;
     if (!control) {
         return;
     }
@@ -282,8 +283,8 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
     loops_.pop_back();
     builder_.bind(loop.next);
     builder_.line(range.begin.line);
-    builder_.for_loop(program_.opcodes().get("For", suffix), body, control->operand,
-                      limit->operand, static_cast<std::int16_t>(step));
+    builder_.for_loop(program_.opcodes().get("For", suffix), body, control->operand, limit->operand,
+                      static_cast<std::int16_t>(step));
     builder_.bind(loop.exit);
 }
 

@@ -16,9 +16,12 @@ constexpr std::uint32_t kStackMargin = 256;
 
 vm::PouKind vm_kind(ast::PouKind kind) {
     switch (kind) {
-    case ast::PouKind::Function: return vm::PouKind::Function;
-    case ast::PouKind::FunctionBlock: return vm::PouKind::FunctionBlock;
-    case ast::PouKind::Program: return vm::PouKind::Program;
+    case ast::PouKind::Function:
+        return vm::PouKind::Function;
+    case ast::PouKind::FunctionBlock:
+        return vm::PouKind::FunctionBlock;
+    case ast::PouKind::Program:
+        return vm::PouKind::Program;
     }
     return vm::PouKind::Function;
 }
@@ -27,11 +30,11 @@ vm::PouKind vm_kind(ast::PouKind kind) {
 
 ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnostics& diagnostics)
     : program_(program), library_(library), diagnostics_(diagnostics),
-      types_(program.model, diagnostics,
-             [this](std::string_view name) { return library_pou(name); },
-             [this](const ast::VariableDeclaration& declaration) {
-                 return constants_declared_.contains(&declaration);
-             }) {
+      types_(
+          program.model, diagnostics, [this](std::string_view name) { return library_pou(name); },
+          [this](const ast::VariableDeclaration& declaration) {
+              return constants_declared_.contains(&declaration);
+          }) {
     for (const PouSource* source : {&program_, &library_}) {
         for (const ast::CompilationUnit& unit : source->units) {
             for (const ast::Pou& pou : unit.pous) {
@@ -291,9 +294,8 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
                                    "connecting program parameters in a configuration is not "
                                    "supported yet");
             }
-            const std::uint32_t offset =
-                program_instance(*symbol->pou, instance.name.name,
-                                 instance.retention == ast::Retention::Retain);
+            const std::uint32_t offset = program_instance(
+                *symbol->pou, instance.name.name, instance.retention == ast::Retention::Retain);
             const vm::TaskEntry entry{pou_index(*symbol->pou), offset};
             std::size_t task = tasks_.size();
             if (instance.task) {
@@ -389,7 +391,8 @@ std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {
         descriptor.kind = vm::TypeKind::Struct;
         for (const sema::Type* part = &type; part != nullptr; part = part->base) {
             for (const sema::Field& field : part->fields) {
-                descriptor.fields.push_back({field.name, type_descriptor(*field.type), field.offset});
+                descriptor.fields.push_back(
+                    {field.name, type_descriptor(*field.type), field.offset});
             }
         }
         break;
@@ -415,17 +418,30 @@ void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const s
     }
     vm::IoBinding binding{.type = sema::scalar_of(type), .offset = offset};
     switch (address.area) {
-    case ast::DirectAddress::Area::Input: binding.area = vm::IoArea::Input; break;
-    case ast::DirectAddress::Area::Output: binding.area = vm::IoArea::Output; break;
-    case ast::DirectAddress::Area::Memory: binding.area = vm::IoArea::Memory; break;
+    case ast::DirectAddress::Area::Input:
+        binding.area = vm::IoArea::Input;
+        break;
+    case ast::DirectAddress::Area::Output:
+        binding.area = vm::IoArea::Output;
+        break;
+    case ast::DirectAddress::Area::Memory:
+        binding.area = vm::IoArea::Memory;
+        break;
     }
     // Byte addressing as CODESYS: %IW4 is the word at byte 8, %IX1.3 bit 3 of byte 1.
     std::uint32_t unit = 1;
     switch (address.size) {
-    case ast::DirectAddress::Size::Word: unit = 2; break;
-    case ast::DirectAddress::Size::DoubleWord: unit = 4; break;
-    case ast::DirectAddress::Size::LongWord: unit = 8; break;
-    default: break;
+    case ast::DirectAddress::Size::Word:
+        unit = 2;
+        break;
+    case ast::DirectAddress::Size::DoubleWord:
+        unit = 4;
+        break;
+    case ast::DirectAddress::Size::LongWord:
+        unit = 8;
+        break;
+    default:
+        break;
     }
     const bool bit = address.size == ast::DirectAddress::Size::None ||
                      address.size == ast::DirectAddress::Size::Bit;

@@ -4,10 +4,9 @@
 #include "eposp/compiler/diagnostics.hpp"
 #include "eposp/compiler/sema/semantic_model.hpp"
 #include "eposp/compiler/sema/type_table.hpp"
+#include "eposp/vm/builder.hpp"
 #include "opcode_table.hpp"
 #include "place.hpp"
-
-#include "eposp/vm/builder.hpp"
 
 #include <deque>
 #include <map>
@@ -58,8 +57,8 @@ public:
                        const sema::SemanticModel& model, std::span<std::uint8_t> bytes);
     /// The value of a constant expression of type `type`, encoded as in memory.
     std::optional<std::vector<std::uint8_t>> constant_value(const ast::Expression& expression,
-                                                           const sema::Type& type,
-                                                           const sema::SemanticModel& model);
+                                                            const sema::Type& type,
+                                                            const sema::SemanticModel& model);
 
 private:
     struct QueuedPou {
@@ -74,8 +73,7 @@ private:
                                 const std::vector<ast::DeclarationSection>& sections);
     void lay_out_programs(const ast::Configuration& configuration);
     void default_program_instances();
-    std::uint32_t program_instance(const ast::Pou& program, const std::string& path,
-                                   bool retain);
+    std::uint32_t program_instance(const ast::Pou& program, const std::string& path, bool retain);
     void add_symbols(const std::string& path, const sema::Type& type, std::uint32_t offset);
     void add_io_binding(const ast::DirectAddress& address, const sema::Type& type,
                         std::uint32_t offset);

@@ -24,9 +24,12 @@ bool one_of(const std::string& name, std::initializer_list<std::string_view> nam
 /// The spelling of a type in the names of the VM's natives (`TOD_TO_STRING`).
 std::string native_type_name(E type) {
     switch (type) {
-    case E::TimeOfDay: return "TOD";
-    case E::DateAndTime: return "DT";
-    default: return std::string(ast::name_of(type));
+    case E::TimeOfDay:
+        return "TOD";
+    case E::DateAndTime:
+        return "DT";
+    default:
+        return std::string(ast::name_of(type));
     }
 }
 
@@ -34,9 +37,14 @@ std::string native_type_name(E type) {
 /// milliseconds, DATE and DT in seconds, the long forms in nanoseconds).
 std::int64_t time_unit(E type) {
     switch (type) {
-    case E::Time: case E::TimeOfDay: return 1'000'000;
-    case E::Date: case E::DateAndTime: return 1'000'000'000;
-    default: return 1;
+    case E::Time:
+    case E::TimeOfDay:
+        return 1'000'000;
+    case E::Date:
+    case E::DateAndTime:
+        return 1'000'000'000;
+    default:
+        return 1;
     }
 }
 
@@ -65,8 +73,8 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
     if (sema::is_conversion_function(name)) {
         return conversion(name, node, dest, range);
     }
-    if (one_of(name, {"LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE",
-                      "FIND"})) {
+    if (one_of(name,
+               {"LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND"})) {
         return string_function(name, node, dest, range);
     }
     if (name == "ADR" || name == "SIZEOF") {
@@ -120,7 +128,8 @@ std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
         return std::nullopt;
     }
     if (!sema::is_integer(*value->type)) {
-        error(expression.range, fmt::format("an integer is needed here, not {}", value->type->name));
+        error(expression.range,
+              fmt::format("an integer is needed here, not {}", value->type->name));
         return std::nullopt;
     }
     return explicit_convert(*value, dint, nullptr, expression.range);
@@ -141,7 +150,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
                                            dest->type->wide == want.wide
                                        ? dest->operand
                                        : temp(want);
-            const sema::Type& target = dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
+            const sema::Type& target =
+                dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
             call_native(from.wide ? "WSTRING_TO_STRING" : "STRING_TO_WSTRING",
                         {false, S::Bool, {S::Ptr, S::Ptr}}, {Value{result, &target}, value});
             return Value{result, &target};
@@ -151,11 +161,12 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
                 error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
                 return std::nullopt;
             }
-            const Operand result = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
-                                           !dest->type->wide
-                                       ? dest->operand
-                                       : temp(want);
-            const sema::Type& target = dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
+            const Operand result =
+                dest != nullptr && dest->type->kind == sema::TypeKind::String && !dest->type->wide
+                    ? dest->operand
+                    : temp(want);
+            const sema::Type& target =
+                dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
             call_native(native_type_name(from.elementary) + "_TO_STRING",
                         {false, S::Bool, {S::Ptr, sema::scalar_of(from)}},
                         {Value{result, &target}, value});
@@ -180,7 +191,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         if (from.elementary == E::DateAndTime && want.elementary != E::DateAndTime &&
             (want.elementary == E::Date || want.elementary == E::TimeOfDay)) {
             const vm::NativeSignature signature{true, S::I64, {S::I64}};
-            call_native(want.elementary == E::Date ? "DT_TO_DATE" : "DT_TO_TOD", signature, {value});
+            call_native(want.elementary == E::Date ? "DT_TO_DATE" : "DT_TO_TOD", signature,
+                        {value});
             return native_result(signature, want, dest);
         }
         return Value{value.operand, &want}; // the same nanoseconds
@@ -208,9 +220,9 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         return Value{source.operand, &want};
     }
     const Operand result = result_operand(want, dest);
-    builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(a)) +
-                                                    std::string(type_suffix(b))),
-                  result, source.operand);
+    builder_.emit(
+        program_.opcodes().get("Cvt", std::string(type_suffix(a)) + std::string(type_suffix(b))),
+        result, source.operand);
     return Value{result, &want};
 }
 
@@ -232,8 +244,8 @@ std::optional<Value> PouGenerator::conversion(const std::string& name,
             types_.elementary(*ast::elementary_type_from_name(name.substr(0, separator)));
         value = eval(argument, &source);
         if (value && value->type != &source &&
-            !(value->type->kind == sema::TypeKind::String && source.kind == sema::TypeKind::String &&
-              value->type->wide == source.wide)) {
+            !(value->type->kind == sema::TypeKind::String &&
+              source.kind == sema::TypeKind::String && value->type->wide == source.wide)) {
             if (!sema::converts_implicitly(*value->type, source)) {
                 error(argument.range, fmt::format("{} needs a {} argument, not {}", name,
                                                   source.name, value->type->name));
@@ -259,19 +271,22 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
         bool returns_text;
     };
     static constexpr std::array kShapes{
-        Shape{"LEN", 1, 0, false},    Shape{"FIND", 2, 0, false},  Shape{"LEFT", 1, 1, true},
-        Shape{"RIGHT", 1, 1, true},   Shape{"MID", 1, 2, true},    Shape{"INSERT", 2, 1, true},
-        Shape{"DELETE", 1, 2, true},  Shape{"REPLACE", 2, 2, true}, Shape{"CONCAT", -1, 0, true},
+        Shape{"LEN", 1, 0, false},   Shape{"FIND", 2, 0, false},   Shape{"LEFT", 1, 1, true},
+        Shape{"RIGHT", 1, 1, true},  Shape{"MID", 1, 2, true},     Shape{"INSERT", 2, 1, true},
+        Shape{"DELETE", 1, 2, true}, Shape{"REPLACE", 2, 2, true}, Shape{"CONCAT", -1, 0, true},
     };
     const Shape shape = *std::find_if(kShapes.begin(), kShapes.end(),
                                       [&](const Shape& s) { return s.name == name; });
-    const std::size_t texts = shape.texts < 0 ? node.arguments.size()
-                                              : static_cast<std::size_t>(shape.texts);
+    const std::size_t texts =
+        shape.texts < 0 ? node.arguments.size() : static_cast<std::size_t>(shape.texts);
     if ((shape.texts < 0 && node.arguments.size() < 2) ||
         (shape.texts >= 0 &&
          node.arguments.size() != texts + static_cast<std::size_t>(shape.integers))) {
-        error(range, fmt::format("{} takes {} arguments", name,
-                                 shape.texts < 0 ? "two or more" : std::to_string(texts + static_cast<std::size_t>(shape.integers))));
+        error(range,
+              fmt::format("{} takes {} arguments", name,
+                          shape.texts < 0
+                              ? "two or more"
+                              : std::to_string(texts + static_cast<std::size_t>(shape.integers))));
         return std::nullopt;
     }
     std::vector<Value> arguments;
@@ -301,8 +316,8 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
         return native_result(signature, types_.elementary(E::Int), dest);
     }
     const sema::Type& natural = types_.string(std::min<std::uint32_t>(capacity, 0xFFFF), false);
-    const bool into_dest = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
-                           !dest->type->wide;
+    const bool into_dest =
+        dest != nullptr && dest->type->kind == sema::TypeKind::String && !dest->type->wide;
     Value result{into_dest ? dest->operand : temp(natural), into_dest ? dest->type : &natural};
     if (shape.texts < 0) {
         // CONCAT is binary in the VM: folded left to right into the result (vm/README).
@@ -368,8 +383,8 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
             if (common == nullptr || sema::converts_implicitly(*common, *values[i]->type)) {
                 common = values[i]->type;
             } else if (!sema::converts_implicitly(*values[i]->type, *common)) {
-                error(arguments[i].range, fmt::format("{} mixes {} and {}", name, common->name,
-                                                      values[i]->type->name));
+                error(arguments[i].range,
+                      fmt::format("{} mixes {} and {}", name, common->name, values[i]->type->name));
                 return std::nullopt;
             }
         }
@@ -378,7 +393,8 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         values[i] = convert(*values[i], *common, nullptr);
     }
     const sema::Type& type = *common;
-    if (name != "SEL" && name != "MUX" && (!sema::is_scalar(type) || type.kind == sema::TypeKind::Reference)) {
+    if (name != "SEL" && name != "MUX" &&
+        (!sema::is_scalar(type) || type.kind == sema::TypeKind::Reference)) {
         error(range, fmt::format("{} needs numbers, not {}", name, type.name));
         return std::nullopt;
     }
@@ -438,8 +454,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
 
 std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                                                     const ast::CallExpression& node,
-                                                    const sema::Type* hint,
-                                                    const Destination* dest,
+                                                    const sema::Type* hint, const Destination* dest,
                                                     const SourceRange& range) {
     const auto& arguments = node.arguments;
     auto arity = [&](std::size_t n) {
@@ -451,10 +466,10 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     };
     using Op = ast::BinaryOperator;
     static const std::vector<std::pair<std::string_view, Op>> kOperators{
-        {"ADD", Op::Add}, {"MUL", Op::Multiply}, {"SUB", Op::Subtract}, {"DIV", Op::Divide},
-        {"MOD", Op::Modulo}, {"AND", Op::And}, {"OR", Op::Or}, {"XOR", Op::Xor},
-        {"GT", Op::Greater}, {"GE", Op::GreaterEqual}, {"EQ", Op::Equal},
-        {"LE", Op::LessEqual}, {"LT", Op::Less}, {"NE", Op::NotEqual}};
+        {"ADD", Op::Add},    {"MUL", Op::Multiply},    {"SUB", Op::Subtract}, {"DIV", Op::Divide},
+        {"MOD", Op::Modulo}, {"AND", Op::And},         {"OR", Op::Or},        {"XOR", Op::Xor},
+        {"GT", Op::Greater}, {"GE", Op::GreaterEqual}, {"EQ", Op::Equal},     {"LE", Op::LessEqual},
+        {"LT", Op::Less},    {"NE", Op::NotEqual}};
     for (const auto& [candidate, op] : kOperators) {
         if (candidate != name) {
             continue;
@@ -466,11 +481,13 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
         // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is
         // a > b AND b > c; the other extensible functions fold left to right.
-        auto pair = operands(*arguments[0].value, *arguments[1].value, comparison ? nullptr : hint, range);
+        auto pair =
+            operands(*arguments[0].value, *arguments[1].value, comparison ? nullptr : hint, range);
         if (!pair) {
             return std::nullopt;
         }
-        auto result = apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr, range);
+        auto result =
+            apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr, range);
         Value previous = pair->second;
         for (std::size_t i = 2; result && i < arguments.size(); ++i) {
             auto next = value_as(*arguments[i].value, *previous.type);
@@ -528,7 +545,10 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             return std::nullopt;
         }
         count = explicit_convert(*count, udint, nullptr, range);
-        const std::string family = name == "SHL" ? "Shl" : name == "SHR" ? "Shr" : name == "ROL" ? "Rol" : "Ror";
+        const std::string family = name == "SHL"   ? "Shl"
+                                   : name == "SHR" ? "Shr"
+                                   : name == "ROL" ? "Rol"
+                                                   : "Ror";
         const Operand result = result_operand(*value->type, dest);
         builder_.emit(op_width(family, *value->type), result, value->operand, count->operand);
         return Value{result, value->type};
@@ -579,7 +599,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         return std::nullopt;
     }
     const sema::Type* real_hint = hint != nullptr && sema::is_real(*hint) ? hint : nullptr;
-    auto first = eval(*arguments[0].value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
+    auto first =
+        eval(*arguments[0].value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
     if (!first || !sema::is_numeric(*first->type)) {
         if (first) {
             error(range, fmt::format("{} needs a number, not {}", name, first->type->name));
@@ -587,8 +608,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         return std::nullopt;
     }
     const sema::Type& real = sema::is_real(*first->type) ? *first->type
-                             : real_hint != nullptr     ? *real_hint
-                                                        : types_.elementary(E::Lreal);
+                             : real_hint != nullptr      ? *real_hint
+                                                         : types_.elementary(E::Lreal);
     first = explicit_convert(*first, real, nullptr, range);
     std::vector<Value> values{*first};
     if (two) {

@@ -47,20 +47,20 @@ struct Type {
     ast::ElementaryType elementary = ast::ElementaryType::Bool; ///< Elementary, Enum (its base)
     std::uint32_t size = 0;
     std::uint32_t align = 1;
-    std::uint32_t capacity = 0;                   ///< String
-    bool wide = false;                            ///< String: WSTRING
-    const Type* element = nullptr;                ///< Array element, Reference target
-    std::vector<ArrayDimension> dimensions{};       ///< Array
-    std::vector<Field> fields{};                  ///< Struct, Instance
-    const ast::Pou* pou = nullptr;                ///< Instance
-    const Type* base = nullptr;                   ///< Instance: the FB it EXTENDS
+    std::uint32_t capacity = 0;               ///< String
+    bool wide = false;                        ///< String: WSTRING
+    const Type* element = nullptr;            ///< Array element, Reference target
+    std::vector<ArrayDimension> dimensions{}; ///< Array
+    std::vector<Field> fields{};              ///< Struct, Instance
+    const ast::Pou* pou = nullptr;            ///< Instance
+    const Type* base = nullptr;               ///< Instance: the FB it EXTENDS
     std::vector<std::pair<std::string, std::int64_t>> enumerators{}; ///< Enum
 
     /// The field `name` (case-insensitive), searching the base part too.
     const Field* field(std::string_view field_name) const;
 };
 
-bool is_integer(const Type& type);   ///< ANY_INT
+bool is_integer(const Type& type);    ///< ANY_INT
 bool is_bit_string(const Type& type); ///< ANY_BIT without BOOL
 bool is_real(const Type& type);       ///< ANY_REAL
 bool is_numeric(const Type& type);    ///< ANY_NUM
