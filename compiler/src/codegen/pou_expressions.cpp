@@ -625,6 +625,9 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
             if (!top && l.iec == nullptr && is_small_integer(*l.type)) {
                 l = widened(l);
             }
+            if (*immediate == 0) {
+                return l; // x + 0
+            }
             const Operand result = result_operand(*l.type, l.iec != nullptr ? nullptr : dest);
             const std::int64_t delta = node.op == Op::Add ? *immediate : -std::int64_t{*immediate};
             builder_.emit(op_width("AddI", *l.type), result, l.operand,

@@ -398,8 +398,17 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         error(range, fmt::format("{} needs numbers, not {}", name, type.name));
         return std::nullopt;
     }
-    // A temporary, so that no argument is overwritten before it is read.
-    const Operand result = temp(type);
+    // The destination when no argument lives there (so none is overwritten before it is
+    // read), else the first value if it is a temporary of its own, else a new temporary.
+    const std::size_t first_value = name == "LIMIT" ? 1 : first;
+    bool dest_free = dest != nullptr && dest->type == &type;
+    for (std::size_t i = first; dest_free && i < arguments.size(); ++i) {
+        dest_free = values[i]->operand.raw != dest->operand.raw;
+    }
+    const Operand result = dest_free ? dest->operand
+                           : is_temporary(values[first_value]->operand) && name != "SEL" && name != "MUX"
+                               ? values[first_value]->operand
+                               : temp(type);
     const vm::Label done = builder_.label();
     std::string_view suffix = type_suffix(sema::scalar_of(type));
     if (suffix == "Bool") {
