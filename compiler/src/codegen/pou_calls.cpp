@@ -192,6 +192,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     }
     out_slot(end);
     builder_.emit(Opcode::Call, Operand::imm(index));
+    cache_.clear();
     std::optional<Value> result = Value{};
     if (!frame.fields.empty() && frame.fields.front().declaration == nullptr) {
         const sema::Type& type = *frame.fields.front().type;
@@ -301,6 +302,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
     } else {
         builder_.emit(Opcode::CallFbP, address_of(instance), Operand::imm(index));
     }
+    cache_.clear();
     for (const auto& [field, argument] : outputs) {
         const auto target = place(*argument->value);
         if (!target) {
@@ -338,6 +340,7 @@ void PouGenerator::call_native(const std::string& name, const vm::NativeSignatur
     }
     out_slot(vm::argument_block_size(signature));
     builder_.emit(Opcode::CallNative, Operand::imm(import));
+    cache_.clear();
 }
 
 std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& signature,

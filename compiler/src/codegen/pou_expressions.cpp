@@ -164,6 +164,7 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     }
     // The linear index: sum of (i_d - lower_d) * stride_d, for one dimension just i.
     Operand linear{};
+    Operand source{}; // the last index as written, which identifies a one-dimensional access
     for (std::size_t d = 0; d < node.indices.size(); ++d) {
         auto value = eval(*node.indices[d], &dint);
         if (!value) {
@@ -174,12 +175,20 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                   fmt::format("an array index must be an integer, not {}", value->type->name));
             return std::nullopt;
         }
+        source = value->operand;
         if (value->type != &dint) {
-            const Operand converted = temp(dint);
-            builder_.emit(
-                program_.opcodes().get(
-                    "Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32"),
-                converted, value->operand);
+            const CacheKey key{value->operand.raw, kNoArray, 0};
+            Operand converted{};
+            if (const auto hit = cached(key)) {
+                converted = *hit;
+            } else {
+                converted = temp(dint);
+                builder_.emit(
+                    program_.opcodes().get(
+                        "Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32"),
+                    converted, value->operand);
+                cache_.emplace_back(key, converted);
+            }
             value = Value{converted, &dint};
         }
         if (node.indices.size() == 1) {
@@ -217,7 +226,18 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                      .array = descriptor,
                      .writable = array->writable};
     }
+    const CacheKey key{source.raw, array->operand.raw, descriptor};
+    const bool cacheable = one && array->kind == Place::Kind::Direct;
+    if (const auto hit = cacheable ? cached(key) : std::nullopt) {
+        return Place{.kind = Place::Kind::Indirect,
+                     .type = &element,
+                     .operand = *hit,
+                     .writable = array->writable};
+    }
     const Operand pointer = temp(types_.reference(&element));
+    if (cacheable) {
+        cache_.emplace_back(key, pointer);
+    }
     if (array->kind == Place::Kind::Direct) {
         builder_.emit(Opcode::IdxA, pointer, array->operand, linear, descriptor);
     } else {

@@ -156,6 +156,20 @@ Operand PouGenerator::temp(const sema::Type& type) {
     return operand;
 }
 
+void PouGenerator::release(std::uint32_t mark) {
+    frame_top_ = mark;
+    cache_.clear();
+}
+
+std::optional<Operand> PouGenerator::cached(const CacheKey& key) const {
+    for (const auto& [candidate, result] : cache_) {
+        if (candidate == key) {
+            return result;
+        }
+    }
+    return std::nullopt;
+}
+
 bool PouGenerator::is_temporary(Operand operand) const {
     return operand.base() == vm::Base::Frame && operand.offset() >= locals_end_;
 }

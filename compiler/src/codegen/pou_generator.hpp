@@ -39,6 +39,15 @@ private:
         vm::Label exit;
         vm::Label next;
     };
+    /// What a cached computation was made from: an index converted to DINT, or the address of
+    /// an element of an array (`items[i]` in `items[i].pos := items[i].pos + 1`).
+    struct CacheKey {
+        std::uint32_t source = 0;     // the operand of the index as written
+        std::uint32_t array = 0;      // the array operand, or kNoArray for a conversion
+        std::uint16_t descriptor = 0;
+        bool operator==(const CacheKey&) const = default;
+    };
+    static constexpr std::uint32_t kNoArray = 0xFFFFFFFF;
     struct Local {
         Place place;
         ast::VarSectionKind section;
@@ -53,6 +62,9 @@ private:
     std::uint32_t out_slot(std::uint32_t end);
     /// Whether `operand` is a temporary of the current statement (not a variable).
     bool is_temporary(vm::Operand operand) const;
+    /// Ends the temporaries allocated since `mark` and forgets what was computed in them.
+    void release(std::uint32_t mark);
+    std::optional<vm::Operand> cached(const CacheKey& key) const;
     std::optional<Place> variable(const sema::Symbol& symbol, const SourceRange& range);
     void error(const SourceRange& range, std::string message);
     void warning(const SourceRange& range, std::string message);
@@ -185,7 +197,11 @@ private:
     std::vector<Loop> loops_;
     std::vector<std::uint32_t> for_variables_; // operands of the enclosing FOR loops
     bool result_assigned_ = false;
-    std::unordered_set<std::string> used_; // folded names of the variables referred to
+    std::unordered_set<std::string> used_;
+    /// Index conversions and element addresses computed in the current statement, reused by
+    /// the same statement: straight-line code in which no variable changes until its end
+    /// (calls forget them, since a function may change a global index).
+    std::vector<std::pair<CacheKey, vm::Operand>> cache_; // folded names of the variables referred to
     vm::Label end_;
 };
 

@@ -30,6 +30,7 @@ void PouGenerator::statements(const ast::StatementList& list) {
 void PouGenerator::statement(const ast::Statement& statement) {
     builder_.line(statement.range.begin.line);
     const std::uint32_t mark = frame_top_; // temporaries live for one statement
+    cache_.clear();
     std::visit(
         [&](const auto& node) {
             using T = std::decay_t<decltype(node)>;
@@ -64,7 +65,7 @@ void PouGenerator::statement(const ast::Statement& statement) {
             }
         },
         statement.node);
-    frame_top_ = mark;
+    release(mark);
 }
 
 void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
@@ -145,7 +146,7 @@ void PouGenerator::if_statement(const ast::IfStatement& node) {
         const vm::Label next = builder_.label();
         const std::uint32_t mark = frame_top_;
         branch(*block.condition, false, next);
-        frame_top_ = mark;
+        release(mark);
         statements(block.body);
         if (i + 1 < node.branches.size() || !node.else_body.empty()) {
             builder_.jump(Opcode::Jmp, end);
@@ -299,7 +300,7 @@ void PouGenerator::while_statement(const ast::WhileStatement& node) {
     builder_.bind(loop.next);
     const std::uint32_t mark = frame_top_;
     branch(*node.condition, true, body);
-    frame_top_ = mark;
+    release(mark);
     builder_.bind(loop.exit);
 }
 
@@ -313,7 +314,7 @@ void PouGenerator::repeat_statement(const ast::RepeatStatement& node) {
     builder_.bind(loop.next);
     const std::uint32_t mark = frame_top_;
     branch(*node.until, false, body);
-    frame_top_ = mark;
+    release(mark);
     builder_.bind(loop.exit);
 }
 
