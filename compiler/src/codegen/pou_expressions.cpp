@@ -634,7 +634,19 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
             ? small_literal(*node.right)
             : std::nullopt;
     std::optional<std::pair<Value, Value>> pair;
-    if (immediate) {
+    if ((node.op == Op::Multiply || node.op == Op::Divide) && !is_untyped_literal(*node.left)) {
+        // TIME * ANY_NUM and TIME / ANY_NUM (table 30) are natives; the rest is ordinary.
+        const auto left = operand_value(*node.left, hint);
+        if (!left) {
+            return std::nullopt;
+        }
+        if (left->type->elementary == E::Time || left->type->elementary == E::Ltime) {
+            return scale_time(node.op == Op::Multiply, *left, *node.right, dest);
+        }
+        const auto right =
+            operand_value(*node.right, is_untyped_literal(*node.right) ? left->type : hint);
+        pair = right ? unify(*left, *right, range) : std::nullopt;
+    } else if (immediate) {
         auto left = operand_value(*node.left, hint);
         if (!left) {
             return std::nullopt;
@@ -688,6 +700,29 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
     return apply(node.op, left, right, dest, range);
 }
 
+std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
+                                              const ast::Expression& factor,
+                                              const Destination* dest) {
+    const sema::Type& lint = types_.elementary(E::Lint);
+    const auto value = eval(factor, &lint);
+    if (!value) {
+        return std::nullopt;
+    }
+    const bool real = sema::is_real(*value->type);
+    if (!real && !sema::is_integer(*value->type)) {
+        error(factor.range, fmt::format("a TIME is multiplied or divided by a number, not {}",
+                                        value->type->name));
+        return std::nullopt;
+    }
+    const sema::Type& wide = real ? types_.elementary(E::Lreal) : lint;
+    const auto converted = explicit_convert(*value, wide, nullptr, factor.range);
+    const vm::NativeSignature signature{
+        true, vm::Scalar::I64, {vm::Scalar::I64, real ? vm::Scalar::F64 : vm::Scalar::I64}};
+    call_native(std::string(multiply ? "MUL_TIME" : "DIV_TIME") + (real ? "_LREAL" : ""), signature,
+                {time, *converted});
+    return native_result(signature, *time.type, dest);
+}
+
 std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,
                                          const Value& right, const Destination* dest,
                                          const SourceRange& range) {
@@ -713,6 +748,15 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         return Value{result, &type};
     }
     const sema::Type* result_type = &type;
+    const bool time_of_day = type.elementary == E::TimeOfDay || type.elementary == E::Ltod;
+    if (time_of_day && (oper == Op::Add || oper == Op::Subtract) &&
+        (right.type->elementary == E::Time || right.type->elementary == E::Ltime)) {
+        // Wraps around midnight: a native (vm/README).
+        const vm::NativeSignature signature{
+            true, vm::Scalar::I64, {vm::Scalar::I64, vm::Scalar::I64}};
+        call_native(oper == Op::Add ? "ADD_TOD_TIME" : "SUB_TOD_TIME", signature, {left, right});
+        return native_result(signature, type, dest);
+    }
     if (sema::is_time_like(type) || sema::is_time_like(*right.type)) {
         // 6.6.2.5.5 table 30: ADD/SUB of durations and points in time, all in nanoseconds.
         const bool durations =

@@ -181,9 +181,11 @@ std::uint32_t PouGenerator::out_slot(std::uint32_t end) {
 
 std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const SourceRange& range) {
     used_.insert(sema::fold_case(symbol.name));
+    // A PROGRAM's own VAR_GLOBAL lives in its instance; other globals in the configuration.
+    const auto local = locals_.find(sema::fold_case(symbol.name));
     if (symbol.kind == sema::SymbolKind::Variable &&
         (symbol.section == ast::VarSectionKind::External ||
-         symbol.section == ast::VarSectionKind::Global)) {
+         (symbol.section == ast::VarSectionKind::Global && local == locals_.end()))) {
         auto global = program_.global(symbol.name);
         if (!global) {
             error(range, fmt::format("no global variable '{}' in the configuration", symbol.name));
@@ -197,8 +199,8 @@ std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const So
     }
     if (symbol.kind == sema::SymbolKind::Variable ||
         (symbol.kind == sema::SymbolKind::Pou && symbol.pou == &pou_)) {
-        if (const auto it = locals_.find(sema::fold_case(symbol.name)); it != locals_.end()) {
-            return it->second.place;
+        if (local != locals_.end()) {
+            return local->second.place;
         }
     }
     error(range, fmt::format("'{}' is not a variable", symbol.name));

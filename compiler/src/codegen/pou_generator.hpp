@@ -42,8 +42,8 @@ private:
     /// What a cached computation was made from: an index converted to DINT, or the address of
     /// an element of an array (`items[i]` in `items[i].pos := items[i].pos + 1`).
     struct CacheKey {
-        std::uint32_t source = 0;     // the operand of the index as written
-        std::uint32_t array = 0;      // the array operand, or kNoArray for a conversion
+        std::uint32_t source = 0; // the operand of the index as written
+        std::uint32_t array = 0;  // the array operand, or kNoArray for a conversion
         std::uint16_t descriptor = 0;
         bool operator==(const CacheKey&) const = default;
     };
@@ -118,6 +118,9 @@ private:
                                                     const SourceRange& range);
     /// The immediate of an untyped integer literal that fits 32 bits signed.
     std::optional<std::int32_t> small_literal(const ast::Expression& expression);
+    /// TIME * number, TIME / number.
+    std::optional<Value> scale_time(bool multiply, const Value& time, const ast::Expression& factor,
+                                    const Destination* dest);
     /// A binary operator on operands already of their common type.
     std::optional<Value> apply(ast::BinaryOperator op, const Value& left, const Value& right,
                                const Destination* dest, const SourceRange& range);
@@ -201,7 +204,8 @@ private:
     /// Index conversions and element addresses computed in the current statement, reused by
     /// the same statement: straight-line code in which no variable changes until its end
     /// (calls forget them, since a function may change a global index).
-    std::vector<std::pair<CacheKey, vm::Operand>> cache_; // folded names of the variables referred to
+    std::vector<std::pair<CacheKey, vm::Operand>>
+        cache_; // folded names of the variables referred to
     vm::Label end_;
 };
 

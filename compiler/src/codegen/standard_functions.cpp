@@ -405,10 +405,11 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
     for (std::size_t i = first; dest_free && i < arguments.size(); ++i) {
         dest_free = values[i]->operand.raw != dest->operand.raw;
     }
-    const Operand result = dest_free ? dest->operand
-                           : is_temporary(values[first_value]->operand) && name != "SEL" && name != "MUX"
-                               ? values[first_value]->operand
-                               : temp(type);
+    const Operand result =
+        dest_free ? dest->operand
+        : is_temporary(values[first_value]->operand) && name != "SEL" && name != "MUX"
+            ? values[first_value]->operand
+            : temp(type);
     const vm::Label done = builder_.label();
     std::string_view suffix = type_suffix(sema::scalar_of(type));
     if (suffix == "Bool") {
