@@ -1,7 +1,6 @@
 // What compile() puts into the image besides code: tasks, symbols, retain ranges and I/O
 // bindings; and that it never crashes, whatever is taken out of a real program.
 #include "codegen_harness.hpp"
-
 #include "eposp/compiler/compiler.hpp"
 
 #include <fstream>
@@ -74,8 +73,8 @@ TEST(Image, ProgramWithoutConfigurationGetsADefaultTask) {
 
 // Every bench program with each line in turn left out: many broken programs, none may crash.
 TEST(Robustness, BenchProgramsWithALineMissingNeverCrash) {
-    for (const char* name : {"bubble_sort", "conveyor_fsm", "crc32", "pid_plant", "sieve",
-                             "strings"}) {
+    for (const char* name :
+         {"bubble_sort", "conveyor_fsm", "crc32", "pid_plant", "sieve", "strings"}) {
         std::ifstream file(std::string(EPOSP_SOURCE_DIR) + "/tests/compiler/inputs/" + name +
                            ".st");
         std::vector<std::string> lines;

@@ -132,7 +132,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                 ok = false;
                 continue;
             }
-            if (target->type != b.field->type->element) {
+            if (!sema::same_type(*target->type, *b.field->type->element)) {
                 error(b.argument->range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
                                                      b.field->name, b.field->type->element->name));
                 ok = false;
@@ -279,7 +279,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             if (!target) {
                 continue;
             }
-            if (target->type != field->type->element) {
+            if (!sema::same_type(*target->type, *field->type->element)) {
                 error(argument.range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
                                                   field->name, field->type->element->name));
                 continue;

@@ -118,7 +118,18 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
                                   "its body (IEC 61131-3 7.3.3.4.2)");
         return;
     }
-    if (const auto* name = std::get_if<ast::NameExpression>(&node.target->node)) {
+    // The result counts as assigned when it or a part of it is (`F.x := 1`).
+    const ast::Expression* root = node.target.get();
+    for (;;) {
+        if (const auto* member = std::get_if<ast::MemberExpression>(&root->node)) {
+            root = member->object.get();
+        } else if (const auto* element = std::get_if<ast::IndexExpression>(&root->node)) {
+            root = element->array.get();
+        } else {
+            break;
+        }
+    }
+    if (const auto* name = std::get_if<ast::NameExpression>(&root->node)) {
         const sema::Symbol* symbol = model_.resolved(name->name);
         result_assigned_ = result_assigned_ || (symbol != nullptr && symbol->pou == &pou_);
     }

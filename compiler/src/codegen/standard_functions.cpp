@@ -297,6 +297,11 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
         if (!value) {
             return std::nullopt;
         }
+        if (name == "LEN" && value->type->kind == sema::TypeKind::String && value->type->wide) {
+            const vm::NativeSignature signature{true, S::I32, {S::Ptr}};
+            call_native("LEN_WSTRING", signature, {*value});
+            return native_result(signature, types_.elementary(E::Int), dest);
+        }
         if (i < texts) {
             if (value->type->kind != sema::TypeKind::String || value->type->wide) {
                 error(expression.range,

@@ -144,8 +144,25 @@ vm::Scalar scalar_of(const Type& type) {
     }
 }
 
+bool same_type(const Type& a, const Type& b) {
+    if (&a == &b) {
+        return true;
+    }
+    if (a.kind != TypeKind::Array || b.kind != TypeKind::Array || a.size != b.size ||
+        a.dimensions.size() != b.dimensions.size()) {
+        return false;
+    }
+    for (std::size_t d = 0; d < a.dimensions.size(); ++d) {
+        if (a.dimensions[d].lower != b.dimensions[d].lower ||
+            a.dimensions[d].count != b.dimensions[d].count) {
+            return false;
+        }
+    }
+    return same_type(*a.element, *b.element);
+}
+
 bool converts_implicitly(const Type& from, const Type& to) {
-    if (&from == &to) {
+    if (same_type(from, to)) {
         return true;
     }
     if (from.kind == TypeKind::Null) {

@@ -72,6 +72,10 @@ bool is_scalar(const Type& type);
 /// The VM representation of a scalar type.
 vm::Scalar scalar_of(const Type& type);
 
+/// Whether two types are the same: the same object, or arrays of the same bounds and the
+/// same element type (array types are not interned, each declaration makes its own).
+bool same_type(const Type& a, const Type& b);
+
 /// IEC 61131-3 ed. 3, 6.6.1.6 figure 11: the implicit widening conversions. True when a value
 /// of `from` may be used where `to` is expected without a conversion function.
 bool converts_implicitly(const Type& from, const Type& to);
