@@ -101,6 +101,31 @@ END_CONFIGURATION
 namespace eposp::compiler::test {
 namespace {
 
+TEST(EnableInputs, EnFalseSkipsTheCallAndEnoTellsWhetherItRan) {
+    StProgram run(R"(
+FUNCTION Inc : DINT
+  VAR_INPUT v : DINT; END_VAR
+  Inc := v + 1;
+END_FUNCTION
+FUNCTION_BLOCK Count
+  VAR_OUTPUT n : INT; END_VAR
+  n := n + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR c : Count; off : BOOL; eno1, eno2 : BOOL := TRUE; x : DINT; END_VAR
+c(EN := off, ENO => eno1);
+c(EN := NOT off, ENO => eno2);
+x := Inc(v := 41, EN := TRUE);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("Main.c.n"), 1);
+    EXPECT_FALSE(run.get<bool>("Main.eno1"));
+    EXPECT_TRUE(run.get<bool>("Main.eno2"));
+    EXPECT_EQ(run.get<std::int32_t>("Main.x"), 42);
+}
+
 TEST(NestedData, StructsArraysReferencesAndInOutArrays) {
     StProgram run(R"(
 TYPE

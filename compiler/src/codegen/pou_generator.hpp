@@ -150,6 +150,9 @@ private:
     // --- pou_calls.cpp -----------------------------------------------------------------------
     std::optional<Value> call(const ast::CallExpression& node, const sema::Type* hint,
                               const Destination* dest, const SourceRange& range);
+    /// The call without EN/ENO.
+    std::optional<Value> call_enabled(const ast::CallExpression& node, const sema::Type* hint,
+                                      const Destination* dest, const SourceRange& range);
     std::optional<Value> call_function(const ast::Pou& function, const ast::CallExpression& node,
                                        const Destination* dest, const SourceRange& range);
     std::optional<Value> call_host(const ast::Pou& function, const sema::Type& frame,

@@ -65,6 +65,11 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
                                                      const Destination* dest,
                                                      const SourceRange& range) {
     for (const ast::Argument& argument : node.arguments) {
+        if (argument.name && (sema::fold_case(argument.name->name) == "EN" ||
+                              sema::fold_case(argument.name->name) == "ENO")) {
+            error(argument.range, "EN/ENO on standard functions is not supported yet");
+            return std::nullopt;
+        }
         if (argument.kind == ast::Argument::Kind::Output) {
             error(argument.range, fmt::format("{} has no outputs", name));
             return std::nullopt;
