@@ -19,8 +19,9 @@ class IntegerResult : public testing::TestWithParam<IntCase> {};
 
 TEST_P(IntegerResult, GivesTheExpectedValue) {
     const IntCase& c = GetParam();
-    StProgram run("PROGRAM Main\nVAR x : LINT; " + c.declarations + " END_VAR\n" + c.body +
-                  "\nEND_PROGRAM\n");
+    StProgram run(
+        "TYPE Pair : STRUCT a, b : INT; END_STRUCT; END_TYPE\nPROGRAM Main\nVAR x : LINT; " +
+        c.declarations + " END_VAR\n" + c.body + "\nEND_PROGRAM\n");
     ASSERT_TRUE(run.ok()) << run.errors();
     ASSERT_TRUE(run.scans(1)) << run.fault();
     EXPECT_EQ(run.get<std::int64_t>("Main.x"), c.expected);
@@ -65,6 +66,19 @@ INSTANTIATE_TEST_SUITE_P(
                 "t := t * 3 / 2; t := t * 0.5; x := TIME_TO_DINT(t);", 750},
         IntCase{"TimeOfDayWrapsAroundMidnight", "t : TOD := TOD#23:00:00;",
                 "t := t + T#2h; x := TOD_TO_DINT(t);", 3600000},
+        IntCase{"ReusedElementIsNotOverwritten", "a : ARRAY[0..1] OF DINT := [5, 1]; j : INT;",
+                "x := a[j] + MAX(a[j], 30) + a[j + 1]; a[j] := a[j + 1]; x := x + a[j] * 100;",
+                136},
+        IntCase{"IndexChangesBetweenStatements",
+                "a : ARRAY[0..3] OF DINT := [10, 20, 30, 40]; i : INT := 1;",
+                "x := a[i]; i := i + 1; x := x + a[i]; a[i] := 1; x := x + a[i];", 51},
+        IntCase{"ElementChangedThroughReference",
+                "a : ARRAY[0..3] OF DINT := [10, 20, 30, 40]; p : REF_TO DINT; i : INT := 1;",
+                "x := a[i]; p := REF(a[1]); p^ := 7; x := x + a[i];", 27},
+        IntCase{"LoopReadsEachElement", "a : ARRAY[0..3] OF DINT := [10, 20, 30, 40]; i : INT;",
+                "FOR i := 0 TO 3 DO x := x + a[i] + a[i]; END_FOR;", 200},
+        IntCase{"ElementAddressAfterIndexChange", "s : ARRAY[0..2] OF Pair; i : INT;",
+                "s[i].b := 3; i := i + 1; s[i].b := 4; x := s[0].b * 10 + s[1].b;", 34},
         IntCase{"Max", "", "x := MAX(3, 7, 5);", 7},
         IntCase{"Min", "a : INT := 4;", "x := MIN(a, 9, -2);", -2},
         IntCase{"LimitAbove", "", "x := LIMIT(0, 15, 10);", 10},

@@ -55,11 +55,11 @@ std::optional<Value> PouGenerator::call(const ast::CallExpression& node, const s
         store(*eno, Value{program_.constant({one, one + 1}, 1), &boolean});
     }
     builder_.jump(Opcode::Jmp, end);
-    builder_.bind(skip);
+    bind(skip);
     if (eno) {
         store(*eno, Value{program_.constant({zero, zero + 1}, 1), &boolean});
     }
-    builder_.bind(end);
+    bind(end);
     return result;
 }
 
@@ -229,12 +229,11 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                                    bytes);
             move(slot, *field.type, Value{program_.constant(bytes, 8), field.type});
         } else if (it->value) {
-            builder_.emit(
-                sema::is_scalar(*field.type)
-                    ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(*field.type)))
-                    : Opcode::MovN,
-                slot, it->value->operand,
-                Operand::imm(sema::is_scalar(*field.type) ? 0 : field.type->size));
+            emit(sema::is_scalar(*field.type)
+                     ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(*field.type)))
+                     : Opcode::MovN,
+                 slot, it->value->operand,
+                 Operand::imm(sema::is_scalar(*field.type) ? 0 : field.type->size));
         } else {
             const Destination into{slot, field.type};
             const auto value = value_as(*it->argument->value, *field.type, &into);
@@ -245,17 +244,15 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         }
     }
     out_slot(end);
-    builder_.emit(Opcode::Call, Operand::imm(index));
-    cache_.clear();
+    emit(Opcode::Call, Operand::imm(index));
     std::optional<Value> result = Value{};
     if (!frame.fields.empty() && frame.fields.front().declaration == nullptr) {
         const sema::Type& type = *frame.fields.front().type;
         const Operand operand = result_operand(type, dest);
-        builder_.emit(sema::is_scalar(type)
-                          ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(type)))
-                          : Opcode::MovN,
-                      operand, Operand::out(0),
-                      Operand::imm(sema::is_scalar(type) ? 0 : type.size));
+        emit(sema::is_scalar(type)
+                 ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(type)))
+                 : Opcode::MovN,
+             operand, Operand::out(0), Operand::imm(sema::is_scalar(type) ? 0 : type.size));
         result = Value{operand, &type};
     }
     for (const Bound& b : bound) {
@@ -265,8 +262,8 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         const auto target = place(*b.argument->value);
         if (target) {
             const Operand copy = temp(*b.field->type);
-            builder_.emit(Opcode::MovN, copy, Operand::out(b.field->offset),
-                          Operand::imm(b.field->type->size));
+            emit(Opcode::MovN, copy, Operand::out(b.field->offset),
+                 Operand::imm(b.field->type->size));
             store(*target, Value{copy, b.field->type});
         }
     }
@@ -355,11 +352,10 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
     }
     (void)range;
     if (instance.kind == Place::Kind::Direct) {
-        builder_.emit(Opcode::CallFb, instance.operand, Operand::imm(index));
+        emit(Opcode::CallFb, instance.operand, Operand::imm(index));
     } else {
-        builder_.emit(Opcode::CallFbP, address_of(instance), Operand::imm(index));
+        emit(Opcode::CallFbP, address_of(instance), Operand::imm(index));
     }
-    cache_.clear();
     for (const auto& [field, argument] : outputs) {
         const auto target = place(*argument->value);
         if (!target) {
@@ -368,7 +364,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         Value value = load(member(instance, field->offset, *field->type));
         if (argument->negated) {
             const Operand negated = temp(*field->type);
-            builder_.emit(Opcode::NotB, negated, value.operand);
+            emit(Opcode::NotB, negated, value.operand);
             value.operand = negated;
         }
         if (!sema::converts_implicitly(*field->type, *target->type)) {
@@ -389,15 +385,14 @@ void PouGenerator::call_native(const std::string& name, const vm::NativeSignatur
         if (signature.parameters[i] == vm::Scalar::Ptr &&
             argument.type->kind != sema::TypeKind::Reference &&
             argument.type->kind != sema::TypeKind::Null) {
-            builder_.emit(Opcode::Addr, slot, argument.operand, Operand::imm(argument.type->size));
+            emit(Opcode::Addr, slot, argument.operand, Operand::imm(argument.type->size));
         } else {
-            builder_.emit(program_.opcodes().get("Mov", width_suffix(signature.parameters[i])),
-                          slot, argument.operand);
+            emit(program_.opcodes().get("Mov", width_suffix(signature.parameters[i])), slot,
+                 argument.operand);
         }
     }
     out_slot(vm::argument_block_size(signature));
-    builder_.emit(Opcode::CallNative, Operand::imm(import));
-    cache_.clear();
+    emit(Opcode::CallNative, Operand::imm(import));
 }
 
 std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& signature,
@@ -405,11 +400,11 @@ std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& sign
     const Operand result = result_operand(type, dest);
     const vm::Scalar want = sema::scalar_of(type);
     if (signature.result == want) {
-        builder_.emit(program_.opcodes().get("Mov", width_suffix(want)), result, Operand::out(0));
+        emit(program_.opcodes().get("Mov", width_suffix(want)), result, Operand::out(0));
     } else {
-        builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(signature.result)) +
-                                                        std::string(type_suffix(want))),
-                      result, Operand::out(0));
+        emit(program_.opcodes().get("Cvt", std::string(type_suffix(signature.result)) +
+                                               std::string(type_suffix(want))),
+             result, Operand::out(0));
     }
     return Value{result, &type};
 }

@@ -59,7 +59,7 @@ void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label
             const vm::Label skip = builder_.label();
             branch(*binary->left, !when, skip);
             branch(*binary->right, when, target);
-            builder_.bind(skip);
+            bind(skip);
         }
         return;
     }

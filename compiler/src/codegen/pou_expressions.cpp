@@ -164,7 +164,6 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     }
     // The linear index: sum of (i_d - lower_d) * stride_d, for one dimension just i.
     Operand linear{};
-    Operand source{}; // the last index as written, which identifies a one-dimensional access
     for (std::size_t d = 0; d < node.indices.size(); ++d) {
         auto value = eval(*node.indices[d], &dint);
         if (!value) {
@@ -175,19 +174,18 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                   fmt::format("an array index must be an integer, not {}", value->type->name));
             return std::nullopt;
         }
-        source = value->operand;
         if (value->type != &dint) {
-            const CacheKey key{value->operand.raw, kNoArray, 0};
+            const vm::Opcode convert = program_.opcodes().get(
+                "Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32");
+            const ValueCache::Key key{ValueCache::Kind::Convert, value->operand.raw,
+                                      static_cast<std::uint32_t>(convert), 0};
             Operand converted{};
-            if (const auto hit = cached(key)) {
+            if (const auto hit = cache_.find(key)) {
                 converted = *hit;
             } else {
                 converted = temp(dint);
-                builder_.emit(
-                    program_.opcodes().get(
-                        "Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32"),
-                    converted, value->operand);
-                cache_.emplace_back(key, converted);
+                emit(convert, converted, value->operand);
+                cache_.add(key, converted, 4, {{value->operand, value->type->size}});
             }
             value = Value{converted, &dint};
         }
@@ -197,18 +195,18 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         }
         const auto& dimension = type.dimensions[d];
         const Operand term = temp(dint);
-        builder_.emit(Opcode::AddI32, term, value->operand,
-                      Operand::imm(static_cast<std::uint32_t>(-dimension.lower)));
+        emit(Opcode::AddI32, term, value->operand,
+             Operand::imm(static_cast<std::uint32_t>(-dimension.lower)));
         if (d == 0) {
             linear = term;
         } else {
-            builder_.emit(Opcode::Mul32, linear, linear,
-                          program_.constant({static_cast<std::uint8_t>(dimension.count),
-                                             static_cast<std::uint8_t>(dimension.count >> 8),
-                                             static_cast<std::uint8_t>(dimension.count >> 16),
-                                             static_cast<std::uint8_t>(dimension.count >> 24)},
-                                            4));
-            builder_.emit(Opcode::Add32, linear, linear, term);
+            emit(Opcode::Mul32, linear, linear,
+                 program_.constant({static_cast<std::uint8_t>(dimension.count),
+                                    static_cast<std::uint8_t>(dimension.count >> 8),
+                                    static_cast<std::uint8_t>(dimension.count >> 16),
+                                    static_cast<std::uint8_t>(dimension.count >> 24)},
+                                   4));
+            emit(Opcode::Add32, linear, linear, term);
         }
     }
     std::uint32_t count = 1;
@@ -216,7 +214,7 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         count *= dimension.count;
     }
     const bool one = type.dimensions.size() == 1;
-    const std::uint16_t descriptor = builder_.array(
+    const std::uint16_t descriptor = array_descriptor(
         one ? static_cast<std::int32_t>(type.dimensions[0].lower) : 0, count, element.size);
     if (array->kind == Place::Kind::Direct && sema::is_scalar(element)) {
         return Place{.kind = Place::Kind::Element,
@@ -226,22 +224,22 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                      .array = descriptor,
                      .writable = array->writable};
     }
-    const CacheKey key{source.raw, array->operand.raw, descriptor};
-    const bool cacheable = one && array->kind == Place::Kind::Direct;
-    if (const auto hit = cacheable ? cached(key) : std::nullopt) {
+    // The address of an element of a directly named array is worth remembering.
+    const bool cacheable = array->kind == Place::Kind::Direct;
+    const ValueCache::Key key{ValueCache::Kind::Address, array->operand.raw, linear.raw,
+                              descriptor};
+    if (const auto hit = cacheable ? cache_.find(key) : std::nullopt) {
         return Place{.kind = Place::Kind::Indirect,
                      .type = &element,
                      .operand = *hit,
                      .writable = array->writable};
     }
     const Operand pointer = temp(types_.reference(&element));
-    if (cacheable) {
-        cache_.emplace_back(key, pointer);
-    }
     if (array->kind == Place::Kind::Direct) {
-        builder_.emit(Opcode::IdxA, pointer, array->operand, linear, descriptor);
+        emit(Opcode::IdxA, pointer, array->operand, linear, descriptor);
+        cache_.add(key, pointer, 8, {{linear, 4}});
     } else {
-        builder_.emit(Opcode::IdxAP, pointer, address_of(*array), linear, descriptor);
+        emit(Opcode::IdxAP, pointer, address_of(*array), linear, descriptor);
     }
     return Place{.kind = Place::Kind::Indirect,
                  .type = &element,
@@ -351,11 +349,10 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         // 6.5.1.2 partial access: the bit is `(word AND 2#1 << n) <> 0`.
         const sema::Type& type = *word->type;
         const Operand masked = temp(type);
-        builder_.emit(op_width("And", type), masked, word->operand,
-                      bit_mask(type, node->bit, false));
+        emit(op_width("And", type), masked, word->operand, bit_mask(type, node->bit, false));
         const sema::Type& boolean = types_.elementary(E::Bool);
         const Operand result = result_operand(boolean, dest);
-        builder_.emit(
+        emit(
             program_.opcodes().get("Cvt", std::string(type_suffix(sema::scalar_of(type))) + "Bool"),
             result, masked);
         return Value{result, &boolean};
@@ -428,9 +425,9 @@ std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type&
         return Value{value.operand, &want};
     }
     const Operand result = result_operand(want, dest);
-    builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(from)) +
-                                                    std::string(type_suffix(to))),
-                  result, value.operand);
+    emit(program_.opcodes().get("Cvt",
+                                std::string(type_suffix(from)) + std::string(type_suffix(to))),
+         result, value.operand);
     return Value{result, &want};
 }
 
@@ -524,14 +521,14 @@ std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const
             return std::nullopt;
         }
         const Operand result = result_operand(type, dest);
-        builder_.emit(op_width("Neg", type), result, value->operand);
+        emit(op_width("Neg", type), result, value->operand);
         return Value{result, &type};
     }
     const Operand result = result_operand(type, dest);
     if (sema::is_bool(type)) {
-        builder_.emit(Opcode::NotB, result, value->operand);
+        emit(Opcode::NotB, result, value->operand);
     } else if (sema::is_bit_string(type) || sema::is_integer(type)) {
-        builder_.emit(op_width("Not", type), result, value->operand);
+        emit(op_width("Not", type), result, value->operand);
     } else {
         error(range, fmt::format("NOT needs a BOOL or bit string, not {}", type.name));
         return std::nullopt;
@@ -573,17 +570,17 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
     }
     switch (op) {
     case ast::BinaryOperator::Equal:
-        builder_.emit(op_width("Eq", type), result, a.operand, b.operand);
+        emit(op_width("Eq", type), result, a.operand, b.operand);
         break;
     case ast::BinaryOperator::NotEqual:
-        builder_.emit(op_width("Ne", type), result, a.operand, b.operand);
+        emit(op_width("Ne", type), result, a.operand, b.operand);
         break;
     case ast::BinaryOperator::Less:
     case ast::BinaryOperator::Greater:
-        builder_.emit(program_.opcodes().get("Lt", suffix), result, a.operand, b.operand);
+        emit(program_.opcodes().get("Lt", suffix), result, a.operand, b.operand);
         break;
     default:
-        builder_.emit(program_.opcodes().get("Le", suffix), result, a.operand, b.operand);
+        emit(program_.opcodes().get("Le", suffix), result, a.operand, b.operand);
         break;
     }
     return Value{result, &boolean};
@@ -660,10 +657,20 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
             if (*immediate == 0) {
                 return l; // x + 0
             }
-            const Operand result = result_operand(*l.type, l.iec != nullptr ? nullptr : dest);
             const std::int64_t delta = node.op == Op::Add ? *immediate : -std::int64_t{*immediate};
-            builder_.emit(op_width("AddI", *l.type), result, l.operand,
-                          Operand::imm(static_cast<std::uint32_t>(delta)));
+            const vm::Opcode add = op_width("AddI", *l.type);
+            const ValueCache::Key key{ValueCache::Kind::AddImmediate, l.operand.raw,
+                                      static_cast<std::uint32_t>(delta),
+                                      static_cast<std::uint32_t>(add)};
+            const bool into_dest = dest != nullptr && dest->type == l.type && l.iec == nullptr;
+            if (const auto hit = into_dest ? std::nullopt : cache_.find(key)) {
+                return Value{*hit, l.type, l.iec}; // `a[j + 1]` after `a[j + 1]`
+            }
+            const Operand result = result_operand(*l.type, into_dest ? dest : nullptr);
+            emit(add, result, l.operand, Operand::imm(static_cast<std::uint32_t>(delta)));
+            if (!into_dest) {
+                cache_.add(key, result, l.type->size, {{l.operand, l.type->size}});
+            }
             return Value{result, l.type, l.iec};
         }
         const auto right = eval(*node.right, left->type);
@@ -744,7 +751,7 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         }
         const Operand result = result_operand(type, dest);
         const char* family = oper == Op::And ? "And" : oper == Op::Or ? "Or" : "Xor";
-        builder_.emit(op_width(family, type), result, left.operand, right.operand);
+        emit(op_width(family, type), result, left.operand, right.operand);
         return Value{result, &type};
     }
     const sema::Type* result_type = &type;
@@ -788,19 +795,19 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
     const Operand result = result_operand(*result_type, dest);
     switch (oper) {
     case Op::Add:
-        builder_.emit(op_width("Add", type), result, left.operand, right.operand);
+        emit(op_width("Add", type), result, left.operand, right.operand);
         break;
     case Op::Subtract:
-        builder_.emit(op_width("Sub", type), result, left.operand, right.operand);
+        emit(op_width("Sub", type), result, left.operand, right.operand);
         break;
     case Op::Multiply:
-        builder_.emit(op_width("Mul", type), result, left.operand, right.operand);
+        emit(op_width("Mul", type), result, left.operand, right.operand);
         break;
     case Op::Divide:
-        builder_.emit(op("Div", type), result, left.operand, right.operand);
+        emit(op("Div", type), result, left.operand, right.operand);
         break;
     default:
-        builder_.emit(op("Mod", type), result, left.operand, right.operand);
+        emit(op("Mod", type), result, left.operand, right.operand);
         break;
     }
     return Value{result, result_type};

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "program_generator.hpp"
+#include "value_cache.hpp"
 
 #include <optional>
 #include <string>
@@ -39,15 +40,6 @@ private:
         vm::Label exit;
         vm::Label next;
     };
-    /// What a cached computation was made from: an index converted to DINT, or the address of
-    /// an element of an array (`items[i]` in `items[i].pos := items[i].pos + 1`).
-    struct CacheKey {
-        std::uint32_t source = 0; // the operand of the index as written
-        std::uint32_t array = 0;  // the array operand, or kNoArray for a conversion
-        std::uint16_t descriptor = 0;
-        bool operator==(const CacheKey&) const = default;
-    };
-    static constexpr std::uint32_t kNoArray = 0xFFFFFFFF;
     struct Local {
         Place place;
         ast::VarSectionKind section;
@@ -64,7 +56,14 @@ private:
     bool is_temporary(vm::Operand operand) const;
     /// Ends the temporaries allocated since `mark` and forgets what was computed in them.
     void release(std::uint32_t mark);
-    std::optional<vm::Operand> cached(const CacheKey& key) const;
+    /// Emits an instruction and forgets the cached values it changes.
+    void emit(vm::Opcode op, vm::Operand a = {}, vm::Operand b = {}, vm::Operand c = {},
+              std::uint16_t aux = 0);
+    /// Binds a label: control flow joins there, so nothing cached holds any more.
+    void bind(vm::Label label);
+    /// An array descriptor, remembering the bytes it covers.
+    std::uint16_t array_descriptor(std::int32_t lower, std::uint32_t count,
+                                   std::uint32_t element_size);
     std::optional<Place> variable(const sema::Symbol& symbol, const SourceRange& range);
     void error(const SourceRange& range, std::string message);
     void warning(const SourceRange& range, std::string message);
@@ -203,12 +202,9 @@ private:
     std::vector<Loop> loops_;
     std::vector<std::uint32_t> for_variables_; // operands of the enclosing FOR loops
     bool result_assigned_ = false;
-    std::unordered_set<std::string> used_;
-    /// Index conversions and element addresses computed in the current statement, reused by
-    /// the same statement: straight-line code in which no variable changes until its end
-    /// (calls forget them, since a function may change a global index).
-    std::vector<std::pair<CacheKey, vm::Operand>>
-        cache_; // folded names of the variables referred to
+    std::unordered_set<std::string> used_; // folded names of the variables referred to
+    ValueCache cache_;
+    std::unordered_map<std::uint16_t, std::uint32_t> array_bytes_; // per descriptor
     vm::Label end_;
 };
 

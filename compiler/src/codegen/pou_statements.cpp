@@ -30,7 +30,6 @@ void PouGenerator::statements(const ast::StatementList& list) {
 void PouGenerator::statement(const ast::Statement& statement) {
     builder_.line(statement.range.begin.line);
     const std::uint32_t mark = frame_top_; // temporaries live for one statement
-    cache_.clear();
     std::visit(
         [&](const auto& node) {
             using T = std::decay_t<decltype(node)>;
@@ -84,15 +83,13 @@ void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
     // word := (word AND NOT mask) OR (BOOL_TO_<word>(bit) << n)
     const sema::Type& type = *word->type;
     const Operand cleared = temp(type);
-    builder_.emit(op_width("And", type), cleared, word->operand, bit_mask(type, target.bit, true));
+    emit(op_width("And", type), cleared, word->operand, bit_mask(type, target.bit, true));
     const Operand shifted_bit = temp(type);
-    builder_.emit(
-        program_.opcodes().get("Cvt", "Bool" + std::string(type_suffix(sema::scalar_of(type)))),
-        shifted_bit, bit->operand);
+    emit(program_.opcodes().get("Cvt", "Bool" + std::string(type_suffix(sema::scalar_of(type)))),
+         shifted_bit, bit->operand);
     const std::uint8_t count[4] = {static_cast<std::uint8_t>(target.bit), 0, 0, 0};
-    builder_.emit(op_width("Shl", type), shifted_bit, shifted_bit,
-                  program_.constant({count, count + 4}, 4));
-    builder_.emit(op_width("Or", type), cleared, cleared, shifted_bit);
+    emit(op_width("Shl", type), shifted_bit, shifted_bit, program_.constant({count, count + 4}, 4));
+    emit(op_width("Or", type), cleared, cleared, shifted_bit);
     store(*word_place, Value{cleared, &type});
 }
 
@@ -155,17 +152,16 @@ void PouGenerator::if_statement(const ast::IfStatement& node) {
     for (std::size_t i = 0; i < node.branches.size(); ++i) {
         const ast::ConditionalBlock& block = node.branches[i];
         const vm::Label next = builder_.label();
-        const std::uint32_t mark = frame_top_;
+        // The condition's temporaries live on through the branch, which may reuse them.
         branch(*block.condition, false, next);
-        release(mark);
         statements(block.body);
         if (i + 1 < node.branches.size() || !node.else_body.empty()) {
             builder_.jump(Opcode::Jmp, end);
         }
-        builder_.bind(next);
+        bind(next);
     }
     statements(node.else_body);
-    builder_.bind(end);
+    bind(end);
 }
 
 void PouGenerator::case_statement(const ast::CaseStatement& node) {
@@ -218,19 +214,19 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
                           low->operand);
             builder_.jump(program_.opcodes().get("JLe", suffix), body, selector->operand,
                           high->operand);
-            builder_.bind(skip);
+            bind(skip);
         }
     }
     statements(node.else_body);
     builder_.jump(Opcode::Jmp, end);
     for (std::size_t i = 0; i < node.branches.size(); ++i) {
-        builder_.bind(bodies[i]);
+        bind(bodies[i]);
         statements(node.branches[i].body);
         if (i + 1 < node.branches.size()) {
             builder_.jump(Opcode::Jmp, end);
         }
     }
-    builder_.bind(end);
+    bind(end);
 }
 
 void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRange& range) {
@@ -287,46 +283,47 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
         builder_.jump(program_.opcodes().get("JLt", suffix), loop.exit, control->operand,
                       limit->operand);
     }
-    builder_.bind(body);
+    bind(body);
     loops_.push_back(loop);
     for_variables_.push_back(control->operand.raw);
     statements(node.body);
     for_variables_.pop_back();
     loops_.pop_back();
-    builder_.bind(loop.next);
+    bind(loop.next);
     builder_.line(range.begin.line);
+    cache_.clear(); // the back-edge writes the control variable
     builder_.for_loop(program_.opcodes().get("For", suffix), body, control->operand, limit->operand,
                       static_cast<std::int16_t>(step));
-    builder_.bind(loop.exit);
+    bind(loop.exit);
 }
 
 void PouGenerator::while_statement(const ast::WhileStatement& node) {
     const Loop loop{builder_.label(), builder_.label()};
     const vm::Label body = builder_.label();
     builder_.jump(Opcode::Jmp, loop.next);
-    builder_.bind(body);
+    bind(body);
     loops_.push_back(loop);
     statements(node.body);
     loops_.pop_back();
-    builder_.bind(loop.next);
+    bind(loop.next);
     const std::uint32_t mark = frame_top_;
     branch(*node.condition, true, body);
     release(mark);
-    builder_.bind(loop.exit);
+    bind(loop.exit);
 }
 
 void PouGenerator::repeat_statement(const ast::RepeatStatement& node) {
     const Loop loop{builder_.label(), builder_.label()};
     const vm::Label body = builder_.label();
-    builder_.bind(body);
+    bind(body);
     loops_.push_back(loop);
     statements(node.body);
     loops_.pop_back();
-    builder_.bind(loop.next);
+    bind(loop.next);
     const std::uint32_t mark = frame_top_;
     branch(*node.until, false, body);
     release(mark);
-    builder_.bind(loop.exit);
+    bind(loop.exit);
 }
 
 } // namespace eposp::compiler::codegen

@@ -207,16 +207,16 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         // Durations and times count in nanoseconds; as numbers they count in their unit.
         const sema::Type& lint = types_.elementary(E::Lint);
         const Operand scaled = temp(lint);
-        builder_.emit(Opcode::DivI64, scaled, value.operand,
-                      program_.constant(int64_bytes(time_unit(from.elementary)), 8));
+        emit(Opcode::DivI64, scaled, value.operand,
+             program_.constant(int64_bytes(time_unit(from.elementary)), 8));
         source = Value{scaled, &lint};
     }
     if (to_time) {
         const sema::Type& lint = types_.elementary(E::Lint);
         const auto as_lint = explicit_convert(source, lint, nullptr, range);
         const Operand result = result_operand(want, dest);
-        builder_.emit(Opcode::Mul64, result, as_lint->operand,
-                      program_.constant(int64_bytes(time_unit(want.elementary)), 8));
+        emit(Opcode::Mul64, result, as_lint->operand,
+             program_.constant(int64_bytes(time_unit(want.elementary)), 8));
         return Value{result, &want};
     }
     const S a = sema::scalar_of(*source.type);
@@ -225,9 +225,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         return Value{source.operand, &want};
     }
     const Operand result = result_operand(want, dest);
-    builder_.emit(
-        program_.opcodes().get("Cvt", std::string(type_suffix(a)) + std::string(type_suffix(b))),
-        result, source.operand);
+    emit(program_.opcodes().get("Cvt", std::string(type_suffix(a)) + std::string(type_suffix(b))),
+         result, source.operand);
     return Value{result, &want};
 }
 
@@ -409,17 +408,12 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         return std::nullopt;
     }
     // The destination when no argument lives there (so none is overwritten before it is
-    // read), else the first value if it is a temporary of its own, else a new temporary.
-    const std::size_t first_value = name == "LIMIT" ? 1 : first;
+    // read), else a temporary of its own (an argument's may be shared with the value cache).
     bool dest_free = dest != nullptr && dest->type == &type;
     for (std::size_t i = first; dest_free && i < arguments.size(); ++i) {
         dest_free = values[i]->operand.raw != dest->operand.raw;
     }
-    const Operand result =
-        dest_free ? dest->operand
-        : is_temporary(values[first_value]->operand) && name != "SEL" && name != "MUX"
-            ? values[first_value]->operand
-            : temp(type);
+    const Operand result = dest_free ? dest->operand : temp(type);
     const vm::Label done = builder_.label();
     std::string_view suffix = type_suffix(sema::scalar_of(type));
     if (suffix == "Bool") {
@@ -430,7 +424,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         builder_.jump(Opcode::Jt, one, selector->operand);
         move(result, type, *values[1]);
         builder_.jump(Opcode::Jmp, done);
-        builder_.bind(one);
+        bind(one);
         move(result, type, *values[2]);
     } else if (name == "MUX") {
         // 6.6.2.5.9: K selects IN0..INn; out of range gives IN0 here.
@@ -442,7 +436,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
                           program_.constant({static_cast<std::uint8_t>(k), 0, 0, 0}, 4));
             move(result, type, *values[i]);
             builder_.jump(Opcode::Jmp, done);
-            builder_.bind(next);
+            bind(next);
         }
     } else if (name == "LIMIT") {
         const Value& low = *values[0];
@@ -453,7 +447,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         builder_.jump(program_.opcodes().get("JLe", suffix), above_low, low.operand, result);
         move(result, type, low);
         builder_.jump(Opcode::Jmp, done);
-        builder_.bind(above_low);
+        bind(above_low);
         builder_.jump(program_.opcodes().get("JLe", suffix), done, result, high.operand);
         move(result, type, high);
     } else {
@@ -465,10 +459,10 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
                           maximum ? values[i]->operand : result,
                           maximum ? result : values[i]->operand);
             move(result, type, *values[i]);
-            builder_.bind(keep);
+            bind(keep);
         }
     }
-    builder_.bind(done);
+    bind(done);
     return Value{result, &type};
 }
 
@@ -519,7 +513,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                 if (!step) {
                     return std::nullopt;
                 }
-                builder_.emit(Opcode::And8, result->operand, result->operand, step->operand);
+                emit(Opcode::And8, result->operand, result->operand, step->operand);
                 previous = *next;
             } else {
                 result = apply(op, *result, *next, nullptr, range);
@@ -537,9 +531,9 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         }
         const Operand result = result_operand(*value->type, dest);
         if (sema::is_bool(*value->type)) {
-            builder_.emit(Opcode::NotB, result, value->operand);
+            emit(Opcode::NotB, result, value->operand);
         } else if (sema::is_bit_string(*value->type) || sema::is_integer(*value->type)) {
-            builder_.emit(op_width("Not", *value->type), result, value->operand);
+            emit(op_width("Not", *value->type), result, value->operand);
         } else {
             error(range, fmt::format("NOT needs a BOOL or bit string, not {}", value->type->name));
             return std::nullopt;
@@ -570,7 +564,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                                    : name == "ROL" ? "Rol"
                                                    : "Ror";
         const Operand result = result_operand(*value->type, dest);
-        builder_.emit(op_width(family, *value->type), result, value->operand, count->operand);
+        emit(op_width(family, *value->type), result, value->operand, count->operand);
         return Value{result, value->type};
     }
     if (name == "TRUNC") {
@@ -586,7 +580,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         }
         const sema::Type& lint = types_.elementary(E::Lint);
         const Operand wide = temp(lint);
-        builder_.emit(op("Trunc", *value->type), wide, value->operand);
+        emit(op("Trunc", *value->type), wide, value->operand);
         return explicit_convert(Value{wide, &lint}, types_.elementary(E::Dint), dest, range);
     }
     if (name == "ABS") {
@@ -602,7 +596,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         }
         const Operand result = result_operand(*value->type, dest);
         if (sema::is_signed(*value->type)) {
-            builder_.emit(op("Abs", *value->type), result, value->operand);
+            emit(op("Abs", *value->type), result, value->operand);
         } else {
             move(result, *value->type, *value);
         }
@@ -641,7 +635,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     }
     if (name == "SQRT") {
         const Operand result = result_operand(real, dest);
-        builder_.emit(op("Sqrt", real), result, values[0].operand);
+        emit(op("Sqrt", real), result, values[0].operand);
         return Value{result, &real};
     }
     const S scalar = sema::scalar_of(real);
