@@ -1,6 +1,7 @@
 #include "program_generator.hpp"
 
 #include "eposp/compiler/sema/symbol.hpp"
+#include "jump_threading.hpp"
 #include "pou_generator.hpp"
 
 #include <fmt/format.h>
@@ -162,6 +163,7 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         diagnostics_.error({}, "internal error: " + image.error());
         return std::nullopt;
     }
+    thread_jumps(*image);
     return std::move(*image);
 }
 
