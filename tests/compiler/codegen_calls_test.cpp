@@ -101,6 +101,27 @@ END_CONFIGURATION
 namespace eposp::compiler::test {
 namespace {
 
+TEST(FunctionBlockCall, VarTempStartsFromItsInitialValueAtEachCall) {
+    StProgram run(R"(
+FUNCTION_BLOCK Acc
+  VAR_OUTPUT kept, fresh : INT; END_VAR
+  VAR_TEMP t : INT := 10; END_VAR
+  t := t + 1;
+  fresh := t;
+  kept := kept + t;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a : Acc; END_VAR
+a();
+a();
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("Main.a.fresh"), 11);
+    EXPECT_EQ(run.get<std::int16_t>("Main.a.kept"), 22);
+}
+
 TEST(EnableInputs, EnFalseSkipsTheCallAndEnoTellsWhetherItRan) {
     StProgram run(R"(
 FUNCTION Inc : DINT
