@@ -2,6 +2,7 @@
 // bindings; and that it never crashes, whatever is taken out of a real program.
 #include "codegen_harness.hpp"
 #include "eposp/compiler/compiler.hpp"
+#include "eposp/vm/verifier.hpp"
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -88,7 +89,11 @@ TEST(Robustness, BenchProgramsWithALineMissingNeverCrash) {
                     text += lines[i] + "\n";
                 }
             }
-            compile_text(text);
+            if (const auto image = compile_text(text)) {
+                const auto defect = vm::verify(*image);
+                EXPECT_FALSE(defect)
+                    << name << " without line " << skip + 1 << ": " << defect->message;
+            }
         }
     }
 }

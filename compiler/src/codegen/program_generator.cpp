@@ -128,6 +128,7 @@ vm::Operand ProgramGenerator::constant(const std::vector<std::uint8_t>& bytes,
 }
 
 std::optional<vm::Image> ProgramGenerator::generate() {
+    builder_.allocate(0, 1); // the NULL guard has its initial value even in an empty image
     bool has_configuration = false;
     for (const ast::CompilationUnit& unit : program_.units) {
         for (const ast::Configuration& configuration : unit.configurations) {
@@ -153,6 +154,9 @@ std::optional<vm::Image> ProgramGenerator::generate() {
     generate_bodies();
     if (diagnostics_.has_errors()) {
         return std::nullopt;
+    }
+    if (tasks_.empty()) {
+        diagnostics_.warning({}, "there is no PROGRAM to run: the image has no task");
     }
     for (vm::Task& task : tasks_) {
         task.stack_size = stack_size();
