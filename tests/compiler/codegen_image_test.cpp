@@ -63,6 +63,29 @@ END_CONFIGURATION
     EXPECT_FALSE(image->pous.front().lines.empty());
 }
 
+TEST(Image, AddressesUsedInCodeAreBound) {
+    std::string errors;
+    const auto image = compile_text(R"(
+PROGRAM Main
+VAR n : WORD; END_VAR
+n := %IW2 AND 16#00FF;
+%QX0.1 := %IX0.0 AND NOT %IX0.0;
+%MD4 := WORD_TO_DWORD(n);
+END_PROGRAM
+)",
+                                    &errors);
+    ASSERT_TRUE(image) << errors;
+    ASSERT_EQ(image->bindings.size(), 4u);
+    EXPECT_EQ(image->bindings[0].byte_address, 4u);
+    EXPECT_EQ(image->bindings[0].type, vm::Scalar::U16);
+    EXPECT_EQ(image->bindings[2].area, vm::IoArea::Input);
+    EXPECT_EQ(image->bindings[3].area, vm::IoArea::Memory);
+    EXPECT_EQ(image->bindings[3].byte_address, 16u);
+    std::string refused;
+    EXPECT_FALSE(compile_text("PROGRAM Main %IX0.0 := TRUE; END_PROGRAM", &refused));
+    EXPECT_NE(refused.find("cannot be assigned"), std::string::npos) << refused;
+}
+
 TEST(Image, ProgramWithoutConfigurationGetsADefaultTask) {
     const auto image = compile_text("PROGRAM Main VAR x : INT; END_VAR x := x + 1; END_PROGRAM");
     ASSERT_TRUE(image);

@@ -106,6 +106,9 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
     if (const auto* node = std::get_if<ast::IndexExpression>(&expression.node)) {
         return index(*node, expression.range);
     }
+    if (const auto* node = std::get_if<ast::DirectAddressExpression>(&expression.node)) {
+        return program_.direct_variable(node->address);
+    }
     if (const auto* node = std::get_if<ast::DereferenceExpression>(&expression.node)) {
         const auto pointer = eval(*node->reference, nullptr);
         if (!pointer) {
@@ -307,6 +310,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         }
     }
     if (std::holds_alternative<ast::NameExpression>(expression.node) ||
+        std::holds_alternative<ast::DirectAddressExpression>(expression.node) ||
         std::holds_alternative<ast::MemberExpression>(expression.node) ||
         std::holds_alternative<ast::IndexExpression>(expression.node) ||
         std::holds_alternative<ast::DereferenceExpression>(expression.node)) {
@@ -357,7 +361,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
             result, masked);
         return Value{result, &boolean};
     }
-    error(expression.range, "direct addresses in expressions are not supported yet");
+    error(expression.range, "this expression is not supported");
     return std::nullopt;
 }
 

@@ -413,6 +413,48 @@ std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {
     return index;
 }
 
+std::optional<Place> ProgramGenerator::direct_variable(const ast::DirectAddress& address) {
+    const auto key =
+        std::tuple(static_cast<int>(address.area), static_cast<int>(address.size), address.path);
+    if (const auto it = direct_variables_.find(key); it != direct_variables_.end()) {
+        return it->second;
+    }
+    using Size = ast::DirectAddress::Size;
+    ast::ElementaryType type = ast::ElementaryType::Bool;
+    switch (address.size) {
+    case Size::Byte:
+        type = ast::ElementaryType::Byte;
+        break;
+    case Size::Word:
+        type = ast::ElementaryType::Word;
+        break;
+    case Size::DoubleWord:
+        type = ast::ElementaryType::Dword;
+        break;
+    case Size::LongWord:
+        type = ast::ElementaryType::Lword;
+        break;
+    default:
+        break;
+    }
+    if (address.path.empty()) {
+        diagnostics_.error(address.range, "an address used in code must be complete (not %I*)");
+        return std::nullopt;
+    }
+    const sema::Type& variable = types_.elementary(type);
+    const std::uint32_t offset = builder_.allocate(variable.size, variable.align);
+    const std::size_t errors = diagnostics_.error_count();
+    add_io_binding(address, variable, offset);
+    if (diagnostics_.error_count() != errors) {
+        return std::nullopt;
+    }
+    // Inputs are read-only in code: the process image writes them.
+    const Place place = Place::direct(variable, vm::Operand::global(offset),
+                                      address.area != ast::DirectAddress::Area::Input);
+    direct_variables_.emplace(key, place);
+    return place;
+}
+
 void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const sema::Type& type,
                                       std::uint32_t offset) {
     if (address.path.empty()) {

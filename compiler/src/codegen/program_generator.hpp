@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -42,6 +43,9 @@ public:
     const OpcodeTable& opcodes() const { return opcodes_; }
     /// A configuration global by name (VAR_EXTERNAL binds to it, 6.5.2.2).
     std::optional<Place> global(std::string_view name) const;
+    /// The variable behind an address used directly in code (`%IW4`): one hidden static
+    /// variable per address, bound to it like a located variable (ed. 3, 6.5.5).
+    std::optional<Place> direct_variable(const ast::DirectAddress& address);
     /// The index of `pou`'s body, generated later if it is not yet.
     std::uint32_t pou_index(const ast::Pou& pou);
     /// The built-in POU that implements a standard FB or function (`TON`).
@@ -98,6 +102,7 @@ private:
     std::vector<vm::Task> tasks_;
     std::uint32_t pou_frames_total_ = 0;
     std::unordered_set<const ast::VariableDeclaration*> constants_declared_;
+    std::map<std::tuple<int, int, std::vector<std::uint32_t>>, Place> direct_variables_;
 };
 
 } // namespace eposp::compiler::codegen
