@@ -63,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(
         Rejected{"ForVariableMustBeInteger", main_with("r : REAL;", "FOR r := 1 TO 3 DO END_FOR;"),
                  "must be a local integer variable"},
         Rejected{"ForStepZero", main_with("i : INT;", "FOR i := 1 TO 3 BY 0 DO END_FOR;"),
-                 "BY must be a non-zero constant"},
+                 "BY must not be 0"},
         Rejected{"ExitOutsideLoop", main_with("", "EXIT;"), "EXIT outside a loop"},
         Rejected{"InOutNeedsVariable",
                  "FUNCTION F : INT\nVAR_IN_OUT v : INT; END_VAR\nF := v;\nEND_FUNCTION\n" +

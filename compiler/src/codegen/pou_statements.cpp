@@ -242,18 +242,21 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
               "the control variable of a FOR loop must be a local integer variable (7.3.3.4.2)");
         return;
     }
+    // A constant step (the usual case) uses the For<I> back-edge; another a general loop.
     std::int64_t step = 1;
+    bool constant_step = true;
     if (node.by) {
         const auto folded = types_.fold_integer(*node.by);
-        if (!folded || *folded == 0 || *folded < INT16_MIN || *folded > INT16_MAX) {
-            error(node.by->range, "BY must be a non-zero constant from -32768 to 32767");
+        if (folded && *folded == 0) {
+            error(node.by->range, "BY must not be 0");
             return;
         }
-        step = *folded;
-    }
-    if (!sema::is_signed(type) && step < 0) {
-        error(node.by->range, "a negative step needs a signed control variable");
-        return;
+        constant_step = folded && *folded >= INT16_MIN && *folded <= INT16_MAX;
+        step = folded.value_or(0);
+        if (constant_step && !sema::is_signed(type) && step < 0) {
+            error(node.by->range, "a negative step needs a signed control variable");
+            return;
+        }
     }
     const Destination dest{control->operand, &type};
     const auto from = value_as(*node.from, type, &dest);
@@ -261,27 +264,44 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
         return;
     }
     move(control->operand, type, *from);
-    auto limit = value_as(*node.to, type);
-    if (!limit) {
+    // The limit and step are evaluated once (the loop's own copies), unless constant.
+    auto once = [&](const ast::Expression& expression) -> std::optional<Value> {
+        auto value = value_as(expression, type);
+        const bool constant = value && value->operand.base() == vm::Base::Static &&
+                              std::holds_alternative<ast::LiteralExpression>(expression.node);
+        if (value && !constant && !is_temporary(value->operand)) {
+            const Operand copy = temp(type);
+            move(copy, type, *value);
+            value = Value{copy, &type};
+        }
+        return value;
+    };
+    const auto limit = once(*node.to);
+    const auto computed_step = limit && !constant_step ? once(*node.by) : std::nullopt;
+    if (!limit || (!constant_step && !computed_step)) {
         return;
     }
-    // The limit is evaluated once (as the loop's own copy), unless it is a constant.
-    const bool constant = limit->operand.base() == vm::Base::Static &&
-                          std::holds_alternative<ast::LiteralExpression>(node.to->node);
-    if (!constant && !is_temporary(limit->operand)) {
-        const Operand copy = temp(type);
-        move(copy, type, *limit);
-        limit = Value{copy, &type};
-    }
     const std::string_view suffix = type_suffix(sema::scalar_of(type));
+    const vm::Opcode less = program_.opcodes().get("JLt", suffix);
     const Loop loop{builder_.label(), builder_.label()};
     const vm::Label body = builder_.label();
-    if (step > 0) {
-        builder_.jump(program_.opcodes().get("JLt", suffix), loop.exit, limit->operand,
-                      control->operand);
+    const vm::Label check = builder_.label();
+    if (constant_step) {
+        if (step > 0) {
+            builder_.jump(less, loop.exit, limit->operand, control->operand);
+        } else {
+            builder_.jump(less, loop.exit, control->operand, limit->operand);
+        }
     } else {
-        builder_.jump(program_.opcodes().get("JLt", suffix), loop.exit, control->operand,
-                      limit->operand);
+        // Up while the step is >= 0, down otherwise: the sign is known only when running.
+        bind(check);
+        const vm::Label down = builder_.label();
+        builder_.jump(less, down, computed_step->operand,
+                      program_.constant(std::vector<std::uint8_t>(type.size, 0), type.align));
+        builder_.jump(less, loop.exit, limit->operand, control->operand);
+        builder_.jump(Opcode::Jmp, body);
+        bind(down);
+        builder_.jump(less, loop.exit, control->operand, limit->operand);
     }
     bind(body);
     loops_.push_back(loop);
@@ -292,8 +312,13 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
     bind(loop.next);
     builder_.line(range.begin.line);
     cache_.clear(); // the back-edge writes the control variable
-    builder_.for_loop(program_.opcodes().get("For", suffix), body, control->operand, limit->operand,
-                      static_cast<std::int16_t>(step));
+    if (constant_step) {
+        builder_.for_loop(program_.opcodes().get("For", suffix), body, control->operand,
+                          limit->operand, static_cast<std::int16_t>(step));
+    } else {
+        emit(op_width("Add", type), control->operand, control->operand, computed_step->operand);
+        builder_.jump(Opcode::Jmp, check);
+    }
     bind(loop.exit);
 }
 
