@@ -122,3 +122,43 @@ END_PROGRAM
 
 } // namespace
 } // namespace eposp::compiler::test
+
+namespace eposp::compiler::test {
+namespace {
+
+TEST(StandardLibrary, EveryStandardFbCompilesWithoutDiagnostics) {
+    std::string declarations;
+    std::string calls;
+    int n = 0;
+    for (const char* type :
+         {"SR",         "RS",        "R_TRIG",    "F_TRIG",     "CTU",       "CTD",
+          "CTUD",       "CTU_DINT",  "CTD_DINT",  "CTUD_DINT",  "CTU_LINT",  "CTD_LINT",
+          "CTUD_LINT",  "CTU_UDINT", "CTD_UDINT", "CTUD_UDINT", "CTU_ULINT", "CTD_ULINT",
+          "CTUD_ULINT", "TP",        "TON",       "TOF",        "RTC"}) {
+        const std::string name = "fb" + std::to_string(n++);
+        declarations += name + " : " + type + "; ";
+        calls += name + "();\n";
+    }
+    const std::string text =
+        diagnostics_of("PROGRAM Main\nVAR " + declarations + "END_VAR\n" + calls + "END_PROGRAM\n");
+    EXPECT_EQ(text, "");
+}
+
+TEST(Timers, RtcCountsFromItsPresetDateAndTime) {
+    StProgram run(R"(
+PROGRAM Main
+VAR in : BOOL; clock : RTC; now : DT; END_VAR
+clock(IN := in, PDT := DT#2024-01-31-12:00:00, CDT => now);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    scan(run, true);
+    scan(run, true);
+    scan(run, true);
+    // 2024-01-31T12:00:00 as ns since 1970, plus the 2 ms since IN rose.
+    EXPECT_EQ(run.get<std::int64_t>("Main.now"), 1'706'702'400'000'000'000 + 2 * kMs);
+    EXPECT_TRUE(run.get<bool>("Main.clock.Q"));
+}
+
+} // namespace
+} // namespace eposp::compiler::test
