@@ -147,7 +147,7 @@ END_PROGRAM
 TEST(Reals, ArithmeticAndFunctions) {
     StProgram run(R"(
 PROGRAM Main
-VAR a : REAL := 1.5; b : LREAL; c : LREAL; i : INT := 3; END_VAR
+VAR a : REAL := 1.5; b : LREAL; c : LREAL; i : INT := 3; third : LREAL := -1.0 / 3.0 * 2; END_VAR
 b := a * 2.0 + i;
 c := SIN(0.0) + EXPT(2.0, 3.0) + ABS(-1.25);
 END_PROGRAM
@@ -156,6 +156,7 @@ END_PROGRAM
     ASSERT_TRUE(run.scans(1)) << run.fault();
     EXPECT_DOUBLE_EQ(run.get<double>("Main.b"), 6.0);
     EXPECT_DOUBLE_EQ(run.get<double>("Main.c"), 9.25);
+    EXPECT_DOUBLE_EQ(run.get<double>("Main.third"), -1.0 / 3.0 * 2);
 }
 
 } // namespace

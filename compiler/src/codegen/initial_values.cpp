@@ -36,6 +36,45 @@ bool fits_integer(std::int64_t value, const sema::Type& type) {
            (value >= range->min && (value < 0 || static_cast<std::uint64_t>(value) <= range->max));
 }
 
+/// A constant REAL expression: literals, signs and + - * / of them (ed. 3, 6.4.2 initial
+/// values such as `1.0 / 3.0`).
+std::optional<double> fold_real(const ast::Expression& expression) {
+    if (const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node)) {
+        if (const auto* real = std::get_if<ast::RealLiteral>(&literal->value)) {
+            return real->value;
+        }
+        if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
+            return static_cast<double>(integer->magnitude) * (integer->negative ? -1 : 1);
+        }
+        return std::nullopt;
+    }
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        const auto operand = fold_real(*unary->operand);
+        if (!operand || unary->op == ast::UnaryOperator::Not) {
+            return std::nullopt;
+        }
+        return unary->op == ast::UnaryOperator::Negate ? -*operand : *operand;
+    }
+    const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
+    const auto left = binary != nullptr ? fold_real(*binary->left) : std::nullopt;
+    const auto right = left ? fold_real(*binary->right) : std::nullopt;
+    if (!right) {
+        return std::nullopt;
+    }
+    switch (binary->op) {
+    case ast::BinaryOperator::Add:
+        return *left + *right;
+    case ast::BinaryOperator::Subtract:
+        return *left - *right;
+    case ast::BinaryOperator::Multiply:
+        return *left * *right;
+    case ast::BinaryOperator::Divide:
+        return *left / *right;
+    default:
+        return std::nullopt;
+    }
+}
+
 } // namespace
 
 std::optional<std::vector<std::uint8_t>>
@@ -60,24 +99,11 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
         return std::nullopt;
     }
     if (sema::is_real(type)) {
-        double value = 0;
-        const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node);
-        const ast::Expression& inner =
-            unary != nullptr && unary->op != ast::UnaryOperator::Not ? *unary->operand : expression;
-        const double sign = unary != nullptr && unary->op == ast::UnaryOperator::Negate ? -1 : 1;
-        const auto* inner_literal = std::get_if<ast::LiteralExpression>(&inner.node);
-        if (inner_literal == nullptr) {
+        const auto value = fold_real(expression);
+        if (!value) {
             return std::nullopt;
         }
-        if (const auto* real = std::get_if<ast::RealLiteral>(&inner_literal->value)) {
-            value = real->value;
-        } else if (const auto* integer = std::get_if<ast::IntegerLiteral>(&inner_literal->value)) {
-            value = static_cast<double>(integer->magnitude) * (integer->negative ? -1 : 1);
-        } else {
-            return std::nullopt;
-        }
-        value *= sign;
-        return type.size == 4 ? bytes_of(static_cast<float>(value)) : bytes_of(value);
+        return type.size == 4 ? bytes_of(static_cast<float>(*value)) : bytes_of(*value);
     }
     if (literal != nullptr) {
         if (const auto* boolean = std::get_if<ast::BoolLiteral>(&literal->value)) {
