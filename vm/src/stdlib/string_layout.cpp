@@ -39,7 +39,9 @@ std::vector<std::uint8_t> wstring_image(std::uint32_t capacity, std::u16string_v
     const auto length = static_cast<std::uint16_t>(std::min<std::size_t>(text.size(), capacity));
     put_u16(bytes.data(), static_cast<std::uint16_t>(capacity));
     put_u16(bytes.data() + 2, length);
-    std::memcpy(bytes.data() + kStringHeaderSize, text.data(), length * sizeof(char16_t));
+    if (length > 0) { // an empty view may have a null data()
+        std::memcpy(bytes.data() + kStringHeaderSize, text.data(), length * sizeof(char16_t));
+    }
     return bytes;
 }
 
@@ -66,7 +68,9 @@ std::optional<std::string_view> read_string(std::span<const std::uint8_t> bytes)
 std::uint16_t write_string(std::span<std::uint8_t> bytes, std::string_view text) {
     const auto capacity = get_u16(bytes.data());
     const auto length = static_cast<std::uint16_t>(std::min<std::size_t>(text.size(), capacity));
-    std::memmove(bytes.data() + kStringHeaderSize, text.data(), length);
+    if (length > 0) { // an empty view may have a null data(), which memmove must not get
+        std::memmove(bytes.data() + kStringHeaderSize, text.data(), length);
+    }
     bytes[kStringHeaderSize + length] = 0;
     put_u16(bytes.data() + 2, length);
     return length;

@@ -189,6 +189,9 @@ void append_clock(ValueText& out, std::int64_t ns_of_day) {
 
 void ValueText::append(std::string_view text) {
     const auto count = std::min(text.size(), chars_.size() - size_);
+    if (count == 0) {
+        return; // an empty view may have a null data(), which memcpy must not get
+    }
     std::memcpy(chars_.data() + size_, text.data(), count);
     size_ += count;
 }
