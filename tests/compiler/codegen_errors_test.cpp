@@ -91,6 +91,10 @@ INSTANTIATE_TEST_SUITE_P(
         Rejected{"LiteralTooLarge", main_with("s : SINT;", "s := 300;"), "does not fit in SINT"},
         Rejected{"StringToNumber", main_with("i : INT;", "i := 'abc';"),
                  "a STRING[3] value cannot be used as INT"},
+        Rejected{"Recursion",
+                 "FUNCTION F : INT\nVAR_INPUT n : INT; END_VAR\nF := G(n);\nEND_FUNCTION\n"
+                 "FUNCTION G : INT\nVAR_INPUT n : INT; END_VAR\nG := F(n - 1);\nEND_FUNCTION\n",
+                 "recursion is not allowed"},
         Rejected{"ManyErrorsInOneRun", main_with("i : INT; d : DINT;", "i := d;\ni := 1.5;"),
                  "test.st:4:6"}),
     [](const auto& c) { return c.param.name; });

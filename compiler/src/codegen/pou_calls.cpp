@@ -147,6 +147,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         return call_host(function, frame, node, dest, range);
     }
     const std::uint32_t index = program_.pou_index(function);
+    program_.calls(pou_, function);
     struct Bound {
         const sema::Field* field;
         const ast::Argument* argument;
@@ -303,6 +304,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
                                  const SourceRange& range) {
     const sema::Type& type = *instance.type;
     const std::uint32_t index = program_.pou_index(*type.pou);
+    program_.calls(pou_, *type.pou);
     std::vector<std::pair<const sema::Field*, const ast::Argument*>> outputs;
     for (const ast::Argument& argument : node.arguments) {
         if (is_named(argument, "EN") || is_named(argument, "ENO")) {

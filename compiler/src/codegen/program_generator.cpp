@@ -5,6 +5,7 @@
 #include "pou_generator.hpp"
 
 #include <fmt/format.h>
+#include <functional>
 
 namespace eposp::compiler::codegen {
 
@@ -152,6 +153,7 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         default_program_instances();
     }
     generate_bodies();
+    check_recursion();
     if (diagnostics_.has_errors()) {
         return std::nullopt;
     }
@@ -177,6 +179,34 @@ void ProgramGenerator::generate_bodies() {
         queue_.pop_front();
         PouGenerator generator(*this, *next.model, *next.pou, next.index);
         pou_frames_total_ += generator.generate();
+    }
+}
+
+void ProgramGenerator::check_recursion() {
+    // Depth-first search for a cycle, reporting each POU on one once.
+    enum class Mark { Unvisited, Active, Done };
+    std::unordered_map<const ast::Pou*, Mark> marks;
+    std::function<void(const ast::Pou*)> visit = [&](const ast::Pou* pou) {
+        marks[pou] = Mark::Active;
+        if (const auto it = calls_.find(pou); it != calls_.end()) {
+            for (const ast::Pou* callee : it->second) {
+                const Mark mark = marks[callee];
+                if (mark == Mark::Active) {
+                    diagnostics_.error(callee->name.range,
+                                       fmt::format("'{}' calls itself (through '{}'): recursion is "
+                                                   "not allowed in IEC 61131-3 (6.6.1.1)",
+                                                   callee->name.name, pou->name.name));
+                } else if (mark == Mark::Unvisited) {
+                    visit(callee);
+                }
+            }
+        }
+        marks[pou] = Mark::Done;
+    };
+    for (const auto& [pou, callees] : calls_) {
+        if (marks[pou] == Mark::Unvisited) {
+            visit(pou);
+        }
     }
 }
 

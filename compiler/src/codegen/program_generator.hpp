@@ -48,6 +48,8 @@ public:
     std::optional<Place> direct_variable(const ast::DirectAddress& address);
     /// The index of `pou`'s body, generated later if it is not yet.
     std::uint32_t pou_index(const ast::Pou& pou);
+    /// Records that `caller` calls `callee`, for the recursion check.
+    void calls(const ast::Pou& caller, const ast::Pou& callee) { calls_[&caller].insert(&callee); }
     /// The built-in POU that implements a standard FB or function (`TON`).
     const ast::Pou* library_pou(std::string_view name) const;
     /// A FUNCTION without statements in the built-in library: a host function (the clock).
@@ -84,6 +86,8 @@ private:
     std::uint32_t type_descriptor(const sema::Type& type);
     std::uint64_t task_interval(const ast::TaskDeclaration& task);
     void generate_bodies();
+    /// 6.6.1.1: POUs shall not call themselves, directly or through others.
+    void check_recursion();
     std::uint32_t stack_size() const;
 
     PouSource program_;
@@ -103,6 +107,7 @@ private:
     std::uint32_t pou_frames_total_ = 0;
     std::unordered_set<const ast::VariableDeclaration*> constants_declared_;
     std::map<std::tuple<int, int, std::vector<std::uint32_t>>, Place> direct_variables_;
+    std::unordered_map<const ast::Pou*, std::unordered_set<const ast::Pou*>> calls_;
 };
 
 } // namespace eposp::compiler::codegen
