@@ -78,8 +78,7 @@ std::optional<double> fold_real(const ast::Expression& expression) {
 } // namespace
 
 std::optional<std::vector<std::uint8_t>>
-ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type,
-                                 const sema::SemanticModel& model) {
+ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type) {
     const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
     if (type.kind == sema::TypeKind::String) {
         const auto* text =
@@ -128,7 +127,6 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
     if (type.kind == sema::TypeKind::Reference || sema::is_real(type) || sema::is_time_like(type)) {
         return std::nullopt;
     }
-    (void)model;
     if (literal != nullptr) {
         if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
             // Directly from the magnitude, so that ULINT values above LINT's range work.
@@ -160,7 +158,6 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
 }
 
 void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initializer* initializer,
-                                     const sema::SemanticModel& model,
                                      std::span<std::uint8_t> bytes) {
     switch (type.kind) {
     case sema::TypeKind::String: {
@@ -171,7 +168,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
     case sema::TypeKind::Array: {
         const std::uint32_t count = type.size / std::max<std::uint32_t>(type.element->size, 1);
         for (std::uint32_t i = 0; i < count; ++i) {
-            initial_value(*type.element, nullptr, model,
+            initial_value(*type.element, nullptr,
                           bytes.subspan(i * type.element->size, type.element->size));
         }
         break;
@@ -179,9 +176,6 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
     case sema::TypeKind::Struct:
     case sema::TypeKind::Instance:
         for (const sema::Type* part = &type; part != nullptr; part = part->base) {
-            const sema::SemanticModel& own = part->pou != nullptr && pou_models_.contains(part->pou)
-                                                 ? *pou_models_.at(part->pou)
-                                                 : model;
             for (const sema::Field& field : part->fields) {
                 if (field.section == ast::VarSectionKind::InOut) {
                     continue; // a reference, bound at each call
@@ -189,7 +183,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
                 initial_value(*field.type,
                               field.declaration != nullptr ? field.declaration->initial_value.get()
                                                            : nullptr,
-                              own, bytes.subspan(field.offset, field.type->size));
+                              bytes.subspan(field.offset, field.type->size));
             }
         }
         break;
@@ -200,7 +194,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
         return;
     }
     if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer->value)) {
-        if (const auto value = constant_value(**expression, type, model)) {
+        if (const auto value = constant_value(**expression, type)) {
             std::copy(value->begin(), value->end(), bytes.begin());
         } else {
             diagnostics_.error((*expression)->range,
@@ -234,7 +228,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
                     return;
                 }
                 if (element.value) {
-                    initial_value(*type.element, element.value.get(), model,
+                    initial_value(*type.element, element.value.get(),
                                   bytes.subspan(next * size, size));
                 }
             }
@@ -250,7 +244,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
                                                                 type.name, member.member.name));
             continue;
         }
-        initial_value(*field->type, member.value.get(), model,
+        initial_value(*field->type, member.value.get(),
                       bytes.subspan(field->offset, field->type->size));
     }
 }

@@ -105,7 +105,7 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
                           instance->type->name));
         return std::nullopt;
     }
-    call_instance(*instance, node, range);
+    call_instance(*instance, node);
     return Value{};
 }
 
@@ -144,7 +144,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                                                  const SourceRange& range) {
     const sema::Type& frame = *types_.frame(function);
     if (program_.is_host_function(function)) {
-        return call_host(function, frame, node, dest, range);
+        return call_host(function, frame, node, dest);
     }
     const std::uint32_t index = program_.pou_index(function);
     program_.calls(pou_, function);
@@ -226,8 +226,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
             }
             // 6.6.1.7: an input left out takes its initial value.
             std::vector<std::uint8_t> bytes(field.type->size);
-            program_.initial_value(*field.type, field.declaration->initial_value.get(), model_,
-                                   bytes);
+            program_.initial_value(*field.type, field.declaration->initial_value.get(), bytes);
             move(slot, *field.type, Value{program_.constant(bytes, 8), field.type});
         } else if (it->value) {
             emit(sema::is_scalar(*field.type)
@@ -273,7 +272,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
 
 std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sema::Type& frame,
                                              const ast::CallExpression& node,
-                                             const Destination* dest, const SourceRange& range) {
+                                             const Destination* dest) {
     vm::NativeSignature signature;
     std::vector<Value> arguments;
     std::size_t positional = 0;
@@ -296,12 +295,10 @@ std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sem
     signature.has_result = result != nullptr;
     signature.result = result != nullptr ? sema::scalar_of(*result) : vm::Scalar::Bool;
     call_native(function.name.name, signature, arguments);
-    (void)range;
     return result != nullptr ? native_result(signature, *result, dest) : std::optional(Value{});
 }
 
-void PouGenerator::call_instance(const Place& instance, const ast::CallExpression& node,
-                                 const SourceRange& range) {
+void PouGenerator::call_instance(const Place& instance, const ast::CallExpression& node) {
     const sema::Type& type = *instance.type;
     const std::uint32_t index = program_.pou_index(*type.pou);
     program_.calls(pou_, *type.pou);
@@ -352,7 +349,6 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             store(slot, *value);
         }
     }
-    (void)range;
     if (instance.kind == Place::Kind::Direct) {
         emit(Opcode::CallFb, instance.operand, Operand::imm(index));
     } else {

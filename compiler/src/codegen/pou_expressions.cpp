@@ -410,7 +410,7 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
     } else {
         type = hint != nullptr && hint->kind == sema::TypeKind::Reference ? hint : &types_.null();
     }
-    auto bytes = program_.constant_value(expression, *type, model_);
+    auto bytes = program_.constant_value(expression, *type);
     if (!bytes) {
         error(expression.range, fmt::format("this literal is not a valid {}", type->name));
         return std::nullopt;

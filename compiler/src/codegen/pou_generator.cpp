@@ -118,7 +118,7 @@ void PouGenerator::initialise_frame() {
     // each call. Runs of consecutive non-parameter fields are copied from one template each.
     const sema::Type& frame = *types_.frame(pou_);
     std::vector<std::uint8_t> bytes(frame.size);
-    program_.initial_value(frame, nullptr, model_, bytes);
+    program_.initial_value(frame, nullptr, bytes);
     std::uint32_t begin = 0;
     std::uint32_t end = 0;
     auto flush = [&] {

@@ -155,10 +155,8 @@ private:
     std::optional<Value> call_function(const ast::Pou& function, const ast::CallExpression& node,
                                        const Destination* dest, const SourceRange& range);
     std::optional<Value> call_host(const ast::Pou& function, const sema::Type& frame,
-                                   const ast::CallExpression& node, const Destination* dest,
-                                   const SourceRange& range);
-    void call_instance(const Place& instance, const ast::CallExpression& node,
-                       const SourceRange& range);
+                                   const ast::CallExpression& node, const Destination* dest);
+    void call_instance(const Place& instance, const ast::CallExpression& node);
     /// Calls native `name`; `arguments` already evaluated, strings passed by address.
     void call_native(const std::string& name, const vm::NativeSignature& signature,
                      const std::vector<Value>& arguments);

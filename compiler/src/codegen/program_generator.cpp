@@ -238,7 +238,7 @@ void ProgramGenerator::lay_out_global_section(
             for (const ast::Identifier& name : declaration.names) {
                 const std::uint32_t offset = builder_.allocate(type->size, type->align);
                 std::vector<std::uint8_t> bytes(type->size);
-                initial_value(*type, declaration.initial_value.get(), program_.model, bytes);
+                initial_value(*type, declaration.initial_value.get(), bytes);
                 builder_.initialise(offset, bytes);
                 globals_[sema::fold_case(name.name)] =
                     Place::direct(*type, vm::Operand::global(offset), !variables->constant);
@@ -259,7 +259,7 @@ std::uint32_t ProgramGenerator::program_instance(const ast::Pou& program, const 
     const sema::Type* type = types_.instance(program);
     const std::uint32_t offset = builder_.allocate(type->size, type->align);
     std::vector<std::uint8_t> bytes(type->size);
-    initial_value(*type, nullptr, program_.model, bytes);
+    initial_value(*type, nullptr, bytes);
     builder_.initialise(offset, bytes);
     add_symbols(path, *type, offset);
     // RETAIN variables of the program (6.5.6), or all of it for a RETAIN instance.

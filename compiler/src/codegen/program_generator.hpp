@@ -60,11 +60,10 @@ public:
     /// The bytes of `type`'s initial value, `initializer` (may be null) applied over the
     /// declared defaults: STRING headers, structure member and FB variable defaults.
     void initial_value(const sema::Type& type, const ast::Initializer* initializer,
-                       const sema::SemanticModel& model, std::span<std::uint8_t> bytes);
+                       std::span<std::uint8_t> bytes);
     /// The value of a constant expression of type `type`, encoded as in memory.
     std::optional<std::vector<std::uint8_t>> constant_value(const ast::Expression& expression,
-                                                            const sema::Type& type,
-                                                            const sema::SemanticModel& model);
+                                                            const sema::Type& type);
 
 private:
     struct QueuedPou {
