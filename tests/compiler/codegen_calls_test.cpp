@@ -72,6 +72,26 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int16_t>("Main.arr[2].value"), 6);
 }
 
+TEST(Configuration, ProgramConnectionsCopyInputsBeforeAndOutputsAfter) {
+    StProgram run(R"(
+PROGRAM Doubler
+  VAR_INPUT v : DINT; k : DINT; END_VAR
+  VAR_OUTPUT twice : DINT; END_VAR
+  twice := v * 2 + k;
+END_PROGRAM
+CONFIGURATION Cell
+  VAR_GLOBAL source : DINT := 21; sink : DINT; END_VAR
+  RESOURCE Cpu ON PLC
+    TASK T(INTERVAL := T#1ms, PRIORITY := 1);
+    PROGRAM D WITH T : Doubler (v := source, k := 100, twice => sink);
+  END_RESOURCE
+END_CONFIGURATION
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int32_t>("Cell.sink"), 142);
+}
+
 TEST(Configuration, GlobalsTasksAndInstancesByPath) {
     StProgram run(R"(
 PROGRAM Prog

@@ -153,6 +153,7 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         default_program_instances();
     }
     generate_bodies();
+    connect_programs();
     check_recursion();
     if (diagnostics_.has_errors()) {
         return std::nullopt;
@@ -325,11 +326,6 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
             if (symbol == nullptr || symbol->kind != sema::SymbolKind::Pou) {
                 continue; // reported by the resolver
             }
-            if (!instance.connections.empty()) {
-                diagnostics_.error(instance.range,
-                                   "connecting program parameters in a configuration is not "
-                                   "supported yet");
-            }
             const std::uint32_t offset = program_instance(
                 *symbol->pou, instance.name.name, instance.retention == ast::Retention::Retain);
             const vm::TaskEntry entry{pou_index(*symbol->pou), offset};
@@ -350,8 +346,74 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
                 background.priority = UINT32_MAX;
                 tasks_.push_back(std::move(background));
             }
+            if (!instance.connections.empty()) {
+                connected_.push_back({&instance, symbol->pou, task, tasks_[task].entries.size()});
+            }
             tasks_[task].entries.push_back(entry);
         }
+    }
+}
+
+void ProgramGenerator::connect_programs() {
+    for (const Connected& connected : connected_) {
+        vm::TaskEntry& entry = tasks_[connected.task].entries[connected.entry];
+        const sema::Type& type = *types_.instance(*connected.program);
+        // 6.8.2: inputs are copied in from the configuration before each run, outputs out
+        // after it, by a small body around the program's own.
+        const std::uint32_t wrapper = builder_.declare_pou(
+            connected.instance->name.name + ".connections", vm::PouKind::Program, type.size);
+        builder_.begin_body(wrapper);
+        builder_.line(connected.instance->range.begin.line);
+        std::vector<std::pair<const sema::Field*, Place>> outputs;
+        for (const ast::Argument& argument : connected.instance->connections) {
+            const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
+            const bool output = argument.kind == ast::Argument::Kind::Output;
+            if (field == nullptr || field->section != (output ? ast::VarSectionKind::Output
+                                                              : ast::VarSectionKind::Input)) {
+                diagnostics_.error(argument.range,
+                                   fmt::format("'{}' has no {} of that name", type.name,
+                                               output ? "output" : "input"));
+                continue;
+            }
+            // A global variable by name, or (for an input) a constant.
+            std::optional<Place> source;
+            if (const auto* name = std::get_if<ast::NameExpression>(&argument.value->node)) {
+                source = global(name->name.name);
+            }
+            if (!source && !output) {
+                if (const auto value = constant_value(*argument.value, *field->type)) {
+                    source = Place::direct(*field->type, constant(*value, 8), false);
+                }
+            }
+            if (!source || !sema::same_type(*source->type, *field->type) ||
+                (output && !source->writable)) {
+                diagnostics_.error(argument.value->range,
+                                   fmt::format("connect '{}' to a {} global variable{}",
+                                               field->name, field->type->name,
+                                               output ? "" : " or constant"));
+                continue;
+            }
+            if (output) {
+                outputs.emplace_back(field, *source);
+                continue;
+            }
+            copy(vm::Operand::self(field->offset), source->operand, *field->type);
+        }
+        builder_.emit(vm::Opcode::CallFb, vm::Operand::self(0), vm::Operand::imm(entry.pou));
+        for (const auto& [field, target] : outputs) {
+            copy(target.operand, vm::Operand::self(field->offset), *field->type);
+        }
+        builder_.emit(vm::Opcode::Ret);
+        builder_.end_body(0, 0);
+        entry.pou = wrapper;
+    }
+}
+
+void ProgramGenerator::copy(vm::Operand dst, vm::Operand src, const sema::Type& type) {
+    if (sema::is_scalar(type)) {
+        builder_.emit(opcodes_.get("Mov", width_suffix(sema::scalar_of(type))), dst, src);
+    } else {
+        builder_.emit(vm::Opcode::MovN, dst, src, vm::Operand::imm(type.size));
     }
 }
 

@@ -85,6 +85,9 @@ private:
     std::uint32_t type_descriptor(const sema::Type& type);
     std::uint64_t task_interval(const ast::TaskDeclaration& task);
     void generate_bodies();
+    /// The bodies that copy the connections of `PROGRAM p WITH t : P (in := g, out => h)`.
+    void connect_programs();
+    void copy(vm::Operand dst, vm::Operand src, const sema::Type& type);
     /// 6.6.1.1: POUs shall not call themselves, directly or through others.
     void check_recursion();
     std::uint32_t stack_size() const;
@@ -107,6 +110,13 @@ private:
     std::unordered_set<const ast::VariableDeclaration*> constants_declared_;
     std::map<std::tuple<int, int, std::vector<std::uint32_t>>, Place> direct_variables_;
     std::unordered_map<const ast::Pou*, std::unordered_set<const ast::Pou*>> calls_;
+    struct Connected {
+        const ast::ProgramInstance* instance;
+        const ast::Pou* program;
+        std::size_t task;
+        std::size_t entry;
+    };
+    std::vector<Connected> connected_;
 };
 
 } // namespace eposp::compiler::codegen
