@@ -72,6 +72,26 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int16_t>("Main.arr[2].value"), 6);
 }
 
+TEST(Configuration, ProgramConnectionsCopyInputsBeforeAndOutputsAfter) {
+    StProgram run(R"(
+PROGRAM Doubler
+  VAR_INPUT v : DINT; k : DINT; END_VAR
+  VAR_OUTPUT twice : DINT; END_VAR
+  twice := v * 2 + k;
+END_PROGRAM
+CONFIGURATION Cell
+  VAR_GLOBAL source : DINT := 21; sink : DINT; END_VAR
+  RESOURCE Cpu ON PLC
+    TASK T(INTERVAL := T#1ms, PRIORITY := 1);
+    PROGRAM D WITH T : Doubler (v := source, k := 100, twice => sink);
+  END_RESOURCE
+END_CONFIGURATION
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int32_t>("Cell.sink"), 142);
+}
+
 TEST(Configuration, GlobalsTasksAndInstancesByPath) {
     StProgram run(R"(
 PROGRAM Prog
@@ -93,6 +113,112 @@ END_CONFIGURATION
     ASSERT_TRUE(run.scans(2)) << run.fault();
     EXPECT_EQ(run.get<std::int32_t>("P1.count"), 102);
     EXPECT_EQ(run.get<std::int32_t>("Cell.g"), 5 + 101 + 102);
+}
+
+} // namespace
+} // namespace eposp::compiler::test
+
+namespace eposp::compiler::test {
+namespace {
+
+TEST(FunctionBlockCall, VarTempStartsFromItsInitialValueAtEachCall) {
+    StProgram run(R"(
+FUNCTION_BLOCK Acc
+  VAR_OUTPUT kept, fresh : INT; END_VAR
+  VAR_TEMP t : INT := 10; END_VAR
+  t := t + 1;
+  fresh := t;
+  kept := kept + t;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a : Acc; END_VAR
+a();
+a();
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("Main.a.fresh"), 11);
+    EXPECT_EQ(run.get<std::int16_t>("Main.a.kept"), 22);
+}
+
+TEST(EnableInputs, EnFalseSkipsTheCallAndEnoTellsWhetherItRan) {
+    StProgram run(R"(
+FUNCTION Inc : DINT
+  VAR_INPUT v : DINT; END_VAR
+  Inc := v + 1;
+END_FUNCTION
+FUNCTION_BLOCK Count
+  VAR_OUTPUT n : INT; END_VAR
+  n := n + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR c : Count; off : BOOL; eno1, eno2 : BOOL := TRUE; x : DINT; END_VAR
+c(EN := off, ENO => eno1);
+c(EN := NOT off, ENO => eno2);
+x := Inc(v := 41, EN := TRUE);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("Main.c.n"), 1);
+    EXPECT_FALSE(run.get<bool>("Main.eno1"));
+    EXPECT_TRUE(run.get<bool>("Main.eno2"));
+    EXPECT_EQ(run.get<std::int32_t>("Main.x"), 42);
+}
+
+TEST(NestedData, StructsArraysReferencesAndInOutArrays) {
+    StProgram run(R"(
+TYPE
+  Inner : STRUCT a : INT; b : ARRAY[1..3] OF DINT; END_STRUCT;
+  Outer : STRUCT name : STRING[10] := 'xy'; inner : Inner; list : ARRAY[0..1] OF Inner; END_STRUCT;
+  Level : INT (Low := 1, High := 5);
+END_TYPE
+FUNCTION MakeInner : Inner
+  VAR_INPUT v : INT; END_VAR
+  MakeInner.a := v;
+  MakeInner.b[2] := v * 2;
+END_FUNCTION
+FUNCTION_BLOCK Summer
+  VAR_IN_OUT data : ARRAY[1..3] OF DINT; END_VAR
+  VAR_OUTPUT total : DINT; END_VAR
+  VAR i : INT; END_VAR
+  total := 0;
+  FOR i := 1 TO 3 DO total := total + data[i]; END_FOR;
+  IF total > 100 THEN RETURN; END_IF;
+  data[1] := data[1] + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR
+  o : Outer; p : REF_TO Outer; lv : Level := High; names : ARRAY[1..2] OF STRING[4];
+  s : Summer; tot, k : DINT; u : UINT; w : WSTRING := "wide"; n, got : INT;
+END_VAR
+o.inner := MakeInner(7);
+o.list[1] := MakeInner(3);
+p := REF(o);
+p^.inner.b[1] := 5;
+p^.list[1].b[3] := 9;
+names[2] := 'abcdefg';
+s(data := o.inner.b, total => tot);
+FOR u := 10 TO 12 DO k := k + UINT_TO_DINT(u); END_FOR;
+CASE lv OF Low: got := 1; High: got := 5; END_CASE;
+n := LEN(w);
+REPEAT k := k + 1; IF k > 40 THEN EXIT; END_IF; UNTIL FALSE END_REPEAT;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("Main.o.inner.a"), 7);
+    EXPECT_EQ(run.get<std::int32_t>("Main.o.inner.b[1]"), 6);
+    EXPECT_EQ(run.get<std::int32_t>("Main.o.inner.b[2]"), 14);
+    EXPECT_EQ(run.get<std::int16_t>("Main.o.list[1].a"), 3);
+    EXPECT_EQ(run.get<std::int32_t>("Main.o.list[1].b[3]"), 9);
+    EXPECT_EQ(run.get<std::int32_t>("Main.tot"), 19);
+    EXPECT_EQ(run.get<std::int32_t>("Main.k"), 41);
+    EXPECT_EQ(run.get<std::int16_t>("Main.got"), 5);
+    EXPECT_EQ(run.get<std::int16_t>("Main.n"), 4);
+    EXPECT_EQ(run.get_string("Main.names[2]"), "abcd");
+    EXPECT_EQ(run.get_string("Main.o.name"), "xy");
 }
 
 } // namespace

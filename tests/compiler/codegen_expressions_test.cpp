@@ -19,8 +19,9 @@ class IntegerResult : public testing::TestWithParam<IntCase> {};
 
 TEST_P(IntegerResult, GivesTheExpectedValue) {
     const IntCase& c = GetParam();
-    StProgram run("PROGRAM Main\nVAR x : LINT; " + c.declarations + " END_VAR\n" + c.body +
-                  "\nEND_PROGRAM\n");
+    StProgram run(
+        "TYPE Pair : STRUCT a, b : INT; END_STRUCT; END_TYPE\nPROGRAM Main\nVAR x : LINT; " +
+        c.declarations + " END_VAR\n" + c.body + "\nEND_PROGRAM\n");
     ASSERT_TRUE(run.ok()) << run.errors();
     ASSERT_TRUE(run.scans(1)) << run.fault();
     EXPECT_EQ(run.get<std::int64_t>("Main.x"), c.expected);
@@ -43,7 +44,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "x := (a * b) MOD 1000;", 0},
         IntCase{"IntWidensToLint", "i : INT := -3;", "x := i;", -3},
         IntCase{"PowerIsLreal", "", "x := LREAL_TO_LINT(2 ** 10);", 1024},
-        IntCase{"BitAnd", "w : WORD := 16#F0F0;", "w := w AND 16#FF00; x := WORD_TO_LINT(w);", 0xF000},
+        IntCase{"BitAnd", "w : WORD := 16#F0F0;", "w := w AND 16#FF00; x := WORD_TO_LINT(w);",
+                0xF000},
         IntCase{"BitOrXorNot", "w : WORD := 16#00F0;",
                 "w := (w OR 16#0F00) XOR 16#0FF0; x := WORD_TO_LINT(NOT w);", 0xFFFF},
         IntCase{"ShiftLeft", "b : BYTE := 16#81;", "x := BYTE_TO_LINT(SHL(b, 1));", 0x02},
@@ -60,6 +62,23 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"DintToTime", "t : TIME;", "t := DINT_TO_TIME(250); x := TIME_TO_LINT(t);", 250},
         IntCase{"TimeArithmetic", "t : TIME := T#1s;",
                 "t := t + T#500ms - T#250ms; x := TIME_TO_DINT(t);", 1250},
+        IntCase{"TimeTimesNumber", "t : TIME := T#1s;",
+                "t := t * 3 / 2; t := t * 0.5; x := TIME_TO_DINT(t);", 750},
+        IntCase{"TimeOfDayWrapsAroundMidnight", "t : TOD := TOD#23:00:00;",
+                "t := t + T#2h; x := TOD_TO_DINT(t);", 3600000},
+        IntCase{"ReusedElementIsNotOverwritten", "a : ARRAY[0..1] OF DINT := [5, 1]; j : INT;",
+                "x := a[j] + MAX(a[j], 30) + a[j + 1]; a[j] := a[j + 1]; x := x + a[j] * 100;",
+                136},
+        IntCase{"IndexChangesBetweenStatements",
+                "a : ARRAY[0..3] OF DINT := [10, 20, 30, 40]; i : INT := 1;",
+                "x := a[i]; i := i + 1; x := x + a[i]; a[i] := 1; x := x + a[i];", 51},
+        IntCase{"ElementChangedThroughReference",
+                "a : ARRAY[0..3] OF DINT := [10, 20, 30, 40]; p : REF_TO DINT; i : INT := 1;",
+                "x := a[i]; p := REF(a[1]); p^ := 7; x := x + a[i];", 27},
+        IntCase{"LoopReadsEachElement", "a : ARRAY[0..3] OF DINT := [10, 20, 30, 40]; i : INT;",
+                "FOR i := 0 TO 3 DO x := x + a[i] + a[i]; END_FOR;", 200},
+        IntCase{"ElementAddressAfterIndexChange", "s : ARRAY[0..2] OF Pair; i : INT;",
+                "s[i].b := 3; i := i + 1; s[i].b := 4; x := s[0].b * 10 + s[1].b;", 34},
         IntCase{"Max", "", "x := MAX(3, 7, 5);", 7},
         IntCase{"Min", "a : INT := 4;", "x := MIN(a, 9, -2);", -2},
         IntCase{"LimitAbove", "", "x := LIMIT(0, 15, 10);", 10},
@@ -74,7 +93,8 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"AddFunction", "", "x := ADD(1, 2, 3, 4);", 10},
         IntCase{"Move", "", "x := MOVE(42);", 42},
         IntCase{"ArrayElement", "a : ARRAY[1..5] OF INT := [1, 2(7), 3];", "x := a[3] + a[4];", 10},
-        IntCase{"ArrayIndexedByVariable", "a : ARRAY[1..5] OF INT := [1, 2, 3, 4, 5]; i : INT := 5;",
+        IntCase{"ArrayIndexedByVariable",
+                "a : ARRAY[1..5] OF INT := [1, 2, 3, 4, 5]; i : INT := 5;",
                 "a[i] := 50; x := a[i] + a[1];", 51},
         IntCase{"TwoDimensionalArray", "m : ARRAY[0..2, 1..3] OF DINT; i, j : INT;",
                 "FOR i := 0 TO 2 DO FOR j := 1 TO 3 DO m[i, j] := i * 10 + j; END_FOR; END_FOR;"
@@ -83,7 +103,13 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"Reference", "d : DINT; p : REF_TO DINT;", "p := REF(d); p^ := 5; x := d + p^;",
                 10},
         IntCase{"NullReferenceCompares", "p : REF_TO DINT;", "IF p = NULL THEN x := 1; END_IF;", 1},
-        IntCase{"UnsignedCompare", "u : UDINT := 16#FFFFFFFF;", "IF u > 1 THEN x := 1; END_IF;", 1}),
+        IntCase{"BitRead", "w : WORD := 16#0008; b : BOOL;", "b := w.3; x := BOOL_TO_LINT(b);", 1},
+        IntCase{"BitWrite", "w : WORD := 16#00FF;",
+                "w.0 := FALSE; w.15 := TRUE; x := WORD_TO_LINT(w);", 0x80FE},
+        IntCase{"Sizeof", "a : ARRAY[1..10] OF DINT;", "x := SIZEOF(a) + SIZEOF(x);", 48},
+        IntCase{"Adr", "d : DINT; p : POINTER TO DINT;", "p := ADR(d); p^ := 9; x := d;", 9},
+        IntCase{"UnsignedCompare", "u : UDINT := 16#FFFFFFFF;", "IF u > 1 THEN x := 1; END_IF;",
+                1}),
     [](const auto& c) { return c.param.name; });
 
 TEST(StructsAndEnums, ArraysOfStructuresAndEnumerationsRun) {
@@ -121,7 +147,7 @@ END_PROGRAM
 TEST(Reals, ArithmeticAndFunctions) {
     StProgram run(R"(
 PROGRAM Main
-VAR a : REAL := 1.5; b : LREAL; c : LREAL; i : INT := 3; END_VAR
+VAR a : REAL := 1.5; b : LREAL; c : LREAL; i : INT := 3; third : LREAL := -1.0 / 3.0 * 2; END_VAR
 b := a * 2.0 + i;
 c := SIN(0.0) + EXPT(2.0, 3.0) + ABS(-1.25);
 END_PROGRAM
@@ -130,6 +156,7 @@ END_PROGRAM
     ASSERT_TRUE(run.scans(1)) << run.fault();
     EXPECT_DOUBLE_EQ(run.get<double>("Main.b"), 6.0);
     EXPECT_DOUBLE_EQ(run.get<double>("Main.c"), 9.25);
+    EXPECT_DOUBLE_EQ(run.get<double>("Main.third"), -1.0 / 3.0 * 2);
 }
 
 } // namespace

@@ -40,7 +40,9 @@ bool StProgram::scans(int n, std::int64_t step_ns) {
     return true;
 }
 
-std::string StProgram::fault() const { return machine_->describe_fault(0); }
+std::string StProgram::fault() const {
+    return machine_->describe_fault(0);
+}
 
 const std::uint8_t* StProgram::address(const std::string& path, std::size_t size) const {
     const auto location = vm::lookup_variable(program_->image(), path);

@@ -9,6 +9,7 @@
 #include "eposp/vm/program.hpp"
 
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -32,6 +33,13 @@ public:
     template <typename T>
     T get(const std::string& path) const;
     std::string get_string(const std::string& path) const;
+    /// Sets a variable between scans.
+    template <typename T>
+    void set(const std::string& path, T value) {
+        if (const std::uint8_t* at = address(path, sizeof(T))) {
+            std::memcpy(const_cast<std::uint8_t*>(at), &value, sizeof(T));
+        }
+    }
 
 private:
     const std::uint8_t* address(const std::string& path, std::size_t size) const;

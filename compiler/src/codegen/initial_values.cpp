@@ -32,15 +32,53 @@ std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) 
 
 bool fits_integer(std::int64_t value, const sema::Type& type) {
     const auto range = ast::integer_range(type.elementary);
-    return !range || (value >= range->min &&
-                      (value < 0 || static_cast<std::uint64_t>(value) <= range->max));
+    return !range ||
+           (value >= range->min && (value < 0 || static_cast<std::uint64_t>(value) <= range->max));
+}
+
+/// A constant REAL expression: literals, signs and + - * / of them (ed. 3, 6.4.2 initial
+/// values such as `1.0 / 3.0`).
+std::optional<double> fold_real(const ast::Expression& expression) {
+    if (const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node)) {
+        if (const auto* real = std::get_if<ast::RealLiteral>(&literal->value)) {
+            return real->value;
+        }
+        if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
+            return static_cast<double>(integer->magnitude) * (integer->negative ? -1 : 1);
+        }
+        return std::nullopt;
+    }
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        const auto operand = fold_real(*unary->operand);
+        if (!operand || unary->op == ast::UnaryOperator::Not) {
+            return std::nullopt;
+        }
+        return unary->op == ast::UnaryOperator::Negate ? -*operand : *operand;
+    }
+    const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
+    const auto left = binary != nullptr ? fold_real(*binary->left) : std::nullopt;
+    const auto right = left ? fold_real(*binary->right) : std::nullopt;
+    if (!right) {
+        return std::nullopt;
+    }
+    switch (binary->op) {
+    case ast::BinaryOperator::Add:
+        return *left + *right;
+    case ast::BinaryOperator::Subtract:
+        return *left - *right;
+    case ast::BinaryOperator::Multiply:
+        return *left * *right;
+    case ast::BinaryOperator::Divide:
+        return *left / *right;
+    default:
+        return std::nullopt;
+    }
 }
 
 } // namespace
 
 std::optional<std::vector<std::uint8_t>>
-ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type,
-                                 const sema::SemanticModel& model) {
+ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type) {
     const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
     if (type.kind == sema::TypeKind::String) {
         const auto* text =
@@ -60,24 +98,11 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
         return std::nullopt;
     }
     if (sema::is_real(type)) {
-        double value = 0;
-        const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node);
-        const ast::Expression& inner =
-            unary != nullptr && unary->op != ast::UnaryOperator::Not ? *unary->operand : expression;
-        const double sign = unary != nullptr && unary->op == ast::UnaryOperator::Negate ? -1 : 1;
-        const auto* inner_literal = std::get_if<ast::LiteralExpression>(&inner.node);
-        if (inner_literal == nullptr) {
+        const auto value = fold_real(expression);
+        if (!value) {
             return std::nullopt;
         }
-        if (const auto* real = std::get_if<ast::RealLiteral>(&inner_literal->value)) {
-            value = real->value;
-        } else if (const auto* integer = std::get_if<ast::IntegerLiteral>(&inner_literal->value)) {
-            value = static_cast<double>(integer->magnitude) * (integer->negative ? -1 : 1);
-        } else {
-            return std::nullopt;
-        }
-        value *= sign;
-        return type.size == 4 ? bytes_of(static_cast<float>(value)) : bytes_of(value);
+        return type.size == 4 ? bytes_of(static_cast<float>(*value)) : bytes_of(*value);
     }
     if (literal != nullptr) {
         if (const auto* boolean = std::get_if<ast::BoolLiteral>(&literal->value)) {
@@ -99,17 +124,16 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
                        : std::nullopt;
         }
     }
-    if (type.kind == sema::TypeKind::Reference || sema::is_real(type) ||
-        sema::is_time_like(type)) {
+    if (type.kind == sema::TypeKind::Reference || sema::is_real(type) || sema::is_time_like(type)) {
         return std::nullopt;
     }
-    (void)model;
     if (literal != nullptr) {
         if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
             // Directly from the magnitude, so that ULINT values above LINT's range work.
             const auto range = ast::integer_range(type.elementary);
             const bool fits = integer->negative
-                                  ? range && integer->magnitude <= static_cast<std::uint64_t>(-(range->min + 1)) + 1
+                                  ? range && integer->magnitude <=
+                                                 static_cast<std::uint64_t>(-(range->min + 1)) + 1
                                   : !range || integer->magnitude <= range->max;
             if (!fits && type.kind != sema::TypeKind::Enum) {
                 diagnostics_.error(expression.range,
@@ -117,7 +141,8 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
                                                integer->negative ? "-" : "", integer->magnitude,
                                                type.name));
             }
-            const std::uint64_t bits = integer->negative ? 0 - integer->magnitude : integer->magnitude;
+            const std::uint64_t bits =
+                integer->negative ? 0 - integer->magnitude : integer->magnitude;
             return integer_bytes(static_cast<std::int64_t>(bits), type.size);
         }
     }
@@ -133,7 +158,6 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
 }
 
 void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initializer* initializer,
-                                     const sema::SemanticModel& model,
                                      std::span<std::uint8_t> bytes) {
     switch (type.kind) {
     case sema::TypeKind::String: {
@@ -144,7 +168,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
     case sema::TypeKind::Array: {
         const std::uint32_t count = type.size / std::max<std::uint32_t>(type.element->size, 1);
         for (std::uint32_t i = 0; i < count; ++i) {
-            initial_value(*type.element, nullptr, model,
+            initial_value(*type.element, nullptr,
                           bytes.subspan(i * type.element->size, type.element->size));
         }
         break;
@@ -152,9 +176,6 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
     case sema::TypeKind::Struct:
     case sema::TypeKind::Instance:
         for (const sema::Type* part = &type; part != nullptr; part = part->base) {
-            const sema::SemanticModel& own =
-                part->pou != nullptr && pou_models_.contains(part->pou) ? *pou_models_.at(part->pou)
-                                                                       : model;
             for (const sema::Field& field : part->fields) {
                 if (field.section == ast::VarSectionKind::InOut) {
                     continue; // a reference, bound at each call
@@ -162,7 +183,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
                 initial_value(*field.type,
                               field.declaration != nullptr ? field.declaration->initial_value.get()
                                                            : nullptr,
-                              own, bytes.subspan(field.offset, field.type->size));
+                              bytes.subspan(field.offset, field.type->size));
             }
         }
         break;
@@ -173,7 +194,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
         return;
     }
     if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer->value)) {
-        if (const auto value = constant_value(**expression, type, model)) {
+        if (const auto value = constant_value(**expression, type)) {
             std::copy(value->begin(), value->end(), bytes.begin());
         } else {
             diagnostics_.error((*expression)->range,
@@ -181,7 +202,8 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
         }
         return;
     }
-    if (const auto* elements = std::get_if<std::vector<ast::ArrayInitElement>>(&initializer->value)) {
+    if (const auto* elements =
+            std::get_if<std::vector<ast::ArrayInitElement>>(&initializer->value)) {
         if (type.kind != sema::TypeKind::Array) {
             diagnostics_.error(initializer->range, fmt::format("{} is not an array", type.name));
             return;
@@ -206,7 +228,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
                     return;
                 }
                 if (element.value) {
-                    initial_value(*type.element, element.value.get(), model,
+                    initial_value(*type.element, element.value.get(),
                                   bytes.subspan(next * size, size));
                 }
             }
@@ -222,7 +244,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
                                                                 type.name, member.member.name));
             continue;
         }
-        initial_value(*field->type, member.value.get(), model,
+        initial_value(*field->type, member.value.get(),
                       bytes.subspan(field->offset, field->type->size));
     }
 }

@@ -14,11 +14,11 @@ struct Place {
     enum class Kind { Direct, Element, Indirect };
     Kind kind = Kind::Direct;
     const sema::Type* type = nullptr;
-    vm::Operand operand{};     ///< Direct: the value; Element: the array; Indirect: the pointer
-    vm::Operand index{};       ///< Element: the DINT index
-    std::uint16_t array = 0;   ///< Element: the array descriptor
-    std::uint32_t offset = 0;  ///< Indirect: bytes past the pointer
-    bool writable = true;      ///< false for constants and inputs of the running function
+    vm::Operand operand{};    ///< Direct: the value; Element: the array; Indirect: the pointer
+    vm::Operand index{};      ///< Element: the DINT index
+    std::uint16_t array = 0;  ///< Element: the array descriptor
+    std::uint32_t offset = 0; ///< Indirect: bytes past the pointer
+    bool writable = true;     ///< false for constants and inputs of the running function
 
     static Place direct(const sema::Type& type, vm::Operand operand, bool writable = true) {
         return {.kind = Kind::Direct, .type = &type, .operand = operand, .writable = writable};

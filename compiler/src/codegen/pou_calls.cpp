@@ -13,8 +13,59 @@ namespace eposp::compiler::codegen {
 using vm::Opcode;
 using vm::Operand;
 
+namespace {
+
+bool is_named(const ast::Argument& argument, std::string_view name) {
+    return argument.name && sema::fold_case(argument.name->name) == name;
+}
+
+} // namespace
+
 std::optional<Value> PouGenerator::call(const ast::CallExpression& node, const sema::Type* hint,
                                         const Destination* dest, const SourceRange& range) {
+    // 6.6.1.8: with EN := FALSE the call is skipped and ENO is FALSE; ENO is TRUE after a call.
+    const ast::Argument* enable = nullptr;
+    const ast::Argument* enabled = nullptr;
+    for (const ast::Argument& argument : node.arguments) {
+        if (is_named(argument, "EN") && argument.kind == ast::Argument::Kind::Input) {
+            enable = &argument;
+        } else if (is_named(argument, "ENO") && argument.kind == ast::Argument::Kind::Output) {
+            enabled = &argument;
+        }
+    }
+    if (enable == nullptr && enabled == nullptr) {
+        return call_enabled(node, hint, dest, range);
+    }
+    const sema::Type& boolean = types_.elementary(ast::ElementaryType::Bool);
+    const vm::Label skip = builder_.label();
+    const vm::Label end = builder_.label();
+    if (enable != nullptr) {
+        const auto condition = value_as(*enable->value, boolean);
+        if (!condition) {
+            return std::nullopt;
+        }
+        builder_.jump(Opcode::Jf, skip, condition->operand);
+    }
+    // The result goes to a temporary that exists on both paths.
+    auto result = call_enabled(node, hint, nullptr, range);
+    const auto eno = enabled != nullptr ? place(*enabled->value) : std::nullopt;
+    const std::uint8_t one[1] = {1};
+    const std::uint8_t zero[1] = {0};
+    if (eno) {
+        store(*eno, Value{program_.constant({one, one + 1}, 1), &boolean});
+    }
+    builder_.jump(Opcode::Jmp, end);
+    bind(skip);
+    if (eno) {
+        store(*eno, Value{program_.constant({zero, zero + 1}, 1), &boolean});
+    }
+    bind(end);
+    return result;
+}
+
+std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
+                                                const sema::Type* hint, const Destination* dest,
+                                                const SourceRange& range) {
     if (const auto* name = std::get_if<ast::NameExpression>(&node.callee->node)) {
         const sema::Symbol* symbol = model_.resolved(name->name);
         if (symbol == nullptr) {
@@ -25,9 +76,10 @@ std::optional<Value> PouGenerator::call(const ast::CallExpression& node, const s
             if (symbol->pou->kind == ast::PouKind::Function) {
                 return call_function(*symbol->pou, node, dest, range);
             }
-            error(range, fmt::format("'{}' is a {} type: call an instance of it", symbol->name,
-                                     symbol->pou->kind == ast::PouKind::Program ? "PROGRAM"
-                                                                               : "FUNCTION_BLOCK"));
+            error(range,
+                  fmt::format("'{}' is a {} type: call an instance of it", symbol->name,
+                              symbol->pou->kind == ast::PouKind::Program ? "PROGRAM"
+                                                                         : "FUNCTION_BLOCK"));
             return std::nullopt;
         case sema::SymbolKind::StandardFunction:
             if (const ast::Pou* pou = program_.library_pou(symbol->name);
@@ -53,7 +105,7 @@ std::optional<Value> PouGenerator::call(const ast::CallExpression& node, const s
                           instance->type->name));
         return std::nullopt;
     }
-    call_instance(*instance, node, range);
+    call_instance(*instance, node);
     return Value{};
 }
 
@@ -92,9 +144,10 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                                                  const SourceRange& range) {
     const sema::Type& frame = *types_.frame(function);
     if (program_.is_host_function(function)) {
-        return call_host(function, frame, node, dest, range);
+        return call_host(function, frame, node, dest);
     }
     const std::uint32_t index = program_.pou_index(function);
+    program_.calls(pou_, function);
     struct Bound {
         const sema::Field* field;
         const ast::Argument* argument;
@@ -110,6 +163,9 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         }
     }
     for (const ast::Argument& argument : node.arguments) {
+        if (is_named(argument, "EN") || is_named(argument, "ENO")) {
+            continue;
+        }
         const sema::Field* field = formal(frame, argument, positional);
         const bool output = argument.kind == ast::Argument::Kind::Output;
         if (field == nullptr || !is_parameter(field->section) ||
@@ -131,7 +187,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                 ok = false;
                 continue;
             }
-            if (target->type != b.field->type->element) {
+            if (!sema::same_type(*target->type, *b.field->type->element)) {
                 error(b.argument->range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
                                                      b.field->name, b.field->type->element->name));
                 ok = false;
@@ -170,12 +226,14 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
             }
             // 6.6.1.7: an input left out takes its initial value.
             std::vector<std::uint8_t> bytes(field.type->size);
-            program_.initial_value(*field.type, field.declaration->initial_value.get(), model_,
-                                   bytes);
+            program_.initial_value(*field.type, field.declaration->initial_value.get(), bytes);
             move(slot, *field.type, Value{program_.constant(bytes, 8), field.type});
         } else if (it->value) {
-            builder_.emit(sema::is_scalar(*field.type) ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(*field.type))) : Opcode::MovN,
-                          slot, it->value->operand, Operand::imm(sema::is_scalar(*field.type) ? 0 : field.type->size));
+            emit(sema::is_scalar(*field.type)
+                     ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(*field.type)))
+                     : Opcode::MovN,
+                 slot, it->value->operand,
+                 Operand::imm(sema::is_scalar(*field.type) ? 0 : field.type->size));
         } else {
             const Destination into{slot, field.type};
             const auto value = value_as(*it->argument->value, *field.type, &into);
@@ -186,13 +244,15 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         }
     }
     out_slot(end);
-    builder_.emit(Opcode::Call, Operand::imm(index));
+    emit(Opcode::Call, Operand::imm(index));
     std::optional<Value> result = Value{};
     if (!frame.fields.empty() && frame.fields.front().declaration == nullptr) {
         const sema::Type& type = *frame.fields.front().type;
         const Operand operand = result_operand(type, dest);
-        builder_.emit(sema::is_scalar(type) ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(type))) : Opcode::MovN,
-                      operand, Operand::out(0), Operand::imm(sema::is_scalar(type) ? 0 : type.size));
+        emit(sema::is_scalar(type)
+                 ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(type)))
+                 : Opcode::MovN,
+             operand, Operand::out(0), Operand::imm(sema::is_scalar(type) ? 0 : type.size));
         result = Value{operand, &type};
     }
     for (const Bound& b : bound) {
@@ -202,8 +262,8 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         const auto target = place(*b.argument->value);
         if (target) {
             const Operand copy = temp(*b.field->type);
-            builder_.emit(Opcode::MovN, copy, Operand::out(b.field->offset),
-                          Operand::imm(b.field->type->size));
+            emit(Opcode::MovN, copy, Operand::out(b.field->offset),
+                 Operand::imm(b.field->type->size));
             store(*target, Value{copy, b.field->type});
         }
     }
@@ -212,7 +272,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
 
 std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sema::Type& frame,
                                              const ast::CallExpression& node,
-                                             const Destination* dest, const SourceRange& range) {
+                                             const Destination* dest) {
     vm::NativeSignature signature;
     std::vector<Value> arguments;
     std::size_t positional = 0;
@@ -235,22 +295,24 @@ std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sem
     signature.has_result = result != nullptr;
     signature.result = result != nullptr ? sema::scalar_of(*result) : vm::Scalar::Bool;
     call_native(function.name.name, signature, arguments);
-    (void)range;
     return result != nullptr ? native_result(signature, *result, dest) : std::optional(Value{});
 }
 
-void PouGenerator::call_instance(const Place& instance, const ast::CallExpression& node,
-                                 const SourceRange& range) {
+void PouGenerator::call_instance(const Place& instance, const ast::CallExpression& node) {
     const sema::Type& type = *instance.type;
     const std::uint32_t index = program_.pou_index(*type.pou);
+    program_.calls(pou_, *type.pou);
     std::vector<std::pair<const sema::Field*, const ast::Argument*>> outputs;
     for (const ast::Argument& argument : node.arguments) {
+        if (is_named(argument, "EN") || is_named(argument, "ENO")) {
+            continue;
+        }
         const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
         if (field == nullptr) {
             error(argument.range,
-                  argument.name ? fmt::format("'{}' has no parameter '{}'", type.name,
-                                              argument.name->name)
-                                : "a function block call needs formal arguments (IN := x)");
+                  argument.name
+                      ? fmt::format("'{}' has no parameter '{}'", type.name, argument.name->name)
+                      : "a function block call needs formal arguments (IN := x)");
             continue;
         }
         const bool output = argument.kind == ast::Argument::Kind::Output;
@@ -270,7 +332,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             if (!target) {
                 continue;
             }
-            if (target->type != field->type->element) {
+            if (!sema::same_type(*target->type, *field->type->element)) {
                 error(argument.range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
                                                   field->name, field->type->element->name));
                 continue;
@@ -287,11 +349,10 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             store(slot, *value);
         }
     }
-    (void)range;
     if (instance.kind == Place::Kind::Direct) {
-        builder_.emit(Opcode::CallFb, instance.operand, Operand::imm(index));
+        emit(Opcode::CallFb, instance.operand, Operand::imm(index));
     } else {
-        builder_.emit(Opcode::CallFbP, address_of(instance), Operand::imm(index));
+        emit(Opcode::CallFbP, address_of(instance), Operand::imm(index));
     }
     for (const auto& [field, argument] : outputs) {
         const auto target = place(*argument->value);
@@ -301,7 +362,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         Value value = load(member(instance, field->offset, *field->type));
         if (argument->negated) {
             const Operand negated = temp(*field->type);
-            builder_.emit(Opcode::NotB, negated, value.operand);
+            emit(Opcode::NotB, negated, value.operand);
             value.operand = negated;
         }
         if (!sema::converts_implicitly(*field->type, *target->type)) {
@@ -322,14 +383,14 @@ void PouGenerator::call_native(const std::string& name, const vm::NativeSignatur
         if (signature.parameters[i] == vm::Scalar::Ptr &&
             argument.type->kind != sema::TypeKind::Reference &&
             argument.type->kind != sema::TypeKind::Null) {
-            builder_.emit(Opcode::Addr, slot, argument.operand, Operand::imm(argument.type->size));
+            emit(Opcode::Addr, slot, argument.operand, Operand::imm(argument.type->size));
         } else {
-            builder_.emit(program_.opcodes().get("Mov", width_suffix(signature.parameters[i])), slot,
-                          argument.operand);
+            emit(program_.opcodes().get("Mov", width_suffix(signature.parameters[i])), slot,
+                 argument.operand);
         }
     }
     out_slot(vm::argument_block_size(signature));
-    builder_.emit(Opcode::CallNative, Operand::imm(import));
+    emit(Opcode::CallNative, Operand::imm(import));
 }
 
 std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& signature,
@@ -337,11 +398,11 @@ std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& sign
     const Operand result = result_operand(type, dest);
     const vm::Scalar want = sema::scalar_of(type);
     if (signature.result == want) {
-        builder_.emit(program_.opcodes().get("Mov", width_suffix(want)), result, Operand::out(0));
+        emit(program_.opcodes().get("Mov", width_suffix(want)), result, Operand::out(0));
     } else {
-        builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(signature.result)) +
-                                                        std::string(type_suffix(want))),
-                      result, Operand::out(0));
+        emit(program_.opcodes().get("Cvt", std::string(type_suffix(signature.result)) +
+                                               std::string(type_suffix(want))),
+             result, Operand::out(0));
     }
     return Value{result, &type};
 }

@@ -16,12 +16,18 @@ bool is_comparison(Op op) {
 
 Op negated(Op op) {
     switch (op) {
-    case Op::Less: return Op::GreaterEqual;
-    case Op::Greater: return Op::LessEqual;
-    case Op::LessEqual: return Op::Greater;
-    case Op::GreaterEqual: return Op::Less;
-    case Op::Equal: return Op::NotEqual;
-    default: return Op::Equal;
+    case Op::Less:
+        return Op::GreaterEqual;
+    case Op::Greater:
+        return Op::LessEqual;
+    case Op::LessEqual:
+        return Op::Greater;
+    case Op::GreaterEqual:
+        return Op::Less;
+    case Op::Equal:
+        return Op::NotEqual;
+    default:
+        return Op::Equal;
     }
 }
 
@@ -53,7 +59,7 @@ void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label
             const vm::Label skip = builder_.label();
             branch(*binary->left, !when, skip);
             branch(*binary->right, when, target);
-            builder_.bind(skip);
+            bind(skip);
         }
         return;
     }

@@ -92,11 +92,13 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
             (field->section == ast::VarSectionKind::Var ||
              field->section == ast::VarSectionKind::InOut)) {
             // 6.5.2.2: only inputs and outputs of an instance are visible outside it.
-            error(node->member.range, fmt::format("'{}' is internal to '{}'", field->name, type.name));
+            error(node->member.range,
+                  fmt::format("'{}' is internal to '{}'", field->name, type.name));
             return std::nullopt;
         }
         Place result = member(*object, field->offset, *field->type);
-        if (type.kind == sema::TypeKind::Instance && field->section == ast::VarSectionKind::Output) {
+        if (type.kind == sema::TypeKind::Instance &&
+            field->section == ast::VarSectionKind::Output) {
             result.writable = false;
         }
         return result;
@@ -104,13 +106,17 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
     if (const auto* node = std::get_if<ast::IndexExpression>(&expression.node)) {
         return index(*node, expression.range);
     }
+    if (const auto* node = std::get_if<ast::DirectAddressExpression>(&expression.node)) {
+        return program_.direct_variable(node->address);
+    }
     if (const auto* node = std::get_if<ast::DereferenceExpression>(&expression.node)) {
         const auto pointer = eval(*node->reference, nullptr);
         if (!pointer) {
             return std::nullopt;
         }
         if (pointer->type->kind != sema::TypeKind::Reference || pointer->type->element == nullptr) {
-            error(expression.range, fmt::format("'^' needs a reference, not {}", pointer->type->name));
+            error(expression.range,
+                  fmt::format("'^' needs a reference, not {}", pointer->type->name));
             return std::nullopt;
         }
         return Place{.kind = Place::Kind::Indirect,
@@ -172,9 +178,18 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
             return std::nullopt;
         }
         if (value->type != &dint) {
-            const Operand converted = temp(dint);
-            builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32"),
-                          converted, value->operand);
+            const vm::Opcode convert = program_.opcodes().get(
+                "Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32");
+            const ValueCache::Key key{ValueCache::Kind::Convert, value->operand.raw,
+                                      static_cast<std::uint32_t>(convert), 0};
+            Operand converted{};
+            if (const auto hit = cache_.find(key)) {
+                converted = *hit;
+            } else {
+                converted = temp(dint);
+                emit(convert, converted, value->operand);
+                cache_.add(key, converted, 4, {{value->operand, value->type->size}});
+            }
             value = Value{converted, &dint};
         }
         if (node.indices.size() == 1) {
@@ -183,18 +198,18 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         }
         const auto& dimension = type.dimensions[d];
         const Operand term = temp(dint);
-        builder_.emit(Opcode::AddI32, term, value->operand,
-                      Operand::imm(static_cast<std::uint32_t>(-dimension.lower)));
+        emit(Opcode::AddI32, term, value->operand,
+             Operand::imm(static_cast<std::uint32_t>(-dimension.lower)));
         if (d == 0) {
             linear = term;
         } else {
-            builder_.emit(Opcode::Mul32, linear, linear,
-                          program_.constant({static_cast<std::uint8_t>(dimension.count),
-                                             static_cast<std::uint8_t>(dimension.count >> 8),
-                                             static_cast<std::uint8_t>(dimension.count >> 16),
-                                             static_cast<std::uint8_t>(dimension.count >> 24)},
-                                            4));
-            builder_.emit(Opcode::Add32, linear, linear, term);
+            emit(Opcode::Mul32, linear, linear,
+                 program_.constant({static_cast<std::uint8_t>(dimension.count),
+                                    static_cast<std::uint8_t>(dimension.count >> 8),
+                                    static_cast<std::uint8_t>(dimension.count >> 16),
+                                    static_cast<std::uint8_t>(dimension.count >> 24)},
+                                   4));
+            emit(Opcode::Add32, linear, linear, term);
         }
     }
     std::uint32_t count = 1;
@@ -202,9 +217,8 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         count *= dimension.count;
     }
     const bool one = type.dimensions.size() == 1;
-    const std::uint16_t descriptor =
-        builder_.array(one ? static_cast<std::int32_t>(type.dimensions[0].lower) : 0, count,
-                       element.size);
+    const std::uint16_t descriptor = array_descriptor(
+        one ? static_cast<std::int32_t>(type.dimensions[0].lower) : 0, count, element.size);
     if (array->kind == Place::Kind::Direct && sema::is_scalar(element)) {
         return Place{.kind = Place::Kind::Element,
                      .type = &element,
@@ -213,16 +227,56 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                      .array = descriptor,
                      .writable = array->writable};
     }
+    // The address of an element of a directly named array is worth remembering.
+    const bool cacheable = array->kind == Place::Kind::Direct;
+    const ValueCache::Key key{ValueCache::Kind::Address, array->operand.raw, linear.raw,
+                              descriptor};
+    if (const auto hit = cacheable ? cache_.find(key) : std::nullopt) {
+        return Place{.kind = Place::Kind::Indirect,
+                     .type = &element,
+                     .operand = *hit,
+                     .writable = array->writable};
+    }
     const Operand pointer = temp(types_.reference(&element));
     if (array->kind == Place::Kind::Direct) {
-        builder_.emit(Opcode::IdxA, pointer, array->operand, linear, descriptor);
+        emit(Opcode::IdxA, pointer, array->operand, linear, descriptor);
+        cache_.add(key, pointer, 8, {{linear, 4}});
     } else {
-        builder_.emit(Opcode::IdxAP, pointer, address_of(*array), linear, descriptor);
+        emit(Opcode::IdxAP, pointer, address_of(*array), linear, descriptor);
     }
     return Place{.kind = Place::Kind::Indirect,
                  .type = &element,
                  .operand = pointer,
                  .writable = array->writable};
+}
+
+std::optional<Value> PouGenerator::bit_word(const ast::BitAccessExpression& node,
+                                            const SourceRange& range) {
+    const auto word = eval(*node.object, nullptr);
+    if (!word) {
+        return std::nullopt;
+    }
+    if (!sema::is_bit_string(*word->type) && !sema::is_integer(*word->type)) {
+        error(range, fmt::format("bit access needs a bit string, not {}", word->type->name));
+        return std::nullopt;
+    }
+    if (node.bit >= word->type->size * 8) {
+        error(range, fmt::format("{} has no bit {}", word->type->name, node.bit));
+        return std::nullopt;
+    }
+    return word;
+}
+
+Operand PouGenerator::bit_mask(const sema::Type& type, std::uint32_t bit, bool inverted) {
+    std::uint64_t mask = std::uint64_t{1} << bit;
+    if (inverted) {
+        mask = ~mask;
+    }
+    std::vector<std::uint8_t> bytes(type.size);
+    for (std::uint32_t i = 0; i < type.size; ++i) {
+        bytes[i] = static_cast<std::uint8_t>(mask >> (8 * i));
+    }
+    return program_.constant(bytes, type.align);
 }
 
 // --- Values ----------------------------------------------------------------------------------
@@ -256,6 +310,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         }
     }
     if (std::holds_alternative<ast::NameExpression>(expression.node) ||
+        std::holds_alternative<ast::DirectAddressExpression>(expression.node) ||
         std::holds_alternative<ast::MemberExpression>(expression.node) ||
         std::holds_alternative<ast::IndexExpression>(expression.node) ||
         std::holds_alternative<ast::DereferenceExpression>(expression.node)) {
@@ -290,7 +345,23 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         }
         return value;
     }
-    error(expression.range, "direct addresses and bit access in expressions are not supported yet");
+    if (const auto* node = std::get_if<ast::BitAccessExpression>(&expression.node)) {
+        const auto word = bit_word(*node, expression.range);
+        if (!word) {
+            return std::nullopt;
+        }
+        // 6.5.1.2 partial access: the bit is `(word AND 2#1 << n) <> 0`.
+        const sema::Type& type = *word->type;
+        const Operand masked = temp(type);
+        emit(op_width("And", type), masked, word->operand, bit_mask(type, node->bit, false));
+        const sema::Type& boolean = types_.elementary(E::Bool);
+        const Operand result = result_operand(boolean, dest);
+        emit(
+            program_.opcodes().get("Cvt", std::string(type_suffix(sema::scalar_of(type))) + "Bool"),
+            result, masked);
+        return Value{result, &boolean};
+    }
+    error(expression.range, "this expression is not supported");
     return std::nullopt;
 }
 
@@ -311,9 +382,9 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
             type = &types_.elementary(fits ? E::Dint : E::Lint);
         }
     } else if (const auto* real = std::get_if<ast::RealLiteral>(&node.value)) {
-        type = real->type ? &types_.elementary(*real->type)
+        type = real->type                                ? &types_.elementary(*real->type)
                : hint != nullptr && sema::is_real(*hint) ? hint
-                                                          : &types_.elementary(E::Lreal);
+                                                         : &types_.elementary(E::Lreal);
     } else if (std::holds_alternative<ast::BoolLiteral>(node.value)) {
         type = &types_.elementary(E::Bool);
     } else if (const auto* duration = std::get_if<ast::DurationLiteral>(&node.value)) {
@@ -339,7 +410,7 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
     } else {
         type = hint != nullptr && hint->kind == sema::TypeKind::Reference ? hint : &types_.null();
     }
-    auto bytes = program_.constant_value(expression, *type, model_);
+    auto bytes = program_.constant_value(expression, *type);
     if (!bytes) {
         error(expression.range, fmt::format("this literal is not a valid {}", type->name));
         return std::nullopt;
@@ -358,9 +429,9 @@ std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type&
         return Value{value.operand, &want};
     }
     const Operand result = result_operand(want, dest);
-    builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(from)) +
-                                                    std::string(type_suffix(to))),
-                  result, value.operand);
+    emit(program_.opcodes().get("Cvt",
+                                std::string(type_suffix(from)) + std::string(type_suffix(to))),
+         result, value.operand);
     return Value{result, &want};
 }
 
@@ -371,12 +442,12 @@ std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
         return std::nullopt;
     }
     if (!sema::converts_implicitly(*value->type, want)) {
-        error(expression.range, fmt::format("a {} value cannot be used as {}{}", value->type->name,
-                                            want.name,
-                                            sema::is_scalar(*value->type) && sema::is_scalar(want)
-                                                ? fmt::format(" (convert it with {}_TO_{})",
-                                                              value->type->name, want.name)
-                                                : ""));
+        error(expression.range,
+              fmt::format(
+                  "a {} value cannot be used as {}{}", value->type->name, want.name,
+                  sema::is_scalar(*value->type) && sema::is_scalar(want)
+                      ? fmt::format(" (convert it with {}_TO_{})", value->type->name, want.name)
+                      : ""));
         return std::nullopt;
     }
     return convert(*value, want, dest);
@@ -454,14 +525,14 @@ std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const
             return std::nullopt;
         }
         const Operand result = result_operand(type, dest);
-        builder_.emit(op_width("Neg", type), result, value->operand);
+        emit(op_width("Neg", type), result, value->operand);
         return Value{result, &type};
     }
     const Operand result = result_operand(type, dest);
     if (sema::is_bool(type)) {
-        builder_.emit(Opcode::NotB, result, value->operand);
+        emit(Opcode::NotB, result, value->operand);
     } else if (sema::is_bit_string(type) || sema::is_integer(type)) {
-        builder_.emit(op_width("Not", type), result, value->operand);
+        emit(op_width("Not", type), result, value->operand);
     } else {
         error(range, fmt::format("NOT needs a BOOL or bit string, not {}", type.name));
         return std::nullopt;
@@ -475,14 +546,16 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
     const sema::Type& type = *left.type;
     if (type.kind == sema::TypeKind::String) {
         static constexpr std::pair<ast::BinaryOperator, const char*> kNames[] = {
-            {ast::BinaryOperator::Less, "LT_STRING"},   {ast::BinaryOperator::Greater, "GT_STRING"},
+            {ast::BinaryOperator::Less, "LT_STRING"},
+            {ast::BinaryOperator::Greater, "GT_STRING"},
             {ast::BinaryOperator::LessEqual, "LE_STRING"},
             {ast::BinaryOperator::GreaterEqual, "GE_STRING"},
-            {ast::BinaryOperator::Equal, "EQ_STRING"},  {ast::BinaryOperator::NotEqual, "NE_STRING"}};
+            {ast::BinaryOperator::Equal, "EQ_STRING"},
+            {ast::BinaryOperator::NotEqual, "NE_STRING"}};
         for (const auto& [candidate, name] : kNames) {
             if (candidate == op) {
-                const vm::NativeSignature signature{true, vm::Scalar::Bool,
-                                                    {vm::Scalar::Ptr, vm::Scalar::Ptr}};
+                const vm::NativeSignature signature{
+                    true, vm::Scalar::Bool, {vm::Scalar::Ptr, vm::Scalar::Ptr}};
                 call_native(name, signature, {left, right});
                 return native_result(signature, boolean, dest);
             }
@@ -501,17 +574,17 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
     }
     switch (op) {
     case ast::BinaryOperator::Equal:
-        builder_.emit(op_width("Eq", type), result, a.operand, b.operand);
+        emit(op_width("Eq", type), result, a.operand, b.operand);
         break;
     case ast::BinaryOperator::NotEqual:
-        builder_.emit(op_width("Ne", type), result, a.operand, b.operand);
+        emit(op_width("Ne", type), result, a.operand, b.operand);
         break;
     case ast::BinaryOperator::Less:
     case ast::BinaryOperator::Greater:
-        builder_.emit(program_.opcodes().get("Lt", suffix), result, a.operand, b.operand);
+        emit(program_.opcodes().get("Lt", suffix), result, a.operand, b.operand);
         break;
     default:
-        builder_.emit(program_.opcodes().get("Le", suffix), result, a.operand, b.operand);
+        emit(program_.opcodes().get("Le", suffix), result, a.operand, b.operand);
         break;
     }
     return Value{result, &boolean};
@@ -535,9 +608,9 @@ Value PouGenerator::widened(const Value& value) {
     return wide;
 }
 
-std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
-                                          const sema::Type* hint, const Destination* dest,
-                                          const SourceRange& range, bool top) {
+std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, const sema::Type* hint,
+                                          const Destination* dest, const SourceRange& range,
+                                          bool top) {
     using Op = ast::BinaryOperator;
     const bool comparison = node.op == Op::Less || node.op == Op::Greater ||
                             node.op == Op::LessEqual || node.op == Op::GreaterEqual ||
@@ -552,16 +625,29 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
         if (!exponent) {
             return std::nullopt;
         }
-        const vm::NativeSignature signature{true, vm::Scalar::F64, {vm::Scalar::F64, vm::Scalar::F64}};
+        const vm::NativeSignature signature{
+            true, vm::Scalar::F64, {vm::Scalar::F64, vm::Scalar::F64}};
         call_native("EXPT_LREAL", signature, {*base, *exponent});
         return native_result(signature, lreal, dest);
     }
-    const auto immediate = (node.op == Op::Add || node.op == Op::Subtract) &&
-                                   !is_untyped_literal(*node.left)
-                               ? small_literal(*node.right)
-                               : std::nullopt;
+    const auto immediate =
+        (node.op == Op::Add || node.op == Op::Subtract) && !is_untyped_literal(*node.left)
+            ? small_literal(*node.right)
+            : std::nullopt;
     std::optional<std::pair<Value, Value>> pair;
-    if (immediate) {
+    if ((node.op == Op::Multiply || node.op == Op::Divide) && !is_untyped_literal(*node.left)) {
+        // TIME * ANY_NUM and TIME / ANY_NUM (table 30) are natives; the rest is ordinary.
+        const auto left = operand_value(*node.left, hint);
+        if (!left) {
+            return std::nullopt;
+        }
+        if (left->type->elementary == E::Time || left->type->elementary == E::Ltime) {
+            return scale_time(node.op == Op::Multiply, *left, *node.right, dest);
+        }
+        const auto right =
+            operand_value(*node.right, is_untyped_literal(*node.right) ? left->type : hint);
+        pair = right ? unify(*left, *right, range) : std::nullopt;
+    } else if (immediate) {
         auto left = operand_value(*node.left, hint);
         if (!left) {
             return std::nullopt;
@@ -572,10 +658,23 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
             if (!top && l.iec == nullptr && is_small_integer(*l.type)) {
                 l = widened(l);
             }
-            const Operand result = result_operand(*l.type, l.iec != nullptr ? nullptr : dest);
+            if (*immediate == 0) {
+                return l; // x + 0
+            }
             const std::int64_t delta = node.op == Op::Add ? *immediate : -std::int64_t{*immediate};
-            builder_.emit(op_width("AddI", *l.type), result, l.operand,
-                          Operand::imm(static_cast<std::uint32_t>(delta)));
+            const vm::Opcode add = op_width("AddI", *l.type);
+            const ValueCache::Key key{ValueCache::Kind::AddImmediate, l.operand.raw,
+                                      static_cast<std::uint32_t>(delta),
+                                      static_cast<std::uint32_t>(add)};
+            const bool into_dest = dest != nullptr && dest->type == l.type && l.iec == nullptr;
+            if (const auto hit = into_dest ? std::nullopt : cache_.find(key)) {
+                return Value{*hit, l.type, l.iec}; // `a[j + 1]` after `a[j + 1]`
+            }
+            const Operand result = result_operand(*l.type, into_dest ? dest : nullptr);
+            emit(add, result, l.operand, Operand::imm(static_cast<std::uint32_t>(delta)));
+            if (!into_dest) {
+                cache_.add(key, result, l.type->size, {{l.operand, l.type->size}});
+            }
             return Value{result, l.type, l.iec};
         }
         const auto right = eval(*node.right, left->type);
@@ -598,13 +697,12 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
     if (is_untyped_literal(*node.right)) {
         right_iec = left_iec;
     }
-    if ((arithmetic || comparison) && is_small_integer(*left_iec) &&
-        is_small_integer(*right_iec) &&
+    if ((arithmetic || comparison) && is_small_integer(*left_iec) && is_small_integer(*right_iec) &&
         (left.iec != nullptr || right.iec != nullptr || (!top && arithmetic))) {
         const sema::Type* iec =
             sema::converts_implicitly(*left_iec, *right_iec) ? right_iec : left_iec;
-        auto result = apply(node.op, widened(left), widened(right), comparison ? dest : nullptr,
-                            range);
+        auto result =
+            apply(node.op, widened(left), widened(right), comparison ? dest : nullptr, range);
         if (result && arithmetic) {
             result->iec = iec;
         }
@@ -613,13 +711,36 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node,
     return apply(node.op, left, right, dest, range);
 }
 
+std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
+                                              const ast::Expression& factor,
+                                              const Destination* dest) {
+    const sema::Type& lint = types_.elementary(E::Lint);
+    const auto value = eval(factor, &lint);
+    if (!value) {
+        return std::nullopt;
+    }
+    const bool real = sema::is_real(*value->type);
+    if (!real && !sema::is_integer(*value->type)) {
+        error(factor.range, fmt::format("a TIME is multiplied or divided by a number, not {}",
+                                        value->type->name));
+        return std::nullopt;
+    }
+    const sema::Type& wide = real ? types_.elementary(E::Lreal) : lint;
+    const auto converted = explicit_convert(*value, wide, nullptr, factor.range);
+    const vm::NativeSignature signature{
+        true, vm::Scalar::I64, {vm::Scalar::I64, real ? vm::Scalar::F64 : vm::Scalar::I64}};
+    call_native(std::string(multiply ? "MUL_TIME" : "DIV_TIME") + (real ? "_LREAL" : ""), signature,
+                {time, *converted});
+    return native_result(signature, *time.type, dest);
+}
+
 std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,
                                          const Value& right, const Destination* dest,
                                          const SourceRange& range) {
     using Op = ast::BinaryOperator;
     const sema::Type& type = *left.type;
-    if (oper == Op::Less || oper == Op::Greater || oper == Op::LessEqual || oper == Op::GreaterEqual ||
-        oper == Op::Equal || oper == Op::NotEqual) {
+    if (oper == Op::Less || oper == Op::Greater || oper == Op::LessEqual ||
+        oper == Op::GreaterEqual || oper == Op::Equal || oper == Op::NotEqual) {
         if (auto result = compare(oper, left, right, dest)) {
             return result;
         }
@@ -628,25 +749,37 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
     }
     if (oper == Op::And || oper == Op::Or || oper == Op::Xor) {
         if (!sema::is_bool(type) && !sema::is_bit_string(type)) {
-            error(range, fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", type.name));
+            error(range,
+                  fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", type.name));
             return std::nullopt;
         }
         const Operand result = result_operand(type, dest);
         const char* family = oper == Op::And ? "And" : oper == Op::Or ? "Or" : "Xor";
-        builder_.emit(op_width(family, type), result, left.operand, right.operand);
+        emit(op_width(family, type), result, left.operand, right.operand);
         return Value{result, &type};
     }
     const sema::Type* result_type = &type;
+    const bool time_of_day = type.elementary == E::TimeOfDay || type.elementary == E::Ltod;
+    if (time_of_day && (oper == Op::Add || oper == Op::Subtract) &&
+        (right.type->elementary == E::Time || right.type->elementary == E::Ltime)) {
+        // Wraps around midnight: a native (vm/README).
+        const vm::NativeSignature signature{
+            true, vm::Scalar::I64, {vm::Scalar::I64, vm::Scalar::I64}};
+        call_native(oper == Op::Add ? "ADD_TOD_TIME" : "SUB_TOD_TIME", signature, {left, right});
+        return native_result(signature, type, dest);
+    }
     if (sema::is_time_like(type) || sema::is_time_like(*right.type)) {
         // 6.6.2.5.5 table 30: ADD/SUB of durations and points in time, all in nanoseconds.
-        const bool durations = (type.elementary == E::Time || type.elementary == E::Ltime) &&
-                               (right.type->elementary == E::Time ||
-                                right.type->elementary == E::Ltime);
+        const bool durations =
+            (type.elementary == E::Time || type.elementary == E::Ltime) &&
+            (right.type->elementary == E::Time || right.type->elementary == E::Ltime);
         const bool point_plus_duration =
             sema::is_time_like(*right.type) &&
             (right.type->elementary == E::Time || right.type->elementary == E::Ltime);
-        if (oper == Op::Subtract && !point_plus_duration && type.elementary == right.type->elementary) {
-            result_type = &types_.elementary(type.elementary == E::Ltime || type.elementary == E::Ldt ? E::Ltime : E::Time);
+        if (oper == Op::Subtract && !point_plus_duration &&
+            type.elementary == right.type->elementary) {
+            result_type = &types_.elementary(
+                type.elementary == E::Ltime || type.elementary == E::Ldt ? E::Ltime : E::Time);
         } else if (!((oper == Op::Add || oper == Op::Subtract) &&
                      (durations || point_plus_duration) && type.elementary != E::TimeOfDay &&
                      type.elementary != E::Ltod && type.elementary != E::Date)) {
@@ -665,15 +798,21 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
     }
     const Operand result = result_operand(*result_type, dest);
     switch (oper) {
-    case Op::Add: builder_.emit(op_width("Add", type), result, left.operand, right.operand); break;
+    case Op::Add:
+        emit(op_width("Add", type), result, left.operand, right.operand);
+        break;
     case Op::Subtract:
-        builder_.emit(op_width("Sub", type), result, left.operand, right.operand);
+        emit(op_width("Sub", type), result, left.operand, right.operand);
         break;
     case Op::Multiply:
-        builder_.emit(op_width("Mul", type), result, left.operand, right.operand);
+        emit(op_width("Mul", type), result, left.operand, right.operand);
         break;
-    case Op::Divide: builder_.emit(op("Div", type), result, left.operand, right.operand); break;
-    default: builder_.emit(op("Mod", type), result, left.operand, right.operand); break;
+    case Op::Divide:
+        emit(op("Div", type), result, left.operand, right.operand);
+        break;
+    default:
+        emit(op("Mod", type), result, left.operand, right.operand);
+        break;
     }
     return Value{result, result_type};
 }

@@ -22,8 +22,8 @@ std::uint32_t PouGenerator::generate() {
     initialise_frame();
     statements(pou_.body);
     report_unused();
-    builder_.bind(end_);
-    builder_.emit(Opcode::Ret);
+    bind(end_);
+    emit(Opcode::Ret);
     const std::uint32_t frame = sema::align_up(frame_max_, 8);
     const std::uint32_t out = sema::align_up(out_max_, 8);
     builder_.end_body(frame, out);
@@ -86,8 +86,8 @@ void PouGenerator::declare_locals() {
     const bool function = pou_.kind == ast::PouKind::Function;
     auto declare = [&](const sema::Field& field, Operand operand) {
         // Inputs are read-only inside the POU (6.5.2.2), as are constants.
-        const bool writable = field.section != ast::VarSectionKind::Input &&
-                              !is_constant(pou_, field.declaration);
+        const bool writable =
+            field.section != ast::VarSectionKind::Input && !is_constant(pou_, field.declaration);
         Place place = Place::direct(*field.type, operand, writable);
         if (field.section == ast::VarSectionKind::InOut) {
             place = {.kind = Place::Kind::Indirect,
@@ -118,14 +118,14 @@ void PouGenerator::initialise_frame() {
     // each call. Runs of consecutive non-parameter fields are copied from one template each.
     const sema::Type& frame = *types_.frame(pou_);
     std::vector<std::uint8_t> bytes(frame.size);
-    program_.initial_value(frame, nullptr, model_, bytes);
+    program_.initial_value(frame, nullptr, bytes);
     std::uint32_t begin = 0;
     std::uint32_t end = 0;
     auto flush = [&] {
         if (end > begin) {
             const std::vector<std::uint8_t> part(bytes.begin() + begin, bytes.begin() + end);
-            builder_.emit(Opcode::MovN, Operand::local(begin), program_.constant(part, 8),
-                          Operand::imm(end - begin));
+            emit(Opcode::MovN, Operand::local(begin), program_.constant(part, 8),
+                 Operand::imm(end - begin));
         }
     };
     for (const sema::Field& field : frame.fields) {
@@ -151,9 +151,34 @@ Operand PouGenerator::temp(const sema::Type& type) {
     frame_max_ = std::max(frame_max_, frame_top_);
     if (type.kind == sema::TypeKind::String) {
         // The header: capacity, length 0.
-        builder_.emit(Opcode::Ldi32, operand, Operand::imm(type.capacity));
+        emit(Opcode::Ldi32, operand, Operand::imm(type.capacity));
     }
     return operand;
+}
+
+void PouGenerator::release(std::uint32_t mark) {
+    frame_top_ = mark;
+    cache_.release(mark);
+}
+
+void PouGenerator::emit(Opcode op, Operand a, Operand b, Operand c, std::uint16_t aux) {
+    builder_.emit(op, a, b, c, aux);
+    cache_.written(op, a, b, c, aux, [this](std::uint16_t descriptor) {
+        const auto it = array_bytes_.find(descriptor);
+        return it == array_bytes_.end() ? vm::kOffsetMask : it->second;
+    });
+}
+
+void PouGenerator::bind(vm::Label label) {
+    builder_.bind(label);
+    cache_.clear();
+}
+
+std::uint16_t PouGenerator::array_descriptor(std::int32_t lower, std::uint32_t count,
+                                             std::uint32_t element_size) {
+    const std::uint16_t descriptor = builder_.array(lower, count, element_size);
+    array_bytes_[descriptor] = count * element_size;
+    return descriptor;
 }
 
 bool PouGenerator::is_temporary(Operand operand) const {
@@ -167,9 +192,11 @@ std::uint32_t PouGenerator::out_slot(std::uint32_t end) {
 
 std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const SourceRange& range) {
     used_.insert(sema::fold_case(symbol.name));
+    // A PROGRAM's own VAR_GLOBAL lives in its instance; other globals in the configuration.
+    const auto local = locals_.find(sema::fold_case(symbol.name));
     if (symbol.kind == sema::SymbolKind::Variable &&
         (symbol.section == ast::VarSectionKind::External ||
-         symbol.section == ast::VarSectionKind::Global)) {
+         (symbol.section == ast::VarSectionKind::Global && local == locals_.end()))) {
         auto global = program_.global(symbol.name);
         if (!global) {
             error(range, fmt::format("no global variable '{}' in the configuration", symbol.name));
@@ -183,8 +210,8 @@ std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const So
     }
     if (symbol.kind == sema::SymbolKind::Variable ||
         (symbol.kind == sema::SymbolKind::Pou && symbol.pou == &pou_)) {
-        if (const auto it = locals_.find(sema::fold_case(symbol.name)); it != locals_.end()) {
-            return it->second.place;
+        if (local != locals_.end()) {
+            return local->second.place;
         }
     }
     error(range, fmt::format("'{}' is not a variable", symbol.name));
@@ -203,8 +230,9 @@ Opcode PouGenerator::op_width(std::string_view family, const sema::Type& type) c
 
 void PouGenerator::load_immediate(Operand dst, const sema::Type& type, std::int64_t value) {
     const auto raw = static_cast<std::uint64_t>(value);
-    builder_.emit(program_.opcodes().get("Ldi", width_suffix(sema::scalar_of(type))), dst, Operand::imm(static_cast<std::uint32_t>(raw)),
-                  Operand::imm(static_cast<std::uint32_t>(raw >> 32)));
+    emit(program_.opcodes().get("Ldi", width_suffix(sema::scalar_of(type))), dst,
+         Operand::imm(static_cast<std::uint32_t>(raw)),
+         Operand::imm(static_cast<std::uint32_t>(raw >> 32)));
 }
 
 void PouGenerator::move(Operand dst, const sema::Type& dst_type, const Value& src) {
@@ -212,8 +240,8 @@ void PouGenerator::move(Operand dst, const sema::Type& dst_type, const Value& sr
         return;
     }
     if (sema::is_scalar(dst_type)) {
-        builder_.emit(program_.opcodes().get("Mov", width_suffix(sema::scalar_of(dst_type))), dst,
-                      src.operand);
+        emit(program_.opcodes().get("Mov", width_suffix(sema::scalar_of(dst_type))), dst,
+             src.operand);
         return;
     }
     if (dst_type.kind == sema::TypeKind::String && src.type != &dst_type) {
@@ -222,7 +250,7 @@ void PouGenerator::move(Operand dst, const sema::Type& dst_type, const Value& sr
                     {Value{dst, &dst_type}, src});
         return;
     }
-    builder_.emit(Opcode::MovN, dst, src.operand, Operand::imm(dst_type.size));
+    emit(Opcode::MovN, dst, src.operand, Operand::imm(dst_type.size));
 }
 
 Value PouGenerator::load(const Place& place, const Destination* dest) {
@@ -230,15 +258,29 @@ Value PouGenerator::load(const Place& place, const Destination* dest) {
     if (place.kind == Place::Kind::Direct) {
         return {place.operand, &type};
     }
-    const Operand result = result_operand(type, dest);
     if (place.kind == Place::Kind::Element) {
-        builder_.emit(program_.opcodes().get("Ldx", width_suffix(sema::scalar_of(type))), result,
-                      place.operand, place.index, place.array);
-    } else if (sema::is_scalar(type)) {
-        builder_.emit(program_.opcodes().get("Ldp", width_suffix(sema::scalar_of(type))), result,
-                      place.operand, Operand::imm(place.offset));
+        // An element loaded before, while neither the array nor the index changed.
+        const ValueCache::Key key{ValueCache::Kind::Load, place.operand.raw, place.index.raw,
+                                  place.array};
+        const bool into_dest = dest != nullptr && dest->type == &type;
+        if (const auto hit = into_dest ? std::nullopt : cache_.find(key)) {
+            return {*hit, &type};
+        }
+        const Operand result = result_operand(type, dest);
+        emit(program_.opcodes().get("Ldx", width_suffix(sema::scalar_of(type))), result,
+             place.operand, place.index, place.array);
+        if (!into_dest) {
+            cache_.add(key, result, type.size,
+                       {{place.index, 4}, {place.operand, array_bytes_.at(place.array)}});
+        }
+        return {result, &type};
+    }
+    const Operand result = result_operand(type, dest);
+    if (sema::is_scalar(type)) {
+        emit(program_.opcodes().get("Ldp", width_suffix(sema::scalar_of(type))), result,
+             place.operand, Operand::imm(place.offset));
     } else {
-        builder_.emit(Opcode::LdpN, result, address_of(place), Operand::imm(type.size));
+        emit(Opcode::LdpN, result, address_of(place), Operand::imm(type.size));
     }
     return {result, &type};
 }
@@ -248,17 +290,17 @@ void PouGenerator::store(const Place& place, const Value& value) {
     if (place.kind == Place::Kind::Direct) {
         move(place.operand, type, value);
     } else if (place.kind == Place::Kind::Element) {
-        builder_.emit(program_.opcodes().get("Stx", width_suffix(sema::scalar_of(type))),
-                      place.operand, place.index, value.operand, place.array);
+        emit(program_.opcodes().get("Stx", width_suffix(sema::scalar_of(type))), place.operand,
+             place.index, value.operand, place.array);
     } else if (sema::is_scalar(type)) {
-        builder_.emit(program_.opcodes().get("Stp", width_suffix(sema::scalar_of(type))),
-                      place.operand, value.operand, Operand::imm(place.offset));
+        emit(program_.opcodes().get("Stp", width_suffix(sema::scalar_of(type))), place.operand,
+             value.operand, Operand::imm(place.offset));
     } else if (type.kind == sema::TypeKind::String && value.type != &type) {
         call_native(type.wide ? "ASSIGN_WSTRING" : "ASSIGN_STRING",
                     {false, vm::Scalar::Bool, {vm::Scalar::Ptr, vm::Scalar::Ptr}},
                     {Value{address_of(place), &types_.reference(&type)}, value});
     } else {
-        builder_.emit(Opcode::StpN, address_of(place), value.operand, Operand::imm(type.size));
+        emit(Opcode::StpN, address_of(place), value.operand, Operand::imm(type.size));
     }
 }
 
@@ -289,13 +331,13 @@ Operand PouGenerator::address_of(const Place& place) {
     const Operand result = temp(pointer);
     switch (place.kind) {
     case Place::Kind::Direct:
-        builder_.emit(Opcode::Addr, result, place.operand, Operand::imm(place.type->size));
+        emit(Opcode::Addr, result, place.operand, Operand::imm(place.type->size));
         break;
     case Place::Kind::Element:
-        builder_.emit(Opcode::IdxA, result, place.operand, place.index, place.array);
+        emit(Opcode::IdxA, result, place.operand, place.index, place.array);
         break;
     case Place::Kind::Indirect:
-        builder_.emit(Opcode::AddI64, result, place.operand, Operand::imm(place.offset));
+        emit(Opcode::AddI64, result, place.operand, Operand::imm(place.offset));
         break;
     }
     return result;

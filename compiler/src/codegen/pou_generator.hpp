@@ -1,6 +1,7 @@
 #pragma once
 
 #include "program_generator.hpp"
+#include "value_cache.hpp"
 
 #include <optional>
 #include <string>
@@ -53,6 +54,16 @@ private:
     std::uint32_t out_slot(std::uint32_t end);
     /// Whether `operand` is a temporary of the current statement (not a variable).
     bool is_temporary(vm::Operand operand) const;
+    /// Ends the temporaries allocated since `mark` and forgets what was computed in them.
+    void release(std::uint32_t mark);
+    /// Emits an instruction and forgets the cached values it changes.
+    void emit(vm::Opcode op, vm::Operand a = {}, vm::Operand b = {}, vm::Operand c = {},
+              std::uint16_t aux = 0);
+    /// Binds a label: control flow joins there, so nothing cached holds any more.
+    void bind(vm::Label label);
+    /// An array descriptor, remembering the bytes it covers.
+    std::uint16_t array_descriptor(std::int32_t lower, std::uint32_t count,
+                                   std::uint32_t element_size);
     std::optional<Place> variable(const sema::Symbol& symbol, const SourceRange& range);
     void error(const SourceRange& range, std::string message);
     void warning(const SourceRange& range, std::string message);
@@ -79,6 +90,10 @@ private:
                                   const Destination* dest = nullptr);
     std::optional<Value> convert(const Value& value, const sema::Type& want,
                                  const Destination* dest);
+    /// The word a bit access `w.3` reads, checked to have that bit.
+    std::optional<Value> bit_word(const ast::BitAccessExpression& node, const SourceRange& range);
+    /// The constant `1 << bit` (or its complement) of `type`.
+    vm::Operand bit_mask(const sema::Type& type, std::uint32_t bit, bool inverted);
     std::optional<Value> literal(const ast::Expression& expression,
                                  const ast::LiteralExpression& node, const sema::Type* hint);
     std::optional<Value> unary(const ast::UnaryExpression& node, const sema::Type* hint,
@@ -102,6 +117,9 @@ private:
                                                     const SourceRange& range);
     /// The immediate of an untyped integer literal that fits 32 bits signed.
     std::optional<std::int32_t> small_literal(const ast::Expression& expression);
+    /// TIME * number, TIME / number.
+    std::optional<Value> scale_time(bool multiply, const Value& time, const ast::Expression& factor,
+                                    const Destination* dest);
     /// A binary operator on operands already of their common type.
     std::optional<Value> apply(ast::BinaryOperator op, const Value& left, const Value& right,
                                const Destination* dest, const SourceRange& range);
@@ -120,6 +138,8 @@ private:
     void statements(const ast::StatementList& list);
     void statement(const ast::Statement& statement);
     void assignment(const ast::AssignmentStatement& node, const SourceRange& range);
+    void bit_assignment(const ast::BitAccessExpression& target, const ast::Expression& value,
+                        const SourceRange& range);
     void if_statement(const ast::IfStatement& node);
     void case_statement(const ast::CaseStatement& node);
     void for_statement(const ast::ForStatement& node, const SourceRange& range);
@@ -129,22 +149,22 @@ private:
     // --- pou_calls.cpp -----------------------------------------------------------------------
     std::optional<Value> call(const ast::CallExpression& node, const sema::Type* hint,
                               const Destination* dest, const SourceRange& range);
+    /// The call without EN/ENO.
+    std::optional<Value> call_enabled(const ast::CallExpression& node, const sema::Type* hint,
+                                      const Destination* dest, const SourceRange& range);
     std::optional<Value> call_function(const ast::Pou& function, const ast::CallExpression& node,
                                        const Destination* dest, const SourceRange& range);
     std::optional<Value> call_host(const ast::Pou& function, const sema::Type& frame,
-                                   const ast::CallExpression& node, const Destination* dest,
-                                   const SourceRange& range);
-    void call_instance(const Place& instance, const ast::CallExpression& node,
-                       const SourceRange& range);
+                                   const ast::CallExpression& node, const Destination* dest);
+    void call_instance(const Place& instance, const ast::CallExpression& node);
     /// Calls native `name`; `arguments` already evaluated, strings passed by address.
     void call_native(const std::string& name, const vm::NativeSignature& signature,
                      const std::vector<Value>& arguments);
-    std::optional<Value> native_result(const vm::NativeSignature& signature,
-                                       const sema::Type& type, const Destination* dest);
+    std::optional<Value> native_result(const vm::NativeSignature& signature, const sema::Type& type,
+                                       const Destination* dest);
 
     // --- standard_functions.cpp --------------------------------------------------------------
-    std::optional<Value> standard_function(const std::string& name,
-                                           const ast::CallExpression& node,
+    std::optional<Value> standard_function(const std::string& name, const ast::CallExpression& node,
                                            const sema::Type* hint, const Destination* dest,
                                            const SourceRange& range);
     std::optional<Value> conversion(const std::string& name, const ast::CallExpression& node,
@@ -154,14 +174,17 @@ private:
     std::optional<Value> selection(const std::string& name, const ast::CallExpression& node,
                                    const sema::Type* hint, const Destination* dest,
                                    const SourceRange& range);
+    /// ADR(x): the address of x as POINTER TO its type; SIZEOF(x or T): its size in bytes.
+    std::optional<Value> address_or_size(const std::string& name, const ast::CallExpression& node,
+                                         const SourceRange& range);
     /// The value of an integer expression as DINT (positions and lengths of the natives).
     std::optional<Value> as_dint(const ast::Expression& expression);
     /// A conversion `X_TO_Y` between any two elementary types.
     std::optional<Value> explicit_convert(const Value& value, const sema::Type& want,
                                           const Destination* dest, const SourceRange& range);
-    std::optional<Value> numeric_function(const std::string& name,
-                                          const ast::CallExpression& node, const sema::Type* hint,
-                                          const Destination* dest, const SourceRange& range);
+    std::optional<Value> numeric_function(const std::string& name, const ast::CallExpression& node,
+                                          const sema::Type* hint, const Destination* dest,
+                                          const SourceRange& range);
 
     ProgramGenerator& program_;
     const sema::SemanticModel& model_;
@@ -178,6 +201,8 @@ private:
     std::vector<std::uint32_t> for_variables_; // operands of the enclosing FOR loops
     bool result_assigned_ = false;
     std::unordered_set<std::string> used_; // folded names of the variables referred to
+    ValueCache cache_;
+    std::unordered_map<std::uint16_t, std::uint32_t> array_bytes_; // per descriptor
     vm::Label end_;
 };
 

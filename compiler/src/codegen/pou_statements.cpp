@@ -64,10 +64,40 @@ void PouGenerator::statement(const ast::Statement& statement) {
             }
         },
         statement.node);
-    frame_top_ = mark;
+    release(mark);
+}
+
+void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
+                                  const ast::Expression& value, const SourceRange& range) {
+    const auto word_place = place(*target.object);
+    const auto word = word_place ? bit_word(target, range) : std::nullopt;
+    const auto bit =
+        word ? value_as(value, types_.elementary(ast::ElementaryType::Bool)) : std::nullopt;
+    if (!bit) {
+        return;
+    }
+    if (!word_place->writable) {
+        error(target.object->range, "this variable cannot be assigned here");
+        return;
+    }
+    // word := (word AND NOT mask) OR (BOOL_TO_<word>(bit) << n)
+    const sema::Type& type = *word->type;
+    const Operand cleared = temp(type);
+    emit(op_width("And", type), cleared, word->operand, bit_mask(type, target.bit, true));
+    const Operand shifted_bit = temp(type);
+    emit(program_.opcodes().get("Cvt", "Bool" + std::string(type_suffix(sema::scalar_of(type)))),
+         shifted_bit, bit->operand);
+    const std::uint8_t count[4] = {static_cast<std::uint8_t>(target.bit), 0, 0, 0};
+    emit(op_width("Shl", type), shifted_bit, shifted_bit, program_.constant({count, count + 4}, 4));
+    emit(op_width("Or", type), cleared, cleared, shifted_bit);
+    store(*word_place, Value{cleared, &type});
 }
 
 void PouGenerator::assignment(const ast::AssignmentStatement& node, const SourceRange& range) {
+    if (const auto* bit = std::get_if<ast::BitAccessExpression>(&node.target->node)) {
+        bit_assignment(*bit, *node.value, range);
+        return;
+    }
     const auto target = place(*node.target);
     if (!target) {
         eval(*node.value, nullptr); // still check the right-hand side
@@ -85,7 +115,18 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
                                   "its body (IEC 61131-3 7.3.3.4.2)");
         return;
     }
-    if (const auto* name = std::get_if<ast::NameExpression>(&node.target->node)) {
+    // The result counts as assigned when it or a part of it is (`F.x := 1`).
+    const ast::Expression* root = node.target.get();
+    for (;;) {
+        if (const auto* member = std::get_if<ast::MemberExpression>(&root->node)) {
+            root = member->object.get();
+        } else if (const auto* element = std::get_if<ast::IndexExpression>(&root->node)) {
+            root = element->array.get();
+        } else {
+            break;
+        }
+    }
+    if (const auto* name = std::get_if<ast::NameExpression>(&root->node)) {
         const sema::Symbol* symbol = model_.resolved(name->name);
         result_assigned_ = result_assigned_ || (symbol != nullptr && symbol->pou == &pou_);
     }
@@ -111,17 +152,16 @@ void PouGenerator::if_statement(const ast::IfStatement& node) {
     for (std::size_t i = 0; i < node.branches.size(); ++i) {
         const ast::ConditionalBlock& block = node.branches[i];
         const vm::Label next = builder_.label();
-        const std::uint32_t mark = frame_top_;
+        // The condition's temporaries live on through the branch, which may reuse them.
         branch(*block.condition, false, next);
-        frame_top_ = mark;
         statements(block.body);
         if (i + 1 < node.branches.size() || !node.else_body.empty()) {
             builder_.jump(Opcode::Jmp, end);
         }
-        builder_.bind(next);
+        bind(next);
     }
     statements(node.else_body);
-    builder_.bind(end);
+    bind(end);
 }
 
 void PouGenerator::case_statement(const ast::CaseStatement& node) {
@@ -174,25 +214,25 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
                           low->operand);
             builder_.jump(program_.opcodes().get("JLe", suffix), body, selector->operand,
                           high->operand);
-            builder_.bind(skip);
+            bind(skip);
         }
     }
     statements(node.else_body);
     builder_.jump(Opcode::Jmp, end);
     for (std::size_t i = 0; i < node.branches.size(); ++i) {
-        builder_.bind(bodies[i]);
+        bind(bodies[i]);
         statements(node.branches[i].body);
         if (i + 1 < node.branches.size()) {
             builder_.jump(Opcode::Jmp, end);
         }
     }
-    builder_.bind(end);
+    bind(end);
 }
 
 void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRange& range) {
     const sema::Symbol* symbol = model_.resolved(node.control_variable);
-    const auto control = symbol != nullptr ? variable(*symbol, node.control_variable.range)
-                                           : std::nullopt;
+    const auto control =
+        symbol != nullptr ? variable(*symbol, node.control_variable.range) : std::nullopt;
     if (!control) {
         return;
     }
@@ -202,18 +242,21 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
               "the control variable of a FOR loop must be a local integer variable (7.3.3.4.2)");
         return;
     }
+    // A constant step (the usual case) uses the For<I> back-edge; another a general loop.
     std::int64_t step = 1;
+    bool constant_step = true;
     if (node.by) {
         const auto folded = types_.fold_integer(*node.by);
-        if (!folded || *folded == 0 || *folded < INT16_MIN || *folded > INT16_MAX) {
-            error(node.by->range, "BY must be a non-zero constant from -32768 to 32767");
+        if (folded && *folded == 0) {
+            error(node.by->range, "BY must not be 0");
             return;
         }
-        step = *folded;
-    }
-    if (!sema::is_signed(type) && step < 0) {
-        error(node.by->range, "a negative step needs a signed control variable");
-        return;
+        constant_step = folded && *folded >= INT16_MIN && *folded <= INT16_MAX;
+        step = folded.value_or(0);
+        if (constant_step && !sema::is_signed(type) && step < 0) {
+            error(node.by->range, "a negative step needs a signed control variable");
+            return;
+        }
     }
     const Destination dest{control->operand, &type};
     const auto from = value_as(*node.from, type, &dest);
@@ -221,68 +264,91 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
         return;
     }
     move(control->operand, type, *from);
-    auto limit = value_as(*node.to, type);
-    if (!limit) {
+    // The limit and step are evaluated once (the loop's own copies), unless constant.
+    auto once = [&](const ast::Expression& expression) -> std::optional<Value> {
+        auto value = value_as(expression, type);
+        const bool constant = value && value->operand.base() == vm::Base::Static &&
+                              std::holds_alternative<ast::LiteralExpression>(expression.node);
+        if (value && !constant && !is_temporary(value->operand)) {
+            const Operand copy = temp(type);
+            move(copy, type, *value);
+            value = Value{copy, &type};
+        }
+        return value;
+    };
+    const auto limit = once(*node.to);
+    const auto computed_step = limit && !constant_step ? once(*node.by) : std::nullopt;
+    if (!limit || (!constant_step && !computed_step)) {
         return;
     }
-    // The limit is evaluated once (as the loop's own copy), unless it is a constant.
-    const bool constant = limit->operand.base() == vm::Base::Static &&
-                          std::holds_alternative<ast::LiteralExpression>(node.to->node);
-    if (!constant && !is_temporary(limit->operand)) {
-        const Operand copy = temp(type);
-        move(copy, type, *limit);
-        limit = Value{copy, &type};
-    }
     const std::string_view suffix = type_suffix(sema::scalar_of(type));
+    const vm::Opcode less = program_.opcodes().get("JLt", suffix);
     const Loop loop{builder_.label(), builder_.label()};
     const vm::Label body = builder_.label();
-    if (step > 0) {
-        builder_.jump(program_.opcodes().get("JLt", suffix), loop.exit, limit->operand,
-                      control->operand);
+    const vm::Label check = builder_.label();
+    if (constant_step) {
+        if (step > 0) {
+            builder_.jump(less, loop.exit, limit->operand, control->operand);
+        } else {
+            builder_.jump(less, loop.exit, control->operand, limit->operand);
+        }
     } else {
-        builder_.jump(program_.opcodes().get("JLt", suffix), loop.exit, control->operand,
-                      limit->operand);
+        // Up while the step is >= 0, down otherwise: the sign is known only when running.
+        bind(check);
+        const vm::Label down = builder_.label();
+        builder_.jump(less, down, computed_step->operand,
+                      program_.constant(std::vector<std::uint8_t>(type.size, 0), type.align));
+        builder_.jump(less, loop.exit, limit->operand, control->operand);
+        builder_.jump(Opcode::Jmp, body);
+        bind(down);
+        builder_.jump(less, loop.exit, control->operand, limit->operand);
     }
-    builder_.bind(body);
+    bind(body);
     loops_.push_back(loop);
     for_variables_.push_back(control->operand.raw);
     statements(node.body);
     for_variables_.pop_back();
     loops_.pop_back();
-    builder_.bind(loop.next);
+    bind(loop.next);
     builder_.line(range.begin.line);
-    builder_.for_loop(program_.opcodes().get("For", suffix), body, control->operand,
-                      limit->operand, static_cast<std::int16_t>(step));
-    builder_.bind(loop.exit);
+    cache_.clear(); // the back-edge writes the control variable
+    if (constant_step) {
+        builder_.for_loop(program_.opcodes().get("For", suffix), body, control->operand,
+                          limit->operand, static_cast<std::int16_t>(step));
+    } else {
+        emit(op_width("Add", type), control->operand, control->operand, computed_step->operand);
+        builder_.jump(Opcode::Jmp, check);
+    }
+    bind(loop.exit);
 }
 
 void PouGenerator::while_statement(const ast::WhileStatement& node) {
     const Loop loop{builder_.label(), builder_.label()};
     const vm::Label body = builder_.label();
     builder_.jump(Opcode::Jmp, loop.next);
-    builder_.bind(body);
+    bind(body);
     loops_.push_back(loop);
     statements(node.body);
     loops_.pop_back();
-    builder_.bind(loop.next);
+    bind(loop.next);
     const std::uint32_t mark = frame_top_;
     branch(*node.condition, true, body);
-    frame_top_ = mark;
-    builder_.bind(loop.exit);
+    release(mark);
+    bind(loop.exit);
 }
 
 void PouGenerator::repeat_statement(const ast::RepeatStatement& node) {
     const Loop loop{builder_.label(), builder_.label()};
     const vm::Label body = builder_.label();
-    builder_.bind(body);
+    bind(body);
     loops_.push_back(loop);
     statements(node.body);
     loops_.pop_back();
-    builder_.bind(loop.next);
+    bind(loop.next);
     const std::uint32_t mark = frame_top_;
     branch(*node.until, false, body);
-    frame_top_ = mark;
-    builder_.bind(loop.exit);
+    release(mark);
+    bind(loop.exit);
 }
 
 } // namespace eposp::compiler::codegen

@@ -1,9 +1,11 @@
 #include "program_generator.hpp"
 
 #include "eposp/compiler/sema/symbol.hpp"
+#include "jump_threading.hpp"
 #include "pou_generator.hpp"
 
 #include <fmt/format.h>
+#include <functional>
 
 namespace eposp::compiler::codegen {
 
@@ -16,9 +18,12 @@ constexpr std::uint32_t kStackMargin = 256;
 
 vm::PouKind vm_kind(ast::PouKind kind) {
     switch (kind) {
-    case ast::PouKind::Function: return vm::PouKind::Function;
-    case ast::PouKind::FunctionBlock: return vm::PouKind::FunctionBlock;
-    case ast::PouKind::Program: return vm::PouKind::Program;
+    case ast::PouKind::Function:
+        return vm::PouKind::Function;
+    case ast::PouKind::FunctionBlock:
+        return vm::PouKind::FunctionBlock;
+    case ast::PouKind::Program:
+        return vm::PouKind::Program;
     }
     return vm::PouKind::Function;
 }
@@ -27,8 +32,24 @@ vm::PouKind vm_kind(ast::PouKind kind) {
 
 ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnostics& diagnostics)
     : program_(program), library_(library), diagnostics_(diagnostics),
-      types_(program.model, diagnostics,
-             [this](std::string_view name) { return library_pou(name); }) {
+      types_(
+          program.model, diagnostics, [this](std::string_view name) { return library_pou(name); },
+          [this](const ast::VariableDeclaration& declaration) {
+              return constants_declared_.contains(&declaration);
+          }) {
+    for (const PouSource* source : {&program_, &library_}) {
+        for (const ast::CompilationUnit& unit : source->units) {
+            for (const ast::Pou& pou : unit.pous) {
+                collect_constants(pou.sections);
+            }
+            for (const ast::Configuration& configuration : unit.configurations) {
+                collect_constants(configuration.sections);
+                for (const ast::Resource& resource : configuration.resources) {
+                    collect_constants(resource.sections);
+                }
+            }
+        }
+    }
     for (const ast::CompilationUnit& unit : library_.units) {
         for (const ast::Pou& pou : unit.pous) {
             pou_models_[&pou] = &library_.model;
@@ -37,6 +58,17 @@ ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnos
     for (const ast::CompilationUnit& unit : program_.units) {
         for (const ast::Pou& pou : unit.pous) {
             pou_models_[&pou] = &program_.model;
+        }
+    }
+}
+
+void ProgramGenerator::collect_constants(const std::vector<ast::DeclarationSection>& sections) {
+    for (const ast::DeclarationSection& section : sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables != nullptr && variables->constant) {
+            for (const ast::VariableDeclaration& declaration : variables->variables) {
+                constants_declared_.insert(&declaration);
+            }
         }
     }
 }
@@ -97,6 +129,7 @@ vm::Operand ProgramGenerator::constant(const std::vector<std::uint8_t>& bytes,
 }
 
 std::optional<vm::Image> ProgramGenerator::generate() {
+    builder_.allocate(0, 1); // the NULL guard has its initial value even in an empty image
     bool has_configuration = false;
     for (const ast::CompilationUnit& unit : program_.units) {
         for (const ast::Configuration& configuration : unit.configurations) {
@@ -120,8 +153,13 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         default_program_instances();
     }
     generate_bodies();
+    connect_programs();
+    check_recursion();
     if (diagnostics_.has_errors()) {
         return std::nullopt;
+    }
+    if (tasks_.empty()) {
+        diagnostics_.warning({}, "there is no PROGRAM to run: the image has no task");
     }
     for (vm::Task& task : tasks_) {
         task.stack_size = stack_size();
@@ -132,6 +170,7 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         diagnostics_.error({}, "internal error: " + image.error());
         return std::nullopt;
     }
+    thread_jumps(*image);
     return std::move(*image);
 }
 
@@ -141,6 +180,34 @@ void ProgramGenerator::generate_bodies() {
         queue_.pop_front();
         PouGenerator generator(*this, *next.model, *next.pou, next.index);
         pou_frames_total_ += generator.generate();
+    }
+}
+
+void ProgramGenerator::check_recursion() {
+    // Depth-first search for a cycle, reporting each POU on one once.
+    enum class Mark { Unvisited, Active, Done };
+    std::unordered_map<const ast::Pou*, Mark> marks;
+    std::function<void(const ast::Pou*)> visit = [&](const ast::Pou* pou) {
+        marks[pou] = Mark::Active;
+        if (const auto it = calls_.find(pou); it != calls_.end()) {
+            for (const ast::Pou* callee : it->second) {
+                const Mark mark = marks[callee];
+                if (mark == Mark::Active) {
+                    diagnostics_.error(callee->name.range,
+                                       fmt::format("'{}' calls itself (through '{}'): recursion is "
+                                                   "not allowed in IEC 61131-3 (6.6.1.1)",
+                                                   callee->name.name, pou->name.name));
+                } else if (mark == Mark::Unvisited) {
+                    visit(callee);
+                }
+            }
+        }
+        marks[pou] = Mark::Done;
+    };
+    for (const auto& [pou, callees] : calls_) {
+        if (marks[pou] == Mark::Unvisited) {
+            visit(pou);
+        }
     }
 }
 
@@ -172,7 +239,7 @@ void ProgramGenerator::lay_out_global_section(
             for (const ast::Identifier& name : declaration.names) {
                 const std::uint32_t offset = builder_.allocate(type->size, type->align);
                 std::vector<std::uint8_t> bytes(type->size);
-                initial_value(*type, declaration.initial_value.get(), program_.model, bytes);
+                initial_value(*type, declaration.initial_value.get(), bytes);
                 builder_.initialise(offset, bytes);
                 globals_[sema::fold_case(name.name)] =
                     Place::direct(*type, vm::Operand::global(offset), !variables->constant);
@@ -193,7 +260,7 @@ std::uint32_t ProgramGenerator::program_instance(const ast::Pou& program, const 
     const sema::Type* type = types_.instance(program);
     const std::uint32_t offset = builder_.allocate(type->size, type->align);
     std::vector<std::uint8_t> bytes(type->size);
-    initial_value(*type, nullptr, program_.model, bytes);
+    initial_value(*type, nullptr, bytes);
     builder_.initialise(offset, bytes);
     add_symbols(path, *type, offset);
     // RETAIN variables of the program (6.5.6), or all of it for a RETAIN instance.
@@ -259,14 +326,8 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
             if (symbol == nullptr || symbol->kind != sema::SymbolKind::Pou) {
                 continue; // reported by the resolver
             }
-            if (!instance.connections.empty()) {
-                diagnostics_.error(instance.range,
-                                   "connecting program parameters in a configuration is not "
-                                   "supported yet");
-            }
-            const std::uint32_t offset =
-                program_instance(*symbol->pou, instance.name.name,
-                                 instance.retention == ast::Retention::Retain);
+            const std::uint32_t offset = program_instance(
+                *symbol->pou, instance.name.name, instance.retention == ast::Retention::Retain);
             const vm::TaskEntry entry{pou_index(*symbol->pou), offset};
             std::size_t task = tasks_.size();
             if (instance.task) {
@@ -285,8 +346,74 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
                 background.priority = UINT32_MAX;
                 tasks_.push_back(std::move(background));
             }
+            if (!instance.connections.empty()) {
+                connected_.push_back({&instance, symbol->pou, task, tasks_[task].entries.size()});
+            }
             tasks_[task].entries.push_back(entry);
         }
+    }
+}
+
+void ProgramGenerator::connect_programs() {
+    for (const Connected& connected : connected_) {
+        vm::TaskEntry& entry = tasks_[connected.task].entries[connected.entry];
+        const sema::Type& type = *types_.instance(*connected.program);
+        // 6.8.2: inputs are copied in from the configuration before each run, outputs out
+        // after it, by a small body around the program's own.
+        const std::uint32_t wrapper = builder_.declare_pou(
+            connected.instance->name.name + ".connections", vm::PouKind::Program, type.size);
+        builder_.begin_body(wrapper);
+        builder_.line(connected.instance->range.begin.line);
+        std::vector<std::pair<const sema::Field*, Place>> outputs;
+        for (const ast::Argument& argument : connected.instance->connections) {
+            const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
+            const bool output = argument.kind == ast::Argument::Kind::Output;
+            if (field == nullptr || field->section != (output ? ast::VarSectionKind::Output
+                                                              : ast::VarSectionKind::Input)) {
+                diagnostics_.error(argument.range,
+                                   fmt::format("'{}' has no {} of that name", type.name,
+                                               output ? "output" : "input"));
+                continue;
+            }
+            // A global variable by name, or (for an input) a constant.
+            std::optional<Place> source;
+            if (const auto* name = std::get_if<ast::NameExpression>(&argument.value->node)) {
+                source = global(name->name.name);
+            }
+            if (!source && !output) {
+                if (const auto value = constant_value(*argument.value, *field->type)) {
+                    source = Place::direct(*field->type, constant(*value, 8), false);
+                }
+            }
+            if (!source || !sema::same_type(*source->type, *field->type) ||
+                (output && !source->writable)) {
+                diagnostics_.error(argument.value->range,
+                                   fmt::format("connect '{}' to a {} global variable{}",
+                                               field->name, field->type->name,
+                                               output ? "" : " or constant"));
+                continue;
+            }
+            if (output) {
+                outputs.emplace_back(field, *source);
+                continue;
+            }
+            copy(vm::Operand::self(field->offset), source->operand, *field->type);
+        }
+        builder_.emit(vm::Opcode::CallFb, vm::Operand::self(0), vm::Operand::imm(entry.pou));
+        for (const auto& [field, target] : outputs) {
+            copy(target.operand, vm::Operand::self(field->offset), *field->type);
+        }
+        builder_.emit(vm::Opcode::Ret);
+        builder_.end_body(0, 0);
+        entry.pou = wrapper;
+    }
+}
+
+void ProgramGenerator::copy(vm::Operand dst, vm::Operand src, const sema::Type& type) {
+    if (sema::is_scalar(type)) {
+        builder_.emit(opcodes_.get("Mov", width_suffix(sema::scalar_of(type))), dst, src);
+    } else {
+        builder_.emit(vm::Opcode::MovN, dst, src, vm::Operand::imm(type.size));
     }
 }
 
@@ -362,7 +489,8 @@ std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {
         descriptor.kind = vm::TypeKind::Struct;
         for (const sema::Type* part = &type; part != nullptr; part = part->base) {
             for (const sema::Field& field : part->fields) {
-                descriptor.fields.push_back({field.name, type_descriptor(*field.type), field.offset});
+                descriptor.fields.push_back(
+                    {field.name, type_descriptor(*field.type), field.offset});
             }
         }
         break;
@@ -377,6 +505,48 @@ std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {
     return index;
 }
 
+std::optional<Place> ProgramGenerator::direct_variable(const ast::DirectAddress& address) {
+    const auto key =
+        std::tuple(static_cast<int>(address.area), static_cast<int>(address.size), address.path);
+    if (const auto it = direct_variables_.find(key); it != direct_variables_.end()) {
+        return it->second;
+    }
+    using Size = ast::DirectAddress::Size;
+    ast::ElementaryType type = ast::ElementaryType::Bool;
+    switch (address.size) {
+    case Size::Byte:
+        type = ast::ElementaryType::Byte;
+        break;
+    case Size::Word:
+        type = ast::ElementaryType::Word;
+        break;
+    case Size::DoubleWord:
+        type = ast::ElementaryType::Dword;
+        break;
+    case Size::LongWord:
+        type = ast::ElementaryType::Lword;
+        break;
+    default:
+        break;
+    }
+    if (address.path.empty()) {
+        diagnostics_.error(address.range, "an address used in code must be complete (not %I*)");
+        return std::nullopt;
+    }
+    const sema::Type& variable = types_.elementary(type);
+    const std::uint32_t offset = builder_.allocate(variable.size, variable.align);
+    const std::size_t errors = diagnostics_.error_count();
+    add_io_binding(address, variable, offset);
+    if (diagnostics_.error_count() != errors) {
+        return std::nullopt;
+    }
+    // Inputs are read-only in code: the process image writes them.
+    const Place place = Place::direct(variable, vm::Operand::global(offset),
+                                      address.area != ast::DirectAddress::Area::Input);
+    direct_variables_.emplace(key, place);
+    return place;
+}
+
 void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const sema::Type& type,
                                       std::uint32_t offset) {
     if (address.path.empty()) {
@@ -388,17 +558,30 @@ void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const s
     }
     vm::IoBinding binding{.type = sema::scalar_of(type), .offset = offset};
     switch (address.area) {
-    case ast::DirectAddress::Area::Input: binding.area = vm::IoArea::Input; break;
-    case ast::DirectAddress::Area::Output: binding.area = vm::IoArea::Output; break;
-    case ast::DirectAddress::Area::Memory: binding.area = vm::IoArea::Memory; break;
+    case ast::DirectAddress::Area::Input:
+        binding.area = vm::IoArea::Input;
+        break;
+    case ast::DirectAddress::Area::Output:
+        binding.area = vm::IoArea::Output;
+        break;
+    case ast::DirectAddress::Area::Memory:
+        binding.area = vm::IoArea::Memory;
+        break;
     }
     // Byte addressing as CODESYS: %IW4 is the word at byte 8, %IX1.3 bit 3 of byte 1.
     std::uint32_t unit = 1;
     switch (address.size) {
-    case ast::DirectAddress::Size::Word: unit = 2; break;
-    case ast::DirectAddress::Size::DoubleWord: unit = 4; break;
-    case ast::DirectAddress::Size::LongWord: unit = 8; break;
-    default: break;
+    case ast::DirectAddress::Size::Word:
+        unit = 2;
+        break;
+    case ast::DirectAddress::Size::DoubleWord:
+        unit = 4;
+        break;
+    case ast::DirectAddress::Size::LongWord:
+        unit = 8;
+        break;
+    default:
+        break;
     }
     const bool bit = address.size == ast::DirectAddress::Size::None ||
                      address.size == ast::DirectAddress::Size::Bit;

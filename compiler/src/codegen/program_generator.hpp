@@ -4,17 +4,18 @@
 #include "eposp/compiler/diagnostics.hpp"
 #include "eposp/compiler/sema/semantic_model.hpp"
 #include "eposp/compiler/sema/type_table.hpp"
+#include "eposp/vm/builder.hpp"
 #include "opcode_table.hpp"
 #include "place.hpp"
-
-#include "eposp/vm/builder.hpp"
 
 #include <deque>
 #include <map>
 #include <optional>
 #include <span>
 #include <string>
+#include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace eposp::compiler::codegen {
@@ -42,8 +43,13 @@ public:
     const OpcodeTable& opcodes() const { return opcodes_; }
     /// A configuration global by name (VAR_EXTERNAL binds to it, 6.5.2.2).
     std::optional<Place> global(std::string_view name) const;
+    /// The variable behind an address used directly in code (`%IW4`): one hidden static
+    /// variable per address, bound to it like a located variable (ed. 3, 6.5.5).
+    std::optional<Place> direct_variable(const ast::DirectAddress& address);
     /// The index of `pou`'s body, generated later if it is not yet.
     std::uint32_t pou_index(const ast::Pou& pou);
+    /// Records that `caller` calls `callee`, for the recursion check.
+    void calls(const ast::Pou& caller, const ast::Pou& callee) { calls_[&caller].insert(&callee); }
     /// The built-in POU that implements a standard FB or function (`TON`).
     const ast::Pou* library_pou(std::string_view name) const;
     /// A FUNCTION without statements in the built-in library: a host function (the clock).
@@ -54,11 +60,10 @@ public:
     /// The bytes of `type`'s initial value, `initializer` (may be null) applied over the
     /// declared defaults: STRING headers, structure member and FB variable defaults.
     void initial_value(const sema::Type& type, const ast::Initializer* initializer,
-                       const sema::SemanticModel& model, std::span<std::uint8_t> bytes);
+                       std::span<std::uint8_t> bytes);
     /// The value of a constant expression of type `type`, encoded as in memory.
     std::optional<std::vector<std::uint8_t>> constant_value(const ast::Expression& expression,
-                                                           const sema::Type& type,
-                                                           const sema::SemanticModel& model);
+                                                            const sema::Type& type);
 
 private:
     struct QueuedPou {
@@ -67,19 +72,24 @@ private:
         std::uint32_t index;
     };
 
+    void collect_constants(const std::vector<ast::DeclarationSection>& sections);
     void lay_out_globals(const ast::Configuration& configuration);
     void lay_out_global_section(const ast::Configuration& configuration,
                                 const std::vector<ast::DeclarationSection>& sections);
     void lay_out_programs(const ast::Configuration& configuration);
     void default_program_instances();
-    std::uint32_t program_instance(const ast::Pou& program, const std::string& path,
-                                   bool retain);
+    std::uint32_t program_instance(const ast::Pou& program, const std::string& path, bool retain);
     void add_symbols(const std::string& path, const sema::Type& type, std::uint32_t offset);
     void add_io_binding(const ast::DirectAddress& address, const sema::Type& type,
                         std::uint32_t offset);
     std::uint32_t type_descriptor(const sema::Type& type);
     std::uint64_t task_interval(const ast::TaskDeclaration& task);
     void generate_bodies();
+    /// The bodies that copy the connections of `PROGRAM p WITH t : P (in := g, out => h)`.
+    void connect_programs();
+    void copy(vm::Operand dst, vm::Operand src, const sema::Type& type);
+    /// 6.6.1.1: POUs shall not call themselves, directly or through others.
+    void check_recursion();
     std::uint32_t stack_size() const;
 
     PouSource program_;
@@ -97,6 +107,16 @@ private:
     std::unordered_map<const sema::Type*, std::uint32_t> descriptors_;
     std::vector<vm::Task> tasks_;
     std::uint32_t pou_frames_total_ = 0;
+    std::unordered_set<const ast::VariableDeclaration*> constants_declared_;
+    std::map<std::tuple<int, int, std::vector<std::uint32_t>>, Place> direct_variables_;
+    std::unordered_map<const ast::Pou*, std::unordered_set<const ast::Pou*>> calls_;
+    struct Connected {
+        const ast::ProgramInstance* instance;
+        const ast::Pou* program;
+        std::size_t task;
+        std::size_t entry;
+    };
+    std::vector<Connected> connected_;
 };
 
 } // namespace eposp::compiler::codegen

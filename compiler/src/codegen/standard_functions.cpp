@@ -24,9 +24,12 @@ bool one_of(const std::string& name, std::initializer_list<std::string_view> nam
 /// The spelling of a type in the names of the VM's natives (`TOD_TO_STRING`).
 std::string native_type_name(E type) {
     switch (type) {
-    case E::TimeOfDay: return "TOD";
-    case E::DateAndTime: return "DT";
-    default: return std::string(ast::name_of(type));
+    case E::TimeOfDay:
+        return "TOD";
+    case E::DateAndTime:
+        return "DT";
+    default:
+        return std::string(ast::name_of(type));
     }
 }
 
@@ -34,9 +37,14 @@ std::string native_type_name(E type) {
 /// milliseconds, DATE and DT in seconds, the long forms in nanoseconds).
 std::int64_t time_unit(E type) {
     switch (type) {
-    case E::Time: case E::TimeOfDay: return 1'000'000;
-    case E::Date: case E::DateAndTime: return 1'000'000'000;
-    default: return 1;
+    case E::Time:
+    case E::TimeOfDay:
+        return 1'000'000;
+    case E::Date:
+    case E::DateAndTime:
+        return 1'000'000'000;
+    default:
+        return 1;
     }
 }
 
@@ -57,6 +65,11 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
                                                      const Destination* dest,
                                                      const SourceRange& range) {
     for (const ast::Argument& argument : node.arguments) {
+        if (argument.name && (sema::fold_case(argument.name->name) == "EN" ||
+                              sema::fold_case(argument.name->name) == "ENO")) {
+            error(argument.range, "EN/ENO on standard functions is not supported yet");
+            return std::nullopt;
+        }
         if (argument.kind == ast::Argument::Kind::Output) {
             error(argument.range, fmt::format("{} has no outputs", name));
             return std::nullopt;
@@ -65,14 +78,52 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
     if (sema::is_conversion_function(name)) {
         return conversion(name, node, dest, range);
     }
-    if (one_of(name, {"LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE",
-                      "FIND"})) {
+    if (one_of(name,
+               {"LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND"})) {
         return string_function(name, node, dest, range);
+    }
+    if (name == "ADR" || name == "SIZEOF") {
+        return address_or_size(name, node, range);
     }
     if (one_of(name, {"SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE"})) {
         return selection(name, node, hint, dest, range);
     }
     return numeric_function(name, node, hint, dest, range);
+}
+
+std::optional<Value> PouGenerator::address_or_size(const std::string& name,
+                                                   const ast::CallExpression& node,
+                                                   const SourceRange& range) {
+    if (node.arguments.size() != 1) {
+        error(range, fmt::format("{} takes one argument", name));
+        return std::nullopt;
+    }
+    const ast::Expression& argument = *node.arguments.front().value;
+    const sema::Type* type = nullptr;
+    std::optional<Place> target;
+    if (const auto* type_name = std::get_if<ast::NameExpression>(&argument.node)) {
+        const sema::Symbol* symbol = model_.resolved(type_name->name);
+        if (symbol != nullptr && symbol->kind != sema::SymbolKind::Variable) {
+            type = types_.named(*symbol);
+        }
+    }
+    if (type == nullptr || name == "ADR") {
+        target = place(argument);
+        if (!target) {
+            return std::nullopt;
+        }
+        type = target->type;
+    }
+    if (name == "ADR") {
+        return Value{address_of(*target), &types_.reference(type)};
+    }
+    // SIZEOF: bytes, as a DINT constant.
+    const sema::Type& dint = types_.elementary(E::Dint);
+    std::vector<std::uint8_t> bytes(4);
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        bytes[i] = static_cast<std::uint8_t>(type->size >> (8 * i));
+    }
+    return Value{program_.constant(bytes, 4), &dint};
 }
 
 std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
@@ -82,7 +133,8 @@ std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
         return std::nullopt;
     }
     if (!sema::is_integer(*value->type)) {
-        error(expression.range, fmt::format("an integer is needed here, not {}", value->type->name));
+        error(expression.range,
+              fmt::format("an integer is needed here, not {}", value->type->name));
         return std::nullopt;
     }
     return explicit_convert(*value, dint, nullptr, expression.range);
@@ -103,7 +155,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
                                            dest->type->wide == want.wide
                                        ? dest->operand
                                        : temp(want);
-            const sema::Type& target = dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
+            const sema::Type& target =
+                dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
             call_native(from.wide ? "WSTRING_TO_STRING" : "STRING_TO_WSTRING",
                         {false, S::Bool, {S::Ptr, S::Ptr}}, {Value{result, &target}, value});
             return Value{result, &target};
@@ -113,11 +166,12 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
                 error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
                 return std::nullopt;
             }
-            const Operand result = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
-                                           !dest->type->wide
-                                       ? dest->operand
-                                       : temp(want);
-            const sema::Type& target = dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
+            const Operand result =
+                dest != nullptr && dest->type->kind == sema::TypeKind::String && !dest->type->wide
+                    ? dest->operand
+                    : temp(want);
+            const sema::Type& target =
+                dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
             call_native(native_type_name(from.elementary) + "_TO_STRING",
                         {false, S::Bool, {S::Ptr, sema::scalar_of(from)}},
                         {Value{result, &target}, value});
@@ -142,7 +196,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         if (from.elementary == E::DateAndTime && want.elementary != E::DateAndTime &&
             (want.elementary == E::Date || want.elementary == E::TimeOfDay)) {
             const vm::NativeSignature signature{true, S::I64, {S::I64}};
-            call_native(want.elementary == E::Date ? "DT_TO_DATE" : "DT_TO_TOD", signature, {value});
+            call_native(want.elementary == E::Date ? "DT_TO_DATE" : "DT_TO_TOD", signature,
+                        {value});
             return native_result(signature, want, dest);
         }
         return Value{value.operand, &want}; // the same nanoseconds
@@ -152,16 +207,16 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         // Durations and times count in nanoseconds; as numbers they count in their unit.
         const sema::Type& lint = types_.elementary(E::Lint);
         const Operand scaled = temp(lint);
-        builder_.emit(Opcode::DivI64, scaled, value.operand,
-                      program_.constant(int64_bytes(time_unit(from.elementary)), 8));
+        emit(Opcode::DivI64, scaled, value.operand,
+             program_.constant(int64_bytes(time_unit(from.elementary)), 8));
         source = Value{scaled, &lint};
     }
     if (to_time) {
         const sema::Type& lint = types_.elementary(E::Lint);
         const auto as_lint = explicit_convert(source, lint, nullptr, range);
         const Operand result = result_operand(want, dest);
-        builder_.emit(Opcode::Mul64, result, as_lint->operand,
-                      program_.constant(int64_bytes(time_unit(want.elementary)), 8));
+        emit(Opcode::Mul64, result, as_lint->operand,
+             program_.constant(int64_bytes(time_unit(want.elementary)), 8));
         return Value{result, &want};
     }
     const S a = sema::scalar_of(*source.type);
@@ -170,9 +225,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         return Value{source.operand, &want};
     }
     const Operand result = result_operand(want, dest);
-    builder_.emit(program_.opcodes().get("Cvt", std::string(type_suffix(a)) +
-                                                    std::string(type_suffix(b))),
-                  result, source.operand);
+    emit(program_.opcodes().get("Cvt", std::string(type_suffix(a)) + std::string(type_suffix(b))),
+         result, source.operand);
     return Value{result, &want};
 }
 
@@ -194,8 +248,8 @@ std::optional<Value> PouGenerator::conversion(const std::string& name,
             types_.elementary(*ast::elementary_type_from_name(name.substr(0, separator)));
         value = eval(argument, &source);
         if (value && value->type != &source &&
-            !(value->type->kind == sema::TypeKind::String && source.kind == sema::TypeKind::String &&
-              value->type->wide == source.wide)) {
+            !(value->type->kind == sema::TypeKind::String &&
+              source.kind == sema::TypeKind::String && value->type->wide == source.wide)) {
             if (!sema::converts_implicitly(*value->type, source)) {
                 error(argument.range, fmt::format("{} needs a {} argument, not {}", name,
                                                   source.name, value->type->name));
@@ -221,19 +275,22 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
         bool returns_text;
     };
     static constexpr std::array kShapes{
-        Shape{"LEN", 1, 0, false},    Shape{"FIND", 2, 0, false},  Shape{"LEFT", 1, 1, true},
-        Shape{"RIGHT", 1, 1, true},   Shape{"MID", 1, 2, true},    Shape{"INSERT", 2, 1, true},
-        Shape{"DELETE", 1, 2, true},  Shape{"REPLACE", 2, 2, true}, Shape{"CONCAT", -1, 0, true},
+        Shape{"LEN", 1, 0, false},   Shape{"FIND", 2, 0, false},   Shape{"LEFT", 1, 1, true},
+        Shape{"RIGHT", 1, 1, true},  Shape{"MID", 1, 2, true},     Shape{"INSERT", 2, 1, true},
+        Shape{"DELETE", 1, 2, true}, Shape{"REPLACE", 2, 2, true}, Shape{"CONCAT", -1, 0, true},
     };
     const Shape shape = *std::find_if(kShapes.begin(), kShapes.end(),
                                       [&](const Shape& s) { return s.name == name; });
-    const std::size_t texts = shape.texts < 0 ? node.arguments.size()
-                                              : static_cast<std::size_t>(shape.texts);
+    const std::size_t texts =
+        shape.texts < 0 ? node.arguments.size() : static_cast<std::size_t>(shape.texts);
     if ((shape.texts < 0 && node.arguments.size() < 2) ||
         (shape.texts >= 0 &&
          node.arguments.size() != texts + static_cast<std::size_t>(shape.integers))) {
-        error(range, fmt::format("{} takes {} arguments", name,
-                                 shape.texts < 0 ? "two or more" : std::to_string(texts + static_cast<std::size_t>(shape.integers))));
+        error(range,
+              fmt::format("{} takes {} arguments", name,
+                          shape.texts < 0
+                              ? "two or more"
+                              : std::to_string(texts + static_cast<std::size_t>(shape.integers))));
         return std::nullopt;
     }
     std::vector<Value> arguments;
@@ -243,6 +300,11 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
         auto value = i < texts ? eval(expression, nullptr) : as_dint(expression);
         if (!value) {
             return std::nullopt;
+        }
+        if (name == "LEN" && value->type->kind == sema::TypeKind::String && value->type->wide) {
+            const vm::NativeSignature signature{true, S::I32, {S::Ptr}};
+            call_native("LEN_WSTRING", signature, {*value});
+            return native_result(signature, types_.elementary(E::Int), dest);
         }
         if (i < texts) {
             if (value->type->kind != sema::TypeKind::String || value->type->wide) {
@@ -263,8 +325,8 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
         return native_result(signature, types_.elementary(E::Int), dest);
     }
     const sema::Type& natural = types_.string(std::min<std::uint32_t>(capacity, 0xFFFF), false);
-    const bool into_dest = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
-                           !dest->type->wide;
+    const bool into_dest =
+        dest != nullptr && dest->type->kind == sema::TypeKind::String && !dest->type->wide;
     Value result{into_dest ? dest->operand : temp(natural), into_dest ? dest->type : &natural};
     if (shape.texts < 0) {
         // CONCAT is binary in the VM: folded left to right into the result (vm/README).
@@ -330,8 +392,8 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
             if (common == nullptr || sema::converts_implicitly(*common, *values[i]->type)) {
                 common = values[i]->type;
             } else if (!sema::converts_implicitly(*values[i]->type, *common)) {
-                error(arguments[i].range, fmt::format("{} mixes {} and {}", name, common->name,
-                                                      values[i]->type->name));
+                error(arguments[i].range,
+                      fmt::format("{} mixes {} and {}", name, common->name, values[i]->type->name));
                 return std::nullopt;
             }
         }
@@ -340,12 +402,18 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         values[i] = convert(*values[i], *common, nullptr);
     }
     const sema::Type& type = *common;
-    if (name != "SEL" && name != "MUX" && (!sema::is_scalar(type) || type.kind == sema::TypeKind::Reference)) {
+    if (name != "SEL" && name != "MUX" &&
+        (!sema::is_scalar(type) || type.kind == sema::TypeKind::Reference)) {
         error(range, fmt::format("{} needs numbers, not {}", name, type.name));
         return std::nullopt;
     }
-    // A temporary, so that no argument is overwritten before it is read.
-    const Operand result = temp(type);
+    // The destination when no argument lives there (so none is overwritten before it is
+    // read), else a temporary of its own (an argument's may be shared with the value cache).
+    bool dest_free = dest != nullptr && dest->type == &type;
+    for (std::size_t i = first; dest_free && i < arguments.size(); ++i) {
+        dest_free = values[i]->operand.raw != dest->operand.raw;
+    }
+    const Operand result = dest_free ? dest->operand : temp(type);
     const vm::Label done = builder_.label();
     std::string_view suffix = type_suffix(sema::scalar_of(type));
     if (suffix == "Bool") {
@@ -356,7 +424,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         builder_.jump(Opcode::Jt, one, selector->operand);
         move(result, type, *values[1]);
         builder_.jump(Opcode::Jmp, done);
-        builder_.bind(one);
+        bind(one);
         move(result, type, *values[2]);
     } else if (name == "MUX") {
         // 6.6.2.5.9: K selects IN0..INn; out of range gives IN0 here.
@@ -368,7 +436,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
                           program_.constant({static_cast<std::uint8_t>(k), 0, 0, 0}, 4));
             move(result, type, *values[i]);
             builder_.jump(Opcode::Jmp, done);
-            builder_.bind(next);
+            bind(next);
         }
     } else if (name == "LIMIT") {
         const Value& low = *values[0];
@@ -379,7 +447,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         builder_.jump(program_.opcodes().get("JLe", suffix), above_low, low.operand, result);
         move(result, type, low);
         builder_.jump(Opcode::Jmp, done);
-        builder_.bind(above_low);
+        bind(above_low);
         builder_.jump(program_.opcodes().get("JLe", suffix), done, result, high.operand);
         move(result, type, high);
     } else {
@@ -391,17 +459,16 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
                           maximum ? values[i]->operand : result,
                           maximum ? result : values[i]->operand);
             move(result, type, *values[i]);
-            builder_.bind(keep);
+            bind(keep);
         }
     }
-    builder_.bind(done);
+    bind(done);
     return Value{result, &type};
 }
 
 std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                                                     const ast::CallExpression& node,
-                                                    const sema::Type* hint,
-                                                    const Destination* dest,
+                                                    const sema::Type* hint, const Destination* dest,
                                                     const SourceRange& range) {
     const auto& arguments = node.arguments;
     auto arity = [&](std::size_t n) {
@@ -413,10 +480,10 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     };
     using Op = ast::BinaryOperator;
     static const std::vector<std::pair<std::string_view, Op>> kOperators{
-        {"ADD", Op::Add}, {"MUL", Op::Multiply}, {"SUB", Op::Subtract}, {"DIV", Op::Divide},
-        {"MOD", Op::Modulo}, {"AND", Op::And}, {"OR", Op::Or}, {"XOR", Op::Xor},
-        {"GT", Op::Greater}, {"GE", Op::GreaterEqual}, {"EQ", Op::Equal},
-        {"LE", Op::LessEqual}, {"LT", Op::Less}, {"NE", Op::NotEqual}};
+        {"ADD", Op::Add},    {"MUL", Op::Multiply},    {"SUB", Op::Subtract}, {"DIV", Op::Divide},
+        {"MOD", Op::Modulo}, {"AND", Op::And},         {"OR", Op::Or},        {"XOR", Op::Xor},
+        {"GT", Op::Greater}, {"GE", Op::GreaterEqual}, {"EQ", Op::Equal},     {"LE", Op::LessEqual},
+        {"LT", Op::Less},    {"NE", Op::NotEqual}};
     for (const auto& [candidate, op] : kOperators) {
         if (candidate != name) {
             continue;
@@ -428,11 +495,13 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
         // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is
         // a > b AND b > c; the other extensible functions fold left to right.
-        auto pair = operands(*arguments[0].value, *arguments[1].value, comparison ? nullptr : hint, range);
+        auto pair =
+            operands(*arguments[0].value, *arguments[1].value, comparison ? nullptr : hint, range);
         if (!pair) {
             return std::nullopt;
         }
-        auto result = apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr, range);
+        auto result =
+            apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr, range);
         Value previous = pair->second;
         for (std::size_t i = 2; result && i < arguments.size(); ++i) {
             auto next = value_as(*arguments[i].value, *previous.type);
@@ -444,7 +513,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                 if (!step) {
                     return std::nullopt;
                 }
-                builder_.emit(Opcode::And8, result->operand, result->operand, step->operand);
+                emit(Opcode::And8, result->operand, result->operand, step->operand);
                 previous = *next;
             } else {
                 result = apply(op, *result, *next, nullptr, range);
@@ -462,9 +531,9 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         }
         const Operand result = result_operand(*value->type, dest);
         if (sema::is_bool(*value->type)) {
-            builder_.emit(Opcode::NotB, result, value->operand);
+            emit(Opcode::NotB, result, value->operand);
         } else if (sema::is_bit_string(*value->type) || sema::is_integer(*value->type)) {
-            builder_.emit(op_width("Not", *value->type), result, value->operand);
+            emit(op_width("Not", *value->type), result, value->operand);
         } else {
             error(range, fmt::format("NOT needs a BOOL or bit string, not {}", value->type->name));
             return std::nullopt;
@@ -490,9 +559,12 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             return std::nullopt;
         }
         count = explicit_convert(*count, udint, nullptr, range);
-        const std::string family = name == "SHL" ? "Shl" : name == "SHR" ? "Shr" : name == "ROL" ? "Rol" : "Ror";
+        const std::string family = name == "SHL"   ? "Shl"
+                                   : name == "SHR" ? "Shr"
+                                   : name == "ROL" ? "Rol"
+                                                   : "Ror";
         const Operand result = result_operand(*value->type, dest);
-        builder_.emit(op_width(family, *value->type), result, value->operand, count->operand);
+        emit(op_width(family, *value->type), result, value->operand, count->operand);
         return Value{result, value->type};
     }
     if (name == "TRUNC") {
@@ -508,7 +580,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         }
         const sema::Type& lint = types_.elementary(E::Lint);
         const Operand wide = temp(lint);
-        builder_.emit(op("Trunc", *value->type), wide, value->operand);
+        emit(op("Trunc", *value->type), wide, value->operand);
         return explicit_convert(Value{wide, &lint}, types_.elementary(E::Dint), dest, range);
     }
     if (name == "ABS") {
@@ -524,7 +596,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         }
         const Operand result = result_operand(*value->type, dest);
         if (sema::is_signed(*value->type)) {
-            builder_.emit(op("Abs", *value->type), result, value->operand);
+            emit(op("Abs", *value->type), result, value->operand);
         } else {
             move(result, *value->type, *value);
         }
@@ -541,7 +613,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         return std::nullopt;
     }
     const sema::Type* real_hint = hint != nullptr && sema::is_real(*hint) ? hint : nullptr;
-    auto first = eval(*arguments[0].value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
+    auto first =
+        eval(*arguments[0].value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
     if (!first || !sema::is_numeric(*first->type)) {
         if (first) {
             error(range, fmt::format("{} needs a number, not {}", name, first->type->name));
@@ -549,8 +622,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         return std::nullopt;
     }
     const sema::Type& real = sema::is_real(*first->type) ? *first->type
-                             : real_hint != nullptr     ? *real_hint
-                                                        : types_.elementary(E::Lreal);
+                             : real_hint != nullptr      ? *real_hint
+                                                         : types_.elementary(E::Lreal);
     first = explicit_convert(*first, real, nullptr, range);
     std::vector<Value> values{*first};
     if (two) {
@@ -562,7 +635,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     }
     if (name == "SQRT") {
         const Operand result = result_operand(real, dest);
-        builder_.emit(op("Sqrt", real), result, values[0].operand);
+        emit(op("Sqrt", real), result, values[0].operand);
         return Value{result, &real};
     }
     const S scalar = sema::scalar_of(real);

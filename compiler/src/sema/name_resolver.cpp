@@ -339,13 +339,19 @@ private:
             if (argument.name && parameters != nullptr) {
                 if (const Symbol* formal = parameters->find_member(argument.name->name)) {
                     model_.bind(*argument.name, *formal);
-                } else {
+                } else if (!is_enable_parameter(argument.name->name)) {
                     error(argument.name->range,
                           fmt::format("'{}' has no parameter '{}'", callee, argument.name->name));
                 }
             }
             resolve_expression(*argument.value, scope);
         }
+    }
+
+    /// EN and ENO, which every function and FB call has (ed. 3, 6.6.1.8).
+    static bool is_enable_parameter(std::string_view name) {
+        const std::string folded = fold_case(name);
+        return folded == "EN" || folded == "ENO";
     }
 
     ValueShape resolve_node(const ast::UnaryExpression& node, const Scope& scope) {

@@ -10,11 +10,13 @@ namespace {
 
 // Ed. 3, tables 22-36: numeric, bit-shift, selection, comparison, character string functions.
 constexpr std::array kStandardFunctions = {
-    "ABS",   "SQRT",  "LN",     "LOG",    "EXP",    "SIN",     "COS",  "TAN",   "ASIN", "ACOS",
-    "ATAN",  "ATAN2", "ADD",    "MUL",    "SUB",    "DIV",     "MOD",  "EXPT",  "MOVE", "SHL",
-    "SHR",   "ROL",   "ROR",    "AND",    "OR",     "XOR",     "NOT",  "SEL",   "MAX",  "MIN",
-    "LIMIT", "MUX",   "GT",     "GE",     "EQ",     "LE",      "LT",   "NE",    "LEN",  "LEFT",
-    "RIGHT", "MID",   "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND", "TRUNC",
+    "ABS",     "SQRT", "LN",    "LOG",   "EXP",    "SIN", "COS",    "TAN",    "ASIN",
+    "ACOS",    "ATAN", "ATAN2", "ADD",   "MUL",    "SUB", "DIV",    "MOD",    "EXPT",
+    "MOVE",    "SHL",  "SHR",   "ROL",   "ROR",    "AND", "OR",     "XOR",    "NOT",
+    "SEL",     "MAX",  "MIN",   "LIMIT", "MUX",    "GT",  "GE",     "EQ",     "LE",
+    "LT",      "NE",   "LEN",   "LEFT",  "RIGHT",  "MID", "CONCAT", "INSERT", "DELETE",
+    "REPLACE", "FIND", "TRUNC", "ADR",   "SIZEOF", // CODESYS extensions of the pointer kind
+                                                   // (POINTER TO is parsed)
 };
 
 struct Parameter {

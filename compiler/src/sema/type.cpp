@@ -41,36 +41,57 @@ struct Chain {
 
 std::optional<Chain> chain_of(E e) {
     switch (e) {
-    case E::Sint: return Chain{0, 0};
-    case E::Int: return Chain{0, 1};
-    case E::Dint: return Chain{0, 2};
-    case E::Lint: return Chain{0, 3};
-    case E::Usint: return Chain{1, 0};
-    case E::Uint: return Chain{1, 1};
-    case E::Udint: return Chain{1, 2};
-    case E::Ulint: return Chain{1, 3};
-    case E::Byte: return Chain{2, 0};
-    case E::Word: return Chain{2, 1};
-    case E::Dword: return Chain{2, 2};
-    case E::Lword: return Chain{2, 3};
-    case E::Real: return Chain{3, 0};
-    case E::Lreal: return Chain{3, 1};
-    default: return std::nullopt;
+    case E::Sint:
+        return Chain{0, 0};
+    case E::Int:
+        return Chain{0, 1};
+    case E::Dint:
+        return Chain{0, 2};
+    case E::Lint:
+        return Chain{0, 3};
+    case E::Usint:
+        return Chain{1, 0};
+    case E::Uint:
+        return Chain{1, 1};
+    case E::Udint:
+        return Chain{1, 2};
+    case E::Ulint:
+        return Chain{1, 3};
+    case E::Byte:
+        return Chain{2, 0};
+    case E::Word:
+        return Chain{2, 1};
+    case E::Dword:
+        return Chain{2, 2};
+    case E::Lword:
+        return Chain{2, 3};
+    case E::Real:
+        return Chain{3, 0};
+    case E::Lreal:
+        return Chain{3, 1};
+    default:
+        return std::nullopt;
     }
 }
 
 } // namespace
 
 bool is_integer(const Type& type) {
-    return elementary_in(type, {E::Sint, E::Int, E::Dint, E::Lint, E::Usint, E::Uint, E::Udint,
-                                E::Ulint});
+    return elementary_in(
+        type, {E::Sint, E::Int, E::Dint, E::Lint, E::Usint, E::Uint, E::Udint, E::Ulint});
 }
 bool is_bit_string(const Type& type) {
     return elementary_in(type, {E::Byte, E::Word, E::Dword, E::Lword});
 }
-bool is_real(const Type& type) { return elementary_in(type, {E::Real, E::Lreal}); }
-bool is_numeric(const Type& type) { return is_integer(type) || is_real(type); }
-bool is_bool(const Type& type) { return elementary_in(type, {E::Bool}); }
+bool is_real(const Type& type) {
+    return elementary_in(type, {E::Real, E::Lreal});
+}
+bool is_numeric(const Type& type) {
+    return is_integer(type) || is_real(type);
+}
+bool is_bool(const Type& type) {
+    return elementary_in(type, {E::Bool});
+}
 bool is_time_like(const Type& type) {
     return elementary_in(type, {E::Time, E::Ltime, E::Date, E::Ldate, E::TimeOfDay, E::Ltod,
                                 E::DateAndTime, E::Ldt});
@@ -90,23 +111,58 @@ vm::Scalar scalar_of(const Type& type) {
         return S::Ptr;
     }
     switch (type.elementary) {
-    case E::Bool: return S::Bool;
-    case E::Sint: return S::I8;
-    case E::Int: return S::I16;
-    case E::Dint: return S::I32;
-    case E::Lint: return S::I64;
-    case E::Usint: case E::Byte: case E::Char: return S::U8;
-    case E::Uint: case E::Word: case E::Wchar: return S::U16;
-    case E::Udint: case E::Dword: return S::U32;
-    case E::Ulint: case E::Lword: return S::U64;
-    case E::Real: return S::F32;
-    case E::Lreal: return S::F64;
-    default: return S::I64; // the time and date types: nanoseconds
+    case E::Bool:
+        return S::Bool;
+    case E::Sint:
+        return S::I8;
+    case E::Int:
+        return S::I16;
+    case E::Dint:
+        return S::I32;
+    case E::Lint:
+        return S::I64;
+    case E::Usint:
+    case E::Byte:
+    case E::Char:
+        return S::U8;
+    case E::Uint:
+    case E::Word:
+    case E::Wchar:
+        return S::U16;
+    case E::Udint:
+    case E::Dword:
+        return S::U32;
+    case E::Ulint:
+    case E::Lword:
+        return S::U64;
+    case E::Real:
+        return S::F32;
+    case E::Lreal:
+        return S::F64;
+    default:
+        return S::I64; // the time and date types: nanoseconds
     }
 }
 
+bool same_type(const Type& a, const Type& b) {
+    if (&a == &b) {
+        return true;
+    }
+    if (a.kind != TypeKind::Array || b.kind != TypeKind::Array || a.size != b.size ||
+        a.dimensions.size() != b.dimensions.size()) {
+        return false;
+    }
+    for (std::size_t d = 0; d < a.dimensions.size(); ++d) {
+        if (a.dimensions[d].lower != b.dimensions[d].lower ||
+            a.dimensions[d].count != b.dimensions[d].count) {
+            return false;
+        }
+    }
+    return same_type(*a.element, *b.element);
+}
+
 bool converts_implicitly(const Type& from, const Type& to) {
-    if (&from == &to) {
+    if (same_type(from, to)) {
         return true;
     }
     if (from.kind == TypeKind::Null) {

@@ -15,20 +15,38 @@ constexpr std::uint64_t kMaxTypeSize = 1U << 28;
 
 std::uint32_t elementary_size(E type) {
     switch (type) {
-    case E::Bool: case E::Sint: case E::Usint: case E::Byte: case E::Char: return 1;
-    case E::Int: case E::Uint: case E::Word: case E::Wchar: return 2;
-    case E::Dint: case E::Udint: case E::Dword: case E::Real: return 4;
-    default: return 8;
+    case E::Bool:
+    case E::Sint:
+    case E::Usint:
+    case E::Byte:
+    case E::Char:
+        return 1;
+    case E::Int:
+    case E::Uint:
+    case E::Word:
+    case E::Wchar:
+        return 2;
+    case E::Dint:
+    case E::Udint:
+    case E::Dword:
+    case E::Real:
+        return 4;
+    default:
+        return 8;
     }
 }
 
 } // namespace
 
 TypeTable::TypeTable(const SemanticModel& model, Diagnostics& diagnostics,
-                     std::function<const ast::Pou*(std::string_view)> library)
-    : model_(model), diagnostics_(diagnostics), library_(std::move(library)) {}
+                     std::function<const ast::Pou*(std::string_view)> library,
+                     std::function<bool(const ast::VariableDeclaration&)> is_constant)
+    : model_(model), diagnostics_(diagnostics), library_(std::move(library)),
+      is_constant_(std::move(is_constant)) {}
 
-Type& TypeTable::add(Type type) { return types_.emplace_back(std::move(type)); }
+Type& TypeTable::add(Type type) {
+    return types_.emplace_back(std::move(type));
+}
 
 const Type& TypeTable::elementary(E type) {
     if (type == E::String || type == E::Wstring) {
@@ -49,14 +67,15 @@ const Type& TypeTable::elementary(E type) {
 const Type& TypeTable::string(std::uint32_t capacity, bool wide) {
     auto& slot = strings_[{capacity, wide}];
     if (slot == nullptr) {
-        slot = &add({.kind = TypeKind::String,
-                     .name = fmt::format("{}[{}]", wide ? "WSTRING" : "STRING", capacity),
-                     .elementary = wide ? E::Wstring : E::String,
-                     .size = vm::stdlib::string_size(
-                         capacity, wide ? vm::stdlib::CharWidth::Wide : vm::stdlib::CharWidth::Narrow),
-                     .align = vm::stdlib::kStringAlign,
-                     .capacity = capacity,
-                     .wide = wide});
+        slot =
+            &add({.kind = TypeKind::String,
+                  .name = fmt::format("{}[{}]", wide ? "WSTRING" : "STRING", capacity),
+                  .elementary = wide ? E::Wstring : E::String,
+                  .size = vm::stdlib::string_size(capacity, wide ? vm::stdlib::CharWidth::Wide
+                                                                 : vm::stdlib::CharWidth::Narrow),
+                  .align = vm::stdlib::kStringAlign,
+                  .capacity = capacity,
+                  .wide = wide});
     }
     return *slot;
 }
@@ -144,7 +163,8 @@ const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& rang
     std::string bounds;
     for (const ast::ArrayDimension& dimension : spec.dimensions) {
         if (!dimension.bounds) {
-            diagnostics_.error(range, "ARRAY[*] is only allowed for VAR_IN_OUT (not supported yet)");
+            diagnostics_.error(range,
+                               "ARRAY[*] is only allowed for VAR_IN_OUT (not supported yet)");
             return nullptr;
         }
         const auto low = fold_integer(*dimension.bounds->low);
@@ -154,8 +174,9 @@ const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& rang
             return nullptr;
         }
         if (*high < *low || *low < INT32_MIN || *high > INT32_MAX) {
-            diagnostics_.error(dimension.bounds->low->range,
-                               fmt::format("array bounds {}..{} are empty or too large", *low, *high));
+            diagnostics_.error(
+                dimension.bounds->low->range,
+                fmt::format("array bounds {}..{} are empty or too large", *low, *high));
             return nullptr;
         }
         const auto n = static_cast<std::uint64_t>(*high - *low + 1);
@@ -188,8 +209,8 @@ void TypeTable::lay_out(Type& type,
         }
         for (const ast::Identifier& name : declaration.names) {
             offset = align_up(static_cast<std::uint32_t>(offset), member->align);
-            type.fields.push_back({name.name, member, static_cast<std::uint32_t>(offset),
-                                   sections[i], &declaration});
+            type.fields.push_back(
+                {name.name, member, static_cast<std::uint32_t>(offset), sections[i], &declaration});
             offset += member->size;
             type.align = std::max(type.align, member->align);
             if (offset > kMaxTypeSize) {
@@ -200,7 +221,6 @@ void TypeTable::lay_out(Type& type,
     }
     type.size = align_up(static_cast<std::uint32_t>(offset), type.align);
 }
-
 
 const Type* TypeTable::structure(const ast::StructType& spec) {
     Type type{.kind = TypeKind::Struct, .name = "STRUCT"};
@@ -375,7 +395,7 @@ std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expre
         }
         // A constant's value (VAR CONSTANT / VAR_GLOBAL CONSTANT) with a plain initial value.
         if (symbol->kind == SymbolKind::Variable && symbol->variable != nullptr &&
-            symbol->variable->initial_value) {
+            symbol->variable->initial_value && is_constant_(*symbol->variable)) {
             if (const auto* value =
                     std::get_if<ast::ExpressionPtr>(&symbol->variable->initial_value->value)) {
                 return fold_integer(**value);
@@ -404,15 +424,19 @@ std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expre
     const auto l = static_cast<std::uint64_t>(*left);
     const auto r = static_cast<std::uint64_t>(*right);
     switch (binary->op) {
-    case ast::BinaryOperator::Add: return static_cast<std::int64_t>(l + r);
-    case ast::BinaryOperator::Subtract: return static_cast<std::int64_t>(l - r);
-    case ast::BinaryOperator::Multiply: return static_cast<std::int64_t>(l * r);
+    case ast::BinaryOperator::Add:
+        return static_cast<std::int64_t>(l + r);
+    case ast::BinaryOperator::Subtract:
+        return static_cast<std::int64_t>(l - r);
+    case ast::BinaryOperator::Multiply:
+        return static_cast<std::int64_t>(l * r);
     case ast::BinaryOperator::Divide:
         return *right == 0 || (*left == INT64_MIN && *right == -1) ? std::nullopt
-                                                                    : std::optional(*left / *right);
+                                                                   : std::optional(*left / *right);
     case ast::BinaryOperator::Modulo:
         return *right == 0 || *right == -1 ? std::nullopt : std::optional(*left % *right);
-    default: return std::nullopt;
+    default:
+        return std::nullopt;
     }
 }
 

@@ -47,20 +47,20 @@ struct Type {
     ast::ElementaryType elementary = ast::ElementaryType::Bool; ///< Elementary, Enum (its base)
     std::uint32_t size = 0;
     std::uint32_t align = 1;
-    std::uint32_t capacity = 0;                   ///< String
-    bool wide = false;                            ///< String: WSTRING
-    const Type* element = nullptr;                ///< Array element, Reference target
-    std::vector<ArrayDimension> dimensions{};       ///< Array
-    std::vector<Field> fields{};                  ///< Struct, Instance
-    const ast::Pou* pou = nullptr;                ///< Instance
-    const Type* base = nullptr;                   ///< Instance: the FB it EXTENDS
+    std::uint32_t capacity = 0;               ///< String
+    bool wide = false;                        ///< String: WSTRING
+    const Type* element = nullptr;            ///< Array element, Reference target
+    std::vector<ArrayDimension> dimensions{}; ///< Array
+    std::vector<Field> fields{};              ///< Struct, Instance
+    const ast::Pou* pou = nullptr;            ///< Instance
+    const Type* base = nullptr;               ///< Instance: the FB it EXTENDS
     std::vector<std::pair<std::string, std::int64_t>> enumerators{}; ///< Enum
 
     /// The field `name` (case-insensitive), searching the base part too.
     const Field* field(std::string_view field_name) const;
 };
 
-bool is_integer(const Type& type);   ///< ANY_INT
+bool is_integer(const Type& type);    ///< ANY_INT
 bool is_bit_string(const Type& type); ///< ANY_BIT without BOOL
 bool is_real(const Type& type);       ///< ANY_REAL
 bool is_numeric(const Type& type);    ///< ANY_NUM
@@ -71,6 +71,10 @@ bool is_signed(const Type& type);
 bool is_scalar(const Type& type);
 /// The VM representation of a scalar type.
 vm::Scalar scalar_of(const Type& type);
+
+/// Whether two types are the same: the same object, or arrays of the same bounds and the
+/// same element type (array types are not interned, each declaration makes its own).
+bool same_type(const Type& a, const Type& b);
 
 /// IEC 61131-3 ed. 3, 6.6.1.6 figure 11: the implicit widening conversions. True when a value
 /// of `from` may be used where `to` is expected without a conversion function.

@@ -18,9 +18,11 @@ namespace eposp::compiler::sema {
 /// bounds, string lengths, enumeration values) are folded here.
 class TypeTable {
 public:
-    /// `library` finds the POU implementing a standard FB (`TON`) in the built-in library.
+    /// `library` finds the POU implementing a standard FB (`TON`) in the built-in library;
+    /// `is_constant` tells whether a declaration is in a CONSTANT section (only those fold).
     TypeTable(const SemanticModel& model, Diagnostics& diagnostics,
-              std::function<const ast::Pou*(std::string_view)> library);
+              std::function<const ast::Pou*(std::string_view)> library,
+              std::function<bool(const ast::VariableDeclaration&)> is_constant);
 
     const Type& elementary(ast::ElementaryType type);
     const Type& string(std::uint32_t capacity, bool wide);
@@ -57,6 +59,7 @@ private:
     const SemanticModel& model_;
     Diagnostics& diagnostics_;
     std::function<const ast::Pou*(std::string_view)> library_;
+    std::function<bool(const ast::VariableDeclaration&)> is_constant_;
     std::deque<Type> types_;
     std::map<ast::ElementaryType, const Type*> elementary_;
     std::map<std::pair<std::uint32_t, bool>, const Type*> strings_;

@@ -1,0 +1,38 @@
+#include "jump_threading.hpp"
+
+namespace eposp::compiler::codegen {
+
+namespace {
+
+/// Where a jump to `target` ends after following unconditional jumps (bounded: a cycle of
+/// jumps is never generated, but the bound keeps one from hanging the compiler).
+std::uint32_t final_target(const vm::Image& image, std::uint32_t target) {
+    for (int hops = 0;
+         hops < 16 && target < image.code.size() && image.code[target].opcode == vm::Opcode::Jmp;
+         ++hops) {
+        target = image.code[target].a;
+    }
+    return target;
+}
+
+} // namespace
+
+void thread_jumps(vm::Image& image) {
+    for (vm::Instruction& instruction : image.code) {
+        const vm::OpcodeInfo& info = vm::opcode_info(instruction.opcode);
+        std::uint32_t* fields[3] = {&instruction.a, &instruction.b, &instruction.c};
+        const vm::FieldSpec* specs[3] = {&info.a, &info.b, &info.c};
+        for (int i = 0; i < 3; ++i) {
+            if (specs[i]->field == vm::Field::Target) {
+                *fields[i] = final_target(image, *fields[i]);
+            }
+        }
+        // An unconditional jump to a return is the return (no fall-through to preserve).
+        if (instruction.opcode == vm::Opcode::Jmp && instruction.a < image.code.size() &&
+            image.code[instruction.a].opcode == vm::Opcode::Ret) {
+            instruction = image.code[instruction.a];
+        }
+    }
+}
+
+} // namespace eposp::compiler::codegen

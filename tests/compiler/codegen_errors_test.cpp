@@ -1,0 +1,159 @@
+// What the type checker refuses and warns about, with the message a PLC programmer reads, and
+// the run-time errors of generated code naming the POU and the line.
+#include "codegen_harness.hpp"
+
+#include <gtest/gtest.h>
+
+namespace eposp::compiler::test {
+namespace {
+
+struct Rejected {
+    std::string name;
+    std::string source;
+    std::string message; // a part of the rendered diagnostics
+};
+
+class TypeCheck : public testing::TestWithParam<Rejected> {};
+
+TEST_P(TypeCheck, ReportsTheError) {
+    const Rejected& c = GetParam();
+    StProgram run(c.source);
+    EXPECT_FALSE(run.ok());
+    EXPECT_NE(run.errors().find(c.message), std::string::npos) << run.errors();
+}
+
+std::string main_with(const std::string& declarations, const std::string& body) {
+    return "PROGRAM Main\nVAR " + declarations + " END_VAR\n" + body + "\nEND_PROGRAM\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Refused, TypeCheck,
+    testing::Values(
+        Rejected{"NarrowingAssignment", main_with("i : INT; d : DINT;", "i := d;"),
+                 "test.st:3:6: error: a DINT value cannot be used as INT (convert it with "
+                 "DINT_TO_INT)"},
+        Rejected{"RealToInteger", main_with("i : DINT;", "i := 1.5;"),
+                 "a LREAL value cannot be used as DINT"},
+        Rejected{"BoolArithmetic", main_with("b : BOOL; i : INT;", "i := i + b;"),
+                 "operands of types INT and BOOL do not match"},
+        Rejected{"IfNeedsBool", main_with("i : INT;", "IF i THEN i := 1; END_IF;"),
+                 "a INT value cannot be used as BOOL"},
+        Rejected{"AssignToConstant",
+                 "PROGRAM Main\nVAR CONSTANT k : INT := 1; END_VAR\nk := 2;\nEND_PROGRAM\n",
+                 "cannot be assigned here"},
+        Rejected{"AssignToInput",
+                 "FUNCTION_BLOCK F\nVAR_INPUT a : INT; END_VAR\na := 1;\nEND_FUNCTION_BLOCK\n",
+                 "cannot be assigned here"},
+        Rejected{"AssignToOutputOfInstance",
+                 "FUNCTION_BLOCK F\nVAR_OUTPUT q : INT; END_VAR\nq := 1;\nEND_FUNCTION_BLOCK\n" +
+                     main_with("f : F;", "f.q := 2;"),
+                 "cannot be assigned here"},
+        Rejected{"InternalOfInstance",
+                 "FUNCTION_BLOCK F\nVAR v : INT; END_VAR\nv := 1;\nEND_FUNCTION_BLOCK\n" +
+                     main_with("f : F; i : INT;", "i := f.v;"),
+                 "'v' is internal to 'F'"},
+        Rejected{"CaseDuplicateLabel",
+                 main_with("i : INT;", "CASE i OF 1..5: i := 0; 5: i := 1; END_CASE;"),
+                 "overlaps an earlier one"},
+        Rejected{"CaseSelectorType", main_with("r : REAL;", "CASE r OF 1: r := 0.0; END_CASE;"),
+                 "a CASE selector must be an integer or enumeration"},
+        Rejected{"ForVariableAssignedInBody",
+                 main_with("i : INT;", "FOR i := 1 TO 3 DO i := 5; END_FOR;"),
+                 "control variable of a FOR loop cannot be assigned"},
+        Rejected{"ForVariableMustBeInteger", main_with("r : REAL;", "FOR r := 1 TO 3 DO END_FOR;"),
+                 "must be a local integer variable"},
+        Rejected{"ForStepZero", main_with("i : INT;", "FOR i := 1 TO 3 BY 0 DO END_FOR;"),
+                 "BY must not be 0"},
+        Rejected{"ExitOutsideLoop", main_with("", "EXIT;"), "EXIT outside a loop"},
+        Rejected{"InOutNeedsVariable",
+                 "FUNCTION F : INT\nVAR_IN_OUT v : INT; END_VAR\nF := v;\nEND_FUNCTION\n" +
+                     main_with("i : INT;", "i := F(v := 3);"),
+                 "this expression is not a variable"},
+        Rejected{"InOutMustBeConnected",
+                 "FUNCTION F : INT\nVAR_IN_OUT v : INT; END_VAR\nF := v;\nEND_FUNCTION\n" +
+                     main_with("i : INT;", "i := F();"),
+                 "VAR_IN_OUT 'v' of 'F' must be connected"},
+        Rejected{"TooManyArguments",
+                 "FUNCTION F : INT\nVAR_INPUT a : INT; END_VAR\nF := a;\nEND_FUNCTION\n" +
+                     main_with("i : INT;", "i := F(1, 2);"),
+                 "too many arguments for 'F'"},
+        Rejected{"WrongOutput",
+                 "FUNCTION_BLOCK F\nVAR_INPUT a : INT; END_VAR\nEND_FUNCTION_BLOCK\n" +
+                     main_with("f : F; i : INT;", "f(a => i);"),
+                 "'a' is not an output of 'F'"},
+        Rejected{"FbCallNeedsFormalArguments",
+                 "FUNCTION_BLOCK F\nVAR_INPUT a : INT; END_VAR\nEND_FUNCTION_BLOCK\n" +
+                     main_with("f : F;", "f(1);"),
+                 "needs formal arguments"},
+        Rejected{"CallingAValue", main_with("i : INT;", "i(1);"), "cannot be called"},
+        Rejected{"ConstantIndexOutOfBounds", main_with("a : ARRAY[1..3] OF INT;", "a[4] := 1;"),
+                 "index 4 is outside"},
+        Rejected{"LiteralTooLarge", main_with("s : SINT;", "s := 300;"), "does not fit in SINT"},
+        Rejected{"StringToNumber", main_with("i : INT;", "i := 'abc';"),
+                 "a STRING[3] value cannot be used as INT"},
+        Rejected{"Recursion",
+                 "FUNCTION F : INT\nVAR_INPUT n : INT; END_VAR\nF := G(n);\nEND_FUNCTION\n"
+                 "FUNCTION G : INT\nVAR_INPUT n : INT; END_VAR\nG := F(n - 1);\nEND_FUNCTION\n",
+                 "recursion is not allowed"},
+        Rejected{"ManyErrorsInOneRun", main_with("i : INT; d : DINT;", "i := d;\ni := 1.5;"),
+                 "test.st:4:6"}),
+    [](const auto& c) { return c.param.name; });
+
+TEST(Warnings, UnusedUnreachableAndUnassignedResult) {
+    const std::string text = diagnostics_of(R"(
+FUNCTION F : INT
+  VAR_INPUT a : INT; END_VAR
+  VAR unused : INT; END_VAR
+  RETURN;
+  a := a;
+END_FUNCTION
+)");
+    EXPECT_NE(text.find("warning: variable 'unused' is never used"), std::string::npos) << text;
+    EXPECT_NE(text.find("warning: this statement is never executed"), std::string::npos) << text;
+    EXPECT_NE(text.find("warning: function 'F' never assigns its result"), std::string::npos)
+        << text;
+}
+
+TEST(RunTimeErrors, DivisionByZeroNamesThePouAndLine) {
+    StProgram run(R"(
+FUNCTION Ratio : DINT
+  VAR_INPUT a, b : DINT; END_VAR
+  Ratio := a / b;
+END_FUNCTION
+PROGRAM Main
+VAR r, zero : DINT; END_VAR
+r := Ratio(10, zero);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    EXPECT_FALSE(run.scans(1));
+    EXPECT_EQ(run.fault(), "division by zero in Ratio at line 4");
+}
+
+TEST(RunTimeErrors, IndexOutOfRange) {
+    StProgram run(R"(
+PROGRAM Main
+VAR a : ARRAY[1..3] OF INT; i : INT := 4; END_VAR
+a[i] := 1;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    EXPECT_FALSE(run.scans(1));
+    EXPECT_EQ(run.fault(), "array index out of range in Main at line 4");
+}
+
+TEST(Robustness, GarbageNeverCrashes) {
+    for (const char* source :
+         {"PROGRAM Main VAR x : INT; END_VAR x := x. ; END_PROGRAM",
+          "FUNCTION F : INT END_FUNCTION",
+          "PROGRAM Main VAR a : ARRAY[1..0] OF INT; END_VAR END_PROGRAM",
+          "TYPE T : STRUCT a : T; END_STRUCT; END_TYPE PROGRAM Main VAR t : T; END_VAR END_PROGRAM",
+          "PROGRAM Main VAR s : STRING[0]; END_VAR END_PROGRAM",
+          "PROGRAM Main VAR x : INT; END_VAR x := UNKNOWN(1) + y; END_PROGRAM"}) {
+        StProgram run(source);
+        EXPECT_FALSE(run.errors().empty()) << source;
+    }
+}
+
+} // namespace
+} // namespace eposp::compiler::test
