@@ -16,6 +16,11 @@ std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId>
     for (const FileId file : files) {
         units.push_back(parse(sources, file, diagnostics));
     }
+    // A file with syntax errors yields no declarations: resolving the others against it would
+    // only add errors about names that are in fact declared there.
+    if (diagnostics.has_errors()) {
+        return std::nullopt;
+    }
     const sema::SemanticModel model = sema::resolve(units, diagnostics);
 
     // The built-in library is parsed like a user file, so its errors would point into it.

@@ -10,6 +10,7 @@ namespace eposp::device {
 namespace {
 
 using testing::HasSubstr;
+using testing::Not;
 
 constexpr const char* kConfiguration = "CONFIGURATION Config0\n"
                                        "  VAR_GLOBAL total : DINT; END_VAR\n"
@@ -48,6 +49,19 @@ TEST(CheckCommand, SyntaxErrorExitsWithOne) {
     const auto result = eposp("check " + main);
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_THAT(result.output, HasSubstr(main + ":2:"));
+}
+
+TEST(CheckCommand, SyntaxErrorInOneFileIsTheOnlyErrorReported) {
+    const std::string main = write_source("main.st", "PROGRAM Main\n"
+                                                     "  VAR_EXTERNAL total : DINT; END_VAR\n"
+                                                     "  total := ;\n"
+                                                     "END_PROGRAM\n");
+    const std::string config = write_source("config.st", kConfiguration);
+    const auto result = eposp("check " + main + " " + config);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr(main + ":3:"));
+    // Main is declared, in the file that did not parse: no "unknown program type 'Main'".
+    EXPECT_THAT(result.output, Not(HasSubstr(config)));
 }
 
 TEST(CheckCommand, MissingFileIsAUserError) {
