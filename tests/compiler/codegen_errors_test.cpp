@@ -73,6 +73,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "FUNCTION F : INT\nVAR_IN_OUT v : INT; END_VAR\nF := v;\nEND_FUNCTION\n" +
                      main_with("i : INT;", "i := F();"),
                  "VAR_IN_OUT 'v' of 'F' must be connected"},
+        Rejected{"FbInOutMustBeConnectedInEveryCall",
+                 "FUNCTION_BLOCK F\nVAR_INPUT a : INT; END_VAR\nVAR_IN_OUT v : INT; END_VAR\n"
+                 "v := a;\nEND_FUNCTION_BLOCK\n" +
+                     main_with("f : F; i : INT;", "f(a := 1, v := i);\nf(a := 2);"),
+                 "VAR_IN_OUT 'v' of 'F' must be connected"},
         Rejected{"TooManyArguments",
                  "FUNCTION F : INT\nVAR_INPUT a : INT; END_VAR\nF := a;\nEND_FUNCTION\n" +
                      main_with("i : INT;", "i := F(1, 2);"),

@@ -303,11 +303,13 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
     const std::uint32_t index = program_.pou_index(*type.pou);
     program_.calls(pou_, *type.pou);
     std::vector<std::pair<const sema::Field*, const ast::Argument*>> outputs;
+    std::vector<const sema::Field*> connected;
     for (const ast::Argument& argument : node.arguments) {
         if (is_named(argument, "EN") || is_named(argument, "ENO")) {
             continue;
         }
         const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
+        connected.push_back(field);
         if (field == nullptr) {
             error(argument.range,
                   argument.name
@@ -347,6 +349,15 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             }
         } else if (const auto value = value_as(*argument.value, *field->type)) {
             store(slot, *value);
+        }
+    }
+    // An in-out is a reference the instance keeps only for the call: every call connects it
+    // (as CODESYS requires), or the body would work through a stale or NULL reference.
+    for (const sema::Field& field : type.fields) {
+        if (field.section == ast::VarSectionKind::InOut &&
+            std::find(connected.begin(), connected.end(), &field) == connected.end()) {
+            error(node.callee->range,
+                  fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", field.name, type.name));
         }
     }
     if (instance.kind == Place::Kind::Direct) {
