@@ -242,24 +242,25 @@ AbortCode ObjectDictionary::write(std::uint16_t index, std::uint8_t sub_index,
     return AbortCode::None;
 }
 
-Bytes ObjectDictionary::get(std::uint16_t index, std::uint8_t sub_index) const {
+const SubObject& ObjectDictionary::existing(std::uint16_t index, std::uint8_t sub_index) const {
     const SubObject* sub = find(index, sub_index);
     if (sub == nullptr) {
         throw std::out_of_range(
             fmt::format("object {:04X}sub{:X} does not exist", index, sub_index));
     }
-    return sub->on_read ? sub->on_read() : sub->value;
+    return *sub;
+}
+
+Bytes ObjectDictionary::get(std::uint16_t index, std::uint8_t sub_index) const {
+    const SubObject& sub = existing(index, sub_index);
+    return sub.on_read ? sub.on_read() : sub.value;
 }
 
 void ObjectDictionary::set(std::uint16_t index, std::uint8_t sub_index,
                            std::span<const std::uint8_t> value) {
-    SubObject* sub = find(index, sub_index);
-    if (sub == nullptr) {
-        throw std::out_of_range(
-            fmt::format("object {:04X}sub{:X} does not exist", index, sub_index));
-    }
-    require_fits(sub->type, value.size(), index, sub_index);
-    sub->value.assign(value.begin(), value.end());
+    auto& sub = const_cast<SubObject&>(existing(index, sub_index));
+    require_fits(sub.type, value.size(), index, sub_index);
+    sub.value.assign(value.begin(), value.end());
     notify(index, sub_index);
 }
 

@@ -127,11 +127,13 @@ public:
 
     template <typename T>
     T get_as(std::uint16_t index, std::uint8_t sub_index) const {
-        return decode<T>(get(index, sub_index));
+        // Decoded in place: the device reads its objects every control period.
+        const SubObject& entry = existing(index, sub_index);
+        return entry.on_read ? decode<T>(entry.on_read()) : decode<T>(entry.value);
     }
     template <typename T>
     void set_as(std::uint16_t index, std::uint8_t sub_index, T value) {
-        set(index, sub_index, encode(value));
+        set(index, sub_index, encode_array(value));
     }
 
     /// Tells `listener` of every change of a value at `index` (any sub-index), by write() or set().
@@ -142,6 +144,8 @@ public:
     void reset_to_defaults();
 
 private:
+    /// The sub-object, or std::out_of_range.
+    const SubObject& existing(std::uint16_t index, std::uint8_t sub_index) const;
     void notify(std::uint16_t index, std::uint8_t sub_index) const;
 
     std::map<std::uint16_t, Object> objects_;
