@@ -68,6 +68,7 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     set_default(0x60FB, 2, gain(gains.position.ki, 1e-3));
     set_default(0x60FB, 3, gain(gains.position.kd, 1e-4));
     read_counts_per_turn();
+    read_input_mask();
     watch_dictionary();
     node_.on_reset_application([this] { reset_application(); });
 }
@@ -96,6 +97,11 @@ void Epos2Drive::watch_dictionary() {
     });
     od.on_change(0x6060, [this](std::uint16_t, std::uint8_t) { on_mode_written(); });
     od.on_change(0x2210, [this](std::uint16_t, std::uint8_t) { read_counts_per_turn(); });
+    od.on_change(0x2071, [this](std::uint16_t, std::uint8_t sub) {
+        if (sub == 2) {
+            read_input_mask();
+        }
+    });
     for (const std::uint16_t option_code :
          std::array<std::uint16_t, 4>{0x6007, 0x605B, 0x605C, 0x605E}) {
         od.on_change(option_code, [this](std::uint16_t, std::uint8_t) { read_option_codes(); });
@@ -134,6 +140,7 @@ void Epos2Drive::watch_dictionary() {
 // Power-on and NMT reset node (transition 19, then 0 and 1 of table 3-5).
 void Epos2Drive::reset_application() {
     read_counts_per_turn();
+    read_input_mask();
     read_option_codes();
     published_.reset(); // the reset stored the defaults behind the computed objects
     device_control_.node_reset();
@@ -465,7 +472,7 @@ std::uint16_t Epos2Drive::digital_input_states() const {
         states |= kPositiveLimitInput;
     if (switches.home)
         states |= kHomeSwitchInput;
-    return states == 0 ? 0 : states & dictionary_.objects().get_as<std::uint16_t>(0x2071, 2);
+    return states & input_mask_;
 }
 
 // The computed objects (8.2.86, 8.2.92 - 8.2.97, 8.2.57), stored when they change so that the
@@ -545,6 +552,11 @@ void Epos2Drive::read_option_codes() {
                                       .shutdown = od.get_as<std::int16_t>(0x605B, 0),
                                       .disable_operation = od.get_as<std::int16_t>(0x605C, 0),
                                       .fault_reaction = od.get_as<std::int16_t>(0x605E, 0)});
+}
+
+// 8.2.57: read when written, not each time the switches are sampled.
+void Epos2Drive::read_input_mask() {
+    input_mask_ = dictionary_.objects().get_as<std::uint16_t>(0x2071, 2);
 }
 
 // 8.2.74: quadcounts are four per encoder pulse.

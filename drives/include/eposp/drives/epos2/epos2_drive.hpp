@@ -86,6 +86,7 @@ private:
     double seconds() const;
     void read_counts_per_turn();
     void read_option_codes();
+    void read_input_mask();
     double rpm_to_counts(double rpm) const { return rpm * counts_per_turn_ / 60.0; }
     double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn_; }
     std::int64_t position_actual() const { return axis_.position_actual() + position_offset_; }
@@ -117,6 +118,7 @@ private:
     std::optional<std::int64_t> index_latch_; ///< an index pulse since the last control period
     double counts_per_turn_ = 0;              ///< 4 × 0x2210 sub 1
     std::uint16_t limit_inputs_before_ = 0;   ///< 0x2071 sub 1 in the last control period
+    std::uint16_t input_mask_ = 0;            ///< 0x2071 sub 2
 
     /// The computed objects as last stored (none yet after a reset).
     struct PublishedValues {
