@@ -32,8 +32,9 @@ enum class OperatingMode : std::int8_t { ProfilePosition = 1, ProfileVelocity = 
 
 struct Epos2DriveConfig {
     Epos2DictionaryConfig dictionary;
-    /// Motor, load, encoder pulses, switches and the controller gains. The pulses and gains are
-    /// written into 0x2210, 0x60F6, 0x60F9 and 0x60FB as their defaults.
+    /// Motor, load, power stage, encoder pulses, switches and the controller gains. The pulses,
+    /// gains, motor type, pole pairs and current limit become the defaults of 0x2210, 0x60F6,
+    /// 0x60F9, 0x60FB, 0x6402 and 0x6410; the dictionary configures the plant from then on.
     plant::AxisParameters axis = plant::reference_axis();
 };
 
@@ -61,7 +62,15 @@ public:
     motion::DriveState state() const { return device_control_.state(); }
     const plant::ServoAxis& axis() const { return axis_; }
 
+    /// The simulated power supply: the drive checks it against the power stage's limits
+    /// (undervoltage 0x3220, overvoltage 0x3210) every control period.
+    void set_supply_voltage(double volts);
+
 private:
+    static Epos2DictionaryConfig with_restore_rule(Epos2DictionaryConfig config, Epos2Drive& drive);
+    void configure_axis();
+    void watch_power_stage(bool overcurrent);
+    std::optional<std::uint16_t> supply_error() const;
     void watch_dictionary();
     void reset_application();
     void on_controlword(std::uint16_t controlword);
@@ -94,6 +103,7 @@ private:
     core::EventLoop& loop_;
     Epos2Dictionary dictionary_;
     canopen::Node node_;
+    plant::AxisParameters machine_; ///< what the dictionary does not configure (see configure_axis)
     plant::ServoAxis axis_;
     motion::DeviceControl device_control_;
     motion::ProfilePositionGenerator position_profile_;
