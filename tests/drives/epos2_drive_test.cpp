@@ -37,6 +37,26 @@ TEST_F(Epos2DriveOnBus, ProfilePositionMoveByPdoReachesTargetAtTheTrapezoidTime)
     EXPECT_EQ(read<std::int32_t>(0x6064, 0), tpdos.back().position);
 }
 
+// 5.3.1, figure 5-9: the same move with sin² ramps (0x6086 = 1). The profile acceleration is
+// the peak, so each ramp lasts 2·v/a and covers v²/a: the move takes 2·v/a + d/v = 0.8 s.
+TEST_F(Epos2DriveOnBus, SinSquaredMoveByPdoReachesTargetAtTheClosedFormTime) {
+    write(0x6086, 0, encode(std::int16_t{1}));
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint | kChangeImmediately, 20000);
+    const double commanded = now();
+    run_with_sync(5ms);
+    controlword_and_target(kEnableOperation, 20000);
+    run_with_sync(1000ms);
+
+    const double v = 1000.0 * 2000 / 60;
+    const double a = 10000.0 * 2000 / 60;
+    const double move_time = 2 * v / a + 20000 / v;
+    const std::optional<Tpdo> reached = first_tpdo_with(0x0400, commanded + 0.01);
+    ASSERT_TRUE(reached.has_value());
+    EXPECT_NEAR(reached->time - commanded, move_time, 0.002); // one control period + one SYNC
+    EXPECT_NEAR(tpdos.back().position, 20000, 5);
+}
+
 // 8.2.85: a relative target adds to the last target.
 TEST_F(Epos2DriveOnBus, RelativeMoveAddsToThePosition) {
     configure_and_enable(1);
