@@ -81,6 +81,31 @@ TEST_F(Epos2DriveOnBus, ProfileVelocityReachesTheTargetVelocity) {
     EXPECT_EQ(tpdos.back().statusword & 0x1000, 0) << "speed no longer 0";
 }
 
+// 8.2.44 - 8.2.48, 8.2.51, 8.2.71, 8.2.97: the measured values a master reads, at a steady
+// 500 rpm (16 667 qc/s at 2000 qc/turn). The load's friction takes about 45 mA. Instant values
+// are compared at one instant (the dictionary without a bus round trip).
+TEST_F(Epos2DriveOnBus, MeasuredValuesFollowTheMotion) {
+    configure_and_enable(3);
+    write(0x60FF, 0, encode(std::int32_t{500}));
+    run_with_sync(1000ms);
+    EXPECT_NEAR(read<std::int32_t>(0x6069, 0), 16667, 1000); // qc/s, measured per ms
+    EXPECT_NEAR(read<std::int32_t>(0x2028, 0), 500, 10);     // rpm, 5 Hz low-pass
+    EXPECT_NEAR(read<std::int16_t>(0x2027, 0), 45, 30);      // mA, 50 Hz low-pass
+    EXPECT_EQ(read<std::uint16_t>(0x2022, 0), 0U) << "a DC motor has no hall sensors";
+    const auto index_count = static_cast<std::int32_t>(read<std::uint32_t>(0x2021, 0));
+    EXPECT_GT(index_count, 0);
+    EXPECT_LE(index_count % 2000, 2) << "the index sits at a whole turn";
+
+    canopen::ObjectDictionary& od = drive.objects();
+    EXPECT_EQ(static_cast<std::int32_t>(od.get_as<std::uint32_t>(0x2020, 0)),
+              od.get_as<std::int32_t>(0x6064, 0))
+        << "the raw counter is the position without a homing offset";
+    EXPECT_EQ(od.get_as<std::int32_t>(0x2031, 0),
+              std::lround(drive.axis().current_demand() * 1000));
+    EXPECT_EQ(od.get_as<std::int16_t>(0x20F4, 0),
+              od.get_as<std::int32_t>(0x6062, 0) - od.get_as<std::int32_t>(0x6064, 0));
+}
+
 // 8.2.90: the modes this simulation does not run yet are refused.
 TEST_F(Epos2DriveOnBus, ModesNotYetSimulatedAreRefused) {
     std::optional<AbortCode> result;

@@ -7,9 +7,11 @@
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/statusword_bits.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace eposp::drives::epos2 {
 namespace {
@@ -57,6 +59,7 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     read_counts_per_turn();
     read_input_mask();
     watch_dictionary();
+    compute_measured_values();
     node_.on_reset_application([this] { reset_application(); });
     // 4.2.18: the CAN controller going bus-off is an "a" error.
     node_.on_controller_state([this](can::ErrorState state) {
@@ -108,6 +111,43 @@ Epos2Drive::~Epos2Drive() = default;
 
 void Epos2Drive::start() {
     node_.start();
+}
+
+// 8.2.44 - 8.2.48, 8.2.51, 8.2.71, 8.2.97: measured values computed when read (SDO, and TPDOs
+// when they sample), so that the 1 ms loop does not store what nobody reads. A change of them
+// alone does not trigger an event-driven TPDO.
+void Epos2Drive::compute_measured_values() {
+    auto& od = dictionary_.objects();
+    const auto computed = [&od](std::uint16_t index, auto read) {
+        od.find(index, 0)->on_read = [read] {
+            return canopen::encode(read());
+        };
+    };
+    const auto rounded = [](double value) {
+        return std::lround(value);
+    };
+    // The raw counter register (8.2.44, 8.2.45), modulo 2^32.
+    computed(0x2020, [this] { return static_cast<std::uint32_t>(axis_.position_actual()); });
+    computed(0x2021, [this] { return static_cast<std::uint32_t>(counter_at_index_); });
+    computed(0x2022, [this] { return std::uint16_t{axis_.hall_sensors()}; });
+    computed(0x2027, [this, rounded] {
+        return static_cast<std::int16_t>(rounded(current_averaged_.output() * 1000));
+    });
+    computed(0x2028, [this, rounded] {
+        return static_cast<std::int32_t>(rounded(velocity_averaged_.output()));
+    });
+    computed(0x2031, [this, rounded] {
+        return static_cast<std::int32_t>(rounded(axis_.current_demand() * 1000));
+    });
+    computed(0x20F4, [this, rounded] {
+        const double error = last_demand_.position - static_cast<double>(position_actual());
+        using Limits = std::numeric_limits<std::int16_t>;
+        return static_cast<std::int16_t>(
+            std::clamp<long>(rounded(error), Limits::min(), Limits::max()));
+    });
+    computed(0x6069, [this, rounded] {
+        return static_cast<std::int32_t>(rounded(axis_.velocity_actual()));
+    });
 }
 
 void Epos2Drive::watch_dictionary() {
@@ -343,10 +383,13 @@ void Epos2Drive::control_period() {
         axis_.step();
         if (axis_.index_passed()) {
             index_latch_ = position_actual();
+            counter_at_index_ = axis_.position_actual();
         }
+        current_averaged_.update(axis_.current_actual());
         overcurrent_seen = overcurrent_seen || std::abs(axis_.current_actual()) > overcurrent;
     }
     watch_power_stage(overcurrent_seen);
+    velocity_averaged_.update(counts_to_rpm(axis_.velocity_actual()));
     last_demand_ = demand;
     watch_motion(now, demand);
     publish(demand);

@@ -14,6 +14,7 @@
 #include "eposp/drives/motion/standstill_monitor.hpp"
 #include "eposp/drives/motion/target_reached_monitor.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
+#include "eposp/drives/plant/low_pass_filter.hpp"
 #include "eposp/drives/plant/reference_axis.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
 
@@ -72,6 +73,7 @@ private:
     void watch_power_stage(bool overcurrent);
     std::optional<std::uint16_t> supply_error() const;
     void watch_dictionary();
+    void compute_measured_values();
     void reset_application();
     void on_controlword(std::uint16_t controlword);
     void on_mode_written();
@@ -129,6 +131,10 @@ private:
     double counts_per_turn_ = 0;              ///< 4 × 0x2210 sub 1
     std::uint16_t limit_inputs_before_ = 0;   ///< 0x2071 sub 1 in the last control period
     std::uint16_t input_mask_ = 0;            ///< 0x2071 sub 2
+    std::int64_t counter_at_index_ = 0;       ///< 0x2021: the raw encoder counter
+    /// 8.2.47: the current filtered at 50 Hz every 0.1 ms; 8.2.48: the velocity at 5 Hz every ms.
+    plant::LowPassFilter current_averaged_{50, plant::ServoAxis::kCurrentLoopPeriod};
+    plant::LowPassFilter velocity_averaged_{5, plant::ServoAxis::kOuterLoopPeriod};
 
     /// The computed objects as last stored (none yet after a reset).
     struct PublishedValues {
