@@ -43,9 +43,12 @@ struct Epos2DriveConfig {
 /// CiA 402 device control, Profile Position, Profile Velocity and Homing Mode, and the motor
 /// model, stepped on the event loop (EPOS2 FW spec 5.9: current loop every 0.1 ms, position and
 /// velocity loops every 1 ms). The master sees only the dictionary: controlword, mode and
-/// profile objects written by SDO or RPDO act through change listeners; the computed objects
-/// (statusword, actual values, digital inputs) are stored each millisecond when they change, so
-/// that SDO, synchronous and event-driven TPDOs read them alike.
+/// profile objects written by SDO or RPDO act through change listeners, and so do the encoder,
+/// gains and motor data, which reconfigure the running plant; the computed objects (statusword,
+/// actual values, digital inputs) are stored each millisecond when they change, so that SDO,
+/// synchronous and event-driven TPDOs read them alike, and the further measured values (encoder
+/// counter, averaged values, current demand, following error) are computed when read. The power
+/// stage's supervision and the CAN controller's bus-off raise their errors of table 4-11.
 ///
 /// Neither copyable nor movable: the dictionary's listeners refer to it.
 class Epos2Drive {
