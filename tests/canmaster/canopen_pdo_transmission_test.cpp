@@ -462,6 +462,24 @@ TEST_F(RpdoReception, IgnoresRemoteFramesOtherIdsAndItsIdWhileInvalid) {
     EXPECT_TRUE(node.emcy.empty());
 }
 
+// The service skips frames that are no PDO's: a COB-ID changed later (invalid, new identifier,
+// valid again) must be heard on the new identifier and no longer on the old one.
+TEST_F(RpdoReception, CobIdChangedLaterIsReceivedOnTheNewIdentifier) {
+    configure_rpdo({0x205, kEventDrivenProfile, {kControlword}});
+    node.operational();
+    node.send("205#0100");
+    node.run_for(milliseconds(1));
+    ASSERT_EQ(node.od.get_as<std::uint16_t>(0x6040, 0), 0x0001);
+    ASSERT_EQ(testing::write_as(node.od, 0x1400, 1, 0x8000'0321U), AbortCode::None);
+    ASSERT_EQ(testing::write_as(node.od, 0x1400, 1, 0x0000'0321U), AbortCode::None);
+    node.send("205#0200");
+    node.run_for(milliseconds(1));
+    EXPECT_EQ(node.od.get_as<std::uint16_t>(0x6040, 0), 0x0001);
+    node.send("321#0F00");
+    node.run_for(milliseconds(1));
+    EXPECT_EQ(node.od.get_as<std::uint16_t>(0x6040, 0), 0x000F);
+}
+
 TEST_F(RpdoReception, With29BitCobIdTakesExtendedFrames) {
     configure_rpdo({PdoCobId::kExtended | 0x0123'4567, kEventDrivenProfile, {kControlword}});
     node.operational();

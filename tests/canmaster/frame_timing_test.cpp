@@ -152,5 +152,35 @@ TEST(FrameTiming, RandomFramesStayWithinTheKnownBounds) {
     }
 }
 
+// frame_length() packs the bits into words for speed; it must count exactly what the bit-level
+// reference stuff(unstuffed_bits()) produces, remote frames and all-equal payloads included.
+TEST(FrameTiming, FrameLengthMatchesTheBitLevelReference) {
+    std::mt19937 random(4321);
+    std::uniform_int_distribution<std::uint32_t> word;
+    for (int i = 0; i < 20'000; ++i) {
+        const bool extended = (i % 2) == 1;
+        const auto n = static_cast<std::uint8_t>(word(random) % 9);
+        std::array<std::uint8_t, kMaxDataLength> data{};
+        const std::uint32_t fill = word(random) % 4; // 0 and 3: runs of equal bits
+        for (auto& byte : data) {
+            byte = static_cast<std::uint8_t>(fill == 0 ? 0x00 : fill == 3 ? 0xFF : word(random));
+        }
+        const std::uint32_t id = word(random) & (extended ? kMaxExtendedId : kMaxStandardId);
+        const Frame frame = (i % 7) == 0
+                                ? Frame::remote_frame(id, n, extended)
+                                : Frame::data_frame(id, std::span(data.data(), n), extended);
+        const StuffedBits reference = stuff(unstuffed_bits(frame));
+        std::size_t trailing = 0;
+        while (trailing < reference.bits.size() &&
+               reference.bits[reference.bits.size() - 1 - trailing]) {
+            ++trailing;
+        }
+        const FrameLength length = frame_length(frame);
+        ASSERT_EQ(length.stuffed, reference.bits.size()) << i;
+        ASSERT_EQ(length.stuff_bits, reference.stuff_bits) << i;
+        ASSERT_EQ(length.trailing_recessive, trailing) << i;
+    }
+}
+
 } // namespace
 } // namespace eposp::can

@@ -1,6 +1,7 @@
 // `eposp drive epos2` run as a user runs it.
 #include "eposp_command.hpp"
 
+#include <fstream>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -34,6 +35,25 @@ TEST(DriveCommand, VirtualRunWithoutDurationIsAUserError) {
 TEST(DriveCommand, NodeIdOutsideOneTo127IsRefused) {
     EXPECT_EQ(eposp("drive epos2 --node-id 128 --virtual --for 1ms").exit_code, 1);
     EXPECT_EQ(eposp("drive epos2 --node-id 0 --virtual --for 1ms").exit_code, 1);
+}
+
+// docs/epos2.md: the machine of examples/epos2-drive, and a file with a typo.
+TEST(DriveCommand, ConfigFileDescribesTheMachine) {
+    const std::string example =
+        std::string(EPOSP_SOURCE_DIR) + "/examples/epos2-drive/linear-axis.yaml";
+    const auto result =
+        eposp("drive epos2 --node-id 3 --config " + example + " --virtual --for 100ms");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("epos2: node 3 on bus can0"));
+}
+
+TEST(DriveCommand, BadConfigFileIsAUserErrorWithItsPlace) {
+    const auto file = scratch("motor.yaml");
+    std::ofstream(file) << "motor:\n  resistence: 2.18\n";
+    const auto result = eposp("drive epos2 --config " + file.string() + " --virtual --for 1ms");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("motor.yaml:2:3: error: unknown key 'resistence'"));
+    EXPECT_EQ(eposp("drive epos2 --config /nonexistent.yaml --virtual --for 1ms").exit_code, 1);
 }
 
 } // namespace

@@ -1,161 +1,17 @@
 // A simulated EPOS2 driven purely through CAN frames, the way a CANopen master configures and
 // moves a real one: NMT, SDO writes of the mode and profile, controlword and target by RPDO,
 // statusword and position by TPDO on SYNC, EMCY on errors. All in virtual time.
-#include "eposp/canmaster/can/virtual_bus.hpp"
-#include "eposp/canmaster/canopen/nmt_protocol.hpp"
-#include "eposp/canmaster/canopen/sdo_client.hpp"
-#include "eposp/drives/epos2/epos2_drive.hpp"
-#include "plant_test_motor.hpp"
+#include "epos2_bus_fixture.hpp"
 
-#include <chrono>
-#include <cmath>
-#include <fmt/format.h>
-#include <gtest/gtest.h>
-#include <optional>
 #include <set>
-#include <vector>
 
 namespace eposp::drives::epos2 {
 namespace {
 
+using namespace test;
 using namespace std::chrono_literals;
 using canopen::AbortCode;
 using canopen::encode;
-
-constexpr canopen::NodeId kNode = 2;
-constexpr std::uint32_t kSyncId = 0x080;
-constexpr std::uint32_t kEmcyId = 0x080 + kNode;
-constexpr std::uint32_t kRpdo1Id = 0x200 + kNode; // controlword (8.2.18)
-constexpr std::uint32_t kRpdo3Id = 0x400 + kNode; // controlword, target position (8.2.20)
-constexpr std::uint32_t kTpdo3Id = 0x380 + kNode; // statusword, position actual (8.2.28)
-
-// Table 3-4 under the mask of CiA 402 (bits 0-3, 5, 6).
-constexpr std::uint16_t kStateMask = 0x006F;
-constexpr std::uint16_t kOperationEnabled = 0x0027;
-constexpr std::uint16_t kSwitchOnDisabled = 0x0040;
-constexpr std::uint16_t kFault = 0x0008;
-
-// Table 3-6.
-constexpr std::uint16_t kShutdown = 0x0006;
-constexpr std::uint16_t kSwitchOn = 0x0007;
-constexpr std::uint16_t kEnableOperation = 0x000F;
-constexpr std::uint16_t kFaultReset = 0x0080;
-constexpr std::uint16_t kNewSetpoint = 0x0010;
-constexpr std::uint16_t kChangeImmediately = 0x0020;
-
-struct Tpdo {
-    double time = 0; ///< seconds of virtual time
-    std::uint16_t statusword = 0;
-    std::int32_t position = 0;
-};
-
-Epos2DriveConfig drive_config(plant::AxisParameters axis) {
-    Epos2DriveConfig config;
-    config.dictionary.node_id = kNode;
-    config.axis = axis;
-    return config;
-}
-
-class Epos2DriveOnBus : public ::testing::Test {
-protected:
-    explicit Epos2DriveOnBus(plant::AxisParameters axis = plant::test::tuned_axis())
-        : drive(loop, *device, drive_config(axis)) {
-        master->on_receive([this](const can::Frame& frame) { receive(frame); });
-        drive.start();
-        loop.run_for(10ms);
-    }
-
-    double now() const {
-        return std::chrono::duration<double>(loop.now().time_since_epoch()).count();
-    }
-    void receive(const can::Frame& frame) {
-        client.on_frame(frame);
-        if (frame.id == kTpdo3Id) {
-            tpdos.push_back({now(), canopen::decode<std::uint16_t>(frame.payload().subspan(0, 2)),
-                             canopen::decode<std::int32_t>(frame.payload().subspan(2, 4))});
-        } else if (frame.id == kEmcyId) {
-            emcys.emplace_back(frame.payload().begin(), frame.payload().end());
-        }
-    }
-
-    void write(std::uint16_t index, std::uint8_t sub, canopen::Bytes value) {
-        std::optional<AbortCode> result;
-        client.download(kNode, index, sub, std::move(value),
-                        [&result](AbortCode code) { result = code; });
-        loop.run_for(20ms);
-        ASSERT_EQ(result, AbortCode::None) << fmt::format("0x{:04X} sub {}", index, sub);
-    }
-    template <typename T>
-    T read(std::uint16_t index, std::uint8_t sub) {
-        std::optional<canopen::Bytes> value;
-        client.upload(kNode, index, sub, [&value](AbortCode code, canopen::Bytes bytes) {
-            EXPECT_EQ(code, AbortCode::None);
-            value = std::move(bytes);
-        });
-        loop.run_for(20ms);
-        EXPECT_TRUE(value.has_value());
-        return canopen::decode<T>(value.value_or(canopen::Bytes(sizeof(T))));
-    }
-
-    void nmt(canopen::NmtCommand command) {
-        master->send(can::Frame::data_frame(canopen::kNmtCanId,
-                                            {static_cast<std::uint8_t>(command), kNode}));
-        loop.run_for(5ms);
-    }
-    void controlword(std::uint16_t word) {
-        master->send(can::Frame::data_frame(kRpdo1Id, {static_cast<std::uint8_t>(word & 0xFF),
-                                                       static_cast<std::uint8_t>(word >> 8)}));
-    }
-    void controlword_and_target(std::uint16_t word, std::int32_t target) {
-        const canopen::Bytes t = encode(target);
-        master->send(can::Frame::data_frame(kRpdo3Id, {static_cast<std::uint8_t>(word & 0xFF),
-                                                       static_cast<std::uint8_t>(word >> 8), t[0],
-                                                       t[1], t[2], t[3]}));
-    }
-    /// The master's SYNC every millisecond for `duration`.
-    void run_with_sync(std::chrono::milliseconds duration) {
-        for (auto elapsed = 0ms; elapsed < duration; elapsed += 1ms) {
-            master->send(can::Frame::data_frame(kSyncId, {}));
-            loop.run_for(1ms);
-        }
-    }
-
-    /// What a master does to a fresh EPOS2: TPDO 3 on every SYNC, NMT start, profile
-    /// parameters, enable by RPDO.
-    void configure_and_enable(std::int8_t mode) {
-        write(0x1802, 2, encode(std::uint8_t{1}));                       // synchronous, every SYNC
-        write(0x1802, 1, encode(std::uint32_t{0x4000'0000 | kTpdo3Id})); // valid, no RTR
-        write(0x6060, 0, encode(mode));
-        write(0x6081, 0, encode(std::uint32_t{1000}));  // rpm
-        write(0x6083, 0, encode(std::uint32_t{10000})); // rpm/s
-        write(0x6084, 0, encode(std::uint32_t{10000}));
-        nmt(canopen::NmtCommand::Start);
-        for (const std::uint16_t word : {kShutdown, kSwitchOn, kEnableOperation}) {
-            controlword(word);
-            run_with_sync(10ms);
-        }
-        ASSERT_FALSE(tpdos.empty());
-        ASSERT_EQ(tpdos.back().statusword & kStateMask, kOperationEnabled);
-    }
-
-    std::optional<Tpdo> first_tpdo_with(std::uint16_t bit, double after) const {
-        for (const Tpdo& tpdo : tpdos) {
-            if (tpdo.time > after && (tpdo.statusword & bit) != 0) {
-                return tpdo;
-            }
-        }
-        return std::nullopt;
-    }
-
-    core::EventLoop loop;
-    can::VirtualBus bus{loop};
-    std::unique_ptr<can::VirtualPort> device = bus.connect("epos2");
-    std::unique_ptr<can::VirtualPort> master = bus.connect("master");
-    canopen::SdoClient client{loop, *master};
-    Epos2Drive drive;
-    std::vector<Tpdo> tpdos;
-    std::vector<std::vector<std::uint8_t>> emcys;
-};
 
 // 5.3: an absolute move of 20000 qc at 1000 rpm, 10000 rpm/s on a 500-pulse encoder
 // (2000 qc/turn): v = 33 333 qc/s, a = 333 333 qc/s², so 0.1 s ramps and 0.5 s cruise.
@@ -181,6 +37,26 @@ TEST_F(Epos2DriveOnBus, ProfilePositionMoveByPdoReachesTargetAtTheTrapezoidTime)
     EXPECT_EQ(read<std::int32_t>(0x6064, 0), tpdos.back().position);
 }
 
+// 5.3.1, figure 5-9: the same move with sin² ramps (0x6086 = 1). The profile acceleration is
+// the peak, so each ramp lasts 2·v/a and covers v²/a: the move takes 2·v/a + d/v = 0.8 s.
+TEST_F(Epos2DriveOnBus, SinSquaredMoveByPdoReachesTargetAtTheClosedFormTime) {
+    write(0x6086, 0, encode(std::int16_t{1}));
+    configure_and_enable(1);
+    controlword_and_target(kEnableOperation | kNewSetpoint | kChangeImmediately, 20000);
+    const double commanded = now();
+    run_with_sync(5ms);
+    controlword_and_target(kEnableOperation, 20000);
+    run_with_sync(1000ms);
+
+    const double v = 1000.0 * 2000 / 60;
+    const double a = 10000.0 * 2000 / 60;
+    const double move_time = 2 * v / a + 20000 / v;
+    const std::optional<Tpdo> reached = first_tpdo_with(0x0400, commanded + 0.01);
+    ASSERT_TRUE(reached.has_value());
+    EXPECT_NEAR(reached->time - commanded, move_time, 0.002); // one control period + one SYNC
+    EXPECT_NEAR(tpdos.back().position, 20000, 5);
+}
+
 // 8.2.85: a relative target adds to the last target.
 TEST_F(Epos2DriveOnBus, RelativeMoveAddsToThePosition) {
     configure_and_enable(1);
@@ -203,6 +79,31 @@ TEST_F(Epos2DriveOnBus, ProfileVelocityReachesTheTargetVelocity) {
     EXPECT_NEAR(read<std::int32_t>(0x606C, 0), 500, 35);
     EXPECT_NE(tpdos.back().statusword & 0x0400, 0) << "target reached";
     EXPECT_EQ(tpdos.back().statusword & 0x1000, 0) << "speed no longer 0";
+}
+
+// 8.2.44 - 8.2.48, 8.2.51, 8.2.71, 8.2.97: the measured values a master reads, at a steady
+// 500 rpm (16 667 qc/s at 2000 qc/turn). The load's friction takes about 45 mA. Instant values
+// are compared at one instant (the dictionary without a bus round trip).
+TEST_F(Epos2DriveOnBus, MeasuredValuesFollowTheMotion) {
+    configure_and_enable(3);
+    write(0x60FF, 0, encode(std::int32_t{500}));
+    run_with_sync(1000ms);
+    EXPECT_NEAR(read<std::int32_t>(0x6069, 0), 16667, 1000); // qc/s, measured per ms
+    EXPECT_NEAR(read<std::int32_t>(0x2028, 0), 500, 10);     // rpm, 5 Hz low-pass
+    EXPECT_NEAR(read<std::int16_t>(0x2027, 0), 45, 30);      // mA, 50 Hz low-pass
+    EXPECT_EQ(read<std::uint16_t>(0x2022, 0), 0U) << "a DC motor has no hall sensors";
+    const auto index_count = static_cast<std::int32_t>(read<std::uint32_t>(0x2021, 0));
+    EXPECT_GT(index_count, 0);
+    EXPECT_LE(index_count % 2000, 2) << "the index sits at a whole turn";
+
+    canopen::ObjectDictionary& od = drive.objects();
+    EXPECT_EQ(static_cast<std::int32_t>(od.get_as<std::uint32_t>(0x2020, 0)),
+              od.get_as<std::int32_t>(0x6064, 0))
+        << "the raw counter is the position without a homing offset";
+    EXPECT_EQ(od.get_as<std::int32_t>(0x2031, 0),
+              std::lround(drive.axis().current_demand() * 1000));
+    EXPECT_EQ(od.get_as<std::int16_t>(0x20F4, 0),
+              od.get_as<std::int32_t>(0x6062, 0) - od.get_as<std::int32_t>(0x6064, 0));
 }
 
 // 8.2.90: the modes this simulation does not run yet are refused.

@@ -114,7 +114,9 @@ void EmcyProducer::emit(std::uint16_t error_code, std::uint8_t error_register,
 
 void EmcyProducer::send_pending() {
     while (!inhibit_timer_.pending() && !pending_.empty()) {
-        port_.send(pending_.front());
+        if (port_.send(pending_.front()) == can::SendStatus::BusOff) {
+            return; // kept for controller_recovered()
+        }
         pending_.pop_front();
         const bool has_inhibit = od_.find(kInhibitTimeEmcyIndex, 0) != nullptr;
         const auto inhibit_100us =

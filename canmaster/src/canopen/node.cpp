@@ -146,10 +146,23 @@ Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary,
         [this](const SyncEvent& sync) { pdo_.on_sync(sync.counter.value_or(0)); });
     sync_consumer_.on_window_closed([this] { pdo_.on_window_closed(); });
     port_.on_receive([this](const can::Frame& frame) { on_frame(frame); });
+    port_.on_error_state([this](can::ErrorState state) {
+        if (state != can::ErrorState::BusOff) {
+            emcy_.controller_recovered();
+        }
+        if (controller_state_handler_) {
+            controller_state_handler_(state);
+        }
+    });
 }
 
 Node::~Node() {
     port_.on_receive({});
+    port_.on_error_state({});
+}
+
+void Node::on_controller_state(std::function<void(can::ErrorState)> handler) {
+    controller_state_handler_ = std::move(handler);
 }
 
 LssSlaveHooks Node::lss_hooks() {

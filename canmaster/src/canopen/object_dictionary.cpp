@@ -2,6 +2,7 @@
 
 #include "numeric_value.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <stdexcept>
 #include <utility>
@@ -129,7 +130,7 @@ SubObject& ObjectDictionary::add_variable(std::uint16_t index, std::string name,
     object.name = name;
     object.code = ObjectCode::Var;
     object.subs.emplace(0, make_sub(0, std::move(name), type, access, std::move(default_value)));
-    return objects_.emplace(index, std::move(object)).first->second.subs.at(0);
+    return insert(std::move(object)).subs.at(0);
 }
 
 Object& ObjectDictionary::add_object(std::uint16_t index, std::string name, ObjectCode code) {
@@ -147,7 +148,7 @@ Object& ObjectDictionary::add_object(std::uint16_t index, std::string name, Obje
     // CiA 301 7.4.3: sub-index 0 of an ARRAY or RECORD holds the highest sub-index supported.
     object.subs.emplace(0, make_sub(0, "Highest sub-index supported", DataType::Unsigned8,
                                     Access::ReadOnly, encode(std::uint8_t{0})));
-    return objects_.emplace(index, std::move(object)).first->second;
+    return insert(std::move(object));
 }
 
 SubObject& ObjectDictionary::add_sub(std::uint16_t index, std::uint8_t sub_index, std::string name,
@@ -173,14 +174,47 @@ SubObject& ObjectDictionary::add_sub(std::uint16_t index, std::uint8_t sub_index
     return sub;
 }
 
+ObjectDictionary::ObjectDictionary(const ObjectDictionary& other)
+    : objects_(other.objects_), listeners_(other.listeners_), next_listener_(other.next_listener_) {
+    index_objects();
+}
+
+ObjectDictionary& ObjectDictionary::operator=(const ObjectDictionary& other) {
+    if (this != &other) {
+        objects_ = other.objects_;
+        listeners_ = other.listeners_;
+        next_listener_ = other.next_listener_;
+        index_objects();
+    }
+    return *this;
+}
+
+Object& ObjectDictionary::insert(Object object) {
+    const std::uint16_t index = object.index;
+    Object& inserted = objects_.emplace(index, std::move(object)).first->second;
+    const auto at =
+        std::lower_bound(by_index_.begin(), by_index_.end(), index,
+                         [](const auto& entry, std::uint16_t key) { return entry.first < key; });
+    by_index_.insert(at, {index, &inserted});
+    return inserted;
+}
+
+void ObjectDictionary::index_objects() {
+    by_index_.clear();
+    for (auto& [index, object] : objects_) {
+        by_index_.emplace_back(index, &object);
+    }
+}
+
 const Object* ObjectDictionary::find(std::uint16_t index) const {
-    const auto it = objects_.find(index);
-    return it == objects_.end() ? nullptr : &it->second;
+    const auto at =
+        std::lower_bound(by_index_.begin(), by_index_.end(), index,
+                         [](const auto& entry, std::uint16_t key) { return entry.first < key; });
+    return at != by_index_.end() && at->first == index ? at->second : nullptr;
 }
 
 Object* ObjectDictionary::find(std::uint16_t index) {
-    const auto it = objects_.find(index);
-    return it == objects_.end() ? nullptr : &it->second;
+    return const_cast<Object*>(std::as_const(*this).find(index));
 }
 
 const SubObject* ObjectDictionary::find(std::uint16_t index, std::uint8_t sub_index) const {
@@ -242,24 +276,25 @@ AbortCode ObjectDictionary::write(std::uint16_t index, std::uint8_t sub_index,
     return AbortCode::None;
 }
 
-Bytes ObjectDictionary::get(std::uint16_t index, std::uint8_t sub_index) const {
+const SubObject& ObjectDictionary::existing(std::uint16_t index, std::uint8_t sub_index) const {
     const SubObject* sub = find(index, sub_index);
     if (sub == nullptr) {
         throw std::out_of_range(
             fmt::format("object {:04X}sub{:X} does not exist", index, sub_index));
     }
-    return sub->on_read ? sub->on_read() : sub->value;
+    return *sub;
+}
+
+Bytes ObjectDictionary::get(std::uint16_t index, std::uint8_t sub_index) const {
+    const SubObject& sub = existing(index, sub_index);
+    return sub.on_read ? sub.on_read() : sub.value;
 }
 
 void ObjectDictionary::set(std::uint16_t index, std::uint8_t sub_index,
                            std::span<const std::uint8_t> value) {
-    SubObject* sub = find(index, sub_index);
-    if (sub == nullptr) {
-        throw std::out_of_range(
-            fmt::format("object {:04X}sub{:X} does not exist", index, sub_index));
-    }
-    require_fits(sub->type, value.size(), index, sub_index);
-    sub->value.assign(value.begin(), value.end());
+    auto& sub = const_cast<SubObject&>(existing(index, sub_index));
+    require_fits(sub.type, value.size(), index, sub_index);
+    sub.value.assign(value.begin(), value.end());
     notify(index, sub_index);
 }
 

@@ -2,6 +2,7 @@
 // (socketcand, SocketCAN bridge, traces), so that outside CANopen masters can drive it.
 #include "commands.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
+#include "eposp/drives/plant/axis_file.hpp"
 #include "hosted_bus.hpp"
 #include "options.hpp"
 
@@ -17,6 +18,7 @@ constexpr std::string_view kCommand = "drive epos2";
 struct DriveOptions {
     HostedBusOptions hosting;
     int node_id = 1;
+    std::string config; ///< the machine's YAML file; the reference axis without one
 };
 
 int run_drive(const DriveOptions& options) {
@@ -24,14 +26,21 @@ int run_drive(const DriveOptions& options) {
         // The drive's control loop never idles: a virtual run needs an end.
         return report_user_error(kCommand, "--virtual needs --for DURATION");
     }
+    drives::epos2::Epos2DriveConfig config;
+    config.dictionary.node_id = static_cast<canopen::NodeId>(options.node_id);
+    if (!options.config.empty()) {
+        auto axis = drives::plant::load_axis_file(options.config);
+        if (!axis) {
+            return report_user_error(kCommand, axis.error());
+        }
+        config.axis = std::move(*axis);
+    }
     auto hosted = HostedBus::open(options.hosting);
     if (!hosted) {
         return report_user_error(kCommand, hosted.error());
     }
     HostedBus& host = **hosted;
 
-    drives::epos2::Epos2DriveConfig config;
-    config.dictionary.node_id = static_cast<canopen::NodeId>(options.node_id);
     drives::epos2::Epos2Drive drive(host.loop(),
                                     host.attach(fmt::format("epos2 {}", options.node_id)), config);
     drive.start();
@@ -58,6 +67,9 @@ void add_drive_command(CLI::App& app, int& exit_code) {
     epos2->add_option("--node-id", options->node_id, "CANopen node-ID")
         ->check(CLI::Range(1, 127))
         ->capture_default_str();
+    epos2->add_option("--config", options->config,
+                      "YAML file of the simulated machine: motor, gearhead, encoder, load, power "
+                      "stage, gains, switch positions (docs/epos2.md)");
     add_hosted_bus_options(*epos2, options->hosting);
     epos2->callback([options, &exit_code] { exit_code = run_drive(*options); });
 }

@@ -1,13 +1,17 @@
 #include "eposp/drives/epos2/epos2_drive.hpp"
 
+#include "axis_configuration.hpp"
+#include "eposp/drives/epos2/device_errors.hpp"
 #include "eposp/drives/motion/device_error_codes.hpp"
 #include "eposp/drives/motion/profile_planner.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/statusword_bits.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace eposp::drives::epos2 {
 namespace {
@@ -28,12 +32,11 @@ constexpr std::uint16_t kNegativeLimitInput = 1U << 0;
 constexpr std::uint16_t kPositiveLimitInput = 1U << 1;
 constexpr std::uint16_t kHomeSwitchInput = 1U << 2;
 
-// Table 4-11: the error register bits of the errors this drive raises.
-constexpr std::uint8_t kMotionErrorBits = 0x20;       ///< following error
-constexpr std::uint8_t kManufacturerErrorBits = 0x80; ///< 0xFFxx
-std::uint8_t device_error_register_bits(std::uint16_t code) {
-    return code >= 0xFF00 ? kManufacturerErrorBits : kMotionErrorBits;
-}
+// Table 4-11: the errors of the power stage and the CAN controller (4.2.3, 4.2.5, 4.2.6, 4.2.18).
+constexpr std::uint16_t kOvercurrentErrorCode = 0x2310;
+constexpr std::uint16_t kOvervoltageErrorCode = 0x3210;
+constexpr std::uint16_t kUndervoltageErrorCode = 0x3220;
+constexpr std::uint16_t kCanBusOffErrorCode = 0x81FD;
 
 // Table 4-11: CAN errors (0x81xx, 0x82xx) are "a" errors, reacting after 0x6007.
 bool is_communication_error(std::uint16_t code) {
@@ -45,37 +48,106 @@ constexpr std::chrono::microseconds kControlPeriod{1000};
 } // namespace
 
 Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig config)
-    : loop_(loop), dictionary_(config.dictionary),
-      node_(loop, port, dictionary_.objects(), dictionary_.node_config()), axis_(config.axis),
+    : loop_(loop), dictionary_(with_restore_rule(std::move(config.dictionary), *this)),
+      node_(loop, port, dictionary_.objects(), dictionary_.node_config()), machine_(config.axis),
+      axis_(config.axis),
       control_timer_(loop, loop.every(kControlPeriod, [this] { control_period(); })) {
-    auto& od = dictionary_.objects();
-    // The motor configuration is the device's defaults (8.2.64, 8.2.125 - 8.2.127).
-    const auto set_default = [&od](std::uint16_t index, std::uint8_t sub, canopen::Bytes value) {
-        canopen::SubObject& entry = *od.find(index, sub);
-        entry.default_value = value;
-        entry.value = std::move(value);
-    };
-    set_default(0x2210, 1, canopen::encode(static_cast<std::uint32_t>(config.axis.encoder_pulses)));
-    const auto gain = [](double si, double unit) {
-        return canopen::encode(static_cast<std::int16_t>(std::lround(si / unit)));
-    };
-    const plant::ServoGains& gains = config.axis.gains;
-    set_default(0x60F6, 1, gain(gains.current.kp, 1e-3));
-    set_default(0x60F6, 2, gain(gains.current.ki, 1.0));
-    set_default(0x60F9, 1, gain(gains.velocity.kp, 1e-4));
-    set_default(0x60F9, 2, gain(gains.velocity.ki, 1e-3));
-    set_default(0x60FB, 1, gain(gains.position.kp, 1e-3));
-    set_default(0x60FB, 2, gain(gains.position.ki, 1e-3));
-    set_default(0x60FB, 3, gain(gains.position.kd, 1e-4));
+    // The machine's encoder, gains and motor data are the device's defaults (8.2.74,
+    // 8.2.125 - 8.2.130); from then on the dictionary configures the plant.
+    write_axis_defaults(dictionary_.objects(), machine_);
+    configure_axis();
     read_counts_per_turn();
+    read_input_mask();
     watch_dictionary();
+    compute_measured_values();
     node_.on_reset_application([this] { reset_application(); });
+    // 4.2.18: the CAN controller going bus-off is an "a" error.
+    node_.on_controller_state([this](can::ErrorState state) {
+        if (state == can::ErrorState::BusOff) {
+            raise_device_error(kCanBusOffErrorCode);
+        }
+    });
+}
+
+// 8.2.9: "Restoring of the default parameters is permitted in 'Power Disable' state and
+// 'Pre-Operational NMT' state only." Power Disable is the group of figure 3-3 before Switched On.
+Epos2DictionaryConfig Epos2Drive::with_restore_rule(Epos2DictionaryConfig config,
+                                                    Epos2Drive& drive) {
+    config.restore.restore_permitted = [&drive] {
+        const DriveState state = drive.device_control_.state();
+        const bool power_disabled =
+            state == DriveState::Start || state == DriveState::NotReadyToSwitchOn ||
+            state == DriveState::SwitchOnDisabled || state == DriveState::ReadyToSwitchOn;
+        return power_disabled && drive.node_.nmt_state() == canopen::NmtState::PreOperational
+                   ? canopen::AbortCode::None
+                   : canopen::AbortCode::DeviceState;
+    };
+    return config;
+}
+
+void Epos2Drive::set_supply_voltage(double volts) {
+    machine_.plant.power_stage.supply_voltage = volts;
+    configure_axis();
+    device_control_.set_fault_condition_present(supply_error().has_value());
+}
+
+// 4.2.5, 4.2.6: the supply out of the power stage's range.
+std::optional<std::uint16_t> Epos2Drive::supply_error() const {
+    const plant::PowerStageParameters& stage = machine_.plant.power_stage;
+    if (stage.supply_voltage < stage.min_supply_voltage) {
+        return kUndervoltageErrorCode;
+    }
+    if (stage.supply_voltage > stage.max_supply_voltage) {
+        return kOvervoltageErrorCode;
+    }
+    return std::nullopt;
+}
+
+void Epos2Drive::configure_axis() {
+    axis_.reconfigure(configured_axis(dictionary_.objects(), machine_));
 }
 
 Epos2Drive::~Epos2Drive() = default;
 
 void Epos2Drive::start() {
     node_.start();
+}
+
+// 8.2.44 - 8.2.48, 8.2.51, 8.2.71, 8.2.97: measured values computed when read (SDO, and TPDOs
+// when they sample), so that the 1 ms loop does not store what nobody reads. A change of them
+// alone does not trigger an event-driven TPDO.
+void Epos2Drive::compute_measured_values() {
+    auto& od = dictionary_.objects();
+    const auto computed = [&od](std::uint16_t index, auto read) {
+        od.find(index, 0)->on_read = [read] {
+            return canopen::encode(read());
+        };
+    };
+    const auto rounded = [](double value) {
+        return std::lround(value);
+    };
+    // The raw counter register (8.2.44, 8.2.45), modulo 2^32.
+    computed(0x2020, [this] { return static_cast<std::uint32_t>(axis_.position_actual()); });
+    computed(0x2021, [this] { return static_cast<std::uint32_t>(counter_at_index_); });
+    computed(0x2022, [this] { return std::uint16_t{axis_.hall_sensors()}; });
+    computed(0x2027, [this, rounded] {
+        return static_cast<std::int16_t>(rounded(current_averaged_.output() * 1000));
+    });
+    computed(0x2028, [this, rounded] {
+        return static_cast<std::int32_t>(rounded(velocity_averaged_.output()));
+    });
+    computed(0x2031, [this, rounded] {
+        return static_cast<std::int32_t>(rounded(axis_.current_demand() * 1000));
+    });
+    computed(0x20F4, [this, rounded] {
+        const double error = last_demand_.position - static_cast<double>(position_actual());
+        using Limits = std::numeric_limits<std::int16_t>;
+        return static_cast<std::int16_t>(
+            std::clamp<long>(rounded(error), Limits::min(), Limits::max()));
+    });
+    computed(0x6069, [this, rounded] {
+        return static_cast<std::int32_t>(rounded(axis_.velocity_actual()));
+    });
 }
 
 void Epos2Drive::watch_dictionary() {
@@ -95,7 +167,19 @@ void Epos2Drive::watch_dictionary() {
         }
     });
     od.on_change(0x6060, [this](std::uint16_t, std::uint8_t) { on_mode_written(); });
-    od.on_change(0x2210, [this](std::uint16_t, std::uint8_t) { read_counts_per_turn(); });
+    for (const std::uint16_t index : kAxisConfigurationObjects) {
+        od.on_change(index, [this](std::uint16_t, std::uint8_t) { configure_axis(); });
+    }
+    // 8.2.74: the sensor configuration changed, the position is no longer referenced.
+    od.on_change(0x2210, [this](std::uint16_t, std::uint8_t) {
+        read_counts_per_turn();
+        homing_.reference_lost();
+    });
+    od.on_change(0x2071, [this](std::uint16_t, std::uint8_t sub) {
+        if (sub == 2) {
+            read_input_mask();
+        }
+    });
     for (const std::uint16_t option_code :
          std::array<std::uint16_t, 4>{0x6007, 0x605B, 0x605C, 0x605E}) {
         od.on_change(option_code, [this](std::uint16_t, std::uint8_t) { read_option_codes(); });
@@ -133,7 +217,9 @@ void Epos2Drive::watch_dictionary() {
 
 // Power-on and NMT reset node (transition 19, then 0 and 1 of table 3-5).
 void Epos2Drive::reset_application() {
+    configure_axis(); // the reset restored values without telling the listeners
     read_counts_per_turn();
+    read_input_mask();
     read_option_codes();
     published_.reset(); // the reset stored the defaults behind the computed objects
     device_control_.node_reset();
@@ -252,9 +338,25 @@ void Epos2Drive::on_error_recorded() {
     }
 }
 
+// 4.1, table 4-11: the error's register bits in 0x1001 and its EMCY, the history entry, and the
+// reaction of its class.
 void Epos2Drive::raise_device_error(std::uint16_t code) {
-    node_.emcy().raise(code, device_error_register_bits(code));
-    device_control_.fault_occurred(motion::FaultClass::Device);
+    const DeviceError& error = device_error(code);
+    node_.emcy().raise(code, error.error_register);
+    device_control_.fault_occurred(error.reaction);
+}
+
+// 4.2.3, 4.2.5, 4.2.6: the power stage's supervision. A fault reset is refused while the supply
+// is out of range ("only possible if supply voltage is in valid range").
+void Epos2Drive::watch_power_stage(bool overcurrent) {
+    const std::optional<std::uint16_t> supply = supply_error();
+    device_control_.set_fault_condition_present(supply.has_value());
+    if (supply) {
+        raise_device_error(*supply);
+    }
+    if (overcurrent) {
+        raise_device_error(kOvercurrentErrorCode);
+    }
 }
 
 // One millisecond: the device control's pending transitions, the mode's demand, ten steps of
@@ -275,23 +377,37 @@ void Epos2Drive::control_period() {
     axis_.set_demand({.position = demand.position - static_cast<double>(position_offset_),
                       .velocity = demand.velocity,
                       .acceleration = demand.acceleration});
+    const double overcurrent = machine_.plant.power_stage.overcurrent;
+    bool overcurrent_seen = false;
     for (int step = 0; step < plant::ServoAxis::kCurrentStepsPerOuterLoop; ++step) {
         axis_.step();
         if (axis_.index_passed()) {
             index_latch_ = position_actual();
+            counter_at_index_ = axis_.position_actual();
         }
+        current_averaged_.update(axis_.current_actual());
+        overcurrent_seen = overcurrent_seen || std::abs(axis_.current_actual()) > overcurrent;
     }
+    watch_power_stage(overcurrent_seen);
+    velocity_averaged_.update(counts_to_rpm(axis_.velocity_actual()));
     last_demand_ = demand;
     watch_motion(now, demand);
     publish(demand);
 }
 
-// Refresh (20) and Measure Init (21) take one control period here.
+// Refresh (20) and Measure Init (21) take one control period here, and so does a fault reaction
+// that only disables the drive (13, or 17 with "disable drive"): it has no ramp to wait for, the
+// power stage is off once it is done (14, 18).
 void Epos2Drive::finish_device_control_transitions() {
-    if (device_control_.state() == DriveState::Refresh) {
+    const DriveState state = device_control_.state();
+    if (state == DriveState::Refresh) {
         device_control_.refresh_finished();
-    } else if (device_control_.state() == DriveState::MeasureInit) {
+    } else if (state == DriveState::MeasureInit) {
         device_control_.measure_init_finished();
+    } else if ((state == DriveState::FaultReactionActiveDisabled ||
+                state == DriveState::FaultReactionActiveEnabled) &&
+               device_control_.outputs().ramp == motion::StopRamp::None) {
+        device_control_.stop_completed();
     }
 }
 
@@ -465,7 +581,7 @@ std::uint16_t Epos2Drive::digital_input_states() const {
         states |= kPositiveLimitInput;
     if (switches.home)
         states |= kHomeSwitchInput;
-    return states == 0 ? 0 : states & dictionary_.objects().get_as<std::uint16_t>(0x2071, 2);
+    return states & input_mask_;
 }
 
 // The computed objects (8.2.86, 8.2.92 - 8.2.97, 8.2.57), stored when they change so that the
@@ -545,6 +661,11 @@ void Epos2Drive::read_option_codes() {
                                       .shutdown = od.get_as<std::int16_t>(0x605B, 0),
                                       .disable_operation = od.get_as<std::int16_t>(0x605C, 0),
                                       .fault_reaction = od.get_as<std::int16_t>(0x605E, 0)});
+}
+
+// 8.2.57: read when written, not each time the switches are sampled.
+void Epos2Drive::read_input_mask() {
+    input_mask_ = dictionary_.objects().get_as<std::uint16_t>(0x2071, 2);
 }
 
 // 8.2.74: quadcounts are four per encoder pulse.

@@ -33,6 +33,10 @@ core::Result<PlantParameters> validate(const PlantParameters& parameters) {
     if (!(stage.supply_voltage > 0) || !(stage.max_duty > 0) || stage.max_duty > 1) {
         return core::Error{"supply voltage must be positive and max PWM duty in (0, 1]"};
     }
+    if (!(stage.min_supply_voltage < stage.max_supply_voltage) || !(stage.overcurrent > 0)) {
+        return core::Error{"the undervoltage limit must lie below the overvoltage limit and the "
+                           "overcurrent limit must be positive"};
+    }
     return parameters;
 }
 

@@ -5,17 +5,51 @@
 
 namespace eposp::drives::plant {
 
+namespace {
+
+double radians_per_count(int encoder_pulses) {
+    return 2 * std::numbers::pi / static_cast<double>(counts_per_turn(encoder_pulses));
+}
+
+PidController::Gains current_law(const ServoGains& gains) {
+    return {gains.current.kp, gains.current.ki, 0};
+}
+PidController::Gains velocity_law(const ServoGains& gains) {
+    return {gains.velocity.kp, gains.velocity.ki, 0};
+}
+PidController::Gains position_law(const ServoGains& gains) {
+    return {gains.position.kp, gains.position.ki, gains.position.kd};
+}
+
+} // namespace
+
 ServoAxis::ServoAxis(const AxisParameters& parameters)
     : parameters_(parameters), motor_(parameters.plant, kCurrentLoopPeriod),
-      radians_per_count_(2 * std::numbers::pi /
-                         static_cast<double>(counts_per_turn(parameters.encoder_pulses))),
-      current_controller_({parameters.gains.current.kp, parameters.gains.current.ki, 0},
+      radians_per_count_(radians_per_count(parameters.encoder_pulses)),
+      current_controller_(current_law(parameters.gains),
                           parameters.plant.power_stage.max_voltage()),
-      velocity_controller_({parameters.gains.velocity.kp, parameters.gains.velocity.ki, 0},
-                           parameters.gains.current_limit),
-      position_controller_({parameters.gains.position.kp, parameters.gains.position.ki,
-                            parameters.gains.position.kd},
-                           parameters.gains.current_limit) {}
+      velocity_controller_(velocity_law(parameters.gains), parameters.gains.current_limit),
+      position_controller_(position_law(parameters.gains), parameters.gains.current_limit) {}
+
+void ServoAxis::reconfigure(const AxisParameters& parameters) {
+    const MotorState state = motor_.state();
+    const double scale = static_cast<double>(counts_per_turn(parameters.encoder_pulses)) /
+                         static_cast<double>(counts_per_turn(parameters_.encoder_pulses));
+    parameters_ = parameters;
+    motor_ = MotorModel(parameters.plant, kCurrentLoopPeriod);
+    motor_.set_state(state);
+    radians_per_count_ = radians_per_count(parameters.encoder_pulses);
+    current_controller_.retune(current_law(parameters.gains),
+                               parameters.plant.power_stage.max_voltage());
+    velocity_controller_.retune(velocity_law(parameters.gains), parameters.gains.current_limit);
+    position_controller_.retune(position_law(parameters.gains), parameters.gains.current_limit);
+    // The velocity measured at the next outer loop stays in step with the new resolution.
+    const std::int64_t position = quadcounts(state.angle, parameters.encoder_pulses);
+    position_at_outer_loop_ =
+        position -
+        static_cast<std::int64_t>(static_cast<double>(position_ - position_at_outer_loop_) * scale);
+    position_ = position;
+}
 
 void ServoAxis::set_mode(ControlMode mode) {
     if (mode != mode_) {

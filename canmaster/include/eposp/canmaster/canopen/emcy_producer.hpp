@@ -33,7 +33,8 @@ void add_emcy_objects(ObjectDictionary& od, NodeId node_id, bool inhibit_time = 
 /// register is updated and an EMCY with code 0x0000 and the remaining register is sent. EMCYs
 /// are sent in pre-operational and operational only (EPOS2 FW spec 7.3.5), not while 0x1014 is
 /// invalid, and at least the inhibit time 0x1015 apart: those due sooner wait in order (up to
-/// kMaxPending; later ones are lost, the history and register keep them all).
+/// kMaxPending; later ones are lost, the history and register keep them all). A controller that
+/// is bus-off sends nothing: the EMCYs it refuses wait until controller_recovered().
 class EmcyProducer {
 public:
     using ManufacturerData = std::array<std::uint8_t, 5>;
@@ -51,6 +52,8 @@ public:
     bool active(std::uint16_t error_code) const { return active_.contains(error_code); }
 
     void set_nmt_state(NmtState state);
+    /// The CAN controller left bus-off: the EMCYs it refused go out now.
+    void controller_recovered() { send_pending(); }
 
 private:
     std::uint8_t update_register();

@@ -107,6 +107,9 @@ public:
     /// Told at power-up and at every NMT reset node, after the application area got its stored
     /// values back: the device resets its own state.
     void on_reset_application(std::function<void()> handler);
+    /// Told of every change of the CAN controller's error state (ISO 11898-1 12.1.4), after the
+    /// node's own services heard it: the device raises its CAN errors from it.
+    void on_controller_state(std::function<void(can::ErrorState)> handler);
 
     NmtState nmt_state() const { return nmt_.state(); }
     NodeId node_id() const { return nmt_.node_id(); }
@@ -146,6 +149,7 @@ private:
     std::optional<ParameterStore> store_;
     StoredValuesReport stored_values_;
     std::function<void()> application_reset_handler_;
+    std::function<void(can::ErrorState)> controller_state_handler_;
 
     NmtSlave nmt_;
     EmcyProducer emcy_;

@@ -90,6 +90,12 @@ public:
     using ChangeListener = std::function<void(std::uint16_t index, std::uint8_t sub_index)>;
     using ListenerId = std::uint64_t;
 
+    ObjectDictionary() = default;
+    ObjectDictionary(const ObjectDictionary& other);
+    ObjectDictionary& operator=(const ObjectDictionary& other);
+    ObjectDictionary(ObjectDictionary&&) = default;
+    ObjectDictionary& operator=(ObjectDictionary&&) = default;
+
     /// Adds a VAR object; its value starts at `default_value`. Adding an index twice, or a
     /// default that does not fit the type, is a programming error (std::invalid_argument).
     SubObject& add_variable(std::uint16_t index, std::string name, DataType type, Access access,
@@ -127,11 +133,13 @@ public:
 
     template <typename T>
     T get_as(std::uint16_t index, std::uint8_t sub_index) const {
-        return decode<T>(get(index, sub_index));
+        // Decoded in place: the device reads its objects every control period.
+        const SubObject& entry = existing(index, sub_index);
+        return entry.on_read ? decode<T>(entry.on_read()) : decode<T>(entry.value);
     }
     template <typename T>
     void set_as(std::uint16_t index, std::uint8_t sub_index, T value) {
-        set(index, sub_index, encode(value));
+        set(index, sub_index, encode_array(value));
     }
 
     /// Tells `listener` of every change of a value at `index` (any sub-index), by write() or set().
@@ -142,9 +150,16 @@ public:
     void reset_to_defaults();
 
 private:
+    /// The sub-object, or std::out_of_range.
+    const SubObject& existing(std::uint16_t index, std::uint8_t sub_index) const;
+    Object& insert(Object object);
+    void index_objects();
     void notify(std::uint16_t index, std::uint8_t sub_index) const;
 
     std::map<std::uint16_t, Object> objects_;
+    /// The objects by index in one sorted array: find() runs for every frame a node's services
+    /// handle, and a binary search in contiguous memory beats walking the map's nodes.
+    std::vector<std::pair<std::uint16_t, Object*>> by_index_;
     std::multimap<std::uint16_t, std::pair<ListenerId, ChangeListener>> listeners_;
     ListenerId next_listener_ = 1;
 };

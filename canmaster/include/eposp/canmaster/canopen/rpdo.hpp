@@ -59,6 +59,8 @@ public:
     std::size_t number() const { return number_; }
     /// Valid with a usable, non-empty mapping (in whatever NMT state).
     bool active() const { return active_; }
+    /// The COB-ID as last read, valid or not.
+    PdoCobId cob_id() const { return comm_.cob_id; }
 
 private:
     bool accepts(const can::Frame& frame) const;

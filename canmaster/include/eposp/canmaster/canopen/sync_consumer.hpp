@@ -34,6 +34,7 @@ public:
     using WindowListener = std::function<void()>;
 
     SyncConsumer(core::EventLoop& loop, ObjectDictionary& od, EmergencyCallback emergency);
+    ~SyncConsumer();
     SyncConsumer(const SyncConsumer&) = delete;
     SyncConsumer& operator=(const SyncConsumer&) = delete;
 
@@ -47,13 +48,19 @@ public:
     bool window_open() const;
 
 private:
-    core::Duration window_length() const;
-    std::optional<std::size_t> expected_length() const;
+    void read_parameters();
     void close_window();
 
     core::EventLoop& loop_;
     ObjectDictionary& od_;
     EmergencyCallback emergency_;
+    /// 0x1005, 0x1007 and 0x1019 as last read: every frame on the bus passes on_frame(), so
+    /// they are read when written and when the NMT state changes (a reset restores them
+    /// without telling listeners), not per frame.
+    std::optional<std::uint32_t> cob_id_; ///< none without 0x1005
+    core::Duration window_length_{};
+    std::optional<std::size_t> expected_length_;
+    std::vector<ObjectDictionary::ListenerId> od_listeners_;
     NmtState state_ = NmtState::Initialising;
     bool window_open_ = false;
     core::ScopedTimer window_timer_;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <bit>
 #include <concepts>
 #include <cstdint>
@@ -17,10 +18,10 @@ using Bytes = std::vector<std::uint8_t>;
 template <typename T>
 concept Arithmetic = std::integral<T> || std::floating_point<T>;
 
-/// The little-endian bytes of an integer or IEEE 754 value.
+/// The little-endian bytes of an integer or IEEE 754 value, without allocating.
 template <Arithmetic T>
-Bytes encode(T value) {
-    Bytes bytes(sizeof(T));
+std::array<std::uint8_t, sizeof(T)> encode_array(T value) {
+    std::array<std::uint8_t, sizeof(T)> bytes{};
     if constexpr (std::is_same_v<T, bool>) {
         bytes[0] = value ? 1 : 0;
     } else {
@@ -33,6 +34,13 @@ Bytes encode(T value) {
         }
     }
     return bytes;
+}
+
+/// The little-endian bytes of an integer or IEEE 754 value.
+template <Arithmetic T>
+Bytes encode(T value) {
+    const auto bytes = encode_array(value);
+    return {bytes.begin(), bytes.end()};
 }
 
 /// The value of little-endian bytes; a size other than sizeof(T) is a programming error.

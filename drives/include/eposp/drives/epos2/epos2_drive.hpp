@@ -14,6 +14,7 @@
 #include "eposp/drives/motion/standstill_monitor.hpp"
 #include "eposp/drives/motion/target_reached_monitor.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
+#include "eposp/drives/plant/low_pass_filter.hpp"
 #include "eposp/drives/plant/reference_axis.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
 
@@ -32,8 +33,9 @@ enum class OperatingMode : std::int8_t { ProfilePosition = 1, ProfileVelocity = 
 
 struct Epos2DriveConfig {
     Epos2DictionaryConfig dictionary;
-    /// Motor, load, encoder pulses, switches and the controller gains. The pulses and gains are
-    /// written into 0x2210, 0x60F6, 0x60F9 and 0x60FB as their defaults.
+    /// Motor, load, power stage, encoder pulses, switches and the controller gains. The pulses,
+    /// gains, motor type, pole pairs and current limit become the defaults of 0x2210, 0x60F6,
+    /// 0x60F9, 0x60FB, 0x6402 and 0x6410; the dictionary configures the plant from then on.
     plant::AxisParameters axis = plant::reference_axis();
 };
 
@@ -41,9 +43,12 @@ struct Epos2DriveConfig {
 /// CiA 402 device control, Profile Position, Profile Velocity and Homing Mode, and the motor
 /// model, stepped on the event loop (EPOS2 FW spec 5.9: current loop every 0.1 ms, position and
 /// velocity loops every 1 ms). The master sees only the dictionary: controlword, mode and
-/// profile objects written by SDO or RPDO act through change listeners; the computed objects
-/// (statusword, actual values, digital inputs) are stored each millisecond when they change, so
-/// that SDO, synchronous and event-driven TPDOs read them alike.
+/// profile objects written by SDO or RPDO act through change listeners, and so do the encoder,
+/// gains and motor data, which reconfigure the running plant; the computed objects (statusword,
+/// actual values, digital inputs) are stored each millisecond when they change, so that SDO,
+/// synchronous and event-driven TPDOs read them alike, and the further measured values (encoder
+/// counter, averaged values, current demand, following error) are computed when read. The power
+/// stage's supervision and the CAN controller's bus-off raise their errors of table 4-11.
 ///
 /// Neither copyable nor movable: the dictionary's listeners refer to it.
 class Epos2Drive {
@@ -61,8 +66,17 @@ public:
     motion::DriveState state() const { return device_control_.state(); }
     const plant::ServoAxis& axis() const { return axis_; }
 
+    /// The simulated power supply: the drive checks it against the power stage's limits
+    /// (undervoltage 0x3220, overvoltage 0x3210) every control period.
+    void set_supply_voltage(double volts);
+
 private:
+    static Epos2DictionaryConfig with_restore_rule(Epos2DictionaryConfig config, Epos2Drive& drive);
+    void configure_axis();
+    void watch_power_stage(bool overcurrent);
+    std::optional<std::uint16_t> supply_error() const;
     void watch_dictionary();
+    void compute_measured_values();
     void reset_application();
     void on_controlword(std::uint16_t controlword);
     void on_mode_written();
@@ -86,6 +100,7 @@ private:
     double seconds() const;
     void read_counts_per_turn();
     void read_option_codes();
+    void read_input_mask();
     double rpm_to_counts(double rpm) const { return rpm * counts_per_turn_ / 60.0; }
     double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn_; }
     std::int64_t position_actual() const { return axis_.position_actual() + position_offset_; }
@@ -93,6 +108,7 @@ private:
     core::EventLoop& loop_;
     Epos2Dictionary dictionary_;
     canopen::Node node_;
+    plant::AxisParameters machine_; ///< what the dictionary does not configure (see configure_axis)
     plant::ServoAxis axis_;
     motion::DeviceControl device_control_;
     motion::ProfilePositionGenerator position_profile_;
@@ -117,6 +133,11 @@ private:
     std::optional<std::int64_t> index_latch_; ///< an index pulse since the last control period
     double counts_per_turn_ = 0;              ///< 4 × 0x2210 sub 1
     std::uint16_t limit_inputs_before_ = 0;   ///< 0x2071 sub 1 in the last control period
+    std::uint16_t input_mask_ = 0;            ///< 0x2071 sub 2
+    std::int64_t counter_at_index_ = 0;       ///< 0x2021: the raw encoder counter
+    /// 8.2.47: the current filtered at 50 Hz every 0.1 ms; 8.2.48: the velocity at 5 Hz every ms.
+    plant::LowPassFilter current_averaged_{50, plant::ServoAxis::kCurrentLoopPeriod};
+    plant::LowPassFilter velocity_averaged_{5, plant::ServoAxis::kOuterLoopPeriod};
 
     /// The computed objects as last stored (none yet after a reset).
     struct PublishedValues {

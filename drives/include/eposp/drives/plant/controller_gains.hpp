@@ -57,4 +57,10 @@ CurrentGains to_si(const CurrentControlParameterSet& set);
 VelocityGains to_si(const VelocityControlParameterSet& set);
 PositionGains to_si(const PositionControlParameterSet& set);
 
+/// The nearest parameter sets (saturated to their types): the dictionary's defaults for gains
+/// given in SI units.
+CurrentControlParameterSet to_parameter_set(const CurrentGains& gains);
+VelocityControlParameterSet to_parameter_set(const VelocityGains& gains);
+PositionControlParameterSet to_parameter_set(const PositionGains& gains);
+
 } // namespace eposp::drives::plant

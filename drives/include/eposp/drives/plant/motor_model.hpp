@@ -37,10 +37,16 @@ struct GearheadParameters {
     double efficiency = 1; ///< applied to the load torques the motor must overcome
 };
 
-/// The power stage: PWM duty limits of the supply voltage.
+/// The power stage: PWM duty limits of the supply voltage, and the limits its supervision trips
+/// at. The EPOS2 FW spec (4.2.3, 4.2.5, 4.2.6) names the errors but not their thresholds; the
+/// defaults are the EPOS2 24/5's absolute operating range of +VCC (9 ... 26 V) and 1.5 times its
+/// 10 A maximal output current.
 struct PowerStageParameters {
-    double supply_voltage = 24; ///< V
-    double max_duty = 0.9;      ///< fraction of the supply the bridge can apply
+    double supply_voltage = 24;     ///< V
+    double max_duty = 0.9;          ///< fraction of the supply the bridge can apply
+    double min_supply_voltage = 9;  ///< V; below: undervoltage 0x3220
+    double max_supply_voltage = 26; ///< V; above: overvoltage 0x3210
+    double overcurrent = 15;        ///< A of motor current; above: overcurrent 0x2310
     double max_voltage() const { return supply_voltage * max_duty; }
 };
 

@@ -16,6 +16,11 @@ public:
 
     double update(double error, double dt, double feed_forward = 0);
     void reset();
+    /// New gains and limit from the next update on; the integral carries on (no bump).
+    void retune(Gains gains, double output_limit) {
+        gains_ = gains;
+        limit_ = output_limit;
+    }
 
 private:
     Gains gains_;

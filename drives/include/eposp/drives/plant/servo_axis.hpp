@@ -48,6 +48,12 @@ public:
 
     explicit ServoAxis(const AxisParameters& parameters);
 
+    /// New parameters while running (gains, encoder, motor data or the supply written later):
+    /// the shaft keeps its state and the controllers their integrals; the encoder counts the same
+    /// angle at its new resolution.
+    void reconfigure(const AxisParameters& parameters);
+    const AxisParameters& parameters() const { return parameters_; }
+
     /// Switching modes restarts the controllers (their integrators start from zero).
     void set_mode(ControlMode mode);
     ControlMode mode() const { return mode_; }

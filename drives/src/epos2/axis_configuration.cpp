@@ -1,0 +1,74 @@
+#include "axis_configuration.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace eposp::drives::epos2 {
+namespace {
+
+// Table 8-125: 1 brushed DC motor, 10 sinusoidal and 11 trapezoidal PM BL (EC) motor.
+constexpr std::uint16_t kBrushedDcMotor = 1;
+constexpr std::uint16_t kSinusoidalEcMotor = 10;
+
+void set_default(canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub,
+                 canopen::Bytes value) {
+    canopen::SubObject& entry = *od.find(index, sub);
+    entry.default_value = value;
+    entry.value = std::move(value);
+}
+
+template <typename T>
+void set_default_as(canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub, T value) {
+    set_default(od, index, sub, canopen::encode(value));
+}
+
+} // namespace
+
+void write_axis_defaults(canopen::ObjectDictionary& od, const plant::AxisParameters& machine) {
+    set_default_as(od, 0x2210, 1, static_cast<std::uint32_t>(machine.encoder_pulses));
+    const auto current = plant::to_parameter_set(machine.gains.current);
+    set_default_as(od, 0x60F6, 1, current.p_gain);
+    set_default_as(od, 0x60F6, 2, current.i_gain);
+    const auto velocity = plant::to_parameter_set(machine.gains.velocity);
+    set_default_as(od, 0x60F9, 1, velocity.p_gain);
+    set_default_as(od, 0x60F9, 2, velocity.i_gain);
+    set_default_as(od, 0x60F9, 4, velocity.velocity_feed_forward);
+    set_default_as(od, 0x60F9, 5, velocity.acceleration_feed_forward);
+    const auto position = plant::to_parameter_set(machine.gains.position);
+    set_default_as(od, 0x60FB, 1, position.p_gain);
+    set_default_as(od, 0x60FB, 2, position.i_gain);
+    set_default_as(od, 0x60FB, 3, position.d_gain);
+    set_default_as(od, 0x60FB, 4, position.velocity_feed_forward);
+    set_default_as(od, 0x60FB, 5, position.acceleration_feed_forward);
+    const plant::MotorParameters& motor = machine.plant.motor;
+    set_default_as(od, 0x6402, 0,
+                   motor.kind == plant::MotorKind::Ec ? kSinusoidalEcMotor : kBrushedDcMotor);
+    // 8.2.130: mA, at most the 10 A of an EPOS2 24/5.
+    const double output_limit_ma =
+        std::clamp(std::round(machine.gains.current_limit * 1000), 0.0, 10'000.0);
+    set_default_as(od, 0x6410, 2, static_cast<std::uint16_t>(output_limit_ma));
+    set_default_as(od, 0x6410, 3, static_cast<std::uint8_t>(std::clamp(motor.pole_pairs, 1, 255)));
+}
+
+plant::AxisParameters configured_axis(const canopen::ObjectDictionary& od,
+                                      plant::AxisParameters machine) {
+    machine.encoder_pulses = static_cast<int>(od.get_as<std::uint32_t>(0x2210, 1));
+    machine.gains.current = plant::to_si(plant::CurrentControlParameterSet{
+        od.get_as<std::int16_t>(0x60F6, 1), od.get_as<std::int16_t>(0x60F6, 2)});
+    machine.gains.velocity = plant::to_si(plant::VelocityControlParameterSet{
+        od.get_as<std::int16_t>(0x60F9, 1), od.get_as<std::int16_t>(0x60F9, 2),
+        od.get_as<std::uint16_t>(0x60F9, 4), od.get_as<std::uint16_t>(0x60F9, 5)});
+    machine.gains.position = plant::to_si(plant::PositionControlParameterSet{
+        od.get_as<std::int16_t>(0x60FB, 1), od.get_as<std::int16_t>(0x60FB, 2),
+        od.get_as<std::int16_t>(0x60FB, 3), od.get_as<std::uint16_t>(0x60FB, 4),
+        od.get_as<std::uint16_t>(0x60FB, 5)});
+    machine.gains.current_limit = od.get_as<std::uint16_t>(0x6410, 2) / 1000.0;
+    plant::MotorParameters& motor = machine.plant.motor;
+    motor.kind = od.get_as<std::uint16_t>(0x6402, 0) == kBrushedDcMotor
+                     ? plant::MotorKind::BrushedDc
+                     : plant::MotorKind::Ec;
+    motor.pole_pairs = od.get_as<std::uint8_t>(0x6410, 3);
+    return machine;
+}
+
+} // namespace eposp::drives::epos2

@@ -1,0 +1,84 @@
+// EPOS2 FW spec 3.2, tables 3-4 to 3-6 on the running drive, as a master sees them: each
+// controlword of table 3-6 by RPDO, then the statusword (table 3-4) by SDO. The transitions of
+// the fault path (13, 14, 15, 17, 18) are in epos2_drive_errors_test.cpp; the pure state
+// machine is table-tested in motion_device_control_test.cpp.
+#include "epos2_bus_fixture.hpp"
+
+namespace eposp::drives::epos2 {
+namespace {
+
+using namespace test;
+using namespace std::chrono_literals;
+
+constexpr std::uint16_t kDisableVoltage = 0x0000;
+constexpr std::uint16_t kQuickStop = 0x0002;
+constexpr std::uint16_t kDisableOperation = 0x0007;
+// Table 3-4: the bits that are not "x" (0-6, 8, 14).
+constexpr std::uint16_t kTable3_4Mask = 0x417F;
+constexpr std::uint16_t kSwitchOnDisabledBits = 0x0140;
+constexpr std::uint16_t kReadyToSwitchOnBits = 0x0121;
+constexpr std::uint16_t kSwitchedOnBits = 0x0123;
+constexpr std::uint16_t kOperationEnableBits = 0x0137;
+constexpr std::uint16_t kQuickStopActiveBits = 0x0117;
+
+struct Step {
+    const char* transition; ///< table 3-5
+    std::uint16_t controlword;
+    std::uint16_t statusword; ///< under kTable3_4Mask, once the transition is done
+};
+
+struct Path {
+    const char* name;
+    std::vector<Step> steps;
+};
+
+const Path kPaths[] = {
+    {"EnableDisableOperationAndBack",
+     {{"2", kShutdown, kReadyToSwitchOnBits},
+      {"3", kSwitchOn, kSwitchedOnBits},
+      {"4 (Refresh, Measure Init)", kEnableOperation, kOperationEnableBits},
+      {"5", kDisableOperation, kSwitchedOnBits},
+      {"4", kEnableOperation, kOperationEnableBits},
+      {"8", kShutdown, kReadyToSwitchOnBits},
+      {"7", kDisableVoltage, kSwitchOnDisabledBits}}},
+    {"QuickStopAndItsWaysOut",
+     {{"2", kShutdown, kReadyToSwitchOnBits},
+      {"3", kSwitchOn, kSwitchedOnBits},
+      {"4", kEnableOperation, kOperationEnableBits},
+      {"11", kQuickStop, kQuickStopActiveBits},
+      {"16", kEnableOperation, kOperationEnableBits},
+      {"11", kQuickStop, kQuickStopActiveBits},
+      {"12", kDisableVoltage, kSwitchOnDisabledBits}}},
+    {"DisableVoltageFromEveryPowerState",
+     {{"2", kShutdown, kReadyToSwitchOnBits},
+      {"3", kSwitchOn, kSwitchedOnBits},
+      {"6", kShutdown, kReadyToSwitchOnBits},
+      {"3", kSwitchOn, kSwitchedOnBits},
+      {"10", kDisableVoltage, kSwitchOnDisabledBits},
+      {"2", kShutdown, kReadyToSwitchOnBits},
+      {"3", kSwitchOn, kSwitchedOnBits},
+      {"4", kEnableOperation, kOperationEnableBits},
+      {"9", kDisableVoltage, kSwitchOnDisabledBits},
+      {"2", kShutdown, kReadyToSwitchOnBits},
+      {"7 (by quickstop)", kQuickStop, kSwitchOnDisabledBits}}},
+};
+
+class Epos2DriveStateMachine : public Epos2DriveOnBus,
+                               public ::testing::WithParamInterface<Path> {};
+
+TEST_P(Epos2DriveStateMachine, StatuswordAfterEveryTransitionAsTable3_4) {
+    nmt(canopen::NmtCommand::Start);
+    ASSERT_EQ(read<std::uint16_t>(0x6041, 0) & kTable3_4Mask, kSwitchOnDisabledBits);
+    for (const Step& step : GetParam().steps) {
+        controlword(step.controlword);
+        run_with_sync(100ms); // slow-down ramps (0x605B / 0x605C = 1) end at rest
+        EXPECT_EQ(read<std::uint16_t>(0x6041, 0) & kTable3_4Mask, step.statusword)
+            << "transition " << step.transition;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Table3_5OnTheBus, Epos2DriveStateMachine, ::testing::ValuesIn(kPaths),
+                         [](const auto& path) { return std::string(path.param.name); });
+
+} // namespace
+} // namespace eposp::drives::epos2
