@@ -25,6 +25,9 @@ struct Destination {
     const sema::Type* type = nullptr;
 };
 
+/// Whether `name` is one of the time and date functions of table 30 (time_functions.cpp).
+bool is_time_function(std::string_view name);
+
 /// Type-checks and generates the body of one POU (IEC 61131-3 ed. 3, 7.3: ST expressions and
 /// statements). Expressions are evaluated memory to memory: a variable is its own operand,
 /// intermediate results go to temporaries on the frame, released after each statement.
@@ -177,6 +180,9 @@ private:
     /// ADR(x): the address of x as POINTER TO its type; SIZEOF(x or T): its size in bytes.
     std::optional<Value> address_or_size(const std::string& name, const ast::CallExpression& node,
                                          const SourceRange& range);
+    /// ADD_TIME, SUB_DT_DT, CONCAT_DATE_TOD, ... (time_functions.cpp).
+    std::optional<Value> time_function(const std::string& name, const ast::CallExpression& node,
+                                       const Destination* dest, const SourceRange& range);
     /// The value of an integer expression as DINT (positions and lengths of the natives).
     std::optional<Value> as_dint(const ast::Expression& expression);
     /// A conversion `X_TO_Y` between any two elementary types.

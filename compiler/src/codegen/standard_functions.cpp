@@ -85,6 +85,9 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
     if (name == "ADR" || name == "SIZEOF") {
         return address_or_size(name, node, range);
     }
+    if (is_time_function(name)) {
+        return time_function(name, node, dest, range);
+    }
     if (one_of(name, {"SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE"})) {
         return selection(name, node, hint, dest, range);
     }
