@@ -178,5 +178,17 @@ END_PROGRAM
     EXPECT_DOUBLE_EQ(run.get<double>("Main.third"), -1.0 / 3.0 * 2);
 }
 
+// Ed. 3, 6.5.4: a POU's own constants size its arrays and strings.
+TEST(Constants, OfThePouSizeItsArraysAndStrings) {
+    StProgram run("PROGRAM Main\nVAR CONSTANT kLast : INT := 3; kText : INT := 2; END_VAR\n"
+                  "VAR a : ARRAY[0..kLast] OF INT; s : STRING[kText]; n : DINT; END_VAR\n"
+                  "a[kLast] := 7; s := 'abc'; n := SIZEOF(a);\nEND_PROGRAM\n");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("Main.a[3]"), 7);
+    EXPECT_EQ(run.get<std::int32_t>("Main.n"), 8);
+    EXPECT_EQ(run.get_string("Main.s"), "ab");
+}
+
 } // namespace
 } // namespace eposp::compiler::test

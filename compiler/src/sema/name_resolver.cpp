@@ -26,7 +26,7 @@ public:
 
     void resolve(const ast::CompilationUnit& unit) {
         for (const ast::TypeDeclaration& declaration : unit.types) {
-            resolve_type(declaration.type);
+            resolve_type(declaration.type, global_);
             resolve_initializer(declaration.initial_value.get(), declaration.type, global_);
         }
         for (const ast::Pou& pou : unit.pous) {
@@ -44,13 +44,17 @@ private:
 
     // --- Types -----------------------------------------------------------------------------
 
-    void resolve_type(const ast::TypeSpec& spec) {
-        std::visit([this](const auto& node) { resolve_type_node(node); }, spec.node);
+    /// Expressions in a type (array bounds, string lengths, enum values) see `scope`: the
+    /// constants of the POU that declares the variable, or the global ones.
+    void resolve_type(const ast::TypeSpec& spec, const Scope& scope) {
+        std::visit([this, &scope](const auto& node) { resolve_type_node(node, scope); }, spec.node);
     }
 
-    void resolve_type_node(const ast::ElementaryTypeRef&) {}
-    void resolve_type_node(const ast::StringTypeRef& node) { resolve_optional(node.length); }
-    void resolve_type_node(const ast::NamedTypeRef& node) {
+    void resolve_type_node(const ast::ElementaryTypeRef&, const Scope&) {}
+    void resolve_type_node(const ast::StringTypeRef& node, const Scope& scope) {
+        resolve_optional(node.length, scope);
+    }
+    void resolve_type_node(const ast::NamedTypeRef& node, const Scope&) {
         const Symbol* symbol = global_.find_member(node.name.name);
         if (symbol == nullptr) {
             error(node.name.range, fmt::format("unknown type '{}'", node.name.name));
@@ -62,36 +66,38 @@ private:
         }
         model_.bind(node.name, *symbol);
     }
-    void resolve_type_node(const ast::ArrayType& node) {
+    void resolve_type_node(const ast::ArrayType& node, const Scope& scope) {
         for (const ast::ArrayDimension& dimension : node.dimensions) {
             if (dimension.bounds) {
-                resolve_subrange(*dimension.bounds);
+                resolve_subrange(*dimension.bounds, scope);
             }
         }
-        resolve_type(*node.element);
+        resolve_type(*node.element, scope);
     }
-    void resolve_type_node(const ast::SubrangeType& node) {
-        resolve_type(*node.base);
-        resolve_subrange(node.range);
+    void resolve_type_node(const ast::SubrangeType& node, const Scope& scope) {
+        resolve_type(*node.base, scope);
+        resolve_subrange(node.range, scope);
     }
-    void resolve_type_node(const ast::EnumType& node) {
+    void resolve_type_node(const ast::EnumType& node, const Scope& scope) {
         if (node.base) {
-            resolve_type(*node.base);
+            resolve_type(*node.base, scope);
         }
         for (const ast::EnumValue& value : node.values) {
-            resolve_optional(value.value);
+            resolve_optional(value.value, scope);
         }
     }
-    void resolve_type_node(const ast::StructType& node) {
+    void resolve_type_node(const ast::StructType& node, const Scope& scope) {
         for (const ast::VariableDeclaration& member : node.members) {
-            resolve_variable(member, global_);
+            resolve_variable(member, scope);
         }
     }
-    void resolve_type_node(const ast::ReferenceType& node) { resolve_type(*node.target); }
+    void resolve_type_node(const ast::ReferenceType& node, const Scope& scope) {
+        resolve_type(*node.target, scope);
+    }
 
-    void resolve_subrange(const ast::Subrange& range) {
-        resolve_expression(*range.low, global_);
-        resolve_expression(*range.high, global_);
+    void resolve_subrange(const ast::Subrange& range, const Scope& scope) {
+        resolve_expression(*range.low, scope);
+        resolve_expression(*range.high, scope);
     }
 
     static bool names_a_type(const Symbol& symbol) {
@@ -167,9 +173,9 @@ private:
 
     // --- Expressions -----------------------------------------------------------------------
 
-    void resolve_optional(const ast::ExpressionPtr& expression) {
+    void resolve_optional(const ast::ExpressionPtr& expression, const Scope& scope) {
         if (expression) {
-            resolve_expression(*expression, global_);
+            resolve_expression(*expression, scope);
         }
     }
 
@@ -424,7 +430,7 @@ private:
     // --- Declarations ----------------------------------------------------------------------
 
     void resolve_variable(const ast::VariableDeclaration& declaration, const Scope& scope) {
-        resolve_type(declaration.type);
+        resolve_type(declaration.type, scope);
         resolve_initializer(declaration.initial_value.get(), declaration.type, scope);
     }
 
@@ -462,7 +468,7 @@ private:
     void resolve_pou(const ast::Pou& pou) {
         Scope& scope = *state_.pou_scopes.at(&pou);
         if (pou.return_type) {
-            resolve_type(*pou.return_type);
+            resolve_type(*pou.return_type, scope);
         }
         resolve_base(pou, scope);
         for (const ast::Identifier& interface : pou.implements) {
@@ -565,9 +571,9 @@ private:
         for (const ast::Resource& resource : configuration.resources) {
             resolve_sections(resource.sections, global_);
             for (const ast::TaskDeclaration& task : resource.tasks) {
-                resolve_optional(task.single);
-                resolve_optional(task.interval);
-                resolve_optional(task.priority);
+                resolve_optional(task.single, global_);
+                resolve_optional(task.interval, global_);
+                resolve_optional(task.priority, global_);
             }
             const Scope& resource_scope = *state_.resource_scopes.at(&resource);
             for (const ast::ProgramInstance& instance : resource.programs) {
