@@ -66,6 +66,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "t := t * 3 / 2; t := t * 0.5; x := TIME_TO_DINT(t);", 750},
         IntCase{"TimeOfDayWrapsAroundMidnight", "t : TOD := TOD#23:00:00;",
                 "t := t + T#2h; x := TOD_TO_DINT(t);", 3600000},
+        IntCase{"CharLiterals", "c : CHAR := CHAR#'A'; w : WCHAR;",
+                "w := WCHAR#\"$0100\"; c := CHAR#'$42';"
+                "x := BYTE_TO_LINT(CHAR_TO_BYTE(c)) * 1000 + WORD_TO_LINT(WCHAR_TO_WORD(w));",
+                66'256},
         // The named functions of table 30, in milliseconds (TIME) or seconds (DT).
         IntCase{"AddTime", "", "x := TIME_TO_LINT(ADD_TIME(T#1s, T#500ms));", 1500},
         IntCase{"SubTimeWithNamedInputs", "",

@@ -97,6 +97,20 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
     if (!sema::is_scalar(type)) {
         return std::nullopt;
     }
+    if (type.elementary == ast::ElementaryType::Char ||
+        type.elementary == ast::ElementaryType::Wchar) {
+        // CHAR#'A' / WCHAR#"A": the one character's code (the decoder checked the length).
+        const auto* text =
+            literal != nullptr ? std::get_if<ast::StringLiteral>(&literal->value) : nullptr;
+        if (text == nullptr || text->type != type.elementary) {
+            return std::nullopt;
+        }
+        const std::int64_t code =
+            type.elementary == ast::ElementaryType::Char
+                ? static_cast<std::uint8_t>(std::get<std::string>(text->value).front())
+                : std::int64_t{std::get<std::u16string>(text->value).front()};
+        return integer_bytes(code, type.size);
+    }
     if (sema::is_real(type)) {
         const auto value = fold_real(expression);
         if (!value) {

@@ -392,6 +392,9 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
     } else if (const auto* date = std::get_if<ast::DateTimeLiteral>(&node.value)) {
         type = &types_.elementary(date->type);
     } else if (const auto* text = std::get_if<ast::StringLiteral>(&node.value)) {
+        if (text->type == E::Char || text->type == E::Wchar) {
+            return character(expression, text->type);
+        }
         const bool wide = text->type == E::Wstring || text->type == E::Wchar;
         const std::size_t length = wide ? std::get<std::u16string>(text->value).size()
                                         : std::get<std::string>(text->value).size();
@@ -416,6 +419,16 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
         return std::nullopt;
     }
     return Value{program_.constant(*bytes, std::max<std::uint32_t>(type->align, 1)), type};
+}
+
+std::optional<Value> PouGenerator::character(const ast::Expression& expression, E type) {
+    const sema::Type& character_type = types_.elementary(type);
+    const auto bytes = program_.constant_value(expression, character_type);
+    if (!bytes) {
+        error(expression.range, fmt::format("this literal is not a valid {}", character_type.name));
+        return std::nullopt;
+    }
+    return Value{program_.constant(*bytes, character_type.size), &character_type};
 }
 
 std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type& want,

@@ -97,6 +97,8 @@ private:
     std::optional<Value> bit_word(const ast::BitAccessExpression& node, const SourceRange& range);
     /// The constant `1 << bit` (or its complement) of `type`.
     vm::Operand bit_mask(const sema::Type& type, std::uint32_t bit, bool inverted);
+    /// CHAR#'A' or WCHAR#"A": the character's code as a CHAR / WCHAR constant.
+    std::optional<Value> character(const ast::Expression& expression, ast::ElementaryType type);
     std::optional<Value> literal(const ast::Expression& expression,
                                  const ast::LiteralExpression& node, const sema::Type* hint);
     std::optional<Value> unary(const ast::UnaryExpression& node, const sema::Type* hint,
