@@ -202,6 +202,23 @@ TEST_F(Epos2DriveOnBus, PdoLengthErrorTriggersTheCommunicationFaultReaction) {
     EXPECT_EQ(drive.state(), motion::DriveState::Fault);
 }
 
+// 4.2, table 4-11 / 8.2.14: the master's heartbeat, consumed with 0x1016, stops: EMCY 0x8130
+// with the communication bit 0x10 in the error register, and the "a" reaction ends in Fault.
+TEST_F(Epos2DriveOnBus, MissingHeartbeatOfTheMasterRaises8130AndFaults) {
+    constexpr std::uint8_t kMaster = 0x7F;
+    write(0x1016, 1, encode(std::uint32_t{kMaster} << 16 | 50)); // within 50 ms
+    configure_and_enable(1);
+    master->send(can::Frame::data_frame(0x700 + kMaster, {0x05}));
+    run_with_sync(40ms);
+    EXPECT_TRUE(emcys.empty()) << "the heartbeat came within its time";
+    run_with_sync(100ms);
+    ASSERT_FALSE(emcys.empty());
+    EXPECT_EQ(emcys.front(), (std::vector<std::uint8_t>{0x30, 0x81, 0x10, 0, 0, 0, 0, 0}));
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0x10);
+    EXPECT_EQ(read<std::uint32_t>(0x1003, 1) & 0xFFFF, 0x8130U);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+}
+
 // 8.2.105 / 5.3.2.1: a target beyond the software position limit is refused with 0xFF09.
 TEST_F(Epos2DriveOnBus, TargetBeyondSoftwareLimitRaisesFF09) {
     write(0x607D, 2, encode(std::int32_t{10000}));
