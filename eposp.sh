@@ -72,7 +72,11 @@ fuzz() {
 case "${1:-}" in
 setup) setup ;;
 build) setup && build build ;;
-demo) setup && build build && examples/bus-demo/run.sh build/device/eposp ;;
+demo)
+    setup && build build
+    examples/bus-demo/run.sh build/device/eposp
+    examples/plc-basics/run.sh build/device/eposp
+    ;;
 test) setup && build build && run_tests build ;;
 sanitize)
     setup

@@ -149,6 +149,18 @@ TEST(RunCommand, BlinkerExampleFlashesTwiceInASecond) {
     EXPECT_THAT(result.output, HasSubstr("Cell.flashes = 2"));
 }
 
+// The PLC part of `./eposp.sh demo`.
+TEST(PlcDemo, RunsToTheEnd) {
+    const auto dir = scratch("demo");
+    const auto result =
+        test::run_command("EPOSP_DEMO_DIR=" + dir.string() + " " + EPOSP_SOURCE_DIR +
+                          "/examples/plc-basics/run.sh " + kEposp + " 2>&1");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("blinker.epx: "));
+    EXPECT_THAT(result.output, HasSubstr("CURRENT_TIME() : LINT"));
+    EXPECT_THAT(result.output, HasSubstr("Cell.flashes = 4"));
+}
+
 TEST(BenchCommand, BenchmarkProgramGivesTheTableResults) {
     const auto result = eposp("bench " + std::string(EPOSP_SOURCE_DIR) +
                               "/tests/compiler/inputs/crc32.st --scans 1000");

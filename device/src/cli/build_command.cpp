@@ -36,8 +36,11 @@ int run_build(const BuildOptions& options) {
     if (!out.flush()) {
         return report_user_error(kCommand, "cannot write " + output);
     }
-    fmt::print("{}: {} bytes, {} POUs, {} tasks\n", output, bytes.size(), image->pous.size(),
-               image->tasks.size());
+    const auto count = [](std::size_t n, std::string_view what) {
+        return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
+    };
+    fmt::print("{}: {} bytes, {}, {}\n", output, bytes.size(), count(image->pous.size(), "POU"),
+               count(image->tasks.size(), "task"));
     return 0;
 }
 
