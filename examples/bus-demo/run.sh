@@ -23,6 +23,7 @@ if command -v tshark >/dev/null; then
 fi
 
 section "2. A real-time bus joined by two python-can clients over socketcand"
+: >"$out/socketcand.out" # no address of an earlier run may be read before the bus writes its own
 "$eposp" bus --socketcand 127.0.0.1:0 --for 20s --log "$out/socketcand.log" \
     --pcap "$out/socketcand.pcap" >"$out/socketcand.out" &
 bus_pid=$!

@@ -45,7 +45,9 @@ inline std::string read_file(const std::filesystem::path& path) {
 /// $address and its pid in $pid.
 inline std::string start_in_background(const std::filesystem::path& out,
                                        const std::string& arguments) {
-    return kEposp + " " + arguments + " > " + out.string() +
+    // The file is emptied before the command starts in the background: otherwise the wait could
+    // read the address a previous run left in it before the new process has truncated it.
+    return ": > " + out.string() + "; " + kEposp + " " + arguments + " > " + out.string() +
            " & pid=$!; for i in $(seq 600); do address=$(sed -n \"s/^socketcand: listening on "
            "\\([^ ]*\\).*/\\1/p\" " +
            out.string() + "); [ -n \"$address\" ] && break; sleep 0.05; done; ";
