@@ -317,6 +317,8 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
 #define VM_EXEC_Le(T, T2) VM_COMPARE(T, x <= y)
 #define VM_EXEC_JEq(T, T2) VM_COMPARE_BRANCH(T, ==)
 #define VM_EXEC_JNe(T, T2) VM_COMPARE_BRANCH(T, !=)
+#define VM_EXEC_JTst(T, T2) VM_BRANCH_IF((load<T>(A) & load<T>(B)) != 0, ip->c);
+#define VM_EXEC_JNTst(T, T2) VM_BRANCH_IF((load<T>(A) & load<T>(B)) == 0, ip->c);
 #define VM_EXEC_JLt(T, T2) VM_COMPARE_BRANCH(T, <)
 #define VM_EXEC_JLe(T, T2) VM_COMPARE_BRANCH(T, <=)
 #define VM_EXEC_Abs(T, T2) VM_UNARY(T, T, abs(x))

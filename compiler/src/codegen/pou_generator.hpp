@@ -133,6 +133,9 @@ private:
     /// Jumps to `target` when `condition` has the value `when`, with compare-and-branch
     /// instructions where the condition is a comparison.
     void branch(const ast::Expression& condition, bool when, vm::Label target);
+    /// The binary `condition` `(x AND m) = 0` or `<> 0` as one bit-test-and-branch (JTst /
+    /// JNTst); false when it has another form.
+    bool branch_on_bits(const ast::Expression& condition, bool when, vm::Label target);
 
     // --- pou_statements.cpp ------------------------------------------------------------------
     void statements(const ast::StatementList& list);
