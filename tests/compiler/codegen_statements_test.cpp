@@ -50,6 +50,14 @@ INSTANTIATE_TEST_SUITE_P(
                       "IF (a AND b) <> 0 THEN x := 1; ELSE x := 2; END_IF;", 1},
         StatementCase{"WhileMaskedBitCountsShifts", "w : LWORD := 16#80;",
                       "WHILE (w AND 1) = 0 DO w := SHR(w, 1); x := x + 1; END_WHILE;", 7},
+        // A BOOL array element as the condition is one JtX / JfX.
+        StatementCase{"IfBoolElement", "f : ARRAY[-1..1] OF BOOL := [FALSE, TRUE, FALSE]; i : INT;",
+                      "FOR i := -1 TO 1 DO IF f[i] THEN x := x * 10 + 1; ELSE x := x * 10 + 2; "
+                      "END_IF; END_FOR;",
+                      212},
+        StatementCase{"WhileNotBoolElement",
+                      "f : ARRAY[0..9] OF BOOL := [FALSE, FALSE, FALSE, TRUE];",
+                      "WHILE NOT f[x] DO x := x + 1; END_WHILE;", 3},
         StatementCase{"CaseValue", "s : INT := 2;",
                       "CASE s OF 1: x := 10; 2: x := 20; 3: x := 30; END_CASE;", 20},
         StatementCase{"CaseList", "s : INT := 7;",

@@ -90,6 +90,32 @@ TEST(ControlFlow, BitTestAndBranch) {
     EXPECT_EQ(h.get<std::int32_t>(32), 333);
 }
 
+// flags : ARRAY[1..3] OF BOOL := [FALSE, TRUE, FALSE]: IF flags[i] and IF NOT flags[i].
+TEST(ControlFlow, TestArrayElementAndBranch) {
+    Harness h;
+    constexpr std::uint32_t kI = 0, kFlags = 4;
+    h.init<std::uint8_t>(kFlags + 1, 1);
+    h.init<std::int32_t>(kI, 2);
+    const auto flags = h.builder.array(1, 3, 1);
+    auto set = h.builder.label();
+    auto clear = h.builder.label();
+    auto end = h.builder.label();
+    h.builder.jump(Opcode::JfX, clear, self(kFlags), self(kI), flags); // flags[2]: not taken
+    h.builder.jump(Opcode::JtX, set, self(kFlags), self(kI), flags);   // taken
+    h.builder.bind(clear);
+    h.builder.emit(Opcode::Ldi32, self(8), Operand::imm(111)); // skipped
+    h.builder.bind(set);
+    h.builder.emit(Opcode::AddI32, self(kI), self(kI), imm(1));
+    h.builder.jump(Opcode::JtX, end, self(kFlags), self(kI), flags); // flags[3]: not taken
+    h.builder.emit(Opcode::Ldi32, self(12), Operand::imm(222));      // runs
+    h.builder.bind(end);
+    h.builder.emit(Opcode::Ret);
+    h.end_main();
+    ASSERT_EQ(h.run(), RunState::Finished);
+    EXPECT_EQ(h.get<std::int32_t>(8), 0);
+    EXPECT_EQ(h.get<std::int32_t>(12), 222);
+}
+
 // FUNCTION Cube : DINT  VAR_INPUT x : DINT; END_VAR  (x at frame 0, result at frame 4)
 std::uint32_t emit_cube(Builder& b) {
     const auto cube = b.declare_pou("Cube", PouKind::Function);

@@ -143,7 +143,22 @@ void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label
         }
         return;
     }
-    const auto value = value_as(condition, boolean);
+    std::optional<Value> value;
+    if (std::holds_alternative<ast::IndexExpression>(condition.node)) {
+        // An element of a BOOL array is tested where it is: `IF flags[i] THEN` is one JfX.
+        const auto where = place(condition);
+        if (!where) {
+            return;
+        }
+        if (where->kind == Place::Kind::Element && where->type == &boolean) {
+            builder_.jump(when ? vm::Opcode::JtX : vm::Opcode::JfX, target, where->operand,
+                          where->index, where->array);
+            return;
+        }
+        value = value_as(load(*where), condition.range, boolean);
+    } else {
+        value = value_as(condition, boolean);
+    }
     if (value) {
         builder_.jump(when ? vm::Opcode::Jt : vm::Opcode::Jf, target, value->operand);
     }

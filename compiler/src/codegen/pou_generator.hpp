@@ -88,6 +88,9 @@ private:
     /// The value of `expression` as `want` (implicitly widened, else an error).
     std::optional<Value> value_as(const ast::Expression& expression, const sema::Type& want,
                                   const Destination* dest = nullptr);
+    /// `value`, computed from the source at `range`, as `want`.
+    std::optional<Value> value_as(const Value& value, const SourceRange& range,
+                                  const sema::Type& want, const Destination* dest = nullptr);
     std::optional<Value> convert(const Value& value, const sema::Type& want,
                                  const Destination* dest);
     /// The word a bit access `w.3` reads, checked to have that bit.

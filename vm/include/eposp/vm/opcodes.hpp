@@ -25,6 +25,8 @@
 //  Nop               -        -        -        nothing
 //  Jmp               target   -        -        goto target                           (safe point)
 //  Jt / Jf           [BOOL]   target   -        if [A] (not [A]) goto B               (safe point)
+//  JtX / JfX         [array]  [DINT]   target   if array[[B]] (not) goto C, BOOL elements,
+//                                               checked by desc                 (safe point)
 //  Call              pou      -        -        call function: frame := out area      (safe point)
 //  CallFb            inst     pou      -        call FB/program body, self := &[A]    (safe point)
 //  CallFbP           [ptr]    pou      -        call FB body, self := [A] (checked)   (safe point)
@@ -151,9 +153,10 @@ struct FieldSpec {
     M(I16, 2, std::int16_t, __VA_ARGS__)                                                           \
     M(I32, 4, std::int32_t, __VA_ARGS__)                                                           \
     M(I64, 8, std::int64_t, __VA_ARGS__)                                                           \
-    M(U8, 1, std::uint8_t, __VA_ARGS__) M(U16, 2, std::uint16_t, __VA_ARGS__)                      \
-        M(U32, 4, std::uint32_t, __VA_ARGS__) M(U64, 8, std::uint64_t, __VA_ARGS__)                \
-            M(F32, 4, float, __VA_ARGS__) M(F64, 8, double, __VA_ARGS__)
+    M(U8, 1, std::uint8_t, __VA_ARGS__)                                                            \
+    M(U16, 2, std::uint16_t, __VA_ARGS__) M(U32, 4, std::uint32_t, __VA_ARGS__)                    \
+        M(U64, 8, std::uint64_t, __VA_ARGS__) M(F32, 4, float, __VA_ARGS__)                        \
+            M(F64, 8, double, __VA_ARGS__)
 
 #define EPOSP_VM_F(X) EPOSP_VM_F_##X
 #define EPOSP_VM_OP(OP, name, family, T1, T2, aux, a, b, c)                                        \
@@ -239,7 +242,9 @@ struct FieldSpec {
     EPOSP_VM_FOR_INTS(EPOSP_VM_INT_OPS, OP)                                                        \
     EPOSP_VM_FOR_FLOATS(EPOSP_VM_FLOAT_OPS, OP)                                                    \
     EPOSP_VM_FOR_SCALARS(EPOSP_VM_CVT_ROW, OP)                                                     \
-    EPOSP_VM_FOR_WIDTHS(EPOSP_VM_BIT_TEST_OPS, OP)
+    EPOSP_VM_FOR_WIDTHS(EPOSP_VM_BIT_TEST_OPS, OP)                                                 \
+    EPOSP_VM_OP(OP, JtX, JtX, void, void, Array, AR1, R4, JT)                                      \
+    EPOSP_VM_OP(OP, JfX, JfX, void, void, Array, AR1, R4, JT)
 
 #define EPOSP_VM_ENUMERATOR(name, ...) name,
 enum class Opcode : std::uint16_t { EPOSP_VM_OPCODES(EPOSP_VM_ENUMERATOR) };
