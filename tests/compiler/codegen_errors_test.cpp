@@ -38,6 +38,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "operands of types INT and BOOL do not match"},
         Rejected{"IfNeedsBool", main_with("i : INT;", "IF i THEN i := 1; END_IF;"),
                  "a INT value cannot be used as BOOL"},
+        Rejected{"IfNeedsBoolElement", main_with("a : ARRAY[0..1] OF INT;", "IF a[1] THEN END_IF;"),
+                 "a INT value cannot be used as BOOL"},
         Rejected{"AssignToConstant",
                  "PROGRAM Main\nVAR CONSTANT k : INT := 1; END_VAR\nk := 2;\nEND_PROGRAM\n",
                  "cannot be assigned here"},

@@ -61,6 +61,61 @@ TEST(ControlFlow, ConditionalJumpsOnBool) {
     EXPECT_EQ(h.get<std::int32_t>(8), 222);
 }
 
+// IF (w AND 16#8000) <> 0 THEN ... and IF (w AND 16#0001) = 0 THEN ..., at full width.
+TEST(ControlFlow, BitTestAndBranch) {
+    Harness h;
+    h.init<std::uint64_t>(0, 0x8000'0000'0000'8000);
+    h.init<std::uint64_t>(8, 0x8000'0000'0000'0000);
+    h.init<std::uint64_t>(16, 1);
+    auto set = h.builder.label();
+    auto high_set = h.builder.label();
+    auto clear = h.builder.label();
+    auto end = h.builder.label();
+    h.builder.jump(Opcode::JTst16, set, self(0), self(16)); // 16#8000 AND 1: not taken
+    h.builder.jump(Opcode::JTst64, high_set, self(0), self(8));
+    h.builder.emit(Opcode::Ldi32, self(24), Operand::imm(111)); // skipped
+    h.builder.bind(high_set);
+    h.builder.jump(Opcode::JNTst32, clear, self(0), self(16)); // 16#8000 AND 1 = 0: taken
+    h.builder.bind(set);
+    h.builder.emit(Opcode::Ldi32, self(28), Operand::imm(222)); // skipped
+    h.builder.bind(clear);
+    h.builder.jump(Opcode::JNTst8, end, self(16), self(16));    // 1 AND 1 <> 0: not taken
+    h.builder.emit(Opcode::Ldi32, self(32), Operand::imm(333)); // runs
+    h.builder.bind(end);
+    h.builder.emit(Opcode::Ret);
+    h.end_main();
+    ASSERT_EQ(h.run(), RunState::Finished);
+    EXPECT_EQ(h.get<std::int32_t>(24), 0);
+    EXPECT_EQ(h.get<std::int32_t>(28), 0);
+    EXPECT_EQ(h.get<std::int32_t>(32), 333);
+}
+
+// flags : ARRAY[1..3] OF BOOL := [FALSE, TRUE, FALSE]: IF flags[i] and IF NOT flags[i].
+TEST(ControlFlow, TestArrayElementAndBranch) {
+    Harness h;
+    constexpr std::uint32_t kI = 0, kFlags = 4;
+    h.init<std::uint8_t>(kFlags + 1, 1);
+    h.init<std::int32_t>(kI, 2);
+    const auto flags = h.builder.array(1, 3, 1);
+    auto set = h.builder.label();
+    auto clear = h.builder.label();
+    auto end = h.builder.label();
+    h.builder.jump(Opcode::JfX, clear, self(kFlags), self(kI), flags); // flags[2]: not taken
+    h.builder.jump(Opcode::JtX, set, self(kFlags), self(kI), flags);   // taken
+    h.builder.bind(clear);
+    h.builder.emit(Opcode::Ldi32, self(8), Operand::imm(111)); // skipped
+    h.builder.bind(set);
+    h.builder.emit(Opcode::AddI32, self(kI), self(kI), imm(1));
+    h.builder.jump(Opcode::JtX, end, self(kFlags), self(kI), flags); // flags[3]: not taken
+    h.builder.emit(Opcode::Ldi32, self(12), Operand::imm(222));      // runs
+    h.builder.bind(end);
+    h.builder.emit(Opcode::Ret);
+    h.end_main();
+    ASSERT_EQ(h.run(), RunState::Finished);
+    EXPECT_EQ(h.get<std::int32_t>(8), 0);
+    EXPECT_EQ(h.get<std::int32_t>(12), 222);
+}
+
 // FUNCTION Cube : DINT  VAR_INPUT x : DINT; END_VAR  (x at frame 0, result at frame 4)
 std::uint32_t emit_cube(Builder& b) {
     const auto cube = b.declare_pou("Cube", PouKind::Function);

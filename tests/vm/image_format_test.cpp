@@ -61,7 +61,7 @@ INSTANTIATE_TEST_SUITE_P(
         Corruption{"Empty", [](auto& b) { b.clear(); }, "not a program image (bad magic)"},
         Corruption{"HeaderCut", [](auto& b) { b.resize(10); }, "truncated image header"},
         Corruption{"OtherVersion", [](auto& b) { b[4] = 99; },
-                   "image version 99 is not supported (expected 1)"},
+                   "image version 99 is not supported (expected 2)"},
         Corruption{"FlippedBit", [](auto& b) { b[40] ^= 0x10; },
                    "image checksum mismatch (corrupt file)"}));
 

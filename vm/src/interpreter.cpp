@@ -165,6 +165,18 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
 #define VM_EXEC_Jmp(T1, T2) VM_JUMP(ip->a);
 #define VM_EXEC_Jt(T1, T2) VM_BRANCH_IF(load<std::uint8_t>(A) != 0, ip->b);
 #define VM_EXEC_Jf(T1, T2) VM_BRANCH_IF(load<std::uint8_t>(A) == 0, ip->b);
+#define VM_EXEC_JtX(T1, T2)                                                                        \
+    {                                                                                              \
+        std::uint64_t at;                                                                          \
+        VM_ELEMENT(A, B, at);                                                                      \
+        VM_BRANCH_IF(load<std::uint8_t>(A + at) != 0, ip->c);                                      \
+    }
+#define VM_EXEC_JfX(T1, T2)                                                                        \
+    {                                                                                              \
+        std::uint64_t at;                                                                          \
+        VM_ELEMENT(A, B, at);                                                                      \
+        VM_BRANCH_IF(load<std::uint8_t>(A + at) == 0, ip->c);                                      \
+    }
 #define VM_EXEC_Call(T1, T2) VM_ENTER(ip->a, base[2]);
 #define VM_EXEC_CallFb(T1, T2) VM_ENTER(ip->b, A);
 #define VM_EXEC_CallFbP(T1, T2)                                                                    \
@@ -317,6 +329,8 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
 #define VM_EXEC_Le(T, T2) VM_COMPARE(T, x <= y)
 #define VM_EXEC_JEq(T, T2) VM_COMPARE_BRANCH(T, ==)
 #define VM_EXEC_JNe(T, T2) VM_COMPARE_BRANCH(T, !=)
+#define VM_EXEC_JTst(T, T2) VM_BRANCH_IF((load<T>(A) & load<T>(B)) != 0, ip->c);
+#define VM_EXEC_JNTst(T, T2) VM_BRANCH_IF((load<T>(A) & load<T>(B)) == 0, ip->c);
 #define VM_EXEC_JLt(T, T2) VM_COMPARE_BRANCH(T, <)
 #define VM_EXEC_JLe(T, T2) VM_COMPARE_BRANCH(T, <=)
 #define VM_EXEC_Abs(T, T2) VM_UNARY(T, T, abs(x))

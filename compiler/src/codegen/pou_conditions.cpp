@@ -1,5 +1,6 @@
 // Conditions of IF, WHILE, REPEAT and CASE compiled to compare-and-branch instructions
-// (IEC 61131-3 ed. 3, 7.3.3.3): `IF a < b THEN` is one JLe to the ELSE part.
+// (IEC 61131-3 ed. 3, 7.3.3.3): `IF a < b THEN` is one JLe to the ELSE part, `IF (x AND m) <> 0
+// THEN` one JNTst.
 
 #include "pou_generator.hpp"
 
@@ -33,6 +34,45 @@ Op negated(Op op) {
 
 } // namespace
 
+bool PouGenerator::branch_on_bits(const ast::Expression& condition, bool when, vm::Label target) {
+    const auto& comparison = std::get<ast::BinaryExpression>(condition.node);
+    if (comparison.op != Op::Equal && comparison.op != Op::NotEqual) {
+        return false;
+    }
+    const auto and_of = [](const ast::Expression& side) {
+        const auto* binary = std::get_if<ast::BinaryExpression>(&side.node);
+        return binary != nullptr && binary->op == Op::And ? &side : nullptr;
+    };
+    const bool zero_right = small_literal(*comparison.right) == 0;
+    const ast::Expression* masked = zero_right ? and_of(*comparison.left)
+                                    : small_literal(*comparison.left) == 0
+                                        ? and_of(*comparison.right)
+                                        : nullptr;
+    if (masked == nullptr) {
+        return false;
+    }
+    const auto& mask = std::get<ast::BinaryExpression>(masked->node);
+    const auto pair = operands(*mask.left, *mask.right, nullptr, masked->range);
+    if (!pair) {
+        return true; // reported
+    }
+    const auto& [x, y] = *pair;
+    const sema::Type& type = *x.type;
+    if (!sema::is_integer(type) && !sema::is_bit_string(type)) {
+        // `(a AND b) = 0` on BOOL, AND on REAL: what the general path accepts or reports.
+        const auto value = apply(Op::And, x, y, nullptr, masked->range);
+        const auto zero =
+            value ? operand_value(zero_right ? *comparison.right : *comparison.left, value->type)
+                  : std::nullopt;
+        if (!zero || !unify(*value, *zero, condition.range)) {
+            return true; // reported
+        }
+    }
+    const bool jump_if_set = (comparison.op == Op::NotEqual) == when;
+    builder_.jump(op_width(jump_if_set ? "JTst" : "JNTst", type), target, x.operand, y.operand);
+    return true;
+}
+
 void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label target) {
     const sema::Type& boolean = types_.elementary(ast::ElementaryType::Bool);
     if (const auto* unary = std::get_if<ast::UnaryExpression>(&condition.node);
@@ -61,6 +101,9 @@ void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label
             branch(*binary->right, when, target);
             bind(skip);
         }
+        return;
+    }
+    if (binary != nullptr && branch_on_bits(condition, when, target)) {
         return;
     }
     if (binary != nullptr && is_comparison(binary->op)) {
@@ -100,7 +143,22 @@ void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label
         }
         return;
     }
-    const auto value = value_as(condition, boolean);
+    std::optional<Value> value;
+    if (std::holds_alternative<ast::IndexExpression>(condition.node)) {
+        // An element of a BOOL array is tested where it is: `IF flags[i] THEN` is one JfX.
+        const auto where = place(condition);
+        if (!where) {
+            return;
+        }
+        if (where->kind == Place::Kind::Element && where->type == &boolean) {
+            builder_.jump(when ? vm::Opcode::JtX : vm::Opcode::JfX, target, where->operand,
+                          where->index, where->array);
+            return;
+        }
+        value = value_as(load(*where), condition.range, boolean);
+    } else {
+        value = value_as(condition, boolean);
+    }
     if (value) {
         builder_.jump(when ? vm::Opcode::Jt : vm::Opcode::Jf, target, value->operand);
     }

@@ -450,20 +450,21 @@ std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type&
 
 std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
                                             const sema::Type& want, const Destination* dest) {
-    auto value = eval(expression, &want, dest);
-    if (!value) {
+    const auto value = eval(expression, &want, dest);
+    return value ? value_as(*value, expression.range, want, dest) : std::nullopt;
+}
+
+std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRange& range,
+                                            const sema::Type& want, const Destination* dest) {
+    if (!sema::converts_implicitly(*value.type, want)) {
+        error(range, fmt::format("a {} value cannot be used as {}{}", value.type->name, want.name,
+                                 sema::is_scalar(*value.type) && sema::is_scalar(want)
+                                     ? fmt::format(" (convert it with {}_TO_{})", value.type->name,
+                                                   want.name)
+                                     : ""));
         return std::nullopt;
     }
-    if (!sema::converts_implicitly(*value->type, want)) {
-        error(expression.range,
-              fmt::format(
-                  "a {} value cannot be used as {}{}", value->type->name, want.name,
-                  sema::is_scalar(*value->type) && sema::is_scalar(want)
-                      ? fmt::format(" (convert it with {}_TO_{})", value->type->name, want.name)
-                      : ""));
-        return std::nullopt;
-    }
-    return convert(*value, want, dest);
+    return convert(value, want, dest);
 }
 
 std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& expression) {

@@ -91,6 +91,9 @@ private:
     /// The value of `expression` as `want` (implicitly widened, else an error).
     std::optional<Value> value_as(const ast::Expression& expression, const sema::Type& want,
                                   const Destination* dest = nullptr);
+    /// `value`, computed from the source at `range`, as `want`.
+    std::optional<Value> value_as(const Value& value, const SourceRange& range,
+                                  const sema::Type& want, const Destination* dest = nullptr);
     std::optional<Value> convert(const Value& value, const sema::Type& want,
                                  const Destination* dest);
     /// The word a bit access `w.3` reads, checked to have that bit.
@@ -138,6 +141,9 @@ private:
     /// Jumps to `target` when `condition` has the value `when`, with compare-and-branch
     /// instructions where the condition is a comparison.
     void branch(const ast::Expression& condition, bool when, vm::Label target);
+    /// The binary `condition` `(x AND m) = 0` or `<> 0` as one bit-test-and-branch (JTst /
+    /// JNTst); false when it has another form.
+    bool branch_on_bits(const ast::Expression& condition, bool when, vm::Label target);
 
     // --- pou_statements.cpp ------------------------------------------------------------------
     void statements(const ast::StatementList& list);

@@ -11,7 +11,7 @@ namespace eposp::vm {
 
 /// Bumped whenever the binary layout or the meaning of an opcode changes; the loader refuses
 /// other versions.
-inline constexpr std::uint16_t kImageVersion = 1;
+inline constexpr std::uint16_t kImageVersion = 2;
 
 /// Memory addresses (pointer values, static offsets) below this are never valid data: a
 /// pointer of 0 is NULL and dereferencing anything in the guard traps.

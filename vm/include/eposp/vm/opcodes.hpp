@@ -25,6 +25,8 @@
 //  Nop               -        -        -        nothing
 //  Jmp               target   -        -        goto target                           (safe point)
 //  Jt / Jf           [BOOL]   target   -        if [A] (not [A]) goto B               (safe point)
+//  JtX / JfX         [array]  [DINT]   target   if array[[B]] (not) goto C, BOOL elements,
+//                                               checked by desc                 (safe point)
 //  Call              pou      -        -        call function: frame := out area      (safe point)
 //  CallFb            inst     pou      -        call FB/program body, self := &[A]    (safe point)
 //  CallFbP           [ptr]    pou      -        call FB body, self := [A] (checked)   (safe point)
@@ -50,6 +52,7 @@
 //  Rol/Ror<w>        [dst]    [x]      [UDINT]  rotate by count mod w
 //  Eq/Ne<w>          [BOOL]   [x]      [y]      bit equality
 //  JEq/JNe<w>        [x]      [y]      target   compare and branch                (safe point)
+//  JTst/JNTst<w>     [x]      [mask]   target   if ([A] AND [B]) <> 0 (= 0) goto C    (safe point)
 //  Div/Mod<T>        [dst]    [x]      [y]      truncating; integer /0 traps, MIN/-1 wraps
 //  Lt/Le<T>          [BOOL]   [x]      [y]      ordered compare (GT/GE: swap x and y)
 //  JLt/JLe<T>        [x]      [y]      target   compare and branch                (safe point)
@@ -137,8 +140,8 @@ struct FieldSpec {
     M(OP, I16, 2, std::int16_t)                                                                    \
     M(OP, I32, 4, std::int32_t)                                                                    \
     M(OP, I64, 8, std::int64_t)                                                                    \
-    M(OP, U8, 1, std::uint8_t) M(OP, U16, 2, std::uint16_t) M(OP, U32, 4, std::uint32_t)           \
-        M(OP, U64, 8, std::uint64_t)
+    M(OP, U8, 1, std::uint8_t)                                                                     \
+    M(OP, U16, 2, std::uint16_t) M(OP, U32, 4, std::uint32_t) M(OP, U64, 8, std::uint64_t)
 #define EPOSP_VM_FOR_FLOATS(M, OP) M(OP, F32, 4, float) M(OP, F64, 8, double)
 #define EPOSP_VM_FOR_SCALARS(M, OP)                                                                \
     M(OP, Bool, 1, ::eposp::vm::BoolByte) EPOSP_VM_FOR_INTS(M, OP) EPOSP_VM_FOR_FLOATS(M, OP)
@@ -149,10 +152,11 @@ struct FieldSpec {
     M(I8, 1, std::int8_t, __VA_ARGS__)                                                             \
     M(I16, 2, std::int16_t, __VA_ARGS__)                                                           \
     M(I32, 4, std::int32_t, __VA_ARGS__)                                                           \
-    M(I64, 8, std::int64_t, __VA_ARGS__) M(U8, 1, std::uint8_t, __VA_ARGS__)                       \
-        M(U16, 2, std::uint16_t, __VA_ARGS__) M(U32, 4, std::uint32_t, __VA_ARGS__)                \
-            M(U64, 8, std::uint64_t, __VA_ARGS__) M(F32, 4, float, __VA_ARGS__)                    \
-                M(F64, 8, double, __VA_ARGS__)
+    M(I64, 8, std::int64_t, __VA_ARGS__)                                                           \
+    M(U8, 1, std::uint8_t, __VA_ARGS__)                                                            \
+    M(U16, 2, std::uint16_t, __VA_ARGS__) M(U32, 4, std::uint32_t, __VA_ARGS__)                    \
+        M(U64, 8, std::uint64_t, __VA_ARGS__) M(F32, 4, float, __VA_ARGS__)                        \
+            M(F64, 8, double, __VA_ARGS__)
 
 #define EPOSP_VM_F(X) EPOSP_VM_F_##X
 #define EPOSP_VM_OP(OP, name, family, T1, T2, aux, a, b, c)                                        \
@@ -182,6 +186,10 @@ struct FieldSpec {
     EPOSP_VM_OP(OP, Ne##B, Ne, T, T, None, W1, R##N, R##N)                                         \
     EPOSP_VM_OP(OP, JEq##B, JEq, T, T, None, R##N, R##N, JT)                                       \
     EPOSP_VM_OP(OP, JNe##B, JNe, T, T, None, R##N, R##N, JT)
+
+#define EPOSP_VM_BIT_TEST_OPS(OP, B, N, T)                                                         \
+    EPOSP_VM_OP(OP, JTst##B, JTst, T, T, None, R##N, R##N, JT)                                     \
+    EPOSP_VM_OP(OP, JNTst##B, JNTst, T, T, None, R##N, R##N, JT)
 
 #define EPOSP_VM_ORDERED_OPS(OP, S, N, T)                                                          \
     EPOSP_VM_OP(OP, Div##S, Div, T, T, None, W##N, R##N, R##N)                                     \
@@ -233,7 +241,10 @@ struct FieldSpec {
     EPOSP_VM_FOR_FLOATS(EPOSP_VM_ORDERED_OPS, OP)                                                  \
     EPOSP_VM_FOR_INTS(EPOSP_VM_INT_OPS, OP)                                                        \
     EPOSP_VM_FOR_FLOATS(EPOSP_VM_FLOAT_OPS, OP)                                                    \
-    EPOSP_VM_FOR_SCALARS(EPOSP_VM_CVT_ROW, OP)
+    EPOSP_VM_FOR_SCALARS(EPOSP_VM_CVT_ROW, OP)                                                     \
+    EPOSP_VM_FOR_WIDTHS(EPOSP_VM_BIT_TEST_OPS, OP)                                                 \
+    EPOSP_VM_OP(OP, JtX, JtX, void, void, Array, AR1, R4, JT)                                      \
+    EPOSP_VM_OP(OP, JfX, JfX, void, void, Array, AR1, R4, JT)
 
 #define EPOSP_VM_ENUMERATOR(name, ...) name,
 enum class Opcode : std::uint16_t { EPOSP_VM_OPCODES(EPOSP_VM_ENUMERATOR) };
