@@ -260,7 +260,7 @@ core::Result<Image> read_image(std::span<const std::uint8_t> bytes) {
         return core::Error{"not a program image (bad magic)"};
     }
     const auto version = header.u16();
-    header.u16();
+    const auto reserved = header.u16();
     const auto payload_size = header.u32();
     const auto crc = header.u32();
     if (header.failed()) {
@@ -269,6 +269,11 @@ core::Result<Image> read_image(std::span<const std::uint8_t> bytes) {
     if (version != kImageVersion) {
         return core::Error{"image version " + std::to_string(version) +
                            " is not supported (expected " + std::to_string(kImageVersion) + ")"};
+    }
+    // Reserved for later versions: an image of this version has 0 there, so every accepted
+    // file is exactly what write_image makes of its image.
+    if (reserved != 0) {
+        return core::Error{"reserved header bytes are not zero"};
     }
     if (payload_size != header.remaining()) {
         return core::Error{"image size mismatch: header says " + std::to_string(payload_size) +
