@@ -156,6 +156,10 @@ private:
     void for_statement(const ast::ForStatement& node, const SourceRange& range);
     void while_statement(const ast::WhileStatement& node);
     void repeat_statement(const ast::RepeatStatement& node);
+    /// WHILE and REPEAT: the body, then a branch back to it while `condition` is
+    /// `repeat_when`; `test_first` enters at the condition (WHILE).
+    void conditional_loop(const ast::StatementList& body_statements,
+                          const ast::Expression& condition, bool repeat_when, bool test_first);
 
     // --- pou_calls.cpp -----------------------------------------------------------------------
     std::optional<Value> call(const ast::CallExpression& node, const sema::Type* hint,

@@ -323,30 +323,29 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
 }
 
 void PouGenerator::while_statement(const ast::WhileStatement& node) {
-    const Loop loop{builder_.label(), builder_.label()};
-    const vm::Label body = builder_.label();
-    builder_.jump(Opcode::Jmp, loop.next);
-    bind(body);
-    loops_.push_back(loop);
-    statements(node.body);
-    loops_.pop_back();
-    bind(loop.next);
-    const std::uint32_t mark = frame_top_;
-    branch(*node.condition, true, body);
-    release(mark);
-    bind(loop.exit);
+    conditional_loop(node.body, *node.condition, true, true);
 }
 
 void PouGenerator::repeat_statement(const ast::RepeatStatement& node) {
+    conditional_loop(node.body, *node.until, false, false);
+}
+
+void PouGenerator::conditional_loop(const ast::StatementList& body_statements,
+                                    const ast::Expression& condition, bool repeat_when,
+                                    bool test_first) {
+    // The condition sits after the body (one branch per iteration); WHILE enters at it.
     const Loop loop{builder_.label(), builder_.label()};
     const vm::Label body = builder_.label();
+    if (test_first) {
+        builder_.jump(Opcode::Jmp, loop.next);
+    }
     bind(body);
     loops_.push_back(loop);
-    statements(node.body);
+    statements(body_statements);
     loops_.pop_back();
     bind(loop.next);
     const std::uint32_t mark = frame_top_;
-    branch(*node.until, false, body);
+    branch(condition, repeat_when, body);
     release(mark);
     bind(loop.exit);
 }
