@@ -149,6 +149,35 @@ END_PROGRAM
     EXPECT_EQ(run.fault(), "array index out of range in Main at line 4");
 }
 
+struct IndexTrap {
+    std::string name;
+    std::string declarations;
+    std::string access;
+};
+
+class IndexOutOfRange : public testing::TestWithParam<IndexTrap> {};
+
+// Each index form the code generator has its own path for stops at the bound it crosses.
+TEST_P(IndexOutOfRange, StopsTheTask) {
+    StProgram run("PROGRAM Main\nVAR a : ARRAY[1..3] OF DINT; x : DINT; " +
+                  GetParam().declarations + " END_VAR\nx := " + GetParam().access +
+                  ";\nEND_PROGRAM\n");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    EXPECT_FALSE(run.scans(1));
+    EXPECT_EQ(run.fault(), "array index out of range in Main at line 3");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Forms, IndexOutOfRange,
+    testing::Values(IndexTrap{"DintAbove", "j : DINT := 4;", "a[j]"},
+                    IndexTrap{"DintBelow", "j : DINT := 0;", "a[j]"},
+                    IndexTrap{"IntBelow", "i : INT := -1;", "a[i]"},
+                    IndexTrap{"UdintHuge", "u : UDINT := 16#80000001;", "a[u]"},
+                    IndexTrap{"PlusConstantAbove", "j : DINT := 3;", "a[j + 1]"},
+                    IndexTrap{"MinusConstantBelow", "j : DINT := 1;", "a[j - 1]"},
+                    IndexTrap{"SumWrapsAround", "j : DINT := 2147483647;", "a[j + 2]"}),
+    [](const auto& param_info) { return param_info.param.name; });
+
 TEST(Robustness, GarbageNeverCrashes) {
     for (const char* source :
          {"PROGRAM Main VAR x : INT; END_VAR x := x. ; END_PROGRAM",

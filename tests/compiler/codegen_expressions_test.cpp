@@ -119,6 +119,18 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"ArrayIndexedByVariable",
                 "a : ARRAY[1..5] OF INT := [1, 2, 3, 4, 5]; i : INT := 5;",
                 "a[i] := 50; x := a[i] + a[1];", 51},
+        // A constant next to a DINT index moves into the bound instead of costing an addition.
+        IntCase{"NeighbourElementsOfADintIndex",
+                "a : ARRAY[1..5] OF DINT := [1, 2, 3, 4, 5]; j : DINT := 3;",
+                "x := a[j - 1] * 100 + a[j] * 10 + a[1 + j]; a[j + 2] := 9; x := x * 10 + a[5];",
+                2349},
+        IntCase{"DisplacedIndexWrapsLikeTheSum",
+                "a : ARRAY[-2147483648..-2147483647] OF DINT := [7, 8]; j : DINT := 2147483647;",
+                "x := a[j + 1] * 10 + a[j + 2];", 78},
+        IntCase{"NegativeIntIndex", "a : ARRAY[-3..-1] OF SINT := [1, 2, 3]; i : INT := -2;",
+                "x := a[i] * 10 + a[i - 1];", 21},
+        IntCase{"UdintIndex", "a : ARRAY[0..3] OF DINT := [1, 2, 3, 4]; u : UDINT := 3;",
+                "x := a[u];", 4},
         IntCase{"TwoDimensionalArray", "m : ARRAY[0..2, 1..3] OF DINT; i, j : INT;",
                 "FOR i := 0 TO 2 DO FOR j := 1 TO 3 DO m[i, j] := i * 10 + j; END_FOR; END_FOR;"
                 "i := 2; j := 3; x := m[i, j] + m[1, 2];",

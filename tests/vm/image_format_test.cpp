@@ -61,7 +61,7 @@ INSTANTIATE_TEST_SUITE_P(
         Corruption{"Empty", [](auto& b) { b.clear(); }, "not a program image (bad magic)"},
         Corruption{"HeaderCut", [](auto& b) { b.resize(10); }, "truncated image header"},
         Corruption{"OtherVersion", [](auto& b) { b[4] = 99; },
-                   "image version 99 is not supported (expected 2)"},
+                   "image version 99 is not supported (expected 3)"},
         Corruption{"ReservedHeaderByte", [](auto& b) { b[7] = 9; },
                    "reserved header bytes are not zero"},
         Corruption{"FlippedBit", [](auto& b) { b[40] ^= 0x10; },

@@ -26,6 +26,13 @@ void store(std::uint8_t* p, T value) {
     std::memcpy(p, &value, sizeof(T));
 }
 
+// An INT index is sign-extended, so both widths meet lower on the same 32-bit circle.
+std::uint32_t array_index(const ArrayDescriptor& descriptor, const std::uint8_t* index) {
+    return descriptor.index_size == 2
+               ? static_cast<std::uint32_t>(std::int32_t{load<std::int16_t>(index)})
+               : load<std::uint32_t>(index);
+}
+
 std::uint32_t line_at(const Pou& pou, std::uint32_t instruction) {
     std::uint32_t line = 0;
     for (const auto& entry : pou.lines) {
@@ -124,14 +131,15 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
         }                                                                                          \
         VM_NEXT();                                                                                 \
     } while (false)
-// Checked element address: index - lower must be below the descriptor's count.
+// Checked element address: index - lower, modulo 2^32, must be below the descriptor's count.
 #define VM_ELEMENT(array, index_operand, out)                                                      \
     const auto& descriptor = arrays[ip->aux];                                                      \
-    const auto element = std::int64_t{load<std::int32_t>(index_operand)} - descriptor.lower;       \
-    if (static_cast<std::uint64_t>(element) >= descriptor.count) {                                 \
+    const auto element = array_index(descriptor, index_operand) -                                  \
+                         static_cast<std::uint32_t>(descriptor.lower);                             \
+    if (element >= descriptor.count) {                                                             \
         VM_TRAP(Trap::IndexOutOfRange);                                                            \
     }                                                                                              \
-    out = static_cast<std::uint64_t>(element) * descriptor.element_size
+    out = std::uint64_t{element} * descriptor.element_size
 // Checked pointer: not NULL (or into the guard) and `size` bytes at pointer+offset in memory.
 #define VM_DEREF(pointer_operand, offset, size, out)                                               \
     const auto address = load<std::uint64_t>(pointer_operand);                                     \

@@ -95,6 +95,8 @@ private:
             return ins.b < image_.pous.size()
                        ? check_operand(Operand{value}, image_.pous[ins.b].instance_size, fail)
                        : fail("instance of a POU that does not exist");
+        case Field::ArrayIndex:
+            return check_operand(Operand{value}, image_.arrays[ins.aux].index_size, fail);
         case Field::ArrayRead:
         case Field::ArrayWrite: {
             const auto& array = image_.arrays[ins.aux];
@@ -219,11 +221,13 @@ Defect verify_static(const Image& image) {
         return defect("static data initial values do not match its size");
     }
     for (const auto& array : image.arrays) {
-        // The upper bound must be a DINT too, so that index - lower never wraps.
         if (array.element_size == 0 ||
-            std::uint64_t{array.count} * array.element_size > kMaxAreaSize ||
-            std::int64_t{array.lower} + array.count - 1 > INT32_MAX) {
-            return defect("array descriptor with an empty element, too large or past DINT");
+            std::uint64_t{array.count} * array.element_size > kMaxAreaSize) {
+            return defect("array descriptor with an empty element or too large");
+        }
+        if (array.index_size != 2 && array.index_size != 4) {
+            return defect("array descriptor with an index of " +
+                          std::to_string(array.index_size) + " bytes");
         }
     }
     for (const auto& range : image.retain) {

@@ -127,6 +127,95 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
     return std::nullopt;
 }
 
+Operand PouGenerator::as_dint(const Value& value) {
+    const sema::Type& dint = types_.elementary(E::Dint);
+    if (value.type == &dint) {
+        return value.operand;
+    }
+    const vm::Opcode convert = program_.opcodes().get(
+        "Cvt", std::string(type_suffix(sema::scalar_of(*value.type))) + "I32");
+    const ValueCache::Key key{ValueCache::Kind::Convert, value.operand.raw,
+                              static_cast<std::uint32_t>(convert), 0};
+    if (const auto hit = cache_.find(key)) {
+        return *hit;
+    }
+    const Operand converted = temp(dint);
+    emit(convert, converted, value.operand);
+    cache_.add(key, converted, 4, {{value.operand, value.type->size}});
+    return converted;
+}
+
+std::optional<PouGenerator::ElementIndex>
+PouGenerator::displaced_index(const ast::Expression& index, std::int64_t lower) {
+    const auto* sum = std::get_if<ast::BinaryExpression>(&index.node);
+    if (sum == nullptr ||
+        (sum->op != ast::BinaryOperator::Add && sum->op != ast::BinaryOperator::Subtract)) {
+        return std::nullopt;
+    }
+    const auto small_literal = [](const ast::Expression& side) -> std::optional<std::int64_t> {
+        const auto* literal = std::get_if<ast::LiteralExpression>(&side.node);
+        const auto* integer =
+            literal ? std::get_if<ast::IntegerLiteral>(&literal->value) : nullptr;
+        if (integer == nullptr || integer->type || integer->magnitude > INT32_MAX) {
+            return std::nullopt;
+        }
+        const auto magnitude = static_cast<std::int64_t>(integer->magnitude);
+        return integer->negative ? -magnitude : magnitude;
+    };
+    const bool add = sum->op == ast::BinaryOperator::Add;
+    auto constant = small_literal(*sum->right);
+    const ast::Expression* variable = sum->left.get();
+    if (!constant && add) {
+        constant = small_literal(*sum->left);
+        variable = sum->right.get();
+    }
+    const auto* name = std::get_if<ast::NameExpression>(&variable->node);
+    const sema::Symbol* symbol = name ? model_.resolved(name->name) : nullptr;
+    if (!constant || symbol == nullptr || symbol->kind != sema::SymbolKind::Variable) {
+        return std::nullopt;
+    }
+    const auto where = place(*variable);
+    if (!where || where->kind != Place::Kind::Direct ||
+        where->type != &types_.elementary(E::Dint)) {
+        return std::nullopt;
+    }
+    // The bound moves by the constant modulo 2^32, as the wrapping DINT sum would.
+    const std::int64_t moved = lower - (add ? *constant : -*constant);
+    return ElementIndex{where->operand, static_cast<std::int32_t>(static_cast<std::uint32_t>(moved)),
+                        4};
+}
+
+std::optional<PouGenerator::ElementIndex>
+PouGenerator::element_index(const ast::Expression& index, std::int64_t lower) {
+    if (auto displaced = displaced_index(index, lower)) {
+        return displaced;
+    }
+    const sema::Type& dint = types_.elementary(E::Dint);
+    const auto value = eval(index, &dint);
+    if (!value) {
+        return std::nullopt;
+    }
+    if (!sema::is_integer(*value->type) && value->type->kind != sema::TypeKind::Enum) {
+        error(index.range,
+              fmt::format("an array index must be an integer, not {}", value->type->name));
+        return std::nullopt;
+    }
+    const auto bound = static_cast<std::int32_t>(lower);
+    // An INT indexes as it is; a UDINT has the DINT's bits, so the modular check is the same.
+    if (value->type->kind != sema::TypeKind::Enum) {
+        switch (sema::scalar_of(*value->type)) {
+        case vm::Scalar::I16:
+            return ElementIndex{value->operand, bound, 2};
+        case vm::Scalar::I32:
+        case vm::Scalar::U32:
+            return ElementIndex{value->operand, bound, 4};
+        default:
+            break;
+        }
+    }
+    return ElementIndex{as_dint(*value), bound, 4};
+}
+
 std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                                          const SourceRange& range) {
     auto array = place(*node.array);
@@ -165,9 +254,21 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     if (all_constant) {
         return member(*array, static_cast<std::uint32_t>(constant) * element.size, element);
     }
-    // The linear index: sum of (i_d - lower_d) * stride_d, for one dimension just i.
-    Operand linear{};
-    for (std::size_t d = 0; d < node.indices.size(); ++d) {
+    std::uint32_t count = 1;
+    for (const auto& dimension : type.dimensions) {
+        count *= dimension.count;
+    }
+    const bool one = type.dimensions.size() == 1;
+    std::optional<ElementIndex> single;
+    if (one) {
+        single = element_index(*node.indices[0], type.dimensions[0].lower);
+        if (!single) {
+            return std::nullopt;
+        }
+    }
+    // More dimensions: the linear index, sum of (i_d - lower_d) * stride_d, as a DINT.
+    Operand linear = one ? single->operand : Operand{};
+    for (std::size_t d = 0; !one && d < node.indices.size(); ++d) {
         auto value = eval(*node.indices[d], &dint);
         if (!value) {
             return std::nullopt;
@@ -177,25 +278,7 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                   fmt::format("an array index must be an integer, not {}", value->type->name));
             return std::nullopt;
         }
-        if (value->type != &dint) {
-            const vm::Opcode convert = program_.opcodes().get(
-                "Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32");
-            const ValueCache::Key key{ValueCache::Kind::Convert, value->operand.raw,
-                                      static_cast<std::uint32_t>(convert), 0};
-            Operand converted{};
-            if (const auto hit = cache_.find(key)) {
-                converted = *hit;
-            } else {
-                converted = temp(dint);
-                emit(convert, converted, value->operand);
-                cache_.add(key, converted, 4, {{value->operand, value->type->size}});
-            }
-            value = Value{converted, &dint};
-        }
-        if (node.indices.size() == 1) {
-            linear = value->operand;
-            break;
-        }
+        value = Value{as_dint(*value), &dint};
         const auto& dimension = type.dimensions[d];
         const Operand term = temp(dint);
         emit(Opcode::AddI32, term, value->operand,
@@ -212,13 +295,9 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
             emit(Opcode::Add32, linear, linear, term);
         }
     }
-    std::uint32_t count = 1;
-    for (const auto& dimension : type.dimensions) {
-        count *= dimension.count;
-    }
-    const bool one = type.dimensions.size() == 1;
-    const std::uint16_t descriptor = array_descriptor(
-        one ? static_cast<std::int32_t>(type.dimensions[0].lower) : 0, count, element.size);
+    const std::uint16_t descriptor =
+        one ? array_descriptor(single->lower, count, element.size, single->size)
+            : array_descriptor(0, count, element.size);
     if (array->kind == Place::Kind::Direct && sema::is_scalar(element)) {
         return Place{.kind = Place::Kind::Element,
                      .type = &element,

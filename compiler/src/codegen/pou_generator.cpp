@@ -175,8 +175,9 @@ void PouGenerator::bind(vm::Label label) {
 }
 
 std::uint16_t PouGenerator::array_descriptor(std::int32_t lower, std::uint32_t count,
-                                             std::uint32_t element_size) {
-    const std::uint16_t descriptor = builder_.array(lower, count, element_size);
+                                             std::uint32_t element_size,
+                                             std::uint8_t index_size) {
+    const std::uint16_t descriptor = builder_.array(lower, count, element_size, index_size);
     array_bytes_[descriptor] = count * element_size;
     return descriptor;
 }

@@ -66,7 +66,7 @@ private:
     void bind(vm::Label label);
     /// An array descriptor, remembering the bytes it covers.
     std::uint16_t array_descriptor(std::int32_t lower, std::uint32_t count,
-                                   std::uint32_t element_size);
+                                   std::uint32_t element_size, std::uint8_t index_size = 4);
     std::optional<Place> variable(const sema::Symbol& symbol, const SourceRange& range);
     void error(const SourceRange& range, std::string message);
     void warning(const SourceRange& range, std::string message);
@@ -85,6 +85,18 @@ private:
     // --- pou_expressions.cpp -----------------------------------------------------------------
     std::optional<Place> place(const ast::Expression& expression);
     std::optional<Place> index(const ast::IndexExpression& node, const SourceRange& range);
+    /// How one array dimension is indexed: the index operand and the descriptor's lower bound
+    /// and index size.
+    struct ElementIndex {
+        vm::Operand operand;
+        std::int32_t lower = 0;
+        std::uint8_t size = 4;
+    };
+    std::optional<ElementIndex> element_index(const ast::Expression& index, std::int64_t lower);
+    /// `j + 1` or `j - 1` on a DINT variable: j itself, with the constant moved into the bound.
+    std::optional<ElementIndex> displaced_index(const ast::Expression& index, std::int64_t lower);
+    /// `value` as a DINT: itself, or a conversion (remembered in the value cache).
+    vm::Operand as_dint(const Value& value);
     /// The value of `expression` of its own type; an untyped literal takes `hint`.
     std::optional<Value> eval(const ast::Expression& expression, const sema::Type* hint,
                               const Destination* dest = nullptr);

@@ -11,17 +11,21 @@ namespace eposp::vm {
 
 /// Bumped whenever the binary layout or the meaning of an opcode changes; the loader refuses
 /// other versions.
-inline constexpr std::uint16_t kImageVersion = 2;
+inline constexpr std::uint16_t kImageVersion = 3;
 
 /// Memory addresses (pointer values, static offsets) below this are never valid data: a
 /// pointer of 0 is NULL and dereferencing anything in the guard traps.
 inline constexpr std::uint32_t kNullGuardSize = 8;
 
-/// The bounds an indexed instruction checks: index - lower must be < count.
+/// How an indexed instruction turns its index operand into an element: index - lower, taken
+/// modulo 2^32, must be below count. The modular difference is what lets the compiler fold a
+/// constant into the descriptor (`a[j + 1]` indexes with j against lower - 1) and still check
+/// exactly what `a[j + 1]` with a wrapping DINT addition would.
 struct ArrayDescriptor {
     std::int32_t lower = 0;
     std::uint32_t count = 0;
     std::uint32_t element_size = 0;
+    std::uint8_t index_size = 4; ///< the signed index operand: 2 (INT) or 4 (DINT) bytes
     bool operator==(const ArrayDescriptor&) const = default;
 };
 

@@ -16,7 +16,8 @@
 // the middle of an instruction can even be expressed) and decoding branch-free.
 //
 // Notation below: [X] is the memory operand X, typed by the opcode's suffix; #X is the raw
-// 32-bit field X; desc is array descriptor number aux (lower bound, count, element size).
+// 32-bit field X; desc is array descriptor number aux (lower bound, count, element size, and
+// whether [index] is an INT or a DINT).
 // Families are written once and instantiated per width or type; the suffix says which:
 //   8/16/32/64  the bit width, sign-agnostic (two's complement wrap-around)
 //   I8..I64, U8..U64, F32, F64, Bool  a typed value
@@ -25,7 +26,7 @@
 //  Nop               -        -        -        nothing
 //  Jmp               target   -        -        goto target                           (safe point)
 //  Jt / Jf           [BOOL]   target   -        if [A] (not [A]) goto B               (safe point)
-//  JtX / JfX         [array]  [DINT]   target   if array[[B]] (not) goto C, BOOL elements,
+//  JtX / JfX         [array]  [index]  target   if array[[B]] (not) goto C, BOOL elements,
 //                                               checked by desc                 (safe point)
 //  Call              pou      -        -        call function: frame := out area      (safe point)
 //  CallFb            inst     pou      -        call FB/program body, self := &[A]    (safe point)
@@ -34,14 +35,14 @@
 //  Ret               -        -        -        return to the caller (end of the task's run)
 //  MovN              [dst]    [src]    #size    copy #C bytes (STRUCT, STRING, ARRAY)
 //  Addr              [ptr]    [x]      #size    [A] := address of [B] (REF, ADR)
-//  IdxA              [ptr]    [array]  [DINT]   [A] := &array[[C]]           checked by desc
-//  IdxAP             [ptr]    [ptr]    [DINT]   [A] := [B] + ([C]-lo)*size   checked by desc
+//  IdxA              [ptr]    [array]  [index]   [A] := &array[[C]]           checked by desc
+//  IdxAP             [ptr]    [ptr]    [index]   [A] := [B] + ([C]-lo)*size   checked by desc
 //  LdpN / StpN       [dst]/[ptr] [ptr]/[src] #size  block copy through a pointer (checked)
 //  NotB              [BOOL]   [BOOL]   -        logical NOT
 //  Mov<w>            [dst]    [src]    -        [A] := [B]
 //  Ldi<w>            [dst]    #lo      #hi      [A] := #B | #C << 32, truncated to w
-//  Ldx<w>            [dst]    [array]  [DINT]   [A] := array[[C]]            checked by desc
-//  Stx<w>            [array]  [DINT]   [src]    array[[B]] := [C]            checked by desc
+//  Ldx<w>            [dst]    [array]  [index]   [A] := array[[C]]            checked by desc
+//  Stx<w>            [array]  [index]  [src]    array[[B]] := [C]            checked by desc
 //  Ldp<w>            [dst]    [ptr]    #off     [A] := *([B] + #C)           NULL/range checked
 //  Stp<w>            [ptr]    [src]    #off     *([A] + #C) := [B]           NULL/range checked
 //  Add/Sub/Mul<w>    [dst]    [x]      [y]      wrap-around arithmetic
@@ -83,6 +84,7 @@ enum class Field : std::uint8_t {
     Instance,   ///< an FB instance operand, sized by the POU in field B
     ArrayRead,  ///< an array operand, sized by the descriptor in aux; size is the access width
     ArrayWrite, ///< the same, written
+    ArrayIndex, ///< the index of an indexed access, read with the descriptor's index size
 };
 
 /// What the aux field of an instruction holds.
@@ -129,6 +131,7 @@ struct FieldSpec {
 #define EPOSP_VM_F_AW2 EPOSP_VM_FIELD(ArrayWrite, 2)
 #define EPOSP_VM_F_AW4 EPOSP_VM_FIELD(ArrayWrite, 4)
 #define EPOSP_VM_F_AW8 EPOSP_VM_FIELD(ArrayWrite, 8)
+#define EPOSP_VM_F_AI EPOSP_VM_FIELD(ArrayIndex, 0)
 
 // The lists: OP(name, family, T1, T2, aux, A, B, C). `family` names the semantics
 // (the interpreter defines one handler per family), T1/T2 are the C++ types it works on.
@@ -165,8 +168,8 @@ struct FieldSpec {
 #define EPOSP_VM_WIDTH_OPS(OP, B, N, T)                                                            \
     EPOSP_VM_OP(OP, Mov##B, Mov, T, T, None, W##N, R##N, _)                                        \
     EPOSP_VM_OP(OP, Ldi##B, Ldi, T, T, None, W##N, IM, IM)                                         \
-    EPOSP_VM_OP(OP, Ldx##B, Ldx, T, T, Array, W##N, AR##N, R4)                                     \
-    EPOSP_VM_OP(OP, Stx##B, Stx, T, T, Array, AW##N, R4, R##N)                                     \
+    EPOSP_VM_OP(OP, Ldx##B, Ldx, T, T, Array, W##N, AR##N, AI)                                     \
+    EPOSP_VM_OP(OP, Stx##B, Stx, T, T, Array, AW##N, AI, R##N)                                     \
     EPOSP_VM_OP(OP, Ldp##B, Ldp, T, T, None, W##N, R8, IM)                                         \
     EPOSP_VM_OP(OP, Stp##B, Stp, T, T, None, R8, R##N, IM)                                         \
     EPOSP_VM_OP(OP, Add##B, Add, T, T, None, W##N, R##N, R##N)                                     \
@@ -231,8 +234,8 @@ struct FieldSpec {
     EPOSP_VM_OP(OP, Ret, Ret, void, void, None, _, _, _)                                           \
     EPOSP_VM_OP(OP, MovN, MovN, void, void, None, WN, RN, SZ)                                      \
     EPOSP_VM_OP(OP, Addr, Addr, void, void, None, W8, RN, SZ)                                      \
-    EPOSP_VM_OP(OP, IdxA, IdxA, void, void, Array, W8, AR0, R4)                                    \
-    EPOSP_VM_OP(OP, IdxAP, IdxAP, void, void, Array, W8, R8, R4)                                   \
+    EPOSP_VM_OP(OP, IdxA, IdxA, void, void, Array, W8, AR0, AI)                                    \
+    EPOSP_VM_OP(OP, IdxAP, IdxAP, void, void, Array, W8, R8, AI)                                   \
     EPOSP_VM_OP(OP, LdpN, LdpN, void, void, None, WN, R8, SZ)                                      \
     EPOSP_VM_OP(OP, StpN, StpN, void, void, None, R8, RN, SZ)                                      \
     EPOSP_VM_OP(OP, NotB, NotB, void, void, None, W1, R1, _)                                       \
@@ -243,8 +246,8 @@ struct FieldSpec {
     EPOSP_VM_FOR_FLOATS(EPOSP_VM_FLOAT_OPS, OP)                                                    \
     EPOSP_VM_FOR_SCALARS(EPOSP_VM_CVT_ROW, OP)                                                     \
     EPOSP_VM_FOR_WIDTHS(EPOSP_VM_BIT_TEST_OPS, OP)                                                 \
-    EPOSP_VM_OP(OP, JtX, JtX, void, void, Array, AR1, R4, JT)                                      \
-    EPOSP_VM_OP(OP, JfX, JfX, void, void, Array, AR1, R4, JT)
+    EPOSP_VM_OP(OP, JtX, JtX, void, void, Array, AR1, AI, JT)                                      \
+    EPOSP_VM_OP(OP, JfX, JfX, void, void, Array, AR1, AI, JT)
 
 #define EPOSP_VM_ENUMERATOR(name, ...) name,
 enum class Opcode : std::uint16_t { EPOSP_VM_OPCODES(EPOSP_VM_ENUMERATOR) };
