@@ -28,6 +28,8 @@ public:
     bool scans(int n, std::int64_t step_ns = 1'000'000);
     /// The fault text of task 0 ("division by zero in Main at line 3").
     std::string fault() const;
+    /// The compiled image (only when ok()).
+    const vm::Image& image() const { return program_->image(); }
 
     /// A variable by its path (`Main.x`, `Config0.result`, `Inst0.s.checksum`).
     template <typename T>

@@ -224,7 +224,7 @@ TEST(ControlFlow, NativeFunctionsReceiveArgumentsAndReturnAResult) {
     h.init(8, 4.0);
     h.builder.emit(Opcode::Mov64, Operand::out(parameter_offset(hypot, 0)), self(0));
     h.builder.emit(Opcode::Mov64, Operand::out(parameter_offset(hypot, 1)), self(8));
-    h.builder.emit(Opcode::CallNative, Operand::imm(import));
+    h.builder.emit(Opcode::CallNative, Operand::imm(import), Operand::out(0));
     h.builder.emit(Opcode::Mov64, self(16), Operand::out(0));
     h.builder.emit(Opcode::Ret);
     h.end_main(0, argument_block_size(hypot));
@@ -248,8 +248,8 @@ TEST(ControlFlow, NativeFunctionBlockWorksOnItsInstanceThroughAPointer) {
     });
     const auto import = h.builder.import("TICK", tick);
     h.builder.emit(Opcode::Addr, Operand::out(0), self(32), Operand::imm(4));
-    h.builder.emit(Opcode::CallNative, Operand::imm(import));
-    h.builder.emit(Opcode::CallNative, Operand::imm(import));
+    h.builder.emit(Opcode::CallNative, Operand::imm(import), Operand::out(0));
+    h.builder.emit(Opcode::CallNative, Operand::imm(import), Operand::out(0));
     h.builder.emit(Opcode::Ret);
     h.end_main(0, 8);
     ASSERT_EQ(h.run(), RunState::Finished);

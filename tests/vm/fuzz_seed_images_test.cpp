@@ -52,15 +52,15 @@ Image string_loop_image() {
     address(0, text);
     address(8, text);
     address(16, ab);
-    b.emit(Opcode::CallNative, Operand::imm(concat));
+    b.emit(Opcode::CallNative, Operand::imm(concat), Operand::out(0));
     b.for_loop(Opcode::ForI32, body, Operand::self(0), Operand::global(ten), 1);
     b.line(3);
     address(8, text);
-    b.emit(Opcode::CallNative, Operand::imm(len));
+    b.emit(Opcode::CallNative, Operand::imm(len), Operand::out(0));
     b.emit(Opcode::Mov32, Operand::self(4), Operand::out(0));
     address(8, text);
     address(16, ba);
-    b.emit(Opcode::CallNative, Operand::imm(find));
+    b.emit(Opcode::CallNative, Operand::imm(find), Operand::out(0));
     b.emit(Opcode::Mov32, Operand::self(8), Operand::out(0));
     b.emit(Opcode::Ret);
     b.end_body(0, 24);

@@ -41,7 +41,7 @@ inline Image sample_image() {
     b.emit(Opcode::Stx32, Operand::self(4), Operand::self(0), Operand::out(4), values);
     b.line(5);
     b.emit(Opcode::CvtI32F64, Operand::out(8), Operand::self(0));
-    b.emit(Opcode::CallNative, Operand::imm(sqrt_import));
+    b.emit(Opcode::CallNative, Operand::imm(sqrt_import), Operand::out(0));
     b.emit(Opcode::Mov64, Operand::self(24), Operand::out(0));
     auto done = b.label();
     b.jump(Opcode::JLtI32, done, Operand::self(0), Operand::self(0));

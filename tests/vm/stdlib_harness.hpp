@@ -69,7 +69,7 @@ public:
                                      Operand::imm(size));
             }
         }
-        harness.builder.emit(Opcode::CallNative, Operand::imm(import));
+        harness.builder.emit(Opcode::CallNative, Operand::imm(import), Operand::out(0));
         if (signature.has_result) {
             const auto size = scalar_size(signature.result);
             harness.builder.emit(Opcode::MovN, self(0), Operand::out(0), Operand::imm(size));

@@ -124,7 +124,13 @@ std::string disassemble(const Image& image) {
     for (const auto& pou : image.pous) {
         out += fmt::format("\n{} {}:\n", kPouKind[static_cast<int>(pou.kind) % 3], pou.name);
         auto line = pou.lines.begin();
+        auto inlined = pou.inlined.begin();
         for (auto i = pou.code_begin; i < pou.code_end && i < image.code.size(); ++i) {
+            if (inlined != pou.inlined.end() && inlined->begin == i) {
+                out += fmt::format("         ({} inlined up to {})\n",
+                                   name_or_index(image.pous, inlined->callee), inlined->end);
+                ++inlined;
+            }
             std::string where = "     ";
             if (line != pou.lines.end() && line->instruction == i) {
                 where = fmt::format("L{:<4}", line->line);

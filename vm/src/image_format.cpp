@@ -149,7 +149,7 @@ void describe_tasks(Io& io, std::vector<Task>& tasks) {
 
 template <typename Io>
 void describe_pous(Io& io, std::vector<Pou>& pous) {
-    io.list(pous, 29, [&](Pou& p) {
+    io.list(pous, 33, [&](Pou& p) {
         io.string(p.name);
         io.enumerator(p.kind, PouKind::Program, "POU kind");
         io.u32(p.code_begin);
@@ -160,6 +160,11 @@ void describe_pous(Io& io, std::vector<Pou>& pous) {
         io.list(p.lines, 8, [&](LineEntry& l) {
             io.u32(l.instruction);
             io.u32(l.line);
+        });
+        io.list(p.inlined, 12, [&](InlinedCall& c) {
+            io.u32(c.begin);
+            io.u32(c.end);
+            io.u32(c.callee);
         });
     });
 }

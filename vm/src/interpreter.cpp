@@ -63,12 +63,20 @@ std::uint64_t executed_in_run(std::uint64_t limit, std::int64_t remaining) {
     return static_cast<std::uint64_t>(static_cast<std::int64_t>(limit) - remaining);
 }
 
-RunState stop(TaskState& task, const Pou& where, Trap trap, std::uint32_t pou,
+RunState stop(TaskState& task, const Image& image, Trap trap, std::uint32_t pou,
               std::uint32_t instruction) {
+    // In a body copied in place of a call, the error is the callee's, at its own line.
+    for (const InlinedCall& call : image.pous[pou].inlined) {
+        if (instruction >= call.begin && instruction < call.end) {
+            instruction = image.pous[call.callee].code_begin + (instruction - call.begin);
+            pou = call.callee;
+            break;
+        }
+    }
     task.fault.trap = trap;
     task.fault.pou = pou;
     task.fault.instruction = instruction;
-    task.fault.line = line_at(where, instruction);
+    task.fault.line = line_at(image.pous[pou], instruction);
     task.state = RunState::Faulted;
     return task.state;
 }
@@ -195,7 +203,7 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     }
 #define VM_EXEC_CallNative(T1, T2)                                                                 \
     {                                                                                              \
-        if (!call_native(program, ip->a, base[3], memory, task.fault.native_reason)) {             \
+        if (!call_native(program, ip->a, B, memory, task.fault.native_reason)) {             \
             VM_TRAP(Trap::NativeError);                                                            \
         }                                                                                          \
         VM_CHARGE();                                                                               \
@@ -406,7 +414,7 @@ dispatch:
 trapped:
     VM_CHARGE();
     task.executed += executed_in_run(limit, remaining);
-    return stop(task, pous[pou], trap, pou, static_cast<std::uint32_t>(ip - code));
+    return stop(task, image, trap, pou, static_cast<std::uint32_t>(ip - code));
 
 slice_used:
     task.executed += executed_in_run(limit, remaining);
@@ -414,7 +422,7 @@ slice_used:
                               static_cast<std::uint32_t>(base[1] - mem),
                               static_cast<std::uint32_t>(base[2] - mem)};
     if (task.executed >= task.budget) {
-        return stop(task, pous[pou], Trap::BudgetExceeded, pou,
+        return stop(task, image, Trap::BudgetExceeded, pou,
                     static_cast<std::uint32_t>(ip - code));
     }
     task.state = RunState::Suspended;

@@ -83,13 +83,13 @@ private:
         case Field::Pou:
             return check_callee(ins.opcode, value, fail);
         case Field::Import:
-            if (value >= image_.imports.size()) {
-                return fail("import " + std::to_string(value) + " does not exist");
-            }
-            return argument_block_size(image_.imports[value].signature) <= pou_.out_size
+            return value < image_.imports.size()
                        ? Defect{}
-                       : fail("arguments of " + image_.imports[value].name +
-                              " exceed the out area");
+                       : fail("import " + std::to_string(value) + " does not exist");
+        case Field::NativeArguments:
+            // Field A (the import) is checked first.
+            return check_operand(Operand{value},
+                                 argument_block_size(image_.imports[ins.a].signature), fail);
         case Field::Instance:
             // Field B (the POU) is checked on its own; here only its instance size matters.
             return ins.b < image_.pous.size()
@@ -199,6 +199,17 @@ Defect verify_pous(const Image& image) {
                 return defect(where + ": line table out of order or outside the POU");
             }
             last = entry.instruction;
+        }
+        last = pou.code_begin;
+        for (const auto& call : pou.inlined) {
+            if (call.begin < last || call.begin >= call.end || call.end > pou.code_end ||
+                call.callee >= image.pous.size() ||
+                call.end - call.begin > image.pous[call.callee].code_end -
+                                            image.pous[call.callee].code_begin) {
+                return defect(where + ": inlined call out of order, outside the POU or longer "
+                                      "than its callee");
+            }
+            last = call.end;
         }
         CodeVerifier verifier(image, pou);
         for (auto i = pou.code_begin; i < pou.code_end; ++i) {

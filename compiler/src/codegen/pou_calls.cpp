@@ -401,7 +401,7 @@ void PouGenerator::call_native(const std::string& name, const vm::NativeSignatur
         }
     }
     out_slot(vm::argument_block_size(signature));
-    emit(Opcode::CallNative, Operand::imm(import));
+    emit(Opcode::CallNative, Operand::imm(import), Operand::out(0));
 }
 
 std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& signature,

@@ -1,6 +1,7 @@
 #include "program_generator.hpp"
 
 #include "eposp/compiler/sema/symbol.hpp"
+#include "call_inlining.hpp"
 #include "jump_threading.hpp"
 #include "pou_generator.hpp"
 
@@ -170,6 +171,7 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         diagnostics_.error({}, "internal error: " + image.error());
         return std::nullopt;
     }
+    inline_leaf_calls(*image);
     thread_jumps(*image);
     return std::move(*image);
 }

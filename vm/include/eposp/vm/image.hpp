@@ -38,6 +38,15 @@ struct LineEntry {
     bool operator==(const LineEntry&) const = default;
 };
 
+/// Instructions [begin, end) of a POU are a copy of the body of `callee` put in place of a call
+/// (the last Ret dropped): run-time errors there name the callee and its line.
+struct InlinedCall {
+    std::uint32_t begin = 0;
+    std::uint32_t end = 0;
+    std::uint32_t callee = 0;
+    bool operator==(const InlinedCall&) const = default;
+};
+
 /// A program organisation unit: a range of code and the memory its activations need.
 struct Pou {
     std::string name;
@@ -48,6 +57,7 @@ struct Pou {
     std::uint32_t out_size = 0;      ///< argument area for the calls this POU makes
     std::uint32_t instance_size = 0; ///< for FBs and programs: the instance `self` points to
     std::vector<LineEntry> lines;
+    std::vector<InlinedCall> inlined; ///< sorted by begin, not overlapping
     bool operator==(const Pou&) const = default;
 };
 

@@ -31,7 +31,7 @@
 //  Call              pou      -        -        call function: frame := out area      (safe point)
 //  CallFb            inst     pou      -        call FB/program body, self := &[A]    (safe point)
 //  CallFbP           [ptr]    pou      -        call FB body, self := [A] (checked)   (safe point)
-//  CallNative        import   -        -        host function on the out area         (safe point)
+//  CallNative        import   [args]   -        host function on the argument block   (safe point)
 //  Ret               -        -        -        return to the caller (end of the task's run)
 //  MovN              [dst]    [src]    #size    copy #C bytes (STRUCT, STRING, ARRAY)
 //  Addr              [ptr]    [x]      #size    [A] := address of [B] (REF, ADR)
@@ -85,6 +85,7 @@ enum class Field : std::uint8_t {
     ArrayRead,  ///< an array operand, sized by the descriptor in aux; size is the access width
     ArrayWrite, ///< the same, written
     ArrayIndex, ///< the index of an indexed access, read with the descriptor's index size
+    NativeArguments, ///< the argument block of the native import in field A
 };
 
 /// What the aux field of an instruction holds.
@@ -132,6 +133,7 @@ struct FieldSpec {
 #define EPOSP_VM_F_AW4 EPOSP_VM_FIELD(ArrayWrite, 4)
 #define EPOSP_VM_F_AW8 EPOSP_VM_FIELD(ArrayWrite, 8)
 #define EPOSP_VM_F_AI EPOSP_VM_FIELD(ArrayIndex, 0)
+#define EPOSP_VM_F_NA EPOSP_VM_FIELD(NativeArguments, 0)
 
 // The lists: OP(name, family, T1, T2, aux, A, B, C). `family` names the semantics
 // (the interpreter defines one handler per family), T1/T2 are the C++ types it works on.
@@ -230,7 +232,7 @@ struct FieldSpec {
     EPOSP_VM_OP(OP, Call, Call, void, void, None, PO, _, _)                                        \
     EPOSP_VM_OP(OP, CallFb, CallFb, void, void, None, IN, PO, _)                                   \
     EPOSP_VM_OP(OP, CallFbP, CallFbP, void, void, None, R8, PO, _)                                 \
-    EPOSP_VM_OP(OP, CallNative, CallNative, void, void, None, IX, _, _)                            \
+    EPOSP_VM_OP(OP, CallNative, CallNative, void, void, None, IX, NA, _)                            \
     EPOSP_VM_OP(OP, Ret, Ret, void, void, None, _, _, _)                                           \
     EPOSP_VM_OP(OP, MovN, MovN, void, void, None, WN, RN, SZ)                                      \
     EPOSP_VM_OP(OP, Addr, Addr, void, void, None, W8, RN, SZ)                                      \
