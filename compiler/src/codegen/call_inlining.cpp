@@ -1,7 +1,8 @@
 #include "call_inlining.hpp"
 
+#include "code_rewriter.hpp"
+
 #include <algorithm>
-#include <numeric>
 #include <optional>
 
 namespace eposp::compiler::codegen {
@@ -84,18 +85,6 @@ std::optional<Operand> relocate(Operand operand, const vm::Pou& callee, Operand 
     return Operand::at(base, static_cast<std::uint32_t>(offset));
 }
 
-template <typename Retarget>
-void retarget(vm::Instruction& ins, const Retarget& to) {
-    const vm::OpcodeInfo& info = vm::opcode_info(ins.opcode);
-    std::uint32_t* fields[3] = {&ins.a, &ins.b, &ins.c};
-    const vm::FieldSpec* specs[3] = {&info.a, &info.b, &info.c};
-    for (int f = 0; f < 3; ++f) {
-        if (specs[f]->field == Field::Target) {
-            *fields[f] = to(*fields[f]);
-        }
-    }
-}
-
 /// The body of `callee` as it runs in place of `call` starting at instruction `start`: each
 /// Ret a jump past the copy, the last one dropped. Empty when an operand cannot be moved.
 std::vector<vm::Instruction> inlined_body(const vm::Image& image, std::uint32_t callee,
@@ -130,68 +119,27 @@ std::vector<vm::Instruction> inlined_body(const vm::Image& image, std::uint32_t 
     return copy;
 }
 
-/// POU indices in code order, if their bodies tile the code without gaps.
-std::optional<std::vector<std::uint32_t>> pous_in_code_order(const vm::Image& image) {
-    std::vector<std::uint32_t> order(image.pous.size());
-    std::iota(order.begin(), order.end(), 0U);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return image.pous[a].code_begin < image.pous[b].code_begin;
-    });
-    std::uint32_t next = 0;
-    for (const std::uint32_t p : order) {
-        if (image.pous[p].code_begin != next) {
-            return std::nullopt;
-        }
-        next = image.pous[p].code_end;
-    }
-    return next == image.code.size() ? std::optional(order) : std::nullopt;
-}
-
 } // namespace
 
 void inline_leaf_calls(vm::Image& image) {
-    const auto order = pous_in_code_order(image);
-    if (!order) {
-        return;
-    }
-    const vm::Image original = image;
-    std::vector<vm::Instruction> code;
-    for (const std::uint32_t p : *order) {
-        const vm::Pou& old = original.pous[p];
-        vm::Pou& pou = image.pous[p];
-        // moved[i - old.code_begin]: where old instruction i (or the copy replacing it) starts.
-        std::vector<std::uint32_t> moved(old.code_end - old.code_begin + 1);
-        std::vector<std::size_t> own_jumps;
-        const auto begin = static_cast<std::uint32_t>(code.size());
-        for (std::uint32_t i = old.code_begin; i < old.code_end; ++i) {
-            const auto here = static_cast<std::uint32_t>(code.size());
-            moved[i - old.code_begin] = here;
-            const vm::Instruction& ins = original.code[i];
-            if (const auto callee = inlinable_callee(original, ins)) {
-                auto body = inlined_body(original, *callee, ins, here);
-                if (!body.empty()) {
-                    const vm::Pou& inlined = original.pous[*callee];
-                    pou.out_size = std::max(pou.out_size, inlined.frame_size + inlined.out_size);
-                    pou.inlined.push_back(
-                        {here, here + static_cast<std::uint32_t>(body.size()), *callee});
-                    code.insert(code.end(), body.begin(), body.end());
-                    continue;
+    rewrite_code(image, [](const vm::Image& before, vm::Pou& pou, std::uint32_t i,
+                           CodeSink& sink) {
+        const vm::Instruction& ins = before.code[i];
+        if (const auto callee = inlinable_callee(before, ins)) {
+            const auto body = inlined_body(before, *callee, ins, sink.here());
+            if (!body.empty()) {
+                const vm::Pou& inlined = before.pous[*callee];
+                pou.out_size = std::max(pou.out_size, inlined.frame_size + inlined.out_size);
+                pou.inlined.push_back(
+                    {sink.here(), sink.here() + static_cast<std::uint32_t>(body.size()), *callee});
+                for (const vm::Instruction& copied : body) {
+                    sink.place(copied);
                 }
+                return;
             }
-            own_jumps.push_back(code.size());
-            code.push_back(ins);
         }
-        moved.back() = static_cast<std::uint32_t>(code.size());
-        for (const std::size_t at : own_jumps) {
-            retarget(code[at], [&](std::uint32_t target) { return moved[target - old.code_begin]; });
-        }
-        for (vm::LineEntry& line : pou.lines) {
-            line.instruction = moved[line.instruction - old.code_begin];
-        }
-        pou.code_begin = begin;
-        pou.code_end = static_cast<std::uint32_t>(code.size());
-    }
-    image.code = std::move(code);
+        sink.keep(ins);
+    });
 }
 
 } // namespace eposp::compiler::codegen

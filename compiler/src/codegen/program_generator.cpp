@@ -1,6 +1,7 @@
 #include "program_generator.hpp"
 
 #include "eposp/compiler/sema/symbol.hpp"
+#include "back_edge_duplication.hpp"
 #include "call_inlining.hpp"
 #include "jump_threading.hpp"
 #include "pou_generator.hpp"
@@ -171,6 +172,9 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         diagnostics_.error({}, "internal error: " + image.error());
         return std::nullopt;
     }
+    // Back-edges first, so that an inlined body is a copy of its callee as it finally runs.
+    thread_jumps(*image);
+    duplicate_back_edges(*image);
     inline_leaf_calls(*image);
     thread_jumps(*image);
     return std::move(*image);

@@ -1,5 +1,6 @@
-// Small leaf POUs run in place of their calls: the same results, the callee named in run-time
-// errors, and the calls that must stay calls (large bodies, instances through references).
+// The passes over finished code: small leaf POUs run in place of their calls (the same results,
+// the callee named in run-time errors, and the calls that must stay calls), and branches inside
+// loops take the loop's back-edge themselves.
 #include "codegen_harness.hpp"
 
 #include <gtest/gtest.h>
@@ -81,6 +82,28 @@ END_PROGRAM
     ASSERT_EQ(inlined_into(run.image(), "Main"), std::vector<std::string>{"Share"});
     EXPECT_FALSE(run.scans(1));
     EXPECT_EQ(run.fault(), "division by zero in Share at line 5");
+}
+
+TEST(BackEdgeDuplication, BranchesInsideALoopLoopWithoutAJump) {
+    StProgram run(R"(
+PROGRAM Main
+VAR i, up, down : INT; END_VAR
+FOR i := 1 TO 10 DO
+  IF i MOD 3 = 0 THEN up := up + 1; ELSE down := down + 1; END_IF;
+END_FOR;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    const vm::Image& image = run.image();
+    for (const vm::Instruction& ins : image.code) {
+        if (ins.opcode == vm::Opcode::Jmp) {
+            EXPECT_FALSE(vm::opcode_info(image.code[ins.a].opcode).name.starts_with("For"));
+        }
+    }
+    ASSERT_TRUE(run.scans(1));
+    EXPECT_EQ(run.get<std::int16_t>("Main.up"), 3);
+    EXPECT_EQ(run.get<std::int16_t>("Main.down"), 7);
+    EXPECT_EQ(run.get<std::int16_t>("Main.i"), 11);
 }
 
 TEST(CallInlining, InstancesThroughReferencesAndLargeBodiesStayCalls) {

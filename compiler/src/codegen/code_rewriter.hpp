@@ -1,0 +1,41 @@
+#pragma once
+
+#include "eposp/vm/image.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace eposp::compiler::codegen {
+
+/// Where the replacement of one instruction goes while a pass rebuilds the code.
+class CodeSink {
+public:
+    /// The index the next instruction appended gets.
+    std::uint32_t here() const { return static_cast<std::uint32_t>(code_.size()); }
+    /// Appends an instruction whose jump targets are old indices of the same POU (mapped to
+    /// wherever those instructions end up).
+    void keep(const vm::Instruction& ins);
+    /// Appends an instruction whose jump targets are already new indices.
+    void place(const vm::Instruction& ins) { code_.push_back(ins); }
+
+private:
+    friend class CodeRewrite;
+    std::vector<vm::Instruction> code_;
+    std::vector<std::size_t> old_targets_; // instructions whose targets are still old indices
+};
+
+/// What replaces instruction `instruction` (an index into `before.code`) of `pou`.
+using Expand = std::function<void(const vm::Image& before, vm::Pou& pou,
+                                  std::uint32_t instruction, CodeSink& sink)>;
+
+/// Rebuilds the code: calls `expand` for every instruction of every POU, in code order, with the
+/// image as it was before the pass; expand appends what replaces the instruction (itself,
+/// nothing or several). Jump targets, line tables and code ranges follow. Leaves the image as
+/// it is if its POU bodies do not tile the code.
+void rewrite_code(vm::Image& image, const Expand& expand);
+
+/// Applies `to` to every jump target field of `ins`.
+void retarget(vm::Instruction& ins, const std::function<std::uint32_t(std::uint32_t)>& to);
+
+} // namespace eposp::compiler::codegen
