@@ -51,7 +51,7 @@ Image assemble_sort() {
     const auto c255 = Operand::global(b.constant(std::int32_t{255}));
     const auto c3 = Operand::global(b.constant(std::int32_t{3}));
     const auto c7 = Operand::global(b.constant(std::int32_t{7}));
-    const auto a = b.array(0, 256, 4);
+    const auto a = b.array({0, 256, 4});
     const auto v = [](std::uint32_t offset) {
         return Operand::self(offset);
     };

@@ -179,6 +179,45 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int16_t>("Main.pts[3].c"), 6);
 }
 
+// Parts of array elements are reached in one indexed access, whatever their depth and kind.
+TEST(StructsAndEnums, PartsOfArrayElementsAtEveryDepth) {
+    StProgram run(R"(
+TYPE
+  Inner : STRUCT lo, hi : INT; END_STRUCT;
+  Station : STRUCT id : SINT; name : STRING[8]; limits : Inner; samples : ARRAY[1..3] OF DINT; active : BOOL; END_STRUCT;
+END_TYPE
+PROGRAM Main
+VAR
+  st : ARRAY[0..2] OF Station;
+  copy : Station;
+  i : INT := 1;
+  j : DINT := 2;
+  total : DINT;
+  label : STRING[20];
+  flagged : INT;
+END_VAR
+st[i].id := 7;
+st[i].name := 'press';
+st[i].limits.hi := 300;
+st[i].samples[j] := 40;
+st[i].samples[j + 1] := 2;
+st[i].active := TRUE;
+copy := st[i];
+st[0] := copy;
+st[0].limits.lo := -5;
+total := SINT_TO_DINT(st[0].id) + INT_TO_DINT(st[0].limits.hi + st[0].limits.lo) + st[0].samples[2] + st[i].samples[3];
+label := CONCAT(st[i].name, '/', st[0].name);
+FOR i := 0 TO 2 DO IF st[i].active THEN flagged := flagged + 1; END_IF; END_FOR;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int32_t>("Main.total"), 7 + 295 + 40 + 2);
+    EXPECT_EQ(run.get_string("Main.label"), "press/press");
+    EXPECT_EQ(run.get<std::int16_t>("Main.flagged"), 2);
+    EXPECT_EQ(run.get<std::int16_t>("Main.st[1].limits.lo"), 0);
+}
+
 TEST(Reals, ArithmeticAndFunctions) {
     StProgram run(R"(
 PROGRAM Main

@@ -27,8 +27,8 @@ TEST(Builder, AlignsDataAndSharesEqualArrayDescriptors) {
     const auto lreal = b.constant(2.5);
     EXPECT_EQ(byte, kNullGuardSize) << "nothing is allocated in the NULL guard";
     EXPECT_EQ(lreal % 8, 0U);
-    EXPECT_EQ(b.array(1, 10, 4), b.array(1, 10, 4));
-    EXPECT_NE(b.array(1, 10, 4), b.array(0, 10, 4));
+    EXPECT_EQ(b.array({1, 10, 4}), b.array({1, 10, 4}));
+    EXPECT_NE(b.array({1, 10, 4}), b.array({0, 10, 4}));
 }
 
 TEST(Builder, LineTableKeepsOneEntryPerChangeOfLine) {

@@ -96,7 +96,7 @@ TEST(ControlFlow, TestArrayElementAndBranch) {
     constexpr std::uint32_t kI = 0, kFlags = 4;
     h.init<std::uint8_t>(kFlags + 1, 1);
     h.init<std::int32_t>(kI, 2);
-    const auto flags = h.builder.array(1, 3, 1);
+    const auto flags = h.builder.array({1, 3, 1});
     auto set = h.builder.label();
     auto clear = h.builder.label();
     auto end = h.builder.label();
@@ -199,7 +199,7 @@ TEST(ControlFlow, FbCallsRunTheBodyOnEachInstance) {
 TEST(ControlFlow, FbCallThroughAPointerToAnArrayElement) {
     Harness h;
     const auto counter = h.builder.declare_pou("Counter", PouKind::FunctionBlock, 8);
-    const auto fbs = h.builder.array(1, 3, 8); // ARRAY[1..3] OF Counter at self+16
+    const auto fbs = h.builder.array({1, 3, 8}); // ARRAY[1..3] OF Counter at self+16
     // i := 3; fbs[i].step := 7; fbs[i]();
     h.builder.emit(Opcode::Ldi32, self(0), Operand::imm(3));
     h.builder.emit(Opcode::IdxA, self(8), self(16), self(0), fbs);

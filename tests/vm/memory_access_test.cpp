@@ -19,7 +19,7 @@ TEST(MemoryAccess, BlockMoveCopiesAStructOrString) {
 // a : ARRAY[-2..2] OF INT at self+16; a[i] := i * 10 for each i, then x := a[1].
 TEST(MemoryAccess, IndexedStoreAndLoadHonourTheLowerBound) {
     Harness h;
-    const auto a = h.builder.array(-2, 5, 2);
+    const auto a = h.builder.array({-2, 5, 2});
     constexpr std::uint32_t kI = 0, kValue = 4, kX = 8, kArray = 16;
     auto loop = h.builder.label();
     h.init<std::int32_t>(12, 2); // upper bound
@@ -44,8 +44,8 @@ TEST(MemoryAccess, IndexedStoreAndLoadHonourTheLowerBound) {
 // m : ARRAY[0..2, 0..3] OF DINT: m[2, 1] := 99 through IdxA then IdxAP.
 TEST(MemoryAccess, MultiDimensionalElementThroughChainedIndexing) {
     Harness h;
-    const auto rows = h.builder.array(0, 3, 16);
-    const auto columns = h.builder.array(0, 4, 4);
+    const auto rows = h.builder.array({0, 3, 16});
+    const auto columns = h.builder.array({0, 4, 4});
     h.init<std::int32_t>(0, 2);
     h.init<std::int32_t>(4, 1);
     h.init<std::int32_t>(8, 99);

@@ -52,19 +52,19 @@ INSTANTIATE_TEST_SUITE_P(
                  "array index out of range in Main at line 7",
                  [](Builder& b) {
                      b.emit(Opcode::Ldi32, self(4), Operand::imm(10));
-                     b.emit(Opcode::Ldx32, self(8), self(16), self(4), b.array(0, 10, 4));
+                     b.emit(Opcode::Ldx32, self(8), self(16), self(4), b.array({0, 10, 4}));
                  }},
         TrapCase{"IndexBelowLowerBound", Trap::IndexOutOfRange,
                  "array index out of range in Main at line 7",
                  [](Builder& b) {
-                     b.emit(Opcode::Stx8, self(16), self(4), self(8), b.array(1, 10, 1));
+                     b.emit(Opcode::Stx8, self(16), self(4), self(8), b.array({1, 10, 1}));
                  }},
         TrapCase{"TestedElementOutOfRange", Trap::IndexOutOfRange,
                  "array index out of range in Main at line 7",
                  [](Builder& b) {
                      const auto end = b.label();
                      b.emit(Opcode::Ldi32, self(4), Operand::imm(10));
-                     b.jump(Opcode::JtX, end, self(16), self(4), b.array(0, 10, 1));
+                     b.jump(Opcode::JtX, end, self(16), self(4), b.array({0, 10, 1}));
                      b.bind(end);
                  }},
         TrapCase{"NullDereference", Trap::NullDereference, "NULL dereference in Main at line 7",
@@ -86,7 +86,7 @@ INSTANTIATE_TEST_SUITE_P(
         TrapCase{"ElementOfANullArray", Trap::NullDereference, "NULL dereference in Main at line 7",
                  [](Builder& b) {
                      b.emit(Opcode::Ldi32, self(4), Operand::imm(3));
-                     b.emit(Opcode::IdxAP, self(24), self(16), self(4), b.array(0, 4, 4));
+                     b.emit(Opcode::IdxAP, self(24), self(16), self(4), b.array({0, 4, 4}));
                      b.emit(Opcode::Stp32, self(24), self(8), Operand::imm(0));
                  }}));
 

@@ -30,7 +30,7 @@ inline Image sample_image() {
     const auto input = b.allocate(2, 2);
     const NativeSignature sqrt_signature{true, Scalar::F64, {Scalar::F64}};
     const auto sqrt_import = b.import("SQRT", sqrt_signature);
-    const auto values = b.array(1, 4, 4);
+    const auto values = b.array({1, 4, 4});
 
     b.begin_body(main);
     b.line(3);

@@ -43,7 +43,7 @@ TEST(Watchdog, CountsEveryInstructionExactly) {
 void emit_sorting_program(Harness& h) {
     auto& b = h.builder;
     const auto greater = b.declare_pou("Greater", PouKind::Function);
-    const auto a = b.array(0, 64, 4);
+    const auto a = b.array({0, 64, 4});
     constexpr std::uint32_t kI = 0, kJ = 4, kX = 8, kY = 12, kLast = 16, kSeed = 20, kJ1 = 24;
     constexpr std::uint32_t kArray = 64;
     h.init<std::int32_t>(kLast, 63);

@@ -35,9 +35,7 @@ std::uint32_t Builder::constant(std::span<const std::uint8_t> bytes, std::uint32
     return offset;
 }
 
-std::uint16_t Builder::array(std::int32_t lower, std::uint32_t count, std::uint32_t element_size,
-                             std::uint8_t index_size) {
-    const ArrayDescriptor descriptor{lower, count, element_size, index_size};
+std::uint16_t Builder::array(const ArrayDescriptor& descriptor) {
     for (std::size_t i = 0; i < image_.arrays.size(); ++i) {
         if (image_.arrays[i] == descriptor) {
             return static_cast<std::uint16_t>(i);

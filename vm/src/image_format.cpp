@@ -109,11 +109,12 @@ void describe_code(Io& io, std::vector<Instruction>& code) {
 
 template <typename Io>
 void describe_arrays(Io& io, std::vector<ArrayDescriptor>& arrays) {
-    io.list(arrays, 13, [&](ArrayDescriptor& d) {
+    io.list(arrays, 17, [&](ArrayDescriptor& d) {
         io.i32(d.lower);
         io.u32(d.count);
         io.u32(d.element_size);
         io.u8(d.index_size);
+        io.u32(d.offset);
     });
 }
 

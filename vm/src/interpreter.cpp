@@ -147,7 +147,7 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     if (element >= descriptor.count) {                                                             \
         VM_TRAP(Trap::IndexOutOfRange);                                                            \
     }                                                                                              \
-    out = std::uint64_t{element} * descriptor.element_size
+    out = std::uint64_t{element} * descriptor.element_size + descriptor.offset
 // Checked pointer: not NULL (or into the guard) and `size` bytes at pointer+offset in memory.
 #define VM_DEREF(pointer_operand, offset, size, out)                                               \
     const auto address = load<std::uint64_t>(pointer_operand);                                     \

@@ -100,9 +100,10 @@ private:
         case Field::ArrayRead:
         case Field::ArrayWrite: {
             const auto& array = image_.arrays[ins.aux];
-            if (array.element_size < spec.size) {
-                return fail("element size " + std::to_string(array.element_size) +
-                            " smaller than the access");
+            if (std::uint64_t{array.offset} + spec.size > array.element_size) {
+                return fail("an access of " + std::to_string(spec.size) + " bytes at " +
+                            std::to_string(array.offset) + " is past the element size " +
+                            std::to_string(array.element_size));
             }
             return check_operand(Operand{value}, std::uint64_t{array.count} * array.element_size,
                                  fail);

@@ -296,9 +296,12 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         }
     }
     const std::uint16_t descriptor =
-        one ? array_descriptor(single->lower, count, element.size, single->size)
-            : array_descriptor(0, count, element.size);
-    if (array->kind == Place::Kind::Direct && sema::is_scalar(element)) {
+        one ? array_descriptor({.lower = single->lower,
+                                .count = count,
+                                .element_size = element.size,
+                                .index_size = single->size})
+            : array_descriptor({.count = count, .element_size = element.size});
+    if (array->kind == Place::Kind::Direct) {
         return Place{.kind = Place::Kind::Element,
                      .type = &element,
                      .operand = array->operand,
@@ -306,23 +309,8 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                      .array = descriptor,
                      .writable = array->writable};
     }
-    // The address of an element of a directly named array is worth remembering.
-    const bool cacheable = array->kind == Place::Kind::Direct;
-    const ValueCache::Key key{ValueCache::Kind::Address, array->operand.raw, linear.raw,
-                              descriptor};
-    if (const auto hit = cacheable ? cache_.find(key) : std::nullopt) {
-        return Place{.kind = Place::Kind::Indirect,
-                     .type = &element,
-                     .operand = *hit,
-                     .writable = array->writable};
-    }
     const Operand pointer = temp(types_.reference(&element));
-    if (array->kind == Place::Kind::Direct) {
-        emit(Opcode::IdxA, pointer, array->operand, linear, descriptor);
-        cache_.add(key, pointer, 8, {{linear, 4}});
-    } else {
-        emit(Opcode::IdxAP, pointer, address_of(*array), linear, descriptor);
-    }
+    emit(Opcode::IdxAP, pointer, address_of(*array), linear, descriptor);
     return Place{.kind = Place::Kind::Indirect,
                  .type = &element,
                  .operand = pointer,

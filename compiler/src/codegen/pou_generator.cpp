@@ -174,11 +174,9 @@ void PouGenerator::bind(vm::Label label) {
     cache_.clear();
 }
 
-std::uint16_t PouGenerator::array_descriptor(std::int32_t lower, std::uint32_t count,
-                                             std::uint32_t element_size,
-                                             std::uint8_t index_size) {
-    const std::uint16_t descriptor = builder_.array(lower, count, element_size, index_size);
-    array_bytes_[descriptor] = count * element_size;
+std::uint16_t PouGenerator::array_descriptor(const vm::ArrayDescriptor& array) {
+    const std::uint16_t descriptor = builder_.array(array);
+    array_bytes_[descriptor] = array.count * array.element_size;
     return descriptor;
 }
 
@@ -259,6 +257,9 @@ Value PouGenerator::load(const Place& place, const Destination* dest) {
     if (place.kind == Place::Kind::Direct) {
         return {place.operand, &type};
     }
+    if (place.kind == Place::Kind::Element && !sema::is_scalar(type)) {
+        return load(through_pointer(place), dest);
+    }
     if (place.kind == Place::Kind::Element) {
         // An element loaded before, while neither the array nor the index changed.
         const ValueCache::Key key{ValueCache::Kind::Load, place.operand.raw, place.index.raw,
@@ -290,6 +291,8 @@ void PouGenerator::store(const Place& place, const Value& value) {
     const sema::Type& type = *place.type;
     if (place.kind == Place::Kind::Direct) {
         move(place.operand, type, value);
+    } else if (place.kind == Place::Kind::Element && !sema::is_scalar(type)) {
+        store(through_pointer(place), value);
     } else if (place.kind == Place::Kind::Element) {
         emit(program_.opcodes().get("Stx", width_suffix(sema::scalar_of(type))), place.operand,
              place.index, value.operand, place.array);
@@ -309,12 +312,15 @@ Place PouGenerator::member(const Place& place, std::uint32_t delta, const sema::
     switch (place.kind) {
     case Place::Kind::Direct:
         return Place::direct(type, shifted(place.operand, delta), place.writable);
-    case Place::Kind::Element:
-        return {.kind = Place::Kind::Indirect,
-                .type = &type,
-                .operand = address_of(place),
-                .offset = delta,
-                .writable = place.writable};
+    case Place::Kind::Element: {
+        // A part of an element is an element too, further into it: one access at run time.
+        vm::ArrayDescriptor part = builder_.array_at(place.array);
+        part.offset += delta;
+        Place result = place;
+        result.type = &type;
+        result.array = array_descriptor(part);
+        return result;
+    }
     case Place::Kind::Indirect:
         break;
     }
@@ -324,10 +330,25 @@ Place PouGenerator::member(const Place& place, std::uint32_t delta, const sema::
     return result;
 }
 
+Place PouGenerator::through_pointer(const Place& place) {
+    return {.kind = Place::Kind::Indirect,
+            .type = place.type,
+            .operand = address_of(place),
+            .writable = place.writable};
+}
+
 Operand PouGenerator::address_of(const Place& place) {
     const sema::Type& pointer = types_.reference(place.type);
     if (place.kind == Place::Kind::Indirect && place.offset == 0) {
         return place.operand;
+    }
+    // The address of an element, remembered while neither the array nor the index changes.
+    const ValueCache::Key key{ValueCache::Kind::Address, place.operand.raw, place.index.raw,
+                              place.array};
+    if (place.kind == Place::Kind::Element) {
+        if (const auto hit = cache_.find(key)) {
+            return *hit;
+        }
     }
     const Operand result = temp(pointer);
     switch (place.kind) {
@@ -336,6 +357,7 @@ Operand PouGenerator::address_of(const Place& place) {
         break;
     case Place::Kind::Element:
         emit(Opcode::IdxA, result, place.operand, place.index, place.array);
+        cache_.add(key, result, 8, {{place.index, 4}});
         break;
     case Place::Kind::Indirect:
         emit(Opcode::AddI64, result, place.operand, Operand::imm(place.offset));

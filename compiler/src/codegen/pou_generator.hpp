@@ -65,8 +65,7 @@ private:
     /// Binds a label: control flow joins there, so nothing cached holds any more.
     void bind(vm::Label label);
     /// An array descriptor, remembering the bytes it covers.
-    std::uint16_t array_descriptor(std::int32_t lower, std::uint32_t count,
-                                   std::uint32_t element_size, std::uint8_t index_size = 4);
+    std::uint16_t array_descriptor(const vm::ArrayDescriptor& array);
     std::optional<Place> variable(const sema::Symbol& symbol, const SourceRange& range);
     void error(const SourceRange& range, std::string message);
     void warning(const SourceRange& range, std::string message);
@@ -81,6 +80,8 @@ private:
     Place member(const Place& place, std::uint32_t delta, const sema::Type& type);
     /// The address `place` lives at, as a pointer operand (a temporary when computed).
     vm::Operand address_of(const Place& place);
+    /// `place` (an array element) reached through its address instead, for block moves.
+    Place through_pointer(const Place& place);
 
     // --- pou_expressions.cpp -----------------------------------------------------------------
     std::optional<Place> place(const ast::Expression& expression);

@@ -36,8 +36,8 @@ public:
         return constant(bytes, sizeof(T));
     }
     /// An array descriptor for the indexed instructions' aux field.
-    std::uint16_t array(std::int32_t lower, std::uint32_t count, std::uint32_t element_size,
-                        std::uint8_t index_size = 4);
+    std::uint16_t array(const ArrayDescriptor& descriptor);
+    const ArrayDescriptor& array_at(std::uint16_t index) const { return image_.arrays.at(index); }
 
     // --- code --------------------------------------------------------------------------------
     /// A POU whose body comes later (so calls can precede it); returns its index.

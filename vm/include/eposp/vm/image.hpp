@@ -26,6 +26,7 @@ struct ArrayDescriptor {
     std::uint32_t count = 0;
     std::uint32_t element_size = 0;
     std::uint8_t index_size = 4; ///< the signed index operand: 2 (INT) or 4 (DINT) bytes
+    std::uint32_t offset = 0;    ///< bytes into the element: `items[i].pos` in one access
     bool operator==(const ArrayDescriptor&) const = default;
 };
 
