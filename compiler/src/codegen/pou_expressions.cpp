@@ -152,16 +152,6 @@ PouGenerator::displaced_index(const ast::Expression& index, std::int64_t lower) 
         (sum->op != ast::BinaryOperator::Add && sum->op != ast::BinaryOperator::Subtract)) {
         return std::nullopt;
     }
-    const auto small_literal = [](const ast::Expression& side) -> std::optional<std::int64_t> {
-        const auto* literal = std::get_if<ast::LiteralExpression>(&side.node);
-        const auto* integer =
-            literal ? std::get_if<ast::IntegerLiteral>(&literal->value) : nullptr;
-        if (integer == nullptr || integer->type || integer->magnitude > INT32_MAX) {
-            return std::nullopt;
-        }
-        const auto magnitude = static_cast<std::int64_t>(integer->magnitude);
-        return integer->negative ? -magnitude : magnitude;
-    };
     const bool add = sum->op == ast::BinaryOperator::Add;
     auto constant = small_literal(*sum->right);
     const ast::Expression* variable = sum->left.get();
@@ -180,7 +170,7 @@ PouGenerator::displaced_index(const ast::Expression& index, std::int64_t lower) 
         return std::nullopt;
     }
     // The bound moves by the constant modulo 2^32, as the wrapping DINT sum would.
-    const std::int64_t moved = lower - (add ? *constant : -*constant);
+    const std::int64_t moved = lower - (add ? std::int64_t{*constant} : -std::int64_t{*constant});
     return ElementIndex{where->operand, static_cast<std::int32_t>(static_cast<std::uint32_t>(moved)),
                         4};
 }
@@ -287,11 +277,7 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
             linear = term;
         } else {
             emit(Opcode::Mul32, linear, linear,
-                 program_.constant({static_cast<std::uint8_t>(dimension.count),
-                                    static_cast<std::uint8_t>(dimension.count >> 8),
-                                    static_cast<std::uint8_t>(dimension.count >> 16),
-                                    static_cast<std::uint8_t>(dimension.count >> 24)},
-                                   4));
+                 dint_constant(static_cast<std::int32_t>(dimension.count)));
             emit(Opcode::Add32, linear, linear, term);
         }
     }
@@ -679,6 +665,22 @@ std::optional<Value> PouGenerator::operand_value(const ast::Expression& expressi
     return eval(expression, hint);
 }
 
+Value PouGenerator::widened(const Value& value, const ast::Expression& expression) {
+    // A literal is a DINT constant at once rather than a conversion at run time.
+    if (const auto constant = small_literal(expression)) {
+        return Value{dint_constant(*constant), &types_.elementary(E::Dint), value.type};
+    }
+    return widened(value);
+}
+
+Operand PouGenerator::dint_constant(std::int32_t value) {
+    const auto bits = static_cast<std::uint32_t>(value);
+    return program_.constant({static_cast<std::uint8_t>(bits), static_cast<std::uint8_t>(bits >> 8),
+                              static_cast<std::uint8_t>(bits >> 16),
+                              static_cast<std::uint8_t>(bits >> 24)},
+                             4);
+}
+
 Value PouGenerator::widened(const Value& value) {
     const sema::Type& dint = types_.elementary(E::Dint);
     if (value.type == &dint) {
@@ -782,8 +784,8 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
         (left.iec != nullptr || right.iec != nullptr || (!top && arithmetic))) {
         const sema::Type* iec =
             sema::converts_implicitly(*left_iec, *right_iec) ? right_iec : left_iec;
-        auto result =
-            apply(node.op, widened(left), widened(right), comparison ? dest : nullptr, range);
+        auto result = apply(node.op, widened(left, *node.left), widened(right, *node.right),
+                            comparison ? dest : nullptr, range);
         if (result && arithmetic) {
             result->iec = iec;
         }

@@ -127,6 +127,9 @@ private:
     std::optional<Value> operand_value(const ast::Expression& expression, const sema::Type* hint);
     /// A small integer value as DINT.
     Value widened(const Value& value);
+    /// `value` of `expression` widened: a literal becomes a DINT constant, not a conversion.
+    Value widened(const Value& value, const ast::Expression& expression);
+    vm::Operand dint_constant(std::int32_t value);
     std::optional<std::pair<Value, Value>> unify(const Value& left, const Value& right,
                                                  const SourceRange& range);
     static bool is_small_integer(const sema::Type& type);
