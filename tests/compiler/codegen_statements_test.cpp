@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace eposp::compiler::test {
 namespace {
 
@@ -110,6 +112,84 @@ END_PROGRAM
     ASSERT_TRUE(run.ok()) << run.errors();
     ASSERT_TRUE(run.scans(1)) << run.fault();
     EXPECT_EQ(run.get<std::int32_t>("Main.x"), 2);
+}
+
+struct CaseDispatch {
+    std::string name;
+    std::string selector_type;
+    std::string first;  // the first selector value tried
+    std::string labels; // the branches, each setting `code`
+    std::int64_t expected;
+    bool table; // whether the labels are dense enough for a jump table
+};
+
+class CaseDispatchTest : public testing::TestWithParam<CaseDispatch> {};
+
+// Every selector value of a window around the labels goes to its branch (or ELSE), whether the
+// CASE compiles to a jump table or to compares: the digits of `trail` record the path taken.
+TEST_P(CaseDispatchTest, EverySelectorReachesItsBranch) {
+    const CaseDispatch& c = GetParam();
+    StProgram run("PROGRAM Main\nVAR s : " + c.selector_type + "; k, code : INT; trail : LINT; " +
+                  "END_VAR\ns := " + c.first + ";\nFOR k := 1 TO 12 DO\n  CASE s OF " + c.labels +
+                  " ELSE code := 9; END_CASE;\n  trail := trail * 10 + code;\n  s := s + 1;\n" +
+                  "END_FOR;\nEND_PROGRAM\n");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    const vm::Image& image = run.image();
+    const bool has_table = std::any_of(image.code.begin(), image.code.end(), [](const auto& ins) {
+        return vm::opcode_info(ins.opcode).name.starts_with("JTab");
+    });
+    EXPECT_EQ(has_table, c.table);
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int64_t>("Main.trail"), c.expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Labels, CaseDispatchTest,
+    testing::Values(
+        CaseDispatch{"DenseIntWithRangesAndLists", "INT", "-2",
+                     "0: code := 1; 1, 3: code := 2; 4..6: code := 3; 2: code := 4;",
+                     991'242'333'999, true},
+        CaseDispatch{"NegativeDint", "DINT", "-8",
+                     "-6: code := 1; -5..-4: code := 2; -3: code := 3; 0: code := 4;",
+                     991'223'994'999, true},
+        CaseDispatch{"UintAtTheTopOfItsRange", "UINT", "65530",
+                     "65531: code := 1; 65532..65534: code := 2; 65535: code := 3; 0: code := 4;",
+                     912'223'499'999, false},
+        CaseDispatch{"UintDense", "UINT", "65526",
+                     "65531: code := 1; 65532..65534: code := 2; 65535: code := 3;",
+                     999'991'222'399, true},
+        CaseDispatch{"UdintWrapsPastItsTop", "UDINT", "4294967290",
+                     "4294967291: code := 1; 4294967292..4294967294: code := 2; "
+                     "4294967295: code := 3;",
+                     912'223'999'999, true},
+        CaseDispatch{"SparseLabelsCompare", "DINT", "0",
+                     "1: code := 1; 5: code := 2; 1000: code := 3; 100000: code := 4;",
+                     919'992'999'999, false}),
+    [](const auto& param_info) { return param_info.param.name; });
+
+TEST(CaseStatement, DenseEnumerationUsesATable) {
+    StProgram run(R"(
+TYPE Step : (Idle, Load, Travel, Unload, Fault); END_TYPE
+PROGRAM Main
+VAR s : Step; visits : ARRAY[0..4] OF INT; k : INT; END_VAR
+FOR k := 1 TO 7 DO
+  CASE s OF
+    Idle: visits[0] := visits[0] + 1; s := Load;
+    Load: visits[1] := visits[1] + 1; s := Travel;
+    Travel: visits[2] := visits[2] + 1; s := Unload;
+    Unload: visits[3] := visits[3] + 1; s := Fault;
+    Fault: visits[4] := visits[4] + 1; s := Idle;
+  END_CASE;
+END_FOR;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    EXPECT_TRUE(std::any_of(run.image().code.begin(), run.image().code.end(),
+                            [](const auto& ins) { return ins.opcode == vm::Opcode::JTabI16; }));
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("Main.visits[0]"), 2);
+    EXPECT_EQ(run.get<std::int16_t>("Main.visits[1]"), 2);
+    EXPECT_EQ(run.get<std::int16_t>("Main.visits[4]"), 1);
 }
 
 } // namespace

@@ -1,7 +1,8 @@
 #pragma once
 
 // A small but complete image (every table filled) for the format, verifier and disassembler
-// tests: PROGRAM Main with a counter, an array, a function call and a native import.
+// tests: PROGRAM Main with a counter, an array, a function call, a jump table and a native
+// import.
 
 #include "eposp/vm/builder.hpp"
 
@@ -45,6 +46,7 @@ inline Image sample_image() {
     b.emit(Opcode::Mov64, Operand::self(24), Operand::out(0));
     auto done = b.label();
     b.jump(Opcode::JLtI32, done, Operand::self(0), Operand::self(0));
+    b.jump(Opcode::JTab32, done, Operand::self(0), Operand::imm(b.jump_table(1, {done, done})));
     b.bind(done);
     b.emit(Opcode::Ret);
     b.end_body(0, 16);

@@ -36,7 +36,7 @@ TEST_P(VerifierRefuses, WithTheReason) {
     EXPECT_NE(defect->message.find(GetParam().reason), std::string::npos) << defect->message;
 }
 
-// Sample image layout: Main is instructions 0..8, Twice 9..10; Main's instance is 32 bytes.
+// Sample image layout: Main is instructions 0..9, Twice 10..11; Main's instance is 32 bytes.
 INSTANTIATE_TEST_SUITE_P(
     Code, VerifierRefuses,
     ::testing::Values(
@@ -49,17 +49,24 @@ INSTANTIATE_TEST_SUITE_P(
         Malformation{"InstanceOperandPastInstance",
                      [](Image& i) { i.code[0].a = Operand::self(30).raw; },
                      "instance offset 30 + 4 exceeds its area of 32 bytes"},
-        Malformation{"FrameOperandPastFrame", [](Image& i) { i.code[9].a = Operand::local(6).raw; },
+        Malformation{"FrameOperandPastFrame", [](Image& i) { i.code[10].a = Operand::local(6).raw; },
                      "frame offset 6 + 4 exceeds its area of 8 bytes"},
-        Malformation{"SelfOperandInAFunction", [](Image& i) { i.code[9].b = Operand::self(0).raw; },
+        Malformation{"SelfOperandInAFunction", [](Image& i) { i.code[10].b = Operand::self(0).raw; },
                      "instance offset 0 + 4 exceeds its area of 0 bytes"},
         Malformation{"OutOperandPastOutArea", [](Image& i) { i.code[1].a = Operand::out(14).raw; },
                      "out offset"},
-        Malformation{"JumpOutOfThePou", [](Image& i) { i.code[7].c = 9; },
-                     "jump target 9 outside the POU"},
+        Malformation{"JumpOutOfThePou", [](Image& i) { i.code[7].c = 10; },
+                     "jump target 10 outside the POU"},
+        Malformation{"JumpTableMissing", [](Image& i) { i.code[8].b = 1; },
+                     "jump table 1 does not exist or is empty"},
+        Malformation{"JumpTableEmpty", [](Image& i) { i.jump_tables[0].targets.clear(); },
+                     "jump table 0 does not exist or is empty"},
+        Malformation{"JumpTableTargetOutsideThePou",
+                     [](Image& i) { i.jump_tables[0].targets[1] = 10; },
+                     "a jump table target is outside the POU"},
         Malformation{"JumpPastTheCode", [](Image& i) { i.code[7].c = 1000; },
                      "jump target 1000 outside the POU"},
-        Malformation{"FallsOffTheEnd", [](Image& i) { i.code[8].opcode = Opcode::Nop; },
+        Malformation{"FallsOffTheEnd", [](Image& i) { i.code[9].opcode = Opcode::Nop; },
                      "the last instruction must be Ret or Jmp"},
         Malformation{"CallOfAMissingPou", [](Image& i) { i.code[2].a = 7; },
                      "POU 7 does not exist"},
@@ -84,7 +91,7 @@ INSTANTIATE_TEST_SUITE_P(
                      "an access of 4 bytes at 2 is past the element size 4"},
         Malformation{"IndexNeitherIntNorDint", [](Image& i) { i.arrays[0].index_size = 3; },
                      "an index of 3 bytes"},
-        Malformation{"GarbageInUnusedField", [](Image& i) { i.code[8].b = 1; },
+        Malformation{"GarbageInUnusedField", [](Image& i) { i.code[9].b = 1; },
                      "unused field is not 0"},
         Malformation{"AuxOnANonIndexedInstruction", [](Image& i) { i.code[0].aux = 1; },
                      "invalid array descriptor 1"}));
@@ -92,7 +99,7 @@ INSTANTIATE_TEST_SUITE_P(
 INSTANTIATE_TEST_SUITE_P(
     Tables, VerifierRefuses,
     ::testing::Values(
-        Malformation{"OverlappingPous", [](Image& i) { i.pous[1].code_begin = 8; },
+        Malformation{"OverlappingPous", [](Image& i) { i.pous[1].code_begin = 9; },
                      "code ranges overlap"},
         Malformation{"EmptyPou", [](Image& i) { i.pous[1].code_end = i.pous[1].code_begin; },
                      "is empty or outside the code"},

@@ -130,6 +130,13 @@ void Builder::for_loop(Opcode op, Label body, Operand variable, Operand limit, s
     jump(op, body, variable, limit, static_cast<std::uint16_t>(step));
 }
 
+std::uint32_t Builder::jump_table(std::int32_t low, const std::vector<Label>& targets) {
+    image_.jump_tables.push_back({low, {}});
+    const auto table = static_cast<std::uint32_t>(image_.jump_tables.size() - 1);
+    table_fixups_.push_back({table, targets});
+    return table;
+}
+
 std::uint32_t Builder::import(std::string name, NativeSignature signature) {
     image_.imports.push_back({std::move(name), std::move(signature)});
     return static_cast<std::uint32_t>(image_.imports.size() - 1);
@@ -171,6 +178,17 @@ core::Result<Image> Builder::finish() {
             return core::Error{"label " + std::to_string(fixup.label) + " used but never bound"};
         }
         field_of(image_.code[fixup.instruction], fixup.field) = *bound;
+    }
+    for (const auto& fixup : table_fixups_) {
+        auto& targets = image_.jump_tables[fixup.table].targets;
+        for (const Label target : fixup.targets) {
+            const auto& bound = labels_.at(target.id);
+            if (!bound) {
+                return core::Error{"label " + std::to_string(target.id) +
+                                   " used but never bound"};
+            }
+            targets.push_back(*bound);
+        }
     }
     return image_;
 }

@@ -29,6 +29,17 @@ std::string field(const Image& image, FieldSpec spec, std::uint32_t value) {
         return name_or_index(image.pous, value);
     case Field::Import:
         return name_or_index(image.imports, value);
+    case Field::JumpTable: {
+        if (value >= image.jump_tables.size()) {
+            return fmt::format("<bad table {}>", value);
+        }
+        const JumpTable& table = image.jump_tables[value];
+        std::string text = fmt::format("{{from {}:", table.low);
+        for (const std::uint32_t target : table.targets) {
+            text += fmt::format(" ->{}", target);
+        }
+        return text + "}";
+    }
     default:
         return operand(Operand{value});
     }

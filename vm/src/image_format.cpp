@@ -119,6 +119,14 @@ void describe_arrays(Io& io, std::vector<ArrayDescriptor>& arrays) {
 }
 
 template <typename Io>
+void describe_jump_tables(Io& io, std::vector<JumpTable>& tables) {
+    io.list(tables, 8, [&](JumpTable& t) {
+        io.i32(t.low);
+        io.list(t.targets, 4, [&](std::uint32_t& target) { io.u32(target); });
+    });
+}
+
+template <typename Io>
 void describe_static(Io& io, Image& image) {
     io.u32(image.static_size);
     io.bytes(image.static_init);
@@ -224,14 +232,15 @@ template <typename Io, typename Fn>
 void for_each_section(Image& image, Fn&& fn) {
     fn(1, "code", [&](Io& io) { describe_code(io, image.code); });
     fn(2, "arrays", [&](Io& io) { describe_arrays(io, image.arrays); });
-    fn(3, "static data", [&](Io& io) { describe_static(io, image); });
-    fn(4, "retain", [&](Io& io) { describe_retain(io, image.retain); });
-    fn(5, "tasks", [&](Io& io) { describe_tasks(io, image.tasks); });
-    fn(6, "POUs", [&](Io& io) { describe_pous(io, image.pous); });
-    fn(7, "types", [&](Io& io) { describe_types(io, image.types); });
-    fn(8, "symbols", [&](Io& io) { describe_symbols(io, image.symbols); });
-    fn(9, "bindings", [&](Io& io) { describe_bindings(io, image.bindings); });
-    fn(10, "imports", [&](Io& io) { describe_imports(io, image.imports); });
+    fn(3, "jump tables", [&](Io& io) { describe_jump_tables(io, image.jump_tables); });
+    fn(4, "static data", [&](Io& io) { describe_static(io, image); });
+    fn(5, "retain", [&](Io& io) { describe_retain(io, image.retain); });
+    fn(6, "tasks", [&](Io& io) { describe_tasks(io, image.tasks); });
+    fn(7, "POUs", [&](Io& io) { describe_pous(io, image.pous); });
+    fn(8, "types", [&](Io& io) { describe_types(io, image.types); });
+    fn(9, "symbols", [&](Io& io) { describe_symbols(io, image.symbols); });
+    fn(10, "bindings", [&](Io& io) { describe_bindings(io, image.bindings); });
+    fn(11, "imports", [&](Io& io) { describe_imports(io, image.imports); });
 }
 
 } // namespace

@@ -89,6 +89,7 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     const Instruction* const code = image.code.data();
     const Pou* const pous = image.pous.data();
     const ArrayDescriptor* const arrays = image.arrays.data();
+    const JumpTable* const jump_tables = image.jump_tables.data();
     std::uint8_t* const mem = memory.data();
     const std::uint64_t mem_size = memory.size();
 
@@ -192,6 +193,14 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
         std::uint64_t at;                                                                          \
         VM_ELEMENT(A, B, at);                                                                      \
         VM_BRANCH_IF(load<std::uint8_t>(A + at) == 0, ip->c);                                      \
+    }
+// The selector, sign- or zero-extended as its type says, meets `low` on the 32-bit circle.
+#define VM_EXEC_JTab(T1, T2)                                                                       \
+    {                                                                                              \
+        const JumpTable& table = jump_tables[ip->b];                                               \
+        const auto entry = static_cast<std::uint32_t>(static_cast<std::int64_t>(load<T1>(A))) -    \
+                           static_cast<std::uint32_t>(table.low);                                  \
+        VM_JUMP(entry < table.targets.size() ? table.targets[entry] : ip->c);                      \
     }
 #define VM_EXEC_Call(T1, T2) VM_ENTER(ip->a, base[2]);
 #define VM_EXEC_CallFb(T1, T2) VM_ENTER(ip->b, A);

@@ -95,6 +95,16 @@ private:
             return ins.b < image_.pous.size()
                        ? check_operand(Operand{value}, image_.pous[ins.b].instance_size, fail)
                        : fail("instance of a POU that does not exist");
+        case Field::JumpTable: {
+            if (value >= image_.jump_tables.size() || image_.jump_tables[value].targets.empty()) {
+                return fail("jump table " + std::to_string(value) + " does not exist or is empty");
+            }
+            const auto& targets = image_.jump_tables[value].targets;
+            const bool inside = std::all_of(targets.begin(), targets.end(), [&](std::uint32_t t) {
+                return t >= pou_.code_begin && t < pou_.code_end;
+            });
+            return inside ? Defect{} : fail("a jump table target is outside the POU");
+        }
         case Field::ArrayIndex:
             return check_operand(Operand{value}, image_.arrays[ins.aux].index_size, fail);
         case Field::ArrayRead:

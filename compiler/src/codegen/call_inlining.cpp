@@ -33,13 +33,15 @@ bool is_memory_operand(Field field) {
     }
 }
 
-bool is_call(Opcode op) {
-    return op == Opcode::Call || op == Opcode::CallFb || op == Opcode::CallFbP;
+/// Calls would need the callee's frame where a call puts it; a jump table belongs to one
+/// instruction and cannot be shared by a copy.
+bool keeps_body_in_place(Opcode op) {
+    return op == Opcode::Call || op == Opcode::CallFb || op == Opcode::CallFbP ||
+           vm::opcode_info(op).name.starts_with("JTab");
 }
 
-/// The POU `call` enters, when its body may replace the call: a short leaf (no calls of its
-/// own, so nothing else expects its frame where a call would have put it), entered with an
-/// instance the caller addresses directly.
+/// The POU `call` enters, when its body may replace the call: short, without calls or jump
+/// tables, entered with an instance the caller addresses directly.
 std::optional<std::uint32_t> inlinable_callee(const vm::Image& image, const vm::Instruction& call) {
     std::uint32_t callee = 0;
     if (call.opcode == Opcode::Call) {
@@ -54,7 +56,7 @@ std::optional<std::uint32_t> inlinable_callee(const vm::Image& image, const vm::
     const auto body = image.code.begin() + pou.code_begin;
     if (length < 2 || length > kMaxInlinedLength ||
         std::any_of(body, body + length,
-                    [](const vm::Instruction& ins) { return is_call(ins.opcode); })) {
+                    [](const vm::Instruction& ins) { return keeps_body_in_place(ins.opcode); })) {
         return std::nullopt;
     }
     return callee;

@@ -64,9 +64,15 @@ public:
                 expand(before, pou, i, sink);
             }
             moved.back() = sink.here();
+            const auto to = [&](std::uint32_t target) { return moved[target - old.code_begin]; };
             for (const std::size_t at : sink.old_targets_) {
-                retarget(sink.code_[at],
-                         [&](std::uint32_t target) { return moved[target - old.code_begin]; });
+                retarget(sink.code_[at], to);
+                // Each table belongs to one JTab: it moves with its instruction.
+                if (vm::opcode_info(sink.code_[at].opcode).name.starts_with("JTab")) {
+                    for (std::uint32_t& target : image.jump_tables[sink.code_[at].b].targets) {
+                        target = to(target);
+                    }
+                }
             }
             for (vm::LineEntry& line : pou.lines) {
                 line.instruction = moved[line.instruction - old.code_begin];

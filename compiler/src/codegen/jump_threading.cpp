@@ -27,6 +27,11 @@ void thread_jumps(vm::Image& image) {
                 *fields[i] = final_target(image, *fields[i]);
             }
         }
+        if (info.name.starts_with("JTab")) {
+            for (std::uint32_t& target : image.jump_tables[instruction.b].targets) {
+                target = final_target(image, target);
+            }
+        }
         // An unconditional jump to a return is the return (no fall-through to preserve).
         if (instruction.opcode == vm::Opcode::Jmp && instruction.a < image.code.size() &&
             image.code[instruction.a].opcode == vm::Opcode::Ret) {

@@ -169,6 +169,22 @@ private:
                         const SourceRange& range);
     void if_statement(const ast::IfStatement& node);
     void case_statement(const ast::CaseStatement& node);
+    /// One CASE label (`3:` or `1..5:`) and the branch it selects.
+    struct CaseRange {
+        std::int64_t low = 0;
+        std::int64_t high = 0;
+        vm::Operand low_operand;
+        vm::Operand high_operand;
+        vm::Label body;
+        bool single = true;
+    };
+    /// The labels compared with the selector one after the other, falling through if none
+    /// matches.
+    void compare_chain(vm::Operand selector, const sema::Type& type,
+                       const std::vector<CaseRange>& ranges);
+    /// One jump through a table when the labels are dense enough; false if they are not.
+    bool jump_table(vm::Operand selector, const sema::Type& type,
+                    const std::vector<CaseRange>& ranges, vm::Label otherwise);
     void for_statement(const ast::ForStatement& node, const SourceRange& range);
     void while_statement(const ast::WhileStatement& node);
     void repeat_statement(const ast::RepeatStatement& node);

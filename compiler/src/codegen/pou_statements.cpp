@@ -179,10 +179,9 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
     }
     const vm::Label end = builder_.label();
     std::vector<vm::Label> bodies;
-    std::vector<std::pair<std::int64_t, std::int64_t>> seen;
+    std::vector<CaseRange> ranges;
     for (const ast::CaseBranch& branch_node : node.branches) {
-        const vm::Label body = builder_.label();
-        bodies.push_back(body);
+        bodies.push_back(builder_.label());
         for (const ast::CaseLabel& label : branch_node.labels) {
             const auto low_value = types_.fold_integer(*label.low);
             const auto high_value = label.high ? types_.fold_integer(*label.high) : low_value;
@@ -190,33 +189,24 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
                 error(label.range, "a CASE label must be a constant");
                 continue;
             }
-            for (const auto& [a, b] : seen) {
-                if (*low_value <= b && a <= *high_value) {
+            for (const CaseRange& seen : ranges) {
+                if (*low_value <= seen.high && seen.low <= *high_value) {
                     error(label.range, "this CASE label overlaps an earlier one");
                 }
             }
-            seen.emplace_back(*low_value, *high_value);
             const auto low = value_as(*label.low, type);
-            if (!low) {
-                continue;
+            const auto high = label.high ? value_as(*label.high, type) : low;
+            if (low && high) {
+                ranges.push_back({*low_value, *high_value, low->operand, high->operand,
+                                  bodies.back(), !label.high});
             }
-            if (!label.high) {
-                builder_.jump(op_width("JEq", type), body, selector->operand, low->operand);
-                continue;
-            }
-            const auto high = value_as(*label.high, type);
-            if (!high) {
-                continue;
-            }
-            const std::string_view suffix = type_suffix(sema::scalar_of(type));
-            const vm::Label skip = builder_.label();
-            builder_.jump(program_.opcodes().get("JLt", suffix), skip, selector->operand,
-                          low->operand);
-            builder_.jump(program_.opcodes().get("JLe", suffix), body, selector->operand,
-                          high->operand);
-            bind(skip);
         }
     }
+    const vm::Label otherwise = builder_.label();
+    if (!jump_table(selector->operand, type, ranges, otherwise)) {
+        compare_chain(selector->operand, type, ranges);
+    }
+    bind(otherwise);
     statements(node.else_body);
     builder_.jump(Opcode::Jmp, end);
     for (std::size_t i = 0; i < node.branches.size(); ++i) {
@@ -227,6 +217,71 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
         }
     }
     bind(end);
+}
+
+void PouGenerator::compare_chain(Operand selector, const sema::Type& type,
+                                 const std::vector<CaseRange>& ranges) {
+    const std::string_view suffix = type_suffix(sema::scalar_of(type));
+    for (const CaseRange& range : ranges) {
+        if (range.single) {
+            builder_.jump(op_width("JEq", type), range.body, selector, range.low_operand);
+            continue;
+        }
+        const vm::Label skip = builder_.label();
+        builder_.jump(program_.opcodes().get("JLt", suffix), skip, selector, range.low_operand);
+        builder_.jump(program_.opcodes().get("JLe", suffix), range.body, selector,
+                      range.high_operand);
+        bind(skip);
+    }
+}
+
+bool PouGenerator::jump_table(Operand selector, const sema::Type& type,
+                              const std::vector<CaseRange>& ranges, vm::Label otherwise) {
+    // A table pays when it replaces several compares and is mostly labels, not holes.
+    constexpr std::int64_t kMinValues = 3;
+    constexpr std::int64_t kMaxEntries = 1024;
+    if (ranges.empty()) {
+        return false;
+    }
+    std::int64_t low = ranges.front().low;
+    std::int64_t high = ranges.front().high;
+    std::int64_t values = 0;
+    for (const CaseRange& range : ranges) {
+        low = std::min(low, range.low);
+        high = std::max(high, range.high);
+        values += range.high - range.low + 1;
+    }
+    const std::int64_t entries = high - low + 1;
+    std::optional<Opcode> op;
+    switch (sema::scalar_of(type)) {
+    case vm::Scalar::I16:
+        op = Opcode::JTabI16;
+        break;
+    case vm::Scalar::U16:
+        op = Opcode::JTabU16;
+        break;
+    case vm::Scalar::I32:
+    case vm::Scalar::U32:
+        op = Opcode::JTab32;
+        break;
+    default:
+        break;
+    }
+    if (!op || values < kMinValues || entries > kMaxEntries || entries > 2 * values) {
+        return false;
+    }
+    std::vector<vm::Label> targets(static_cast<std::size_t>(entries), otherwise);
+    // Ranges come in label order; an earlier label wins, as in the compare chain.
+    for (auto range = ranges.rbegin(); range != ranges.rend(); ++range) {
+        for (std::int64_t v = range->low; v <= range->high; ++v) {
+            targets[static_cast<std::size_t>(v - low)] = range->body;
+        }
+    }
+    // low is a value of the selector's type, so it fits 32 bits modulo 2^32.
+    const auto table = builder_.jump_table(
+        static_cast<std::int32_t>(static_cast<std::uint32_t>(low)), targets);
+    builder_.jump(*op, otherwise, selector, Operand::imm(table));
+    return true;
 }
 
 void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRange& range) {

@@ -59,6 +59,8 @@ public:
     /// The back-edge of a FOR loop: `variable` += `step`, then on to `body` while it has not
     /// passed `limit`.
     void for_loop(Opcode op, Label body, Operand variable, Operand limit, std::int16_t step);
+    /// A jump table for a JTab instruction: `targets[v - low]` for selector value v.
+    std::uint32_t jump_table(std::int32_t low, const std::vector<Label>& targets);
 
     // --- tables ------------------------------------------------------------------------------
     std::uint32_t import(std::string name, NativeSignature signature);
@@ -77,10 +79,15 @@ private:
         int field;
         std::uint32_t label;
     };
+    struct TableFixup {
+        std::uint32_t table;
+        std::vector<Label> targets;
+    };
 
     Image image_;
     std::vector<std::optional<std::uint32_t>> labels_;
     std::vector<Fixup> fixups_;
+    std::vector<TableFixup> table_fixups_;
     std::optional<std::uint32_t> current_pou_;
     std::vector<bool> has_body_;
 };

@@ -39,6 +39,13 @@ struct LineEntry {
     bool operator==(const LineEntry&) const = default;
 };
 
+/// Where a JTab instruction goes for each selector value from `low` on (a dense CASE).
+struct JumpTable {
+    std::int32_t low = 0;
+    std::vector<std::uint32_t> targets;
+    bool operator==(const JumpTable&) const = default;
+};
+
 /// Instructions [begin, end) of a POU are a copy of the body of `callee` put in place of a call
 /// (the last Ret dropped): run-time errors there name the callee and its line.
 struct InlinedCall {
@@ -155,6 +162,7 @@ struct NativeImport {
 struct Image {
     std::vector<Instruction> code;
     std::vector<ArrayDescriptor> arrays;
+    std::vector<JumpTable> jump_tables; ///< each used by one JTab instruction
     std::uint32_t static_size = kNullGuardSize;
     std::vector<std::uint8_t> static_init; ///< initial values of static data, static_size bytes
     std::vector<RetainRange> retain;

@@ -54,6 +54,8 @@
 //  Eq/Ne<w>          [BOOL]   [x]      [y]      bit equality
 //  JEq/JNe<w>        [x]      [y]      target   compare and branch                (safe point)
 //  JTst/JNTst<w>     [x]      [mask]   target   if ([A] AND [B]) <> 0 (= 0) goto C    (safe point)
+//  JTab<T>           [x]      table    target   goto entry [A] - low (modulo 2^32) of jump
+//                                               table B, or C past its end: a CASE  (safe point)
 //  Div/Mod<T>        [dst]    [x]      [y]      truncating; integer /0 traps, MIN/-1 wraps
 //  Lt/Le<T>          [BOOL]   [x]      [y]      ordered compare (GT/GE: swap x and y)
 //  JLt/JLe<T>        [x]      [y]      target   compare and branch                (safe point)
@@ -86,6 +88,7 @@ enum class Field : std::uint8_t {
     ArrayWrite, ///< the same, written
     ArrayIndex, ///< the index of an indexed access, read with the descriptor's index size
     NativeArguments, ///< the argument block of the native import in field A
+    JumpTable,       ///< a jump table index
 };
 
 /// What the aux field of an instruction holds.
@@ -134,6 +137,7 @@ struct FieldSpec {
 #define EPOSP_VM_F_AW8 EPOSP_VM_FIELD(ArrayWrite, 8)
 #define EPOSP_VM_F_AI EPOSP_VM_FIELD(ArrayIndex, 0)
 #define EPOSP_VM_F_NA EPOSP_VM_FIELD(NativeArguments, 0)
+#define EPOSP_VM_F_TB EPOSP_VM_FIELD(JumpTable, 0)
 
 // The lists: OP(name, family, T1, T2, aux, A, B, C). `family` names the semantics
 // (the interpreter defines one handler per family), T1/T2 are the C++ types it works on.
@@ -249,7 +253,10 @@ struct FieldSpec {
     EPOSP_VM_FOR_SCALARS(EPOSP_VM_CVT_ROW, OP)                                                     \
     EPOSP_VM_FOR_WIDTHS(EPOSP_VM_BIT_TEST_OPS, OP)                                                 \
     EPOSP_VM_OP(OP, JtX, JtX, void, void, Array, AR1, AI, JT)                                      \
-    EPOSP_VM_OP(OP, JfX, JfX, void, void, Array, AR1, AI, JT)
+    EPOSP_VM_OP(OP, JfX, JfX, void, void, Array, AR1, AI, JT)                                      \
+    EPOSP_VM_OP(OP, JTabI16, JTab, std::int16_t, void, None, R2, TB, JT)                           \
+    EPOSP_VM_OP(OP, JTabU16, JTab, std::uint16_t, void, None, R2, TB, JT)                          \
+    EPOSP_VM_OP(OP, JTab32, JTab, std::uint32_t, void, None, R4, TB, JT)
 
 #define EPOSP_VM_ENUMERATOR(name, ...) name,
 enum class Opcode : std::uint16_t { EPOSP_VM_OPCODES(EPOSP_VM_ENUMERATOR) };
