@@ -164,28 +164,30 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
                         {false, S::Bool, {S::Ptr, S::Ptr}}, {Value{result, &target}, value});
             return Value{result, &target};
         }
+        // Table 22: a WSTRING converts to and from WCHAR only; a STRING to and from every
+        // other elementary type.
+        const sema::Type& other = to_string ? from : want;
+        const bool wchar = other.kind == sema::TypeKind::Elementary && other.elementary == E::Wchar;
+        const bool wide = to_string ? want.wide : from.wide;
+        if (!sema::is_scalar(other) || other.kind != sema::TypeKind::Elementary || wide != wchar) {
+            error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
+            return std::nullopt;
+        }
         if (to_string) {
-            if (!sema::is_scalar(from) || from.kind != sema::TypeKind::Elementary || want.wide) {
-                error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
-                return std::nullopt;
-            }
-            const Operand result =
-                dest != nullptr && dest->type->kind == sema::TypeKind::String && !dest->type->wide
-                    ? dest->operand
-                    : temp(want);
+            const Operand result = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
+                                           dest->type->wide == want.wide
+                                       ? dest->operand
+                                       : temp(want);
             const sema::Type& target =
                 dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
-            call_native(native_type_name(from.elementary) + "_TO_STRING",
+            call_native(native_type_name(from.elementary) + (wide ? "_TO_WSTRING" : "_TO_STRING"),
                         {false, S::Bool, {S::Ptr, sema::scalar_of(from)}},
                         {Value{result, &target}, value});
             return Value{result, &target};
         }
-        if (from.wide || want.kind != sema::TypeKind::Elementary) {
-            error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
-            return std::nullopt;
-        }
         const vm::NativeSignature signature{true, sema::scalar_of(want), {S::Ptr}};
-        call_native("STRING_TO_" + native_type_name(want.elementary), signature, {value});
+        call_native((wide ? "WSTRING_TO_" : "STRING_TO_") + native_type_name(want.elementary),
+                    signature, {value});
         return native_result(signature, want, dest);
     }
     if (!sema::is_scalar(from) || !sema::is_scalar(want) ||
@@ -296,23 +298,28 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
                               : std::to_string(texts + static_cast<std::size_t>(shape.integers))));
         return std::nullopt;
     }
+    // IEC 61131-3 table 43 on STRING and on WSTRING alike: the first text says which, the
+    // others must agree; the WSTRING natives carry a suffix (LEFT_WSTRING).
     std::vector<Value> arguments;
     std::uint32_t capacity = 0;
+    bool wide = false;
     for (std::size_t i = 0; i < node.arguments.size(); ++i) {
         const ast::Expression& expression = *node.arguments[i].value;
         auto value = i < texts ? eval(expression, nullptr) : as_dint(expression);
         if (!value) {
             return std::nullopt;
         }
-        if (name == "LEN" && value->type->kind == sema::TypeKind::String && value->type->wide) {
-            const vm::NativeSignature signature{true, S::I32, {S::Ptr}};
-            call_native("LEN_WSTRING", signature, {*value});
-            return native_result(signature, types_.elementary(E::Int), dest);
-        }
         if (i < texts) {
-            if (value->type->kind != sema::TypeKind::String || value->type->wide) {
-                error(expression.range,
-                      fmt::format("{} needs a STRING here, not {}", name, value->type->name));
+            const bool is_string = value->type->kind == sema::TypeKind::String;
+            if (i == 0 && is_string) {
+                wide = value->type->wide;
+            }
+            if (!is_string || value->type->wide != wide) {
+                error(expression.range, fmt::format("{} needs a {} here, not {}", name,
+                                                    i == 0 ? "STRING or WSTRING"
+                                                    : wide ? "WSTRING"
+                                                           : "STRING",
+                                                    value->type->name));
                 return std::nullopt;
             }
             capacity = shape.texts < 0 || name == "INSERT" || name == "REPLACE"
@@ -321,15 +328,16 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
         }
         arguments.push_back(*value);
     }
+    const std::string native = wide ? name + "_WSTRING" : name;
     if (!shape.returns_text) {
         const vm::NativeSignature signature{true, S::I32, std::vector<S>(texts, S::Ptr)};
-        call_native(std::string(name), signature, arguments);
+        call_native(native, signature, arguments);
         // LEN and FIND are INT, as in CODESYS; the natives count in DINT.
         return native_result(signature, types_.elementary(E::Int), dest);
     }
-    const sema::Type& natural = types_.string(std::min<std::uint32_t>(capacity, 0xFFFF), false);
+    const sema::Type& natural = types_.string(std::min<std::uint32_t>(capacity, 0xFFFF), wide);
     const bool into_dest =
-        dest != nullptr && dest->type->kind == sema::TypeKind::String && !dest->type->wide;
+        dest != nullptr && dest->type->kind == sema::TypeKind::String && dest->type->wide == wide;
     Value result{into_dest ? dest->operand : temp(natural), into_dest ? dest->type : &natural};
     if (shape.texts < 0) {
         // CONCAT is binary in the VM: folded left to right into the result (vm/README).
@@ -339,9 +347,9 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
             }
         }
         const vm::NativeSignature signature{false, S::Bool, {S::Ptr, S::Ptr, S::Ptr}};
-        call_native("CONCAT", signature, {result, arguments[0], arguments[1]});
+        call_native(native, signature, {result, arguments[0], arguments[1]});
         for (std::size_t i = 2; i < arguments.size(); ++i) {
-            call_native("CONCAT", signature, {result, result, arguments[i]});
+            call_native(native, signature, {result, result, arguments[i]});
         }
         return result;
     }
@@ -351,7 +359,7 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
         parameters.push_back(i < texts ? S::Ptr : S::I32);
         all.push_back(arguments[i]);
     }
-    call_native(std::string(name), {false, S::Bool, parameters}, all);
+    call_native(native, {false, S::Bool, parameters}, all);
     return result;
 }
 

@@ -74,6 +74,10 @@ struct Names {
     static std::string typed(std::string_view prefix) {
         return std::string(prefix) + (kWide ? "WSTRING" : "STRING");
     }
+    static constexpr const char* kCharacter = kWide ? "WCHAR" : "CHAR";
+    static constexpr Scalar kCharacterScalar = kWide ? S::U16 : S::U8;
+    /// How a CHAR / WCHAR is passed: its unsigned code.
+    using CharacterCode = std::conditional_t<kWide, std::uint16_t, std::uint8_t>;
 };
 
 // Lexicographic order of the character codes as unsigned numbers, as CODESYS compares
@@ -206,6 +210,22 @@ void register_functions_of(NativeRegistry& registry) {
             args.set_result(find(haystack.view(), needle.view()));
         }
     });
+    // Table 22: CHAR_TO_STRING(dst, c) is the string of that one character, STRING_TO_CHAR(s)
+    // its first character, or 0 when it is empty (as CODESYS); the same for WCHAR and WSTRING.
+    registry.add(N::typed(std::string(N::kCharacter) + "_TO_"),
+                 {false, S::Bool, {S::Ptr, N::kCharacterScalar}}, [](NativeArgs& args) {
+                     const auto character =
+                         static_cast<Char>(args.get<typename N::CharacterCode>(1));
+                     store_text(args, 0, View{&character, 1});
+                 });
+    registry.add(N::typed("") + "_TO_" + N::kCharacter, {true, N::kCharacterScalar, {S::Ptr}},
+                 [](NativeArgs& args) {
+                     if (const StringParameter<Char> text(args, 0); text) {
+                         using Code = typename N::CharacterCode;
+                         args.set_result(text.view().empty() ? Code{0}
+                                                             : static_cast<Code>(text.view()[0]));
+                     }
+                 });
     add_comparison<Char>(registry, "EQ_", [](std::strong_ordering o) { return o == 0; });
     add_comparison<Char>(registry, "NE_", [](std::strong_ordering o) { return o != 0; });
     add_comparison<Char>(registry, "LT_", [](std::strong_ordering o) { return o < 0; });
