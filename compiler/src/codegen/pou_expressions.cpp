@@ -325,12 +325,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         return Value{address_of(*target), &types_.reference(target->type)};
     }
     if (const auto* node = std::get_if<ast::CallExpression>(&expression.node)) {
-        auto value = call(*node, hint, dest, expression.range);
-        if (value && value->type == nullptr) {
-            error(expression.range, "this call has no value");
-            return std::nullopt;
-        }
-        return value;
+        return function_value(call(*node, hint, dest, expression.range), expression.range);
     }
     if (const auto* node = std::get_if<ast::UnaryExpression>(&expression.node)) {
         return unary(*node, hint, dest, expression.range);
@@ -446,6 +441,15 @@ std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type&
                                 std::string(type_suffix(from)) + std::string(type_suffix(to))),
          result, value.operand);
     return Value{result, &want};
+}
+
+std::optional<Value> PouGenerator::function_value(const std::optional<Value>& called,
+                                                  const SourceRange& range) {
+    if (called && called->type == nullptr) {
+        error(range, "this call has no value");
+        return std::nullopt;
+    }
+    return called;
 }
 
 std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,

@@ -64,44 +64,45 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
                                                      const sema::Type* hint,
                                                      const Destination* dest,
                                                      const SourceRange& range) {
+    // EN and ENO are handled around the call (pou_enable.cpp); the function sees its inputs.
+    Arguments arguments;
     for (const ast::Argument& argument : node.arguments) {
-        if (argument.name && (sema::fold_case(argument.name->name) == "EN" ||
-                              sema::fold_case(argument.name->name) == "ENO")) {
-            error(argument.range, "EN/ENO on standard functions is not supported yet");
-            return std::nullopt;
+        if (is_enable_argument(argument)) {
+            continue;
         }
         if (argument.kind == ast::Argument::Kind::Output) {
             error(argument.range, fmt::format("{} has no outputs", name));
             return std::nullopt;
         }
+        arguments.push_back(&argument);
     }
     if (sema::is_conversion_function(name)) {
-        return conversion(name, node, dest, range);
+        return conversion(name, arguments, dest, range);
     }
     if (one_of(name,
                {"LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND"})) {
-        return string_function(name, node, dest, range);
+        return string_function(name, arguments, dest, range);
     }
     if (name == "ADR" || name == "SIZEOF") {
-        return address_or_size(name, node, range);
+        return address_or_size(name, arguments, range);
     }
     if (is_time_function(name)) {
-        return time_function(name, node, dest, range);
+        return time_function(name, arguments, dest, range);
     }
     if (one_of(name, {"SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE"})) {
-        return selection(name, node, hint, dest, range);
+        return selection(name, arguments, hint, dest, range);
     }
-    return numeric_function(name, node, hint, dest, range);
+    return numeric_function(name, arguments, hint, dest, range);
 }
 
 std::optional<Value> PouGenerator::address_or_size(const std::string& name,
-                                                   const ast::CallExpression& node,
+                                                   const Arguments& arguments,
                                                    const SourceRange& range) {
-    if (node.arguments.size() != 1) {
+    if (arguments.size() != 1) {
         error(range, fmt::format("{} takes one argument", name));
         return std::nullopt;
     }
-    const ast::Expression& argument = *node.arguments.front().value;
+    const ast::Expression& argument = *arguments.front()->value;
     const sema::Type* type = nullptr;
     std::optional<Place> target;
     if (const auto* type_name = std::get_if<ast::NameExpression>(&argument.node)) {
@@ -235,10 +236,9 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     return Value{result, &want};
 }
 
-std::optional<Value> PouGenerator::conversion(const std::string& name,
-                                              const ast::CallExpression& node,
+std::optional<Value> PouGenerator::conversion(const std::string& name, const Arguments& arguments,
                                               const Destination* dest, const SourceRange& range) {
-    if (node.arguments.size() != 1) {
+    if (arguments.size() != 1) {
         error(range, fmt::format("{} takes one argument", name));
         return std::nullopt;
     }
@@ -246,7 +246,7 @@ std::optional<Value> PouGenerator::conversion(const std::string& name,
     const std::string target_name =
         separator == std::string::npos ? name.substr(3) : name.substr(separator + 4);
     const sema::Type& target = types_.elementary(*ast::elementary_type_from_name(target_name));
-    const ast::Expression& argument = *node.arguments.front().value;
+    const ast::Expression& argument = *arguments.front()->value;
     std::optional<Value> value;
     if (separator != std::string::npos) {
         const sema::Type& source =
@@ -269,7 +269,7 @@ std::optional<Value> PouGenerator::conversion(const std::string& name,
 }
 
 std::optional<Value> PouGenerator::string_function(const std::string& name,
-                                                   const ast::CallExpression& node,
+                                                   const Arguments& arguments,
                                                    const Destination* dest,
                                                    const SourceRange& range) {
     // Text arguments, then positions and lengths, in the order of the native's parameters.
@@ -287,10 +287,10 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
     const Shape shape = *std::find_if(kShapes.begin(), kShapes.end(),
                                       [&](const Shape& s) { return s.name == name; });
     const std::size_t texts =
-        shape.texts < 0 ? node.arguments.size() : static_cast<std::size_t>(shape.texts);
-    if ((shape.texts < 0 && node.arguments.size() < 2) ||
+        shape.texts < 0 ? arguments.size() : static_cast<std::size_t>(shape.texts);
+    if ((shape.texts < 0 && arguments.size() < 2) ||
         (shape.texts >= 0 &&
-         node.arguments.size() != texts + static_cast<std::size_t>(shape.integers))) {
+         arguments.size() != texts + static_cast<std::size_t>(shape.integers))) {
         error(range,
               fmt::format("{} takes {} arguments", name,
                           shape.texts < 0
@@ -300,11 +300,11 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
     }
     // IEC 61131-3 table 43 on STRING and on WSTRING alike: the first text says which, the
     // others must agree; the WSTRING natives carry a suffix (LEFT_WSTRING).
-    std::vector<Value> arguments;
+    std::vector<Value> values;
     std::uint32_t capacity = 0;
     bool wide = false;
-    for (std::size_t i = 0; i < node.arguments.size(); ++i) {
-        const ast::Expression& expression = *node.arguments[i].value;
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        const ast::Expression& expression = *arguments[i]->value;
         auto value = i < texts ? eval(expression, nullptr) : as_dint(expression);
         if (!value) {
             return std::nullopt;
@@ -326,12 +326,12 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
                            ? capacity + value->type->capacity
                            : std::max(capacity, value->type->capacity);
         }
-        arguments.push_back(*value);
+        values.push_back(*value);
     }
     const std::string native = wide ? name + "_WSTRING" : name;
     if (!shape.returns_text) {
         const vm::NativeSignature signature{true, S::I32, std::vector<S>(texts, S::Ptr)};
-        call_native(native, signature, arguments);
+        call_native(native, signature, values);
         // LEN and FIND are INT, as in CODESYS; the natives count in DINT.
         return native_result(signature, types_.elementary(E::Int), dest);
     }
@@ -341,33 +341,31 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
     Value result{into_dest ? dest->operand : temp(natural), into_dest ? dest->type : &natural};
     if (shape.texts < 0) {
         // CONCAT is binary in the VM: folded left to right into the result (vm/README).
-        for (std::size_t i = 2; into_dest && i < arguments.size(); ++i) {
-            if (arguments[i].operand.raw == result.operand.raw) {
+        for (std::size_t i = 2; into_dest && i < values.size(); ++i) {
+            if (values[i].operand.raw == result.operand.raw) {
                 result = Value{temp(natural), &natural};
             }
         }
         const vm::NativeSignature signature{false, S::Bool, {S::Ptr, S::Ptr, S::Ptr}};
-        call_native(native, signature, {result, arguments[0], arguments[1]});
-        for (std::size_t i = 2; i < arguments.size(); ++i) {
-            call_native(native, signature, {result, result, arguments[i]});
+        call_native(native, signature, {result, values[0], values[1]});
+        for (std::size_t i = 2; i < values.size(); ++i) {
+            call_native(native, signature, {result, result, values[i]});
         }
         return result;
     }
     std::vector<S> parameters{S::Ptr};
     std::vector<Value> all{result};
-    for (std::size_t i = 0; i < arguments.size(); ++i) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
         parameters.push_back(i < texts ? S::Ptr : S::I32);
-        all.push_back(arguments[i]);
+        all.push_back(values[i]);
     }
     call_native(native, {false, S::Bool, parameters}, all);
     return result;
 }
 
-std::optional<Value> PouGenerator::selection(const std::string& name,
-                                             const ast::CallExpression& node,
+std::optional<Value> PouGenerator::selection(const std::string& name, const Arguments& arguments,
                                              const sema::Type* hint, const Destination* dest,
                                              const SourceRange& range) {
-    const auto& arguments = node.arguments;
     const std::size_t first = name == "SEL" || name == "MUX" ? 1 : 0;
     const std::size_t minimum = name == "MOVE" ? 1 : name == "LIMIT" ? 3 : 2;
     if (arguments.size() < minimum + first - (name == "SEL" || name == "MUX" ? 0 : 0) ||
@@ -377,13 +375,13 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         return std::nullopt;
     }
     if (name == "MOVE") {
-        return eval(*arguments[0].value, hint, dest);
+        return eval(*arguments[0]->value, hint, dest);
     }
     std::optional<Value> selector;
     if (name == "SEL") {
-        selector = value_as(*arguments[0].value, types_.elementary(E::Bool));
+        selector = value_as(*arguments[0]->value, types_.elementary(E::Bool));
     } else if (name == "MUX") {
-        selector = as_dint(*arguments[0].value);
+        selector = as_dint(*arguments[0]->value);
     }
     if (first == 1 && !selector) {
         return std::nullopt;
@@ -393,17 +391,17 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
     const sema::Type* common = nullptr;
     for (bool literals : {false, true}) {
         for (std::size_t i = first; i < arguments.size(); ++i) {
-            if (is_untyped_literal(*arguments[i].value) != literals) {
+            if (is_untyped_literal(*arguments[i]->value) != literals) {
                 continue;
             }
-            values[i] = eval(*arguments[i].value, common != nullptr ? common : hint);
+            values[i] = eval(*arguments[i]->value, common != nullptr ? common : hint);
             if (!values[i]) {
                 return std::nullopt;
             }
             if (common == nullptr || sema::converts_implicitly(*common, *values[i]->type)) {
                 common = values[i]->type;
             } else if (!sema::converts_implicitly(*values[i]->type, *common)) {
-                error(arguments[i].range,
+                error(arguments[i]->range,
                       fmt::format("{} mixes {} and {}", name, common->name, values[i]->type->name));
                 return std::nullopt;
             }
@@ -478,10 +476,9 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
 }
 
 std::optional<Value> PouGenerator::numeric_function(const std::string& name,
-                                                    const ast::CallExpression& node,
+                                                    const Arguments& arguments,
                                                     const sema::Type* hint, const Destination* dest,
                                                     const SourceRange& range) {
-    const auto& arguments = node.arguments;
     auto arity = [&](std::size_t n) {
         if (arguments.size() != n) {
             error(range, fmt::format("{} takes {} argument{}", name, n, n == 1 ? "" : "s"));
@@ -506,8 +503,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
         // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is
         // a > b AND b > c; the other extensible functions fold left to right.
-        auto pair =
-            operands(*arguments[0].value, *arguments[1].value, comparison ? nullptr : hint, range);
+        auto pair = operands(*arguments[0]->value, *arguments[1]->value,
+                             comparison ? nullptr : hint, range);
         if (!pair) {
             return std::nullopt;
         }
@@ -515,7 +512,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr, range);
         Value previous = pair->second;
         for (std::size_t i = 2; result && i < arguments.size(); ++i) {
-            auto next = value_as(*arguments[i].value, *previous.type);
+            auto next = value_as(*arguments[i]->value, *previous.type);
             if (!next) {
                 return std::nullopt;
             }
@@ -536,7 +533,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (!arity(1)) {
             return std::nullopt;
         }
-        const auto value = eval(*arguments[0].value, hint);
+        const auto value = eval(*arguments[0]->value, hint);
         if (!value) {
             return std::nullopt;
         }
@@ -555,9 +552,9 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (!arity(2)) {
             return std::nullopt;
         }
-        const auto value = eval(*arguments[0].value, hint);
+        const auto value = eval(*arguments[0]->value, hint);
         const sema::Type& udint = types_.elementary(E::Udint);
-        auto count = value ? eval(*arguments[1].value, &udint) : std::nullopt;
+        auto count = value ? eval(*arguments[1]->value, &udint) : std::nullopt;
         if (!count) {
             return std::nullopt;
         }
@@ -566,7 +563,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             return std::nullopt;
         }
         if (!sema::is_integer(*count->type)) {
-            error(arguments[1].range, "the shift count must be an integer");
+            error(arguments[1]->range, "the shift count must be an integer");
             return std::nullopt;
         }
         count = explicit_convert(*count, udint, nullptr, range);
@@ -582,7 +579,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (!arity(1)) {
             return std::nullopt;
         }
-        const auto value = eval(*arguments[0].value, &types_.elementary(E::Lreal));
+        const auto value = eval(*arguments[0]->value, &types_.elementary(E::Lreal));
         if (!value || !sema::is_real(*value->type)) {
             if (value) {
                 error(range, "TRUNC needs a REAL or LREAL");
@@ -598,7 +595,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (!arity(1)) {
             return std::nullopt;
         }
-        const auto value = eval(*arguments[0].value, hint);
+        const auto value = eval(*arguments[0]->value, hint);
         if (!value || !sema::is_numeric(*value->type)) {
             if (value) {
                 error(range, fmt::format("ABS needs a number, not {}", value->type->name));
@@ -625,7 +622,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     }
     const sema::Type* real_hint = hint != nullptr && sema::is_real(*hint) ? hint : nullptr;
     auto first =
-        eval(*arguments[0].value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
+        eval(*arguments[0]->value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
     if (!first || !sema::is_numeric(*first->type)) {
         if (first) {
             error(range, fmt::format("{} needs a number, not {}", name, first->type->name));
@@ -638,7 +635,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     first = explicit_convert(*first, real, nullptr, range);
     std::vector<Value> values{*first};
     if (two) {
-        auto second = eval(*arguments[1].value, &real);
+        auto second = eval(*arguments[1]->value, &real);
         if (!second || !sema::is_numeric(*second->type)) {
             return std::nullopt;
         }
