@@ -55,7 +55,8 @@ INSTANTIATE_TEST_SUITE_P(
     EveryGroup, StandardFunctionWithEn,
     testing::Values(
         EnabledCall{"Add", "INT", "-1", "ADD(EN := en, IN1 := a, IN2 := b, ENO => eno)", "10"},
-        EnabledCall{"AddExtensible", "INT", "-1", "ADD(EN := en, a, b, 1, ENO => eno)", "11"},
+        EnabledCall{"AddExtensible", "INT", "-1",
+                    "ADD(EN := en, IN1 := a, IN2 := b, IN3 := 1, ENO => eno)", "11"},
         EnabledCall{"Sub", "INT", "-1", "SUB(EN := en, IN1 := a, IN2 := b, ENO => eno)", "4"},
         EnabledCall{"Mul", "INT", "-1", "MUL(EN := en, IN1 := a, IN2 := b, ENO => eno)", "21"},
         EnabledCall{"Div", "INT", "-1", "DIV(EN := en, IN1 := a, IN2 := b, ENO => eno)", "2"},

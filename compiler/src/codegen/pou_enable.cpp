@@ -23,7 +23,11 @@ bool is_enable_argument(const ast::Argument& argument) {
 std::optional<PouGenerator::Enable> PouGenerator::enable_of(const ast::CallExpression& node) {
     Enable enable;
     bool ok = true;
+    const ast::Argument* positional = nullptr;
     for (const ast::Argument& argument : node.arguments) {
+        if (!argument.name && positional == nullptr) {
+            positional = &argument;
+        }
         if (!is_enable_argument(argument)) {
             continue;
         }
@@ -35,6 +39,11 @@ std::optional<PouGenerator::Enable> PouGenerator::enable_of(const ast::CallExpre
             ok = false;
         }
         (en ? enable.en : enable.eno) = &argument;
+    }
+    // EN and ENO belong to the formal form of a call (6.6.1.2.2).
+    if (positional != nullptr && (enable.en != nullptr || enable.eno != nullptr)) {
+        error(positional->range, "EN and ENO need a formal call: name every input");
+        ok = false;
     }
     return ok ? std::optional(enable) : std::nullopt;
 }

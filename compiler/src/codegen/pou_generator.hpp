@@ -210,6 +210,11 @@ private:
     std::optional<Value> standard_function(const std::string& name, const ast::CallExpression& node,
                                            const sema::Type* hint, const Destination* dest,
                                            const SourceRange& range);
+    /// The arguments of a formal call in the order of the function's inputs (an input named
+    /// twice, or one the function does not have with that many arguments, is an error); a
+    /// positional call's as they are (standard_parameters.cpp).
+    std::optional<Arguments> in_parameter_order(const std::string& name,
+                                                const Arguments& arguments);
     std::optional<Value> conversion(const std::string& name, const Arguments& arguments,
                                     const Destination* dest, const SourceRange& range);
     std::optional<Value> string_function(const std::string& name, const Arguments& arguments,

@@ -65,7 +65,7 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
                                                      const Destination* dest,
                                                      const SourceRange& range) {
     // EN and ENO are handled around the call (pou_enable.cpp); the function sees its inputs.
-    Arguments arguments;
+    Arguments written;
     for (const ast::Argument& argument : node.arguments) {
         if (is_enable_argument(argument)) {
             continue;
@@ -74,8 +74,13 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
             error(argument.range, fmt::format("{} has no outputs", name));
             return std::nullopt;
         }
-        arguments.push_back(&argument);
+        written.push_back(&argument);
     }
+    const auto ordered = in_parameter_order(name, written);
+    if (!ordered) {
+        return std::nullopt;
+    }
+    const Arguments& arguments = *ordered;
     if (sema::is_conversion_function(name)) {
         return conversion(name, arguments, dest, range);
     }

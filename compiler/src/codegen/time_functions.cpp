@@ -60,10 +60,8 @@ std::optional<Value> PouGenerator::time_function(const std::string& name,
         error(range, fmt::format("{} takes two arguments", name));
         return std::nullopt;
     }
-    // IN1 and IN2 (table 30) may be given by name, in either order.
-    const bool swapped = arguments[0]->name && sema::fold_case(arguments[0]->name->name) == "IN2";
-    const ast::Expression& first = *arguments[swapped ? 1 : 0]->value;
-    const ast::Expression& second = *arguments[swapped ? 0 : 1]->value;
+    const ast::Expression& first = *arguments[0]->value;
+    const ast::Expression& second = *arguments[1]->value;
     const auto left = value_as(first, types_.elementary(function.first));
     if (!left) {
         return std::nullopt;
