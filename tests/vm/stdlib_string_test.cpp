@@ -199,6 +199,36 @@ INSTANTIATE_TEST_SUITE_P(
                           ScalarResultCase{"GE_less", "GE_STRING", {"a", "b"}, 0}),
         both_widths()));
 
+class CharacterConversion : public ::testing::TestWithParam<stdlib::CharWidth> {};
+
+TEST_P(CharacterConversion, CharacterToStringMakesAOneCharacterString) {
+    const auto width = GetParam();
+    StdlibCall call;
+    const auto destination = text_of(call, width, 4, "old");
+    const bool wide = width == stdlib::CharWidth::Wide;
+    ASSERT_EQ(call.call(wide ? "WCHAR_TO_WSTRING" : "CHAR_TO_STRING",
+                        {StdlibCall::string_arg(destination),
+                         wide ? value(std::uint16_t{'x'}) : value(std::uint8_t{'x'})}),
+              RunState::Finished);
+    EXPECT_EQ(text_at(call, width, destination), "x");
+}
+
+TEST_P(CharacterConversion, StringToCharacterTakesTheFirstOrZero) {
+    const auto width = GetParam();
+    const auto native = width == stdlib::CharWidth::Wide ? "WSTRING_TO_WCHAR" : "STRING_TO_CHAR";
+    for (const auto& [text, expected] : {std::pair{"\xE9t\xE9", 0xE9}, std::pair{"", 0}}) {
+        StdlibCall call;
+        ASSERT_EQ(call.call(native, {StdlibCall::string_arg(text_of(call, width, 8, text))}),
+                  RunState::Finished);
+        EXPECT_EQ(width == stdlib::CharWidth::Wide ? call.result<std::uint16_t>()
+                                                   : call.result<std::uint8_t>(),
+                  expected)
+            << text;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(BothWidths, CharacterConversion, both_widths());
+
 TEST(StringFunctions, NaryConcatFoldsIntoItsDestination) {
     StdlibCall call;
     const auto d = call.string(10);
