@@ -153,10 +153,11 @@ FUNCTION_BLOCK Count
   n := n + 1;
 END_FUNCTION_BLOCK
 PROGRAM Main
-VAR c : Count; off : BOOL; eno1, eno2 : BOOL := TRUE; x : DINT; END_VAR
+VAR c : Count; off : BOOL; eno1, eno2, eno3 : BOOL := TRUE; x : DINT; y : DINT := 5; END_VAR
 c(EN := off, ENO => eno1);
 c(EN := NOT off, ENO => eno2);
 x := Inc(v := 41, EN := TRUE);
+y := Inc(EN := off, v := 1, ENO => eno3);
 END_PROGRAM
 )");
     ASSERT_TRUE(run.ok()) << run.errors();
@@ -165,6 +166,8 @@ END_PROGRAM
     EXPECT_FALSE(run.get<bool>("Main.eno1"));
     EXPECT_TRUE(run.get<bool>("Main.eno2"));
     EXPECT_EQ(run.get<std::int32_t>("Main.x"), 42);
+    EXPECT_EQ(run.get<std::int32_t>("Main.y"), 5); // a skipped call leaves its target as it was
+    EXPECT_FALSE(run.get<bool>("Main.eno3"));
 }
 
 TEST(NestedData, StructsArraysReferencesAndInOutArrays) {

@@ -89,6 +89,23 @@ std::string StProgram::get_string(const std::string& path) const {
     return text ? std::string(*text) : std::string("<bad string>");
 }
 
+std::u16string StProgram::get_wstring(const std::string& path) const {
+    const std::uint8_t* at = address(path, vm::stdlib::kStringHeaderSize);
+    if (at == nullptr) {
+        return {};
+    }
+    const std::span<const std::uint8_t> bytes{
+        at, machine_->memory().size() - static_cast<std::size_t>(at - machine_->memory().data())};
+    if (!vm::stdlib::string_capacity(bytes, vm::stdlib::CharWidth::Wide)) {
+        return u"<bad wstring>";
+    }
+    std::u16string units;
+    for (std::size_t i = 0; i < vm::stdlib::string_length(bytes); ++i) {
+        units.push_back(vm::stdlib::wstring_unit(bytes, i));
+    }
+    return units;
+}
+
 std::string diagnostics_of(const std::string& source) {
     SourceManager sources;
     const FileId file = sources.add("test.st", source);

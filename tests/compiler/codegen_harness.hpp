@@ -35,6 +35,7 @@ public:
     template <typename T>
     T get(const std::string& path) const;
     std::string get_string(const std::string& path) const;
+    std::u16string get_wstring(const std::string& path) const;
     /// Sets a variable between scans.
     template <typename T>
     void set(const std::string& path, T value) {

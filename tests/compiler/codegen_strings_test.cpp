@@ -1,5 +1,5 @@
-// STRING handling compiled and run (vm/README "Strings"): truncation at the capacity,
-// CONCAT folded left to right, the string functions and conversions, comparisons.
+// STRING and WSTRING handling compiled and run (vm/README "Strings"): truncation at the
+// capacity, CONCAT folded left to right, the string functions and conversions, comparisons.
 #include "codegen_harness.hpp"
 
 #include <gtest/gtest.h>
@@ -92,6 +92,88 @@ END_PROGRAM
     ASSERT_TRUE(run.ok()) << run.errors();
     ASSERT_TRUE(run.scans(1)) << run.fault();
     EXPECT_EQ(run.get_string("Main.g"), "Hi Bob");
+}
+
+TEST(Wstrings, FunctionsWorkAsOnStringsCountingUtf16Units) {
+    StProgram run(R"(
+PROGRAM Main
+VAR
+  w : WSTRING[10] := "abcdef";
+  c, l, r, m, ins, del, rep : WSTRING[20];
+  n, f, euro_at : INT;
+  eq, lt, gt : BOOL;
+END_VAR
+c := CONCAT("x", w, "-", "€");
+n := LEN(c);
+l := LEFT(w, 2);
+r := RIGHT(w, 2);
+m := MID(w, 3, 2);
+ins := INSERT(w, "++", 3);
+del := DELETE(w, 2, 2);
+rep := REPLACE(w, "ZZ", 3, 1);
+f := FIND(w, "cd");
+euro_at := FIND(c, "€");
+eq := w = "abcdef";
+lt := "abc" < w;
+gt := "€" > "ä";
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get_wstring("Main.c"), u"xabcdef-\u20ac");
+    EXPECT_EQ(run.get<std::int16_t>("Main.n"), 9);
+    EXPECT_EQ(run.get_wstring("Main.l"), u"ab");
+    EXPECT_EQ(run.get_wstring("Main.r"), u"ef");
+    EXPECT_EQ(run.get_wstring("Main.m"), u"bcd");
+    EXPECT_EQ(run.get_wstring("Main.ins"), u"abc++def");
+    EXPECT_EQ(run.get_wstring("Main.del"), u"adef");
+    EXPECT_EQ(run.get_wstring("Main.rep"), u"ZZdef");
+    EXPECT_EQ(run.get<std::int16_t>("Main.f"), 3);
+    EXPECT_EQ(run.get<std::int16_t>("Main.euro_at"), 9);
+    EXPECT_TRUE(run.get<bool>("Main.eq"));
+    EXPECT_TRUE(run.get<bool>("Main.lt"));
+    EXPECT_TRUE(run.get<bool>("Main.gt")); // U+20AC orders after U+00E4
+}
+
+TEST(Wstrings, AssignmentAndResultsTruncateAtTheCapacity) {
+    StProgram run(R"(
+PROGRAM Main
+VAR
+  long : WSTRING := "Hello World"; short, joined : WSTRING[5]; self : WSTRING[8] := "ab";
+END_VAR
+short := long;
+joined := CONCAT(long, "!");
+self := CONCAT(self, self, self, self, self);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get_wstring("Main.short"), u"Hello");
+    EXPECT_EQ(run.get_wstring("Main.joined"), u"Hello");
+    EXPECT_EQ(run.get_wstring("Main.self"), u"abababab");
+}
+
+TEST(Wstrings, CharacterConversionsOfTable22) {
+    StProgram run(R"(
+PROGRAM Main
+VAR
+  s : STRING := 'ab'; empty : STRING; c, first, none : CHAR := CHAR#'x'; one : STRING;
+  w : WSTRING := "€b"; wc, wfirst : WCHAR := WCHAR#"Z"; wone : WSTRING;
+END_VAR
+one := CHAR_TO_STRING(c);
+first := STRING_TO_CHAR(s);
+none := STRING_TO_CHAR(empty);
+wone := WCHAR_TO_WSTRING(wc);
+wfirst := WSTRING_TO_WCHAR(w);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get_string("Main.one"), "x");
+    EXPECT_EQ(run.get<std::uint8_t>("Main.first"), 'a');
+    EXPECT_EQ(run.get<std::uint8_t>("Main.none"), 0);
+    EXPECT_EQ(run.get_wstring("Main.wone"), u"Z");
+    EXPECT_EQ(run.get<std::uint16_t>("Main.wfirst"), 0x20AC);
 }
 
 } // namespace

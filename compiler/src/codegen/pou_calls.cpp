@@ -13,56 +13,6 @@ namespace eposp::compiler::codegen {
 using vm::Opcode;
 using vm::Operand;
 
-namespace {
-
-bool is_named(const ast::Argument& argument, std::string_view name) {
-    return argument.name && sema::fold_case(argument.name->name) == name;
-}
-
-} // namespace
-
-std::optional<Value> PouGenerator::call(const ast::CallExpression& node, const sema::Type* hint,
-                                        const Destination* dest, const SourceRange& range) {
-    // 6.6.1.8: with EN := FALSE the call is skipped and ENO is FALSE; ENO is TRUE after a call.
-    const ast::Argument* enable = nullptr;
-    const ast::Argument* enabled = nullptr;
-    for (const ast::Argument& argument : node.arguments) {
-        if (is_named(argument, "EN") && argument.kind == ast::Argument::Kind::Input) {
-            enable = &argument;
-        } else if (is_named(argument, "ENO") && argument.kind == ast::Argument::Kind::Output) {
-            enabled = &argument;
-        }
-    }
-    if (enable == nullptr && enabled == nullptr) {
-        return call_enabled(node, hint, dest, range);
-    }
-    const sema::Type& boolean = types_.elementary(ast::ElementaryType::Bool);
-    const vm::Label skip = builder_.label();
-    const vm::Label end = builder_.label();
-    if (enable != nullptr) {
-        const auto condition = value_as(*enable->value, boolean);
-        if (!condition) {
-            return std::nullopt;
-        }
-        builder_.jump(Opcode::Jf, skip, condition->operand);
-    }
-    // The result goes to a temporary that exists on both paths.
-    auto result = call_enabled(node, hint, nullptr, range);
-    const auto eno = enabled != nullptr ? place(*enabled->value) : std::nullopt;
-    const std::uint8_t one[1] = {1};
-    const std::uint8_t zero[1] = {0};
-    if (eno) {
-        store(*eno, Value{program_.constant({one, one + 1}, 1), &boolean});
-    }
-    builder_.jump(Opcode::Jmp, end);
-    bind(skip);
-    if (eno) {
-        store(*eno, Value{program_.constant({zero, zero + 1}, 1), &boolean});
-    }
-    bind(end);
-    return result;
-}
-
 std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
                                                 const sema::Type* hint, const Destination* dest,
                                                 const SourceRange& range) {
@@ -163,7 +113,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         }
     }
     for (const ast::Argument& argument : node.arguments) {
-        if (is_named(argument, "EN") || is_named(argument, "ENO")) {
+        if (is_enable_argument(argument)) {
             continue;
         }
         const sema::Field* field = formal(frame, argument, positional);
@@ -305,7 +255,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
     std::vector<std::pair<const sema::Field*, const ast::Argument*>> outputs;
     std::vector<const sema::Field*> connected;
     for (const ast::Argument& argument : node.arguments) {
-        if (is_named(argument, "EN") || is_named(argument, "ENO")) {
+        if (is_enable_argument(argument)) {
             continue;
         }
         const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;

@@ -378,12 +378,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         return Value{address_of(*target), &types_.reference(target->type)};
     }
     if (const auto* node = std::get_if<ast::CallExpression>(&expression.node)) {
-        auto value = call(*node, hint, dest, expression.range);
-        if (value && value->type == nullptr) {
-            error(expression.range, "this call has no value");
-            return std::nullopt;
-        }
-        return value;
+        return function_value(call(*node, hint, dest, expression.range), expression.range);
     }
     if (const auto* node = std::get_if<ast::UnaryExpression>(&expression.node)) {
         return unary(*node, hint, dest, expression.range);
@@ -501,6 +496,15 @@ std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type&
     return Value{result, &want};
 }
 
+std::optional<Value> PouGenerator::function_value(const std::optional<Value>& called,
+                                                  const SourceRange& range) {
+    if (called && called->type == nullptr) {
+        error(range, "this call has no value");
+        return std::nullopt;
+    }
+    return called;
+}
+
 std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
                                             const sema::Type& want, const Destination* dest) {
     const auto value = eval(expression, &want, dest);
@@ -553,7 +557,8 @@ std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Express
 std::optional<std::pair<Value, Value>> PouGenerator::unify(const Value& l, const Value& r,
                                                            const SourceRange& range) {
     if (l.type == r.type || (sema::is_time_like(*l.type) && sema::is_time_like(*r.type)) ||
-        (l.type->kind == sema::TypeKind::String && r.type->kind == sema::TypeKind::String)) {
+        (l.type->kind == sema::TypeKind::String && r.type->kind == sema::TypeKind::String &&
+         l.type->wide == r.type->wide)) {
         return std::pair(l, r);
     }
     if (sema::converts_implicitly(*l.type, *r.type)) {
@@ -612,18 +617,16 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
     const sema::Type& boolean = types_.elementary(E::Bool);
     const sema::Type& type = *left.type;
     if (type.kind == sema::TypeKind::String) {
-        static constexpr std::pair<ast::BinaryOperator, const char*> kNames[] = {
-            {ast::BinaryOperator::Less, "LT_STRING"},
-            {ast::BinaryOperator::Greater, "GT_STRING"},
-            {ast::BinaryOperator::LessEqual, "LE_STRING"},
-            {ast::BinaryOperator::GreaterEqual, "GE_STRING"},
-            {ast::BinaryOperator::Equal, "EQ_STRING"},
-            {ast::BinaryOperator::NotEqual, "NE_STRING"}};
-        for (const auto& [candidate, name] : kNames) {
+        static constexpr std::pair<ast::BinaryOperator, const char*> kPrefixes[] = {
+            {ast::BinaryOperator::Less, "LT_"},      {ast::BinaryOperator::Greater, "GT_"},
+            {ast::BinaryOperator::LessEqual, "LE_"}, {ast::BinaryOperator::GreaterEqual, "GE_"},
+            {ast::BinaryOperator::Equal, "EQ_"},     {ast::BinaryOperator::NotEqual, "NE_"}};
+        for (const auto& [candidate, prefix] : kPrefixes) {
             if (candidate == op) {
                 const vm::NativeSignature signature{
                     true, vm::Scalar::Bool, {vm::Scalar::Ptr, vm::Scalar::Ptr}};
-                call_native(name, signature, {left, right});
+                call_native(std::string(prefix) + (type.wide ? "WSTRING" : "STRING"), signature,
+                            {left, right});
                 return native_result(signature, boolean, dest);
             }
         }

@@ -234,6 +234,18 @@ void PouGenerator::load_immediate(Operand dst, const sema::Type& type, std::int6
          Operand::imm(static_cast<std::uint32_t>(raw >> 32)));
 }
 
+void PouGenerator::clear(Operand dst, const sema::Type& type) {
+    if (type.kind == sema::TypeKind::String) {
+        emit(Opcode::Ldi32, dst, Operand::imm(type.capacity)); // capacity, length 0
+    } else if (sema::is_scalar(type)) {
+        load_immediate(dst, type, 0);
+    } else {
+        emit(Opcode::MovN, dst,
+             program_.constant(std::vector<std::uint8_t>(type.size, 0), std::max(type.align, 1U)),
+             Operand::imm(type.size));
+    }
+}
+
 void PouGenerator::move(Operand dst, const sema::Type& dst_type, const Value& src) {
     if (dst.raw == src.operand.raw) {
         return;

@@ -3,6 +3,7 @@
 #include "program_generator.hpp"
 #include "value_cache.hpp"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -27,6 +28,13 @@ struct Destination {
 
 /// Whether `name` is one of the time and date functions of table 30 (time_functions.cpp).
 bool is_time_function(std::string_view name);
+
+/// Whether `argument` is EN or ENO, which every call takes besides its parameters
+/// (pou_enable.cpp).
+bool is_enable_argument(const ast::Argument& argument);
+
+/// The arguments of a standard function call as written, without EN and ENO.
+using Arguments = std::vector<const ast::Argument*>;
 
 /// Type-checks and generates the body of one POU (IEC 61131-3 ed. 3, 7.3: ST expressions and
 /// statements). Expressions are evaluated memory to memory: a variable is its own operand,
@@ -74,6 +82,8 @@ private:
     /// `dst := src` of the same type (strings of other capacities are truncated).
     void move(vm::Operand dst, const sema::Type& dst_type, const Value& src);
     void load_immediate(vm::Operand dst, const sema::Type& type, std::int64_t value);
+    /// `dst := ` the zero of `type` (an empty string).
+    void clear(vm::Operand dst, const sema::Type& type);
     Value load(const Place& place, const Destination* dest = nullptr);
     void store(const Place& place, const Value& value);
     /// The place `delta` bytes into `place`, of type `type`.
@@ -101,6 +111,9 @@ private:
     /// The value of `expression` of its own type; an untyped literal takes `hint`.
     std::optional<Value> eval(const ast::Expression& expression, const sema::Type* hint,
                               const Destination* dest = nullptr);
+    /// `called` if it is a value (a function's), else an error: an FB call has none.
+    std::optional<Value> function_value(const std::optional<Value>& called,
+                                        const SourceRange& range);
     /// The value of `expression` as `want` (implicitly widened, else an error).
     std::optional<Value> value_as(const ast::Expression& expression, const sema::Type& want,
                                   const Destination* dest = nullptr);
@@ -193,9 +206,24 @@ private:
     void conditional_loop(const ast::StatementList& body_statements,
                           const ast::Expression& condition, bool repeat_when, bool test_first);
 
-    // --- pou_calls.cpp -----------------------------------------------------------------------
+    // --- pou_enable.cpp ----------------------------------------------------------------------
+    /// The EN and ENO arguments of a call, where written.
+    struct Enable {
+        const ast::Argument* en = nullptr;
+        const ast::Argument* eno = nullptr;
+    };
+    /// EN and ENO of `node`; nothing (after an error) when EN is not an input or ENO not an
+    /// output.
+    std::optional<Enable> enable_of(const ast::CallExpression& node);
+    /// Emits `body` so that it runs only when EN is TRUE (or absent), `skipped` otherwise, and
+    /// sets ENO to whether it ran; false after an error in EN or ENO.
+    bool with_enable(const Enable& enable, const std::function<void()>& body,
+                     const std::function<void()>& skipped = {});
+    /// A call as an expression or statement, with its EN and ENO.
     std::optional<Value> call(const ast::CallExpression& node, const sema::Type* hint,
                               const Destination* dest, const SourceRange& range);
+
+    // --- pou_calls.cpp -----------------------------------------------------------------------
     /// The call without EN/ENO.
     std::optional<Value> call_enabled(const ast::CallExpression& node, const sema::Type* hint,
                                       const Destination* dest, const SourceRange& range);
@@ -214,25 +242,30 @@ private:
     std::optional<Value> standard_function(const std::string& name, const ast::CallExpression& node,
                                            const sema::Type* hint, const Destination* dest,
                                            const SourceRange& range);
-    std::optional<Value> conversion(const std::string& name, const ast::CallExpression& node,
+    /// The arguments of a formal call in the order of the function's inputs (an input named
+    /// twice, or one the function does not have with that many arguments, is an error); a
+    /// positional call's as they are (standard_parameters.cpp).
+    std::optional<Arguments> in_parameter_order(const std::string& name,
+                                                const Arguments& arguments);
+    std::optional<Value> conversion(const std::string& name, const Arguments& arguments,
                                     const Destination* dest, const SourceRange& range);
-    std::optional<Value> string_function(const std::string& name, const ast::CallExpression& node,
+    std::optional<Value> string_function(const std::string& name, const Arguments& arguments,
                                          const Destination* dest, const SourceRange& range);
-    std::optional<Value> selection(const std::string& name, const ast::CallExpression& node,
+    std::optional<Value> selection(const std::string& name, const Arguments& arguments,
                                    const sema::Type* hint, const Destination* dest,
                                    const SourceRange& range);
     /// ADR(x): the address of x as POINTER TO its type; SIZEOF(x or T): its size in bytes.
-    std::optional<Value> address_or_size(const std::string& name, const ast::CallExpression& node,
+    std::optional<Value> address_or_size(const std::string& name, const Arguments& arguments,
                                          const SourceRange& range);
     /// ADD_TIME, SUB_DT_DT, CONCAT_DATE_TOD, ... (time_functions.cpp).
-    std::optional<Value> time_function(const std::string& name, const ast::CallExpression& node,
+    std::optional<Value> time_function(const std::string& name, const Arguments& arguments,
                                        const Destination* dest, const SourceRange& range);
     /// The value of an integer expression as DINT (positions and lengths of the natives).
     std::optional<Value> as_dint(const ast::Expression& expression);
     /// A conversion `X_TO_Y` between any two elementary types.
     std::optional<Value> explicit_convert(const Value& value, const sema::Type& want,
                                           const Destination* dest, const SourceRange& range);
-    std::optional<Value> numeric_function(const std::string& name, const ast::CallExpression& node,
+    std::optional<Value> numeric_function(const std::string& name, const Arguments& arguments,
                                           const sema::Type* hint, const Destination* dest,
                                           const SourceRange& range);
 

@@ -134,17 +134,31 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
         error(range, "a function block instance cannot be assigned");
         return;
     }
-    if (target->kind == Place::Kind::Direct) {
-        const Destination dest{target->operand, target->type};
-        const auto value = value_as(*node.value, *target->type, &dest);
-        if (value) {
-            move(target->operand, *target->type, *value);
+    const Destination dest{target->operand, target->type};
+    const Destination* into = target->kind == Place::Kind::Direct ? &dest : nullptr;
+    const auto* call_node = std::get_if<ast::CallExpression>(&node.value->node);
+    const auto enable = call_node != nullptr ? enable_of(*call_node) : std::optional(Enable{});
+    if (!enable) {
+        return;
+    }
+    if (enable->en == nullptr && enable->eno == nullptr) {
+        if (const auto value = value_as(*node.value, *target->type, into)) {
+            store(*target, *value);
         }
         return;
     }
-    if (const auto value = value_as(*node.value, *target->type)) {
-        store(*target, *value);
-    }
+    // `y := F(EN := c, ...)`: a call that EN skips leaves y as it was (IEC 61131-3 ed. 3,
+    // 6.6.1.2.2), so EN guards the whole assignment.
+    with_enable(*enable, [&] {
+        auto value = function_value(call_enabled(*call_node, target->type, into, node.value->range),
+                                    node.value->range);
+        if (value) {
+            value = value_as(*value, node.value->range, *target->type, into);
+        }
+        if (value) {
+            store(*target, *value);
+        }
+    });
 }
 
 void PouGenerator::if_statement(const ast::IfStatement& node) {

@@ -64,44 +64,50 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
                                                      const sema::Type* hint,
                                                      const Destination* dest,
                                                      const SourceRange& range) {
+    // EN and ENO are handled around the call (pou_enable.cpp); the function sees its inputs.
+    Arguments written;
     for (const ast::Argument& argument : node.arguments) {
-        if (argument.name && (sema::fold_case(argument.name->name) == "EN" ||
-                              sema::fold_case(argument.name->name) == "ENO")) {
-            error(argument.range, "EN/ENO on standard functions is not supported yet");
-            return std::nullopt;
+        if (is_enable_argument(argument)) {
+            continue;
         }
         if (argument.kind == ast::Argument::Kind::Output) {
             error(argument.range, fmt::format("{} has no outputs", name));
             return std::nullopt;
         }
+        written.push_back(&argument);
     }
+    const auto ordered = in_parameter_order(name, written);
+    if (!ordered) {
+        return std::nullopt;
+    }
+    const Arguments& arguments = *ordered;
     if (sema::is_conversion_function(name)) {
-        return conversion(name, node, dest, range);
+        return conversion(name, arguments, dest, range);
     }
     if (one_of(name,
                {"LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND"})) {
-        return string_function(name, node, dest, range);
+        return string_function(name, arguments, dest, range);
     }
     if (name == "ADR" || name == "SIZEOF") {
-        return address_or_size(name, node, range);
+        return address_or_size(name, arguments, range);
     }
     if (is_time_function(name)) {
-        return time_function(name, node, dest, range);
+        return time_function(name, arguments, dest, range);
     }
     if (one_of(name, {"SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE"})) {
-        return selection(name, node, hint, dest, range);
+        return selection(name, arguments, hint, dest, range);
     }
-    return numeric_function(name, node, hint, dest, range);
+    return numeric_function(name, arguments, hint, dest, range);
 }
 
 std::optional<Value> PouGenerator::address_or_size(const std::string& name,
-                                                   const ast::CallExpression& node,
+                                                   const Arguments& arguments,
                                                    const SourceRange& range) {
-    if (node.arguments.size() != 1) {
+    if (arguments.size() != 1) {
         error(range, fmt::format("{} takes one argument", name));
         return std::nullopt;
     }
-    const ast::Expression& argument = *node.arguments.front().value;
+    const ast::Expression& argument = *arguments.front()->value;
     const sema::Type* type = nullptr;
     std::optional<Place> target;
     if (const auto* type_name = std::get_if<ast::NameExpression>(&argument.node)) {
@@ -164,28 +170,30 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
                         {false, S::Bool, {S::Ptr, S::Ptr}}, {Value{result, &target}, value});
             return Value{result, &target};
         }
+        // Table 22: a WSTRING converts to and from WCHAR only; a STRING to and from every
+        // other elementary type.
+        const sema::Type& other = to_string ? from : want;
+        const bool wchar = other.kind == sema::TypeKind::Elementary && other.elementary == E::Wchar;
+        const bool wide = to_string ? want.wide : from.wide;
+        if (!sema::is_scalar(other) || other.kind != sema::TypeKind::Elementary || wide != wchar) {
+            error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
+            return std::nullopt;
+        }
         if (to_string) {
-            if (!sema::is_scalar(from) || from.kind != sema::TypeKind::Elementary || want.wide) {
-                error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
-                return std::nullopt;
-            }
-            const Operand result =
-                dest != nullptr && dest->type->kind == sema::TypeKind::String && !dest->type->wide
-                    ? dest->operand
-                    : temp(want);
+            const Operand result = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
+                                           dest->type->wide == want.wide
+                                       ? dest->operand
+                                       : temp(want);
             const sema::Type& target =
                 dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
-            call_native(native_type_name(from.elementary) + "_TO_STRING",
+            call_native(native_type_name(from.elementary) + (wide ? "_TO_WSTRING" : "_TO_STRING"),
                         {false, S::Bool, {S::Ptr, sema::scalar_of(from)}},
                         {Value{result, &target}, value});
             return Value{result, &target};
         }
-        if (from.wide || want.kind != sema::TypeKind::Elementary) {
-            error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
-            return std::nullopt;
-        }
         const vm::NativeSignature signature{true, sema::scalar_of(want), {S::Ptr}};
-        call_native("STRING_TO_" + native_type_name(want.elementary), signature, {value});
+        call_native((wide ? "WSTRING_TO_" : "STRING_TO_") + native_type_name(want.elementary),
+                    signature, {value});
         return native_result(signature, want, dest);
     }
     if (!sema::is_scalar(from) || !sema::is_scalar(want) ||
@@ -233,10 +241,9 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     return Value{result, &want};
 }
 
-std::optional<Value> PouGenerator::conversion(const std::string& name,
-                                              const ast::CallExpression& node,
+std::optional<Value> PouGenerator::conversion(const std::string& name, const Arguments& arguments,
                                               const Destination* dest, const SourceRange& range) {
-    if (node.arguments.size() != 1) {
+    if (arguments.size() != 1) {
         error(range, fmt::format("{} takes one argument", name));
         return std::nullopt;
     }
@@ -244,7 +251,7 @@ std::optional<Value> PouGenerator::conversion(const std::string& name,
     const std::string target_name =
         separator == std::string::npos ? name.substr(3) : name.substr(separator + 4);
     const sema::Type& target = types_.elementary(*ast::elementary_type_from_name(target_name));
-    const ast::Expression& argument = *node.arguments.front().value;
+    const ast::Expression& argument = *arguments.front()->value;
     std::optional<Value> value;
     if (separator != std::string::npos) {
         const sema::Type& source =
@@ -267,7 +274,7 @@ std::optional<Value> PouGenerator::conversion(const std::string& name,
 }
 
 std::optional<Value> PouGenerator::string_function(const std::string& name,
-                                                   const ast::CallExpression& node,
+                                                   const Arguments& arguments,
                                                    const Destination* dest,
                                                    const SourceRange& range) {
     // Text arguments, then positions and lengths, in the order of the native's parameters.
@@ -285,10 +292,10 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
     const Shape shape = *std::find_if(kShapes.begin(), kShapes.end(),
                                       [&](const Shape& s) { return s.name == name; });
     const std::size_t texts =
-        shape.texts < 0 ? node.arguments.size() : static_cast<std::size_t>(shape.texts);
-    if ((shape.texts < 0 && node.arguments.size() < 2) ||
+        shape.texts < 0 ? arguments.size() : static_cast<std::size_t>(shape.texts);
+    if ((shape.texts < 0 && arguments.size() < 2) ||
         (shape.texts >= 0 &&
-         node.arguments.size() != texts + static_cast<std::size_t>(shape.integers))) {
+         arguments.size() != texts + static_cast<std::size_t>(shape.integers))) {
         error(range,
               fmt::format("{} takes {} arguments", name,
                           shape.texts < 0
@@ -296,70 +303,74 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
                               : std::to_string(texts + static_cast<std::size_t>(shape.integers))));
         return std::nullopt;
     }
-    std::vector<Value> arguments;
+    // IEC 61131-3 table 43 on STRING and on WSTRING alike: the first text says which, the
+    // others must agree; the WSTRING natives carry a suffix (LEFT_WSTRING).
+    std::vector<Value> values;
     std::uint32_t capacity = 0;
-    for (std::size_t i = 0; i < node.arguments.size(); ++i) {
-        const ast::Expression& expression = *node.arguments[i].value;
+    bool wide = false;
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        const ast::Expression& expression = *arguments[i]->value;
         auto value = i < texts ? eval(expression, nullptr) : as_dint(expression);
         if (!value) {
             return std::nullopt;
         }
-        if (name == "LEN" && value->type->kind == sema::TypeKind::String && value->type->wide) {
-            const vm::NativeSignature signature{true, S::I32, {S::Ptr}};
-            call_native("LEN_WSTRING", signature, {*value});
-            return native_result(signature, types_.elementary(E::Int), dest);
-        }
         if (i < texts) {
-            if (value->type->kind != sema::TypeKind::String || value->type->wide) {
-                error(expression.range,
-                      fmt::format("{} needs a STRING here, not {}", name, value->type->name));
+            const bool is_string = value->type->kind == sema::TypeKind::String;
+            if (i == 0 && is_string) {
+                wide = value->type->wide;
+            }
+            if (!is_string || value->type->wide != wide) {
+                error(expression.range, fmt::format("{} needs a {} here, not {}", name,
+                                                    i == 0 ? "STRING or WSTRING"
+                                                    : wide ? "WSTRING"
+                                                           : "STRING",
+                                                    value->type->name));
                 return std::nullopt;
             }
             capacity = shape.texts < 0 || name == "INSERT" || name == "REPLACE"
                            ? capacity + value->type->capacity
                            : std::max(capacity, value->type->capacity);
         }
-        arguments.push_back(*value);
+        values.push_back(*value);
     }
+    const std::string native = wide ? name + "_WSTRING" : name;
     if (!shape.returns_text) {
         const vm::NativeSignature signature{true, S::I32, std::vector<S>(texts, S::Ptr)};
-        call_native(std::string(name), signature, arguments);
+        call_native(native, signature, values);
         // LEN and FIND are INT, as in CODESYS; the natives count in DINT.
         return native_result(signature, types_.elementary(E::Int), dest);
     }
-    const sema::Type& natural = types_.string(std::min<std::uint32_t>(capacity, 0xFFFF), false);
+    const sema::Type& natural = types_.string(std::min<std::uint32_t>(capacity, 0xFFFF), wide);
     const bool into_dest =
-        dest != nullptr && dest->type->kind == sema::TypeKind::String && !dest->type->wide;
+        dest != nullptr && dest->type->kind == sema::TypeKind::String && dest->type->wide == wide;
     Value result{into_dest ? dest->operand : temp(natural), into_dest ? dest->type : &natural};
     if (shape.texts < 0) {
         // CONCAT is binary in the VM: folded left to right into the result (vm/README).
-        for (std::size_t i = 2; into_dest && i < arguments.size(); ++i) {
-            if (arguments[i].operand.raw == result.operand.raw) {
+        for (std::size_t i = 2; into_dest && i < values.size(); ++i) {
+            if (values[i].operand.raw == result.operand.raw) {
                 result = Value{temp(natural), &natural};
             }
         }
         const vm::NativeSignature signature{false, S::Bool, {S::Ptr, S::Ptr, S::Ptr}};
-        call_native("CONCAT", signature, {result, arguments[0], arguments[1]});
-        for (std::size_t i = 2; i < arguments.size(); ++i) {
-            call_native("CONCAT", signature, {result, result, arguments[i]});
+        call_native(native, signature, {result, values[0], values[1]});
+        for (std::size_t i = 2; i < values.size(); ++i) {
+            call_native(native, signature, {result, result, values[i]});
         }
         return result;
     }
     std::vector<S> parameters{S::Ptr};
     std::vector<Value> all{result};
-    for (std::size_t i = 0; i < arguments.size(); ++i) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
         parameters.push_back(i < texts ? S::Ptr : S::I32);
-        all.push_back(arguments[i]);
+        all.push_back(values[i]);
     }
-    call_native(std::string(name), {false, S::Bool, parameters}, all);
+    call_native(native, {false, S::Bool, parameters}, all);
     return result;
 }
 
-std::optional<Value> PouGenerator::selection(const std::string& name,
-                                             const ast::CallExpression& node,
+std::optional<Value> PouGenerator::selection(const std::string& name, const Arguments& arguments,
                                              const sema::Type* hint, const Destination* dest,
                                              const SourceRange& range) {
-    const auto& arguments = node.arguments;
     const std::size_t first = name == "SEL" || name == "MUX" ? 1 : 0;
     const std::size_t minimum = name == "MOVE" ? 1 : name == "LIMIT" ? 3 : 2;
     if (arguments.size() < minimum + first - (name == "SEL" || name == "MUX" ? 0 : 0) ||
@@ -369,13 +380,13 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
         return std::nullopt;
     }
     if (name == "MOVE") {
-        return eval(*arguments[0].value, hint, dest);
+        return eval(*arguments[0]->value, hint, dest);
     }
     std::optional<Value> selector;
     if (name == "SEL") {
-        selector = value_as(*arguments[0].value, types_.elementary(E::Bool));
+        selector = value_as(*arguments[0]->value, types_.elementary(E::Bool));
     } else if (name == "MUX") {
-        selector = as_dint(*arguments[0].value);
+        selector = as_dint(*arguments[0]->value);
     }
     if (first == 1 && !selector) {
         return std::nullopt;
@@ -385,17 +396,17 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
     const sema::Type* common = nullptr;
     for (bool literals : {false, true}) {
         for (std::size_t i = first; i < arguments.size(); ++i) {
-            if (is_untyped_literal(*arguments[i].value) != literals) {
+            if (is_untyped_literal(*arguments[i]->value) != literals) {
                 continue;
             }
-            values[i] = eval(*arguments[i].value, common != nullptr ? common : hint);
+            values[i] = eval(*arguments[i]->value, common != nullptr ? common : hint);
             if (!values[i]) {
                 return std::nullopt;
             }
             if (common == nullptr || sema::converts_implicitly(*common, *values[i]->type)) {
                 common = values[i]->type;
             } else if (!sema::converts_implicitly(*values[i]->type, *common)) {
-                error(arguments[i].range,
+                error(arguments[i]->range,
                       fmt::format("{} mixes {} and {}", name, common->name, values[i]->type->name));
                 return std::nullopt;
             }
@@ -470,10 +481,9 @@ std::optional<Value> PouGenerator::selection(const std::string& name,
 }
 
 std::optional<Value> PouGenerator::numeric_function(const std::string& name,
-                                                    const ast::CallExpression& node,
+                                                    const Arguments& arguments,
                                                     const sema::Type* hint, const Destination* dest,
                                                     const SourceRange& range) {
-    const auto& arguments = node.arguments;
     auto arity = [&](std::size_t n) {
         if (arguments.size() != n) {
             error(range, fmt::format("{} takes {} argument{}", name, n, n == 1 ? "" : "s"));
@@ -498,8 +508,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
         // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is
         // a > b AND b > c; the other extensible functions fold left to right.
-        auto pair =
-            operands(*arguments[0].value, *arguments[1].value, comparison ? nullptr : hint, range);
+        auto pair = operands(*arguments[0]->value, *arguments[1]->value,
+                             comparison ? nullptr : hint, range);
         if (!pair) {
             return std::nullopt;
         }
@@ -507,7 +517,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr, range);
         Value previous = pair->second;
         for (std::size_t i = 2; result && i < arguments.size(); ++i) {
-            auto next = value_as(*arguments[i].value, *previous.type);
+            auto next = value_as(*arguments[i]->value, *previous.type);
             if (!next) {
                 return std::nullopt;
             }
@@ -528,7 +538,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (!arity(1)) {
             return std::nullopt;
         }
-        const auto value = eval(*arguments[0].value, hint);
+        const auto value = eval(*arguments[0]->value, hint);
         if (!value) {
             return std::nullopt;
         }
@@ -547,9 +557,9 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (!arity(2)) {
             return std::nullopt;
         }
-        const auto value = eval(*arguments[0].value, hint);
+        const auto value = eval(*arguments[0]->value, hint);
         const sema::Type& udint = types_.elementary(E::Udint);
-        auto count = value ? eval(*arguments[1].value, &udint) : std::nullopt;
+        auto count = value ? eval(*arguments[1]->value, &udint) : std::nullopt;
         if (!count) {
             return std::nullopt;
         }
@@ -558,7 +568,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             return std::nullopt;
         }
         if (!sema::is_integer(*count->type)) {
-            error(arguments[1].range, "the shift count must be an integer");
+            error(arguments[1]->range, "the shift count must be an integer");
             return std::nullopt;
         }
         count = explicit_convert(*count, udint, nullptr, range);
@@ -574,7 +584,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (!arity(1)) {
             return std::nullopt;
         }
-        const auto value = eval(*arguments[0].value, &types_.elementary(E::Lreal));
+        const auto value = eval(*arguments[0]->value, &types_.elementary(E::Lreal));
         if (!value || !sema::is_real(*value->type)) {
             if (value) {
                 error(range, "TRUNC needs a REAL or LREAL");
@@ -590,7 +600,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (!arity(1)) {
             return std::nullopt;
         }
-        const auto value = eval(*arguments[0].value, hint);
+        const auto value = eval(*arguments[0]->value, hint);
         if (!value || !sema::is_numeric(*value->type)) {
             if (value) {
                 error(range, fmt::format("ABS needs a number, not {}", value->type->name));
@@ -617,7 +627,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     }
     const sema::Type* real_hint = hint != nullptr && sema::is_real(*hint) ? hint : nullptr;
     auto first =
-        eval(*arguments[0].value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
+        eval(*arguments[0]->value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
     if (!first || !sema::is_numeric(*first->type)) {
         if (first) {
             error(range, fmt::format("{} needs a number, not {}", name, first->type->name));
@@ -630,7 +640,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     first = explicit_convert(*first, real, nullptr, range);
     std::vector<Value> values{*first};
     if (two) {
-        auto second = eval(*arguments[1].value, &real);
+        auto second = eval(*arguments[1]->value, &real);
         if (!second || !sema::is_numeric(*second->type)) {
             return std::nullopt;
         }

@@ -52,19 +52,16 @@ bool is_time_function(std::string_view name) {
 }
 
 std::optional<Value> PouGenerator::time_function(const std::string& name,
-                                                 const ast::CallExpression& node,
+                                                 const Arguments& arguments,
                                                  const Destination* dest,
                                                  const SourceRange& range) {
     const TimeFunction& function = *find_time_function(name);
-    if (node.arguments.size() != 2) {
+    if (arguments.size() != 2) {
         error(range, fmt::format("{} takes two arguments", name));
         return std::nullopt;
     }
-    // IN1 and IN2 (table 30) may be given by name, in either order.
-    const bool swapped =
-        node.arguments[0].name && sema::fold_case(node.arguments[0].name->name) == "IN2";
-    const ast::Expression& first = *node.arguments[swapped ? 1 : 0].value;
-    const ast::Expression& second = *node.arguments[swapped ? 0 : 1].value;
+    const ast::Expression& first = *arguments[0]->value;
+    const ast::Expression& second = *arguments[1]->value;
     const auto left = value_as(first, types_.elementary(function.first));
     if (!left) {
         return std::nullopt;

@@ -2,10 +2,10 @@
 
 #include "eposp/vm/stdlib/string_layout.hpp"
 
-#include <algorithm>
 #include <cstring>
 
 namespace eposp::vm::stdlib {
+
 std::span<std::uint8_t> string_bytes(NativeArgs& args, std::size_t index, CharWidth width) {
     const auto address = args.get<std::uint64_t>(index);
     const auto header = args.memory(address, kStringHeaderSize);
@@ -39,12 +39,34 @@ void store_string(NativeArgs& args, std::size_t index, std::string_view text) {
     }
 }
 
-void TextBuffer::append(std::string_view piece) {
-    const auto count = std::min(piece.size(), chars_.size() - size_);
-    if (count != 0) { // an empty view may have no data() at all
-        std::memcpy(chars_.data() + size_, piece.data(), count);
+template <>
+StringParameter<char>::StringParameter(NativeArgs& args, std::size_t index) {
+    const auto text = string_parameter(args, index);
+    valid_ = text.has_value();
+    text_ = text.value_or(std::string_view{});
+}
+
+template <>
+StringParameter<char16_t>::StringParameter(NativeArgs& args, std::size_t index) {
+    const auto bytes = string_bytes(args, index, CharWidth::Wide);
+    valid_ = !bytes.empty();
+    for (std::size_t i = 0; valid_ && i < string_length(bytes); ++i) {
+        const char16_t unit = wstring_unit(bytes, i);
+        text_.append({&unit, 1});
     }
-    size_ += count;
+}
+
+template <>
+void store_text<char>(NativeArgs& args, std::size_t index, std::string_view text) {
+    store_string(args, index, text);
+}
+
+template <>
+void store_text<char16_t>(NativeArgs& args, std::size_t index, std::u16string_view text) {
+    const auto bytes = string_bytes(args, index, CharWidth::Wide);
+    if (!bytes.empty()) {
+        write_wstring(bytes, text);
+    }
 }
 
 } // namespace eposp::vm::stdlib

@@ -1,5 +1,7 @@
-// IEC 61131-3 (3rd ed.) 6.6.2.5.12, table 43: the character string functions. Positions are
-// 1-based. Where the standard leaves out-of-range arguments open, the result is the part of the
+// IEC 61131-3 (3rd ed.) 6.6.2.5.12, table 43: the character string functions, written once on
+// the character type and registered for STRING (`LEFT`, `EQ_STRING`) and WSTRING
+// (`LEFT_WSTRING`, `EQ_WSTRING`). Positions are 1-based and count characters (UTF-16 units in a
+// WSTRING). Where the standard leaves out-of-range arguments open, the result is the part of the
 // request that exists (CODESYS behaves so for LEFT/RIGHT/MID): lengths below 0 count as 0,
 // lengths past the end are cut, and a position outside the string selects nothing (MID, DELETE,
 // REPLACE) or is clamped to the nearest end (INSERT).
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <compare>
+#include <string>
 
 namespace eposp::vm::stdlib {
 namespace {
@@ -21,22 +24,26 @@ std::size_t clamp_count(std::int32_t count, std::size_t limit) {
 }
 
 /// The 0-based index of 1-based position `position` if it names a character of `text`.
-std::optional<std::size_t> index_of(std::string_view text, std::int32_t position) {
+template <typename Char>
+std::optional<std::size_t> index_of(std::basic_string_view<Char> text, std::int32_t position) {
     if (position < 1 || static_cast<std::size_t>(position) > text.size()) {
         return std::nullopt;
     }
     return static_cast<std::size_t>(position - 1);
 }
 
-std::string_view mid(std::string_view text, std::int32_t length, std::int32_t position) {
+template <typename Char>
+std::basic_string_view<Char> mid(std::basic_string_view<Char> text, std::int32_t length,
+                                 std::int32_t position) {
     const auto start = index_of(text, position);
     return start ? text.substr(*start, clamp_count(length, text.size() - *start))
-                 : std::string_view{};
+                 : std::basic_string_view<Char>{};
 }
 
 /// `text` with `length` characters from `position` replaced by `insert`.
-void splice(TextBuffer& out, std::string_view text, std::int32_t length, std::int32_t position,
-            std::string_view insert) {
+template <typename Char>
+void splice(TextBuffer<Char>& out, std::basic_string_view<Char> text, std::int32_t length,
+            std::int32_t position, std::basic_string_view<Char> insert) {
     const auto start = index_of(text, position);
     if (!start) {
         out.append(text);
@@ -47,123 +54,191 @@ void splice(TextBuffer& out, std::string_view text, std::int32_t length, std::in
     out.append(text.substr(*start + clamp_count(length, text.size() - *start)));
 }
 
-std::int32_t find(std::string_view haystack, std::string_view needle) {
+template <typename Char>
+std::int32_t find(std::basic_string_view<Char> haystack, std::basic_string_view<Char> needle) {
     if (needle.empty()) {
         return 0;
     }
     const auto at = haystack.find(needle);
-    return at == std::string_view::npos ? 0 : static_cast<std::int32_t>(at + 1);
+    return at == std::basic_string_view<Char>::npos ? 0 : static_cast<std::int32_t>(at + 1);
 }
 
-// Byte-wise lexicographic order (characters as unsigned codes), as CODESYS compares.
-std::strong_ordering compare(std::string_view a, std::string_view b) {
-    return a.compare(b) <=> 0;
-}
+/// The natives of one string type: STRING keeps the plain IEC names (`LEFT`), WSTRING's carry a
+/// suffix (`LEFT_WSTRING`); typed ones name their type (`EQ_STRING`, `EQ_WSTRING`).
+template <typename Char>
+struct Names {
+    static constexpr bool kWide = std::is_same_v<Char, char16_t>;
+    static std::string function(std::string_view name) {
+        return std::string(name) + (kWide ? "_WSTRING" : "");
+    }
+    static std::string typed(std::string_view prefix) {
+        return std::string(prefix) + (kWide ? "WSTRING" : "STRING");
+    }
+    static constexpr const char* kCharacter = kWide ? "WCHAR" : "CHAR";
+    static constexpr Scalar kCharacterScalar = kWide ? S::U16 : S::U8;
+    /// How a CHAR / WCHAR is passed: its unsigned code.
+    using CharacterCode = std::conditional_t<kWide, std::uint16_t, std::uint8_t>;
+};
 
-void add_comparison(NativeRegistry& registry, const char* name,
+// Lexicographic order of the character codes as unsigned numbers, as CODESYS compares
+// (char_traits compares char as unsigned char and char16_t as an unsigned 16-bit code).
+template <typename Char>
+void add_comparison(NativeRegistry& registry, std::string_view prefix,
                     bool (*holds)(std::strong_ordering)) {
-    registry.add(name, {true, S::Bool, {S::Ptr, S::Ptr}}, [holds](NativeArgs& args) {
-        const auto a = string_parameter(args, 0);
-        const auto b = a ? string_parameter(args, 1) : std::nullopt;
-        if (b) {
-            args.set_result(static_cast<std::uint8_t>(holds(compare(*a, *b))));
+    registry.add(
+        Names<Char>::typed(prefix), {true, S::Bool, {S::Ptr, S::Ptr}}, [holds](NativeArgs& args) {
+            const StringParameter<Char> a(args, 0);
+            if (!a) {
+                return;
+            }
+            const StringParameter<Char> b(args, 1);
+            if (b) {
+                args.set_result(static_cast<std::uint8_t>(holds(a.view().compare(b.view()) <=> 0)));
+            }
+        });
+}
+
+template <typename Char>
+void register_functions_of(NativeRegistry& registry) {
+    using N = Names<Char>;
+    using View = std::basic_string_view<Char>;
+    // LEN reads the header alone: no need to copy a WSTRING's units.
+    registry.add(N::function("LEN"), {true, S::I32, {S::Ptr}}, [](NativeArgs& args) {
+        const auto bytes = string_bytes(args, 0, kWidthOf<Char>);
+        if (!bytes.empty()) {
+            args.set_result(static_cast<std::int32_t>(string_length(bytes)));
         }
     });
+    // ASSIGN_STRING(dst, src): `dst := src` between strings of different capacities.
+    registry.add(N::typed("ASSIGN_"), {false, S::Bool, {S::Ptr, S::Ptr}}, [](NativeArgs& args) {
+        if (const StringParameter<Char> text(args, 1); text) {
+            store_text(args, 0, text.view());
+        }
+    });
+    registry.add(
+        N::function("LEFT"), {false, S::Bool, {S::Ptr, S::Ptr, S::I32}}, [](NativeArgs& args) {
+            if (const StringParameter<Char> text(args, 1); text) {
+                const View in = text.view();
+                store_text(args, 0,
+                           in.substr(0, clamp_count(args.get<std::int32_t>(2), in.size())));
+            }
+        });
+    registry.add(N::function("RIGHT"), {false, S::Bool, {S::Ptr, S::Ptr, S::I32}},
+                 [](NativeArgs& args) {
+                     if (const StringParameter<Char> text(args, 1); text) {
+                         const View in = text.view();
+                         const auto count = clamp_count(args.get<std::int32_t>(2), in.size());
+                         store_text(args, 0, in.substr(in.size() - count));
+                     }
+                 });
+    // MID(IN, L, P)
+    registry.add(
+        N::function("MID"), {false, S::Bool, {S::Ptr, S::Ptr, S::I32, S::I32}},
+        [](NativeArgs& args) {
+            if (const StringParameter<Char> text(args, 1); text) {
+                store_text(args, 0,
+                           mid(text.view(), args.get<std::int32_t>(2), args.get<std::int32_t>(3)));
+            }
+        });
+    // CONCAT is binary here: an n-ary call is folded left to right into its destination
+    // (CONCAT(d, a, b); CONCAT(d, d, c)), which gives the same text since truncation keeps a
+    // prefix.
+    registry.add(N::function("CONCAT"), {false, S::Bool, {S::Ptr, S::Ptr, S::Ptr}},
+                 [](NativeArgs& args) {
+                     const StringParameter<Char> a(args, 1);
+                     if (!a) {
+                         return;
+                     }
+                     const StringParameter<Char> b(args, 2);
+                     if (b) {
+                         TextBuffer<Char> out;
+                         out.append(a.view());
+                         out.append(b.view());
+                         store_text(args, 0, out.view());
+                     }
+                 });
+    // INSERT(IN1, IN2, P): IN2 after the first P characters of IN1; P is clamped to 0..LEN(IN1).
+    registry.add(N::function("INSERT"), {false, S::Bool, {S::Ptr, S::Ptr, S::Ptr, S::I32}},
+                 [](NativeArgs& args) {
+                     const StringParameter<Char> text(args, 1);
+                     if (!text) {
+                         return;
+                     }
+                     const StringParameter<Char> insert(args, 2);
+                     if (insert) {
+                         const View in = text.view();
+                         const auto split = clamp_count(args.get<std::int32_t>(3), in.size());
+                         TextBuffer<Char> out;
+                         out.append(in.substr(0, split));
+                         out.append(insert.view());
+                         out.append(in.substr(split));
+                         store_text(args, 0, out.view());
+                     }
+                 });
+    // DELETE(IN, L, P)
+    registry.add(N::function("DELETE"), {false, S::Bool, {S::Ptr, S::Ptr, S::I32, S::I32}},
+                 [](NativeArgs& args) {
+                     if (const StringParameter<Char> text(args, 1); text) {
+                         TextBuffer<Char> out;
+                         splice(out, text.view(), args.get<std::int32_t>(2),
+                                args.get<std::int32_t>(3), View{});
+                         store_text(args, 0, out.view());
+                     }
+                 });
+    // REPLACE(IN1, IN2, L, P)
+    registry.add(N::function("REPLACE"), {false, S::Bool, {S::Ptr, S::Ptr, S::Ptr, S::I32, S::I32}},
+                 [](NativeArgs& args) {
+                     const StringParameter<Char> text(args, 1);
+                     if (!text) {
+                         return;
+                     }
+                     const StringParameter<Char> insert(args, 2);
+                     if (insert) {
+                         TextBuffer<Char> out;
+                         splice(out, text.view(), args.get<std::int32_t>(3),
+                                args.get<std::int32_t>(4), insert.view());
+                         store_text(args, 0, out.view());
+                     }
+                 });
+    registry.add(N::function("FIND"), {true, S::I32, {S::Ptr, S::Ptr}}, [](NativeArgs& args) {
+        const StringParameter<Char> haystack(args, 0);
+        if (!haystack) {
+            return;
+        }
+        const StringParameter<Char> needle(args, 1);
+        if (needle) {
+            args.set_result(find(haystack.view(), needle.view()));
+        }
+    });
+    // Table 22: CHAR_TO_STRING(dst, c) is the string of that one character, STRING_TO_CHAR(s)
+    // its first character, or 0 when it is empty (as CODESYS); the same for WCHAR and WSTRING.
+    registry.add(N::typed(std::string(N::kCharacter) + "_TO_"),
+                 {false, S::Bool, {S::Ptr, N::kCharacterScalar}}, [](NativeArgs& args) {
+                     const auto character =
+                         static_cast<Char>(args.get<typename N::CharacterCode>(1));
+                     store_text(args, 0, View{&character, 1});
+                 });
+    registry.add(N::typed("") + "_TO_" + N::kCharacter, {true, N::kCharacterScalar, {S::Ptr}},
+                 [](NativeArgs& args) {
+                     if (const StringParameter<Char> text(args, 0); text) {
+                         using Code = typename N::CharacterCode;
+                         args.set_result(text.view().empty() ? Code{0}
+                                                             : static_cast<Code>(text.view()[0]));
+                     }
+                 });
+    add_comparison<Char>(registry, "EQ_", [](std::strong_ordering o) { return o == 0; });
+    add_comparison<Char>(registry, "NE_", [](std::strong_ordering o) { return o != 0; });
+    add_comparison<Char>(registry, "LT_", [](std::strong_ordering o) { return o < 0; });
+    add_comparison<Char>(registry, "LE_", [](std::strong_ordering o) { return o <= 0; });
+    add_comparison<Char>(registry, "GT_", [](std::strong_ordering o) { return o > 0; });
+    add_comparison<Char>(registry, "GE_", [](std::strong_ordering o) { return o >= 0; });
 }
 
 } // namespace
 
 void register_string_functions(NativeRegistry& registry) {
-    registry.add("LEN", {true, S::I32, {S::Ptr}}, [](NativeArgs& args) {
-        if (const auto text = string_parameter(args, 0)) {
-            args.set_result(static_cast<std::int32_t>(text->size()));
-        }
-    });
-    // ASSIGN_STRING(dst, src): `dst := src` between STRINGs of different capacities.
-    registry.add("ASSIGN_STRING", {false, S::Bool, {S::Ptr, S::Ptr}}, [](NativeArgs& args) {
-        if (const auto text = string_parameter(args, 1)) {
-            store_string(args, 0, *text);
-        }
-    });
-    registry.add("LEFT", {false, S::Bool, {S::Ptr, S::Ptr, S::I32}}, [](NativeArgs& args) {
-        if (const auto text = string_parameter(args, 1)) {
-            store_string(args, 0,
-                         text->substr(0, clamp_count(args.get<std::int32_t>(2), text->size())));
-        }
-    });
-    registry.add("RIGHT", {false, S::Bool, {S::Ptr, S::Ptr, S::I32}}, [](NativeArgs& args) {
-        if (const auto text = string_parameter(args, 1)) {
-            const auto count = clamp_count(args.get<std::int32_t>(2), text->size());
-            store_string(args, 0, text->substr(text->size() - count));
-        }
-    });
-    // MID(IN, L, P)
-    registry.add("MID", {false, S::Bool, {S::Ptr, S::Ptr, S::I32, S::I32}}, [](NativeArgs& args) {
-        if (const auto text = string_parameter(args, 1)) {
-            store_string(args, 0, mid(*text, args.get<std::int32_t>(2), args.get<std::int32_t>(3)));
-        }
-    });
-    // CONCAT is binary here: an n-ary call is folded left to right into its destination
-    // (CONCAT(d, a, b); CONCAT(d, d, c)), which gives the same text since truncation keeps a
-    // prefix.
-    registry.add("CONCAT", {false, S::Bool, {S::Ptr, S::Ptr, S::Ptr}}, [](NativeArgs& args) {
-        const auto a = string_parameter(args, 1);
-        const auto b = a ? string_parameter(args, 2) : std::nullopt;
-        if (b) {
-            TextBuffer out;
-            out.append(*a);
-            out.append(*b);
-            store_string(args, 0, out.view());
-        }
-    });
-    // INSERT(IN1, IN2, P): IN2 after the first P characters of IN1; P is clamped to 0..LEN(IN1).
-    registry.add("INSERT", {false, S::Bool, {S::Ptr, S::Ptr, S::Ptr, S::I32}},
-                 [](NativeArgs& args) {
-                     const auto text = string_parameter(args, 1);
-                     const auto insert = text ? string_parameter(args, 2) : std::nullopt;
-                     if (insert) {
-                         const auto split = clamp_count(args.get<std::int32_t>(3), text->size());
-                         TextBuffer out;
-                         out.append(text->substr(0, split));
-                         out.append(*insert);
-                         out.append(text->substr(split));
-                         store_string(args, 0, out.view());
-                     }
-                 });
-    // DELETE(IN, L, P)
-    registry.add(
-        "DELETE", {false, S::Bool, {S::Ptr, S::Ptr, S::I32, S::I32}}, [](NativeArgs& args) {
-            if (const auto text = string_parameter(args, 1)) {
-                TextBuffer out;
-                splice(out, *text, args.get<std::int32_t>(2), args.get<std::int32_t>(3), {});
-                store_string(args, 0, out.view());
-            }
-        });
-    // REPLACE(IN1, IN2, L, P)
-    registry.add("REPLACE", {false, S::Bool, {S::Ptr, S::Ptr, S::Ptr, S::I32, S::I32}},
-                 [](NativeArgs& args) {
-                     const auto text = string_parameter(args, 1);
-                     const auto insert = text ? string_parameter(args, 2) : std::nullopt;
-                     if (insert) {
-                         TextBuffer out;
-                         splice(out, *text, args.get<std::int32_t>(3), args.get<std::int32_t>(4),
-                                *insert);
-                         store_string(args, 0, out.view());
-                     }
-                 });
-    registry.add("FIND", {true, S::I32, {S::Ptr, S::Ptr}}, [](NativeArgs& args) {
-        const auto haystack = string_parameter(args, 0);
-        const auto needle = haystack ? string_parameter(args, 1) : std::nullopt;
-        if (needle) {
-            args.set_result(find(*haystack, *needle));
-        }
-    });
-    add_comparison(registry, "EQ_STRING", [](std::strong_ordering o) { return o == 0; });
-    add_comparison(registry, "NE_STRING", [](std::strong_ordering o) { return o != 0; });
-    add_comparison(registry, "LT_STRING", [](std::strong_ordering o) { return o < 0; });
-    add_comparison(registry, "LE_STRING", [](std::strong_ordering o) { return o <= 0; });
-    add_comparison(registry, "GT_STRING", [](std::strong_ordering o) { return o > 0; });
-    add_comparison(registry, "GE_STRING", [](std::strong_ordering o) { return o >= 0; });
+    register_functions_of<char>(registry);
+    register_functions_of<char16_t>(registry);
 }
 
 } // namespace eposp::vm::stdlib

@@ -36,12 +36,8 @@ std::vector<std::uint8_t> string_image(std::uint32_t capacity, std::string_view 
 std::vector<std::uint8_t> wstring_image(std::uint32_t capacity, std::u16string_view text) {
     check_capacity(capacity);
     std::vector<std::uint8_t> bytes(string_size(capacity, CharWidth::Wide), 0);
-    const auto length = static_cast<std::uint16_t>(std::min<std::size_t>(text.size(), capacity));
     put_u16(bytes.data(), static_cast<std::uint16_t>(capacity));
-    put_u16(bytes.data() + 2, length);
-    if (length != 0) { // an empty view may have no data() at all
-        std::memcpy(bytes.data() + kStringHeaderSize, text.data(), length * sizeof(char16_t));
-    }
+    write_wstring(bytes, text);
     return bytes;
 }
 
@@ -74,6 +70,25 @@ std::uint16_t write_string(std::span<std::uint8_t> bytes, std::string_view text)
     bytes[kStringHeaderSize + length] = 0;
     put_u16(bytes.data() + 2, length);
     return length;
+}
+
+std::uint16_t write_wstring(std::span<std::uint8_t> bytes, std::u16string_view text) {
+    const auto capacity = get_u16(bytes.data());
+    const auto length = static_cast<std::uint16_t>(std::min<std::size_t>(text.size(), capacity));
+    if (length != 0) { // an empty view may have no data() at all
+        std::memcpy(bytes.data() + kStringHeaderSize, text.data(), length * sizeof(char16_t));
+    }
+    put_u16(bytes.data() + kStringHeaderSize + 2 * length, 0);
+    put_u16(bytes.data() + 2, length);
+    return length;
+}
+
+std::uint16_t string_length(std::span<const std::uint8_t> bytes) {
+    return get_u16(bytes.data() + 2);
+}
+
+char16_t wstring_unit(std::span<const std::uint8_t> bytes, std::size_t i) {
+    return static_cast<char16_t>(get_u16(bytes.data() + kStringHeaderSize + 2 * i));
 }
 
 } // namespace eposp::vm::stdlib

@@ -48,5 +48,14 @@ std::optional<std::uint16_t> string_capacity(std::span<const std::uint8_t> bytes
 /// Stores `text` into the STRING whose header starts `bytes` (its capacity already set), cut at
 /// the capacity; returns the length stored. `text` may overlap `bytes`.
 std::uint16_t write_string(std::span<std::uint8_t> bytes, std::string_view text);
+/// The same for a WSTRING; `text` lies outside `bytes` (VM memory holds bytes, so UTF-16 units
+/// are copied in and out, never viewed in place).
+std::uint16_t write_wstring(std::span<std::uint8_t> bytes, std::u16string_view text);
+
+/// The current length in characters of the STRING or WSTRING whose consistent header starts
+/// `bytes`.
+std::uint16_t string_length(std::span<const std::uint8_t> bytes);
+/// Character `i` (< string_length) of the WSTRING whose header starts `bytes`.
+char16_t wstring_unit(std::span<const std::uint8_t> bytes, std::size_t i);
 
 } // namespace eposp::vm::stdlib
