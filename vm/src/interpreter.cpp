@@ -344,6 +344,14 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
 #define VM_EXEC_Sqrt(T, T2) VM_UNARY(T, T, std::sqrt(x))
 #define VM_EXEC_Trunc(T, R) VM_UNARY(T, R, (truncate<R>(x)))
 #define VM_EXEC_Cvt(T, R) VM_UNARY(T, R, (convert<R>(x)))
+#define VM_EXEC_Range(T, T2)                                                                       \
+    {                                                                                              \
+        const T x = load<T>(A);                                                                    \
+        if (x < load<T>(B) || x > load<T>(B + sizeof(T))) {                                        \
+            VM_TRAP(Trap::SubrangeViolation);                                                      \
+        }                                                                                          \
+        VM_NEXT();                                                                                 \
+    }
 #define VM_CHECKED_DIVISION(T, operation)                                                          \
     {                                                                                              \
         const T x = load<T>(B);                                                                    \

@@ -247,7 +247,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     emit(Opcode::Call, Operand::imm(index));
     std::optional<Value> result = Value{};
     if (!frame.fields.empty() && frame.fields.front().declaration == nullptr) {
-        const sema::Type& type = *frame.fields.front().type;
+        const sema::Type& type = types_.unranged(*frame.fields.front().type);
         const Operand operand = result_operand(type, dest);
         emit(sema::is_scalar(type)
                  ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(type)))
@@ -264,7 +264,10 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
             const Operand copy = temp(*b.field->type);
             emit(Opcode::MovN, copy, Operand::out(b.field->offset),
                  Operand::imm(b.field->type->size));
-            store(*target, Value{copy, b.field->type});
+            if (const auto value =
+                    value_as(Value{copy, b.field->type}, b.argument->range, *target->type)) {
+                store(*target, *value);
+            }
         }
     }
     return result;
@@ -381,7 +384,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
                                                field->type->name, target->type->name));
             continue;
         }
-        store(*target, *convert(value, *target->type, nullptr));
+        store(*target, *value_as(value, argument->range, *target->type));
     }
 }
 

@@ -450,6 +450,9 @@ std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type&
 
 std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
                                             const sema::Type& want, const Destination* dest) {
+    if (want.range) {
+        return subrange_value(expression, want);
+    }
     const auto value = eval(expression, &want, dest);
     return value ? value_as(*value, expression.range, want, dest) : std::nullopt;
 }
@@ -463,6 +466,9 @@ std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRang
                                                    want.name)
                                      : ""));
         return std::nullopt;
+    }
+    if (want.range) {
+        return checked(value, want);
     }
     return convert(value, want, dest);
 }

@@ -137,6 +137,17 @@ private:
     static bool is_untyped_literal(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
 
+    // --- pou_subranges.cpp -------------------------------------------------------------------
+    /// The value of `expression` as the subrange `want`: checked when compiling if constant,
+    /// else when running unless it is a variable of a subrange inside `want`.
+    std::optional<Value> subrange_value(const ast::Expression& expression, const sema::Type& want);
+    /// `value` (of a type that converts implicitly to `want`'s base) as the subrange `want`,
+    /// with a Range check unless its own subrange lies inside `want`.
+    Value checked(const Value& value, const sema::Type& want);
+    /// After a FOR loop over a subrange variable: undoes the last step if it left the range.
+    void step_back_into_range(vm::Operand control, const sema::Type& type, vm::Operand step);
+    vm::Operand integer_constant(const sema::Type& type, std::int64_t value);
+
     // --- pou_conditions.cpp ------------------------------------------------------------------
     /// Jumps to `target` when `condition` has the value `when`, with compare-and-branch
     /// instructions where the condition is a comparison.

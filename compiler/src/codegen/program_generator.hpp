@@ -64,6 +64,9 @@ public:
     /// The value of a constant expression of type `type`, encoded as in memory.
     std::optional<std::vector<std::uint8_t>> constant_value(const ast::Expression& expression,
                                                             const sema::Type& type);
+    /// Reports a constant `value` of `expression` that lies outside the subrange `type`.
+    void check_in_subrange(const ast::Expression& expression, std::int64_t value,
+                           const sema::Type& type);
 
 private:
     struct QueuedPou {

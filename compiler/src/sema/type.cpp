@@ -148,6 +148,10 @@ bool same_type(const Type& a, const Type& b) {
     if (&a == &b) {
         return true;
     }
+    if (a.range || b.range) {
+        return a.range && b.range && a.elementary == b.elementary &&
+               a.range->lower == b.range->lower && a.range->upper == b.range->upper;
+    }
     if (a.kind != TypeKind::Array || b.kind != TypeKind::Array || a.size != b.size ||
         a.dimensions.size() != b.dimensions.size()) {
         return false;

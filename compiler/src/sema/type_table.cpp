@@ -99,6 +99,10 @@ const Type& TypeTable::null() {
     return *null_;
 }
 
+const Type& TypeTable::unranged(const Type& type) {
+    return type.range ? elementary(type.elementary) : type;
+}
+
 const Type* TypeTable::resolve(const ast::TypeSpec& spec) {
     if (const auto it = specs_.find(&spec); it != specs_.end()) {
         return it->second;
@@ -139,8 +143,7 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
         return array(*node, spec.range);
     }
     if (const auto* node = std::get_if<ast::SubrangeType>(&spec.node)) {
-        // 6.4.4.4: a subrange holds values of its base type (range checks are not done).
-        return resolve(*node->base);
+        return subrange(*node);
     }
     if (const auto* node = std::get_if<ast::EnumType>(&spec.node)) {
         return enumeration(*node, "enumeration");
@@ -262,6 +265,40 @@ const Type* TypeTable::enumeration(const ast::EnumType& spec, std::string name) 
     return &type;
 }
 
+const Type* TypeTable::subrange(const ast::SubrangeType& spec) {
+    const Type* base = resolve(*spec.base);
+    if (base == nullptr) {
+        return nullptr;
+    }
+    if (!is_integer(*base)) {
+        diagnostics_.error(
+            spec.base->range,
+            fmt::format("a subrange needs an integer base type, not {}", base->name));
+        return nullptr;
+    }
+    const auto lower = fold_integer(*spec.range.low);
+    const auto upper = fold_integer(*spec.range.high);
+    if (!lower || !upper) {
+        diagnostics_.error(spec.range.low->range, "subrange bounds must be constants");
+        return nullptr;
+    }
+    const auto limits = ast::integer_range(base->elementary);
+    const auto fits = [&](std::int64_t value) {
+        return !limits || (value >= limits->min &&
+                           (value < 0 || static_cast<std::uint64_t>(value) <= limits->max));
+    };
+    if (*upper < *lower || !fits(*lower) || !fits(*upper)) {
+        diagnostics_.error(spec.range.low->range,
+                           fmt::format("the subrange {}..{} is empty or does not fit in {}", *lower,
+                                       *upper, base->name));
+        return nullptr;
+    }
+    Type type = unranged(*base);
+    type.name = fmt::format("{}({}..{})", type.name, *lower, *upper);
+    type.range = ValueRange{*lower, *upper};
+    return &add(std::move(type));
+}
+
 const Type* TypeTable::named(const Symbol& symbol) {
     if (symbol.kind == SymbolKind::StandardFunctionBlock) {
         const ast::Pou* pou = library_(symbol.name);
@@ -281,8 +318,10 @@ const Type* TypeTable::named(const Symbol& symbol) {
         return specs_[&spec] = enumeration(*enumeration_spec, symbol.name);
     }
     const Type* type = resolve(spec);
-    if (type != nullptr && std::holds_alternative<ast::StructType>(spec.node) &&
-        type->name == "STRUCT") {
+    const bool anonymous = (std::holds_alternative<ast::StructType>(spec.node) && type != nullptr &&
+                            type->name == "STRUCT") ||
+                           std::holds_alternative<ast::SubrangeType>(spec.node);
+    if (type != nullptr && anonymous) {
         const_cast<Type*>(type)->name = symbol.name; // named on first use, for messages
     }
     return type;

@@ -28,6 +28,8 @@ public:
     const Type& string(std::uint32_t capacity, bool wide);
     const Type& reference(const Type* target);
     const Type& null();
+    /// The type without its subrange: a subrange's base type, else `type` itself.
+    const Type& unranged(const Type& type);
 
     /// The type a declaration spells; null after reporting an error.
     const Type* resolve(const ast::TypeSpec& spec);
@@ -53,6 +55,7 @@ private:
     const Type* array(const ast::ArrayType& spec, const SourceRange& range);
     const Type* structure(const ast::StructType& spec);
     const Type* enumeration(const ast::EnumType& spec, std::string name);
+    const Type* subrange(const ast::SubrangeType& spec);
     void lay_out(Type& type, const std::vector<const ast::VariableDeclaration*>& declarations,
                  const std::vector<ast::VarSectionKind>& sections, std::uint32_t start);
 
