@@ -97,13 +97,36 @@ INSTANTIATE_TEST_SUITE_P(
                      b.emit(Opcode::RangeI16, self(4), self(8));
                  }},
         TrapCase{"ValueBelowItsSubrange", Trap::SubrangeViolation,
-                 "value out of subrange in Main at line 7", [](Builder& b) {
+                 "value out of subrange in Main at line 7",
+                 [](Builder& b) {
                      b.emit(Opcode::Ldi64, self(4), Operand::imm(0xFFFFFFFF),
                             Operand::imm(0xFFFFFFFF));
                      b.emit(Opcode::Ldi64, self(16), Operand::imm(0));
                      b.emit(Opcode::Ldi64, self(24), Operand::imm(5));
                      b.emit(Opcode::RangeI64, self(4), self(16));
+                 }},
+        TrapCase{"IndexOutsideAVariableLengthDimension", Trap::IndexOutOfRange,
+                 "array index out of range in Main at line 7", [](Builder& b) {
+                     b.emit(Opcode::Ldi32, self(16), Operand::imm(-2)); // bounds -2..1
+                     b.emit(Opcode::Ldi32, self(20), Operand::imm(4));
+                     b.emit(Opcode::Ldi32, self(4), Operand::imm(2));
+                     b.emit(Opcode::IdxDim, self(8), self(16), self(4));
                  }}));
+
+TEST(RunTimeError, AnIndexInsideAVariableLengthDimensionCountsFromItsLowerBound) {
+    Harness h;
+    h.builder.emit(Opcode::Ldi32, self(16), Operand::imm(-2)); // bounds -2..1
+    h.builder.emit(Opcode::Ldi32, self(20), Operand::imm(4));
+    h.builder.emit(Opcode::Ldi32, self(4), Operand::imm(1));
+    h.builder.emit(Opcode::IdxDim, self(8), self(16), self(4));
+    h.builder.emit(Opcode::Ldi32, self(4), Operand::imm(-2));
+    h.builder.emit(Opcode::IdxDim, self(12), self(16), self(4));
+    h.builder.emit(Opcode::Ret);
+    h.end_main();
+    ASSERT_EQ(h.run(), RunState::Finished);
+    EXPECT_EQ(h.get<std::int32_t>(8), 3);
+    EXPECT_EQ(h.get<std::int32_t>(12), 0);
+}
 
 TEST(RunTimeError, ValuesOnTheBoundsOfASubrangePass) {
     Harness h;

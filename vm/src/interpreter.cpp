@@ -352,6 +352,15 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
         }                                                                                          \
         VM_NEXT();                                                                                 \
     }
+#define VM_EXEC_IdxDim(T1, T2)                                                                     \
+    {                                                                                              \
+        const auto element = std::int64_t{load<std::int32_t>(C)} - load<std::int32_t>(B);          \
+        if (static_cast<std::uint64_t>(element) >= load<std::uint32_t>(B + 4)) {                   \
+            VM_TRAP(Trap::IndexOutOfRange);                                                        \
+        }                                                                                          \
+        store<std::int32_t>(A, static_cast<std::int32_t>(element));                                \
+        VM_NEXT();                                                                                 \
+    }
 #define VM_CHECKED_DIVISION(T, operation)                                                          \
     {                                                                                              \
         const T x = load<T>(B);                                                                    \

@@ -183,17 +183,8 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     for (Bound& b : bound) {
         if (b.field->section == ast::VarSectionKind::InOut) {
             const auto target = place(*b.argument->value);
-            if (!target) {
-                ok = false;
-                continue;
-            }
-            if (!sema::same_type(*target->type, *b.field->type->element)) {
-                error(b.argument->range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
-                                                     b.field->name, b.field->type->element->name));
-                ok = false;
-                continue;
-            }
-            b.value = Value{address_of(*target), b.field->type};
+            b.value = target ? in_out_argument(*target, *b.field, b.argument->range) : std::nullopt;
+            ok = ok && b.value.has_value();
         } else if (b.field->section == ast::VarSectionKind::Input &&
                    (contains_call(*b.argument->value) ||
                     b.field->type->kind == sema::TypeKind::String)) {
@@ -334,15 +325,10 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         const Place slot = member(instance, field->offset, *field->type);
         if (field->section == ast::VarSectionKind::InOut) {
             const auto target = place(*argument.value);
-            if (!target) {
-                continue;
+            if (const auto reference =
+                    target ? in_out_argument(*target, *field, argument.range) : std::nullopt) {
+                store(slot, *reference);
             }
-            if (!sema::same_type(*target->type, *field->type->element)) {
-                error(argument.range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
-                                                  field->name, field->type->element->name));
-                continue;
-            }
-            store(slot, Value{address_of(*target), field->type});
             continue;
         }
         if (slot.kind == Place::Kind::Direct) {

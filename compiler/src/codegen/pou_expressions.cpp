@@ -142,6 +142,9 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         error(range, fmt::format("{} needs {} indices", type.name, type.dimensions.size()));
         return std::nullopt;
     }
+    if (type.conformant) {
+        return conformant_element(*array, node);
+    }
     const sema::Type& element = *type.element;
     const sema::Type& dint = types_.elementary(E::Dint);
     // Constant indices are checked now and cost nothing at run time.
@@ -168,29 +171,9 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     // The linear index: sum of (i_d - lower_d) * stride_d, for one dimension just i.
     Operand linear{};
     for (std::size_t d = 0; d < node.indices.size(); ++d) {
-        auto value = eval(*node.indices[d], &dint);
+        const auto value = index_value(*node.indices[d]);
         if (!value) {
             return std::nullopt;
-        }
-        if (!sema::is_integer(*value->type) && value->type->kind != sema::TypeKind::Enum) {
-            error(node.indices[d]->range,
-                  fmt::format("an array index must be an integer, not {}", value->type->name));
-            return std::nullopt;
-        }
-        if (value->type != &dint) {
-            const vm::Opcode convert = program_.opcodes().get(
-                "Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32");
-            const ValueCache::Key key{ValueCache::Kind::Convert, value->operand.raw,
-                                      static_cast<std::uint32_t>(convert), 0};
-            Operand converted{};
-            if (const auto hit = cache_.find(key)) {
-                converted = *hit;
-            } else {
-                converted = temp(dint);
-                emit(convert, converted, value->operand);
-                cache_.add(key, converted, 4, {{value->operand, value->type->size}});
-            }
-            value = Value{converted, &dint};
         }
         if (node.indices.size() == 1) {
             linear = value->operand;
@@ -248,6 +231,33 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                  .type = &element,
                  .operand = pointer,
                  .writable = array->writable};
+}
+
+std::optional<Value> PouGenerator::index_value(const ast::Expression& expression) {
+    const sema::Type& dint = types_.elementary(E::Dint);
+    const auto value = eval(expression, &dint);
+    if (!value) {
+        return std::nullopt;
+    }
+    if (!sema::is_integer(*value->type) && value->type->kind != sema::TypeKind::Enum) {
+        error(expression.range,
+              fmt::format("an array index must be an integer, not {}", value->type->name));
+        return std::nullopt;
+    }
+    if (value->type == &dint) {
+        return value;
+    }
+    const vm::Opcode convert = program_.opcodes().get(
+        "Cvt", std::string(type_suffix(sema::scalar_of(*value->type))) + "I32");
+    const ValueCache::Key key{ValueCache::Kind::Convert, value->operand.raw,
+                              static_cast<std::uint32_t>(convert), 0};
+    if (const auto hit = cache_.find(key)) {
+        return Value{*hit, &dint};
+    }
+    const Operand converted = temp(dint);
+    emit(convert, converted, value->operand);
+    cache_.add(key, converted, 4, {{value->operand, value->type->size}});
+    return Value{converted, &dint};
 }
 
 std::optional<Value> PouGenerator::bit_word(const ast::BitAccessExpression& node,

@@ -85,6 +85,8 @@ private:
     // --- pou_expressions.cpp -----------------------------------------------------------------
     std::optional<Place> place(const ast::Expression& expression);
     std::optional<Place> index(const ast::IndexExpression& node, const SourceRange& range);
+    /// An array index as DINT (converted once per statement), checked to be an integer.
+    std::optional<Value> index_value(const ast::Expression& expression);
     /// The value of `expression` of its own type; an untyped literal takes `hint`.
     std::optional<Value> eval(const ast::Expression& expression, const sema::Type* hint,
                               const Destination* dest = nullptr);
@@ -136,6 +138,17 @@ private:
     vm::Operand result_operand(const sema::Type& type, const Destination* dest);
     static bool is_untyped_literal(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
+
+    // --- pou_conformant_arrays.cpp ------------------------------------------------------------
+    /// What VAR_IN_OUT `field` is passed for `target`: its address, for an ARRAY[*] with the
+    /// bounds; an error if `target` does not fit.
+    std::optional<Value> in_out_argument(const Place& target, const sema::Field& field,
+                                         const SourceRange& range);
+    /// The element of the ARRAY[*] `array` at `node`'s indices, checked against its bounds.
+    std::optional<Place> conformant_element(const Place& array, const ast::IndexExpression& node);
+    /// LOWER_BOUND(array, dim) and UPPER_BOUND(array, dim), as DINT.
+    std::optional<Value> array_bound(const std::string& name, const ast::CallExpression& node,
+                                     const Destination* dest, const SourceRange& range);
 
     // --- pou_subranges.cpp -------------------------------------------------------------------
     /// The value of `expression` as the subrange `want`: checked when compiling if constant,

@@ -134,6 +134,10 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
         error(range, "a function block instance cannot be assigned");
         return;
     }
+    if (target->type->conformant) {
+        error(range, "an ARRAY[*] cannot be assigned as a whole, only its elements");
+        return;
+    }
     if (target->kind == Place::Kind::Direct) {
         const Destination dest{target->operand, target->type};
         const auto value = value_as(*node.value, *target->type, &dest);

@@ -165,6 +165,12 @@ bool same_type(const Type& a, const Type& b) {
     return same_type(*a.element, *b.element);
 }
 
+bool conforms(const Type& actual, const Type& formal) {
+    return actual.kind == TypeKind::Array && formal.conformant &&
+           actual.dimensions.size() == formal.dimensions.size() &&
+           same_type(*actual.element, *formal.element);
+}
+
 bool converts_implicitly(const Type& from, const Type& to) {
     if (same_type(from, to)) {
         return true;

@@ -67,6 +67,8 @@
 //  Trunc<F>          [LINT]   [F]      -        TRUNC: toward zero, saturating
 //  Range<I>          [x]      [lo, hi] -        trap unless lo <= [A] <= hi: a store into a
 //                                               subrange type (B: two values of the type)
+//  IdxDim            [DINT]   [lo, n]  [DINT]   [A] := [C] - lo, trap unless < n: one index of
+//                                               an ARRAY[*] (B: DINT lower bound, UDINT count)
 
 namespace eposp::vm {
 
@@ -254,7 +256,8 @@ struct FieldSpec {
     EPOSP_VM_FOR_WIDTHS(EPOSP_VM_BIT_TEST_OPS, OP)                                                 \
     EPOSP_VM_OP(OP, JtX, JtX, void, void, Array, AR1, R4, JT)                                      \
     EPOSP_VM_OP(OP, JfX, JfX, void, void, Array, AR1, R4, JT)                                      \
-    EPOSP_VM_FOR_INTS(EPOSP_VM_RANGE_OPS, OP)
+    EPOSP_VM_FOR_INTS(EPOSP_VM_RANGE_OPS, OP)                                                      \
+    EPOSP_VM_OP(OP, IdxDim, IdxDim, void, void, None, W4, R8, R4)
 
 #define EPOSP_VM_ENUMERATOR(name, ...) name,
 enum class Opcode : std::uint16_t { EPOSP_VM_OPCODES(EPOSP_VM_ENUMERATOR) };

@@ -68,6 +68,9 @@ struct Type {
     const Type* base = nullptr;               ///< Instance: the FB it EXTENDS
     std::vector<std::pair<std::string, std::int64_t>> enumerators{}; ///< Enum
     std::optional<ValueRange> range{}; ///< Elementary: the bounds of a subrange
+    /// Array: ARRAY[*, ...], whose bounds are known only when running (6.5.3); `dimensions`
+    /// then only counts them. Struct: the reference a VAR_IN_OUT of it is passed by.
+    bool conformant = false;
 
     /// The field `name` (case-insensitive), searching the base part too.
     const Field* field(std::string_view field_name) const;
@@ -89,6 +92,15 @@ vm::Scalar scalar_of(const Type& type);
 /// element type, or subranges of the same base and bounds (array and subrange types are not
 /// interned, each declaration makes its own).
 bool same_type(const Type& a, const Type& b);
+
+/// Whether `actual` may be passed to the VAR_IN_OUT ARRAY[*] `formal` (6.5.3): an array, of
+/// any bounds, with as many dimensions and the same element type.
+bool conforms(const Type& actual, const Type& formal);
+
+/// What a VAR_IN_OUT ARRAY[*] is passed by: the array's address, then the lower bound and
+/// the count of each dimension (DINT, UDINT), so its bounds go along with it.
+inline constexpr std::uint32_t kConformantBoundsOffset = 8;
+inline constexpr std::uint32_t kConformantDimensionSize = 8;
 
 /// IEC 61131-3 ed. 3, 6.6.1.6 figure 11: the implicit widening conversions. True when a value
 /// of `from` may be used where `to` is expected without a conversion function.
