@@ -20,6 +20,16 @@ TEST(ImageFormat, WriteThenReadGivesTheSameImage) {
     EXPECT_EQ(write_image(*read), bytes);
 }
 
+TEST(ImageFormat, AReadOnlyAccessPathStaysReadOnly) {
+    auto image = sample_image();
+    image.symbols.push_back(
+        {"Counter", image.symbols.front().type, image.symbols.front().offset, true});
+    const auto read = read_image(write_image(image));
+    ASSERT_TRUE(read) << read.error();
+    EXPECT_TRUE(read->symbols.back().read_only);
+    EXPECT_FALSE(read->symbols.front().read_only);
+}
+
 void set_u32(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) {
         bytes[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
@@ -61,7 +71,7 @@ INSTANTIATE_TEST_SUITE_P(
         Corruption{"Empty", [](auto& b) { b.clear(); }, "not a program image (bad magic)"},
         Corruption{"HeaderCut", [](auto& b) { b.resize(10); }, "truncated image header"},
         Corruption{"OtherVersion", [](auto& b) { b[4] = 99; },
-                   "image version 99 is not supported (expected 2)"},
+                   "image version 99 is not supported (expected 3)"},
         Corruption{"ReservedHeaderByte", [](auto& b) { b[7] = 9; },
                    "reserved header bytes are not zero"},
         Corruption{"FlippedBit", [](auto& b) { b[40] ^= 0x10; },

@@ -183,10 +183,11 @@ void describe_types(Io& io, std::vector<TypeDescriptor>& types) {
 
 template <typename Io>
 void describe_symbols(Io& io, std::vector<Symbol>& symbols) {
-    io.list(symbols, 12, [&](Symbol& s) {
+    io.list(symbols, 13, [&](Symbol& s) {
         io.string(s.path);
         io.u32(s.type);
         io.u32(s.offset);
+        io.boolean(s.read_only);
     });
 }
 

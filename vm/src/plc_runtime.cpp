@@ -220,6 +220,9 @@ core::Result<VariableLocation> PlcRuntime::writable(std::string_view path,
     if (!location) {
         return location;
     }
+    if (location->read_only) {
+        return core::Error{fmt::format("{} is a READ_ONLY access path", path)};
+    }
     const std::uint32_t size = image().types[location->type].size;
     if (bytes.size() != size) {
         return core::Error{fmt::format("{} is {} bytes, not {}", path, size, bytes.size())};

@@ -83,6 +83,14 @@ private:
     void default_program_instances();
     std::uint32_t program_instance(const ast::Pou& program, const std::string& path, bool retain);
     void add_symbols(const std::string& path, const sema::Type& type, std::uint32_t offset);
+    // access_paths.cpp: VAR_ACCESS (6.5.2.2, 6.8.1) published as symbols named after them.
+    void publish_access_paths(const ast::Configuration& configuration);
+    void publish_access_path(const ast::Configuration& configuration,
+                             const ast::AccessDeclaration& declaration);
+    /// The variable an access path names: a program instance's variable (`Inst0.x`, also
+    /// `Res0.Inst0.x`) or a global (`g`, `Res0.g`), with its members; or a direct address.
+    std::optional<Place> access_path_target(const ast::Configuration& configuration,
+                                            const ast::AccessDeclaration& declaration);
     void add_io_binding(const ast::DirectAddress& address, const sema::Type& type,
                         std::uint32_t offset);
     std::uint32_t type_descriptor(const sema::Type& type);
@@ -101,7 +109,9 @@ private:
     sema::TypeTable types_;
     OpcodeTable opcodes_;
     vm::Builder builder_;
-    std::unordered_map<std::string, Place> globals_; // by folded name
+    std::unordered_map<std::string, Place> globals_;   // by folded name
+    std::unordered_map<std::string, Place> instances_; // program instances, by folded name
+    std::unordered_set<std::string> access_names_;     // folded
     std::unordered_map<const ast::Pou*, std::uint32_t> pou_indices_;
     std::unordered_map<const ast::Pou*, const sema::SemanticModel*> pou_models_;
     std::deque<QueuedPou> queue_;

@@ -11,7 +11,7 @@ namespace eposp::vm {
 
 /// Bumped whenever the binary layout or the meaning of an opcode changes; the loader refuses
 /// other versions.
-inline constexpr std::uint16_t kImageVersion = 2;
+inline constexpr std::uint16_t kImageVersion = 3;
 
 /// Memory addresses (pointer values, static offsets) below this are never valid data: a
 /// pointer of 0 is NULL and dereferencing anything in the guard traps.
@@ -103,6 +103,7 @@ struct Symbol {
     std::string path;
     std::uint32_t type = 0;
     std::uint32_t offset = 0;
+    bool read_only = false; ///< a READ_ONLY access path (VAR_ACCESS): online writes are refused
     bool operator==(const Symbol&) const = default;
 };
 
