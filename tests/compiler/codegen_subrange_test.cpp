@@ -125,6 +125,24 @@ TEST(Subrange, ForLoopRunsToTheUpperBoundAndKeepsTheLastValue) {
     EXPECT_EQ(run.get<std::int16_t>("Main.down"), 1);
 }
 
+TEST(Subrange, AResultOfTheSameSubrangeIsStoredWithoutACheckButArithmeticOnItIsChecked) {
+    StProgram run(std::string(kPercent) + R"(
+FUNCTION Full : Percent
+  Full := 100;
+END_FUNCTION
+PROGRAM Main
+VAR p : Percent; q : Percent := 1; END_VAR
+p := Full();
+q := Full() + Full();
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    EXPECT_FALSE(run.scans(1));
+    EXPECT_EQ(run.fault(), "value out of subrange in Main at line 9");
+    EXPECT_EQ(run.get<std::int16_t>("Main.p"), 100);
+    EXPECT_EQ(run.get<std::int16_t>("Main.q"), 1) << "q keeps its value";
+}
+
 TEST(Subrange, AVariableOfANarrowerSubrangeIsStoredWithoutACheck) {
     StProgram run(main_with("p : Percent; small : INT(20..30) := 25; out : INT;",
                             "p := small;\nout := p + small;"));

@@ -20,16 +20,6 @@ std::vector<std::uint8_t> bytes_of(T value) {
     return bytes;
 }
 
-/// An integer held in a scalar of `size` bytes (two's complement truncation).
-std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) {
-    std::vector<std::uint8_t> bytes(size);
-    const auto raw = static_cast<std::uint64_t>(value);
-    for (std::uint32_t i = 0; i < size; ++i) {
-        bytes[i] = static_cast<std::uint8_t>(raw >> (8 * i));
-    }
-    return bytes;
-}
-
 bool fits_integer(std::int64_t value, const sema::Type& type) {
     const auto range = ast::integer_range(type.elementary);
     return !range ||
@@ -76,6 +66,15 @@ std::optional<double> fold_real(const ast::Expression& expression) {
 }
 
 } // namespace
+
+std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) {
+    std::vector<std::uint8_t> bytes(size);
+    const auto raw = static_cast<std::uint64_t>(value);
+    for (std::uint32_t i = 0; i < size; ++i) {
+        bytes[i] = static_cast<std::uint8_t>(raw >> (8 * i));
+    }
+    return bytes;
+}
 
 std::optional<std::vector<std::uint8_t>>
 ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type) {

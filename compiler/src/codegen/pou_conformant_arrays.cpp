@@ -22,12 +22,6 @@ Operand dimension_bounds(const Place& array, std::size_t d) {
                        sema::kConformantDimensionSize * static_cast<std::uint32_t>(d));
 }
 
-void append_integer(std::vector<std::uint8_t>& bytes, std::uint32_t value) {
-    for (int i = 0; i < 4; ++i) {
-        bytes.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
-    }
-}
-
 } // namespace
 
 std::optional<Value> PouGenerator::in_out_argument(const Place& target, const sema::Field& field,
@@ -53,8 +47,10 @@ std::optional<Value> PouGenerator::in_out_argument(const Place& target, const se
     emit(Opcode::Mov64, reference, address_of(target));
     std::vector<std::uint8_t> bounds;
     for (const sema::ArrayDimension& dimension : target.type->dimensions) {
-        append_integer(bounds, static_cast<std::uint32_t>(dimension.lower));
-        append_integer(bounds, dimension.count);
+        for (const std::int64_t value : {dimension.lower, std::int64_t{dimension.count}}) {
+            const auto bytes = integer_bytes(value, 4);
+            bounds.insert(bounds.end(), bytes.begin(), bytes.end());
+        }
     }
     emit(Opcode::MovN, shifted(reference, sema::kConformantBoundsOffset),
          program_.constant(bounds, 4), Operand::imm(static_cast<std::uint32_t>(bounds.size())));

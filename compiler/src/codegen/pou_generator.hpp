@@ -154,6 +154,9 @@ private:
     /// The value of `expression` as the subrange `want`: checked when compiling if constant,
     /// else when running unless it is a variable of a subrange inside `want`.
     std::optional<Value> subrange_value(const ast::Expression& expression, const sema::Type& want);
+    /// The subrange type of a variable or of a function's result that `expression` names
+    /// (its value is in range: it was checked when stored); null for anything else.
+    const sema::Type* declared_subrange(const ast::Expression& expression);
     /// `value` (of a type that converts implicitly to `want`'s base) as the subrange `want`,
     /// with a Range check unless its own subrange lies inside `want`.
     Value checked(const Value& value, const sema::Type& want);

@@ -9,20 +9,7 @@
 
 namespace eposp::compiler::codegen {
 
-using vm::Opcode;
 using vm::Operand;
-
-namespace {
-
-std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) {
-    std::vector<std::uint8_t> bytes(size);
-    for (std::uint32_t i = 0; i < size; ++i) {
-        bytes[i] = static_cast<std::uint8_t>(static_cast<std::uint64_t>(value) >> (8 * i));
-    }
-    return bytes;
-}
-
-} // namespace
 
 Operand PouGenerator::integer_constant(const sema::Type& type, std::int64_t value) {
     return program_.constant(integer_bytes(value, type.size), type.align);
@@ -40,17 +27,33 @@ std::optional<Value> PouGenerator::subrange_value(const ast::Expression& express
     if (!value) {
         return std::nullopt;
     }
-    // A variable of a subrange inside `want` is in range already.
-    if (const auto* name = std::get_if<ast::NameExpression>(&expression.node)) {
-        const sema::Symbol* symbol = model_.resolved(name->name);
-        const auto declared = symbol != nullptr && symbol->kind == sema::SymbolKind::Variable
-                                  ? variable(*symbol, expression.range)
-                                  : std::nullopt;
-        if (declared && declared->type->range && sema::converts_implicitly(*declared->type, want)) {
-            value->type = declared->type;
-        }
+    if (const sema::Type* declared = declared_subrange(expression);
+        declared != nullptr && sema::converts_implicitly(*declared, want)) {
+        value->type = declared; // checked when it was stored
     }
     return value_as(*value, expression.range, want, nullptr);
+}
+
+const sema::Type* PouGenerator::declared_subrange(const ast::Expression& expression) {
+    const ast::Expression* named = &expression;
+    const auto* call = std::get_if<ast::CallExpression>(&expression.node);
+    if (call != nullptr) {
+        named = call->callee.get();
+    }
+    const auto* name = std::get_if<ast::NameExpression>(&named->node);
+    const sema::Symbol* symbol = name != nullptr ? model_.resolved(name->name) : nullptr;
+    const sema::Type* type = nullptr;
+    if (symbol == nullptr) {
+        return nullptr;
+    }
+    if (call == nullptr && symbol->kind == sema::SymbolKind::Variable) {
+        const auto place = variable(*symbol, expression.range);
+        type = place ? place->type : nullptr;
+    } else if (call != nullptr && symbol->kind == sema::SymbolKind::Pou &&
+               symbol->pou->kind == ast::PouKind::Function && symbol->pou->return_type) {
+        type = types_.frame(*symbol->pou)->fields.front().type; // the result, at offset 0
+    }
+    return type != nullptr && type->range ? type : nullptr;
 }
 
 Value PouGenerator::checked(const Value& value, const sema::Type& want) {

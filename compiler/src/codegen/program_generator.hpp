@@ -20,6 +20,9 @@
 
 namespace eposp::compiler::codegen {
 
+/// An integer as VM memory holds it in `size` bytes: little-endian, two's complement truncated.
+std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size);
+
 /// The POUs of one source of declarations (the user's program or the built-in library) with
 /// the semantic model their identifiers resolve in.
 struct PouSource {
