@@ -54,6 +54,7 @@ TEST(AccessPath, IsASymbolNamedAfterItReadOnlyByDefault) {
     Target : Inst0.setpoint : DINT READ_WRITE;
     Level : Inst0.r.level : INT;
     Sum : total : DINT READ_WRITE;
+    Input : %IW4 : WORD;
 )"));
     ASSERT_TRUE(image);
     const vm::Symbol* count = symbol(*image, "Inst0");
@@ -69,6 +70,11 @@ TEST(AccessPath, IsASymbolNamedAfterItReadOnlyByDefault) {
     EXPECT_FALSE(sum->read_only);
     EXPECT_EQ(cycles->offset, count->offset) << "count is Main's first variable";
     EXPECT_EQ(sum->offset, symbol(*image, "Cell.total")->offset);
+    const vm::Symbol* input = symbol(*image, "Input");
+    ASSERT_NE(input, nullptr);
+    ASSERT_EQ(image->bindings.size(), 1U);
+    EXPECT_EQ(image->bindings.front().offset, input->offset) << "%IW4 is bound where it is read";
+    EXPECT_EQ(image->bindings.front().byte_address, 8U);
 }
 
 TEST(AccessPath, ReadsTheVariableItNames) {
@@ -104,6 +110,8 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(
         Refused{"OtherType", "    A : Inst0.count : DINT;",
                 "test.st:13:23: error: the access path 'A' is a INT, not a DINT"},
+        Refused{"DirectAddressOfAnotherType", "    A : %IW4 : INT;",
+                "test.st:13:16: error: the access path 'A' is a WORD, not a INT"},
         Refused{"UnknownVariable", "    A : Inst0.nothing : INT;",
                 "test.st:13:5: error: unknown access path 'Inst0.nothing'"},
         Refused{"UnknownInstance", "    A : Inst9.count : INT;",
