@@ -20,6 +20,21 @@ TEST(ImageFormat, WriteThenReadGivesTheSameImage) {
     EXPECT_EQ(write_image(*read), bytes);
 }
 
+TEST(ImageFormat, ASubrangeKeepsItsBounds) {
+    auto image = sample_image();
+    TypeDescriptor level;
+    level.name = "Level";
+    level.scalar = Scalar::I16;
+    level.size = 2;
+    level.subrange = true;
+    level.lowest = -10;
+    level.highest = 100;
+    image.types.push_back(level);
+    const auto read = read_image(write_image(image));
+    ASSERT_TRUE(read) << read.error();
+    EXPECT_EQ(read->types.back(), image.types.back());
+}
+
 TEST(ImageFormat, AReadOnlyAccessPathStaysReadOnly) {
     auto image = sample_image();
     image.symbols.push_back(

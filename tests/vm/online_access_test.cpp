@@ -85,6 +85,26 @@ END_CONFIGURATION
         << "the variable itself stays writable by its own path";
 }
 
+TEST(OnlineAccess, AWriteOutsideASubrangeIsRefused) {
+    RuntimeHarness h;
+    ASSERT_EQ(h.load(R"(
+PROGRAM Main
+  VAR level : INT(-10..100); small : USINT(1..3); END_VAR
+  level := level;
+END_PROGRAM
+)"),
+              "");
+    ASSERT_FALSE(h.runtime->write_value("Main.level", std::int16_t{-10}));
+    ASSERT_FALSE(h.runtime->write_value("Main.level", std::int16_t{100}));
+    EXPECT_EQ(h.runtime->write_value("Main.level", std::int16_t{101})->message,
+              "Main.level takes values from -10 to 100 only");
+    EXPECT_EQ(h.runtime->force_value("Main.level", std::int16_t{-11})->message,
+              "Main.level takes values from -10 to 100 only");
+    EXPECT_EQ(h.runtime->write_value("Main.small", std::uint8_t{255})->message,
+              "Main.small takes values from 1 to 3 only");
+    EXPECT_EQ(*h.runtime->read("Main.level"), "100");
+}
+
 TEST(OnlineAccess, ForcedVariableKeepsItsValueAroundEveryCycleUntilUnforced) {
     RuntimeHarness h;
     ASSERT_EQ(h.load(kAxes), "");

@@ -500,6 +500,11 @@ std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {
         descriptor.kind = vm::TypeKind::Elementary;
         descriptor.scalar = sema::scalar_of(type);
         descriptor.size = vm::scalar_size(descriptor.scalar);
+        if (type.range) {
+            descriptor.subrange = true;
+            descriptor.lowest = type.range->lower;
+            descriptor.highest = type.range->upper;
+        }
         break;
     }
     const std::uint32_t index = builder_.type(std::move(descriptor));

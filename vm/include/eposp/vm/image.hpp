@@ -95,6 +95,11 @@ struct TypeDescriptor {
     std::int32_t lower = 0;        ///< Array: first index
     std::uint32_t count = 0;       ///< Array: element count
     std::vector<TypeField> fields; ///< Struct (also FB instances)
+    /// Elementary integer subrange (`INT(0..100)`): online writes outside lowest..highest are
+    /// refused, as the program's own stores are.
+    bool subrange = false;
+    std::int64_t lowest = 0;
+    std::int64_t highest = 0;
     bool operator==(const TypeDescriptor&) const = default;
 };
 
