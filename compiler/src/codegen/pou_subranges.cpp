@@ -1,7 +1,7 @@
 // Subrange types (IEC 61131-3 ed. 3, 6.4.4.4): a value stored into a subrange variable must lie
 // within its bounds. Constants are checked when compiling; other values by a Range<I>
-// instruction before they are stored, unless they come from a variable whose own subrange lies
-// inside the target's. Values computed from subranges (`p + 1`) have the base type: only a
+// instruction before they are stored, unless they come from a variable or a function result
+// whose own subrange lies inside the target's. Values computed from subranges (`p + 1`) have the base type: only a
 // checked conversion gives a value the subrange type again.
 
 #include "eposp/compiler/sema/symbol.hpp"
