@@ -20,6 +20,31 @@ TEST(ImageFormat, WriteThenReadGivesTheSameImage) {
     EXPECT_EQ(write_image(*read), bytes);
 }
 
+TEST(ImageFormat, ASubrangeKeepsItsBounds) {
+    auto image = sample_image();
+    TypeDescriptor level;
+    level.name = "Level";
+    level.scalar = Scalar::I16;
+    level.size = 2;
+    level.subrange = true;
+    level.lowest = -10;
+    level.highest = 100;
+    image.types.push_back(level);
+    const auto read = read_image(write_image(image));
+    ASSERT_TRUE(read) << read.error();
+    EXPECT_EQ(read->types.back(), image.types.back());
+}
+
+TEST(ImageFormat, AReadOnlyAccessPathStaysReadOnly) {
+    auto image = sample_image();
+    image.symbols.push_back(
+        {"Counter", image.symbols.front().type, image.symbols.front().offset, true});
+    const auto read = read_image(write_image(image));
+    ASSERT_TRUE(read) << read.error();
+    EXPECT_TRUE(read->symbols.back().read_only);
+    EXPECT_FALSE(read->symbols.front().read_only);
+}
+
 void set_u32(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) {
         bytes[at + i] = static_cast<std::uint8_t>(v >> (8 * i));

@@ -54,6 +54,57 @@ TEST(OnlineAccess, BadPathsAndSizesAreRefusedWithTheReason) {
     EXPECT_EQ(h.runtime->unforce("Inst0.counter")->message, "Inst0.counter is not forced");
 }
 
+TEST(OnlineAccess, AccessPathsAreReachedByTheirNameAndReadOnlyOnesRefuseWrites) {
+    RuntimeHarness h;
+    ASSERT_EQ(h.load(R"(
+PROGRAM Main
+  VAR counter : DINT; limit : DINT := 10; END_VAR
+  IF counter < limit THEN counter := counter + 1; END_IF;
+END_PROGRAM
+CONFIGURATION Config0
+  VAR_ACCESS
+    Count : Inst0.counter : DINT READ_ONLY;
+    Limit : Res0.Inst0.limit : DINT READ_WRITE;
+  END_VAR
+  RESOURCE Res0 ON PLC
+    TASK Fast(INTERVAL := T#1ms, PRIORITY := 0);
+    PROGRAM Inst0 WITH Fast : Main;
+  END_RESOURCE
+END_CONFIGURATION
+)"),
+              "");
+    ASSERT_FALSE(h.runtime->start(StartMode::Cold));
+    ASSERT_FALSE(h.runtime->write_value("Limit", std::int32_t{3}));
+    h.loop.run_for(5ms);
+    EXPECT_EQ(*h.runtime->read("count"), "3");
+    EXPECT_EQ(h.runtime->write_value("Count", std::int32_t{0})->message,
+              "Count is a READ_ONLY access path");
+    EXPECT_EQ(h.runtime->force_value("Count", std::int32_t{0})->message,
+              "Count is a READ_ONLY access path");
+    ASSERT_FALSE(h.runtime->write_value("Inst0.counter", std::int32_t{0}))
+        << "the variable itself stays writable by its own path";
+}
+
+TEST(OnlineAccess, AWriteOutsideASubrangeIsRefused) {
+    RuntimeHarness h;
+    ASSERT_EQ(h.load(R"(
+PROGRAM Main
+  VAR level : INT(-10..100); small : USINT(1..3); END_VAR
+  level := level;
+END_PROGRAM
+)"),
+              "");
+    ASSERT_FALSE(h.runtime->write_value("Main.level", std::int16_t{-10}));
+    ASSERT_FALSE(h.runtime->write_value("Main.level", std::int16_t{100}));
+    EXPECT_EQ(h.runtime->write_value("Main.level", std::int16_t{101})->message,
+              "Main.level takes values from -10 to 100 only");
+    EXPECT_EQ(h.runtime->force_value("Main.level", std::int16_t{-11})->message,
+              "Main.level takes values from -10 to 100 only");
+    EXPECT_EQ(h.runtime->write_value("Main.small", std::uint8_t{255})->message,
+              "Main.small takes values from 1 to 3 only");
+    EXPECT_EQ(*h.runtime->read("Main.level"), "100");
+}
+
 TEST(OnlineAccess, ForcedVariableKeepsItsValueAroundEveryCycleUntilUnforced) {
     RuntimeHarness h;
     ASSERT_EQ(h.load(kAxes), "");

@@ -88,7 +88,59 @@ INSTANTIATE_TEST_SUITE_P(
                      b.emit(Opcode::Ldi32, self(4), Operand::imm(3));
                      b.emit(Opcode::IdxAP, self(24), self(16), self(4), b.array({0, 4, 4}));
                      b.emit(Opcode::Stp32, self(24), self(8), Operand::imm(0));
+                 }},
+        TrapCase{"ValueAboveItsSubrange", Trap::SubrangeViolation,
+                 "value out of subrange in Main at line 7",
+                 [](Builder& b) {
+                     b.emit(Opcode::Ldi16, self(4), Operand::imm(101));
+                     b.emit(Opcode::Ldi32, self(8), Operand::imm(100 << 16)); // bounds 0..100
+                     b.emit(Opcode::RangeI16, self(4), self(8));
+                 }},
+        TrapCase{"ValueBelowItsSubrange", Trap::SubrangeViolation,
+                 "value out of subrange in Main at line 7",
+                 [](Builder& b) {
+                     b.emit(Opcode::Ldi64, self(4), Operand::imm(0xFFFFFFFF),
+                            Operand::imm(0xFFFFFFFF));
+                     b.emit(Opcode::Ldi64, self(16), Operand::imm(0));
+                     b.emit(Opcode::Ldi64, self(24), Operand::imm(5));
+                     b.emit(Opcode::RangeI64, self(4), self(16));
+                 }},
+        TrapCase{"IndexOutsideAVariableLengthDimension", Trap::IndexOutOfRange,
+                 "array index out of range in Main at line 7", [](Builder& b) {
+                     b.emit(Opcode::Ldi32, self(16), Operand::imm(-2)); // bounds -2..1
+                     b.emit(Opcode::Ldi32, self(20), Operand::imm(4));
+                     b.emit(Opcode::Ldi32, self(4), Operand::imm(2));
+                     b.emit(Opcode::IdxDim, self(8), self(16), self(4));
                  }}));
+
+TEST(RunTimeError, AnIndexInsideAVariableLengthDimensionCountsFromItsLowerBound) {
+    Harness h;
+    h.builder.emit(Opcode::Ldi32, self(16), Operand::imm(-2)); // bounds -2..1
+    h.builder.emit(Opcode::Ldi32, self(20), Operand::imm(4));
+    h.builder.emit(Opcode::Ldi32, self(4), Operand::imm(1));
+    h.builder.emit(Opcode::IdxDim, self(8), self(16), self(4));
+    h.builder.emit(Opcode::Ldi32, self(4), Operand::imm(-2));
+    h.builder.emit(Opcode::IdxDim, self(12), self(16), self(4));
+    h.builder.emit(Opcode::Ret);
+    h.end_main();
+    ASSERT_EQ(h.run(), RunState::Finished);
+    EXPECT_EQ(h.get<std::int32_t>(8), 3);
+    EXPECT_EQ(h.get<std::int32_t>(12), 0);
+}
+
+TEST(RunTimeError, ValuesOnTheBoundsOfASubrangePass) {
+    Harness h;
+    h.builder.emit(Opcode::Ldi8, self(0), Operand::imm(200));
+    h.builder.emit(Opcode::Ldi16, self(2), Operand::imm(200 | 255 << 8)); // USINT 200..255
+    h.builder.emit(Opcode::RangeU8, self(0), self(2));
+    h.builder.emit(Opcode::Ldi8, self(0), Operand::imm(255));
+    h.builder.emit(Opcode::RangeU8, self(0), self(2));
+    h.builder.emit(Opcode::Ldi32, self(4), Operand::imm(7));
+    h.builder.emit(Opcode::Ret);
+    h.end_main();
+    ASSERT_EQ(h.run(), RunState::Finished);
+    EXPECT_EQ(h.get<std::int32_t>(4), 7);
+}
 
 TEST(RunTimeError, FaultInAFunctionNamesTheFunctionAndItsLine) {
     Harness h;

@@ -226,6 +226,7 @@ TEST(TaskFaults, EachTrapHasItsErrorCode) {
     EXPECT_EQ(error_code_of(Trap::BudgetExceeded), 0x6181);
     EXPECT_EQ(error_code_of(Trap::StackOverflow), 0x6181);
     EXPECT_EQ(error_code_of(Trap::NativeError), 0x6181);
+    EXPECT_EQ(error_code_of(Trap::SubrangeViolation), 0x6181);
     EXPECT_EQ(error_code_of(Trap::IndexOutOfRange), 0x6185);
     EXPECT_EQ(error_code_of(Trap::NullDereference), 0x6185);
     EXPECT_EQ(error_code_of(Trap::InvalidAddress), 0x6185);

@@ -148,6 +148,13 @@ INSTANTIATE_TEST_SUITE_P(
                      "field r has a bad type or offset"},
         Malformation{"ElementaryTypeOfWrongSize", [](Image& i) { i.types[0].size = 2; },
                      "size does not match"},
+        Malformation{"EmptySubrange",
+                     [](Image& i) {
+                         i.types[0].subrange = true;
+                         i.types[0].lowest = 5;
+                         i.types[0].highest = 4;
+                     },
+                     "bad subrange"},
         Malformation{"SymbolPastStaticData",
                      [](Image& i) { i.symbols[0].offset = i.static_size - 4; }, "symbol Inst0"},
         Malformation{"SymbolWithMissingType", [](Image& i) { i.symbols[1].type = 40; },

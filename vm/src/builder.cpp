@@ -147,8 +147,8 @@ std::uint32_t Builder::type(TypeDescriptor type) {
     return static_cast<std::uint32_t>(image_.types.size() - 1);
 }
 
-void Builder::symbol(std::string path, std::uint32_t type, std::uint32_t offset) {
-    image_.symbols.push_back({std::move(path), type, offset});
+void Builder::symbol(std::string path, std::uint32_t type, std::uint32_t offset, bool read_only) {
+    image_.symbols.push_back({std::move(path), type, offset, read_only});
 }
 
 void Builder::binding(const IoBinding& binding) {

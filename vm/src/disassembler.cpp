@@ -82,8 +82,9 @@ void tables(const Image& image, std::string& out) {
     }
     out += "symbols:\n";
     for (const auto& symbol : image.symbols) {
-        out += fmt::format("  {} : {} @ s+{}\n", symbol.path,
-                           name_or_index(image.types, symbol.type), symbol.offset);
+        out += fmt::format("  {} : {} @ s+{}{}\n", symbol.path,
+                           name_or_index(image.types, symbol.type), symbol.offset,
+                           symbol.read_only ? " READ_ONLY" : "");
     }
     out += "bindings:\n";
     for (const auto& b : image.bindings) {

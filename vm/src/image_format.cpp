@@ -31,6 +31,7 @@ public:
     void u32(const std::uint32_t& v) { out_.u32(v); }
     void u64(const std::uint64_t& v) { out_.u64(v); }
     void i32(const std::int32_t& v) { out_.i32(v); }
+    void i64(const std::int64_t& v) { out_.u64(static_cast<std::uint64_t>(v)); }
     void boolean(const bool& v) { out_.u8(v ? 1 : 0); }
     void opcode(const Opcode& op) { out_.u16(static_cast<std::uint16_t>(op)); }
     void string(const std::string& s) { out_.string(s); }
@@ -62,6 +63,7 @@ public:
     void u32(std::uint32_t& v) { v = in_.u32(); }
     void u64(std::uint64_t& v) { v = in_.u64(); }
     void i32(std::int32_t& v) { v = in_.i32(); }
+    void i64(std::int64_t& v) { v = static_cast<std::int64_t>(in_.u64()); }
     // Only 0 or 1, so that every image read is exactly what write_image makes of it (fuzzed).
     void boolean(bool& v) {
         const auto byte = in_.u8();
@@ -180,7 +182,7 @@ void describe_pous(Io& io, std::vector<Pou>& pous) {
 
 template <typename Io>
 void describe_types(Io& io, std::vector<TypeDescriptor>& types) {
-    io.list(types, 26, [&](TypeDescriptor& t) {
+    io.list(types, 43, [&](TypeDescriptor& t) {
         io.string(t.name);
         io.enumerator(t.kind, TypeKind::Struct, "type kind");
         io.enumerator(t.scalar, Scalar::Ptr, "scalar type");
@@ -193,15 +195,19 @@ void describe_types(Io& io, std::vector<TypeDescriptor>& types) {
             io.u32(f.type);
             io.u32(f.offset);
         });
+        io.boolean(t.subrange);
+        io.i64(t.lowest);
+        io.i64(t.highest);
     });
 }
 
 template <typename Io>
 void describe_symbols(Io& io, std::vector<Symbol>& symbols) {
-    io.list(symbols, 12, [&](Symbol& s) {
+    io.list(symbols, 13, [&](Symbol& s) {
         io.string(s.path);
         io.u32(s.type);
         io.u32(s.offset);
+        io.boolean(s.read_only);
     });
 }
 

@@ -369,6 +369,23 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
 #define VM_EXEC_Sqrt(T, T2) VM_UNARY(T, T, std::sqrt(x))
 #define VM_EXEC_Trunc(T, R) VM_UNARY(T, R, (truncate<R>(x)))
 #define VM_EXEC_Cvt(T, R) VM_UNARY(T, R, (convert<R>(x)))
+#define VM_EXEC_Range(T, T2)                                                                       \
+    {                                                                                              \
+        const T x = load<T>(A);                                                                    \
+        if (x < load<T>(B) || x > load<T>(B + sizeof(T))) {                                        \
+            VM_TRAP(Trap::SubrangeViolation);                                                      \
+        }                                                                                          \
+        VM_NEXT();                                                                                 \
+    }
+#define VM_EXEC_IdxDim(T1, T2)                                                                     \
+    {                                                                                              \
+        const auto element = std::int64_t{load<std::int32_t>(C)} - load<std::int32_t>(B);          \
+        if (static_cast<std::uint64_t>(element) >= load<std::uint32_t>(B + 4)) {                   \
+            VM_TRAP(Trap::IndexOutOfRange);                                                        \
+        }                                                                                          \
+        store<std::int32_t>(A, static_cast<std::int32_t>(element));                                \
+        VM_NEXT();                                                                                 \
+    }
 #define VM_CHECKED_DIVISION(T, operation)                                                          \
     {                                                                                              \
         const T x = load<T>(B);                                                                    \

@@ -22,6 +22,8 @@ std::string_view trap_name(Trap trap) {
         return "stack overflow";
     case Trap::NativeError:
         return "native function failed";
+    case Trap::SubrangeViolation:
+        return "value out of subrange";
     }
     return "?";
 }

@@ -32,6 +32,22 @@ std::vector<std::vector<IoBinding>> bindings_per_task(const Image& image) {
     return per_task;
 }
 
+// The integer `bytes` hold (little-endian, as VM memory) lies within the subrange `type`.
+bool in_subrange(const TypeDescriptor& type, std::span<const std::uint8_t> bytes) {
+    std::uint64_t raw = 0;
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        raw |= std::uint64_t{bytes[i]} << (8 * i);
+    }
+    const unsigned unused = 64 - 8 * static_cast<unsigned>(bytes.size());
+    if (!is_signed_integer(type.scalar)) {
+        return raw <= static_cast<std::uint64_t>(INT64_MAX) &&
+               static_cast<std::int64_t>(raw) >= type.lowest &&
+               static_cast<std::int64_t>(raw) <= type.highest;
+    }
+    const auto value = static_cast<std::int64_t>(raw << unused) >> unused; // sign-extended
+    return value >= type.lowest && value <= type.highest;
+}
+
 } // namespace
 
 PlcRuntime::PlcRuntime(core::EventLoop& loop, const NativeRegistry& natives, RuntimeConfig config,
@@ -220,9 +236,17 @@ core::Result<VariableLocation> PlcRuntime::writable(std::string_view path,
     if (!location) {
         return location;
     }
-    const std::uint32_t size = image().types[location->type].size;
+    if (location->read_only) {
+        return core::Error{fmt::format("{} is a READ_ONLY access path", path)};
+    }
+    const TypeDescriptor& type = image().types[location->type];
+    const std::uint32_t size = type.size;
     if (bytes.size() != size) {
         return core::Error{fmt::format("{} is {} bytes, not {}", path, size, bytes.size())};
+    }
+    if (type.subrange && !in_subrange(type, bytes)) {
+        return core::Error{
+            fmt::format("{} takes values from {} to {} only", path, type.lowest, type.highest)};
     }
     return location;
 }

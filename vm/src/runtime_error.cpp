@@ -12,6 +12,7 @@ std::uint16_t error_code_of(Trap trap) {
     case Trap::BudgetExceeded:
     case Trap::StackOverflow:
     case Trap::NativeError:
+    case Trap::SubrangeViolation:
         return error_code::kInterpreter;
     }
     return error_code::kInterpreter;

@@ -124,7 +124,9 @@ core::Result<VariableLocation> lookup_variable(const Image& image, std::string_v
     if (symbol == nullptr) {
         return core::Error{"no variable " + std::string(path)};
     }
-    return PathWalker(image, path, symbol->path.size(), {symbol->offset, symbol->type}).walk();
+    return PathWalker(image, path, symbol->path.size(),
+                      {symbol->offset, symbol->type, symbol->read_only})
+        .walk();
 }
 
 } // namespace eposp::vm

@@ -302,6 +302,9 @@ Defect verify_types_and_symbols(const Image& image) {
             if (t.size != scalar_size(t.scalar)) {
                 return defect(where + ": size does not match its scalar type");
             }
+            if (t.subrange && (!is_integer(t.scalar) || t.lowest > t.highest)) {
+                return defect(where + ": bad subrange");
+            }
             break;
         case TypeKind::String:
             if (t.size == 0) {

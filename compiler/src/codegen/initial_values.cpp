@@ -20,16 +20,6 @@ std::vector<std::uint8_t> bytes_of(T value) {
     return bytes;
 }
 
-/// An integer held in a scalar of `size` bytes (two's complement truncation).
-std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) {
-    std::vector<std::uint8_t> bytes(size);
-    const auto raw = static_cast<std::uint64_t>(value);
-    for (std::uint32_t i = 0; i < size; ++i) {
-        bytes[i] = static_cast<std::uint8_t>(raw >> (8 * i));
-    }
-    return bytes;
-}
-
 bool fits_integer(std::int64_t value, const sema::Type& type) {
     const auto range = ast::integer_range(type.elementary);
     return !range ||
@@ -76,6 +66,15 @@ std::optional<double> fold_real(const ast::Expression& expression) {
 }
 
 } // namespace
+
+std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) {
+    std::vector<std::uint8_t> bytes(size);
+    const auto raw = static_cast<std::uint64_t>(value);
+    for (std::uint32_t i = 0; i < size; ++i) {
+        bytes[i] = static_cast<std::uint8_t>(raw >> (8 * i));
+    }
+    return bytes;
+}
 
 std::optional<std::vector<std::uint8_t>>
 ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type) {
@@ -157,6 +156,7 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
             }
             const std::uint64_t bits =
                 integer->negative ? 0 - integer->magnitude : integer->magnitude;
+            check_in_subrange(expression, static_cast<std::int64_t>(bits), type);
             return integer_bytes(static_cast<std::int64_t>(bits), type.size);
         }
     }
@@ -168,7 +168,17 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
         diagnostics_.error(expression.range,
                            fmt::format("the value {} does not fit in {}", *value, type.name));
     }
+    check_in_subrange(expression, *value, type);
     return integer_bytes(*value, type.size);
+}
+
+void ProgramGenerator::check_in_subrange(const ast::Expression& expression, std::int64_t value,
+                                         const sema::Type& type) {
+    if (type.range && !type.range->contains(value)) {
+        diagnostics_.error(expression.range,
+                           fmt::format("the value {} is outside {} ({}..{})", value, type.name,
+                                       type.range->lower, type.range->upper));
+    }
 }
 
 void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initializer* initializer,
@@ -202,6 +212,11 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
         }
         break;
     default:
+        if (type.range) {
+            // 6.4.4.4: a subrange starts at its lower bound, not at 0.
+            const auto lower = integer_bytes(type.range->lower, type.size);
+            std::copy(lower.begin(), lower.end(), bytes.begin());
+        }
         break;
     }
     if (initializer == nullptr) {

@@ -133,17 +133,8 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     for (Bound& b : bound) {
         if (b.field->section == ast::VarSectionKind::InOut) {
             const auto target = place(*b.argument->value);
-            if (!target) {
-                ok = false;
-                continue;
-            }
-            if (!sema::same_type(*target->type, *b.field->type->element)) {
-                error(b.argument->range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
-                                                     b.field->name, b.field->type->element->name));
-                ok = false;
-                continue;
-            }
-            b.value = Value{address_of(*target), b.field->type};
+            b.value = target ? in_out_argument(*target, *b.field, b.argument->range) : std::nullopt;
+            ok = ok && b.value.has_value();
         } else if (b.field->section == ast::VarSectionKind::Input &&
                    (contains_call(*b.argument->value) ||
                     b.field->type->kind == sema::TypeKind::String)) {
@@ -197,7 +188,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     emit(Opcode::Call, Operand::imm(index));
     std::optional<Value> result = Value{};
     if (!frame.fields.empty() && frame.fields.front().declaration == nullptr) {
-        const sema::Type& type = *frame.fields.front().type;
+        const sema::Type& type = types_.unranged(*frame.fields.front().type);
         const Operand operand = result_operand(type, dest);
         emit(sema::is_scalar(type)
                  ? program_.opcodes().get("Mov", width_suffix(sema::scalar_of(type)))
@@ -214,7 +205,10 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
             const Operand copy = temp(*b.field->type);
             emit(Opcode::MovN, copy, Operand::out(b.field->offset),
                  Operand::imm(b.field->type->size));
-            store(*target, Value{copy, b.field->type});
+            if (const auto value =
+                    value_as(Value{copy, b.field->type}, b.argument->range, *target->type)) {
+                store(*target, *value);
+            }
         }
     }
     return result;
@@ -281,15 +275,10 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         const Place slot = member(instance, field->offset, *field->type);
         if (field->section == ast::VarSectionKind::InOut) {
             const auto target = place(*argument.value);
-            if (!target) {
-                continue;
+            if (const auto reference =
+                    target ? in_out_argument(*target, *field, argument.range) : std::nullopt) {
+                store(slot, *reference);
             }
-            if (!sema::same_type(*target->type, *field->type->element)) {
-                error(argument.range, fmt::format("VAR_IN_OUT '{}' needs a {} variable",
-                                                  field->name, field->type->element->name));
-                continue;
-            }
-            store(slot, Value{address_of(*target), field->type});
             continue;
         }
         if (slot.kind == Place::Kind::Direct) {
@@ -331,7 +320,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
                                                field->type->name, target->type->name));
             continue;
         }
-        store(*target, *convert(value, *target->type, nullptr));
+        store(*target, *value_as(value, argument->range, *target->type));
     }
 }
 

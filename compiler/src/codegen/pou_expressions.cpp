@@ -127,7 +127,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
     return std::nullopt;
 }
 
-Operand PouGenerator::as_dint(const Value& value) {
+Operand PouGenerator::dint_operand(const Value& value) {
     const sema::Type& dint = types_.elementary(E::Dint);
     if (value.type == &dint) {
         return value.operand;
@@ -180,14 +180,8 @@ PouGenerator::element_index(const ast::Expression& index, std::int64_t lower) {
     if (auto displaced = displaced_index(index, lower)) {
         return displaced;
     }
-    const sema::Type& dint = types_.elementary(E::Dint);
-    const auto value = eval(index, &dint);
+    const auto value = integer_index(index);
     if (!value) {
-        return std::nullopt;
-    }
-    if (!sema::is_integer(*value->type) && value->type->kind != sema::TypeKind::Enum) {
-        error(index.range,
-              fmt::format("an array index must be an integer, not {}", value->type->name));
         return std::nullopt;
     }
     const auto bound = static_cast<std::int32_t>(lower);
@@ -203,7 +197,7 @@ PouGenerator::element_index(const ast::Expression& index, std::int64_t lower) {
             break;
         }
     }
-    return ElementIndex{as_dint(*value), bound, 4};
+    return ElementIndex{dint_operand(*value), bound, 4};
 }
 
 std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
@@ -220,6 +214,9 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     if (node.indices.size() != type.dimensions.size()) {
         error(range, fmt::format("{} needs {} indices", type.name, type.dimensions.size()));
         return std::nullopt;
+    }
+    if (type.conformant) {
+        return conformant_element(*array, node);
     }
     const sema::Type& element = *type.element;
     const sema::Type& dint = types_.elementary(E::Dint);
@@ -259,16 +256,10 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     // More dimensions: the linear index, sum of (i_d - lower_d) * stride_d, as a DINT.
     Operand linear = one ? single->operand : Operand{};
     for (std::size_t d = 0; !one && d < node.indices.size(); ++d) {
-        auto value = eval(*node.indices[d], &dint);
+        const auto value = index_value(*node.indices[d]);
         if (!value) {
             return std::nullopt;
         }
-        if (!sema::is_integer(*value->type) && value->type->kind != sema::TypeKind::Enum) {
-            error(node.indices[d]->range,
-                  fmt::format("an array index must be an integer, not {}", value->type->name));
-            return std::nullopt;
-        }
-        value = Value{as_dint(*value), &dint};
         const auto& dimension = type.dimensions[d];
         const Operand term = temp(dint);
         emit(Opcode::AddI32, term, value->operand,
@@ -301,6 +292,24 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
                  .type = &element,
                  .operand = pointer,
                  .writable = array->writable};
+}
+
+std::optional<Value> PouGenerator::integer_index(const ast::Expression& expression) {
+    const auto value = eval(expression, &types_.elementary(E::Dint));
+    if (value && !sema::is_integer(*value->type) && value->type->kind != sema::TypeKind::Enum) {
+        error(expression.range,
+              fmt::format("an array index must be an integer, not {}", value->type->name));
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::optional<Value> PouGenerator::index_value(const ast::Expression& expression) {
+    const auto value = integer_index(expression);
+    if (!value) {
+        return std::nullopt;
+    }
+    return Value{dint_operand(*value), &types_.elementary(E::Dint)};
 }
 
 std::optional<Value> PouGenerator::bit_word(const ast::BitAccessExpression& node,
@@ -507,6 +516,9 @@ std::optional<Value> PouGenerator::function_value(const std::optional<Value>& ca
 
 std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
                                             const sema::Type& want, const Destination* dest) {
+    if (want.range) {
+        return subrange_value(expression, want);
+    }
     const auto value = eval(expression, &want, dest);
     return value ? value_as(*value, expression.range, want, dest) : std::nullopt;
 }
@@ -520,6 +532,9 @@ std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRang
                                                    want.name)
                                      : ""));
         return std::nullopt;
+    }
+    if (want.range) {
+        return checked(value, want);
     }
     return convert(value, want, dest);
 }

@@ -265,7 +265,8 @@ void PouGenerator::move(Operand dst, const sema::Type& dst_type, const Value& sr
 }
 
 Value PouGenerator::load(const Place& place, const Destination* dest) {
-    const sema::Type& type = *place.type;
+    // A subrange variable's value computes as its base type (pou_subranges.cpp).
+    const sema::Type& type = types_.unranged(*place.type);
     if (place.kind == Place::Kind::Direct) {
         return {place.operand, &type};
     }

@@ -107,7 +107,11 @@ private:
     /// `j + 1` or `j - 1` on a DINT variable: j itself, with the constant moved into the bound.
     std::optional<ElementIndex> displaced_index(const ast::Expression& index, std::int64_t lower);
     /// `value` as a DINT: itself, or a conversion (remembered in the value cache).
-    vm::Operand as_dint(const Value& value);
+    vm::Operand dint_operand(const Value& value);
+    /// An array index of any integer type, checked to be one.
+    std::optional<Value> integer_index(const ast::Expression& expression);
+    /// An array index as DINT (converted once per statement), checked to be an integer.
+    std::optional<Value> index_value(const ast::Expression& expression);
     /// The value of `expression` of its own type; an untyped literal takes `hint`.
     std::optional<Value> eval(const ast::Expression& expression, const sema::Type* hint,
                               const Destination* dest = nullptr);
@@ -165,6 +169,31 @@ private:
     vm::Operand result_operand(const sema::Type& type, const Destination* dest);
     static bool is_untyped_literal(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
+
+    // --- pou_conformant_arrays.cpp ------------------------------------------------------------
+    /// What VAR_IN_OUT `field` is passed for `target`: its address, for an ARRAY[*] with the
+    /// bounds; an error if `target` does not fit.
+    std::optional<Value> in_out_argument(const Place& target, const sema::Field& field,
+                                         const SourceRange& range);
+    /// The element of the ARRAY[*] `array` at `node`'s indices, checked against its bounds.
+    std::optional<Place> conformant_element(const Place& array, const ast::IndexExpression& node);
+    /// LOWER_BOUND(array, dim) and UPPER_BOUND(array, dim), as DINT.
+    std::optional<Value> array_bound(const std::string& name, const ast::CallExpression& node,
+                                     const Destination* dest, const SourceRange& range);
+
+    // --- pou_subranges.cpp -------------------------------------------------------------------
+    /// The value of `expression` as the subrange `want`: checked when compiling if constant,
+    /// else when running unless it is a variable of a subrange inside `want`.
+    std::optional<Value> subrange_value(const ast::Expression& expression, const sema::Type& want);
+    /// The subrange type of a variable or of a function's result that `expression` names
+    /// (its value is in range: it was checked when stored); null for anything else.
+    const sema::Type* declared_subrange(const ast::Expression& expression);
+    /// `value` (of a type that converts implicitly to `want`'s base) as the subrange `want`,
+    /// with a Range check unless its own subrange lies inside `want`.
+    Value checked(const Value& value, const sema::Type& want);
+    /// After a FOR loop over a subrange variable: undoes the last step if it left the range.
+    void step_back_into_range(vm::Operand control, const sema::Type& type, vm::Operand step);
+    vm::Operand integer_constant(const sema::Type& type, std::int64_t value);
 
     // --- pou_conditions.cpp ------------------------------------------------------------------
     /// Jumps to `target` when `condition` has the value `when`, with compare-and-branch

@@ -90,7 +90,7 @@ void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
     const std::uint8_t count[4] = {static_cast<std::uint8_t>(target.bit), 0, 0, 0};
     emit(op_width("Shl", type), shifted_bit, shifted_bit, program_.constant({count, count + 4}, 4));
     emit(op_width("Or", type), cleared, cleared, shifted_bit);
-    store(*word_place, Value{cleared, &type});
+    store(*word_place, *value_as(Value{cleared, &type}, range, *word_place->type));
 }
 
 void PouGenerator::assignment(const ast::AssignmentStatement& node, const SourceRange& range) {
@@ -132,6 +132,10 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
     }
     if (target->type->kind == sema::TypeKind::Instance) {
         error(range, "a function block instance cannot be assigned");
+        return;
+    }
+    if (target->type->conformant) {
+        error(range, "an ARRAY[*] cannot be assigned as a whole, only its elements");
         return;
     }
     const Destination dest{target->operand, target->type};
@@ -333,15 +337,17 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
         return;
     }
     move(control->operand, type, *from);
-    // The limit and step are evaluated once (the loop's own copies), unless constant.
+    // The limit and step are evaluated once (the loop's own copies), unless constant. They
+    // are not values of the control variable, so a subrange does not apply to them.
+    const sema::Type& counter = types_.unranged(type);
     auto once = [&](const ast::Expression& expression) -> std::optional<Value> {
-        auto value = value_as(expression, type);
+        auto value = value_as(expression, counter);
         const bool constant = value && value->operand.base() == vm::Base::Static &&
                               std::holds_alternative<ast::LiteralExpression>(expression.node);
         if (value && !constant && !is_temporary(value->operand)) {
-            const Operand copy = temp(type);
-            move(copy, type, *value);
-            value = Value{copy, &type};
+            const Operand copy = temp(counter);
+            move(copy, counter, *value);
+            value = Value{copy, &counter};
         }
         return value;
     };
@@ -373,6 +379,14 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
         builder_.jump(less, loop.exit, control->operand, limit->operand);
     }
     bind(body);
+    // A subrange control variable is checked on entering the body, unless a constant limit
+    // inside the range keeps every value the body sees inside it.
+    const auto constant_limit = types_.fold_integer(*node.to);
+    if (type.range && !(constant_step && constant_limit &&
+                        (step > 0 ? *constant_limit <= type.range->upper
+                                  : *constant_limit >= type.range->lower))) {
+        checked(Value{control->operand, &counter}, type);
+    }
     loops_.push_back(loop);
     for_variables_.push_back(control->operand.raw);
     statements(node.body);
@@ -389,6 +403,11 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
         builder_.jump(Opcode::Jmp, check);
     }
     bind(loop.exit);
+    if (type.range) {
+        step_back_into_range(control->operand, type,
+                             constant_step ? integer_constant(counter, step)
+                                           : computed_step->operand);
+    }
 }
 
 void PouGenerator::while_statement(const ast::WhileStatement& node) {

@@ -149,6 +149,7 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         for (const ast::CompilationUnit& unit : program_.units) {
             for (const ast::Configuration& configuration : unit.configurations) {
                 lay_out_programs(configuration);
+                publish_access_paths(configuration);
             }
         }
     } else {
@@ -269,6 +270,7 @@ std::uint32_t ProgramGenerator::program_instance(const ast::Pou& program, const 
     initial_value(*type, nullptr, bytes);
     builder_.initialise(offset, bytes);
     add_symbols(path, *type, offset);
+    instances_[sema::fold_case(path)] = Place::direct(*type, vm::Operand::global(offset));
     // RETAIN variables of the program (6.5.6), or all of it for a RETAIN instance.
     if (retain) {
         builder_.retain(offset, type->size);
@@ -504,6 +506,11 @@ std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {
         descriptor.kind = vm::TypeKind::Elementary;
         descriptor.scalar = sema::scalar_of(type);
         descriptor.size = vm::scalar_size(descriptor.scalar);
+        if (type.range) {
+            descriptor.subrange = true;
+            descriptor.lowest = type.range->lower;
+            descriptor.highest = type.range->upper;
+        }
         break;
     }
     const std::uint32_t index = builder_.type(std::move(descriptor));

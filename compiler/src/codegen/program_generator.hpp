@@ -20,6 +20,9 @@
 
 namespace eposp::compiler::codegen {
 
+/// An integer as VM memory holds it in `size` bytes: little-endian, two's complement truncated.
+std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size);
+
 /// The POUs of one source of declarations (the user's program or the built-in library) with
 /// the semantic model their identifiers resolve in.
 struct PouSource {
@@ -64,6 +67,9 @@ public:
     /// The value of a constant expression of type `type`, encoded as in memory.
     std::optional<std::vector<std::uint8_t>> constant_value(const ast::Expression& expression,
                                                             const sema::Type& type);
+    /// Reports a constant `value` of `expression` that lies outside the subrange `type`.
+    void check_in_subrange(const ast::Expression& expression, std::int64_t value,
+                           const sema::Type& type);
 
 private:
     struct QueuedPou {
@@ -80,6 +86,14 @@ private:
     void default_program_instances();
     std::uint32_t program_instance(const ast::Pou& program, const std::string& path, bool retain);
     void add_symbols(const std::string& path, const sema::Type& type, std::uint32_t offset);
+    // access_paths.cpp: VAR_ACCESS (6.5.2.2, 6.8.1) published as symbols named after them.
+    void publish_access_paths(const ast::Configuration& configuration);
+    void publish_access_path(const ast::Configuration& configuration,
+                             const ast::AccessDeclaration& declaration);
+    /// The variable an access path names: a program instance's variable (`Inst0.x`, also
+    /// `Res0.Inst0.x`) or a global (`g`, `Res0.g`), with its members; or a direct address.
+    std::optional<Place> access_path_target(const ast::Configuration& configuration,
+                                            const ast::AccessDeclaration& declaration);
     void add_io_binding(const ast::DirectAddress& address, const sema::Type& type,
                         std::uint32_t offset);
     std::uint32_t type_descriptor(const sema::Type& type);
@@ -98,7 +112,9 @@ private:
     sema::TypeTable types_;
     OpcodeTable opcodes_;
     vm::Builder builder_;
-    std::unordered_map<std::string, Place> globals_; // by folded name
+    std::unordered_map<std::string, Place> globals_;   // by folded name
+    std::unordered_map<std::string, Place> instances_; // program instances, by folded name
+    std::unordered_set<std::string> access_names_;     // folded
     std::unordered_map<const ast::Pou*, std::uint32_t> pou_indices_;
     std::unordered_map<const ast::Pou*, const sema::SemanticModel*> pou_models_;
     std::deque<QueuedPou> queue_;

@@ -88,6 +88,9 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
                {"LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND"})) {
         return string_function(name, arguments, dest, range);
     }
+    if (name == "LOWER_BOUND" || name == "UPPER_BOUND") {
+        return array_bound(name, node, dest, range);
+    }
     if (name == "ADR" || name == "SIZEOF") {
         return address_or_size(name, arguments, range);
     }

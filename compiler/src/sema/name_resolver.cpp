@@ -437,6 +437,13 @@ private:
     void resolve_sections(const std::vector<ast::DeclarationSection>& sections,
                           const Scope& scope) {
         for (const ast::DeclarationSection& section : sections) {
+            if (const auto* access = std::get_if<ast::AccessSection>(&section)) {
+                // The path itself is resolved against the instances when laying them out.
+                for (const ast::AccessDeclaration& declaration : access->paths) {
+                    resolve_type(declaration.type, scope);
+                }
+                continue;
+            }
             const auto* variables = std::get_if<ast::VarSection>(&section);
             if (variables == nullptr) {
                 continue;

@@ -61,6 +61,8 @@ constexpr std::array kStandardFunctions = {
     "ADR",
     "SIZEOF", // CODESYS extensions of the pointer kind
               // (POINTER TO is parsed)
+    "LOWER_BOUND",
+    "UPPER_BOUND", // 6.5.3: the bounds of an ARRAY[*] (or any array)
     // Table 30: time and date functions.
     "ADD_TIME",
     "ADD_TOD_TIME",

@@ -148,6 +148,10 @@ bool same_type(const Type& a, const Type& b) {
     if (&a == &b) {
         return true;
     }
+    if (a.range || b.range) {
+        return a.range && b.range && a.elementary == b.elementary &&
+               a.range->lower == b.range->lower && a.range->upper == b.range->upper;
+    }
     if (a.kind != TypeKind::Array || b.kind != TypeKind::Array || a.size != b.size ||
         a.dimensions.size() != b.dimensions.size()) {
         return false;
@@ -159,6 +163,12 @@ bool same_type(const Type& a, const Type& b) {
         }
     }
     return same_type(*a.element, *b.element);
+}
+
+bool conforms(const Type& actual, const Type& formal) {
+    return actual.kind == TypeKind::Array && formal.conformant &&
+           actual.dimensions.size() == formal.dimensions.size() &&
+           same_type(*actual.element, *formal.element);
 }
 
 bool converts_implicitly(const Type& from, const Type& to) {

@@ -92,11 +92,30 @@ const Type& TypeTable::reference(const Type* target) {
     return *slot;
 }
 
+const Type& TypeTable::conformant_reference(const Type& array) {
+    auto& slot = conformant_references_[&array];
+    if (slot == nullptr) {
+        slot = &add(
+            {.kind = TypeKind::Struct,
+             .name = "REF_TO " + array.name,
+             .size = kConformantBoundsOffset +
+                     kConformantDimensionSize * static_cast<std::uint32_t>(array.dimensions.size()),
+             .align = 8,
+             .element = &array,
+             .conformant = true});
+    }
+    return *slot;
+}
+
 const Type& TypeTable::null() {
     if (null_ == nullptr) {
         null_ = &add({.kind = TypeKind::Null, .name = "NULL", .size = 8, .align = 8});
     }
     return *null_;
+}
+
+const Type& TypeTable::unranged(const Type& type) {
+    return type.range ? elementary(type.elementary) : type;
 }
 
 const Type* TypeTable::resolve(const ast::TypeSpec& spec) {
@@ -139,8 +158,7 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
         return array(*node, spec.range);
     }
     if (const auto* node = std::get_if<ast::SubrangeType>(&spec.node)) {
-        // 6.4.4.4: a subrange holds values of its base type (range checks are not done).
-        return resolve(*node->base);
+        return subrange(*node);
     }
     if (const auto* node = std::get_if<ast::EnumType>(&spec.node)) {
         return enumeration(*node, "enumeration");
@@ -150,6 +168,10 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
     }
     const auto& node = std::get<ast::ReferenceType>(spec.node);
     const Type* target = resolve(*node.target);
+    if (target != nullptr && target->conformant) {
+        diagnostics_.error(spec.range, "ARRAY[*] is only allowed for VAR_IN_OUT");
+        return nullptr;
+    }
     return target != nullptr ? &reference(target) : nullptr;
 }
 
@@ -158,13 +180,19 @@ const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& rang
     if (element == nullptr) {
         return nullptr;
     }
+    if (element->kind == TypeKind::Array && element->conformant) {
+        diagnostics_.error(range, "the elements of an array need their bounds");
+        return nullptr;
+    }
+    if (!spec.dimensions.front().bounds) {
+        return conformant_array(spec, *element, range);
+    }
     Type type{.kind = TypeKind::Array, .align = element->align, .element = element};
     std::uint64_t count = 1;
     std::string bounds;
     for (const ast::ArrayDimension& dimension : spec.dimensions) {
         if (!dimension.bounds) {
-            diagnostics_.error(range,
-                               "ARRAY[*] is only allowed for VAR_IN_OUT (not supported yet)");
+            diagnostics_.error(range, "an array has either bounds or '*' in every dimension");
             return nullptr;
         }
         const auto low = fold_integer(*dimension.bounds->low);
@@ -193,6 +221,26 @@ const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& rang
     return &add(std::move(type));
 }
 
+const Type* TypeTable::conformant_array(const ast::ArrayType& spec, const Type& element,
+                                        const SourceRange& range) {
+    for (const ast::ArrayDimension& dimension : spec.dimensions) {
+        if (dimension.bounds) {
+            diagnostics_.error(range, "an array has either bounds or '*' in every dimension");
+            return nullptr;
+        }
+    }
+    std::string stars = "*";
+    for (std::size_t d = 1; d < spec.dimensions.size(); ++d) {
+        stars += ", *";
+    }
+    return &add({.kind = TypeKind::Array,
+                 .name = fmt::format("ARRAY[{}] OF {}", stars, element.name),
+                 .align = element.align,
+                 .element = &element,
+                 .dimensions = std::vector<ArrayDimension>(spec.dimensions.size()),
+                 .conformant = true});
+}
+
 void TypeTable::lay_out(Type& type,
                         const std::vector<const ast::VariableDeclaration*>& declarations,
                         const std::vector<ast::VarSectionKind>& sections, std::uint32_t start) {
@@ -203,8 +251,15 @@ void TypeTable::lay_out(Type& type,
         if (member == nullptr) {
             continue;
         }
-        // VAR_IN_OUT is passed by reference (6.5.1.2).
-        if (sections[i] == ast::VarSectionKind::InOut) {
+        // VAR_IN_OUT is passed by reference (6.5.1.2), an ARRAY[*] with its bounds (6.5.3).
+        if (member->kind == TypeKind::Array && member->conformant) {
+            if (sections[i] != ast::VarSectionKind::InOut) {
+                diagnostics_.error(declaration.type.range,
+                                   "ARRAY[*] is only allowed for VAR_IN_OUT");
+                continue;
+            }
+            member = &conformant_reference(*member);
+        } else if (sections[i] == ast::VarSectionKind::InOut) {
             member = &reference(member);
         }
         for (const ast::Identifier& name : declaration.names) {
@@ -262,6 +317,40 @@ const Type* TypeTable::enumeration(const ast::EnumType& spec, std::string name) 
     return &type;
 }
 
+const Type* TypeTable::subrange(const ast::SubrangeType& spec) {
+    const Type* base = resolve(*spec.base);
+    if (base == nullptr) {
+        return nullptr;
+    }
+    if (!is_integer(*base)) {
+        diagnostics_.error(
+            spec.base->range,
+            fmt::format("a subrange needs an integer base type, not {}", base->name));
+        return nullptr;
+    }
+    const auto lower = fold_integer(*spec.range.low);
+    const auto upper = fold_integer(*spec.range.high);
+    if (!lower || !upper) {
+        diagnostics_.error(spec.range.low->range, "subrange bounds must be constants");
+        return nullptr;
+    }
+    const auto limits = ast::integer_range(base->elementary);
+    const auto fits = [&](std::int64_t value) {
+        return !limits || (value >= limits->min &&
+                           (value < 0 || static_cast<std::uint64_t>(value) <= limits->max));
+    };
+    if (*upper < *lower || !fits(*lower) || !fits(*upper)) {
+        diagnostics_.error(spec.range.low->range,
+                           fmt::format("the subrange {}..{} is empty or does not fit in {}", *lower,
+                                       *upper, base->name));
+        return nullptr;
+    }
+    Type type = unranged(*base);
+    type.name = fmt::format("{}({}..{})", type.name, *lower, *upper);
+    type.range = ValueRange{*lower, *upper};
+    return &add(std::move(type));
+}
+
 const Type* TypeTable::named(const Symbol& symbol) {
     if (symbol.kind == SymbolKind::StandardFunctionBlock) {
         const ast::Pou* pou = library_(symbol.name);
@@ -281,8 +370,10 @@ const Type* TypeTable::named(const Symbol& symbol) {
         return specs_[&spec] = enumeration(*enumeration_spec, symbol.name);
     }
     const Type* type = resolve(spec);
-    if (type != nullptr && std::holds_alternative<ast::StructType>(spec.node) &&
-        type->name == "STRUCT") {
+    const bool anonymous = (std::holds_alternative<ast::StructType>(spec.node) && type != nullptr &&
+                            type->name == "STRUCT") ||
+                           std::holds_alternative<ast::SubrangeType>(spec.node);
+    if (type != nullptr && anonymous) {
         const_cast<Type*>(type)->name = symbol.name; // named on first use, for messages
     }
     return type;
@@ -330,7 +421,12 @@ const Type* TypeTable::frame(const ast::Pou& pou) {
     const bool function = pou.kind == ast::PouKind::Function;
     std::uint32_t start = 0;
     if (function && pou.return_type) {
-        if (const Type* result = resolve(*pou.return_type)) {
+        const Type* result = resolve(*pou.return_type);
+        if (result != nullptr && result->conformant) {
+            diagnostics_.error(pou.return_type->range, "ARRAY[*] is only allowed for VAR_IN_OUT");
+            result = nullptr;
+        }
+        if (result != nullptr) {
             type.fields.push_back({pou.name.name, result, 0, ast::VarSectionKind::Output, nullptr});
             start = result->size;
             type.align = result->align;

@@ -65,7 +65,7 @@ public:
     // --- tables ------------------------------------------------------------------------------
     std::uint32_t import(std::string name, NativeSignature signature);
     std::uint32_t type(TypeDescriptor type);
-    void symbol(std::string path, std::uint32_t type, std::uint32_t offset);
+    void symbol(std::string path, std::uint32_t type, std::uint32_t offset, bool read_only = false);
     void binding(const IoBinding& binding);
     void retain(std::uint32_t offset, std::uint32_t size);
     void task(Task task);

@@ -117,6 +117,11 @@ struct TypeDescriptor {
     std::int32_t lower = 0;        ///< Array: first index
     std::uint32_t count = 0;       ///< Array: element count
     std::vector<TypeField> fields; ///< Struct (also FB instances)
+    /// Elementary integer subrange (`INT(0..100)`): online writes outside lowest..highest are
+    /// refused, as the program's own stores are.
+    bool subrange = false;
+    std::int64_t lowest = 0;
+    std::int64_t highest = 0;
     bool operator==(const TypeDescriptor&) const = default;
 };
 
@@ -125,6 +130,7 @@ struct Symbol {
     std::string path;
     std::uint32_t type = 0;
     std::uint32_t offset = 0;
+    bool read_only = false; ///< a READ_ONLY access path (VAR_ACCESS): online writes are refused
     bool operator==(const Symbol&) const = default;
 };
 

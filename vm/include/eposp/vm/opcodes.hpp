@@ -68,6 +68,10 @@
 //                                               REAL to int rounds half away from zero
 //                                               and saturates (NaN gives 0)
 //  Trunc<F>          [LINT]   [F]      -        TRUNC: toward zero, saturating
+//  Range<I>          [x]      [lo, hi] -        trap unless lo <= [A] <= hi: a store into a
+//                                               subrange type (B: two values of the type)
+//  IdxDim            [DINT]   [lo, n]  [DINT]   [A] := [C] - lo, trap unless < n: one index of
+//                                               an ARRAY[*] (B: DINT lower bound, UDINT count)
 
 namespace eposp::vm {
 
@@ -118,6 +122,11 @@ struct FieldSpec {
 #define EPOSP_VM_F_W2 EPOSP_VM_FIELD(Write, 2)
 #define EPOSP_VM_F_W4 EPOSP_VM_FIELD(Write, 4)
 #define EPOSP_VM_F_W8 EPOSP_VM_FIELD(Write, 8)
+// A pair of values of width 1..8 (RP1..RP8): a subrange's bounds.
+#define EPOSP_VM_F_RP1 EPOSP_VM_FIELD(Read, 2)
+#define EPOSP_VM_F_RP2 EPOSP_VM_FIELD(Read, 4)
+#define EPOSP_VM_F_RP4 EPOSP_VM_FIELD(Read, 8)
+#define EPOSP_VM_F_RP8 EPOSP_VM_FIELD(Read, 16)
 #define EPOSP_VM_F_RN EPOSP_VM_FIELD(ReadN, 0)
 #define EPOSP_VM_F_WN EPOSP_VM_FIELD(WriteN, 0)
 #define EPOSP_VM_F_IM EPOSP_VM_FIELD(Imm, 0)
@@ -212,6 +221,8 @@ struct FieldSpec {
     EPOSP_VM_OP(OP, Mod##S, Mod, T, T, None, W##N, R##N, R##N)                                     \
     EPOSP_VM_OP(OP, For##S, For, T, T, Step, W##N, R##N, JT)
 
+#define EPOSP_VM_RANGE_OPS(OP, S, N, T) EPOSP_VM_OP(OP, Range##S, Range, T, T, None, R##N, RP##N, _)
+
 #define EPOSP_VM_FLOAT_OPS(OP, S, N, T)                                                            \
     EPOSP_VM_OP(OP, Add##S, Add, T, T, None, W##N, R##N, R##N)                                     \
     EPOSP_VM_OP(OP, Sub##S, Sub, T, T, None, W##N, R##N, R##N)                                     \
@@ -254,6 +265,8 @@ struct FieldSpec {
     EPOSP_VM_FOR_WIDTHS(EPOSP_VM_BIT_TEST_OPS, OP)                                                 \
     EPOSP_VM_OP(OP, JtX, JtX, void, void, Array, AR1, AI, JT)                                      \
     EPOSP_VM_OP(OP, JfX, JfX, void, void, Array, AR1, AI, JT)                                      \
+    EPOSP_VM_FOR_INTS(EPOSP_VM_RANGE_OPS, OP)                                                      \
+    EPOSP_VM_OP(OP, IdxDim, IdxDim, void, void, None, W4, R8, R4)                                  \
     EPOSP_VM_OP(OP, JTabI16, JTab, std::int16_t, void, None, R2, TB, JT)                           \
     EPOSP_VM_OP(OP, JTabU16, JTab, std::uint16_t, void, None, R2, TB, JT)                          \
     EPOSP_VM_OP(OP, JTab32, JTab, std::uint32_t, void, None, R4, TB, JT)

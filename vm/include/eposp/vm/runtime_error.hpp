@@ -22,9 +22,10 @@ using ErrorSink = std::function<void(std::uint16_t code, std::string text)>;
 
 /// The error code of a trap. Data Access Error 0x6185 is "data or program access exception":
 /// an array index out of range, a NULL or dangling pointer. Everything else the interpreter
-/// stops for is Interpreter Error 0x6181: division by zero, the watchdog, the call stack, and a
-/// failing host function (Native Code Error 0x6182 is the EPOS P's compiled native code, which
-/// eposp does not have; its host functions are part of the interpreter).
+/// stops for is Interpreter Error 0x6181: division by zero, a value outside its subrange, the
+/// watchdog, the call stack, and a failing host function (Native Code Error 0x6182 is the
+/// EPOS P's compiled native code, which eposp does not have; its host functions are part of
+/// the interpreter).
 std::uint16_t error_code_of(Trap trap);
 
 } // namespace eposp::vm

@@ -16,6 +16,13 @@ inline constexpr std::uint8_t kScalarCount = 12;
 /// conversions to BOOL test for non-zero where conversions to USINT truncate.
 enum class BoolByte : std::uint8_t {};
 
+constexpr bool is_integer(Scalar s) {
+    return s >= Scalar::I8 && s <= Scalar::U64;
+}
+constexpr bool is_signed_integer(Scalar s) {
+    return s >= Scalar::I8 && s <= Scalar::I64;
+}
+
 constexpr std::uint32_t scalar_size(Scalar s) {
     switch (s) {
     case Scalar::Bool:

@@ -16,6 +16,7 @@ enum class Trap : std::uint8_t {
     BudgetExceeded,
     StackOverflow,
     NativeError,
+    SubrangeViolation, ///< a value stored into a subrange type lies outside it
 };
 
 std::string_view trap_name(Trap trap);

@@ -27,6 +27,17 @@ struct ArrayDimension {
     std::uint32_t count = 0;
 };
 
+/// The bounds of a subrange type (6.4.4.4), both included.
+struct ValueRange {
+    std::int64_t lower = 0;
+    std::int64_t upper = 0;
+
+    bool contains(std::int64_t value) const { return lower <= value && value <= upper; }
+    bool contains(const ValueRange& other) const {
+        return lower <= other.lower && other.upper <= upper;
+    }
+};
+
 enum class TypeKind {
     Elementary, ///< IEC 61131-3 ed. 3, table 10 (STRING excepted)
     String,     ///< STRING[n] / WSTRING[n] (6.4.4.1)
@@ -38,7 +49,8 @@ enum class TypeKind {
     Null,       ///< the type of NULL, assignable to every reference
 };
 
-/// One IEC data type with its memory layout. Subranges and aliases are their base type; an FB
+/// One IEC data type with its memory layout. Aliases are their base type; a subrange is an
+/// elementary type with a `range` (its values are checked where stored); an FB
 /// that EXTENDS another lays its base's instance out first, so the base part of a derived
 /// instance is a valid base instance (ed. 3, 6.6.5).
 struct Type {
@@ -55,6 +67,10 @@ struct Type {
     const ast::Pou* pou = nullptr;            ///< Instance
     const Type* base = nullptr;               ///< Instance: the FB it EXTENDS
     std::vector<std::pair<std::string, std::int64_t>> enumerators{}; ///< Enum
+    std::optional<ValueRange> range{}; ///< Elementary: the bounds of a subrange
+    /// Array: ARRAY[*, ...], whose bounds are known only when running (6.5.3); `dimensions`
+    /// then only counts them. Struct: the reference a VAR_IN_OUT of it is passed by.
+    bool conformant = false;
 
     /// The field `name` (case-insensitive), searching the base part too.
     const Field* field(std::string_view field_name) const;
@@ -72,9 +88,19 @@ bool is_scalar(const Type& type);
 /// The VM representation of a scalar type.
 vm::Scalar scalar_of(const Type& type);
 
-/// Whether two types are the same: the same object, or arrays of the same bounds and the
-/// same element type (array types are not interned, each declaration makes its own).
+/// Whether two types are the same: the same object, arrays of the same bounds and the same
+/// element type, or subranges of the same base and bounds (array and subrange types are not
+/// interned, each declaration makes its own).
 bool same_type(const Type& a, const Type& b);
+
+/// Whether `actual` may be passed to the VAR_IN_OUT ARRAY[*] `formal` (6.5.3): an array, of
+/// any bounds, with as many dimensions and the same element type.
+bool conforms(const Type& actual, const Type& formal);
+
+/// What a VAR_IN_OUT ARRAY[*] is passed by: the array's address, then the lower bound and
+/// the count of each dimension (DINT, UDINT), so its bounds go along with it.
+inline constexpr std::uint32_t kConformantBoundsOffset = 8;
+inline constexpr std::uint32_t kConformantDimensionSize = 8;
 
 /// IEC 61131-3 ed. 3, 6.6.1.6 figure 11: the implicit widening conversions. True when a value
 /// of `from` may be used where `to` is expected without a conversion function.

@@ -27,7 +27,11 @@ public:
     const Type& elementary(ast::ElementaryType type);
     const Type& string(std::uint32_t capacity, bool wide);
     const Type& reference(const Type* target);
+    /// What a VAR_IN_OUT of the ARRAY[*] `array` is passed by (kConformantBoundsOffset).
+    const Type& conformant_reference(const Type& array);
     const Type& null();
+    /// The type without its subrange: a subrange's base type, else `type` itself.
+    const Type& unranged(const Type& type);
 
     /// The type a declaration spells; null after reporting an error.
     const Type* resolve(const ast::TypeSpec& spec);
@@ -51,8 +55,11 @@ private:
     Type& add(Type type);
     const Type* resolve_uncached(const ast::TypeSpec& spec);
     const Type* array(const ast::ArrayType& spec, const SourceRange& range);
+    const Type* conformant_array(const ast::ArrayType& spec, const Type& element,
+                                 const SourceRange& range);
     const Type* structure(const ast::StructType& spec);
     const Type* enumeration(const ast::EnumType& spec, std::string name);
+    const Type* subrange(const ast::SubrangeType& spec);
     void lay_out(Type& type, const std::vector<const ast::VariableDeclaration*>& declarations,
                  const std::vector<ast::VarSectionKind>& sections, std::uint32_t start);
 
@@ -64,6 +71,7 @@ private:
     std::map<ast::ElementaryType, const Type*> elementary_;
     std::map<std::pair<std::uint32_t, bool>, const Type*> strings_;
     std::map<const Type*, const Type*> references_;
+    std::map<const Type*, const Type*> conformant_references_;
     const Type* null_ = nullptr;
     std::unordered_map<const ast::TypeSpec*, const Type*> specs_;
     std::unordered_map<const ast::Pou*, const Type*> instances_;
