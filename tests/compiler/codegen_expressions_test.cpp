@@ -148,6 +148,15 @@ INSTANTIATE_TEST_SUITE_P(
                 "w.0 := FALSE; w.15 := TRUE; x := WORD_TO_LINT(w);", 0x80FE},
         IntCase{"Sizeof", "a : ARRAY[1..10] OF DINT;", "x := SIZEOF(a) + SIZEOF(x);", 48},
         IntCase{"Adr", "d : DINT; p : POINTER TO DINT;", "p := ADR(d); p^ := 9; x := d;", 9},
+        // CODESYS: SIZEOF is a constant of the smallest unsigned type holding it, and ADR is an
+        // address for a POINTER TO of any type (OSCAT passes ADR(buf), SIZEOF(buf) this way).
+        IntCase{"SizeofFitsAUint", "a : ARRAY[1..10] OF DINT; u : UINT; i : INT;",
+                "u := SIZEOF(a); i := SIZEOF(a); x := UINT_TO_LINT(u) + i;", 80},
+        IntCase{"SizeofOfALargeArrayIsAUdint", "a : ARRAY[1..20000] OF DINT; u : UDINT;",
+                "u := SIZEOF(a); x := u;", 80000},
+        IntCase{"AdrIntoAPointerToAnotherArrayType",
+                "a : ARRAY[0..3] OF INT := [1, 2, 3, 4]; p : POINTER TO ARRAY[0..1000] OF INT;",
+                "p := ADR(a); x := p^[3] * 10 + p^[0];", 41},
         IntCase{"UnsignedCompare", "u : UDINT := 16#FFFFFFFF;", "IF u > 1 THEN x := 1; END_IF;",
                 1}),
     [](const auto& c) { return c.param.name; });

@@ -527,7 +527,8 @@ std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRang
                                             const sema::Type& want, const Destination* dest) {
     if (!sema::converts_implicitly(*value.type, want)) {
         error(range, fmt::format("a {} value cannot be used as {}{}", value.type->name, want.name,
-                                 sema::is_scalar(*value.type) && sema::is_scalar(want)
+                                 value.type->kind == sema::TypeKind::Elementary &&
+                                         want.kind == sema::TypeKind::Elementary
                                      ? fmt::format(" (convert it with {}_TO_{})", value.type->name,
                                                    want.name)
                                      : ""));

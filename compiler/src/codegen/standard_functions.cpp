@@ -127,15 +127,20 @@ std::optional<Value> PouGenerator::address_or_size(const std::string& name,
         type = target->type;
     }
     if (name == "ADR") {
-        return Value{address_of(*target), &types_.reference(type)};
+        // As in CODESYS, an address goes into a POINTER TO of any type (the VM checks every
+        // access through it); REF() is the typed, IEC way.
+        return Value{address_of(*target), &types_.reference(nullptr)};
     }
-    // SIZEOF: bytes, as a DINT constant.
-    const sema::Type& dint = types_.elementary(E::Dint);
-    std::vector<std::uint8_t> bytes(4);
-    for (std::uint32_t i = 0; i < 4; ++i) {
+    // SIZEOF: a constant of the smallest unsigned type that holds the size (CODESYS), so that
+    // it fits a UINT parameter as well as a DINT.
+    const sema::Type& size_type = types_.elementary(type->size < 0x100     ? E::Usint
+                                                    : type->size < 0x10000 ? E::Uint
+                                                                           : E::Udint);
+    std::vector<std::uint8_t> bytes(size_type.size);
+    for (std::uint32_t i = 0; i < size_type.size; ++i) {
         bytes[i] = static_cast<std::uint8_t>(type->size >> (8 * i));
     }
-    return Value{program_.constant(bytes, 4), &dint};
+    return Value{program_.constant(bytes, size_type.align), &size_type};
 }
 
 std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
