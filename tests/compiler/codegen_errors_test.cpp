@@ -48,9 +48,8 @@ INSTANTIATE_TEST_SUITE_P(
         Rejected{"AssignToConstant",
                  "PROGRAM Main\nVAR CONSTANT k : INT := 1; END_VAR\nk := 2;\nEND_PROGRAM\n",
                  "cannot be assigned here"},
-        Rejected{"AssignToInput",
-                 "FUNCTION_BLOCK F\nVAR_INPUT a : INT; END_VAR\na := 1;\nEND_FUNCTION_BLOCK\n",
-                 "cannot be assigned here"},
+        Rejected{"PointerMovedByAReal", main_with("p : POINTER TO BYTE;", "p := p + 1.5;"),
+                 "a pointer moves by a whole number of bytes, not by a LREAL"},
         Rejected{"AssignToOutputOfInstance",
                  "FUNCTION_BLOCK F\nVAR_OUTPUT q : INT; END_VAR\nq := 1;\nEND_FUNCTION_BLOCK\n" +
                      main_with("f : F;", "f.q := 2;"),
@@ -174,6 +173,30 @@ END_FUNCTION
     EXPECT_NE(text.find("warning: this statement is never executed"), std::string::npos) << text;
     EXPECT_NE(text.find("warning: function 'F' never assigns its result"), std::string::npos)
         << text;
+}
+
+// IEC 61131-3 forbids it, CODESYS libraries (OSCAT) do it: a warning, and the write works.
+TEST(Warnings, WritingAnInputIsAllowedWithAWarning) {
+    const std::string source = R"(
+FUNCTION BitCount : INT
+  VAR_INPUT in : DWORD; END_VAR
+  WHILE in > 0 DO
+    IF in.0 THEN BitCount := BitCount + 1; END_IF;
+    in := SHR(in, 1);
+  END_WHILE;
+END_FUNCTION
+PROGRAM Main
+VAR n : INT; END_VAR
+n := BitCount(16#F0F0_0001);
+END_PROGRAM
+)";
+    EXPECT_NE(diagnostics_of(source).find("test.st:6:5: warning: 'in' is an input"),
+              std::string::npos)
+        << diagnostics_of(source);
+    StProgram run(source);
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("Main.n"), 9);
 }
 
 TEST(RunTimeErrors, DivisionByZeroNamesThePouAndLine) {

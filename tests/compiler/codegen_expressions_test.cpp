@@ -154,6 +154,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "u := SIZEOF(a); i := SIZEOF(a); x := UINT_TO_LINT(u) + i;", 80},
         IntCase{"SizeofOfALargeArrayIsAUdint", "a : ARRAY[1..20000] OF DINT; u : UDINT;",
                 "u := SIZEOF(a); x := u;", 80000},
+        // CODESYS pointer arithmetic counts bytes.
+        IntCase{"PointerArithmetic",
+                "a : ARRAY[0..3] OF INT := [1, 2, 3, 4]; p : POINTER TO INT; k : DINT := 4;",
+                "p := ADR(a); p := p + 2; x := p^; p := p + k; x := x * 10 + p^;"
+                "p := p - 2; x := x * 10 + p^;",
+                243},
         IntCase{"AdrIntoAPointerToAnotherArrayType",
                 "a : ARRAY[0..3] OF INT := [1, 2, 3, 4]; p : POINTER TO ARRAY[0..1000] OF INT;",
                 "p := ADR(a); x := p^[3] * 10 + p^[0];", 41},

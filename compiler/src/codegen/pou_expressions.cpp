@@ -754,6 +754,9 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
         if (!left) {
             return std::nullopt;
         }
+        if (left->type->kind == sema::TypeKind::Reference) {
+            return pointer_offset(node.op == Op::Add, *left, *node.right, dest);
+        }
         if (sema::is_integer(*left->type) || sema::is_bit_string(*left->type)) {
             // A small constant right operand of + and - is the immediate of AddI.
             Value l = *left;
@@ -780,6 +783,18 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
             return Value{result, l.type, l.iec};
         }
         const auto right = eval(*node.right, left->type);
+        pair = right ? unify(*left, *right, range) : std::nullopt;
+    } else if ((node.op == Op::Add || node.op == Op::Subtract) &&
+               !is_untyped_literal(*node.left)) {
+        const auto left = operand_value(*node.left, hint);
+        if (!left) {
+            return std::nullopt;
+        }
+        if (left->type->kind == sema::TypeKind::Reference) {
+            return pointer_offset(node.op == Op::Add, *left, *node.right, dest);
+        }
+        const auto right =
+            operand_value(*node.right, is_untyped_literal(*node.right) ? left->type : hint);
         pair = right ? unify(*left, *right, range) : std::nullopt;
     } else {
         pair = operands(*node.left, *node.right, comparison ? nullptr : hint, range);
@@ -811,6 +826,31 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
         return result;
     }
     return apply(node.op, left, right, dest, range);
+}
+
+std::optional<Value> PouGenerator::pointer_offset(bool add, const Value& pointer,
+                                                  const ast::Expression& bytes,
+                                                  const Destination* dest) {
+    const sema::Type& lint = types_.elementary(E::Lint);
+    const Operand result =
+        result_operand(*pointer.type, dest != nullptr && dest->type == pointer.type ? dest : nullptr);
+    if (const auto constant = small_literal(bytes)) {
+        const std::int32_t delta = add ? *constant : -*constant;
+        emit(Opcode::AddI64, result, pointer.operand, Operand::imm(static_cast<std::uint32_t>(delta)));
+        return Value{result, pointer.type};
+    }
+    const auto offset = eval(bytes, &lint);
+    if (!offset) {
+        return std::nullopt;
+    }
+    if (!sema::is_integer(*offset->type)) {
+        error(bytes.range, fmt::format("a pointer moves by a whole number of bytes, not by a {}",
+                                       offset->type->name));
+        return std::nullopt;
+    }
+    const auto wide = convert(*offset, lint, nullptr);
+    emit(add ? Opcode::Add64 : Opcode::Sub64, result, pointer.operand, wide->operand);
+    return Value{result, pointer.type};
 }
 
 std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,

@@ -85,9 +85,9 @@ bool is_constant(const ast::Pou& pou, const ast::VariableDeclaration* declaratio
 void PouGenerator::declare_locals() {
     const bool function = pou_.kind == ast::PouKind::Function;
     auto declare = [&](const sema::Field& field, Operand operand) {
-        // Inputs are read-only inside the POU (6.5.2.2), as are constants.
-        const bool writable =
-            field.section != ast::VarSectionKind::Input && !is_constant(pou_, field.declaration);
+        // Constants are read-only. Inputs are too in IEC 61131-3, but libraries written for
+        // CODESYS (OSCAT) use them as scratch variables: writing one is a warning.
+        const bool writable = !is_constant(pou_, field.declaration);
         Place place = Place::direct(*field.type, operand, writable);
         if (field.section == ast::VarSectionKind::InOut) {
             place = {.kind = Place::Kind::Indirect,

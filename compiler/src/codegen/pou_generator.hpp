@@ -167,6 +167,11 @@ private:
     std::optional<Value> compare(ast::BinaryOperator op, const Value& left, const Value& right,
                                  const Destination* dest);
     vm::Operand result_operand(const sema::Type& type, const Destination* dest);
+    /// `pointer + bytes`, `pointer - bytes`: CODESYS pointer arithmetic, in bytes.
+    /// Warns when an assignment writes an input of the running POU.
+    void warn_if_input(const ast::Expression& target);
+    std::optional<Value> pointer_offset(bool add, const Value& pointer, const ast::Expression& bytes,
+                                        const Destination* dest);
     static bool is_untyped_literal(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
 

@@ -67,6 +67,16 @@ void PouGenerator::statement(const ast::Statement& statement) {
     release(mark);
 }
 
+void PouGenerator::warn_if_input(const ast::Expression& target) {
+    const auto* name = std::get_if<ast::NameExpression>(&target.node);
+    const auto local = name ? locals_.find(sema::fold_case(name->name.name)) : locals_.end();
+    if (local != locals_.end() && local->second.section == ast::VarSectionKind::Input) {
+        warning(target.range, fmt::format("'{}' is an input: IEC 61131-3 does not let a POU "
+                                          "write its inputs (CODESYS does, and so does eposp)",
+                                          name->name.name));
+    }
+}
+
 void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
                                   const ast::Expression& value, const SourceRange& range) {
     const auto word_place = place(*target.object);
@@ -80,6 +90,7 @@ void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
         error(target.object->range, "this variable cannot be assigned here");
         return;
     }
+    warn_if_input(*target.object);
     // word := (word AND NOT mask) OR (BOOL_TO_<word>(bit) << n)
     const sema::Type& type = *word->type;
     const Operand cleared = temp(type);
@@ -104,10 +115,11 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
         return;
     }
     if (!target->writable) {
-        error(node.target->range, "this variable cannot be assigned here (a constant, an input "
-                                  "or an output of another instance)");
+        error(node.target->range, "this variable cannot be assigned here (a constant or an "
+                                  "output of another instance)");
         return;
     }
+    warn_if_input(*node.target);
     if (target->kind == Place::Kind::Direct &&
         std::find(for_variables_.begin(), for_variables_.end(), target->operand.raw) !=
             for_variables_.end()) {
