@@ -199,6 +199,15 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int16_t>("Main.n"), 9);
 }
 
+// A declaration that failed is reported once, not again at every use of the variable.
+TEST(Diagnostics, AFailedDeclarationIsReportedOnce) {
+    const std::string text = diagnostics_of(
+        "PROGRAM Main\nVAR n : INT := 3; a : ARRAY[1..n] OF INT; END_VAR\na[1] := 2;\nEND_PROGRAM\n");
+    EXPECT_NE(text.find("test.st:2:29: error: array bounds must be constants"), std::string::npos)
+        << text;
+    EXPECT_EQ(text.find("'a' is not a variable"), std::string::npos) << text;
+}
+
 TEST(RunTimeErrors, DivisionByZeroNamesThePouAndLine) {
     StProgram run(R"(
 FUNCTION Ratio : DINT

@@ -213,7 +213,10 @@ std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const So
             return local->second.place;
         }
     }
-    error(range, fmt::format("'{}' is not a variable", symbol.name));
+    // A variable missing from the frame is one whose declaration failed, already reported.
+    if (symbol.kind != sema::SymbolKind::Variable || !program_.diagnostics().has_errors()) {
+        error(range, fmt::format("'{}' is not a variable", symbol.name));
+    }
     return std::nullopt;
 }
 
