@@ -160,6 +160,14 @@ private:
         case SymbolKind::EnumValue:
             return {.known = symbol.owner != nullptr,
                     .type_name = symbol.owner != nullptr ? symbol.owner->name : ""};
+        case SymbolKind::ProgramInstance: {
+            // `Inst1.out` in a program connection: the members of its program type.
+            const Symbol* program = global_.find_member(symbol.program_instance->type.name);
+            if (program == nullptr || program->kind != SymbolKind::Pou) {
+                return {};
+            }
+            return {.known = true, .type_name = program->name, .members = program->members};
+        }
         case SymbolKind::Pou:
             // A function's name in its own body is its result variable.
             if (symbol.pou->return_type) {
@@ -584,14 +592,15 @@ private:
             }
             const Scope& resource_scope = *state_.resource_scopes.at(&resource);
             for (const ast::ProgramInstance& instance : resource.programs) {
-                resolve_program_instance(instance, resource_scope);
+                resolve_program_instance(instance, resource_scope,
+                                         *state_.connection_scopes.at(&configuration));
             }
         }
     }
 
     /// `PROGRAM inst WITH task : Type (…)` (ed. 3, 6.8.2).
-    void resolve_program_instance(const ast::ProgramInstance& instance,
-                                  const Scope& resource_scope) {
+    void resolve_program_instance(const ast::ProgramInstance& instance, const Scope& resource_scope,
+                                  const Scope& connections) {
         if (instance.task) {
             const Symbol* task = resource_scope.find_member(instance.task->name);
             if (task == nullptr || task->kind != SymbolKind::Task) {
@@ -606,11 +615,11 @@ private:
             error(instance.type.range,
                   program == nullptr ? fmt::format("unknown program type '{}'", instance.type.name)
                                      : fmt::format("'{}' is not a PROGRAM", instance.type.name));
-            resolve_arguments(instance.connections, nullptr, instance.type.name, global_);
+            resolve_arguments(instance.connections, nullptr, instance.type.name, connections);
             return;
         }
         model_.bind(instance.type, *program);
-        resolve_arguments(instance.connections, program->members, program->name, global_);
+        resolve_arguments(instance.connections, program->members, program->name, connections);
     }
 
     ResolverState& state_;
