@@ -226,10 +226,31 @@ private:
 
     ValueShape resolve_node(const ast::NameExpression& node, const Scope& scope) {
         const Symbol* symbol = find_name(node.name, scope);
+        // A standard function or FB is never a value, so where one is named as a value an
+        // enumerator of that name is meant (`CASE step OF Move:` with `Step : (Load, Move)`).
+        if (symbol != nullptr && (symbol->kind == SymbolKind::StandardFunction ||
+                                  symbol->kind == SymbolKind::StandardFunctionBlock)) {
+            const auto it = state_.enum_values.find(fold_case(node.name.name));
+            if (it != state_.enum_values.end()) {
+                symbol = unique_enum_value(node.name, it->second);
+            }
+        }
+        return bound(node.name, symbol);
+    }
+
+    /// A callee is looked up as a name, never as an enumerator (`MOVE(x)`).
+    ValueShape resolve_callee(const ast::Expression& callee, const Scope& scope) {
+        if (const auto* name = std::get_if<ast::NameExpression>(&callee.node)) {
+            return bound(name->name, find_name(name->name, scope));
+        }
+        return resolve_expression(callee, scope);
+    }
+
+    ValueShape bound(const ast::Identifier& name, const Symbol* symbol) {
         if (symbol == nullptr) {
             return {};
         }
-        model_.bind(node.name, *symbol);
+        model_.bind(name, *symbol);
         return shape_of_symbol(*symbol);
     }
 
@@ -327,7 +348,7 @@ private:
     }
 
     ValueShape resolve_node(const ast::CallExpression& node, const Scope& scope) {
-        const ValueShape callee = resolve_expression(*node.callee, scope);
+        const ValueShape callee = resolve_callee(*node.callee, scope);
         const Symbol* pou = called_pou(*node.callee);
         // Formal names belong to the called POU, or to the FB type of the called instance.
         const Scope* parameters = pou != nullptr ? pou->members : callee.members;
