@@ -131,6 +131,22 @@ TEST(RunCommand, WarmStartContinuesTheRetainVariablesOfTheLastRun) {
     EXPECT_THAT(eposp(run + " --start cold").output, HasSubstr("Main.n = 3"));
 }
 
+TEST(RunCommand, WatchShowsCharactersAsLiteralsLikeStrings) {
+    const std::string source = write_source(
+        "chars.st", "PROGRAM Main\n  VAR c : CHAR := CHAR#'A'; w : WCHAR := WCHAR#\"$263A\";\n"
+                    "    nl : CHAR := CHAR#'$N'; s : STRING := 'a$Nb'; n : USINT := 65; END_VAR\n"
+                    "  n := n;\nEND_PROGRAM\n");
+    const auto result = eposp("run " + source +
+                              " --for 1ms --watch Main.c --watch Main.w --watch Main.nl --watch "
+                              "Main.s --watch Main.n");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("Main.c = 'A'\n"));
+    EXPECT_THAT(result.output, HasSubstr("Main.w = \"$263A\"\n"));
+    EXPECT_THAT(result.output, HasSubstr("Main.nl = '$0A'\n"));
+    EXPECT_THAT(result.output, HasSubstr("Main.s = 'a$0Ab'\n"));
+    EXPECT_THAT(result.output, HasSubstr("Main.n = 65\n")) << "a USINT stays a number";
+}
+
 TEST(RunCommand, UnknownWatchPathIsAUserErrorBeforeTheRun) {
     const std::string source = write_source("counter.st", kCounter);
     const auto result = eposp("run " + source + " --watch Inst0.nothing");
