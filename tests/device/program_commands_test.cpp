@@ -110,6 +110,18 @@ TEST(RunCommand, PrintsEachTasksTimingUnderTheCostModel) {
                           "0s max 0s, 0 overruns, 4 instructions in the last cycle"));
 }
 
+TEST(RunCommand, WithoutACostModelSaysTimeIsNotModelledInsteadOfZero) {
+    const std::string source = write_source("counter.st", kCounter);
+    const auto result = eposp("run " + source + " --for 10ms");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("Fast: 11 cycles, every 1ms (priority 0)\n    4 "
+                                         "instructions in the last cycle; execution time not "
+                                         "modelled (--ns-per-instruction N gives each "
+                                         "instruction N ns)\n"));
+    EXPECT_THAT(result.output, Not(HasSubstr("execution last")));
+    EXPECT_THAT(result.output, Not(HasSubstr("jitter")));
+}
+
 TEST(RunCommand, OverrunsAreReportedAsTimerTaskErrors) {
     const std::string source = write_source("counter.st", kCounter);
     const auto result = eposp("run " + source + " --for 3ms --ns-per-instruction 300000");
