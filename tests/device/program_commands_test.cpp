@@ -177,6 +177,17 @@ TEST(RunCommand, BlinkerExampleFlashesTwiceInASecond) {
     EXPECT_THAT(result.output, HasSubstr("Cell.flashes = 2"));
 }
 
+TEST(RunCommand, ConnectionsExampleFeedsOneProgramFromAnother) {
+    const auto result = eposp("run " + std::string(EPOSP_SOURCE_DIR) +
+                              "/examples/plc-basics/connections.st --for 50ms --watch Move.steps "
+                              "--watch Cell.axis1.target --watch Cell.history[2]");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    // Ticks counts 51 cycles; Move scales its count by 2.5, and Copy passes that on.
+    EXPECT_THAT(result.output, HasSubstr("Move.steps = 51\n"));
+    EXPECT_THAT(result.output, HasSubstr("Cell.axis1.target = 127\n"));
+    EXPECT_THAT(result.output, HasSubstr("Cell.history[2] = 127\n"));
+}
+
 // The PLC part of `./eposp.sh demo`.
 TEST(PlcDemo, RunsToTheEnd) {
     const auto dir = scratch("demo");
