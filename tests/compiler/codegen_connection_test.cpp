@@ -89,6 +89,31 @@ TEST(ProgramConnection, ReadsAnInputAddressBoundToTheProcessImage) {
     EXPECT_EQ(run.image().bindings.back().byte_address, 16U);
 }
 
+TEST(ProgramConnection, AValueOutsideASubrangeInputStopsTheTaskNamingTheConnectionsLine) {
+    StProgram run(R"(
+TYPE Percent : INT (0..100); END_TYPE
+PROGRAM Gauge
+  VAR_INPUT level : Percent; END_VAR
+  VAR_OUTPUT shown : Percent; END_VAR
+  shown := level;
+END_PROGRAM
+CONFIGURATION Cell
+  VAR_GLOBAL raw : INT := 50; END_VAR
+  RESOURCE Cpu ON PLC
+    TASK Fast(INTERVAL := T#1ms, PRIORITY := 0);
+    PROGRAM G WITH Fast : Gauge (
+      level := raw);
+  END_RESOURCE
+END_CONFIGURATION
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int16_t>("G.shown"), 50);
+    run.set<std::int16_t>("Cell.raw", 101);
+    EXPECT_FALSE(run.scans(1));
+    EXPECT_EQ(run.fault(), "value out of subrange in G.connections at line 13");
+}
+
 struct Refused {
     std::string name;
     std::string connections;

@@ -102,6 +102,7 @@ bool PouGenerator::is_connectable(const ast::Expression& expression, bool output
 }
 
 void PouGenerator::connect_input(const sema::Field& field, const ast::Expression& source) {
+    builder_.line(source.range.begin.line); // a run-time error names the connection's line
     const std::uint32_t mark = frame_top_;
     const Place input = Place::direct(*field.type, Operand::self(field.offset));
     const Destination dest{input.operand, input.type};
@@ -112,6 +113,7 @@ void PouGenerator::connect_input(const sema::Field& field, const ast::Expression
 }
 
 void PouGenerator::connect_output(const sema::Field& field, const ast::Expression& sink) {
+    builder_.line(sink.range.begin.line);
     const std::uint32_t mark = frame_top_;
     const auto target = place(sink);
     if (target && !target->writable) {
