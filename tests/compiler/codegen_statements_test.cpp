@@ -2,9 +2,8 @@
 // and enumerations, FOR (with BY, EXIT, CONTINUE), WHILE, REPEAT, RETURN.
 #include "codegen_harness.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 namespace eposp::compiler::test {
 namespace {
@@ -112,6 +111,31 @@ END_PROGRAM
     ASSERT_TRUE(run.ok()) << run.errors();
     ASSERT_TRUE(run.scans(1)) << run.fault();
     EXPECT_EQ(run.get<std::int32_t>("Main.x"), 2);
+}
+
+TEST(CaseStatement, EnumeratorsNamedLikeStandardFunctions) {
+    // MOVE, SEL and LIMIT are standard functions; where a value is wanted they are the
+    // enumerators, and called they are still the functions.
+    StProgram run(R"(
+TYPE Step : (Idle, Load, Move, Sel, Limit); END_TYPE
+PROGRAM Main
+VAR s : Step; trail, n : DINT; moving : BOOL; END_VAR
+CASE s OF
+  Idle: s := Load; trail := trail * 10 + 1;
+  Load: s := Move; trail := trail * 10 + 2;
+  Move: s := Step#Sel; trail := trail * 10 + 3;
+  Sel: s := Limit;
+  Limit: s := Idle;
+END_CASE;
+moving := s = Move OR Sel <> s;
+n := MOVE(LIMIT(0, SEL(moving, 1, 2), 5));
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(3)) << run.fault();
+    EXPECT_EQ(run.get<std::int32_t>("Main.trail"), 123);
+    EXPECT_FALSE(run.get<bool>("Main.moving")) << "s is Sel";
+    EXPECT_EQ(run.get<std::int32_t>("Main.n"), 1);
 }
 
 struct CaseDispatch {

@@ -172,6 +172,26 @@ TEST(Resolver, EnumValueOfTwoTypesMustBeQualified) {
     EXPECT_EQ(resolved->diagnostics.all().front().notes.size(), 2u);
 }
 
+TEST(Resolver, EnumValueNamedLikeAStandardFunctionIsTheValueWhereAValueIsWanted) {
+    const auto resolved = resolve_text("TYPE Step : (Idle, Move); END_TYPE\n"
+                                       "PROGRAM P\nVAR s : Step; n : INT; END_VAR\n"
+                                       "s := Move;\nn := MOVE(n);\nEND_PROGRAM\n");
+    EXPECT_TRUE(resolved->messages().empty()) << resolved->rendered();
+    const sema::Symbol* value = resolved->assignment_value(0);
+    ASSERT_NE(value, nullptr);
+    EXPECT_EQ(value->kind, SymbolKind::EnumValue);
+    EXPECT_EQ(value->owner->name, "Step");
+}
+
+TEST(Resolver, EnumValueNamedLikeAStandardFunctionInTwoTypesMustBeQualified) {
+    const auto resolved = resolve_text("TYPE Step : (Idle, Move); END_TYPE\n"
+                                       "TYPE Job : (Move, Wait); END_TYPE\n"
+                                       "PROGRAM P\nVAR s : Step; END_VAR\ns := Move;\n"
+                                       "s := Step#Move;\nEND_PROGRAM\n");
+    EXPECT_THAT(resolved->messages(),
+                ElementsAre("'Move' is ambiguous: qualify it with its type, as in Step#Move"));
+}
+
 constexpr const char* kStructs =
     "TYPE Point : STRUCT x : REAL; y : REAL; END_STRUCT; END_TYPE\n"
     "TYPE Segment : STRUCT a : Point; b : Point; END_STRUCT; END_TYPE\n"

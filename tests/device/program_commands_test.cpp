@@ -110,6 +110,18 @@ TEST(RunCommand, PrintsEachTasksTimingUnderTheCostModel) {
                           "0s max 0s, 0 overruns, 4 instructions in the last cycle"));
 }
 
+TEST(RunCommand, WithoutACostModelSaysTimeIsNotModelledInsteadOfZero) {
+    const std::string source = write_source("counter.st", kCounter);
+    const auto result = eposp("run " + source + " --for 10ms");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("Fast: 11 cycles, every 1ms (priority 0)\n    4 "
+                                         "instructions in the last cycle; execution time not "
+                                         "modelled (--ns-per-instruction N gives each "
+                                         "instruction N ns)\n"));
+    EXPECT_THAT(result.output, Not(HasSubstr("execution last")));
+    EXPECT_THAT(result.output, Not(HasSubstr("jitter")));
+}
+
 TEST(RunCommand, OverrunsAreReportedAsTimerTaskErrors) {
     const std::string source = write_source("counter.st", kCounter);
     const auto result = eposp("run " + source + " --for 3ms --ns-per-instruction 300000");
@@ -131,6 +143,22 @@ TEST(RunCommand, WarmStartContinuesTheRetainVariablesOfTheLastRun) {
     EXPECT_THAT(eposp(run + " --start cold").output, HasSubstr("Main.n = 3"));
 }
 
+TEST(RunCommand, WatchShowsCharactersAsLiteralsLikeStrings) {
+    const std::string source = write_source(
+        "chars.st", "PROGRAM Main\n  VAR c : CHAR := CHAR#'A'; w : WCHAR := WCHAR#\"$263A\";\n"
+                    "    nl : CHAR := CHAR#'$N'; s : STRING := 'a$Nb'; n : USINT := 65; END_VAR\n"
+                    "  n := n;\nEND_PROGRAM\n");
+    const auto result = eposp("run " + source +
+                              " --for 1ms --watch Main.c --watch Main.w --watch Main.nl --watch "
+                              "Main.s --watch Main.n");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("Main.c = 'A'\n"));
+    EXPECT_THAT(result.output, HasSubstr("Main.w = \"$263A\"\n"));
+    EXPECT_THAT(result.output, HasSubstr("Main.nl = '$0A'\n"));
+    EXPECT_THAT(result.output, HasSubstr("Main.s = 'a$0Ab'\n"));
+    EXPECT_THAT(result.output, HasSubstr("Main.n = 65\n")) << "a USINT stays a number";
+}
+
 TEST(RunCommand, UnknownWatchPathIsAUserErrorBeforeTheRun) {
     const std::string source = write_source("counter.st", kCounter);
     const auto result = eposp("run " + source + " --watch Inst0.nothing");
@@ -147,6 +175,17 @@ TEST(RunCommand, BlinkerExampleFlashesTwiceInASecond) {
     EXPECT_THAT(result.output, HasSubstr("Cyclic: 101 cycles, every 10ms (priority 1)"));
     // TON of 250 ms restarted one cycle after each expiry: the lamp turns on at 250 and 790 ms.
     EXPECT_THAT(result.output, HasSubstr("Cell.flashes = 2"));
+}
+
+TEST(RunCommand, ConnectionsExampleFeedsOneProgramFromAnother) {
+    const auto result = eposp("run " + std::string(EPOSP_SOURCE_DIR) +
+                              "/examples/plc-basics/connections.st --for 50ms --watch Move.steps "
+                              "--watch Cell.axis1.target --watch Cell.history[2]");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    // Ticks counts 51 cycles; Move scales its count by 2.5, and Copy passes that on.
+    EXPECT_THAT(result.output, HasSubstr("Move.steps = 51\n"));
+    EXPECT_THAT(result.output, HasSubstr("Cell.axis1.target = 127\n"));
+    EXPECT_THAT(result.output, HasSubstr("Cell.history[2] = 127\n"));
 }
 
 // The PLC part of `./eposp.sh demo`.

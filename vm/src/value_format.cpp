@@ -73,7 +73,20 @@ std::string format_scalar(const TypeDescriptor& type, std::span<const std::uint8
     return std::string(out.view());
 }
 
-// STRING / WSTRING contents as a literal, characters outside printable ASCII as $hh / $hhhh.
+// One character inside a literal quoted by `'` (narrow) or `"` (wide): IEC 61131-3 6.3.3's
+// $$ and $' (or $"), and characters outside printable ASCII as $hh / $hhhh.
+void append_literal_character(std::string& text, unsigned code, bool wide) {
+    const unsigned quote = wide ? '"' : '\'';
+    if (code == '$' || code == quote) {
+        text += '$';
+    }
+    if (code < 0x20 || code > 0x7E) {
+        text += wide ? fmt::format("${:04X}", code) : fmt::format("${:02X}", code);
+    } else {
+        text += static_cast<char>(code);
+    }
+}
+
 std::string format_string(const TypeDescriptor& type, std::span<const std::uint8_t> memory,
                           std::uint32_t offset) {
     const bool wide = type.name.starts_with("WSTRING");
@@ -83,17 +96,21 @@ std::string format_string(const TypeDescriptor& type, std::span<const std::uint8
     std::string text(1, quote);
     for (std::uint32_t i = 0; i < length; ++i) {
         const std::uint32_t at = offset + stdlib::kStringHeaderSize + (wide ? 2 * i : i);
-        const unsigned code =
-            wide ? load<std::uint16_t>(memory, at) : load<std::uint8_t>(memory, at);
-        if (code == '$' || code == static_cast<unsigned>(quote)) {
-            text += '$'; // IEC 61131-3 6.3.3: $$ and $' (or $") inside a literal
-        }
-        if (code < 0x20 || code > 0x7E) {
-            text += wide ? fmt::format("${:04X}", code) : fmt::format("${:02X}", code);
-        } else {
-            text += static_cast<char>(code);
-        }
+        append_literal_character(
+            text, wide ? load<std::uint16_t>(memory, at) : load<std::uint8_t>(memory, at), wide);
     }
+    return text + quote;
+}
+
+// CHAR and WCHAR (U8 / U16 codes) as a one-character literal, like a STRING / WSTRING.
+std::string format_character(const TypeDescriptor& type, std::span<const std::uint8_t> memory,
+                             std::uint32_t offset) {
+    const bool wide = type.name == "WCHAR";
+    const char quote = wide ? '"' : '\'';
+    std::string text(1, quote);
+    append_literal_character(
+        text, wide ? load<std::uint16_t>(memory, offset) : load<std::uint8_t>(memory, offset),
+        wide);
     return text + quote;
 }
 
@@ -104,6 +121,9 @@ std::string format_value(const Image& image, std::span<const std::uint8_t> memor
     const TypeDescriptor& type = image.types.at(location.type);
     switch (type.kind) {
     case TypeKind::Elementary:
+        if (type.name == "CHAR" || type.name == "WCHAR") {
+            return format_character(type, memory, location.offset);
+        }
         return format_scalar(type, memory, location.offset);
     case TypeKind::String:
         return format_string(type, memory, location.offset);

@@ -207,6 +207,9 @@ std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const So
         }
         return global;
     }
+    if (symbol.kind == sema::SymbolKind::ProgramInstance) {
+        return program_.program_instance_variable(symbol.name); // a program connection's source
+    }
     if (symbol.kind == sema::SymbolKind::Variable ||
         (symbol.kind == sema::SymbolKind::Pou && symbol.pou == &pou_)) {
         if (local != locals_.end()) {

@@ -45,6 +45,10 @@ public:
                  std::uint32_t index);
     /// Emits the body; returns the bytes it needs on the task stack (frame and out area).
     std::uint32_t generate();
+    /// Emits, instead, the body around the program `instance` of this POU that copies its
+    /// connections (6.8.2) in, calls the program's own body `program`, and copies them out;
+    /// returns the bytes it needs on the task stack (pou_connections.cpp).
+    std::uint32_t generate_connections(const ast::ProgramInstance& instance, std::uint32_t program);
 
 private:
     struct Loop {
@@ -55,6 +59,17 @@ private:
         Place place;
         ast::VarSectionKind section;
     };
+
+    // --- pou_connections.cpp -----------------------------------------------------------------
+    /// The input or output of this program that `argument` connects; null after an error.
+    const sema::Field* connected_field(const ast::Argument& argument);
+    /// Whether `expression` is what a connection may name (a literal, a variable path, a
+    /// direct address); reports it otherwise.
+    bool is_connectable(const ast::Expression& expression, bool output);
+    /// `in := source`, before the program runs.
+    void connect_input(const sema::Field& field, const ast::Expression& source);
+    /// `out => sink`, after it.
+    void connect_output(const sema::Field& field, const ast::Expression& sink);
 
     // --- pou_generator.cpp: variables, temporaries, moves ----------------------------------
     void declare_locals();

@@ -1,8 +1,8 @@
 #include "program_generator.hpp"
 
-#include "eposp/compiler/sema/symbol.hpp"
 #include "back_edge_duplication.hpp"
 #include "call_inlining.hpp"
+#include "eposp/compiler/sema/symbol.hpp"
 #include "jump_threading.hpp"
 #include "pou_generator.hpp"
 
@@ -90,6 +90,11 @@ const ast::Pou* ProgramGenerator::library_pou(std::string_view name) const {
 std::optional<Place> ProgramGenerator::global(std::string_view name) const {
     const auto it = globals_.find(sema::fold_case(name));
     return it == globals_.end() ? std::nullopt : std::optional(it->second);
+}
+
+std::optional<Place> ProgramGenerator::program_instance_variable(std::string_view name) const {
+    const auto it = instances_.find(sema::fold_case(name));
+    return it == instances_.end() ? std::nullopt : std::optional(it->second);
 }
 
 std::uint32_t ProgramGenerator::pou_index(const ast::Pou& pou) {
@@ -366,62 +371,11 @@ void ProgramGenerator::connect_programs() {
     for (const Connected& connected : connected_) {
         vm::TaskEntry& entry = tasks_[connected.task].entries[connected.entry];
         const sema::Type& type = *types_.instance(*connected.program);
-        // 6.8.2: inputs are copied in from the configuration before each run, outputs out
-        // after it, by a small body around the program's own.
         const std::uint32_t wrapper = builder_.declare_pou(
             connected.instance->name.name + ".connections", vm::PouKind::Program, type.size);
-        builder_.begin_body(wrapper);
-        builder_.line(connected.instance->range.begin.line);
-        std::vector<std::pair<const sema::Field*, Place>> outputs;
-        for (const ast::Argument& argument : connected.instance->connections) {
-            const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
-            const bool output = argument.kind == ast::Argument::Kind::Output;
-            if (field == nullptr || field->section != (output ? ast::VarSectionKind::Output
-                                                              : ast::VarSectionKind::Input)) {
-                diagnostics_.error(argument.range,
-                                   fmt::format("'{}' has no {} of that name", type.name,
-                                               output ? "output" : "input"));
-                continue;
-            }
-            // A global variable by name, or (for an input) a constant.
-            std::optional<Place> source;
-            if (const auto* name = std::get_if<ast::NameExpression>(&argument.value->node)) {
-                source = global(name->name.name);
-            }
-            if (!source && !output) {
-                if (const auto value = constant_value(*argument.value, *field->type)) {
-                    source = Place::direct(*field->type, constant(*value, 8), false);
-                }
-            }
-            if (!source || !sema::same_type(*source->type, *field->type) ||
-                (output && !source->writable)) {
-                diagnostics_.error(argument.value->range,
-                                   fmt::format("connect '{}' to a {} global variable{}",
-                                               field->name, field->type->name,
-                                               output ? "" : " or constant"));
-                continue;
-            }
-            if (output) {
-                outputs.emplace_back(field, *source);
-                continue;
-            }
-            copy(vm::Operand::self(field->offset), source->operand, *field->type);
-        }
-        builder_.emit(vm::Opcode::CallFb, vm::Operand::self(0), vm::Operand::imm(entry.pou));
-        for (const auto& [field, target] : outputs) {
-            copy(target.operand, vm::Operand::self(field->offset), *field->type);
-        }
-        builder_.emit(vm::Opcode::Ret);
-        builder_.end_body(0, 0);
+        PouGenerator generator(*this, program_.model, *connected.program, wrapper);
+        pou_frames_total_ += generator.generate_connections(*connected.instance, entry.pou);
         entry.pou = wrapper;
-    }
-}
-
-void ProgramGenerator::copy(vm::Operand dst, vm::Operand src, const sema::Type& type) {
-    if (sema::is_scalar(type)) {
-        builder_.emit(opcodes_.get("Mov", width_suffix(sema::scalar_of(type))), dst, src);
-    } else {
-        builder_.emit(vm::Opcode::MovN, dst, src, vm::Operand::imm(type.size));
     }
 }
 

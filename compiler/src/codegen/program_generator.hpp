@@ -46,6 +46,8 @@ public:
     const OpcodeTable& opcodes() const { return opcodes_; }
     /// A configuration global by name (VAR_EXTERNAL binds to it, 6.5.2.2).
     std::optional<Place> global(std::string_view name) const;
+    /// A program instance of the configuration by name (`Inst1` of `Inst1.out`, 6.8.2).
+    std::optional<Place> program_instance_variable(std::string_view name) const;
     /// The variable behind an address used directly in code (`%IW4`): one hidden static
     /// variable per address, bound to it like a located variable (ed. 3, 6.5.5).
     std::optional<Place> direct_variable(const ast::DirectAddress& address);
@@ -101,7 +103,6 @@ private:
     void generate_bodies();
     /// The bodies that copy the connections of `PROGRAM p WITH t : P (in := g, out => h)`.
     void connect_programs();
-    void copy(vm::Operand dst, vm::Operand src, const sema::Type& type);
     /// 6.6.1.1: POUs shall not call themselves, directly or through others.
     void check_recursion();
     std::uint32_t stack_size() const;

@@ -124,6 +124,8 @@ private:
                                                           .name = configuration.name.name,
                                                           .declared = configuration.name.range}));
         collect_sections(model_.global_scope(), configuration.sections);
+        Scope& connections = model_.add_scope(&model_.global_scope());
+        state_.connection_scopes[&configuration] = &connections;
         for (const ast::Resource& resource : configuration.resources) {
             collect_sections(model_.global_scope(), resource.sections);
             Scope& scope = model_.add_scope(nullptr);
@@ -135,10 +137,12 @@ private:
                                                   .task = &task}));
             }
             for (const ast::ProgramInstance& instance : resource.programs) {
-                state_.declare(scope, model_.add({.kind = SymbolKind::ProgramInstance,
-                                                  .name = instance.name.name,
-                                                  .declared = instance.name.range,
-                                                  .program_instance = &instance}));
+                const Symbol& symbol = model_.add({.kind = SymbolKind::ProgramInstance,
+                                                   .name = instance.name.name,
+                                                   .declared = instance.name.range,
+                                                   .program_instance = &instance});
+                state_.declare(scope, symbol);
+                state_.declare(connections, symbol);
             }
         }
     }

@@ -160,6 +160,14 @@ private:
         case SymbolKind::EnumValue:
             return {.known = symbol.owner != nullptr,
                     .type_name = symbol.owner != nullptr ? symbol.owner->name : ""};
+        case SymbolKind::ProgramInstance: {
+            // `Inst1.out` in a program connection: the members of its program type.
+            const Symbol* program = global_.find_member(symbol.program_instance->type.name);
+            if (program == nullptr || program->kind != SymbolKind::Pou) {
+                return {};
+            }
+            return {.known = true, .type_name = program->name, .members = program->members};
+        }
         case SymbolKind::Pou:
             // A function's name in its own body is its result variable.
             if (symbol.pou->return_type) {
@@ -218,10 +226,31 @@ private:
 
     ValueShape resolve_node(const ast::NameExpression& node, const Scope& scope) {
         const Symbol* symbol = find_name(node.name, scope);
+        // A standard function or FB is never a value, so where one is named as a value an
+        // enumerator of that name is meant (`CASE step OF Move:` with `Step : (Load, Move)`).
+        if (symbol != nullptr && (symbol->kind == SymbolKind::StandardFunction ||
+                                  symbol->kind == SymbolKind::StandardFunctionBlock)) {
+            const auto it = state_.enum_values.find(fold_case(node.name.name));
+            if (it != state_.enum_values.end()) {
+                symbol = unique_enum_value(node.name, it->second);
+            }
+        }
+        return bound(node.name, symbol);
+    }
+
+    /// A callee is looked up as a name, never as an enumerator (`MOVE(x)`).
+    ValueShape resolve_callee(const ast::Expression& callee, const Scope& scope) {
+        if (const auto* name = std::get_if<ast::NameExpression>(&callee.node)) {
+            return bound(name->name, find_name(name->name, scope));
+        }
+        return resolve_expression(callee, scope);
+    }
+
+    ValueShape bound(const ast::Identifier& name, const Symbol* symbol) {
         if (symbol == nullptr) {
             return {};
         }
-        model_.bind(node.name, *symbol);
+        model_.bind(name, *symbol);
         return shape_of_symbol(*symbol);
     }
 
@@ -319,7 +348,7 @@ private:
     }
 
     ValueShape resolve_node(const ast::CallExpression& node, const Scope& scope) {
-        const ValueShape callee = resolve_expression(*node.callee, scope);
+        const ValueShape callee = resolve_callee(*node.callee, scope);
         const Symbol* pou = called_pou(*node.callee);
         // Formal names belong to the called POU, or to the FB type of the called instance.
         const Scope* parameters = pou != nullptr ? pou->members : callee.members;
@@ -584,14 +613,15 @@ private:
             }
             const Scope& resource_scope = *state_.resource_scopes.at(&resource);
             for (const ast::ProgramInstance& instance : resource.programs) {
-                resolve_program_instance(instance, resource_scope);
+                resolve_program_instance(instance, resource_scope,
+                                         *state_.connection_scopes.at(&configuration));
             }
         }
     }
 
     /// `PROGRAM inst WITH task : Type (…)` (ed. 3, 6.8.2).
-    void resolve_program_instance(const ast::ProgramInstance& instance,
-                                  const Scope& resource_scope) {
+    void resolve_program_instance(const ast::ProgramInstance& instance, const Scope& resource_scope,
+                                  const Scope& connections) {
         if (instance.task) {
             const Symbol* task = resource_scope.find_member(instance.task->name);
             if (task == nullptr || task->kind != SymbolKind::Task) {
@@ -606,11 +636,11 @@ private:
             error(instance.type.range,
                   program == nullptr ? fmt::format("unknown program type '{}'", instance.type.name)
                                      : fmt::format("'{}' is not a PROGRAM", instance.type.name));
-            resolve_arguments(instance.connections, nullptr, instance.type.name, global_);
+            resolve_arguments(instance.connections, nullptr, instance.type.name, connections);
             return;
         }
         model_.bind(instance.type, *program);
-        resolve_arguments(instance.connections, program->members, program->name, global_);
+        resolve_arguments(instance.connections, program->members, program->name, connections);
     }
 
     ResolverState& state_;

@@ -19,6 +19,9 @@ struct ResolverState {
     std::unordered_map<const ast::Pou*, Scope*> pou_scopes{}; // EXTENDS links them in pass 2
     /// Tasks and program instances of each resource (ed. 3, 6.8.2).
     std::unordered_map<const ast::Resource*, const Scope*> resource_scopes{};
+    /// What program connections see (ed. 3, 6.8.2): the globals and every program instance of
+    /// the configuration, whose outputs may feed another instance's inputs.
+    std::unordered_map<const ast::Configuration*, const Scope*> connection_scopes{};
 
     /// Declares `symbol` in `scope`, or reports that its name is taken there.
     void declare(Scope& scope, const Symbol& symbol);

@@ -26,7 +26,14 @@ struct RunOptions {
     std::string start = "cold";
 };
 
-std::string statistics_line(const vm::TaskStatistics& s) {
+std::string statistics_line(const vm::TaskStatistics& s, std::uint64_t ns_per_instruction) {
+    // Without a cost model every cycle takes no time: execution times, jitter and overruns
+    // would all be 0, which says nothing about the program.
+    if (ns_per_instruction == 0) {
+        return fmt::format("{} instructions in the last cycle; execution time not modelled "
+                           "(--ns-per-instruction N gives each instruction N ns)",
+                           s.instructions_last);
+    }
     return fmt::format("execution last {} min {} avg {} max {}, jitter last {} max {}, "
                        "{} overruns, {} instructions in the last cycle",
                        core::format_duration(s.execution_last),
@@ -36,7 +43,7 @@ std::string statistics_line(const vm::TaskStatistics& s) {
                        core::format_duration(s.jitter_max), s.overruns, s.instructions_last);
 }
 
-void print_task_summary(PlcSession& session) {
+void print_task_summary(PlcSession& session, std::uint64_t ns_per_instruction) {
     const auto& tasks = session.image().tasks;
     vm::PlcRuntime& runtime = session.runtime();
     for (std::size_t task = 0; task < tasks.size(); ++task) {
@@ -53,7 +60,7 @@ void print_task_summary(PlcSession& session) {
             fmt::print("  {}: {} cycles, {} (priority {})\n", spec.name, statistics.cycles, when,
                        spec.priority);
         }
-        fmt::print("    {}\n", statistics_line(statistics));
+        fmt::print("    {}\n", statistics_line(statistics, ns_per_instruction));
     }
 }
 
@@ -107,7 +114,7 @@ int run_program(const RunOptions& options) {
     session.runtime().stop(); // saves the RETAIN variables
 
     fmt::print("ran {} of virtual time\n", core::format_duration(duration));
-    print_task_summary(session);
+    print_task_summary(session, options.ns_per_instruction);
     print_errors(session);
     for (const std::string& path : options.watch) {
         fmt::print("{} = {}\n", path, *session.value_of(path));
@@ -132,7 +139,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
                         "Print this variable at the end (e.g. Inst0.counter); repeatable");
     command
         ->add_option("--ns-per-instruction", options->ns_per_instruction,
-                     "Virtual time one VM instruction takes (0: cycles take no time)")
+                     "Virtual time one VM instruction takes (0: cycles take no time and "
+                     "their execution time is not modelled)")
         ->capture_default_str();
     command
         ->add_option("--watchdog", options->watchdog,
