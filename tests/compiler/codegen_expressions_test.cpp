@@ -154,6 +154,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "u := SIZEOF(a); i := SIZEOF(a); x := UINT_TO_LINT(u) + i;", 80},
         IntCase{"SizeofOfALargeArrayIsAUdint", "a : ARRAY[1..20000] OF DINT; u : UDINT;",
                 "u := SIZEOF(a); x := u;", 80000},
+        // Bit strings count as unsigned integers of their width in arithmetic (CODESYS).
+        IntCase{"BitStringArithmeticWrapsUnsigned",
+                "d : DWORD := 16#FFFF_FFFE; w : WORD := 7; b : BYTE := 200;",
+                "d := d + d / 2 + 5; w := w * w MOD 10; b := b + b;"
+                "x := DWORD_TO_LINT(d) * 1000 + WORD_TO_LINT(w) * 100 + BYTE_TO_LINT(b);",
+                2'147'483'650'000LL + 900 + 144},
         // CODESYS pointer arithmetic counts bytes.
         IntCase{"PointerArithmetic",
                 "a : ARRAY[0..3] OF INT := [1, 2, 3, 4]; p : POINTER TO INT; k : DINT := 4;",

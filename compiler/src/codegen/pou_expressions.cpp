@@ -930,11 +930,13 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
                                      type.name, right.type->name));
             return std::nullopt;
         }
-    } else if (!sema::is_numeric(type)) {
+    } else if (!sema::is_numeric(type) && !sema::is_bit_string(type)) {
+        // BYTE..LWORD count as unsigned integers of their width, as in CODESYS: libraries
+        // (CRCs, hashes, OSCAT) add and multiply DWORDs.
         error(range, fmt::format("arithmetic needs numbers, not {}", type.name));
         return std::nullopt;
     }
-    if (oper == Op::Modulo && !sema::is_integer(type)) {
+    if (oper == Op::Modulo && !sema::is_integer(type) && !sema::is_bit_string(type)) {
         error(range, fmt::format("MOD needs integers, not {}", type.name));
         return std::nullopt;
     }
