@@ -35,6 +35,19 @@ TEST(ImageFormat, ASubrangeKeepsItsBounds) {
     EXPECT_EQ(read->types.back(), image.types.back());
 }
 
+TEST(ImageFormat, AnEnumerationKeepsItsNamesAndValues) {
+    auto image = sample_image();
+    TypeDescriptor step;
+    step.name = "Step";
+    step.scalar = Scalar::I16;
+    step.size = 2;
+    step.enumerators = {{"Idle", 0}, {"Travel", 7}, {"Back", -1}};
+    image.types.push_back(step);
+    const auto read = read_image(write_image(image));
+    ASSERT_TRUE(read) << read.error();
+    EXPECT_EQ(read->types.back(), image.types.back());
+}
+
 TEST(ImageFormat, AReadOnlyAccessPathStaysReadOnly) {
     auto image = sample_image();
     image.symbols.push_back(

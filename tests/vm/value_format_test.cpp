@@ -76,5 +76,22 @@ INSTANTIATE_TEST_SUITE_P(
              {0, 0, 0, 0},
              "<ARRAY[1..2] OF INT>"}));
 
+// An enumeration shows the name of its value, a value it does not name as the number.
+TEST(FormatValue, EnumerationsShowTheNameOfTheirValue) {
+    Image image;
+    TypeDescriptor step;
+    step.name = "Step";
+    step.scalar = Scalar::I16;
+    step.size = 2;
+    step.enumerators = {{"Idle", 0}, {"Back", -1}, {"Travel", 7}};
+    image.types.push_back(step);
+    for (const auto& [value, text] : {std::pair<std::int16_t, const char*>{7, "Travel"},
+                                      {-1, "Back"},
+                                      {0, "Idle"},
+                                      {3, "3"}}) {
+        EXPECT_EQ(format_value(image, bytes_of(value), VariableLocation{0, 0}), text);
+    }
+}
+
 } // namespace
 } // namespace eposp::vm

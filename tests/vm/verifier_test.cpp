@@ -144,6 +144,8 @@ INSTANTIATE_TEST_SUITE_P(
                      "bad element type or size"},
         Malformation{"ArrayTypeOfWrongSize", [](Image& i) { i.types[2].size = 12; },
                      "bad element type or size"},
+        Malformation{"EnumeratorsOnAReal", [](Image& i) { i.types[1].enumerators = {{"x", 0}}; },
+                     "enumerators on a type that is not an integer"},
         Malformation{"StructFieldPastTheStruct", [](Image& i) { i.types[3].fields[2].offset = 28; },
                      "field r has a bad type or offset"},
         Malformation{"ElementaryTypeOfWrongSize", [](Image& i) { i.types[0].size = 2; },

@@ -182,7 +182,7 @@ void describe_pous(Io& io, std::vector<Pou>& pous) {
 
 template <typename Io>
 void describe_types(Io& io, std::vector<TypeDescriptor>& types) {
-    io.list(types, 43, [&](TypeDescriptor& t) {
+    io.list(types, 47, [&](TypeDescriptor& t) {
         io.string(t.name);
         io.enumerator(t.kind, TypeKind::Struct, "type kind");
         io.enumerator(t.scalar, Scalar::Ptr, "scalar type");
@@ -198,6 +198,10 @@ void describe_types(Io& io, std::vector<TypeDescriptor>& types) {
         io.boolean(t.subrange);
         io.i64(t.lowest);
         io.i64(t.highest);
+        io.list(t.enumerators, 12, [&](Enumerator& e) {
+            io.string(e.name);
+            io.i64(e.value);
+        });
     });
 }
 

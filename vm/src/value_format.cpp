@@ -114,6 +114,24 @@ std::string format_character(const TypeDescriptor& type, std::span<const std::ui
     return text + quote;
 }
 
+// An enumeration's value by its name (`Travel`, as CODESYS shows it), or the number if it names
+// none.
+std::string format_enumerated(const TypeDescriptor& type, std::span<const std::uint8_t> memory,
+                              std::uint32_t offset) {
+    std::uint64_t raw = 0;
+    std::memcpy(&raw, memory.data() + offset, type.size);
+    const unsigned unused = 64 - 8 * type.size;
+    const std::int64_t value = is_signed_integer(type.scalar)
+                                   ? static_cast<std::int64_t>(raw << unused) >> unused
+                                   : static_cast<std::int64_t>(raw);
+    for (const Enumerator& enumerator : type.enumerators) {
+        if (enumerator.value == value) {
+            return enumerator.name;
+        }
+    }
+    return format_scalar(type, memory, offset);
+}
+
 } // namespace
 
 std::string format_value(const Image& image, std::span<const std::uint8_t> memory,
@@ -123,6 +141,9 @@ std::string format_value(const Image& image, std::span<const std::uint8_t> memor
     case TypeKind::Elementary:
         if (type.name == "CHAR" || type.name == "WCHAR") {
             return format_character(type, memory, location.offset);
+        }
+        if (!type.enumerators.empty()) {
+            return format_enumerated(type, memory, location.offset);
         }
         return format_scalar(type, memory, location.offset);
     case TypeKind::String:

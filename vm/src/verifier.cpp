@@ -305,6 +305,9 @@ Defect verify_types_and_symbols(const Image& image) {
             if (t.subrange && (!is_integer(t.scalar) || t.lowest > t.highest)) {
                 return defect(where + ": bad subrange");
             }
+            if (!t.enumerators.empty() && !is_integer(t.scalar)) {
+                return defect(where + ": enumerators on a type that is not an integer");
+            }
             break;
         case TypeKind::String:
             if (t.size == 0) {

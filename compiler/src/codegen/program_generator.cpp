@@ -465,6 +465,9 @@ std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {
             descriptor.lowest = type.range->lower;
             descriptor.highest = type.range->upper;
         }
+        for (const auto& [name, value] : type.enumerators) {
+            descriptor.enumerators.push_back({name, value});
+        }
         break;
     }
     const std::uint32_t index = builder_.type(std::move(descriptor));

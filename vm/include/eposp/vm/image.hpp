@@ -99,6 +99,13 @@ struct Task {
 
 enum class TypeKind : std::uint8_t { Elementary, String, Array, Struct };
 
+/// A named value of an enumeration: what a debugger shows instead of the number.
+struct Enumerator {
+    std::string name;
+    std::int64_t value = 0;
+    bool operator==(const Enumerator&) const = default;
+};
+
 struct TypeField {
     std::string name;
     std::uint32_t type = 0;
@@ -122,6 +129,7 @@ struct TypeDescriptor {
     bool subrange = false;
     std::int64_t lowest = 0;
     std::int64_t highest = 0;
+    std::vector<Enumerator> enumerators{}; ///< Elementary integer: an enumeration's values
     bool operator==(const TypeDescriptor&) const = default;
 };
 
