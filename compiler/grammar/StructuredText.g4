@@ -21,7 +21,8 @@ libraryElement
 
 typeDeclarationBlock : TYPE typeDeclaration+ END_TYPE ;
 
-typeDeclaration : identifier ':' typeSpec (':=' initializer)? ';' ;
+// The ';' after a type declaration may be left out, as CODESYS allows (`END_STRUCT END_TYPE`).
+typeDeclaration : identifier ':' typeSpec (':=' initializer)? ';'? ;
 
 functionDeclaration
     : FUNCTION identifier (':' typeSpec)? varSection* statementList END_FUNCTION ;
