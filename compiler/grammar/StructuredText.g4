@@ -17,6 +17,7 @@ libraryElement
     | functionBlockDeclaration
     | programDeclaration
     | configurationDeclaration
+    | varSection  // a CODESYS global variable list: only VAR_GLOBAL, checked when building the AST
     ;
 
 typeDeclarationBlock : TYPE typeDeclaration+ END_TYPE ;

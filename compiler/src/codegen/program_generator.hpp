@@ -44,7 +44,8 @@ public:
     sema::TypeTable& types() { return types_; }
     Diagnostics& diagnostics() { return diagnostics_; }
     const OpcodeTable& opcodes() const { return opcodes_; }
-    /// A configuration global by name (VAR_EXTERNAL binds to it, 6.5.2.2).
+    /// A global of a configuration or global variable list by name (VAR_EXTERNAL binds to
+    /// it, 6.5.2.2).
     std::optional<Place> global(std::string_view name) const;
     /// The variable behind an address used directly in code (`%IW4`): one hidden static
     /// variable per address, bound to it like a located variable (ed. 3, 6.5.5).
@@ -80,7 +81,9 @@ private:
 
     void collect_constants(const std::vector<ast::DeclarationSection>& sections);
     void lay_out_globals(const ast::Configuration& configuration);
-    void lay_out_global_section(const ast::Configuration& configuration,
+    /// Globals of a configuration, resource or global variable list; symbols are named
+    /// `path_prefix` + the variable's name.
+    void lay_out_global_section(const std::string& path_prefix,
                                 const std::vector<ast::DeclarationSection>& sections);
     void lay_out_programs(const ast::Configuration& configuration);
     void default_program_instances();

@@ -35,6 +35,7 @@ public:
         for (const ast::Configuration& configuration : unit.configurations) {
             resolve_configuration(configuration);
         }
+        resolve_sections(unit.global_variable_lists, global_);
     }
 
 private:
@@ -592,6 +593,7 @@ private:
     /// `PROGRAM inst WITH task : Type (…)` (ed. 3, 6.8.2).
     void resolve_program_instance(const ast::ProgramInstance& instance,
                                   const Scope& resource_scope) {
+        check_not_a_global(instance.name);
         if (instance.task) {
             const Symbol* task = resource_scope.find_member(instance.task->name);
             if (task == nullptr || task->kind != SymbolKind::Task) {
@@ -611,6 +613,22 @@ private:
         }
         model_.bind(instance.type, *program);
         resolve_arguments(instance.connections, program->members, program->name, global_);
+    }
+
+    /// A program instance's variables are watched under its name (`Inst0.x`), global variable
+    /// lists' under theirs (`x`): one name cannot be both.
+    void check_not_a_global(const ast::Identifier& name) {
+        const Symbol* global = global_.find_member(name.name);
+        if (global == nullptr || global->kind != SymbolKind::Variable) {
+            return;
+        }
+        Diagnostic diagnostic;
+        diagnostic.range = name.range;
+        diagnostic.message =
+            fmt::format("'{}' is already the name of a global variable", name.name);
+        diagnostic.notes.push_back(
+            {global->declared, fmt::format("'{}' was declared here", global->name)});
+        state_.diagnostics.report(std::move(diagnostic));
     }
 
     ResolverState& state_;
