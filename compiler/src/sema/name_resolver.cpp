@@ -200,21 +200,31 @@ private:
                   fmt::format("unknown type '{}'", literal.type_name.name));
             return {};
         }
-        if (type->kind != SymbolKind::Type ||
-            !std::holds_alternative<ast::EnumType>(type->type->type.node)) {
+        if (!is_enumerated_type(*type)) {
             error(literal.type_name.range,
                   fmt::format("'{}' is not an enumerated type", literal.type_name.name));
             return {};
         }
-        model_.bind(literal.type_name, *type);
-        const Symbol* value = type->members->find_member(literal.value.name);
-        if (value == nullptr) {
-            error(literal.value.range, fmt::format("enumerated type '{}' has no value '{}'",
-                                                   type->name, literal.value.name));
+        return resolve_enum_value(literal.type_name, *type, literal.value);
+    }
+
+    /// The value `value` of the enumerated type `type`, named `type_name` where it is used.
+    ValueShape resolve_enum_value(const ast::Identifier& type_name, const Symbol& type,
+                                  const ast::Identifier& value) {
+        model_.bind(type_name, type);
+        const Symbol* symbol = type.members->find_member(value.name);
+        if (symbol == nullptr) {
+            error(value.range,
+                  fmt::format("enumerated type '{}' has no value '{}'", type.name, value.name));
             return {};
         }
-        model_.bind(literal.value, *value);
-        return shape_of_symbol(*value);
+        model_.bind(value, *symbol);
+        return shape_of_symbol(*symbol);
+    }
+
+    static bool is_enumerated_type(const Symbol& symbol) {
+        return symbol.kind == SymbolKind::Type &&
+               std::holds_alternative<ast::EnumType>(symbol.type->type.node);
     }
 
     ValueShape resolve_node(const ast::NameExpression& node, const Scope& scope) {
@@ -271,6 +281,13 @@ private:
     ValueShape resolve_node(const ast::DirectAddressExpression&, const Scope&) { return {}; }
 
     ValueShape resolve_node(const ast::MemberExpression& node, const Scope& scope) {
+        // `Color.Red`, CODESYS's spelling of Color#Red, unless a variable hides the type.
+        if (const auto* name = std::get_if<ast::NameExpression>(&node.object->node)) {
+            const Symbol* symbol = scope.find(name->name.name);
+            if (symbol != nullptr && is_enumerated_type(*symbol)) {
+                return resolve_enum_value(name->name, *symbol, node.member);
+            }
+        }
         const ValueShape object = resolve_expression(*node.object, scope);
         if (!object.known) {
             return {}; // already reported, or not knowable here

@@ -467,6 +467,9 @@ std::optional<std::int64_t> TypeTable::enumerator(const Symbol& value) {
 }
 
 std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expression) {
+    if (const Symbol* value = model_.enum_value(expression)) {
+        return enumerator(*value);
+    }
     if (const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node)) {
         if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
             if (integer->magnitude > static_cast<std::uint64_t>(INT64_MAX)) {
@@ -475,19 +478,12 @@ std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expre
             const auto magnitude = static_cast<std::int64_t>(integer->magnitude);
             return integer->negative ? -magnitude : magnitude;
         }
-        if (const auto* enumerated = std::get_if<ast::EnumValueLiteral>(&literal->value)) {
-            const Symbol* symbol = model_.resolved(enumerated->value);
-            return symbol != nullptr ? enumerator(*symbol) : std::nullopt;
-        }
         return std::nullopt;
     }
     if (const auto* name = std::get_if<ast::NameExpression>(&expression.node)) {
         const Symbol* symbol = model_.resolved(name->name);
         if (symbol == nullptr) {
             return std::nullopt;
-        }
-        if (symbol->kind == SymbolKind::EnumValue) {
-            return enumerator(*symbol);
         }
         // A constant's value (VAR CONSTANT / VAR_GLOBAL CONSTANT) with a plain initial value.
         if (symbol->kind == SymbolKind::Variable && symbol->variable != nullptr &&
