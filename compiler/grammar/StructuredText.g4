@@ -62,7 +62,8 @@ varSection
     | VAR_ACCESS accessDeclaration* END_VAR                                 # accessSection
     ;
 
-varQualifier : CONSTANT | RETAIN | NON_RETAIN ;
+// CODESYS's PERSISTENT (kept over a download too) is kept like RETAIN here: across power losses.
+varQualifier : CONSTANT | RETAIN | NON_RETAIN | PERSISTENT ;
 
 varDeclaration
     : identifier (',' identifier)* (AT DIRECT_ADDRESS)? ':' typeSpec (':=' initializer)? ';' ;
@@ -231,6 +232,7 @@ END_VAR : E N D '_' V A R ;
 CONSTANT : C O N S T A N T ;
 RETAIN : R E T A I N ;
 NON_RETAIN : N O N '_' R E T A I N ;
+PERSISTENT : P E R S I S T E N T ;
 AT : A T ;
 READ_ONLY : R E A D '_' O N L Y ;
 READ_WRITE : R E A D '_' W R I T E ;

@@ -39,7 +39,8 @@ ast::Retention retention_of(const antlr4::Token* token) {
     if (token == nullptr) {
         return ast::Retention::Unspecified;
     }
-    return token->getType() == P::RETAIN ? ast::Retention::Retain : ast::Retention::NonRetain;
+    // RETAIN, or CODESYS's PERSISTENT, which is kept the same way here.
+    return token->getType() == P::NON_RETAIN ? ast::Retention::NonRetain : ast::Retention::Retain;
 }
 
 } // namespace

@@ -18,14 +18,17 @@ using testing::HasSubstr;
 TEST(GlobalVariableList, ParsesAtTheTopLevelWithItsQualifiers) {
     const Parsed parsed = parse_text("VAR_GLOBAL CONSTANT kMax : INT := 4; END_VAR\n"
                                      "VAR_GLOBAL RETAIN kept, also : DINT; END_VAR\n"
-                                     "VAR_GLOBAL count : DINT; END_VAR\n");
+                                     "VAR_GLOBAL count : DINT; END_VAR\n"
+                                     "VAR_GLOBAL PERSISTENT RETAIN total : LINT; END_VAR\n");
     ASSERT_FALSE(parsed.diagnostics.has_errors()) << parsed.rendered();
-    ASSERT_EQ(parsed.unit.global_variable_lists.size(), 3u);
+    ASSERT_EQ(parsed.unit.global_variable_lists.size(), 4u);
     const auto& constants = std::get<ast::VarSection>(parsed.unit.global_variable_lists[0]);
     EXPECT_TRUE(constants.constant);
     const auto& kept = std::get<ast::VarSection>(parsed.unit.global_variable_lists[1]);
     EXPECT_EQ(kept.retention, ast::Retention::Retain);
     EXPECT_EQ(kept.variables.front().names.size(), 2u);
+    const auto& persistent = std::get<ast::VarSection>(parsed.unit.global_variable_lists[3]);
+    EXPECT_EQ(persistent.retention, ast::Retention::Retain);
 }
 
 TEST(GlobalVariableList, OnlyVarGlobalIsAllowedOutsideAPou) {
@@ -144,16 +147,19 @@ TEST(GlobalVariableList, VariablesAndConstantsServeEveryPouOfEveryFile) {
     EXPECT_EQ(run.get<std::int32_t>("Main.doubled"), 8);
 }
 
-TEST(GlobalVariableList, RetainVariablesAreInTheRetainLayout) {
+TEST(GlobalVariableList, RetainAndPersistentVariablesAreInTheRetainLayout) {
     StProgram run("VAR_GLOBAL RETAIN kept : DINT; END_VAR\nVAR_GLOBAL lost : DINT; END_VAR\n"
-                  "PROGRAM Main\nkept := lost;\nEND_PROGRAM\n");
+                  "VAR_GLOBAL PERSISTENT total : LINT; END_VAR\n"
+                  "PROGRAM Main\nkept := lost;\ntotal := kept;\nEND_PROGRAM\n");
     ASSERT_TRUE(run.ok()) << run.errors();
-    ASSERT_EQ(run.image().retain.size(), 1u);
-    const auto kept = std::find_if(run.image().symbols.begin(), run.image().symbols.end(),
-                                   [](const vm::Symbol& symbol) { return symbol.path == "kept"; });
-    ASSERT_NE(kept, run.image().symbols.end());
-    EXPECT_EQ(run.image().retain.front().offset, kept->offset);
-    EXPECT_EQ(run.image().retain.front().size, 4u);
+    const auto offset_of = [&](const std::string& path) {
+        const auto& symbols = run.image().symbols;
+        const auto it = std::find_if(symbols.begin(), symbols.end(),
+                                     [&](const vm::Symbol& symbol) { return symbol.path == path; });
+        return it == symbols.end() ? UINT32_MAX : it->offset;
+    };
+    EXPECT_EQ(run.image().retain,
+              (std::vector<vm::RetainRange>{{offset_of("kept"), 4}, {offset_of("total"), 8}}));
 }
 
 TEST(GlobalVariableList, AConstantCannotBeAssigned) {
