@@ -168,6 +168,15 @@ TEST(GlobalVariableList, AConstantCannotBeAssigned) {
                 HasSubstr("test.st:3:1: error: this variable cannot be assigned here"));
 }
 
+// Constants of several lists may refer to each other, so a cycle must end in an error.
+TEST(GlobalVariableList, AConstantDefinedThroughItselfHasNoValue) {
+    const std::string errors = diagnostics_of(
+        "VAR_GLOBAL CONSTANT a : INT := b; END_VAR\nVAR_GLOBAL CONSTANT b : INT := a; END_VAR\n"
+        "PROGRAM Main\nVAR x : ARRAY[1..a] OF INT; END_VAR\nEND_PROGRAM\n");
+    EXPECT_THAT(errors, HasSubstr("test.st:1:32: error: the initial value must be a constant INT"));
+    EXPECT_THAT(errors, HasSubstr("test.st:4:15: error: array bounds must be constants"));
+}
+
 TEST(GlobalVariableList, AccessPathsNameItsVariablesButNotItsNames) {
     constexpr const char* kProgram = "VAR_GLOBAL total : DINT; END_VAR\n"
                                      "PROGRAM Main\ntotal := total + 1;\nEND_PROGRAM\n"

@@ -488,10 +488,15 @@ std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expre
         // A constant's value (VAR CONSTANT / VAR_GLOBAL CONSTANT) with a plain initial value.
         if (symbol->kind == SymbolKind::Variable && symbol->variable != nullptr &&
             symbol->variable->initial_value && is_constant_(*symbol->variable)) {
-            if (const auto* value =
-                    std::get_if<ast::ExpressionPtr>(&symbol->variable->initial_value->value)) {
-                return fold_integer(**value);
+            const auto* value =
+                std::get_if<ast::ExpressionPtr>(&symbol->variable->initial_value->value);
+            // A constant defined through itself (`a := b; b := a;`) has no value.
+            if (value == nullptr || !constants_folding_.insert(symbol->variable).second) {
+                return std::nullopt;
             }
+            const auto folded = fold_integer(**value);
+            constants_folding_.erase(symbol->variable);
+            return folded;
         }
         return std::nullopt;
     }
