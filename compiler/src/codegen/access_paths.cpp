@@ -40,7 +40,8 @@ void ProgramGenerator::publish_access_paths(const ast::Configuration& configurat
 void ProgramGenerator::publish_access_path(const ast::Configuration& configuration,
                                            const ast::AccessDeclaration& declaration) {
     const std::string name = sema::fold_case(declaration.name.name);
-    // A global variable list's variables are published under their bare names too.
+    // Globals share the configuration's names, and a global variable list's are even
+    // published under the same bare names.
     const sema::Symbol* global = program_.model.global().find_member(name);
     if (global != nullptr && global->kind == sema::SymbolKind::Variable) {
         diagnostics_.error(
