@@ -17,11 +17,13 @@ libraryElement
     | functionBlockDeclaration
     | programDeclaration
     | configurationDeclaration
+    | varSection  // a CODESYS global variable list: only VAR_GLOBAL, checked when building the AST
     ;
 
 typeDeclarationBlock : TYPE typeDeclaration+ END_TYPE ;
 
-typeDeclaration : identifier ':' typeSpec (':=' initializer)? ';' ;
+// The ';' after a type declaration may be left out, as CODESYS allows (`END_STRUCT END_TYPE`).
+typeDeclaration : identifier ':' typeSpec (':=' initializer)? ';'? ;
 
 functionDeclaration
     : FUNCTION identifier (':' typeSpec)? varSection* statementList END_FUNCTION ;
@@ -60,7 +62,8 @@ varSection
     | VAR_ACCESS accessDeclaration* END_VAR                                 # accessSection
     ;
 
-varQualifier : CONSTANT | RETAIN | NON_RETAIN ;
+// CODESYS's PERSISTENT (kept over a download too) is kept like RETAIN here: across power losses.
+varQualifier : CONSTANT | RETAIN | NON_RETAIN | PERSISTENT ;
 
 varDeclaration
     : identifier (',' identifier)* (AT DIRECT_ADDRESS)? ':' typeSpec (':=' initializer)? ';' ;
@@ -229,6 +232,7 @@ END_VAR : E N D '_' V A R ;
 CONSTANT : C O N S T A N T ;
 RETAIN : R E T A I N ;
 NON_RETAIN : N O N '_' R E T A I N ;
+PERSISTENT : P E R S I S T E N T ;
 AT : A T ;
 READ_ONLY : R E A D '_' O N L Y ;
 READ_WRITE : R E A D '_' W R I T E ;

@@ -24,6 +24,9 @@ public:
 
     // ast_builder_declarations.cpp
     ast::TypeDeclaration type_declaration(P::TypeDeclarationContext& context);
+    /// A VAR_GLOBAL section at the top level of a file, appended to `lists`.
+    void global_variable_list(P::VarSectionContext& context,
+                              std::vector<ast::DeclarationSection>& lists);
     ast::Pou function(P::FunctionDeclarationContext& context);
     ast::Pou function_block(P::FunctionBlockDeclarationContext& context);
     ast::Pou program(P::ProgramDeclarationContext& context);

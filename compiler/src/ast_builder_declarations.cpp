@@ -39,7 +39,8 @@ ast::Retention retention_of(const antlr4::Token* token) {
     if (token == nullptr) {
         return ast::Retention::Unspecified;
     }
-    return token->getType() == P::RETAIN ? ast::Retention::Retain : ast::Retention::NonRetain;
+    // RETAIN, or CODESYS's PERSISTENT, which is kept the same way here.
+    return token->getType() == P::NON_RETAIN ? ast::Retention::NonRetain : ast::Retention::Retain;
 }
 
 } // namespace
@@ -50,7 +51,7 @@ ast::CompilationUnit build_ast(P::CompilationUnitContext& tree, FileId file,
 }
 
 ast::CompilationUnit AstBuilder::compilation_unit(P::CompilationUnitContext& context) {
-    ast::CompilationUnit unit{file_, {}, {}, {}};
+    ast::CompilationUnit unit{file_, {}, {}, {}, {}};
     for (P::LibraryElementContext* element : context.libraryElement()) {
         if (auto* types = element->typeDeclarationBlock()) {
             for (P::TypeDeclarationContext* declaration : types->typeDeclaration()) {
@@ -64,9 +65,23 @@ ast::CompilationUnit AstBuilder::compilation_unit(P::CompilationUnitContext& con
             unit.pous.push_back(program(*program_context));
         } else if (auto* configuration_context = element->configurationDeclaration()) {
             unit.configurations.push_back(configuration(*configuration_context));
+        } else if (auto* variables = element->varSection()) {
+            global_variable_list(*variables, unit.global_variable_lists);
         }
     }
     return unit;
+}
+
+void AstBuilder::global_variable_list(P::VarSectionContext& context,
+                                      std::vector<ast::DeclarationSection>& lists) {
+    ast::DeclarationSection section = std::move(sections({&context}).front());
+    const auto* variables = std::get_if<ast::VarSection>(&section);
+    if (variables == nullptr || variables->kind != ast::VarSectionKind::Global) {
+        error(range(*context.getStart()),
+              "only VAR_GLOBAL can be declared outside a POU or configuration");
+        return;
+    }
+    lists.push_back(std::move(section));
 }
 
 ast::TypeDeclaration AstBuilder::type_declaration(P::TypeDeclarationContext& context) {

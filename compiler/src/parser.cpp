@@ -112,13 +112,13 @@ ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostic
     tokens.fill();
     if (!report_lexical_errors(tokens, file, diagnostics) ||
         !check_nesting(tokens.getTokens(), file, diagnostics)) {
-        return ast::CompilationUnit{file, {}, {}, {}};
+        return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
     StructuredTextParser parser(&tokens);
     StructuredTextParser::CompilationUnitContext* tree =
         parse_two_stage(parser, tokens, file, diagnostics);
     if (diagnostics.error_count() != errors_before) {
-        return ast::CompilationUnit{file, {}, {}, {}};
+        return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
     return build_ast(*tree, file, diagnostics);
 }

@@ -10,13 +10,19 @@
 
 namespace eposp::compiler::test {
 
-StProgram::StProgram(const std::string& source) {
+StProgram::StProgram(const std::string& source)
+    : StProgram(std::vector<std::pair<std::string, std::string>>{{"test.st", source}}) {}
+
+StProgram::StProgram(const std::vector<std::pair<std::string, std::string>>& files) {
     vm::stdlib::register_standard_library(natives_);
     vm::stdlib::register_clock(natives_, [this] { return now_ns_; });
     SourceManager sources;
-    const FileId file = sources.add("test.st", source);
+    std::vector<FileId> ids;
+    for (const auto& [path, text] : files) {
+        ids.push_back(sources.add(path, text));
+    }
     Diagnostics diagnostics;
-    auto image = compile(sources, {&file, 1}, diagnostics);
+    auto image = compile(sources, ids, diagnostics);
     errors_ = render(diagnostics, sources);
     if (!image) {
         return;

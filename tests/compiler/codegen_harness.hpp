@@ -12,6 +12,8 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace eposp::compiler::test {
 
@@ -19,6 +21,8 @@ class StProgram {
 public:
     /// Compiles and links `source`; errors() says what went wrong if it did not.
     explicit StProgram(const std::string& source);
+    /// The same for a program of several (path, text) files.
+    explicit StProgram(const std::vector<std::pair<std::string, std::string>>& files);
 
     bool ok() const { return machine_.has_value(); }
     /// The rendered diagnostics (errors and warnings) of the compilation, or the link error.

@@ -58,6 +58,21 @@ TEST(TypeDeclaration, KeepsTheDefaultOfTheType) {
     ASSERT_TRUE(parsed.unit.types.front().initial_value);
 }
 
+// CODESYS writes `END_STRUCT` and `END_TYPE` with nothing between them.
+TEST(TypeDeclaration, SemicolonAfterADeclarationIsOptional) {
+    EXPECT_EQ(unit_sexpr("TYPE Axis :\nSTRUCT\n  pos : LREAL;\nEND_STRUCT\nEND_TYPE\n"
+                         "TYPE Color : (Red, Green) := Green Level : INT(0..5) END_TYPE\n"),
+              "(type Axis (struct (var pos LREAL)))\n(type Color (enum Red Green))\n"
+              "(type Level (subrange INT (int 0) (int 5)))\n");
+}
+
+TEST(TypeDeclaration, StructMembersStillEndWithASemicolon) {
+    EXPECT_EQ(parse_text("TYPE Axis :\nSTRUCT\n  pos : LREAL\nEND_STRUCT\nEND_TYPE\n").rendered(),
+              "test.st:4:1: error: expected ':=' or ';', found 'END_STRUCT'\n"
+              "END_STRUCT\n"
+              "^~~~~~~~~~\n");
+}
+
 TEST(VariableType, MultiDimensionalArrayWithRepetitionInitializer) {
     const test::Parsed parsed = parse_text(
         "PROGRAM P\nVAR m : ARRAY[1..2, 0..2] OF INT := [1, 2, 3(0), 2()]; END_VAR\nEND_PROGRAM");

@@ -102,8 +102,8 @@ TEST(ErrorMessages, SpeakTheLanguageOfTheProgrammer) {
               "expected 'END_PROGRAM', found 'END_FUNCTION'");
     EXPECT_EQ(parse_text("PROGRAM P x := 1 € 2; END_PROGRAM").first_message(),
               "unexpected character '€'");
-    EXPECT_EQ(parse_text("TYPE T : INT END_TYPE").first_message(),
-              "expected ':=' or ';', found 'END_TYPE'");
+    EXPECT_EQ(parse_text("TYPE T : STRUCT x : INT END_STRUCT END_TYPE").first_message(),
+              "expected ':=' or ';', found 'END_STRUCT'");
     EXPECT_EQ(parse_text("PROGRAM P VAR x INT; END_VAR END_PROGRAM").first_message(),
               "expected 'AT', ':' or ',', found 'INT'");
 }

@@ -159,6 +159,39 @@ TEST(RunCommand, WatchShowsCharactersAsLiteralsLikeStrings) {
     EXPECT_THAT(result.output, HasSubstr("Main.n = 65\n")) << "a USINT stays a number";
 }
 
+// Written as for CODESYS: types without ';' after END_STRUCT, a global variable list used in
+// another file without VAR_EXTERNAL, enumeration values as `E_State.ST_IDLE`.
+TEST(RunCommand, CodesysStyleFilesCompileAndRun) {
+    const std::string globals = write_source("gvl.st", R"(
+TYPE E_State : (ST_IDLE := 0, ST_RUN := 10, ST_ERR := 20); END_TYPE
+TYPE ST_Axis :
+STRUCT
+    name : STRING(20) := 'axis';
+    pos : LREAL;
+    state : E_State := E_State.ST_IDLE;
+END_STRUCT
+END_TYPE
+VAR_GLOBAL CONSTANT
+    MAX_AXES : INT := 4;
+END_VAR
+VAR_GLOBAL
+    gCount : DINT;
+END_VAR
+)");
+    const std::string main = write_source("main.st", R"(
+PROGRAM Main
+VAR axes : ARRAY[1..MAX_AXES] OF ST_Axis; i : INT; END_VAR
+FOR i := 1 TO MAX_AXES DO axes[i].pos := axes[i].pos + 1.0; END_FOR
+IF axes[1].state = E_State.ST_IDLE THEN gCount := gCount + 1; END_IF
+END_PROGRAM
+)");
+    const auto result = eposp("run " + globals + " " + main +
+                              " --for 30ms --watch gCount --watch Main.axes[4].pos");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("gCount = 4"));
+    EXPECT_THAT(result.output, HasSubstr("Main.axes[4].pos = 4"));
+}
+
 TEST(RunCommand, UnknownWatchPathIsAUserErrorBeforeTheRun) {
     const std::string source = write_source("counter.st", kCounter);
     const auto result = eposp("run " + source + " --watch Inst0.nothing");

@@ -40,6 +40,15 @@ void ProgramGenerator::publish_access_paths(const ast::Configuration& configurat
 void ProgramGenerator::publish_access_path(const ast::Configuration& configuration,
                                            const ast::AccessDeclaration& declaration) {
     const std::string name = sema::fold_case(declaration.name.name);
+    // Globals share the configuration's names, and a global variable list's are even
+    // published under the same bare names.
+    const sema::Symbol* global = program_.model.global().find_member(name);
+    if (global != nullptr && global->kind == sema::SymbolKind::Variable) {
+        diagnostics_.error(
+            declaration.name.range,
+            fmt::format("'{}' is already the name of a global variable", declaration.name.name));
+        return;
+    }
     if (instances_.contains(name) || !access_names_.insert(name).second) {
         diagnostics_.error(declaration.name.range,
                            fmt::format("'{}' is already the name of a program instance or an "

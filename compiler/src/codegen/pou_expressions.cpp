@@ -348,22 +348,22 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
     if (const auto* node = std::get_if<ast::LiteralExpression>(&expression.node)) {
         return literal(expression, *node, hint);
     }
+    if (const sema::Symbol* symbol = model_.enum_value(expression)) {
+        const sema::Type* type = types_.enumeration_of(*symbol);
+        const auto value = types_.enumerator(*symbol);
+        if (type == nullptr || !value) {
+            return std::nullopt;
+        }
+        std::vector<std::uint8_t> bytes(type->size);
+        for (std::uint32_t i = 0; i < type->size; ++i) {
+            bytes[i] = static_cast<std::uint8_t>(static_cast<std::uint64_t>(*value) >> (8 * i));
+        }
+        return Value{program_.constant(bytes, type->align), type};
+    }
     if (const auto* node = std::get_if<ast::NameExpression>(&expression.node)) {
         const sema::Symbol* symbol = model_.resolved(node->name);
         if (symbol == nullptr) {
             return std::nullopt;
-        }
-        if (symbol->kind == sema::SymbolKind::EnumValue) {
-            const sema::Type* type = types_.enumeration_of(*symbol);
-            const auto value = types_.enumerator(*symbol);
-            if (type == nullptr || !value) {
-                return std::nullopt;
-            }
-            std::vector<std::uint8_t> bytes(type->size);
-            for (std::uint32_t i = 0; i < type->size; ++i) {
-                bytes[i] = static_cast<std::uint8_t>(static_cast<std::uint64_t>(*value) >> (8 * i));
-            }
-            return Value{program_.constant(bytes, type->align), type};
         }
         if (symbol->kind != sema::SymbolKind::Variable &&
             !(symbol->kind == sema::SymbolKind::Pou && symbol->pou == &pou_)) {

@@ -44,6 +44,7 @@ ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnos
             for (const ast::Pou& pou : unit.pous) {
                 collect_constants(pou.sections);
             }
+            collect_constants(unit.global_variable_lists);
             for (const ast::Configuration& configuration : unit.configurations) {
                 collect_constants(configuration.sections);
                 for (const ast::Resource& resource : configuration.resources) {
@@ -137,6 +138,11 @@ vm::Operand ProgramGenerator::constant(const std::vector<std::uint8_t>& bytes,
 
 std::optional<vm::Image> ProgramGenerator::generate() {
     builder_.allocate(0, 1); // the NULL guard has its initial value even in an empty image
+    // Global variable lists are watched by the bare variable name (`count`), configuration
+    // globals with the configuration's (`Cell.count`).
+    for (const ast::CompilationUnit& unit : program_.units) {
+        lay_out_global_section("", unit.global_variable_lists);
+    }
     bool has_configuration = false;
     for (const ast::CompilationUnit& unit : program_.units) {
         for (const ast::Configuration& configuration : unit.configurations) {
@@ -230,14 +236,15 @@ std::uint32_t ProgramGenerator::stack_size() const {
 }
 
 void ProgramGenerator::lay_out_globals(const ast::Configuration& configuration) {
-    lay_out_global_section(configuration, configuration.sections);
+    const std::string path_prefix = configuration.name.name + ".";
+    lay_out_global_section(path_prefix, configuration.sections);
     for (const ast::Resource& resource : configuration.resources) {
-        lay_out_global_section(configuration, resource.sections);
+        lay_out_global_section(path_prefix, resource.sections);
     }
 }
 
 void ProgramGenerator::lay_out_global_section(
-    const ast::Configuration& configuration, const std::vector<ast::DeclarationSection>& sections) {
+    const std::string& path_prefix, const std::vector<ast::DeclarationSection>& sections) {
     for (const ast::DeclarationSection& section : sections) {
         const auto* variables = std::get_if<ast::VarSection>(&section);
         if (variables == nullptr) {
@@ -255,7 +262,7 @@ void ProgramGenerator::lay_out_global_section(
                 builder_.initialise(offset, bytes);
                 globals_[sema::fold_case(name.name)] =
                     Place::direct(*type, vm::Operand::global(offset), !variables->constant);
-                add_symbols(configuration.name.name + "." + name.name, *type, offset);
+                add_symbols(path_prefix + name.name, *type, offset);
                 if (variables->retention == ast::Retention::Retain) {
                     builder_.retain(offset, type->size);
                 }

@@ -44,7 +44,8 @@ public:
     sema::TypeTable& types() { return types_; }
     Diagnostics& diagnostics() { return diagnostics_; }
     const OpcodeTable& opcodes() const { return opcodes_; }
-    /// A configuration global by name (VAR_EXTERNAL binds to it, 6.5.2.2).
+    /// A global of a configuration or global variable list by name (VAR_EXTERNAL binds to
+    /// it, 6.5.2.2).
     std::optional<Place> global(std::string_view name) const;
     /// A program instance of the configuration by name (`Inst1` of `Inst1.out`, 6.8.2).
     std::optional<Place> program_instance_variable(std::string_view name) const;
@@ -82,7 +83,9 @@ private:
 
     void collect_constants(const std::vector<ast::DeclarationSection>& sections);
     void lay_out_globals(const ast::Configuration& configuration);
-    void lay_out_global_section(const ast::Configuration& configuration,
+    /// Globals of a configuration, resource or global variable list; symbols are named
+    /// `path_prefix` + the variable's name.
+    void lay_out_global_section(const std::string& path_prefix,
                                 const std::vector<ast::DeclarationSection>& sections);
     void lay_out_programs(const ast::Configuration& configuration);
     void default_program_instances();

@@ -38,6 +38,9 @@ public:
         for (const ast::Configuration& configuration : unit.configurations) {
             collect_configuration(configuration);
         }
+        // A global variable list's names join the global scope, which every POU's scope
+        // looks through: they are visible without VAR_EXTERNAL, as in CODESYS.
+        collect_sections(model_.global_scope(), unit.global_variable_lists);
     }
 
 private:

@@ -35,6 +35,7 @@ public:
         for (const ast::Configuration& configuration : unit.configurations) {
             resolve_configuration(configuration);
         }
+        resolve_sections(unit.global_variable_lists, global_);
     }
 
 private:
@@ -207,21 +208,31 @@ private:
                   fmt::format("unknown type '{}'", literal.type_name.name));
             return {};
         }
-        if (type->kind != SymbolKind::Type ||
-            !std::holds_alternative<ast::EnumType>(type->type->type.node)) {
+        if (!is_enumerated_type(*type)) {
             error(literal.type_name.range,
                   fmt::format("'{}' is not an enumerated type", literal.type_name.name));
             return {};
         }
-        model_.bind(literal.type_name, *type);
-        const Symbol* value = type->members->find_member(literal.value.name);
-        if (value == nullptr) {
-            error(literal.value.range, fmt::format("enumerated type '{}' has no value '{}'",
-                                                   type->name, literal.value.name));
+        return resolve_enum_value(literal.type_name, *type, literal.value);
+    }
+
+    /// The value `value` of the enumerated type `type`, named `type_name` where it is used.
+    ValueShape resolve_enum_value(const ast::Identifier& type_name, const Symbol& type,
+                                  const ast::Identifier& value) {
+        model_.bind(type_name, type);
+        const Symbol* symbol = type.members->find_member(value.name);
+        if (symbol == nullptr) {
+            error(value.range,
+                  fmt::format("enumerated type '{}' has no value '{}'", type.name, value.name));
             return {};
         }
-        model_.bind(literal.value, *value);
-        return shape_of_symbol(*value);
+        model_.bind(value, *symbol);
+        return shape_of_symbol(*symbol);
+    }
+
+    static bool is_enumerated_type(const Symbol& symbol) {
+        return symbol.kind == SymbolKind::Type &&
+               std::holds_alternative<ast::EnumType>(symbol.type->type.node);
     }
 
     ValueShape resolve_node(const ast::NameExpression& node, const Scope& scope) {
@@ -299,6 +310,13 @@ private:
     ValueShape resolve_node(const ast::DirectAddressExpression&, const Scope&) { return {}; }
 
     ValueShape resolve_node(const ast::MemberExpression& node, const Scope& scope) {
+        // `Color.Red`, CODESYS's spelling of Color#Red, unless a variable hides the type.
+        if (const auto* name = std::get_if<ast::NameExpression>(&node.object->node)) {
+            const Symbol* symbol = scope.find(name->name.name);
+            if (symbol != nullptr && is_enumerated_type(*symbol)) {
+                return resolve_enum_value(name->name, *symbol, node.member);
+            }
+        }
         const ValueShape object = resolve_expression(*node.object, scope);
         if (!object.known) {
             return {}; // already reported, or not knowable here
@@ -622,6 +640,7 @@ private:
     /// `PROGRAM inst WITH task : Type (…)` (ed. 3, 6.8.2).
     void resolve_program_instance(const ast::ProgramInstance& instance, const Scope& resource_scope,
                                   const Scope& connections) {
+        check_not_a_global(instance.name);
         if (instance.task) {
             const Symbol* task = resource_scope.find_member(instance.task->name);
             if (task == nullptr || task->kind != SymbolKind::Task) {
@@ -641,6 +660,22 @@ private:
         }
         model_.bind(instance.type, *program);
         resolve_arguments(instance.connections, program->members, program->name, connections);
+    }
+
+    /// A program instance's variables are watched under its name (`Inst0.x`), global variable
+    /// lists' under theirs (`x`): one name cannot be both.
+    void check_not_a_global(const ast::Identifier& name) {
+        const Symbol* global = global_.find_member(name.name);
+        if (global == nullptr || global->kind != SymbolKind::Variable) {
+            return;
+        }
+        Diagnostic diagnostic;
+        diagnostic.range = name.range;
+        diagnostic.message =
+            fmt::format("'{}' is already the name of a global variable", name.name);
+        diagnostic.notes.push_back(
+            {global->declared, fmt::format("'{}' was declared here", global->name)});
+        state_.diagnostics.report(std::move(diagnostic));
     }
 
     ResolverState& state_;

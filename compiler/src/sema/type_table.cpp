@@ -467,6 +467,9 @@ std::optional<std::int64_t> TypeTable::enumerator(const Symbol& value) {
 }
 
 std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expression) {
+    if (const Symbol* value = model_.enum_value(expression)) {
+        return enumerator(*value);
+    }
     if (const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node)) {
         if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
             if (integer->magnitude > static_cast<std::uint64_t>(INT64_MAX)) {
@@ -475,10 +478,6 @@ std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expre
             const auto magnitude = static_cast<std::int64_t>(integer->magnitude);
             return integer->negative ? -magnitude : magnitude;
         }
-        if (const auto* enumerated = std::get_if<ast::EnumValueLiteral>(&literal->value)) {
-            const Symbol* symbol = model_.resolved(enumerated->value);
-            return symbol != nullptr ? enumerator(*symbol) : std::nullopt;
-        }
         return std::nullopt;
     }
     if (const auto* name = std::get_if<ast::NameExpression>(&expression.node)) {
@@ -486,16 +485,18 @@ std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expre
         if (symbol == nullptr) {
             return std::nullopt;
         }
-        if (symbol->kind == SymbolKind::EnumValue) {
-            return enumerator(*symbol);
-        }
         // A constant's value (VAR CONSTANT / VAR_GLOBAL CONSTANT) with a plain initial value.
         if (symbol->kind == SymbolKind::Variable && symbol->variable != nullptr &&
             symbol->variable->initial_value && is_constant_(*symbol->variable)) {
-            if (const auto* value =
-                    std::get_if<ast::ExpressionPtr>(&symbol->variable->initial_value->value)) {
-                return fold_integer(**value);
+            const auto* value =
+                std::get_if<ast::ExpressionPtr>(&symbol->variable->initial_value->value);
+            // A constant defined through itself (`a := b; b := a;`) has no value.
+            if (value == nullptr || !constants_folding_.insert(symbol->variable).second) {
+                return std::nullopt;
             }
+            const auto folded = fold_integer(**value);
+            constants_folding_.erase(symbol->variable);
+            return folded;
         }
         return std::nullopt;
     }

@@ -13,6 +13,9 @@ struct CompilationUnit {
     std::vector<TypeDeclaration> types;
     std::vector<Pou> pous;
     std::vector<Configuration> configurations;
+    /// VAR_GLOBAL sections outside any POU or configuration (CODESYS global variable lists):
+    /// visible in every POU of the program.
+    std::vector<DeclarationSection> global_variable_lists;
 };
 
 } // namespace eposp::compiler::ast

@@ -23,6 +23,9 @@ public:
     /// What an identifier of the AST (a name, member, type name, enum value, formal argument,
     /// FOR variable…) refers to; null when it did not resolve (an error was reported).
     const Symbol* resolved(const ast::Identifier& identifier) const;
+    /// The enumeration value `expression` names (`Red`, `Color#Red` or CODESYS's `Color.Red`);
+    /// null for any other expression.
+    const Symbol* enum_value(const ast::Expression& expression) const;
     /// The members of an inline or declared STRUCT.
     const Scope* struct_members(const ast::TypeSpec& type) const;
 

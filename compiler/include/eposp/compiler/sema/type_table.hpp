@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace eposp::compiler::sema {
 
@@ -77,6 +78,7 @@ private:
     std::unordered_map<const ast::Pou*, const Type*> instances_;
     std::unordered_map<const ast::Pou*, const Type*> frames_;
     std::unordered_map<const ast::TypeSpec*, bool> in_progress_;
+    std::unordered_set<const ast::VariableDeclaration*> constants_folding_;
     std::unordered_map<const ast::EnumValue*, std::pair<const Type*, std::int64_t>> enum_values_;
 };
 
