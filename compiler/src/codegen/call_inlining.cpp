@@ -17,6 +17,7 @@ using vm::Operand;
 /// call and return cost about as much as the body; a larger body hides the call's cost.
 constexpr std::uint32_t kMaxInlinedLength = 24;
 
+// Every kind is listed (no default), so that a new kind of field cannot go unrelocated.
 bool is_memory_operand(Field field) {
     switch (field) {
     case Field::Read:
@@ -27,10 +28,18 @@ bool is_memory_operand(Field field) {
     case Field::ArrayWrite:
     case Field::ArrayIndex:
     case Field::NativeArguments:
+    case Field::Instance:
         return true;
-    default:
+    case Field::None:
+    case Field::Imm:
+    case Field::Size:
+    case Field::Target:
+    case Field::Pou:
+    case Field::Import:
+    case Field::JumpTable:
         return false;
     }
+    return false;
 }
 
 /// Calls would need the callee's frame where a call puts it; a jump table belongs to one
