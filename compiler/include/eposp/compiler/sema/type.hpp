@@ -68,6 +68,8 @@ struct Type {
     const Type* base = nullptr;               ///< Instance: the FB it EXTENDS
     std::vector<std::pair<std::string, std::int64_t>> enumerators{}; ///< Enum
     std::optional<ValueRange> range{}; ///< Elementary: the bounds of a subrange
+    /// The default initial value its type declaration gives (6.4.2); null: the usual default.
+    const ast::Initializer* initial_value = nullptr;
     /// Array: ARRAY[*, ...], whose bounds are known only when running (6.5.3); `dimensions`
     /// then only counts them. Struct: the reference a VAR_IN_OUT of it is passed by.
     bool conformant = false;
