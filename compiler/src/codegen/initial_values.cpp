@@ -6,6 +6,7 @@
 #include "eposp/vm/stdlib/string_layout.hpp"
 #include "program_generator.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <fmt/format.h>
 
@@ -239,10 +240,29 @@ const std::vector<std::uint8_t>& ProgramGenerator::default_value(const sema::Typ
     return default_values_[&type] = std::move(bytes);
 }
 
+// 6.4.4.2: a variable of an enumerated type holds one of the type's values: one of its names,
+// or a constant (or number, as CODESYS allows) equal to one of them.
+bool ProgramGenerator::is_enumerator_of(const ast::Expression& expression,
+                                        const sema::Type& enumeration) {
+    if (const sema::Symbol* value = program_.model.enum_value(expression)) {
+        const sema::Type* owner = types_.enumeration_of(*value);
+        return owner != nullptr && sema::same_type(*owner, enumeration);
+    }
+    const auto number = types_.fold_integer(expression);
+    return number && std::ranges::any_of(enumeration.enumerators, [&](const auto& enumerator) {
+               return enumerator.second == *number;
+           });
+}
+
 void ProgramGenerator::apply_initializer(const sema::Type& type,
                                          const ast::Initializer& initializer,
                                          std::span<std::uint8_t> bytes) {
     if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer.value)) {
+        if (type.kind == sema::TypeKind::Enum && !is_enumerator_of(**expression, type)) {
+            diagnostics_.error((*expression)->range,
+                               fmt::format("the initial value must be a value of {}", type.name));
+            return;
+        }
         if (const auto value = constant_value(**expression, type)) {
             std::copy(value->begin(), value->end(), bytes.begin());
         } else {

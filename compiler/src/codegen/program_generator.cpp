@@ -138,6 +138,7 @@ vm::Operand ProgramGenerator::constant(const std::vector<std::uint8_t>& bytes,
 
 std::optional<vm::Image> ProgramGenerator::generate() {
     builder_.allocate(0, 1); // the NULL guard has its initial value even in an empty image
+    check_type_defaults();
     // Global variable lists are watched by the bare variable name (`count`), configuration
     // globals with the configuration's (`Cell.count`).
     for (const ast::CompilationUnit& unit : program_.units) {
@@ -198,6 +199,19 @@ void ProgramGenerator::generate_bodies() {
         queue_.pop_front();
         PouGenerator generator(*this, *next.model, *next.pou, next.index);
         pou_frames_total_ += generator.generate();
+    }
+}
+
+void ProgramGenerator::check_type_defaults() {
+    for (const ast::CompilationUnit& unit : program_.units) {
+        for (const ast::TypeDeclaration& declaration : unit.types) {
+            const sema::Symbol* symbol = program_.model.global().find_member(declaration.name.name);
+            if (declaration.initial_value && symbol != nullptr && symbol->type == &declaration) {
+                if (const sema::Type* type = types_.named(*symbol)) {
+                    default_value(*type);
+                }
+            }
+        }
     }
 }
 

@@ -87,6 +87,10 @@ private:
     /// Writes `initializer` over the bytes of a value of `type`.
     void apply_initializer(const sema::Type& type, const ast::Initializer& initializer,
                            std::span<std::uint8_t> bytes);
+    bool is_enumerator_of(const ast::Expression& expression, const sema::Type& enumeration);
+    /// Computes the defaults type declarations give, so that their errors are reported even
+    /// when no variable uses the type.
+    void check_type_defaults();
     void collect_constants(const std::vector<ast::DeclarationSection>& sections);
     void lay_out_globals(const ast::Configuration& configuration);
     /// Globals of a configuration, resource or global variable list; symbols are named
