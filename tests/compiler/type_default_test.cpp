@@ -65,6 +65,16 @@ TEST(TypeDefault, ARenamedTypeWithADefaultIsStillItsBaseType) {
     EXPECT_EQ(run.get<std::int16_t>("Main.speed"), 101);
 }
 
+TEST(TypeDefault, OfAnEnumerationWithItsBaseTypeAfterTheValues) {
+    StProgram run("TYPE F : (p := 1, q := 2) DINT := q; END_TYPE\n"
+                  "PROGRAM Main\nVAR f : F; size : UDINT; END_VAR\nsize := SIZEOF(f);\n"
+                  "END_PROGRAM\n");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1));
+    EXPECT_EQ(run.get<std::int32_t>("Main.f"), 2);
+    EXPECT_EQ(run.get<std::uint32_t>("Main.size"), 4U);
+}
+
 struct BadDefault {
     std::string name;
     std::string types;
