@@ -100,7 +100,9 @@ private:
     void lay_out_programs(const ast::Configuration& configuration);
     void default_program_instances();
     std::uint32_t program_instance(const ast::Pou& program, const std::string& path, bool retain);
-    void add_symbols(const std::string& path, const sema::Type& type, std::uint32_t offset);
+    /// The symbol online access finds `path` by; a constant's is read-only.
+    void add_symbol(const std::string& path, const sema::Type& type, std::uint32_t offset,
+                    bool constant = false);
     // access_paths.cpp: VAR_ACCESS (6.5.2.2, 6.8.1) published as symbols named after them.
     void publish_access_paths(const ast::Configuration& configuration);
     void publish_access_path(const ast::Configuration& configuration,
