@@ -92,7 +92,8 @@ typeSpec
     | ARRAY '[' arrayDimension (',' arrayDimension)* ']' OF typeSpec        # arrayType
     | REF_TO typeSpec                                                       # referenceType
     | POINTER TO typeSpec                                                   # pointerType
-    | '(' enumValue (',' enumValue)* ')'                                    # enumType
+    // TwinCAT writes the base type after the values: `(a, b) UDINT`.
+    | '(' enumValue (',' enumValue)* ')' identifier?                        # enumType
     | identifier '(' subrange ')'                                           # subrangeType
     | identifier ('[' expression ']' | '(' expression ')')                  # sizedType
     | identifier '(' enumValue (',' enumValue)* ')'                         # typedEnumType

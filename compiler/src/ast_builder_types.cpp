@@ -33,6 +33,14 @@ std::vector<ast::EnumValue> enum_values(AstBuilder& builder,
     return result;
 }
 
+// `(a, b)`, `UDINT (a, b)` (IEC) or `(a, b) UDINT` (TwinCAT): `base` is null for the first.
+ast::EnumType enum_type(AstBuilder& builder, P::IdentifierContext* base,
+                        const std::vector<P::EnumValueContext*>& values) {
+    return {base != nullptr ? std::make_unique<ast::TypeSpec>(named_type(builder.identifier(*base)))
+                            : nullptr,
+            enum_values(builder, values)};
+}
+
 ast::Subrange subrange(AstBuilder& builder, P::SubrangeContext& context) {
     return {builder.expression(*context.expression(0)), builder.expression(*context.expression(1))};
 }
@@ -71,12 +79,10 @@ ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
         return pointer_to(ast::ReferenceType::Kind::Pointer, *pointer->typeSpec());
     }
     if (auto* enumeration = dynamic_cast<P::EnumTypeContext*>(&context)) {
-        return {where, ast::EnumType{nullptr, enum_values(*this, enumeration->enumValue())}};
+        return {where, enum_type(*this, enumeration->identifier(), enumeration->enumValue())};
     }
     if (auto* typed_enum = dynamic_cast<P::TypedEnumTypeContext*>(&context)) {
-        return {where, ast::EnumType{std::make_unique<ast::TypeSpec>(
-                                         named_type(identifier(*typed_enum->identifier()))),
-                                     enum_values(*this, typed_enum->enumValue())}};
+        return {where, enum_type(*this, typed_enum->identifier(), typed_enum->enumValue())};
     }
     if (auto* sub = dynamic_cast<P::SubrangeTypeContext*>(&context)) {
         return {where, ast::SubrangeType{std::make_unique<ast::TypeSpec>(

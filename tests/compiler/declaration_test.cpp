@@ -44,6 +44,14 @@ TEST(TypeDeclaration, EnumerationsPlainTypedAndWithDefault) {
               "(type Single (enum INT Only))\n");
 }
 
+// A base type after the values is TwinCAT's spelling of `UDINT (a, b, c)`.
+TEST(TypeDeclaration, EnumerationWithItsBaseTypeAfterTheValues) {
+    EXPECT_EQ(unit_sexpr("TYPE E : (a, b, c) UDINT; F : (p := 1, q := 2) DINT := q;\n"
+                         "  G : (u, v) H : INT; END_TYPE"),
+              "(type E (enum UDINT a b c))\n(type F (enum DINT p=(int 1) q=(int 2)))\n"
+              "(type G (enum u v))\n(type H INT)\n");
+}
+
 TEST(TypeDeclaration, SubrangeAliasReferencesAndStrings) {
     EXPECT_EQ(unit_sexpr("TYPE Percent : INT(0..100); Speed : LREAL; R : REF_TO INT; P : "
                          "POINTER TO Speed; Name : STRING[20]; WName : WSTRING(10); END_TYPE"),

@@ -78,11 +78,43 @@ END_CONFIGURATION
     h.loop.run_for(5ms);
     EXPECT_EQ(*h.runtime->read("count"), "3");
     EXPECT_EQ(h.runtime->write_value("Count", std::int32_t{0})->message,
-              "Count is a READ_ONLY access path");
+              "Count is read-only (a constant or a READ_ONLY access path)");
     EXPECT_EQ(h.runtime->force_value("Count", std::int32_t{0})->message,
-              "Count is a READ_ONLY access path");
+              "Count is read-only (a constant or a READ_ONLY access path)");
     ASSERT_FALSE(h.runtime->write_value("Inst0.counter", std::int32_t{0}))
         << "the variable itself stays writable by its own path";
+}
+
+TEST(OnlineAccess, ConstantsRefuseWritesAndForces) {
+    RuntimeHarness h;
+    ASSERT_EQ(h.load(R"(
+TYPE Point : STRUCT x, y : DINT; END_STRUCT; END_TYPE
+VAR_GLOBAL CONSTANT kListed : DINT := 1; END_VAR
+VAR_GLOBAL kVariable : DINT; END_VAR
+PROGRAM Main
+  VAR CONSTANT kLimit : DINT := 10; END_VAR
+  VAR counter : DINT; END_VAR
+  counter := kLimit + kListed;
+END_PROGRAM
+CONFIGURATION Config0
+  VAR_GLOBAL CONSTANT kOrigin : Point := (x := 1, y := 2); END_VAR
+  RESOURCE Res0 ON PLC
+    TASK Fast(INTERVAL := T#1ms, PRIORITY := 0);
+    PROGRAM Inst0 WITH Fast : Main;
+  END_RESOURCE
+END_CONFIGURATION
+)"),
+              "");
+    ASSERT_FALSE(h.runtime->start(StartMode::Cold));
+    for (const char* path : {"kListed", "Inst0.kLimit", "Config0.kOrigin.y"}) {
+        EXPECT_EQ(h.runtime->write_value(path, std::int32_t{5})->message,
+                  std::string(path) + " is read-only (a constant or a READ_ONLY access path)");
+        EXPECT_EQ(h.runtime->force_value(path, std::int32_t{5})->message,
+                  std::string(path) + " is read-only (a constant or a READ_ONLY access path)");
+    }
+    EXPECT_EQ(*h.runtime->read("Inst0.kLimit"), "10");
+    EXPECT_FALSE(h.runtime->write_value("kVariable", std::int32_t{5}));
+    EXPECT_FALSE(h.runtime->write_value("Inst0.counter", std::int32_t{5}));
 }
 
 TEST(OnlineAccess, AWriteOutsideASubrangeIsRefused) {

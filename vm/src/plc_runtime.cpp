@@ -237,7 +237,8 @@ core::Result<VariableLocation> PlcRuntime::writable(std::string_view path,
         return location;
     }
     if (location->read_only) {
-        return core::Error{fmt::format("{} is a READ_ONLY access path", path)};
+        return core::Error{
+            fmt::format("{} is read-only (a constant or a READ_ONLY access path)", path)};
     }
     const TypeDescriptor& type = image().types[location->type];
     const std::uint32_t size = type.size;

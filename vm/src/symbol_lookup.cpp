@@ -36,6 +36,7 @@ const Symbol* longest_symbol(const Image& image, std::string_view path) {
     return best;
 }
 
+// Walks fields and indices from a symbol; what is inside a read-only symbol is read-only too.
 class PathWalker {
 public:
     PathWalker(const Image& image, std::string_view path, std::size_t at, VariableLocation start)
@@ -61,7 +62,8 @@ private:
         const auto& type = image_.types[location_.type];
         for (const auto& f : type.fields) {
             if (same_name(f.name, name)) {
-                location_ = {location_.offset + f.offset, f.type};
+                location_.offset += f.offset;
+                location_.type = f.type;
                 return {};
             }
         }
@@ -93,8 +95,8 @@ private:
                 return "index " + std::to_string(index) + " outside " + type.name;
             }
             const auto element_size = image_.types[type.element].size;
-            location_ = {location_.offset + static_cast<std::uint32_t>(element) * element_size,
-                         type.element};
+            location_.offset += static_cast<std::uint32_t>(element) * element_size;
+            location_.type = type.element;
             while (at_ < path_.size() && path_[at_] == ' ') {
                 ++at_;
             }

@@ -6,6 +6,7 @@
 #include "eposp/vm/stdlib/string_layout.hpp"
 #include "program_generator.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <fmt/format.h>
 
@@ -183,6 +184,20 @@ void ProgramGenerator::check_in_subrange(const ast::Expression& expression, std:
 
 void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initializer* initializer,
                                      std::span<std::uint8_t> bytes) {
+    const std::vector<std::uint8_t>& defaults = default_value(type);
+    std::copy(defaults.begin(), defaults.end(), bytes.begin());
+    if (initializer != nullptr) {
+        apply_initializer(type, *initializer, bytes);
+    }
+}
+
+// Computed once per type, so that an error in a member's initializer is reported once, not
+// once per array element or variable of the type.
+const std::vector<std::uint8_t>& ProgramGenerator::default_value(const sema::Type& type) {
+    if (const auto it = default_values_.find(&type); it != default_values_.end()) {
+        return it->second;
+    }
+    std::vector<std::uint8_t> bytes(type.size);
     switch (type.kind) {
     case sema::TypeKind::String: {
         const auto empty = vm::stdlib::string_image(type.capacity, "");
@@ -190,10 +205,9 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
         break;
     }
     case sema::TypeKind::Array: {
-        const std::uint32_t count = type.size / std::max<std::uint32_t>(type.element->size, 1);
-        for (std::uint32_t i = 0; i < count; ++i) {
-            initial_value(*type.element, nullptr,
-                          bytes.subspan(i * type.element->size, type.element->size));
+        const std::vector<std::uint8_t>& element = default_value(*type.element);
+        for (auto at = bytes.begin(); !element.empty() && at != bytes.end(); at += element.size()) {
+            std::copy(element.begin(), element.end(), at);
         }
         break;
     }
@@ -207,7 +221,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
                 initial_value(*field.type,
                               field.declaration != nullptr ? field.declaration->initial_value.get()
                                                            : nullptr,
-                              bytes.subspan(field.offset, field.type->size));
+                              std::span(bytes).subspan(field.offset, field.type->size));
             }
         }
         break;
@@ -219,10 +233,36 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
         }
         break;
     }
-    if (initializer == nullptr) {
-        return;
+    // 6.4.2: the default a type declaration gives (`TYPE Speed : INT := 100;`).
+    if (type.initial_value != nullptr) {
+        apply_initializer(type, *type.initial_value, bytes);
     }
-    if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer->value)) {
+    return default_values_[&type] = std::move(bytes);
+}
+
+// 6.4.4.2: a variable of an enumerated type holds one of the type's values: one of its names,
+// or a constant (or number, as CODESYS allows) equal to one of them.
+bool ProgramGenerator::is_enumerator_of(const ast::Expression& expression,
+                                        const sema::Type& enumeration) {
+    if (const sema::Symbol* value = program_.model.enum_value(expression)) {
+        const sema::Type* owner = types_.enumeration_of(*value);
+        return owner != nullptr && sema::same_type(*owner, enumeration);
+    }
+    const auto number = types_.fold_integer(expression);
+    return number && std::ranges::any_of(enumeration.enumerators, [&](const auto& enumerator) {
+               return enumerator.second == *number;
+           });
+}
+
+void ProgramGenerator::apply_initializer(const sema::Type& type,
+                                         const ast::Initializer& initializer,
+                                         std::span<std::uint8_t> bytes) {
+    if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer.value)) {
+        if (type.kind == sema::TypeKind::Enum && !is_enumerator_of(**expression, type)) {
+            diagnostics_.error((*expression)->range,
+                               fmt::format("the initial value must be a value of {}", type.name));
+            return;
+        }
         if (const auto value = constant_value(**expression, type)) {
             std::copy(value->begin(), value->end(), bytes.begin());
         } else {
@@ -232,9 +272,9 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
         return;
     }
     if (const auto* elements =
-            std::get_if<std::vector<ast::ArrayInitElement>>(&initializer->value)) {
+            std::get_if<std::vector<ast::ArrayInitElement>>(&initializer.value)) {
         if (type.kind != sema::TypeKind::Array) {
-            diagnostics_.error(initializer->range, fmt::format("{} is not an array", type.name));
+            diagnostics_.error(initializer.range, fmt::format("{} is not an array", type.name));
             return;
         }
         const std::uint32_t size = type.element->size;
@@ -252,7 +292,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
             }
             for (std::int64_t i = 0; i < repeat; ++i, ++next) {
                 if (next >= count) {
-                    diagnostics_.error(initializer->range,
+                    diagnostics_.error(initializer.range,
                                        fmt::format("too many initial values for {}", type.name));
                     return;
                 }
@@ -264,7 +304,7 @@ void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initiali
         }
         return;
     }
-    const auto& members = std::get<std::vector<ast::StructInitElement>>(initializer->value);
+    const auto& members = std::get<std::vector<ast::StructInitElement>>(initializer.value);
     for (const ast::StructInitElement& member : members) {
         const sema::Field* field = type.field(member.member.name);
         if (field == nullptr ||

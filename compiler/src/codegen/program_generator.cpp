@@ -138,6 +138,7 @@ vm::Operand ProgramGenerator::constant(const std::vector<std::uint8_t>& bytes,
 
 std::optional<vm::Image> ProgramGenerator::generate() {
     builder_.allocate(0, 1); // the NULL guard has its initial value even in an empty image
+    check_type_defaults();
     // Global variable lists are watched by the bare variable name (`count`), configuration
     // globals with the configuration's (`Cell.count`).
     for (const ast::CompilationUnit& unit : program_.units) {
@@ -198,6 +199,19 @@ void ProgramGenerator::generate_bodies() {
         queue_.pop_front();
         PouGenerator generator(*this, *next.model, *next.pou, next.index);
         pou_frames_total_ += generator.generate();
+    }
+}
+
+void ProgramGenerator::check_type_defaults() {
+    for (const ast::CompilationUnit& unit : program_.units) {
+        for (const ast::TypeDeclaration& declaration : unit.types) {
+            const sema::Symbol* symbol = program_.model.global().find_member(declaration.name.name);
+            if (declaration.initial_value && symbol != nullptr && symbol->type == &declaration) {
+                if (const sema::Type* type = types_.named(*symbol)) {
+                    default_value(*type);
+                }
+            }
+        }
     }
 }
 
@@ -262,7 +276,7 @@ void ProgramGenerator::lay_out_global_section(
                 builder_.initialise(offset, bytes);
                 globals_[sema::fold_case(name.name)] =
                     Place::direct(*type, vm::Operand::global(offset), !variables->constant);
-                add_symbols(path_prefix + name.name, *type, offset);
+                add_symbol(path_prefix + name.name, *type, offset, variables->constant);
                 if (variables->retention == ast::Retention::Retain) {
                     builder_.retain(offset, type->size);
                 }
@@ -281,7 +295,7 @@ std::uint32_t ProgramGenerator::program_instance(const ast::Pou& program, const 
     std::vector<std::uint8_t> bytes(type->size);
     initial_value(*type, nullptr, bytes);
     builder_.initialise(offset, bytes);
-    add_symbols(path, *type, offset);
+    add_symbol(path, *type, offset);
     instances_[sema::fold_case(path)] = Place::direct(*type, vm::Operand::global(offset));
     // RETAIN variables of the program (6.5.6), or all of it for a RETAIN instance.
     if (retain) {
@@ -297,6 +311,10 @@ std::uint32_t ProgramGenerator::program_instance(const ast::Pou& program, const 
                 const sema::Field* field = type->field(name.name);
                 if (field == nullptr) {
                     continue;
+                }
+                if (variables->constant) {
+                    // A symbol of its own, longer than the instance's, marks it read-only.
+                    add_symbol(path + "." + name.name, *field->type, offset + field->offset, true);
                 }
                 if (!retain && variables->retention == ast::Retention::Retain) {
                     builder_.retain(offset + field->offset, field->type->size);
@@ -416,9 +434,10 @@ void ProgramGenerator::default_program_instances() {
     }
 }
 
-void ProgramGenerator::add_symbols(const std::string& path, const sema::Type& type,
-                                   std::uint32_t offset) {
-    builder_.symbol(path, type_descriptor(type), offset);
+void ProgramGenerator::add_symbol(const std::string& path, const sema::Type& type,
+                                  std::uint32_t offset, bool constant) {
+    // A constant is refused online writes and forces like a READ_ONLY access path.
+    builder_.symbol(path, type_descriptor(type), offset, constant);
 }
 
 std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {

@@ -67,6 +67,9 @@ public:
     /// declared defaults: STRING headers, structure member and FB variable defaults.
     void initial_value(const sema::Type& type, const ast::Initializer* initializer,
                        std::span<std::uint8_t> bytes);
+    /// The bytes of a variable of `type` without an initializer of its own: the type's
+    /// default, its members' and elements' declared defaults included.
+    const std::vector<std::uint8_t>& default_value(const sema::Type& type);
     /// The value of a constant expression of type `type`, encoded as in memory.
     std::optional<std::vector<std::uint8_t>> constant_value(const ast::Expression& expression,
                                                             const sema::Type& type);
@@ -81,6 +84,13 @@ private:
         std::uint32_t index;
     };
 
+    /// Writes `initializer` over the bytes of a value of `type`.
+    void apply_initializer(const sema::Type& type, const ast::Initializer& initializer,
+                           std::span<std::uint8_t> bytes);
+    bool is_enumerator_of(const ast::Expression& expression, const sema::Type& enumeration);
+    /// Computes the defaults type declarations give, so that their errors are reported even
+    /// when no variable uses the type.
+    void check_type_defaults();
     void collect_constants(const std::vector<ast::DeclarationSection>& sections);
     void lay_out_globals(const ast::Configuration& configuration);
     /// Globals of a configuration, resource or global variable list; symbols are named
@@ -90,7 +100,9 @@ private:
     void lay_out_programs(const ast::Configuration& configuration);
     void default_program_instances();
     std::uint32_t program_instance(const ast::Pou& program, const std::string& path, bool retain);
-    void add_symbols(const std::string& path, const sema::Type& type, std::uint32_t offset);
+    /// The symbol online access finds `path` by; a constant's is read-only.
+    void add_symbol(const std::string& path, const sema::Type& type, std::uint32_t offset,
+                    bool constant = false);
     // access_paths.cpp: VAR_ACCESS (6.5.2.2, 6.8.1) published as symbols named after them.
     void publish_access_paths(const ast::Configuration& configuration);
     void publish_access_path(const ast::Configuration& configuration,
@@ -125,6 +137,7 @@ private:
     std::unordered_map<std::string, std::uint32_t> imports_;
     std::map<std::pair<std::vector<std::uint8_t>, std::uint32_t>, std::uint32_t> constants_;
     std::unordered_map<const sema::Type*, std::uint32_t> descriptors_;
+    std::unordered_map<const sema::Type*, std::vector<std::uint8_t>> default_values_;
     std::vector<vm::Task> tasks_;
     std::uint32_t pou_frames_total_ = 0;
     std::unordered_set<const ast::VariableDeclaration*> constants_declared_;

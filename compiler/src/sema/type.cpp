@@ -148,6 +148,10 @@ bool same_type(const Type& a, const Type& b) {
     if (&a == &b) {
         return true;
     }
+    if (a.renames != nullptr || b.renames != nullptr) {
+        return same_type(a.renames != nullptr ? *a.renames : a,
+                         b.renames != nullptr ? *b.renames : b);
+    }
     if (a.range || b.range) {
         return a.range && b.range && a.elementary == b.elementary &&
                a.range->lower == b.range->lower && a.range->upper == b.range->upper;

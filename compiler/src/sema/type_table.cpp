@@ -362,6 +362,12 @@ const Type* TypeTable::named(const Symbol& symbol) {
     if (symbol.kind != SymbolKind::Type) {
         return nullptr;
     }
+    const Type* type = declared(symbol);
+    return type != nullptr && symbol.type->initial_value ? &with_default(*type, *symbol.type)
+                                                         : type;
+}
+
+const Type* TypeTable::declared(const Symbol& symbol) {
     const ast::TypeSpec& spec = symbol.type->type;
     if (const auto* enumeration_spec = std::get_if<ast::EnumType>(&spec.node)) {
         if (const auto it = specs_.find(&spec); it != specs_.end()) {
@@ -377,6 +383,28 @@ const Type* TypeTable::named(const Symbol& symbol) {
         const_cast<Type*>(type)->name = symbol.name; // named on first use, for messages
     }
     return type;
+}
+
+// 6.4.2: a type declaration may give its own default. A type made for this declaration
+// carries it; a shared one (INT, STRING[80], another declared type) is renamed into a copy.
+const Type& TypeTable::with_default(const Type& type, const ast::TypeDeclaration& declaration) {
+    const auto& spec = declaration.type.node;
+    if (std::holds_alternative<ast::EnumType>(spec) ||
+        std::holds_alternative<ast::SubrangeType>(spec) ||
+        std::holds_alternative<ast::StructType>(spec) ||
+        std::holds_alternative<ast::ArrayType>(spec)) {
+        const_cast<Type&>(type).initial_value = declaration.initial_value.get();
+        return type;
+    }
+    auto& renamed = renamed_with_default_[&declaration];
+    if (renamed == nullptr) {
+        Type copy = type;
+        copy.name = declaration.name.name;
+        copy.initial_value = declaration.initial_value.get();
+        copy.renames = type.renames != nullptr ? type.renames : &type;
+        renamed = &add(std::move(copy));
+    }
+    return *renamed;
 }
 
 const Type* TypeTable::instance(const ast::Pou& pou) {

@@ -138,7 +138,8 @@ struct Symbol {
     std::string path;
     std::uint32_t type = 0;
     std::uint32_t offset = 0;
-    bool read_only = false; ///< a READ_ONLY access path (VAR_ACCESS): online writes are refused
+    /// A READ_ONLY access path (VAR_ACCESS) or a constant: online writes and forces are refused.
+    bool read_only = false;
     bool operator==(const Symbol&) const = default;
 };
 

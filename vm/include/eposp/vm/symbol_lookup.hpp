@@ -11,7 +11,7 @@ namespace eposp::vm {
 struct VariableLocation {
     std::uint32_t offset = 0;
     std::uint32_t type = 0;
-    bool read_only = false; ///< reached through a READ_ONLY access path
+    bool read_only = false; ///< a constant, or reached through a READ_ONLY access path
 };
 
 /// Resolves a full variable path such as `Main.counter`, `Main.axis[2].pos` or `Main.m[1, 3]`

@@ -68,6 +68,11 @@ struct Type {
     const Type* base = nullptr;               ///< Instance: the FB it EXTENDS
     std::vector<std::pair<std::string, std::int64_t>> enumerators{}; ///< Enum
     std::optional<ValueRange> range{}; ///< Elementary: the bounds of a subrange
+    /// The default initial value its type declaration gives (6.4.2); null: the usual default.
+    const ast::Initializer* initial_value = nullptr;
+    /// A declared type with its own default made of a shared type (`TYPE Speed : INT := 100`):
+    /// that type, the same type as this one; null otherwise.
+    const Type* renames = nullptr;
     /// Array: ARRAY[*, ...], whose bounds are known only when running (6.5.3); `dimensions`
     /// then only counts them. Struct: the reference a VAR_IN_OUT of it is passed by.
     bool conformant = false;
@@ -88,9 +93,9 @@ bool is_scalar(const Type& type);
 /// The VM representation of a scalar type.
 vm::Scalar scalar_of(const Type& type);
 
-/// Whether two types are the same: the same object, arrays of the same bounds and the same
-/// element type, or subranges of the same base and bounds (array and subrange types are not
-/// interned, each declaration makes its own).
+/// Whether two types are the same: the same object (or one renames the other), arrays of the same
+/// bounds and the same element type, or subranges of the same base and bounds (array and subrange
+/// types are not interned, each declaration makes its own).
 bool same_type(const Type& a, const Type& b);
 
 /// Whether `actual` may be passed to the VAR_IN_OUT ARRAY[*] `formal` (6.5.3): an array, of

@@ -61,6 +61,9 @@ private:
     const Type* structure(const ast::StructType& spec);
     const Type* enumeration(const ast::EnumType& spec, std::string name);
     const Type* subrange(const ast::SubrangeType& spec);
+    /// The type a type declaration spells, without the declaration's own default.
+    const Type* declared(const Symbol& symbol);
+    const Type& with_default(const Type& type, const ast::TypeDeclaration& declaration);
     void lay_out(Type& type, const std::vector<const ast::VariableDeclaration*>& declarations,
                  const std::vector<ast::VarSectionKind>& sections, std::uint32_t start);
 
@@ -76,6 +79,7 @@ private:
     const Type* null_ = nullptr;
     std::unordered_map<const ast::TypeSpec*, const Type*> specs_;
     std::unordered_map<const ast::Pou*, const Type*> instances_;
+    std::unordered_map<const ast::TypeDeclaration*, const Type*> renamed_with_default_;
     std::unordered_map<const ast::Pou*, const Type*> frames_;
     std::unordered_map<const ast::TypeSpec*, bool> in_progress_;
     std::unordered_set<const ast::VariableDeclaration*> constants_folding_;
