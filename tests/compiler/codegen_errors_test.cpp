@@ -268,6 +268,21 @@ INSTANTIATE_TEST_SUITE_P(
                     IndexTrap{"SumWrapsAround", "j : DINT := 2147483647;", "a[j + 2]"}),
     [](const auto& param_info) { return param_info.param.name; });
 
+// Each index of a multi-dimensional array is checked against its own dimension, even where
+// the position it gives overall would be inside the array.
+TEST(RunTimeErrors, EveryIndexOfAMatrixIsChecked) {
+    StProgram run(R"(
+PROGRAM Main
+VAR m : ARRAY[0..2, 1..3] OF INT; i : INT := 0; j : INT := 4; x : INT; END_VAR
+m[2, 3] := 7;
+x := m[i, j];
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    EXPECT_FALSE(run.scans(1));
+    EXPECT_EQ(run.fault(), "array index out of range in Main at line 5");
+}
+
 TEST(Robustness, GarbageNeverCrashes) {
     for (const char* source :
          {"PROGRAM Main VAR x : INT; END_VAR x := x. ; END_PROGRAM",

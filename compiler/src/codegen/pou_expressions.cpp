@@ -253,7 +253,9 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
             return std::nullopt;
         }
     }
-    // More dimensions: the linear index, sum of (i_d - lower_d) * stride_d, as a DINT.
+    // More dimensions: the linear index, sum of (i_d - lower_d) * stride_d, as a DINT. Each
+    // index is checked against its own dimension (IdxDim with constant bounds): m[0, 5] of an
+    // ARRAY[0..2, 0..2] is out of range, not m[1, 2].
     Operand linear = one ? single->operand : Operand{};
     for (std::size_t d = 0; !one && d < node.indices.size(); ++d) {
         const auto value = index_value(*node.indices[d]);
@@ -262,8 +264,9 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         }
         const auto& dimension = type.dimensions[d];
         const Operand term = temp(dint);
-        emit(Opcode::AddI32, term, value->operand,
-             Operand::imm(static_cast<std::uint32_t>(-dimension.lower)));
+        emit(Opcode::IdxDim, term,
+             dimension_constant(static_cast<std::int32_t>(dimension.lower), dimension.count),
+             value->operand);
         if (d == 0) {
             linear = term;
         } else {
@@ -690,6 +693,16 @@ Value PouGenerator::widened(const Value& value, const ast::Expression& expressio
         return Value{dint_constant(*constant), &types_.elementary(E::Dint), value.type};
     }
     return widened(value);
+}
+
+Operand PouGenerator::dimension_constant(std::int32_t lower, std::uint32_t count) {
+    std::vector<std::uint8_t> bytes(8);
+    const auto low = static_cast<std::uint32_t>(lower);
+    for (int i = 0; i < 4; ++i) {
+        bytes[i] = static_cast<std::uint8_t>(low >> (8 * i));
+        bytes[4 + i] = static_cast<std::uint8_t>(count >> (8 * i));
+    }
+    return program_.constant(bytes, 4);
 }
 
 Operand PouGenerator::dint_constant(std::int32_t value) {

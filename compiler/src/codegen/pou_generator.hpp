@@ -162,6 +162,8 @@ private:
     /// `value` of `expression` widened: a literal becomes a DINT constant, not a conversion.
     Value widened(const Value& value, const ast::Expression& expression);
     vm::Operand dint_constant(std::int32_t value);
+    /// The bounds IdxDim checks one index against: lower (DINT) then count (UDINT).
+    vm::Operand dimension_constant(std::int32_t lower, std::uint32_t count);
     std::optional<std::pair<Value, Value>> unify(const Value& left, const Value& right,
                                                  const SourceRange& range);
     static bool is_small_integer(const sema::Type& type);
