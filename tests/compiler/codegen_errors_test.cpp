@@ -34,6 +34,10 @@ INSTANTIATE_TEST_SUITE_P(
                  "DINT_TO_INT)"},
         Rejected{"RealToInteger", main_with("i : DINT;", "i := 1.5;"),
                  "a LREAL value cannot be used as DINT"},
+        Rejected{"SizeofOfAnArrayOfUnknownBounds",
+                 "FUNCTION F : DINT\nVAR_IN_OUT a : ARRAY[*] OF INT; END_VAR\nF := SIZEOF(a);\n"
+                 "END_FUNCTION\n",
+                 "test.st:3:6: error: the size of an ARRAY[*] is known only when running"},
         Rejected{"TypedReferenceToAnotherArray",
                  main_with("a : ARRAY[0..3] OF INT; p : REF_TO ARRAY[0..9] OF INT;", "p := REF(a);"),
                  "a REF_TO ARRAY[0..3] OF INT value cannot be used as REF_TO ARRAY[0..9] OF INT\n"},

@@ -131,6 +131,11 @@ std::optional<Value> PouGenerator::address_or_size(const std::string& name,
         // access through it); REF() is the typed, IEC way.
         return Value{address_of(*target), &types_.reference(nullptr)};
     }
+    if (type->conformant) {
+        error(range, "the size of an ARRAY[*] is known only when running: use LOWER_BOUND and "
+                     "UPPER_BOUND");
+        return std::nullopt;
+    }
     // SIZEOF: a constant of the smallest unsigned type that holds the size (CODESYS), so that
     // it fits a UINT parameter as well as a DINT.
     const sema::Type& size_type = types_.elementary(type->size < 0x100     ? E::Usint
