@@ -91,10 +91,16 @@ TEST(OnlineAccess, ConstantsRefuseWritesAndForces) {
 TYPE Point : STRUCT x, y : DINT; END_STRUCT; END_TYPE
 VAR_GLOBAL CONSTANT kListed : DINT := 1; END_VAR
 VAR_GLOBAL kVariable : DINT; END_VAR
+FUNCTION_BLOCK Gain
+  VAR CONSTANT k : DINT := 3; END_VAR
+  VAR_OUTPUT y : DINT; END_VAR
+  y := k;
+END_FUNCTION_BLOCK
 PROGRAM Main
   VAR CONSTANT kLimit : DINT := 10; END_VAR
-  VAR counter : DINT; END_VAR
-  counter := kLimit + kListed;
+  VAR counter : DINT; gain : Gain; END_VAR
+  gain();
+  counter := kLimit + kListed + gain.y;
 END_PROGRAM
 CONFIGURATION Config0
   VAR_GLOBAL CONSTANT kOrigin : Point := (x := 1, y := 2); END_VAR
@@ -106,7 +112,7 @@ END_CONFIGURATION
 )"),
               "");
     ASSERT_FALSE(h.runtime->start(StartMode::Cold));
-    for (const char* path : {"kListed", "Inst0.kLimit", "Config0.kOrigin.y"}) {
+    for (const char* path : {"kListed", "Inst0.kLimit", "Config0.kOrigin.y", "Inst0.gain.k"}) {
         EXPECT_EQ(h.runtime->write_value(path, std::int32_t{5})->message,
                   std::string(path) + " is read-only (a constant or a READ_ONLY access path)");
         EXPECT_EQ(h.runtime->force_value(path, std::int32_t{5})->message,
@@ -115,6 +121,7 @@ END_CONFIGURATION
     EXPECT_EQ(*h.runtime->read("Inst0.kLimit"), "10");
     EXPECT_FALSE(h.runtime->write_value("kVariable", std::int32_t{5}));
     EXPECT_FALSE(h.runtime->write_value("Inst0.counter", std::int32_t{5}));
+    EXPECT_FALSE(h.runtime->write_value("Inst0.gain.y", std::int32_t{5}));
 }
 
 TEST(OnlineAccess, AWriteOutsideASubrangeIsRefused) {

@@ -190,10 +190,11 @@ void describe_types(Io& io, std::vector<TypeDescriptor>& types) {
         io.u32(t.element);
         io.i32(t.lower);
         io.u32(t.count);
-        io.list(t.fields, 12, [&](TypeField& f) {
+        io.list(t.fields, 13, [&](TypeField& f) {
             io.string(f.name);
             io.u32(f.type);
             io.u32(f.offset);
+            io.boolean(f.read_only);
         });
         io.boolean(t.subrange);
         io.i64(t.lowest);

@@ -64,6 +64,7 @@ private:
             if (same_name(f.name, name)) {
                 location_.offset += f.offset;
                 location_.type = f.type;
+                location_.read_only = location_.read_only || f.read_only;
                 return {};
             }
         }

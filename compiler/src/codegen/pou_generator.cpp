@@ -1,5 +1,7 @@
 #include "pou_generator.hpp"
 
+#include "constant_declarations.hpp"
+
 #include "eposp/compiler/sema/symbol.hpp"
 
 #include <fmt/format.h>
@@ -63,24 +65,6 @@ void PouGenerator::error(const SourceRange& range, std::string message) {
 void PouGenerator::warning(const SourceRange& range, std::string message) {
     program_.diagnostics().warning(range, std::move(message));
 }
-
-namespace {
-
-/// Whether `declaration` is in a VAR CONSTANT section of `pou`.
-bool is_constant(const ast::Pou& pou, const ast::VariableDeclaration* declaration) {
-    for (const ast::DeclarationSection& section : pou.sections) {
-        if (const auto* variables = std::get_if<ast::VarSection>(&section)) {
-            for (const ast::VariableDeclaration& candidate : variables->variables) {
-                if (&candidate == declaration) {
-                    return variables->constant;
-                }
-            }
-        }
-    }
-    return false;
-}
-
-} // namespace
 
 void PouGenerator::declare_locals() {
     const bool function = pou_.kind == ast::PouKind::Function;

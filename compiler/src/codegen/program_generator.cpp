@@ -2,6 +2,7 @@
 
 #include "back_edge_duplication.hpp"
 #include "call_inlining.hpp"
+#include "constant_declarations.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "jump_threading.hpp"
 #include "pou_generator.hpp"
@@ -312,10 +313,6 @@ std::uint32_t ProgramGenerator::program_instance(const ast::Pou& program, const 
                 if (field == nullptr) {
                     continue;
                 }
-                if (variables->constant) {
-                    // A symbol of its own, longer than the instance's, marks it read-only.
-                    add_symbol(path + "." + name.name, *field->type, offset + field->offset, true);
-                }
                 if (!retain && variables->retention == ast::Retention::Retain) {
                     builder_.retain(offset + field->offset, field->type->size);
                 }
@@ -477,8 +474,10 @@ std::uint32_t ProgramGenerator::type_descriptor(const sema::Type& type) {
         descriptor.kind = vm::TypeKind::Struct;
         for (const sema::Type* part = &type; part != nullptr; part = part->base) {
             for (const sema::Field& field : part->fields) {
+                const bool constant =
+                    part->pou != nullptr && is_constant(*part->pou, field.declaration);
                 descriptor.fields.push_back(
-                    {field.name, type_descriptor(*field.type), field.offset});
+                    {field.name, type_descriptor(*field.type), field.offset, constant});
             }
         }
         break;

@@ -110,6 +110,7 @@ struct TypeField {
     std::string name;
     std::uint32_t type = 0;
     std::uint32_t offset = 0;
+    bool read_only = false; ///< a VAR CONSTANT of an FB or program: online writes are refused
     bool operator==(const TypeField&) const = default;
 };
 
