@@ -69,6 +69,9 @@ INSTANTIATE_TEST_SUITE_P(
                       "CASE s OF 0..9: x := 1; 10..19: x := 2; ELSE x := 3; END_CASE;", 3},
         StatementCase{"CaseNegativeLabel", "s : INT := -2;",
                       "CASE s OF -5..-1: x := 1; 0: x := 2; END_CASE;", 1},
+        // A label range spanning all of LINT (its width does not fit 64 bits signed).
+        StatementCase{"CaseOverTheWholeOfLint", "l : LINT := 5;",
+                      "CASE l OF -9223372036854775807..9223372036854775807: x := 1; END_CASE;", 1},
         StatementCase{"ForSums", "i : INT;", "FOR i := 1 TO 10 DO x := x + i; END_FOR;", 55},
         StatementCase{"ForBy", "i : INT;", "FOR i := 0 TO 10 BY 3 DO x := x + i; END_FOR;", 18},
         StatementCase{"ForDownwards", "i : INT;",

@@ -270,18 +270,6 @@ bool PouGenerator::jump_table(Operand selector, const sema::Type& type,
     // A table pays when it replaces several compares and is mostly labels, not holes.
     constexpr std::int64_t kMinValues = 3;
     constexpr std::int64_t kMaxEntries = 1024;
-    if (ranges.empty()) {
-        return false;
-    }
-    std::int64_t low = ranges.front().low;
-    std::int64_t high = ranges.front().high;
-    std::int64_t values = 0;
-    for (const CaseRange& range : ranges) {
-        low = std::min(low, range.low);
-        high = std::max(high, range.high);
-        values += range.high - range.low + 1;
-    }
-    const std::int64_t entries = high - low + 1;
     std::optional<Opcode> op;
     switch (sema::scalar_of(type)) {
     case vm::Scalar::I16:
@@ -297,7 +285,20 @@ bool PouGenerator::jump_table(Operand selector, const sema::Type& type,
     default:
         break;
     }
-    if (!op || values < kMinValues || entries > kMaxEntries || entries > 2 * values) {
+    if (!op || ranges.empty()) {
+        return false;
+    }
+    // Labels of a 16- or 32-bit selector: no difference below overflows 64 bits.
+    std::int64_t low = ranges.front().low;
+    std::int64_t high = ranges.front().high;
+    std::int64_t values = 0;
+    for (const CaseRange& range : ranges) {
+        low = std::min(low, range.low);
+        high = std::max(high, range.high);
+        values += range.high - range.low + 1;
+    }
+    const std::int64_t entries = high - low + 1;
+    if (values < kMinValues || entries > kMaxEntries || entries > 2 * values) {
         return false;
     }
     std::vector<vm::Label> targets(static_cast<std::size_t>(entries), otherwise);
@@ -308,8 +309,8 @@ bool PouGenerator::jump_table(Operand selector, const sema::Type& type,
         }
     }
     // low is a value of the selector's type, so it fits 32 bits modulo 2^32.
-    const auto table = builder_.jump_table(
-        static_cast<std::int32_t>(static_cast<std::uint32_t>(low)), targets);
+    const auto table =
+        builder_.jump_table(static_cast<std::int32_t>(static_cast<std::uint32_t>(low)), targets);
     builder_.jump(*op, otherwise, selector, Operand::imm(table));
     return true;
 }
