@@ -3,9 +3,8 @@
 // loops take the loop's back-edge themselves.
 #include "codegen_harness.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 namespace eposp::compiler::test {
 namespace {

@@ -38,10 +38,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "FUNCTION F : DINT\nVAR_IN_OUT a : ARRAY[*] OF INT; END_VAR\nF := SIZEOF(a);\n"
                  "END_FUNCTION\n",
                  "test.st:3:6: error: the size of an ARRAY[*] is known only when running"},
-        Rejected{"TypedReferenceToAnotherArray",
-                 main_with("a : ARRAY[0..3] OF INT; p : REF_TO ARRAY[0..9] OF INT;", "p := REF(a);"),
-                 "a REF_TO ARRAY[0..3] OF INT value cannot be used as REF_TO ARRAY[0..9] OF INT\n"},
-        Rejected{"SizeofIsNoSint", main_with("a : ARRAY[0..3] OF INT; s : SINT;", "s := SIZEOF(a);"),
+        Rejected{
+            "TypedReferenceToAnotherArray",
+            main_with("a : ARRAY[0..3] OF INT; p : REF_TO ARRAY[0..9] OF INT;", "p := REF(a);"),
+            "a REF_TO ARRAY[0..3] OF INT value cannot be used as REF_TO ARRAY[0..9] OF INT\n"},
+        Rejected{"SizeofIsNoSint",
+                 main_with("a : ARRAY[0..3] OF INT; s : SINT;", "s := SIZEOF(a);"),
                  "a USINT value cannot be used as SINT (convert it with USINT_TO_SINT)"},
         Rejected{"BoolArithmetic", main_with("b : BOOL; i : INT;", "i := i + b;"),
                  "operands of types INT and BOOL do not match"},
@@ -208,8 +210,8 @@ END_PROGRAM
 
 // A declaration that failed is reported once, not again at every use of the variable.
 TEST(Diagnostics, AFailedDeclarationIsReportedOnce) {
-    const std::string text = diagnostics_of(
-        "PROGRAM Main\nVAR n : INT := 3; a : ARRAY[1..n] OF INT; END_VAR\na[1] := 2;\nEND_PROGRAM\n");
+    const std::string text = diagnostics_of("PROGRAM Main\nVAR n : INT := 3; a : ARRAY[1..n] OF "
+                                            "INT; END_VAR\na[1] := 2;\nEND_PROGRAM\n");
     EXPECT_NE(text.find("test.st:2:29: error: array bounds must be constants"), std::string::npos)
         << text;
     EXPECT_EQ(text.find("'a' is not a variable"), std::string::npos) << text;

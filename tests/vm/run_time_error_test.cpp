@@ -179,7 +179,8 @@ TEST(RunTimeError, FailingNativeFunctionStopsTheTaskWithItsReason) {
     Harness h;
     h.natives.add("FAIL", NativeSignature{}, [](NativeArgs& args) { args.fail("no axis"); });
     h.builder.line(9);
-    h.builder.emit(Opcode::CallNative, Operand::imm(h.builder.import("FAIL", NativeSignature{})), Operand::out(0));
+    h.builder.emit(Opcode::CallNative, Operand::imm(h.builder.import("FAIL", NativeSignature{})),
+                   Operand::out(0));
     h.builder.emit(Opcode::Ret);
     h.end_main();
     ASSERT_EQ(h.run(), RunState::Faulted);

@@ -85,10 +85,8 @@ TEST(FormatValue, EnumerationsShowTheNameOfTheirValue) {
     step.size = 2;
     step.enumerators = {{"Idle", 0}, {"Back", -1}, {"Travel", 7}};
     image.types.push_back(step);
-    for (const auto& [value, text] : {std::pair<std::int16_t, const char*>{7, "Travel"},
-                                      {-1, "Back"},
-                                      {0, "Idle"},
-                                      {3, "3"}}) {
+    for (const auto& [value, text] :
+         {std::pair<std::int16_t, const char*>{7, "Travel"}, {-1, "Back"}, {0, "Idle"}, {3, "3"}}) {
         EXPECT_EQ(format_value(image, bytes_of(value), VariableLocation{0, 0}), text);
     }
 }

@@ -49,9 +49,11 @@ INSTANTIATE_TEST_SUITE_P(
         Malformation{"InstanceOperandPastInstance",
                      [](Image& i) { i.code[0].a = Operand::self(30).raw; },
                      "instance offset 30 + 4 exceeds its area of 32 bytes"},
-        Malformation{"FrameOperandPastFrame", [](Image& i) { i.code[10].a = Operand::local(6).raw; },
+        Malformation{"FrameOperandPastFrame",
+                     [](Image& i) { i.code[10].a = Operand::local(6).raw; },
                      "frame offset 6 + 4 exceeds its area of 8 bytes"},
-        Malformation{"SelfOperandInAFunction", [](Image& i) { i.code[10].b = Operand::self(0).raw; },
+        Malformation{"SelfOperandInAFunction",
+                     [](Image& i) { i.code[10].b = Operand::self(0).raw; },
                      "instance offset 0 + 4 exceeds its area of 0 bytes"},
         Malformation{"OutOperandPastOutArea", [](Image& i) { i.code[1].a = Operand::out(14).raw; },
                      "out offset"},
@@ -106,10 +108,14 @@ INSTANTIATE_TEST_SUITE_P(
         Malformation{"PouPastTheCode", [](Image& i) { i.pous[1].code_end = 99; },
                      "is empty or outside the code"},
         Malformation{"InlinedCallPastThePou",
-                     [](Image& i) { i.pous[0].inlined.push_back({7, 10, 1}); },
+                     [](Image& i) {
+                         i.pous[0].inlined.push_back({7, 10, 1});
+                     },
                      "inlined call out of order, outside the POU"},
         Malformation{"InlinedCallLongerThanItsCallee",
-                     [](Image& i) { i.pous[0].inlined.push_back({2, 5, 1}); },
+                     [](Image& i) {
+                         i.pous[0].inlined.push_back({2, 5, 1});
+                     },
                      "longer than its callee"},
         Malformation{"LineTableOutsideThePou", [](Image& i) { i.pous[1].lines[0].instruction = 2; },
                      "line table"},
@@ -144,7 +150,10 @@ INSTANTIATE_TEST_SUITE_P(
                      "bad element type or size"},
         Malformation{"ArrayTypeOfWrongSize", [](Image& i) { i.types[2].size = 12; },
                      "bad element type or size"},
-        Malformation{"EnumeratorsOnAReal", [](Image& i) { i.types[1].enumerators = {{"x", 0}}; },
+        Malformation{"EnumeratorsOnAReal",
+                     [](Image& i) {
+                         i.types[1].enumerators = {{"x", 0}};
+                     },
                      "enumerators on a type that is not an integer"},
         Malformation{"StructFieldPastTheStruct", [](Image& i) { i.types[3].fields[2].offset = 28; },
                      "field r has a bad type or offset"},

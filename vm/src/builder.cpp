@@ -184,8 +184,7 @@ core::Result<Image> Builder::finish() {
         for (const Label target : fixup.targets) {
             const auto& bound = labels_.at(target.id);
             if (!bound) {
-                return core::Error{"label " + std::to_string(target.id) +
-                                   " used but never bound"};
+                return core::Error{"label " + std::to_string(target.id) + " used but never bound"};
             }
             targets.push_back(*bound);
         }

@@ -121,8 +121,7 @@ std::string disassemble(const Image& image, const Instruction& ins) {
     } else if (info.aux == Aux::Array) {
         if (ins.aux < image.arrays.size()) {
             const auto& array = image.arrays[ins.aux];
-            text += fmt::format(" [{} +{} x{}{}{}]", array.lower, array.count,
-                                array.element_size,
+            text += fmt::format(" [{} +{} x{}{}{}]", array.lower, array.count, array.element_size,
                                 array.offset != 0 ? fmt::format(" .{}", array.offset) : "",
                                 array.index_size == 2 ? " INT" : "");
         } else {

@@ -143,8 +143,8 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
 // Checked element address: index - lower, modulo 2^32, must be below the descriptor's count.
 #define VM_ELEMENT(array, index_operand, out)                                                      \
     const auto& descriptor = arrays[ip->aux];                                                      \
-    const auto element = array_index(descriptor, index_operand) -                                  \
-                         static_cast<std::uint32_t>(descriptor.lower);                             \
+    const auto element =                                                                           \
+        array_index(descriptor, index_operand) - static_cast<std::uint32_t>(descriptor.lower);     \
     if (element >= descriptor.count) {                                                             \
         VM_TRAP(Trap::IndexOutOfRange);                                                            \
     }                                                                                              \
@@ -212,7 +212,7 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     }
 #define VM_EXEC_CallNative(T1, T2)                                                                 \
     {                                                                                              \
-        if (!call_native(program, ip->a, B, memory, task.fault.native_reason)) {             \
+        if (!call_native(program, ip->a, B, memory, task.fault.native_reason)) {                   \
             VM_TRAP(Trap::NativeError);                                                            \
         }                                                                                          \
         VM_CHARGE();                                                                               \
@@ -448,8 +448,7 @@ slice_used:
                               static_cast<std::uint32_t>(base[1] - mem),
                               static_cast<std::uint32_t>(base[2] - mem)};
     if (task.executed >= task.budget) {
-        return stop(task, image, Trap::BudgetExceeded, pou,
-                    static_cast<std::uint32_t>(ip - code));
+        return stop(task, image, Trap::BudgetExceeded, pou, static_cast<std::uint32_t>(ip - code));
     }
     task.state = RunState::Suspended;
     return task.state;

@@ -34,18 +34,10 @@ std::vector<std::vector<IoBinding>> bindings_per_task(const Image& image) {
 
 // The integer `bytes` hold (little-endian, as VM memory) lies within the subrange `type`.
 bool in_subrange(const TypeDescriptor& type, std::span<const std::uint8_t> bytes) {
-    std::uint64_t raw = 0;
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
-        raw |= std::uint64_t{bytes[i]} << (8 * i);
-    }
-    const unsigned unused = 64 - 8 * static_cast<unsigned>(bytes.size());
-    if (!is_signed_integer(type.scalar)) {
-        return raw <= static_cast<std::uint64_t>(INT64_MAX) &&
-               static_cast<std::int64_t>(raw) >= type.lowest &&
-               static_cast<std::int64_t>(raw) <= type.highest;
-    }
-    const auto value = static_cast<std::int64_t>(raw << unused) >> unused; // sign-extended
-    return value >= type.lowest && value <= type.highest;
+    const std::int64_t value = integer_value(type.scalar, bytes);
+    // An unsigned value above INT64_MAX is outside every subrange.
+    const bool wrapped = !is_signed_integer(type.scalar) && value < 0;
+    return !wrapped && value >= type.lowest && value <= type.highest;
 }
 
 } // namespace

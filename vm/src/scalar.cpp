@@ -32,4 +32,16 @@ std::string_view scalar_name(Scalar s) {
     return "?";
 }
 
+std::int64_t integer_value(Scalar s, std::span<const std::uint8_t> bytes) {
+    std::uint64_t raw = 0;
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        raw |= std::uint64_t{bytes[i]} << (8 * i);
+    }
+    if (!is_signed_integer(s)) {
+        return static_cast<std::int64_t>(raw);
+    }
+    const unsigned unused = 64 - 8 * static_cast<unsigned>(bytes.size());
+    return static_cast<std::int64_t>(raw << unused) >> unused;
+}
+
 } // namespace eposp::vm

@@ -118,12 +118,7 @@ std::string format_character(const TypeDescriptor& type, std::span<const std::ui
 // none.
 std::string format_enumerated(const TypeDescriptor& type, std::span<const std::uint8_t> memory,
                               std::uint32_t offset) {
-    std::uint64_t raw = 0;
-    std::memcpy(&raw, memory.data() + offset, type.size);
-    const unsigned unused = 64 - 8 * type.size;
-    const std::int64_t value = is_signed_integer(type.scalar)
-                                   ? static_cast<std::int64_t>(raw << unused) >> unused
-                                   : static_cast<std::int64_t>(raw);
+    const std::int64_t value = integer_value(type.scalar, memory.subspan(offset, type.size));
     for (const Enumerator& enumerator : type.enumerators) {
         if (enumerator.value == value) {
             return enumerator.name;

@@ -215,8 +215,8 @@ Defect verify_pous(const Image& image) {
         for (const auto& call : pou.inlined) {
             if (call.begin < last || call.begin >= call.end || call.end > pou.code_end ||
                 call.callee >= image.pous.size() ||
-                call.end - call.begin > image.pous[call.callee].code_end -
-                                            image.pous[call.callee].code_begin) {
+                call.end - call.begin >
+                    image.pous[call.callee].code_end - image.pous[call.callee].code_begin) {
                 return defect(where + ": inlined call out of order, outside the POU or longer "
                                       "than its callee");
             }
@@ -248,8 +248,8 @@ Defect verify_static(const Image& image) {
             return defect("array descriptor with an empty element or too large");
         }
         if (array.index_size != 2 && array.index_size != 4) {
-            return defect("array descriptor with an index of " +
-                          std::to_string(array.index_size) + " bytes");
+            return defect("array descriptor with an index of " + std::to_string(array.index_size) +
+                          " bytes");
         }
     }
     for (const auto& range : image.retain) {

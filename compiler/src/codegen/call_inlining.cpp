@@ -133,8 +133,7 @@ std::vector<vm::Instruction> inlined_body(const vm::Image& image, std::uint32_t 
 } // namespace
 
 void inline_leaf_calls(vm::Image& image) {
-    rewrite_code(image, [](const vm::Image& before, vm::Pou& pou, std::uint32_t i,
-                           CodeSink& sink) {
+    rewrite_code(image, [](const vm::Image& before, vm::Pou& pou, std::uint32_t i, CodeSink& sink) {
         const vm::Instruction& ins = before.code[i];
         if (const auto callee = inlinable_callee(before, ins)) {
             const auto body = inlined_body(before, *callee, ins, sink.here());

@@ -38,6 +38,17 @@ void retarget(vm::Instruction& ins, const std::function<std::uint32_t(std::uint3
     }
 }
 
+void retarget(vm::Instruction& ins, std::vector<vm::JumpTable>& tables,
+              const std::function<std::uint32_t(std::uint32_t)>& to) {
+    retarget(ins, to);
+    // Each table belongs to one JTab: it moves with its instruction.
+    if (vm::opcode_info(ins.opcode).name.starts_with("JTab")) {
+        for (std::uint32_t& target : tables[ins.b].targets) {
+            target = to(target);
+        }
+    }
+}
+
 void CodeSink::keep(const vm::Instruction& ins) {
     old_targets_.push_back(code_.size());
     code_.push_back(ins);
@@ -64,15 +75,11 @@ public:
                 expand(before, pou, i, sink);
             }
             moved.back() = sink.here();
-            const auto to = [&](std::uint32_t target) { return moved[target - old.code_begin]; };
+            const auto to = [&](std::uint32_t target) {
+                return moved[target - old.code_begin];
+            };
             for (const std::size_t at : sink.old_targets_) {
-                retarget(sink.code_[at], to);
-                // Each table belongs to one JTab: it moves with its instruction.
-                if (vm::opcode_info(sink.code_[at].opcode).name.starts_with("JTab")) {
-                    for (std::uint32_t& target : image.jump_tables[sink.code_[at].b].targets) {
-                        target = to(target);
-                    }
-                }
+                retarget(sink.code_[at], image.jump_tables, to);
             }
             for (vm::LineEntry& line : pou.lines) {
                 line.instruction = moved[line.instruction - old.code_begin];

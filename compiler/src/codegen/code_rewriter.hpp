@@ -26,8 +26,8 @@ private:
 };
 
 /// What replaces instruction `instruction` (an index into `before.code`) of `pou`.
-using Expand = std::function<void(const vm::Image& before, vm::Pou& pou,
-                                  std::uint32_t instruction, CodeSink& sink)>;
+using Expand = std::function<void(const vm::Image& before, vm::Pou& pou, std::uint32_t instruction,
+                                  CodeSink& sink)>;
 
 /// Rebuilds the code: calls `expand` for every instruction of every POU, in code order, with the
 /// image as it was before the pass; expand appends what replaces the instruction (itself,
@@ -37,5 +37,8 @@ void rewrite_code(vm::Image& image, const Expand& expand);
 
 /// Applies `to` to every jump target field of `ins`.
 void retarget(vm::Instruction& ins, const std::function<std::uint32_t(std::uint32_t)>& to);
+/// The same, and to every target of the jump table of a JTab (`tables`: the image's).
+void retarget(vm::Instruction& ins, std::vector<vm::JumpTable>& tables,
+              const std::function<std::uint32_t(std::uint32_t)>& to);
 
 } // namespace eposp::compiler::codegen

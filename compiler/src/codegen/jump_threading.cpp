@@ -1,5 +1,7 @@
 #include "jump_threading.hpp"
 
+#include "code_rewriter.hpp"
+
 namespace eposp::compiler::codegen {
 
 namespace {
@@ -19,19 +21,8 @@ std::uint32_t final_target(const vm::Image& image, std::uint32_t target) {
 
 void thread_jumps(vm::Image& image) {
     for (vm::Instruction& instruction : image.code) {
-        const vm::OpcodeInfo& info = vm::opcode_info(instruction.opcode);
-        std::uint32_t* fields[3] = {&instruction.a, &instruction.b, &instruction.c};
-        const vm::FieldSpec* specs[3] = {&info.a, &info.b, &info.c};
-        for (int i = 0; i < 3; ++i) {
-            if (specs[i]->field == vm::Field::Target) {
-                *fields[i] = final_target(image, *fields[i]);
-            }
-        }
-        if (info.name.starts_with("JTab")) {
-            for (std::uint32_t& target : image.jump_tables[instruction.b].targets) {
-                target = final_target(image, target);
-            }
-        }
+        retarget(instruction, image.jump_tables,
+                 [&](std::uint32_t target) { return final_target(image, target); });
         // An unconditional jump to a return is the return (no fall-through to preserve).
         if (instruction.opcode == vm::Opcode::Jmp && instruction.a < image.code.size() &&
             image.code[instruction.a].opcode == vm::Opcode::Ret) {

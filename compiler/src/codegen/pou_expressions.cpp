@@ -171,12 +171,12 @@ PouGenerator::displaced_index(const ast::Expression& index, std::int64_t lower) 
     }
     // The bound moves by the constant modulo 2^32, as the wrapping DINT sum would.
     const std::int64_t moved = lower - (add ? std::int64_t{*constant} : -std::int64_t{*constant});
-    return ElementIndex{where->operand, static_cast<std::int32_t>(static_cast<std::uint32_t>(moved)),
-                        4};
+    return ElementIndex{where->operand,
+                        static_cast<std::int32_t>(static_cast<std::uint32_t>(moved)), 4};
 }
 
-std::optional<PouGenerator::ElementIndex>
-PouGenerator::element_index(const ast::Expression& index, std::int64_t lower) {
+std::optional<PouGenerator::ElementIndex> PouGenerator::element_index(const ast::Expression& index,
+                                                                      std::int64_t lower) {
     if (auto displaced = displaced_index(index, lower)) {
         return displaced;
     }
@@ -264,14 +264,12 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         }
         const auto& dimension = type.dimensions[d];
         const Operand term = temp(dint);
-        emit(Opcode::IdxDim, term,
-             dimension_constant(static_cast<std::int32_t>(dimension.lower), dimension.count),
+        emit(Opcode::IdxDim, term, dimension_constant(dimension.lower, dimension.count),
              value->operand);
         if (d == 0) {
             linear = term;
         } else {
-            emit(Opcode::Mul32, linear, linear,
-                 dint_constant(static_cast<std::int32_t>(dimension.count)));
+            emit(Opcode::Mul32, linear, linear, integer_constant(dint, dimension.count));
             emit(Opcode::Add32, linear, linear, term);
         }
     }
@@ -333,15 +331,8 @@ std::optional<Value> PouGenerator::bit_word(const ast::BitAccessExpression& node
 }
 
 Operand PouGenerator::bit_mask(const sema::Type& type, std::uint32_t bit, bool inverted) {
-    std::uint64_t mask = std::uint64_t{1} << bit;
-    if (inverted) {
-        mask = ~mask;
-    }
-    std::vector<std::uint8_t> bytes(type.size);
-    for (std::uint32_t i = 0; i < type.size; ++i) {
-        bytes[i] = static_cast<std::uint8_t>(mask >> (8 * i));
-    }
-    return program_.constant(bytes, type.align);
+    const std::uint64_t mask = std::uint64_t{1} << bit;
+    return integer_constant(type, static_cast<std::int64_t>(inverted ? ~mask : mask));
 }
 
 // --- Values ----------------------------------------------------------------------------------
@@ -357,11 +348,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         if (type == nullptr || !value) {
             return std::nullopt;
         }
-        std::vector<std::uint8_t> bytes(type->size);
-        for (std::uint32_t i = 0; i < type->size; ++i) {
-            bytes[i] = static_cast<std::uint8_t>(static_cast<std::uint64_t>(*value) >> (8 * i));
-        }
-        return Value{program_.constant(bytes, type->align), type};
+        return Value{integer_constant(*type, *value), type};
     }
     if (const auto* node = std::get_if<ast::NameExpression>(&expression.node)) {
         const sema::Symbol* symbol = model_.resolved(node->name);
@@ -690,27 +677,21 @@ std::optional<Value> PouGenerator::operand_value(const ast::Expression& expressi
 Value PouGenerator::widened(const Value& value, const ast::Expression& expression) {
     // A literal is a DINT constant at once rather than a conversion at run time.
     if (const auto constant = small_literal(expression)) {
-        return Value{dint_constant(*constant), &types_.elementary(E::Dint), value.type};
+        const sema::Type& dint = types_.elementary(E::Dint);
+        return Value{integer_constant(dint, *constant), &dint, value.type};
     }
     return widened(value);
 }
 
-Operand PouGenerator::dimension_constant(std::int32_t lower, std::uint32_t count) {
-    std::vector<std::uint8_t> bytes(8);
-    const auto low = static_cast<std::uint32_t>(lower);
-    for (int i = 0; i < 4; ++i) {
-        bytes[i] = static_cast<std::uint8_t>(low >> (8 * i));
-        bytes[4 + i] = static_cast<std::uint8_t>(count >> (8 * i));
-    }
-    return program_.constant(bytes, 4);
+Operand PouGenerator::dimension_constant(std::int64_t lower, std::uint32_t count) {
+    std::vector<std::uint8_t> bounds = integer_bytes(lower, 4);
+    const auto count_bytes = integer_bytes(count, 4);
+    bounds.insert(bounds.end(), count_bytes.begin(), count_bytes.end());
+    return program_.constant(bounds, 4);
 }
 
-Operand PouGenerator::dint_constant(std::int32_t value) {
-    const auto bits = static_cast<std::uint32_t>(value);
-    return program_.constant({static_cast<std::uint8_t>(bits), static_cast<std::uint8_t>(bits >> 8),
-                              static_cast<std::uint8_t>(bits >> 16),
-                              static_cast<std::uint8_t>(bits >> 24)},
-                             4);
+Operand PouGenerator::integer_constant(const sema::Type& type, std::int64_t value) {
+    return program_.constant(integer_bytes(value, type.size), type.align);
 }
 
 Value PouGenerator::widened(const Value& value) {
@@ -797,8 +778,7 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
         }
         const auto right = eval(*node.right, left->type);
         pair = right ? unify(*left, *right, range) : std::nullopt;
-    } else if ((node.op == Op::Add || node.op == Op::Subtract) &&
-               !is_untyped_literal(*node.left)) {
+    } else if ((node.op == Op::Add || node.op == Op::Subtract) && !is_untyped_literal(*node.left)) {
         const auto left = operand_value(*node.left, hint);
         if (!left) {
             return std::nullopt;
@@ -845,11 +825,12 @@ std::optional<Value> PouGenerator::pointer_offset(bool add, const Value& pointer
                                                   const ast::Expression& bytes,
                                                   const Destination* dest) {
     const sema::Type& lint = types_.elementary(E::Lint);
-    const Operand result =
-        result_operand(*pointer.type, dest != nullptr && dest->type == pointer.type ? dest : nullptr);
+    const Operand result = result_operand(
+        *pointer.type, dest != nullptr && dest->type == pointer.type ? dest : nullptr);
     if (const auto constant = small_literal(bytes)) {
         const std::int32_t delta = add ? *constant : -*constant;
-        emit(Opcode::AddI64, result, pointer.operand, Operand::imm(static_cast<std::uint32_t>(delta)));
+        emit(Opcode::AddI64, result, pointer.operand,
+             Operand::imm(static_cast<std::uint32_t>(delta)));
         return Value{result, pointer.type};
     }
     const auto offset = eval(bytes, &lint);

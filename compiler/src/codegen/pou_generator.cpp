@@ -1,7 +1,6 @@
 #include "pou_generator.hpp"
 
 #include "constant_declarations.hpp"
-
 #include "eposp/compiler/sema/symbol.hpp"
 
 #include <fmt/format.h>

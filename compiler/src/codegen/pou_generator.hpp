@@ -161,9 +161,10 @@ private:
     Value widened(const Value& value);
     /// `value` of `expression` widened: a literal becomes a DINT constant, not a conversion.
     Value widened(const Value& value, const ast::Expression& expression);
-    vm::Operand dint_constant(std::int32_t value);
+    /// `value` as a constant of the integer (or bit string, enumeration) type `type`.
+    vm::Operand integer_constant(const sema::Type& type, std::int64_t value);
     /// The bounds IdxDim checks one index against: lower (DINT) then count (UDINT).
-    vm::Operand dimension_constant(std::int32_t lower, std::uint32_t count);
+    vm::Operand dimension_constant(std::int64_t lower, std::uint32_t count);
     std::optional<std::pair<Value, Value>> unify(const Value& left, const Value& right,
                                                  const SourceRange& range);
     static bool is_small_integer(const sema::Type& type);
@@ -187,8 +188,8 @@ private:
     /// `pointer + bytes`, `pointer - bytes`: CODESYS pointer arithmetic, in bytes.
     /// Warns when an assignment writes an input of the running POU.
     void warn_if_input(const ast::Expression& target);
-    std::optional<Value> pointer_offset(bool add, const Value& pointer, const ast::Expression& bytes,
-                                        const Destination* dest);
+    std::optional<Value> pointer_offset(bool add, const Value& pointer,
+                                        const ast::Expression& bytes, const Destination* dest);
     static bool is_untyped_literal(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
 
@@ -215,7 +216,6 @@ private:
     Value checked(const Value& value, const sema::Type& want);
     /// After a FOR loop over a subrange variable: undoes the last step if it left the range.
     void step_back_into_range(vm::Operand control, const sema::Type& type, vm::Operand step);
-    vm::Operand integer_constant(const sema::Type& type, std::int64_t value);
 
     // --- pou_conditions.cpp ------------------------------------------------------------------
     /// Jumps to `target` when `condition` has the value `when`, with compare-and-branch

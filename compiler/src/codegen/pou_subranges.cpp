@@ -1,8 +1,8 @@
 // Subrange types (IEC 61131-3 ed. 3, 6.4.4.4): a value stored into a subrange variable must lie
 // within its bounds. Constants are checked when compiling; other values by a Range<I>
 // instruction before they are stored, unless they come from a variable or a function result
-// whose own subrange lies inside the target's. Values computed from subranges (`p + 1`) have the base type: only a
-// checked conversion gives a value the subrange type again.
+// whose own subrange lies inside the target's. Values computed from subranges (`p + 1`) have the
+// base type: only a checked conversion gives a value the subrange type again.
 
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_generator.hpp"
@@ -10,10 +10,6 @@
 namespace eposp::compiler::codegen {
 
 using vm::Operand;
-
-Operand PouGenerator::integer_constant(const sema::Type& type, std::int64_t value) {
-    return program_.constant(integer_bytes(value, type.size), type.align);
-}
 
 std::optional<Value> PouGenerator::subrange_value(const ast::Expression& expression,
                                                   const sema::Type& want) {

@@ -48,15 +48,6 @@ std::int64_t time_unit(E type) {
     }
 }
 
-std::vector<std::uint8_t> int64_bytes(std::int64_t value) {
-    std::vector<std::uint8_t> bytes(8);
-    for (int i = 0; i < 8; ++i) {
-        bytes[static_cast<std::size_t>(i)] =
-            static_cast<std::uint8_t>(static_cast<std::uint64_t>(value) >> (8 * i));
-    }
-    return bytes;
-}
-
 } // namespace
 
 std::optional<Value> PouGenerator::standard_function(const std::string& name,
@@ -141,11 +132,7 @@ std::optional<Value> PouGenerator::address_or_size(const std::string& name,
     const sema::Type& size_type = types_.elementary(type->size < 0x100     ? E::Usint
                                                     : type->size < 0x10000 ? E::Uint
                                                                            : E::Udint);
-    std::vector<std::uint8_t> bytes(size_type.size);
-    for (std::uint32_t i = 0; i < size_type.size; ++i) {
-        bytes[i] = static_cast<std::uint8_t>(type->size >> (8 * i));
-    }
-    return Value{program_.constant(bytes, size_type.align), &size_type};
+    return Value{integer_constant(size_type, type->size), &size_type};
 }
 
 std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
@@ -232,7 +219,7 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         const sema::Type& lint = types_.elementary(E::Lint);
         const Operand scaled = temp(lint);
         emit(Opcode::DivI64, scaled, value.operand,
-             program_.constant(int64_bytes(time_unit(from.elementary)), 8));
+             integer_constant(lint, time_unit(from.elementary)));
         source = Value{scaled, &lint};
     }
     if (to_time) {
@@ -240,7 +227,7 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         const auto as_lint = explicit_convert(source, lint, nullptr, range);
         const Operand result = result_operand(want, dest);
         emit(Opcode::Mul64, result, as_lint->operand,
-             program_.constant(int64_bytes(time_unit(want.elementary)), 8));
+             integer_constant(lint, time_unit(want.elementary)));
         return Value{result, &want};
     }
     const S a = sema::scalar_of(*source.type);

@@ -78,19 +78,19 @@ namespace eposp::vm {
 /// What an instruction field means, for the verifier and the disassembler.
 enum class Field : std::uint8_t {
     None,
-    Read,       ///< a memory operand read with the given size
-    Write,      ///< a memory operand written with the given size
-    ReadN,      ///< read, size in field C
-    WriteN,     ///< written, size in field C
-    Imm,        ///< a raw 32-bit value
-    Size,       ///< a byte count (for the ...N forms)
-    Target,     ///< an instruction index inside the same POU
-    Pou,        ///< a POU index
-    Import,     ///< a native import index
-    Instance,   ///< an FB instance operand, sized by the POU in field B
-    ArrayRead,  ///< an array operand, sized by the descriptor in aux; size is the access width
-    ArrayWrite, ///< the same, written
-    ArrayIndex, ///< the index of an indexed access, read with the descriptor's index size
+    Read,            ///< a memory operand read with the given size
+    Write,           ///< a memory operand written with the given size
+    ReadN,           ///< read, size in field C
+    WriteN,          ///< written, size in field C
+    Imm,             ///< a raw 32-bit value
+    Size,            ///< a byte count (for the ...N forms)
+    Target,          ///< an instruction index inside the same POU
+    Pou,             ///< a POU index
+    Import,          ///< a native import index
+    Instance,        ///< an FB instance operand, sized by the POU in field B
+    ArrayRead,       ///< an array operand, sized by the descriptor in aux; size is the access width
+    ArrayWrite,      ///< the same, written
+    ArrayIndex,      ///< the index of an indexed access, read with the descriptor's index size
     NativeArguments, ///< the argument block of the native import in field A
     JumpTable,       ///< a jump table index
 };
@@ -172,9 +172,9 @@ struct FieldSpec {
     M(I32, 4, std::int32_t, __VA_ARGS__)                                                           \
     M(I64, 8, std::int64_t, __VA_ARGS__)                                                           \
     M(U8, 1, std::uint8_t, __VA_ARGS__)                                                            \
-    M(U16, 2, std::uint16_t, __VA_ARGS__) M(U32, 4, std::uint32_t, __VA_ARGS__)                    \
-        M(U64, 8, std::uint64_t, __VA_ARGS__) M(F32, 4, float, __VA_ARGS__)                        \
-            M(F64, 8, double, __VA_ARGS__)
+    M(U16, 2, std::uint16_t, __VA_ARGS__)                                                          \
+    M(U32, 4, std::uint32_t, __VA_ARGS__) M(U64, 8, std::uint64_t, __VA_ARGS__)                    \
+        M(F32, 4, float, __VA_ARGS__) M(F64, 8, double, __VA_ARGS__)
 
 #define EPOSP_VM_F(X) EPOSP_VM_F_##X
 #define EPOSP_VM_OP(OP, name, family, T1, T2, aux, a, b, c)                                        \
@@ -247,7 +247,7 @@ struct FieldSpec {
     EPOSP_VM_OP(OP, Call, Call, void, void, None, PO, _, _)                                        \
     EPOSP_VM_OP(OP, CallFb, CallFb, void, void, None, IN, PO, _)                                   \
     EPOSP_VM_OP(OP, CallFbP, CallFbP, void, void, None, R8, PO, _)                                 \
-    EPOSP_VM_OP(OP, CallNative, CallNative, void, void, None, IX, NA, _)                            \
+    EPOSP_VM_OP(OP, CallNative, CallNative, void, void, None, IX, NA, _)                           \
     EPOSP_VM_OP(OP, Ret, Ret, void, void, None, _, _, _)                                           \
     EPOSP_VM_OP(OP, MovN, MovN, void, void, None, WN, RN, SZ)                                      \
     EPOSP_VM_OP(OP, Addr, Addr, void, void, None, W8, RN, SZ)                                      \

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace eposp::vm {
@@ -46,5 +47,9 @@ constexpr std::uint32_t scalar_size(Scalar s) {
 }
 
 std::string_view scalar_name(Scalar s);
+
+/// The integer `bytes` hold (little-endian, as VM memory; at most 8), sign-extended when `s`
+/// is signed. A U64 above INT64_MAX comes out negative: callers that compare must check.
+std::int64_t integer_value(Scalar s, std::span<const std::uint8_t> bytes);
 
 } // namespace eposp::vm
