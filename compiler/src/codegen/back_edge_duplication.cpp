@@ -5,7 +5,7 @@
 namespace eposp::compiler::codegen {
 
 void duplicate_back_edges(vm::Image& image) {
-    rewrite_code(image, [](const vm::Image& before, vm::Pou&, std::uint32_t i, CodeSink& sink) {
+    rewrite_code(image, [](const CodeBefore& before, vm::Pou&, std::uint32_t i, CodeSink& sink) {
         const vm::Instruction& ins = before.code[i];
         if (ins.opcode == vm::Opcode::Jmp &&
             vm::opcode_info(before.code[ins.a].opcode).name.starts_with("For")) {

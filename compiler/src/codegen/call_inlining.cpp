@@ -51,7 +51,8 @@ bool keeps_body_in_place(Opcode op) {
 
 /// The POU `call` enters, when its body may replace the call: short, without calls or jump
 /// tables, entered with an instance the caller addresses directly.
-std::optional<std::uint32_t> inlinable_callee(const vm::Image& image, const vm::Instruction& call) {
+std::optional<std::uint32_t> inlinable_callee(const CodeBefore& before,
+                                              const vm::Instruction& call) {
     std::uint32_t callee = 0;
     if (call.opcode == Opcode::Call) {
         callee = call.a;
@@ -60,9 +61,9 @@ std::optional<std::uint32_t> inlinable_callee(const vm::Image& image, const vm::
     } else {
         return std::nullopt;
     }
-    const vm::Pou& pou = image.pous[callee];
+    const vm::Pou& pou = before.pous[callee];
     const std::uint32_t length = pou.code_end - pou.code_begin;
-    const auto body = image.code.begin() + pou.code_begin;
+    const auto body = before.code.begin() + pou.code_begin;
     if (length < 2 || length > kMaxInlinedLength ||
         std::any_of(body, body + length,
                     [](const vm::Instruction& ins) { return keeps_body_in_place(ins.opcode); })) {
@@ -98,16 +99,16 @@ std::optional<Operand> relocate(Operand operand, const vm::Pou& callee, Operand 
 
 /// The body of `callee` as it runs in place of `call` starting at instruction `start`: each
 /// Ret a jump past the copy, the last one dropped. Empty when an operand cannot be moved.
-std::vector<vm::Instruction> inlined_body(const vm::Image& image, std::uint32_t callee,
+std::vector<vm::Instruction> inlined_body(const CodeBefore& before, std::uint32_t callee,
                                           const vm::Instruction& call, std::uint32_t start) {
-    const vm::Pou& body = image.pous[callee];
+    const vm::Pou& body = before.pous[callee];
     const Operand instance = call.opcode == Opcode::CallFb ? Operand{call.a} : Operand::self(0);
-    const bool ends_in_ret = image.code[body.code_end - 1].opcode == Opcode::Ret;
+    const bool ends_in_ret = before.code[body.code_end - 1].opcode == Opcode::Ret;
     const std::uint32_t length = body.code_end - body.code_begin - (ends_in_ret ? 1 : 0);
     const std::uint32_t after = start + length;
     std::vector<vm::Instruction> copy;
     for (std::uint32_t i = body.code_begin; i < body.code_begin + length; ++i) {
-        vm::Instruction ins = image.code[i];
+        vm::Instruction ins = before.code[i];
         if (ins.opcode == Opcode::Ret) {
             copy.push_back({Opcode::Jmp, 0, after, 0, 0});
             continue;
@@ -133,7 +134,8 @@ std::vector<vm::Instruction> inlined_body(const vm::Image& image, std::uint32_t 
 } // namespace
 
 void inline_leaf_calls(vm::Image& image) {
-    rewrite_code(image, [](const vm::Image& before, vm::Pou& pou, std::uint32_t i, CodeSink& sink) {
+    rewrite_code(image, [](const CodeBefore& before, vm::Pou& pou, std::uint32_t i,
+                           CodeSink& sink) {
         const vm::Instruction& ins = before.code[i];
         if (const auto callee = inlinable_callee(before, ins)) {
             const auto body = inlined_body(before, *callee, ins, sink.here());

@@ -61,7 +61,7 @@ public:
         if (!order) {
             return;
         }
-        const vm::Image before = image;
+        const CodeBefore before{image.code, image.pous};
         CodeSink sink;
         for (const std::uint32_t p : *order) {
             const vm::Pou& old = before.pous[p];

@@ -25,12 +25,18 @@ private:
     std::vector<std::size_t> old_targets_; // instructions whose targets are still old indices
 };
 
+/// The code and the POUs as they were before a pass (only these change while it rebuilds).
+struct CodeBefore {
+    std::vector<vm::Instruction> code;
+    std::vector<vm::Pou> pous;
+};
+
 /// What replaces instruction `instruction` (an index into `before.code`) of `pou`.
-using Expand = std::function<void(const vm::Image& before, vm::Pou& pou, std::uint32_t instruction,
+using Expand = std::function<void(const CodeBefore& before, vm::Pou& pou, std::uint32_t instruction,
                                   CodeSink& sink)>;
 
 /// Rebuilds the code: calls `expand` for every instruction of every POU, in code order, with the
-/// image as it was before the pass; expand appends what replaces the instruction (itself,
+/// code as it was before the pass; expand appends what replaces the instruction (itself,
 /// nothing or several). Jump targets, line tables and code ranges follow. Leaves the image as
 /// it is if its POU bodies do not tile the code.
 void rewrite_code(vm::Image& image, const Expand& expand);
