@@ -208,6 +208,34 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int16_t>("Main.n"), 9);
 }
 
+// An output of a function or FB that nothing in its body writes is a warning; writes through
+// `=>`, a bit, REF/ADR or a call that may take it as VAR_IN_OUT count. A program's outputs are
+// written from outside too.
+TEST(Warnings, AnOutputNeverAssignedIsReported) {
+    const std::string text = diagnostics_of(R"(
+FUNCTION_BLOCK Probe
+  VAR_INPUT a : INT; END_VAR
+  VAR_OUTPUT direct, bound, bit, referenced, forgotten : WORD; END_VAR
+  VAR edge : R_TRIG; p : REF_TO WORD; END_VAR
+  direct := 1;
+  edge(CLK := a > 0, Q => bound.0);
+  bit.3 := TRUE;
+  p := REF(referenced);
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_OUTPUT shown : INT; END_VAR
+  VAR probe : Probe; END_VAR
+  probe(a := 1);
+END_PROGRAM
+)");
+    EXPECT_NE(text.find("test.st:4:46: warning: output 'forgotten' is never assigned"),
+              std::string::npos)
+        << text;
+    for (const char* name : {"'direct'", "'bound'", "'bit'", "'referenced'", "'shown'"}) {
+        EXPECT_EQ(text.find(std::string("output ") + name), std::string::npos) << name << text;
+    }
+}
+
 // A declaration that failed is reported once, not again at every use of the variable.
 TEST(Diagnostics, AFailedDeclarationIsReportedOnce) {
     const std::string text = diagnostics_of("PROGRAM Main\nVAR n : INT := 3; a : ARRAY[1..n] OF "

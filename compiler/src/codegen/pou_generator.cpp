@@ -2,6 +2,7 @@
 
 #include "constant_declarations.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
+#include "written_variables.hpp"
 
 #include <fmt/format.h>
 
@@ -36,8 +37,24 @@ void PouGenerator::report_unused() {
         warning(pou_.name.range,
                 fmt::format("function '{}' never assigns its result", pou_.name.name));
     }
+    // A program's outputs may be written from outside (connections, online); a function's or
+    // FB's only by its body.
+    const auto written = pou_.kind == ast::PouKind::Program ? std::unordered_set<std::string>{}
+                                                            : written_variables(pou_.body);
     for (const ast::DeclarationSection& section : pou_.sections) {
         const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables != nullptr && variables->kind == ast::VarSectionKind::Output &&
+            pou_.kind != ast::PouKind::Program) {
+            for (const ast::VariableDeclaration& declaration : variables->variables) {
+                for (const ast::Identifier& name : declaration.names) {
+                    if (!written.contains(sema::fold_case(name.name))) {
+                        warning(name.range,
+                                fmt::format("output '{}' is never assigned", name.name));
+                    }
+                }
+            }
+            continue;
+        }
         if (variables == nullptr || (variables->kind != ast::VarSectionKind::Var &&
                                      variables->kind != ast::VarSectionKind::Temp &&
                                      variables->kind != ast::VarSectionKind::External)) {

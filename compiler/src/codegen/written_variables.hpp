@@ -1,0 +1,15 @@
+#pragma once
+
+#include "eposp/compiler/ast/statements.hpp"
+
+#include <string>
+#include <unordered_set>
+
+namespace eposp::compiler::codegen {
+
+/// The variables (folded names of the outermost variable) a body may write: targets of
+/// assignments and FOR loops, `=>` bindings, and variables handed to a call as they are or to
+/// REF/ADR, which may write through them. An output absent from it is never assigned.
+std::unordered_set<std::string> written_variables(const ast::StatementList& body);
+
+} // namespace eposp::compiler::codegen
