@@ -1,6 +1,7 @@
 #include "interpreter.hpp"
 
 #include "instruction_semantics.hpp"
+#include "run_end.hpp"
 
 #include <algorithm>
 
@@ -11,17 +12,6 @@
 
 namespace eposp::vm::detail {
 namespace {
-
-std::uint32_t line_at(const Pou& pou, std::uint32_t instruction) {
-    std::uint32_t line = 0;
-    for (const auto& entry : pou.lines) {
-        if (entry.instruction > instruction) {
-            break;
-        }
-        line = entry.line;
-    }
-    return line;
-}
 
 // A native call's arguments object lives here, not in the handler: no object with a destructor
 // may be in scope where a handler leaves by computed goto.
@@ -40,24 +30,6 @@ bool call_native(const Program& program, std::uint32_t import, std::uint8_t* blo
 // reference would force `ip` into memory for the whole loop.
 std::uint64_t executed_in_run(std::uint64_t limit, std::int64_t remaining) {
     return static_cast<std::uint64_t>(static_cast<std::int64_t>(limit) - remaining);
-}
-
-RunState stop(TaskState& task, const Image& image, Trap trap, std::uint32_t pou,
-              std::uint32_t instruction) {
-    // In a body copied in place of a call, the error is the callee's, at its own line.
-    for (const InlinedCall& call : image.pous[pou].inlined) {
-        if (instruction >= call.begin && instruction < call.end) {
-            instruction = image.pous[call.callee].code_begin + (instruction - call.begin);
-            pou = call.callee;
-            break;
-        }
-    }
-    task.fault.trap = trap;
-    task.fault.pou = pou;
-    task.fault.instruction = instruction;
-    task.fault.line = line_at(image.pous[pou], instruction);
-    task.state = RunState::Faulted;
-    return task.state;
 }
 
 } // namespace
@@ -84,8 +56,7 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     // Instruction counting: `segment` is where the current straight-line run started; at each
     // taken jump, call and return the run's length is charged, so the count is exact without
     // a counter update per instruction.
-    const std::uint64_t budget_left = task.budget > task.executed ? task.budget - task.executed : 0;
-    const std::uint64_t limit = std::min({slice, budget_left, std::uint64_t{INT64_MAX}});
+    const std::uint64_t limit = run_limit(task, slice);
     std::int64_t remaining = static_cast<std::int64_t>(limit);
     const Instruction* segment = ip;
     Trap trap = Trap::DivisionByZero;
@@ -217,24 +188,17 @@ dispatch:
 
 trapped:
     VM_CHARGE();
-    task.executed += executed_in_run(limit, remaining);
-    return stop(task, image, trap, pou, static_cast<std::uint32_t>(ip - code));
+    return end_faulted(task, image, executed_in_run(limit, remaining), trap, pou,
+                       static_cast<std::uint32_t>(ip - code));
 
 slice_used:
-    task.executed += executed_in_run(limit, remaining);
-    task.current = Activation{static_cast<std::uint32_t>(ip - code), pou,
-                              static_cast<std::uint32_t>(base[1] - mem),
-                              static_cast<std::uint32_t>(base[2] - mem)};
-    if (task.executed >= task.budget) {
-        return stop(task, image, Trap::BudgetExceeded, pou, static_cast<std::uint32_t>(ip - code));
-    }
-    task.state = RunState::Suspended;
-    return task.state;
+    return end_suspended(task, image, executed_in_run(limit, remaining),
+                         Activation{static_cast<std::uint32_t>(ip - code), pou,
+                                    static_cast<std::uint32_t>(base[1] - mem),
+                                    static_cast<std::uint32_t>(base[2] - mem)});
 
 finished:
-    task.executed += executed_in_run(limit, remaining);
-    task.state = RunState::Finished;
-    return task.state;
+    return end_finished(task, executed_in_run(limit, remaining));
 }
 
 } // namespace eposp::vm::detail
