@@ -14,7 +14,8 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
 readonly BUILD_PACKAGES=(g++ cmake ninja-build libboost-dev libfmt-dev libcli11-dev
-    libgtest-dev libgmock-dev libbenchmark-dev antlr4 libantlr4-runtime-dev libyaml-cpp-dev)
+    libgtest-dev libgmock-dev libbenchmark-dev antlr4 libantlr4-runtime-dev libyaml-cpp-dev
+    libxbyak-dev)
 # Independent tools that the interoperability tests and the demo talk to.
 readonly TOOL_PACKAGES=(python3-can tshark)
 # Only for `fuzz`: clang and its sanitizer and libFuzzer runtimes.

@@ -1,6 +1,7 @@
 #include "eposp/vm/machine.hpp"
 
 #include "interpreter.hpp"
+#include "jit/compiled_code.hpp"
 
 #include <algorithm>
 
@@ -66,6 +67,9 @@ RunState Machine::run(std::size_t task, std::uint64_t slice) {
     auto& state = tasks_.at(task);
     if (state.state != RunState::Suspended) {
         return state.state;
+    }
+    if (const auto* compiled = program_.compiled()) {
+        return compiled->run(program_, memory_, state, slice);
     }
     return detail::execute(program_, memory_, state, slice);
 }

@@ -2,10 +2,23 @@
 
 #include "eposp/vm/image_format.hpp"
 #include "eposp/vm/verifier.hpp"
+#include "jit/compiled_code.hpp"
+
+#include <cstdlib>
+#include <string_view>
 
 namespace eposp::vm {
 
-core::Result<Program> link(Image image, const NativeRegistry& natives) {
+Engine default_engine() {
+    static const Engine engine = [] {
+        const char* chosen = std::getenv("EPOSP_VM_ENGINE");
+        return chosen != nullptr && std::string_view(chosen) == "interpreter" ? Engine::Interpreter
+                                                                              : Engine::Compiled;
+    }();
+    return engine;
+}
+
+core::Result<Program> link(Image image, const NativeRegistry& natives, Engine engine) {
     if (auto defect = verify(image)) {
         return *defect;
     }
@@ -21,16 +34,17 @@ core::Result<Program> link(Image image, const NativeRegistry& natives) {
         }
         bound.push_back(&entry->function);
     }
-    return Program(std::move(image), std::move(bound));
+    auto compiled = engine == Engine::Compiled ? jit::compile(image) : nullptr;
+    return Program(std::move(image), std::move(bound), std::move(compiled));
 }
 
 core::Result<Program> load_program(std::span<const std::uint8_t> bytes,
-                                   const NativeRegistry& natives) {
+                                   const NativeRegistry& natives, Engine engine) {
     auto image = read_image(bytes);
     if (!image) {
         return core::Error{image.error()};
     }
-    return link(std::move(*image), natives);
+    return link(std::move(*image), natives, engine);
 }
 
 } // namespace eposp::vm

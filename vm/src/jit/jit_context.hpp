@@ -17,7 +17,7 @@ struct JitContext {
     Activation* calls = nullptr; ///< the task's call stack
     std::uint32_t* depth = nullptr;
     std::uint64_t stack_end = 0;
-    const void* const* entries = nullptr; ///< machine address of each instruction
+    const void* const* entries = nullptr;       ///< machine address of each instruction
     const std::uint32_t* frame_sizes = nullptr; ///< per POU
     std::int64_t remaining = 0;                 ///< instructions left in the slice
     ExitKind exit_kind = ExitKind::Finished;

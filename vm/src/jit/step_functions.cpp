@@ -1,6 +1,5 @@
-#include "step_context.hpp"
-
 #include "../instruction_semantics.hpp"
+#include "step_context.hpp"
 
 // One function per opcode, expanding the same family macros as the interpreter: compiled code
 // calls these for the instructions it does not translate itself, so both engines share one
@@ -24,7 +23,7 @@ using namespace detail; // the value semantics: add, convert, divide...
 #define VM_EXEC_Nop(T1, T2) VM_NEXT();
 #define VM_EXEC_CallNative(T1, T2)                                                                 \
     {                                                                                              \
-        NativeArgs args(B, context.program->image().imports[ip->a].signature,                     \
+        NativeArgs args(B, context.program->image().imports[ip->a].signature,                      \
                         std::span<std::uint8_t>(mem, mem_size));                                   \
         context.program->native(ip->a)(args);                                                      \
         if (args.failed()) {                                                                       \
