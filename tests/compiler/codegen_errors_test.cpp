@@ -3,6 +3,9 @@
 #include "codegen_harness.hpp"
 
 #include <gtest/gtest.h>
+#include <ostream>
+#include <string>
+#include <vector>
 
 namespace eposp::compiler::test {
 namespace {
@@ -234,6 +237,156 @@ END_PROGRAM
     for (const char* name : {"'direct'", "'bound'", "'bit'", "'referenced'", "'shown'"}) {
         EXPECT_EQ(text.find(std::string("output ") + name), std::string::npos) << name << text;
     }
+}
+
+// Definite assignment, path by path: a function's result or output that some path to a RETURN
+// or to the end leaves unassigned is a warning at its declaration, with a note at each such
+// exit. A function's variables start from their initial values at each call, so such a path
+// returns those.
+struct Paths {
+    std::string name;
+    std::string source;
+    std::vector<std::string> expected; // parts of the diagnostics; empty: no path warning
+
+    friend void PrintTo(const Paths& c, std::ostream* out) { *out << c.source; }
+};
+
+class DefiniteAssignment : public testing::TestWithParam<Paths> {};
+
+TEST_P(DefiniteAssignment, WarnsWhereAPathLeavesAnOutputUnassigned) {
+    const Paths& c = GetParam();
+    const std::string text = diagnostics_of(c.source);
+    for (const std::string& part : c.expected) {
+        EXPECT_NE(text.find(part), std::string::npos) << part << "\n" << text;
+    }
+    if (c.expected.empty()) {
+        EXPECT_EQ(text.find("may be left unassigned"), std::string::npos) << text;
+        EXPECT_EQ(text.find("may return without"), std::string::npos) << text;
+    }
+}
+
+// `y` is declared at test.st:3:12; the body starts on line 5 and END_FUNCTION follows it.
+std::string function_with(const std::string& body, const std::string& outputs = "y : INT;") {
+    return "FUNCTION F : INT\nVAR_INPUT c, d : BOOL; n : INT; END_VAR\nVAR_OUTPUT " + outputs +
+           " END_VAR\nVAR i : INT; END_VAR\n" + body + "\nEND_FUNCTION\n";
+}
+
+const std::string kHelpers = "FUNCTION Fill : BOOL\nVAR_IN_OUT v : INT; END_VAR\nv := 7; Fill := "
+                             "TRUE;\nEND_FUNCTION\nFUNCTION Pair : INT\nVAR_OUTPUT q : INT; "
+                             "END_VAR\nq := 1; Pair := 2;\nEND_FUNCTION\n";
+const std::string kModes = "TYPE Mode : (Idle, Run, Fault); END_TYPE\n";
+const std::string kMayBeLeft = "test.st:3:12: warning: output 'y' may be left unassigned (not "
+                               "assigned on every path)";
+
+INSTANTIATE_TEST_SUITE_P(
+    Paths, DefiniteAssignment,
+    testing::Values(
+        // Every path assigns: no warning.
+        Paths{"AssignedBeforeIf", function_with("y := 0; F := 0;\nIF c THEN y := 1; END_IF"), {}},
+        Paths{"EveryBranchAssigns",
+              function_with("IF c THEN y := 1; F := 1; ELSIF d THEN y := 2; F := 2;\nELSE y := 3; "
+                            "F := 3; END_IF"),
+              {}},
+        Paths{"NestedIfsAssignOnEveryPath",
+              function_with("IF c THEN IF d THEN y := 1; ELSE y := 2; END_IF\nELSE y := 3; "
+                            "END_IF F := 1;"),
+              {}},
+        Paths{"CaseWithElseAssignsInEveryBranch",
+              function_with("CASE n OF 1: y := 1; 2, 3: y := 2; ELSE y := 0; END_CASE F := 1;"),
+              {}},
+        Paths{"CaseOverEveryEnumeratorNeedsNoElse",
+              kModes + "FUNCTION F : INT\nVAR_INPUT m : Mode; END_VAR\nCASE m OF Idle: F := 1; "
+                       "Run: F := 2;\nFault: F := 3; END_CASE\nEND_FUNCTION\n",
+              {}},
+        Paths{"CaseOverAWholeSubrangeNeedsNoElse",
+              "FUNCTION F : INT\nVAR_INPUT s : INT(0..3); END_VAR\nCASE s OF 0..1: F := 1; 2, "
+              "3: F := 2; END_CASE\nEND_FUNCTION\n",
+              {}},
+        Paths{"ReturnAfterAssignment",
+              function_with("IF c THEN y := 1; F := 1; RETURN; END_IF\ny := 2; F := 2;"),
+              {}},
+        Paths{"RepeatBodyRunsAtLeastOnce",
+              function_with("REPEAT i := i + 1; y := i; UNTIL i > n END_REPEAT F := y;"),
+              {}},
+        Paths{"ExitAfterAssignmentInRepeat",
+              function_with("REPEAT y := 1; IF c THEN EXIT; END_IF UNTIL d END_REPEAT F := y;"),
+              {}},
+        Paths{"EndlessLoopLeftByReturn",
+              function_with("WHILE TRUE DO i := i + 1;\nIF i > n THEN y := i; F := i; RETURN; "
+                            "END_IF END_WHILE"),
+              {}},
+        Paths{"OutputBindingAssigns", kHelpers + function_with("F := Pair(q => y);"), {}},
+        Paths{"InOutArgumentAssigns", kHelpers + function_with("Fill(y); F := 1;"), {}},
+        Paths{"ForControlVariableIsAssignedBeforeTheFirstTest",
+              function_with("FOR y := 1 TO n DO i := y; END_FOR F := 1;"),
+              {}},
+        Paths{"InitialValueCoversTheOtherPaths",
+              function_with("IF c THEN y := 1; ok := FALSE; END_IF F := 1; y := 2;",
+                            "y : INT; ok : BOOL := TRUE;"),
+              {}},
+        Paths{"AccumulatorCountsOnTheInitialValue",
+              function_with("FOR i := 1 TO n DO F := F + i; END_FOR y := 1;"),
+              {}},
+        Paths{"PartialWritesAreNotTracked",
+              function_with("FOR i := 1 TO 3 DO a[i] := i; END_FOR\nIF c THEN s.0 := TRUE; "
+                            "END_IF F := 1;",
+                            "a : ARRAY[1..3] OF INT; s : WORD;"),
+              {}},
+        // An FB's outputs keep their values between calls: a path that leaves one is normal.
+        Paths{"FunctionBlockOutputsHoldTheirValue",
+              "FUNCTION_BLOCK B\nVAR_INPUT c : BOOL; END_VAR\nVAR_OUTPUT y : INT; END_VAR\nIF c "
+              "THEN y := 1; END_IF\nEND_FUNCTION_BLOCK\n",
+              {}},
+        // Some path leaves it unassigned: a warning, with the exit it reaches.
+        Paths{"IfWithoutElse",
+              function_with("IF c THEN y := 1; END_IF F := 1;"),
+              {kMayBeLeft,
+               "test.st:6:1: note: the end of the function is reached without assigning it"}},
+        Paths{"ElsifWithoutElse",
+              function_with("IF c THEN y := 1; ELSIF d THEN y := 2; END_IF F := 1;"),
+              {kMayBeLeft}},
+        Paths{"NestedIfMissesIt",
+              function_with("IF c THEN IF d THEN y := 1; END_IF\nELSE y := 2; END_IF F := 1;"),
+              {kMayBeLeft}},
+        Paths{"CaseWithoutElse",
+              function_with("CASE n OF 1: y := 1; 2: y := 2; END_CASE F := 1;"),
+              {kMayBeLeft}},
+        Paths{"CaseOverSomeEnumerators",
+              kModes + "FUNCTION F : INT\nVAR_INPUT m : Mode; END_VAR\nCASE m OF Idle: F := 1; "
+                       "Run: F := 2; END_CASE\nEND_FUNCTION\n",
+              {"test.st:2:10: warning: function 'F' may return without assigning its result "
+               "(not assigned on every path)"}},
+        Paths{"ResultOnOnePathOnly",
+              function_with("y := 1; IF c THEN F := 1; END_IF"),
+              {"test.st:1:10: warning: function 'F' may return without assigning its result"}},
+        Paths{"ReturnBeforeAssignment",
+              function_with("F := 0;\nIF c THEN RETURN; END_IF y := 1;"),
+              {kMayBeLeft, "test.st:6:11: note: this RETURN is reached without assigning it"}},
+        Paths{"AssignedOnlyInAForLoop",
+              function_with("FOR i := 1 TO n DO y := i; END_FOR F := 1;"),
+              {kMayBeLeft}},
+        Paths{"AssignedOnlyInAWhileLoop",
+              function_with("WHILE i < n DO i := i + 1; y := i; END_WHILE F := 1;"),
+              {kMayBeLeft}},
+        Paths{"ExitBeforeAssignmentInRepeat",
+              function_with("REPEAT IF c THEN EXIT; END_IF y := 1; UNTIL d END_REPEAT F := 1;"),
+              {kMayBeLeft}},
+        Paths{"EnFalseSkipsTheAssignment",
+              function_with("y := ABS(EN := c, IN := n); F := 1;"),
+              {kMayBeLeft}},
+        Paths{"InOutArgumentOnOnePathOnly",
+              kHelpers + function_with("IF c THEN Fill(v := y); END_IF F := 1;"),
+              {"output 'y' may be left unassigned"}}),
+    [](const auto& c) { return c.param.name; });
+
+// An output or result that nothing assigns gets the "never assigned" warning only.
+TEST(Warnings, NeverAssignedIsNotReportedTwice) {
+    const std::string text = diagnostics_of(function_with("i := 1;"));
+    EXPECT_NE(text.find("warning: output 'y' is never assigned"), std::string::npos) << text;
+    EXPECT_NE(text.find("warning: function 'F' never assigns its result"), std::string::npos)
+        << text;
+    EXPECT_EQ(text.find("may be left unassigned"), std::string::npos) << text;
+    EXPECT_EQ(text.find("may return without"), std::string::npos) << text;
 }
 
 // A declaration that failed is reported once, not again at every use of the variable.

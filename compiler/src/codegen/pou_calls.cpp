@@ -357,4 +357,36 @@ std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& sign
     return Value{result, &type};
 }
 
+bool PouGenerator::may_write_argument(const ast::CallExpression& node, std::size_t index) const {
+    const auto* name = std::get_if<ast::NameExpression>(&node.callee->node);
+    const sema::Symbol* callee = name != nullptr ? model_.resolved(name->name) : nullptr;
+    const ast::Pou* function = nullptr;
+    if (callee != nullptr && callee->kind == sema::SymbolKind::Pou) {
+        function = callee->pou;
+    } else if (callee != nullptr && callee->kind == sema::SymbolKind::StandardFunction) {
+        function = program_.library_pou(callee->name);
+        if (function == nullptr) {
+            return false; // the built-in standard functions take values (ADR aside)
+        }
+    }
+    if (function != nullptr) {
+        const sema::Type& frame = *types_.frame(*function);
+        std::size_t positional = 0;
+        for (std::size_t i = 0; i < index; ++i) {
+            if (!node.arguments[i].name) {
+                formal(frame, node.arguments[i], positional);
+            }
+        }
+        const sema::Field* field = formal(frame, node.arguments[index], positional);
+        return field != nullptr && field->section == ast::VarSectionKind::InOut;
+    }
+    // An instance: its formal names resolve to its variables.
+    const ast::Argument& argument = node.arguments[index];
+    const sema::Symbol* formal_symbol = argument.name ? model_.resolved(*argument.name) : nullptr;
+    if (formal_symbol != nullptr && formal_symbol->kind == sema::SymbolKind::Variable) {
+        return formal_symbol->section == ast::VarSectionKind::InOut;
+    }
+    return true;
+}
+
 } // namespace eposp::compiler::codegen

@@ -76,6 +76,9 @@ private:
     void initialise_frame();
     /// Warnings: variables never used, a function result never assigned.
     void report_unused();
+    /// Warnings: a function's result or output (of those `written` somewhere) left unassigned
+    /// by some path to a RETURN or the end (definite_assignment.hpp).
+    void report_unassigned_paths(const std::unordered_set<std::string>& written);
     vm::Operand temp(const sema::Type& type);
     std::uint32_t out_slot(std::uint32_t end);
     /// Whether `operand` is a temporary of the current statement (not a variable).
@@ -289,6 +292,10 @@ private:
     std::optional<Value> native_result(const vm::NativeSignature& signature, const sema::Type& type,
                                        const Destination* dest);
 
+    /// Whether the argument `index` of `node`, given as a variable, may be written by the call:
+    /// a VAR_IN_OUT, or a parameter that cannot be told.
+    bool may_write_argument(const ast::CallExpression& node, std::size_t index) const;
+
     // --- standard_functions.cpp --------------------------------------------------------------
     std::optional<Value> standard_function(const std::string& name, const ast::CallExpression& node,
                                            const sema::Type* hint, const Destination* dest,
@@ -334,6 +341,8 @@ private:
     std::vector<Loop> loops_;
     std::vector<std::uint32_t> for_variables_; // operands of the enclosing FOR loops
     bool result_assigned_ = false;
+    /// CASE statements whose labels cover every value of the selector (definite assignment).
+    std::unordered_set<const ast::CaseStatement*> exhaustive_cases_;
     std::unordered_set<std::string> used_; // folded names of the variables referred to
     ValueCache cache_;
     std::unordered_map<std::uint16_t, std::uint32_t> array_bytes_; // per descriptor

@@ -11,6 +11,41 @@ namespace eposp::compiler::codegen {
 using vm::Opcode;
 using vm::Operand;
 
+namespace {
+
+/// Whether the CASE labels `ranges` (low, high) cover every value a selector of `type` holds:
+/// each enumerator of an enumeration, the whole of a subrange. Then no selector value skips
+/// all the branches (7.3.3.3.3), which definite assignment takes into account.
+bool covers_every_value(const sema::Type& type,
+                        std::vector<std::pair<std::int64_t, std::int64_t>> ranges) {
+    const auto covered = [&](std::int64_t value) {
+        return std::any_of(ranges.begin(), ranges.end(),
+                           [&](const auto& r) { return r.first <= value && value <= r.second; });
+    };
+    if (type.kind == sema::TypeKind::Enum) {
+        return !type.enumerators.empty() &&
+               std::all_of(type.enumerators.begin(), type.enumerators.end(),
+                           [&](const auto& enumerator) { return covered(enumerator.second); });
+    }
+    if (!type.range) {
+        return false;
+    }
+    std::sort(ranges.begin(), ranges.end());
+    std::int64_t next = type.range->lower; // the lowest value not yet covered
+    for (const auto& [low, high] : ranges) {
+        if (low > next) {
+            return false;
+        }
+        if (high >= type.range->upper) {
+            return true;
+        }
+        next = std::max(next, high + 1);
+    }
+    return false;
+}
+
+} // namespace
+
 void PouGenerator::statements(const ast::StatementList& list) {
     bool reported = false;
     for (std::size_t i = 0; i < list.size(); ++i) {
@@ -231,6 +266,16 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
                                   bodies.back(), !label.high});
             }
         }
+    }
+    std::vector<std::pair<std::int64_t, std::int64_t>> labels;
+    for (const CaseRange& range : ranges) {
+        labels.emplace_back(range.low, range.high);
+    }
+    // Loading a subrange variable gives its base type; its labels are checked against its own.
+    const sema::Type* subrange =
+        type.kind == sema::TypeKind::Enum ? nullptr : declared_subrange(*node.selector);
+    if (covers_every_value(subrange != nullptr ? *subrange : type, std::move(labels))) {
+        exhaustive_cases_.insert(&node);
     }
     const vm::Label otherwise = builder_.label();
     if (!jump_table(selector->operand, type, ranges, otherwise)) {
