@@ -97,6 +97,8 @@ TEST(RunCommand, RunTimeErrorStopsTheTaskNamingThePouAndLine) {
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_THAT(result.output, HasSubstr("Fast: stopped after 0 cycles: division by zero in Main "
                                          "at line 7"));
+    const auto interpreted = eposp("run " + source + " --for 10ms --engine interpreter");
+    EXPECT_EQ(interpreted.output, result.output);
 }
 
 TEST(RunCommand, PrintsEachTasksTimingUnderTheCostModel) {
@@ -241,6 +243,22 @@ TEST(BenchCommand, BenchmarkProgramGivesTheTableResults) {
     EXPECT_THAT(result.output, HasSubstr("result=1099718708 "));
     EXPECT_THAT(result.output, HasSubstr("r=514947.000000 "));
     EXPECT_THAT(result.output, HasSubstr("us_per_scan="));
+}
+
+TEST(BenchCommand, BothEnginesGiveTheTableResults) {
+    for (const char* engine : {"compiled", "interpreter"}) {
+        const auto result = eposp("bench " + std::string(EPOSP_SOURCE_DIR) +
+                                  "/tests/compiler/inputs/sieve.st --scans 100 --engine " + engine);
+        EXPECT_EQ(result.exit_code, 0) << engine << ": " << result.output;
+        EXPECT_THAT(result.output, HasSubstr("cycles=100 ")) << engine;
+    }
+}
+
+TEST(BenchCommand, UnknownEngineIsRefused) {
+    const auto result = eposp("bench " + std::string(EPOSP_SOURCE_DIR) +
+                              "/tests/compiler/inputs/sieve.st --engine jit");
+    EXPECT_NE(result.exit_code, 0);
+    EXPECT_THAT(result.output, HasSubstr("jit not in {compiled,interpreter}"));
 }
 
 TEST(BenchCommand, ProgramWithoutCyclicTaskIsAUserError) {

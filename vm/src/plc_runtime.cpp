@@ -66,7 +66,7 @@ std::optional<core::Error> PlcRuntime::load(Image image) {
     if (const auto error = MarkerArea::check_bindings(image)) {
         return error;
     }
-    auto program = link(std::move(image), natives_);
+    auto program = link(std::move(image), natives_, config_.engine);
     if (!program) {
         return core::Error{program.error()};
     }

@@ -27,4 +27,16 @@ CLI::Option* add_duration_option(CLI::App& command, const std::string& name,
         ->type_name("DURATION");
 }
 
+CLI::Option* add_engine_option(CLI::App& command, vm::Engine& target) {
+    return command
+        .add_option_function<std::string>(
+            "--engine",
+            [&target](const std::string& name) {
+                target = name == "interpreter" ? vm::Engine::Interpreter : vm::Engine::Compiled;
+            },
+            "What runs the program: compiled (machine code where the build can) or interpreter")
+        ->check(CLI::IsMember({"compiled", "interpreter"}))
+        ->default_str(target == vm::Engine::Compiled ? "compiled" : "interpreter");
+}
+
 } // namespace eposp::device::cli

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/core/time.hpp"
+#include "eposp/vm/program.hpp"
 
 #include <CLI/CLI.hpp>
 #include <optional>
@@ -13,6 +14,10 @@ namespace eposp::device::cli {
 CLI::Option* add_duration_option(CLI::App& command, const std::string& name,
                                  std::optional<core::Duration>& target,
                                  const std::string& description);
+
+/// Adds `--engine compiled|interpreter`: what runs the program (the interpreter is the reference,
+/// compiled code the fast one; both give the same results).
+CLI::Option* add_engine_option(CLI::App& command, vm::Engine& target);
 
 /// Reports a user-facing failure as `eposp <command>: error: <message>` on stderr and returns
 /// the exit code for it, 1.

@@ -1,6 +1,7 @@
 // `eposp run app.epx|FILES… [--for 10s] [--watch PATH]… [--ns-per-instruction N]
-// [--retain FILE --start warm]`: runs a program in the PLC runtime in virtual time, and prints
-// each task's statistics, the errors raised and the watched variables at the end.
+// [--retain FILE --start warm] [--engine interpreter]`: runs a program in the PLC runtime in
+// virtual time, and prints each task's statistics, the errors raised and the watched variables at
+// the end.
 #include "commands.hpp"
 #include "options.hpp"
 #include "plc_session.hpp"
@@ -24,6 +25,7 @@ struct RunOptions {
     std::uint64_t watchdog = vm::RuntimeConfig{}.watchdog_instructions;
     std::optional<std::string> retain_file;
     std::string start = "cold";
+    vm::Engine engine = vm::default_engine();
 };
 
 std::string statistics_line(const vm::TaskStatistics& s, std::uint64_t ns_per_instruction) {
@@ -92,6 +94,7 @@ int run_program(const RunOptions& options) {
     vm::RuntimeConfig config;
     config.cost.ns_per_instruction = options.ns_per_instruction;
     config.watchdog_instructions = options.watchdog;
+    config.engine = options.engine;
     if (options.retain_file) {
         config.retain_file = *options.retain_file;
     }
@@ -152,6 +155,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
     command->add_option("--start", options->start, "Start mode: cold, warm or hot")
         ->check(CLI::IsMember({"cold", "warm", "hot"}))
         ->capture_default_str();
+    add_engine_option(*command, options->engine);
     command->callback([options, &exit_code] { exit_code = run_program(*options); });
 }
 

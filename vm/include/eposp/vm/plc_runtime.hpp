@@ -48,6 +48,8 @@ struct RuntimeConfig {
     std::uint32_t retain_capacity = 512;
     /// While running, retain data is saved this often when it changed; zero: only at stop.
     core::Duration retain_save_interval{};
+    /// What runs the loaded programs (the results are the same; the speed is not).
+    Engine engine = default_engine();
 };
 
 /// The PLC: a loaded program, its tasks on the event loop, RETAIN variables, the DS-405 process
