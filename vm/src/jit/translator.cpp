@@ -108,6 +108,11 @@ private:
     template <typename T>
     bool shift(const Instruction& ins, bool left);
     template <typename T>
+    bool division(const Instruction& ins, bool remainder);
+    /// Checks the pointer at `pointer_field` as the interpreter does (not NULL, `bytes` at
+    /// pointer + `offset` inside memory) and leaves it in rax.
+    void checked_pointer(std::uint32_t pointer_field, std::uint32_t offset, std::uint32_t bytes);
+    template <typename T>
     bool set_compare(const Instruction& ins, Cond signed_cond, Cond unsigned_cond);
     template <typename T>
     bool branch_compare(const Instruction& ins, Cond signed_cond, Cond unsigned_cond);
@@ -141,6 +146,9 @@ private:
     VM_FAMILY(Sub)
     VM_FAMILY(Mul)
     VM_FAMILY(Div)
+    VM_FAMILY(Mod)
+    VM_FAMILY(Ldp)
+    VM_FAMILY(Stp)
     VM_FAMILY(AddI)
     VM_FAMILY(Neg)
     VM_FAMILY(Not)
@@ -175,11 +183,8 @@ private:
     VM_STEP_FAMILY(IdxAP)
     VM_STEP_FAMILY(LdpN)
     VM_STEP_FAMILY(StpN)
-    VM_STEP_FAMILY(Ldp)
-    VM_STEP_FAMILY(Stp)
     VM_STEP_FAMILY(Rol)
     VM_STEP_FAMILY(Ror)
-    VM_STEP_FAMILY(Mod)
     VM_STEP_FAMILY(Abs)
     VM_STEP_FAMILY(Trunc)
     VM_STEP_FAMILY(Range)
@@ -872,6 +877,48 @@ bool Translator::emit_Stx(const Instruction& ins) {
     return true;
 }
 
+void Translator::checked_pointer(std::uint32_t pointer_field, std::uint32_t offset,
+                                 std::uint32_t bytes) {
+    mov(rax, at(pointer_field, 8));
+    cmp(rax, kNullGuardSize);
+    jb(trap_exit(Trap::NullDereference));
+    mov(rcx, qword[r15 + kMemSize]);
+    cmp(rax, rcx);
+    ja(trap_exit(Trap::InvalidAddress));
+    sub(rcx, rax);
+    mov(rdx, std::uint64_t{offset} + bytes);
+    cmp(rcx, rdx);
+    jb(trap_exit(Trap::InvalidAddress));
+}
+
+// A displacement holds 31 bits: a larger offset goes through the step function.
+template <typename T, typename R>
+bool Translator::emit_Ldp(const Instruction& ins) {
+    if (ins.c > INT32_MAX) {
+        return false;
+    }
+    checked_pointer(ins.b, ins.c, sizeof(T));
+    const auto source = sized(sizeof(T))[r12 + rax + ins.c];
+    if constexpr (sizeof(T) < 4) {
+        movzx(ecx, source);
+    } else {
+        mov(work(rcx, sizeof(T)), source);
+    }
+    store(ins.a, sizeof(T), rcx);
+    return true;
+}
+
+template <typename T, typename R>
+bool Translator::emit_Stp(const Instruction& ins) {
+    if (ins.c > INT32_MAX) {
+        return false;
+    }
+    checked_pointer(ins.a, ins.c, sizeof(T));
+    load(rcx, ins.b, sizeof(T), false);
+    mov(sized(sizeof(T))[r12 + rax + ins.c], part(rcx, sizeof(T)));
+    return true;
+}
+
 template <typename T, typename Operation>
 bool Translator::binary(const Instruction& ins, Operation&& operation) {
     constexpr int bytes = sizeof(T);
@@ -935,7 +982,38 @@ bool Translator::emit_Mul(const Instruction& ins) {
     }
 }
 
-// Integer division traps on zero: its step function does that.
+// Truncating integer division: /0 traps, MIN / -1 wraps to MIN and MIN MOD -1 is 0 (where x86
+// would fault). INT and SINT divide as 32-bit values.
+template <typename T>
+bool Translator::division(const Instruction& ins, bool remainder) {
+    constexpr int bytes = sizeof(T);
+    constexpr int wide = bytes == 8 ? 8 : 4;
+    load(rax, ins.b, bytes, std::is_signed_v<T>);
+    load(rcx, ins.c, bytes, std::is_signed_v<T>);
+    test(work(rcx, wide), work(rcx, wide));
+    jz(trap_exit(Trap::DivisionByZero));
+    Xbyak::Label done;
+    if constexpr (std::is_signed_v<T>) {
+        Xbyak::Label divide;
+        cmp(work(rcx, wide), -1);
+        jne(divide);
+        remainder ? xor_(eax, eax) : neg(work(rax, wide));
+        jmp(done);
+        L(divide);
+        wide == 8 ? cqo() : cdq();
+        idiv(work(rcx, wide));
+    } else {
+        xor_(edx, edx);
+        div(work(rcx, wide));
+    }
+    if (remainder) {
+        mov(work(rax, wide), work(rdx, wide));
+    }
+    L(done);
+    store(ins.a, bytes, rax);
+    return true;
+}
+
 template <typename T, typename R>
 bool Translator::emit_Div(const Instruction& ins) {
     if constexpr (kFloat<T>) {
@@ -943,8 +1021,13 @@ bool Translator::emit_Div(const Instruction& ins) {
             sizeof(T) == 4 ? divss(x, y) : divsd(x, y);
         });
     } else {
-        return false;
+        return division<T>(ins, false);
     }
+}
+
+template <typename T, typename R>
+bool Translator::emit_Mod(const Instruction& ins) {
+    return division<T>(ins, true);
 }
 
 template <typename T, typename R>
