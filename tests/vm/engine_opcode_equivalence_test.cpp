@@ -4,6 +4,8 @@
 // must end in the same state with the same fault, the same branch taken and the same bytes.
 // Operands are read from the frame and the out area and written to the instance, so three of
 // the four bases are exercised; the compiled ST programs of the compiler tests cover the rest.
+// The instruction's first operand was just stored by the instruction before it, as in a chain
+// of dependent instructions.
 
 #include "vm_harness.hpp"
 
@@ -47,9 +49,9 @@ std::vector<std::uint64_t> edge_values() {
                                       ~std::uint64_t{0},
                                       ~std::uint64_t{1},
                                       ~std::uint64_t{6}};
-    for (double real : {2.5, -2.5, 0.49999999999999994, 1e300, -1e19,
-                        std::numeric_limits<double>::infinity(),
-                        std::numeric_limits<double>::quiet_NaN()}) {
+    for (double real :
+         {2.5, -2.5, 0.49999999999999994, 1e300, -1e19, std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::quiet_NaN()}) {
         values.push_back(bits(real));
     }
     for (float real : {2.5F, -3.5F, 1e20F, std::numeric_limits<float>::quiet_NaN()}) {
@@ -94,8 +96,17 @@ public:
         const OpcodeInfo& info = opcode_info(op);
         Builder& b = harness_.builder;
         for (std::uint32_t at = 0; at < 16; at += 8) {
-            b.emit(Opcode::Mov64, Operand::local(at), self(kX + at));
             b.emit(Opcode::Mov64, Operand::out(at), self(kY + at));
+            b.emit(Opcode::Mov64, Operand::local(at), self(kX + at));
+        }
+        // x stored once more at the width the instruction reads it, so that compiled code
+        // takes it from the register the store left it in.
+        const FieldSpec first_read = info.a.field == Field::Read   ? info.a
+                                     : info.b.field == Field::Read ? info.b
+                                                                   : info.c;
+        if (first_read.field == Field::Read && (first_read.size == 4 || first_read.size == 8)) {
+            b.emit(first_read.size == 4 ? Opcode::Mov32 : Opcode::Mov64, Operand::local(0),
+                   self(kX));
         }
         const Label taken = b.label();
         Operand fields[3];
@@ -138,7 +149,12 @@ public:
         b.emit(Opcode::Ldi8, self(kTaken), imm(1));
         b.emit(Opcode::Ret);
         harness_.end_main(64, 64);
-        harness_.builder.task(Task{"T", TaskKind::Cyclic, 1'000'000, 0, 0, 4096,
+        harness_.builder.task(Task{"T",
+                                   TaskKind::Cyclic,
+                                   1'000'000,
+                                   0,
+                                   0,
+                                   4096,
                                    {TaskEntry{harness_.main, harness_.instance}}});
         auto image = harness_.builder.finish();
         if (!image) {
@@ -187,10 +203,11 @@ TEST_P(EngineOpcodes, CompiledCodeGivesTheInterpretersResult) {
     const auto values = edge_values();
     const std::vector<std::int16_t> steps =
         info.aux == Aux::Step ? std::vector<std::int16_t>{1, -1, 3} : std::vector<std::int16_t>{0};
-    const bool has_immediate = info.a.field == Field::Imm || info.b.field == Field::Imm ||
-                               info.c.field == Field::Imm;
+    const bool has_immediate =
+        info.a.field == Field::Imm || info.b.field == Field::Imm || info.c.field == Field::Imm;
     const std::vector<std::uint32_t> immediates =
-        has_immediate ? std::vector<std::uint32_t>{0, 5, 0xFFFFFFF0U} : std::vector<std::uint32_t>{0};
+        has_immediate ? std::vector<std::uint32_t>{0, 5, 0xFFFFFFF0U}
+                      : std::vector<std::uint32_t>{0};
     const bool through_pointer = info.name.starts_with("Stp");
     for (std::int16_t step : steps) {
         for (std::uint32_t immediate : immediates) {
@@ -202,8 +219,8 @@ TEST_P(EngineOpcodes, CompiledCodeGivesTheInterpretersResult) {
                 for (std::uint64_t y : values) {
                     ASSERT_EQ(compiled.run(x, y, through_pointer),
                               reference.run(x, y, through_pointer))
-                        << info.name << " x=" << std::hex << x << " y=" << y
-                        << " imm=" << immediate << std::dec << " step=" << step;
+                        << info.name << " x=" << std::hex << x << " y=" << y << " imm=" << immediate
+                        << std::dec << " step=" << step;
                 }
             }
         }

@@ -63,8 +63,14 @@ private:
     const Xbyak::AddressFrame& sized(int bytes) const;
     static Xbyak::Reg work(const Xbyak::Reg64& r, int bytes);
     static Xbyak::Reg part(const Xbyak::Reg64& r, int bytes);
+    /// A register holding the value of an operand.
+    struct Held {
+        std::uint32_t field = 0;
+        int bytes = 0;
+    };
+    static bool holds(const std::optional<Held>& held, std::uint32_t field, int bytes);
     void load(const Xbyak::Reg64& r, std::uint32_t field, int bytes, bool sign);
-    void load64(const Xbyak::Reg64& r, std::uint32_t field, int bytes, bool sign);
+    void load64(std::uint32_t field, int bytes, bool sign);
     void store(std::uint32_t field, int bytes, const Xbyak::Reg64& r);
 
     // Control.
@@ -95,9 +101,9 @@ private:
     template <typename T>
     Cond compare(std::uint32_t x, std::uint32_t y, Cond signed_cond, Cond unsigned_cond);
     template <typename T>
-    void float_load(const Xbyak::Xmm& x, std::uint32_t field);
+    void float_load(std::uint32_t field);
     template <typename T>
-    void float_store(std::uint32_t field, const Xbyak::Xmm& x);
+    void float_store(std::uint32_t field);
 
     template <typename T, typename Operation>
     bool binary(const Instruction& ins, Operation&& operation);
@@ -198,8 +204,10 @@ private:
     Xbyak::Label exit_common_;
     std::uint32_t pou_index_ = 0;
     const Pou* pou_ = nullptr;
-    std::uint32_t index_ = 0;   ///< the instruction being translated
-    std::uint32_t segment_ = 0; ///< the first instruction of its basic block
+    std::uint32_t index_ = 0;                      ///< the instruction being translated
+    std::uint32_t segment_ = 0;                    ///< the first instruction of its basic block
+    std::optional<Held> held_rax_, held_xmm0_;     ///< at the start of this instruction
+    std::optional<Held> stored_rax_, stored_xmm0_; ///< left by this instruction
 };
 
 namespace {
@@ -340,7 +348,25 @@ Xbyak::Reg Translator::part(const Xbyak::Reg64& r, int bytes) {
     }
 }
 
+// A value an instruction stores from rax (or xmm0) is still there when the next one starts: its
+// loads of that operand take the register, which spares the store-to-load forwarding latency on
+// every chain of dependent instructions. Valid only from the store to the next instruction's
+// first write of the register, and never across a block start.
+bool Translator::holds(const std::optional<Held>& held, std::uint32_t field, int bytes) {
+    return held && held->field == field && held->bytes == bytes;
+}
+
 void Translator::load(const Xbyak::Reg64& r, std::uint32_t field, int bytes, bool sign) {
+    const bool hit = bytes >= 4 && holds(held_rax_, field, bytes);
+    if (r.getIdx() == rax.getIdx()) {
+        held_rax_.reset(); // the caller is about to change rax
+        if (hit) {
+            return;
+        }
+    } else if (hit) {
+        mov(work(r, bytes), work(rax, bytes));
+        return;
+    }
     if (bytes < 4) {
         sign ? movsx(r.cvt32(), at(field, bytes)) : movzx(r.cvt32(), at(field, bytes));
     } else {
@@ -348,36 +374,53 @@ void Translator::load(const Xbyak::Reg64& r, std::uint32_t field, int bytes, boo
     }
 }
 
-void Translator::load64(const Xbyak::Reg64& r, std::uint32_t field, int bytes, bool sign) {
-    if (bytes == 8) {
-        mov(r, at(field, 8));
+// Into rax, extended to 64 bits. A held DWORD is already zero-extended (32-bit operations clear
+// the upper half).
+void Translator::load64(std::uint32_t field, int bytes, bool sign) {
+    const bool hit = bytes >= 4 && holds(held_rax_, field, bytes);
+    held_rax_.reset();
+    if (hit) {
+        if (bytes == 4 && sign) {
+            movsxd(rax, eax);
+        }
+    } else if (bytes == 8) {
+        mov(rax, at(field, 8));
     } else if (bytes == 4) {
-        sign ? movsxd(r, at(field, 4)) : mov(r.cvt32(), at(field, 4));
+        sign ? movsxd(rax, at(field, 4)) : mov(eax, at(field, 4));
     } else {
-        sign ? movsx(r, at(field, bytes)) : movzx(r.cvt32(), at(field, bytes));
+        sign ? movsx(rax, at(field, bytes)) : movzx(eax, at(field, bytes));
     }
 }
 
 void Translator::store(std::uint32_t field, int bytes, const Xbyak::Reg64& r) {
     mov(at(field, bytes), part(r, bytes));
-}
-
-template <typename T>
-void Translator::float_load(const Xbyak::Xmm& x, std::uint32_t field) {
-    if constexpr (sizeof(T) == 4) {
-        movss(x, at(field, 4));
-    } else {
-        movsd(x, at(field, 8));
+    if (r.getIdx() == rax.getIdx() && bytes >= 4) {
+        stored_rax_ = Held{field, bytes};
     }
 }
 
 template <typename T>
-void Translator::float_store(std::uint32_t field, const Xbyak::Xmm& x) {
-    if constexpr (sizeof(T) == 4) {
-        movss(at(field, 4), x);
-    } else {
-        movsd(at(field, 8), x);
+void Translator::float_load(std::uint32_t field) {
+    const bool hit = holds(held_xmm0_, field, sizeof(T));
+    held_xmm0_.reset();
+    if (hit) {
+        return;
     }
+    if constexpr (sizeof(T) == 4) {
+        movss(xmm0, at(field, 4));
+    } else {
+        movsd(xmm0, at(field, 8));
+    }
+}
+
+template <typename T>
+void Translator::float_store(std::uint32_t field) {
+    if constexpr (sizeof(T) == 4) {
+        movss(at(field, 4), xmm0);
+    } else {
+        movsd(at(field, 8), xmm0);
+    }
+    stored_xmm0_ = Held{field, sizeof(T)};
 }
 
 // --- Control ----------------------------------------------------------------------------------
@@ -498,6 +541,7 @@ void Translator::branch(std::uint32_t target, EmitSkip&& emit_skip) {
 Xbyak::RegExp Translator::element(const Instruction& ins, std::uint32_t array_field,
                                   std::uint32_t index_field) {
     const ArrayDescriptor& descriptor = image_.arrays[ins.aux];
+    held_rax_.reset();
     if (descriptor.index_size == 2) {
         movsx(eax, at(index_field, 2));
     } else {
@@ -592,7 +636,11 @@ void Translator::translate() {
         for (index_ = pou_->code_begin; index_ < pou_->code_end; ++index_) {
             if (starts[index_]) {
                 segment_ = index_;
+                stored_rax_.reset();
+                stored_xmm0_.reset();
             }
+            held_rax_ = std::exchange(stored_rax_, std::nullopt);
+            held_xmm0_ = std::exchange(stored_xmm0_, std::nullopt);
             L(labels_[index_]);
             const Instruction& ins = image_.code[index_];
             emit_instruction(ins);
@@ -879,6 +927,7 @@ bool Translator::emit_Stx(const Instruction& ins) {
 
 void Translator::checked_pointer(std::uint32_t pointer_field, std::uint32_t offset,
                                  std::uint32_t bytes) {
+    held_rax_.reset();
     mov(rax, at(pointer_field, 8));
     cmp(rax, kNullGuardSize);
     jb(trap_exit(Trap::NullDereference));
@@ -935,9 +984,9 @@ bool Translator::binary(const Instruction& ins, Operation&& operation) {
 
 template <typename T, typename Operation>
 bool Translator::float_binary(const Instruction& ins, Operation&& operation) {
-    float_load<T>(xmm0, ins.b);
+    float_load<T>(ins.b);
     operation(xmm0, at(ins.c, sizeof(T)));
-    float_store<T>(ins.a, xmm0);
+    float_store<T>(ins.a);
     return true;
 }
 
@@ -1109,7 +1158,7 @@ template <typename T>
 bool Translator::set_compare(const Instruction& ins, Cond signed_cond, Cond unsigned_cond) {
     if constexpr (kFloat<T>) {
         // x < y is y > x, false when unordered (the carry flag is set then).
-        float_load<T>(xmm0, ins.c);
+        float_load<T>(ins.c);
         sizeof(T) == 4 ? ucomiss(xmm0, at(ins.b, 4)) : ucomisd(xmm0, at(ins.b, 8));
         set_if(unsigned_cond == Cond::B ? Cond::A : Cond::AE, al);
     } else {
@@ -1123,7 +1172,7 @@ template <typename T>
 bool Translator::branch_compare(const Instruction& ins, Cond signed_cond, Cond unsigned_cond) {
     charge_block();
     if constexpr (kFloat<T>) {
-        float_load<T>(xmm0, ins.b);
+        float_load<T>(ins.b);
         sizeof(T) == 4 ? ucomiss(xmm0, at(ins.a, 4)) : ucomisd(xmm0, at(ins.a, 8));
         branch_if(unsigned_cond == Cond::B ? Cond::A : Cond::AE, ins.c);
     } else {
@@ -1135,7 +1184,7 @@ bool Translator::branch_compare(const Instruction& ins, Cond signed_cond, Cond u
 // IEEE equality: equal and ordered (an unordered compare sets the parity flag).
 template <typename T>
 bool Translator::set_float_equality(const Instruction& ins, bool equal) {
-    float_load<T>(xmm0, ins.b);
+    float_load<T>(ins.b);
     sizeof(T) == 4 ? ucomiss(xmm0, at(ins.c, 4)) : ucomisd(xmm0, at(ins.c, 8));
     if (equal) {
         sete(al);
@@ -1153,7 +1202,7 @@ bool Translator::set_float_equality(const Instruction& ins, bool equal) {
 template <typename T>
 bool Translator::branch_float_equality(const Instruction& ins, bool equal) {
     charge_block();
-    float_load<T>(xmm0, ins.a);
+    float_load<T>(ins.a);
     sizeof(T) == 4 ? ucomiss(xmm0, at(ins.b, 4)) : ucomisd(xmm0, at(ins.b, 8));
     branch(ins.c, [&](Xbyak::Label& skip) {
         if (equal) {
@@ -1268,7 +1317,7 @@ bool Translator::emit_For(const Instruction& ins) {
 template <typename T, typename R>
 bool Translator::emit_Sqrt(const Instruction& ins) {
     sizeof(T) == 4 ? sqrtss(xmm0, at(ins.b, 4)) : sqrtsd(xmm0, at(ins.b, 8));
-    float_store<T>(ins.a, xmm0);
+    float_store<T>(ins.a);
     return true;
 }
 
@@ -1278,23 +1327,23 @@ bool Translator::emit_Sqrt(const Instruction& ins) {
 template <typename T, typename R>
 bool Translator::emit_Cvt(const Instruction& ins) {
     if constexpr (kInteger<T> && kInteger<R>) {
-        load64(rax, ins.b, sizeof(T), std::is_signed_v<T>);
+        load64(ins.b, sizeof(T), std::is_signed_v<T>);
         store(ins.a, sizeof(R), rax);
         return true;
     } else if constexpr (kInteger<T> && kFloat<R> && !std::is_same_v<T, std::uint64_t>) {
-        load64(rax, ins.b, sizeof(T), std::is_signed_v<T>);
+        load64(ins.b, sizeof(T), std::is_signed_v<T>);
         sizeof(R) == 4 ? cvtsi2ss(xmm0, rax) : cvtsi2sd(xmm0, rax);
-        float_store<R>(ins.a, xmm0);
+        float_store<R>(ins.a);
         return true;
     } else if constexpr (kFloat<T> && kFloat<R>) {
         if constexpr (sizeof(T) == sizeof(R)) {
-            float_load<T>(xmm0, ins.b);
+            float_load<T>(ins.b);
         } else if constexpr (sizeof(T) == 4) {
             cvtss2sd(xmm0, at(ins.b, 4));
         } else {
             cvtsd2ss(xmm0, at(ins.b, 8));
         }
-        float_store<R>(ins.a, xmm0);
+        float_store<R>(ins.a);
         return true;
     } else {
         return false;
