@@ -238,5 +238,10 @@ inline std::uint32_t array_index(const ArrayDescriptor& descriptor, const std::u
         store<T>(A, operation(x, y));                                                              \
         VM_NEXT();                                                                                 \
     }
+#define VM_EXEC_CMov(T, T2)                                                                        \
+    if (load<std::uint8_t>(B) != 0) {                                                              \
+        store<T>(A, load<T>(C));                                                                   \
+    }                                                                                              \
+    VM_NEXT();
 #define VM_EXEC_Div(T, T2) VM_CHECKED_DIVISION(T, divide)
 #define VM_EXEC_Mod(T, T2) VM_CHECKED_DIVISION(T, modulo)

@@ -34,27 +34,30 @@ Op negated(Op op) {
 
 } // namespace
 
-bool PouGenerator::branch_on_bits(const ast::Expression& condition, bool when, vm::Label target) {
-    const auto& comparison = std::get<ast::BinaryExpression>(condition.node);
-    if (comparison.op != Op::Equal && comparison.op != Op::NotEqual) {
-        return false;
+std::optional<PouGenerator::BitTest> PouGenerator::bit_test(const ast::Expression& condition,
+                                                            bool& matched) {
+    matched = false;
+    const auto* comparison = std::get_if<ast::BinaryExpression>(&condition.node);
+    if (comparison == nullptr || (comparison->op != Op::Equal && comparison->op != Op::NotEqual)) {
+        return std::nullopt;
     }
     const auto and_of = [](const ast::Expression& side) {
         const auto* binary = std::get_if<ast::BinaryExpression>(&side.node);
         return binary != nullptr && binary->op == Op::And ? &side : nullptr;
     };
-    const bool zero_right = small_literal(*comparison.right) == 0;
-    const ast::Expression* masked = zero_right ? and_of(*comparison.left)
-                                    : small_literal(*comparison.left) == 0
-                                        ? and_of(*comparison.right)
+    const bool zero_right = small_literal(*comparison->right) == 0;
+    const ast::Expression* masked = zero_right ? and_of(*comparison->left)
+                                    : small_literal(*comparison->left) == 0
+                                        ? and_of(*comparison->right)
                                         : nullptr;
     if (masked == nullptr) {
-        return false;
+        return std::nullopt;
     }
+    matched = true;
     const auto& mask = std::get<ast::BinaryExpression>(masked->node);
     const auto pair = operands(*mask.left, *mask.right, nullptr, masked->range);
     if (!pair) {
-        return true; // reported
+        return std::nullopt; // reported
     }
     const auto& [x, y] = *pair;
     const sema::Type& type = *x.type;
@@ -62,15 +65,44 @@ bool PouGenerator::branch_on_bits(const ast::Expression& condition, bool when, v
         // `(a AND b) = 0` on BOOL, AND on REAL: what the general path accepts or reports.
         const auto value = apply(Op::And, x, y, nullptr, masked->range);
         const auto zero =
-            value ? operand_value(zero_right ? *comparison.right : *comparison.left, value->type)
+            value ? operand_value(zero_right ? *comparison->right : *comparison->left, value->type)
                   : std::nullopt;
         if (!zero || !unify(*value, *zero, condition.range)) {
-            return true; // reported
+            return std::nullopt; // reported
         }
     }
-    const bool jump_if_set = (comparison.op == Op::NotEqual) == when;
-    builder_.jump(op_width(jump_if_set ? "JTst" : "JNTst", type), target, x.operand, y.operand);
-    return true;
+    return BitTest{x, y, comparison->op == Op::NotEqual};
+}
+
+bool PouGenerator::branch_on_bits(const ast::Expression& condition, bool when, vm::Label target) {
+    bool matched = false;
+    const auto test = bit_test(condition, matched);
+    if (test) {
+        const bool jump_if_set = test->set == when;
+        builder_.jump(op_width(jump_if_set ? "JTst" : "JNTst", *test->x.type), target,
+                      test->x.operand, test->y.operand);
+    }
+    return matched;
+}
+
+std::optional<Value> PouGenerator::condition_value(const ast::Expression& condition) {
+    const sema::Type& boolean = types_.elementary(ast::ElementaryType::Bool);
+    bool matched = false;
+    const auto test = bit_test(condition, matched);
+    if (!matched) {
+        return value_as(condition, boolean);
+    }
+    if (!test) {
+        return std::nullopt;
+    }
+    const sema::Type& type = *test->x.type;
+    const vm::Operand bits = temp(type);
+    emit(op_width("And", type), bits, test->x.operand, test->y.operand);
+    const std::vector<std::uint8_t> zero(type.size, 0);
+    const vm::Operand result = temp(boolean);
+    emit(op_width(test->set ? "Ne" : "Eq", type), result, bits,
+         program_.constant(zero, type.align));
+    return Value{result, &boolean};
 }
 
 void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label target) {

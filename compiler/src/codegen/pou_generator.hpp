@@ -224,9 +224,20 @@ private:
     /// Jumps to `target` when `condition` has the value `when`, with compare-and-branch
     /// instructions where the condition is a comparison.
     void branch(const ast::Expression& condition, bool when, vm::Label target);
-    /// The binary `condition` `(x AND m) = 0` or `<> 0` as one bit-test-and-branch (JTst /
-    /// JNTst); false when it has another form.
+    /// `(x AND m) = 0` or `<> 0`: the AND's operands as a bit test takes them (integers too),
+    /// and whether the condition holds for set bits. `matched` says whether `condition` has
+    /// that form; nullopt then means an error was reported.
+    struct BitTest {
+        Value x;
+        Value y;
+        bool set = false;
+    };
+    std::optional<BitTest> bit_test(const ast::Expression& condition, bool& matched);
+    /// The bit test `condition` as one bit-test-and-branch (JTst / JNTst); false when it has
+    /// another form.
     bool branch_on_bits(const ast::Expression& condition, bool when, vm::Label target);
+    /// A condition as a BOOL value, accepting what branch() accepts.
+    std::optional<Value> condition_value(const ast::Expression& condition);
 
     // --- pou_statements.cpp ------------------------------------------------------------------
     void statements(const ast::StatementList& list);
@@ -235,6 +246,8 @@ private:
     void bit_assignment(const ast::BitAccessExpression& target, const ast::Expression& value,
                         const SourceRange& range);
     void if_statement(const ast::IfStatement& node);
+    /// The IF as a conditional move (if_conversion.hpp); false where it is not one.
+    bool select_statement(const ast::IfStatement& node);
     void case_statement(const ast::CaseStatement& node);
     /// One CASE label (`3:` or `1..5:`) and the branch it selects.
     struct CaseRange {

@@ -1,6 +1,7 @@
 // Statements of IEC 61131-3 ed. 3, 7.3.3 (table 72).
 
 #include "eposp/compiler/sema/symbol.hpp"
+#include "if_conversion.hpp"
 #include "pou_generator.hpp"
 
 #include <algorithm>
@@ -213,6 +214,9 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
 }
 
 void PouGenerator::if_statement(const ast::IfStatement& node) {
+    if (select_statement(node)) {
+        return;
+    }
     const vm::Label end = builder_.label();
     for (std::size_t i = 0; i < node.branches.size(); ++i) {
         const ast::ConditionalBlock& block = node.branches[i];
@@ -227,6 +231,62 @@ void PouGenerator::if_statement(const ast::IfStatement& node) {
     }
     statements(node.else_body);
     bind(end);
+}
+
+bool PouGenerator::select_statement(const ast::IfStatement& node) {
+    const auto form = select_form(node);
+    if (!form) {
+        return false;
+    }
+    // A plain local, instance or global variable of a scalar type that nothing here forbids
+    // assigning: the assignment statement keeps the checks and warnings of the other cases.
+    const auto& name = std::get<ast::NameExpression>(form->target->node).name;
+    const sema::Symbol* symbol = model_.resolved(name);
+    if (symbol == nullptr || symbol->kind != sema::SymbolKind::Variable ||
+        symbol->section == ast::VarSectionKind::Input) {
+        return false;
+    }
+    if (!locals_.contains(sema::fold_case(symbol->name)) && !program_.global(symbol->name)) {
+        return false; // the assignment reports it
+    }
+    const auto target = variable(*symbol, form->target->range);
+    if (!target || target->kind != Place::Kind::Direct || !target->writable ||
+        !sema::is_scalar(*target->type) || target->type->range ||
+        std::find(for_variables_.begin(), for_variables_.end(), target->operand.raw) !=
+            for_variables_.end()) {
+        return false;
+    }
+    const sema::Type& type = *target->type;
+    const auto aliases_target = [&](vm::Operand operand) {
+        return operand.base() == target->operand.base() &&
+               operand.offset() < target->operand.offset() + type.size &&
+               target->operand.offset() < operand.offset() + 8;
+    };
+    // The condition and the chosen value are read after the target may have been written.
+    const auto apart = [&](std::optional<Value> value) -> std::optional<Value> {
+        if (value && aliases_target(value->operand)) {
+            const Operand copy = temp(*value->type);
+            move(copy, *value->type, *value);
+            value->operand = copy;
+        }
+        return value;
+    };
+    const auto condition = apart(condition_value(*form->condition));
+    const auto chosen = condition ? apart(value_as(*form->chosen, type)) : std::nullopt;
+    if (!chosen) {
+        return true; // reported
+    }
+    if (form->otherwise != nullptr) {
+        const Destination into{target->operand, &type};
+        const auto other = value_as(*form->otherwise, type, &into);
+        if (!other) {
+            return true;
+        }
+        store(*target, *other);
+    }
+    emit(program_.opcodes().get("CMov", width_suffix(sema::scalar_of(type))), target->operand,
+         condition->operand, chosen->operand);
+    return true;
 }
 
 void PouGenerator::case_statement(const ast::CaseStatement& node) {

@@ -176,6 +176,7 @@ private:
     VM_FAMILY(For)
     VM_FAMILY(Sqrt)
     VM_FAMILY(Cvt)
+    VM_FAMILY(CMov)
 #undef VM_FAMILY
 // Rare or involved families: their step function is fast enough.
 #define VM_STEP_FAMILY(family)                                                                     \
@@ -1309,6 +1310,18 @@ bool Translator::emit_For(const Instruction& ins) {
     const Cond cond =
         compare<T>(ins.a, ins.b, step > 0 ? Cond::LE : Cond::GE, step > 0 ? Cond::BE : Cond::AE);
     branch_if(cond, ins.c);
+    return true;
+}
+
+// The destination is rewritten either way, with its own value when the condition is FALSE.
+template <typename T, typename R>
+bool Translator::emit_CMov(const Instruction& ins) {
+    constexpr int bytes = sizeof(T);
+    load(rax, ins.a, bytes, false);
+    load(rcx, ins.c, bytes, false);
+    cmp(at(ins.b, 1), 0);
+    cmovne(work(rax, bytes), work(rcx, bytes));
+    store(ins.a, bytes, rax);
     return true;
 }
 

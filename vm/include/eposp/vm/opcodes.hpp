@@ -72,6 +72,8 @@
 //                                               subrange type (B: two values of the type)
 //  IdxDim            [DINT]   [lo, n]  [DINT]   [A] := [C] - lo, trap unless < n: one index of
 //                                               an ARRAY[*] (B: DINT lower bound, UDINT count)
+//  CMov<w>           [dst]    [BOOL]   [src]    if [B] then [A] := [C]: an IF choosing between
+//                                               two cheap values, without a branch
 
 namespace eposp::vm {
 
@@ -173,8 +175,9 @@ struct FieldSpec {
     M(I64, 8, std::int64_t, __VA_ARGS__)                                                           \
     M(U8, 1, std::uint8_t, __VA_ARGS__)                                                            \
     M(U16, 2, std::uint16_t, __VA_ARGS__)                                                          \
-    M(U32, 4, std::uint32_t, __VA_ARGS__) M(U64, 8, std::uint64_t, __VA_ARGS__)                    \
-        M(F32, 4, float, __VA_ARGS__) M(F64, 8, double, __VA_ARGS__)
+    M(U32, 4, std::uint32_t, __VA_ARGS__)                                                          \
+    M(U64, 8, std::uint64_t, __VA_ARGS__) M(F32, 4, float, __VA_ARGS__)                            \
+        M(F64, 8, double, __VA_ARGS__)
 
 #define EPOSP_VM_F(X) EPOSP_VM_F_##X
 #define EPOSP_VM_OP(OP, name, family, T1, T2, aux, a, b, c)                                        \
@@ -235,6 +238,8 @@ struct FieldSpec {
     EPOSP_VM_OP(OP, JNe##S, JNe, T, T, None, R##N, R##N, JT)                                       \
     EPOSP_VM_OP(OP, Trunc##S, Trunc, T, std::int64_t, None, W8, R##N, _)
 
+#define EPOSP_VM_SELECT_OPS(OP, B, N, T) EPOSP_VM_OP(OP, CMov##B, CMov, T, T, None, W##N, R1, R##N)
+
 #define EPOSP_VM_CVT_CELL(D, DN, DT, OP, S, SN, ST)                                                \
     EPOSP_VM_OP(OP, Cvt##S##D, Cvt, ST, DT, None, W##DN, R##SN, _)
 #define EPOSP_VM_CVT_ROW(OP, S, SN, ST) EPOSP_VM_FOR_SCALARS_INNER(EPOSP_VM_CVT_CELL, OP, S, SN, ST)
@@ -269,7 +274,8 @@ struct FieldSpec {
     EPOSP_VM_OP(OP, IdxDim, IdxDim, void, void, None, W4, R8, R4)                                  \
     EPOSP_VM_OP(OP, JTabI16, JTab, std::int16_t, void, None, R2, TB, JT)                           \
     EPOSP_VM_OP(OP, JTabU16, JTab, std::uint16_t, void, None, R2, TB, JT)                          \
-    EPOSP_VM_OP(OP, JTab32, JTab, std::uint32_t, void, None, R4, TB, JT)
+    EPOSP_VM_OP(OP, JTab32, JTab, std::uint32_t, void, None, R4, TB, JT)                           \
+    EPOSP_VM_FOR_WIDTHS(EPOSP_VM_SELECT_OPS, OP)
 
 #define EPOSP_VM_ENUMERATOR(name, ...) name,
 enum class Opcode : std::uint16_t { EPOSP_VM_OPCODES(EPOSP_VM_ENUMERATOR) };
