@@ -1,7 +1,8 @@
 // Structured Text of arbitrary bytes through the whole compiler: parse, resolve, type-check and
 // generate code either report diagnostics or give an image; every image the compiler makes
 // passes the verifier (link) and runs a few cycles of every task within a watchdog budget
-// without crashing the host. Diagnostics always render.
+// without crashing the host, compiled code ending every cycle as the interpreter does (state,
+// instruction count, memory). Diagnostics always render.
 
 #include "eposp/compiler/compiler.hpp"
 #include "eposp/vm/machine.hpp"
@@ -10,6 +11,7 @@
 #include "eposp/vm/stdlib/standard_library.hpp"
 #include "fuzz_check.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -44,13 +46,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!image) {
         return 0;
     }
-    auto program = vm::link(std::move(*image), natives());
-    fuzz::require(static_cast<bool>(program), "every image the compiler makes passes the verifier");
+    auto reference = vm::link(*image, natives(), vm::Engine::Interpreter);
+    auto program = vm::link(std::move(*image), natives(), vm::Engine::Compiled);
+    fuzz::require(program && reference, "every image the compiler makes passes the verifier");
     vm::Machine machine(*program);
+    vm::Machine interpreter(*reference);
     for (std::size_t task = 0; task < program->image().tasks.size(); ++task) {
         machine.set_budget(task, kInstructionsPerCycle);
+        interpreter.set_budget(task, kInstructionsPerCycle);
         for (int cycle = 0; cycle < kCycles; ++cycle) {
-            machine.run_cycle(task);
+            const auto state = machine.run_cycle(task);
+            fuzz::require(state == interpreter.run_cycle(task) &&
+                              machine.task(task).executed == interpreter.task(task).executed,
+                          "both engines run a cycle alike");
+            fuzz::require(std::ranges::equal(machine.memory(), interpreter.memory()),
+                          "both engines leave the same memory");
         }
     }
     return 0;
