@@ -6,6 +6,7 @@
 #include "definite_assignment.hpp"
 
 #include "eposp/compiler/sema/symbol.hpp"
+#include "written_variables.hpp"
 
 #include <string_view>
 #include <type_traits>
@@ -296,19 +297,7 @@ private:
 
     /// A part of the variable under `target` is written, or its address or instance handed on.
     void escapes(const ast::Expression& target) {
-        const ast::Expression* root = &target;
-        for (;;) {
-            if (const auto* member = std::get_if<ast::MemberExpression>(&root->node)) {
-                root = member->object.get();
-            } else if (const auto* element = std::get_if<ast::IndexExpression>(&root->node)) {
-                root = element->array.get();
-            } else if (const auto* bit = std::get_if<ast::BitAccessExpression>(&root->node)) {
-                root = bit->object.get();
-            } else {
-                break;
-            }
-        }
-        if (const auto* name = std::get_if<ast::NameExpression>(&root->node)) {
+        if (const auto* name = root_variable(target)) {
             if (const auto found = index_.find(sema::fold_case(name->name.name));
                 found != index_.end()) {
                 partial_[found->second] = true;

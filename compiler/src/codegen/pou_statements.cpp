@@ -3,6 +3,7 @@
 #include "eposp/compiler/sema/symbol.hpp"
 #include "if_conversion.hpp"
 #include "pou_generator.hpp"
+#include "written_variables.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -164,17 +165,7 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
         return;
     }
     // The result counts as assigned when it or a part of it is (`F.x := 1`).
-    const ast::Expression* root = node.target.get();
-    for (;;) {
-        if (const auto* member = std::get_if<ast::MemberExpression>(&root->node)) {
-            root = member->object.get();
-        } else if (const auto* element = std::get_if<ast::IndexExpression>(&root->node)) {
-            root = element->array.get();
-        } else {
-            break;
-        }
-    }
-    if (const auto* name = std::get_if<ast::NameExpression>(&root->node)) {
+    if (const auto* name = root_variable(*node.target)) {
         const sema::Symbol* symbol = model_.resolved(name->name);
         result_assigned_ = result_assigned_ || (symbol != nullptr && symbol->pou == &pou_);
     }

@@ -74,27 +74,29 @@ private:
             node.node);
     }
 
-    // The outermost variable of `x`, `x.a`, `x[i]`, `x.3`.
     void written(const ast::Expression& target) {
-        const ast::Expression* root = &target;
-        for (;;) {
-            if (const auto* member = std::get_if<ast::MemberExpression>(&root->node)) {
-                root = member->object.get();
-            } else if (const auto* element = std::get_if<ast::IndexExpression>(&root->node)) {
-                root = element->array.get();
-            } else if (const auto* bit = std::get_if<ast::BitAccessExpression>(&root->node)) {
-                root = bit->object.get();
-            } else {
-                break;
-            }
-        }
-        if (const auto* name = std::get_if<ast::NameExpression>(&root->node)) {
+        if (const auto* name = root_variable(target)) {
             names.insert(sema::fold_case(name->name.name));
         }
     }
 };
 
 } // namespace
+
+const ast::NameExpression* root_variable(const ast::Expression& target) {
+    const ast::Expression* root = &target;
+    for (;;) {
+        if (const auto* member = std::get_if<ast::MemberExpression>(&root->node)) {
+            root = member->object.get();
+        } else if (const auto* element = std::get_if<ast::IndexExpression>(&root->node)) {
+            root = element->array.get();
+        } else if (const auto* bit = std::get_if<ast::BitAccessExpression>(&root->node)) {
+            root = bit->object.get();
+        } else {
+            return std::get_if<ast::NameExpression>(&root->node);
+        }
+    }
+}
 
 std::unordered_set<std::string> written_variables(const ast::StatementList& body) {
     WrittenVariables walker;

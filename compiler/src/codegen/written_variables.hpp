@@ -7,6 +7,10 @@
 
 namespace eposp::compiler::codegen {
 
+/// The variable under `x`, `x.a`, `x[i]`, `x.3`: what writing that target changes; null when
+/// the target is not rooted in a name (a dereference, a call).
+const ast::NameExpression* root_variable(const ast::Expression& target);
+
 /// The variables (folded names of the outermost variable) a body may write: targets of
 /// assignments and FOR loops, `=>` bindings, and variables handed to a call as they are or to
 /// REF/ADR, which may write through them. An output absent from it is never assigned.
