@@ -20,6 +20,8 @@ struct JitContext {
     const void* const* entries = nullptr;       ///< machine address of each instruction
     const std::uint32_t* frame_sizes = nullptr; ///< per POU
     std::int64_t remaining = 0;                 ///< instructions left in the slice
+    /// The machine stack pointer at entry: leaving from any call depth goes back to it.
+    void* machine_stack = nullptr;
     ExitKind exit_kind = ExitKind::Finished;
     std::uint32_t exit_pc = 0;
     std::uint32_t exit_pou = 0;

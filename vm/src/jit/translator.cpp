@@ -17,7 +17,11 @@
 // Registers while compiled code runs (all callee-saved, so step functions keep them):
 //   rbx  instructions left in the slice     r12  VM memory (Static)
 //   r13  the frame (Out is frame + the POU's frame size)     r14  self
-//   r15  the JitContext
+//   r15  the JitContext                      rbp  VM calls made by `call` in this run
+//
+// A VM call is also a machine `call`, so that its return is a `ret` the processor predicts; the
+// activation goes on the task's call stack as well, which is what a return to a caller entered
+// before this run (a resumed task) follows, through the address of the caller's instruction.
 //
 // Instruction counting is the interpreter's, per basic block: a block subtracts its length
 // when it ends (at its jump, call or return, or where it falls into the next block), a trap
@@ -223,6 +227,7 @@ constexpr int context_base(Base base) {
                             sizeof(std::uint8_t*) * static_cast<int>(base));
 }
 constexpr int kRemaining = offsetof(JitContext, remaining);
+constexpr int kMachineStack = offsetof(JitContext, machine_stack);
 constexpr int kCalls = offsetof(JitContext, calls);
 constexpr int kDepth = offsetof(JitContext, depth);
 constexpr int kStackEnd = offsetof(JitContext, stack_end);
@@ -586,6 +591,8 @@ void Translator::emit_entry_and_exit() {
     }
     sub(rsp, 8); // the stack 16-byte aligned for step functions
     mov(r15, rdi);
+    mov(qword[r15 + kMachineStack], rsp);
+    xor_(ebp, ebp);
     mov(r12, qword[r15 + context_base(Base::Static)]);
     mov(r13, qword[r15 + context_base(Base::Frame)]);
     mov(r14, qword[r15 + context_base(Base::Self)]);
@@ -596,6 +603,7 @@ void Translator::emit_entry_and_exit() {
     mov(qword[r15 + kRemaining], rbx);
     mov(qword[r15 + context_base(Base::Frame)], r13);
     mov(qword[r15 + context_base(Base::Self)], r14);
+    mov(rsp, qword[r15 + kMachineStack]);
     add(rsp, 8);
     for (const auto* r : {&r15, &r14, &r13, &r12, &rbp, &rbx}) {
         pop(*r);
@@ -804,7 +812,11 @@ void Translator::enter(std::uint32_t callee_index) {
     mov(qword[r15 + context_base(Base::Out)], rax);
     charge_block();
     js(suspend_exit(callee.code_begin, callee_index));
-    jmp(labels_[callee.code_begin]);
+    // 16 bytes a call, the return address included: step functions need the stack aligned.
+    inc(ebp);
+    sub(rsp, 8);
+    call(labels_[callee.code_begin]);
+    add(rsp, 8); // the return lands here, then goes on at the next instruction
 }
 
 template <typename T, typename R>
@@ -871,6 +883,12 @@ bool Translator::emit_Ret(const Instruction&) {
     mov(eax, dword[rdx + rax * 4]);
     add(rax, r13);
     mov(qword[r15 + context_base(Base::Out)], rax);
+    Xbyak::Label entered_before;
+    test(ebp, ebp);
+    jz(entered_before);
+    dec(ebp);
+    ret();
+    L(entered_before);
     mov(eax, dword[r9]);
     mov(rdx, qword[r15 + kEntries]);
     jmp(qword[rdx + rax * 8]);
