@@ -175,6 +175,25 @@ TEST(RunTimeError, RunawayRecursionIsAStackOverflow) {
     EXPECT_EQ(h.machine->describe_fault(0), "stack overflow in Again at line 4");
 }
 
+// With empty frames the stack never fills: the call depth limit stops the recursion, and the
+// task runs again afterwards (compiled code leaves from 256 machine calls deep).
+TEST(RunTimeError, RecursionWithoutFramesStopsAtTheCallDepthLimit) {
+    Harness h;
+    const auto self_call = h.builder.declare_pou("Again", PouKind::Function);
+    h.builder.emit(Opcode::Call, Operand::imm(self_call));
+    h.builder.emit(Opcode::Ret);
+    h.end_main(0, 0);
+    h.builder.begin_body(self_call);
+    h.builder.line(7);
+    h.builder.emit(Opcode::Call, Operand::imm(self_call));
+    h.builder.emit(Opcode::Ret);
+    h.builder.end_body(0);
+    ASSERT_EQ(h.run(), RunState::Faulted);
+    EXPECT_EQ(h.machine->describe_fault(0), "stack overflow in Again at line 7");
+    EXPECT_EQ(h.machine->task(0).depth, TaskState::kMaxCallDepth);
+    EXPECT_EQ(h.machine->run_cycle(0), RunState::Faulted);
+}
+
 TEST(RunTimeError, FailingNativeFunctionStopsTheTaskWithItsReason) {
     Harness h;
     h.natives.add("FAIL", NativeSignature{}, [](NativeArgs& args) { args.fail("no axis"); });
