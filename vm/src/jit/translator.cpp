@@ -57,7 +57,6 @@ private:
     };
 
     void emit_entry_and_exit();
-    void emit_pou(std::uint32_t pou_index);
     void emit_instruction(const Instruction& ins);
     void emit_exits();
 
