@@ -160,8 +160,8 @@ TEST(RunTimeError, FaultInAFunctionNamesTheFunctionAndItsLine) {
     EXPECT_EQ(h.machine->describe_fault(0), "division by zero in Helper at line 22");
 }
 
-TEST(RunTimeError, RunawayRecursionIsAStackOverflow) {
-    Harness h;
+// Main calls Again, which calls itself at line 4 with a frame of `frame_size` bytes.
+void emit_recursion(Harness& h, std::uint32_t frame_size) {
     const auto self_call = h.builder.declare_pou("Again", PouKind::Function);
     h.builder.emit(Opcode::Call, Operand::imm(self_call));
     h.builder.emit(Opcode::Ret);
@@ -170,7 +170,12 @@ TEST(RunTimeError, RunawayRecursionIsAStackOverflow) {
     h.builder.line(4);
     h.builder.emit(Opcode::Call, Operand::imm(self_call));
     h.builder.emit(Opcode::Ret);
-    h.builder.end_body(64);
+    h.builder.end_body(frame_size);
+}
+
+TEST(RunTimeError, RunawayRecursionIsAStackOverflow) {
+    Harness h;
+    emit_recursion(h, 64);
     ASSERT_EQ(h.run(), RunState::Faulted);
     EXPECT_EQ(h.machine->describe_fault(0), "stack overflow in Again at line 4");
 }
@@ -179,17 +184,9 @@ TEST(RunTimeError, RunawayRecursionIsAStackOverflow) {
 // task runs again afterwards (compiled code leaves from 256 machine calls deep).
 TEST(RunTimeError, RecursionWithoutFramesStopsAtTheCallDepthLimit) {
     Harness h;
-    const auto self_call = h.builder.declare_pou("Again", PouKind::Function);
-    h.builder.emit(Opcode::Call, Operand::imm(self_call));
-    h.builder.emit(Opcode::Ret);
-    h.end_main(0, 0);
-    h.builder.begin_body(self_call);
-    h.builder.line(7);
-    h.builder.emit(Opcode::Call, Operand::imm(self_call));
-    h.builder.emit(Opcode::Ret);
-    h.builder.end_body(0);
+    emit_recursion(h, 0);
     ASSERT_EQ(h.run(), RunState::Faulted);
-    EXPECT_EQ(h.machine->describe_fault(0), "stack overflow in Again at line 7");
+    EXPECT_EQ(h.machine->describe_fault(0), "stack overflow in Again at line 4");
     EXPECT_EQ(h.machine->task(0).depth, TaskState::kMaxCallDepth);
     EXPECT_EQ(h.machine->run_cycle(0), RunState::Faulted);
 }
