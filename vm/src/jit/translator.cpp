@@ -239,26 +239,14 @@ constexpr int kExitPou = offsetof(JitContext, exit_pou);
 constexpr int kExitTrap = offsetof(JitContext, exit_trap);
 static_assert(sizeof(Activation) == 16);
 
-bool ends_block(Opcode op) {
-    const auto& info = opcode_info(op);
-    for (const FieldSpec& field : {info.a, info.b, info.c}) {
-        if (field.field == Field::Target) {
-            return true;
-        }
-    }
-    switch (op) {
-    case Opcode::JTabI16:
-    case Opcode::JTabU16:
-    case Opcode::JTab32:
-    case Opcode::Call:
-    case Opcode::CallFb:
-    case Opcode::CallFbP:
-    case Opcode::CallNative:
-    case Opcode::Ret:
-        return true;
-    default:
-        return false;
-    }
+/// The branch target of an instruction with one (Field::Target), else nullopt.
+std::optional<std::uint32_t> target_of(const Instruction& ins);
+
+// A block ends where control may go elsewhere: a branch, a jump table, a call or return (the
+// families without a step function), and a native call, which is a safe point.
+bool ends_block(const Instruction& ins) {
+    return target_of(ins) || step_function(ins.opcode) == nullptr ||
+           ins.opcode == Opcode::CallNative;
 }
 
 /// The branch target of an instruction with one (Field::Target), else nullopt.
@@ -286,7 +274,7 @@ std::vector<bool> block_starts(const Image& image) {
         if (auto target = target_of(image.code[i])) {
             starts[*target] = true;
         }
-        if (ends_block(image.code[i].opcode)) {
+        if (ends_block(image.code[i])) {
             starts[i + 1] = true;
         }
     }
@@ -652,7 +640,7 @@ void Translator::translate() {
             L(labels_[index_]);
             const Instruction& ins = image_.code[index_];
             emit_instruction(ins);
-            if (!ends_block(ins.opcode) && starts[index_ + 1]) {
+            if (!ends_block(ins) && starts[index_ + 1]) {
                 charge_block(); // falls into the next block
             }
         }
