@@ -2,6 +2,7 @@
 
 #include "eposp/vm/image.hpp"
 #include "eposp/vm/instruction.hpp"
+#include "eposp/vm/program.hpp"
 #include "value_semantics.hpp"
 
 #include <cmath>
@@ -34,6 +35,19 @@ inline std::uint32_t array_index(const ArrayDescriptor& descriptor, const std::u
     return descriptor.index_size == 2
                ? static_cast<std::uint32_t>(std::int32_t{load<std::int16_t>(index)})
                : load<std::uint32_t>(index);
+}
+
+// A native call's arguments object lives here, not in a handler: no object with a destructor
+// may be in scope where an interpreter handler leaves by computed goto.
+inline bool call_native(const Program& program, std::uint32_t import, std::uint8_t* block,
+                        std::span<std::uint8_t> memory, std::string& failure) {
+    NativeArgs args(block, program.image().imports[import].signature, memory);
+    program.native(import)(args);
+    if (args.failed()) {
+        failure = args.failure();
+        return false;
+    }
+    return true;
 }
 
 } // namespace eposp::vm::detail

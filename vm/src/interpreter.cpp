@@ -13,19 +13,6 @@
 namespace eposp::vm::detail {
 namespace {
 
-// A native call's arguments object lives here, not in the handler: no object with a destructor
-// may be in scope where a handler leaves by computed goto.
-bool call_native(const Program& program, std::uint32_t import, std::uint8_t* block,
-                 std::span<std::uint8_t> memory, std::string& failure) {
-    NativeArgs args(block, program.image().imports[import].signature, memory);
-    program.native(import)(args);
-    if (args.failed()) {
-        failure = args.failure();
-        return false;
-    }
-    return true;
-}
-
 // The loop's exits are plain functions of values: a lambda capturing the loop's variables by
 // reference would force `ip` into memory for the whole loop.
 std::uint64_t executed_in_run(std::uint64_t limit, std::int64_t remaining) {

@@ -8,10 +8,7 @@
 namespace eposp::vm::jit {
 namespace {
 
-using detail::array_index;
-using detail::load;
-using detail::store;
-using namespace detail; // the value semantics: add, convert, divide...
+using namespace detail; // load, store, the value semantics (add, convert, divide...)
 
 // The families the translator emits itself have no step function.
 #define VM_EXEC_Jmp(T1, T2)
@@ -22,16 +19,10 @@ using namespace detail; // the value semantics: add, convert, divide...
 #define VM_EXEC_Ret(T1, T2)
 #define VM_EXEC_Nop(T1, T2) VM_NEXT();
 #define VM_EXEC_CallNative(T1, T2)                                                                 \
-    {                                                                                              \
-        NativeArgs args(B, context.program->image().imports[ip->a].signature,                      \
-                        std::span<std::uint8_t>(mem, mem_size));                                   \
-        context.program->native(ip->a)(args);                                                      \
-        if (args.failed()) {                                                                       \
-            *context.native_failure = args.failure();                                              \
-            VM_TRAP(Trap::NativeError);                                                            \
-        }                                                                                          \
-        VM_NEXT();                                                                                 \
-    }
+    if (!call_native(*context.program, ip->a, B, {mem, mem_size}, *context.native_failure)) {      \
+        VM_TRAP(Trap::NativeError);                                                                \
+    }                                                                                              \
+    VM_NEXT();
 
 #define VM_NEXT() return kStepNext
 #define VM_BRANCH_IF(condition, target) return (condition) ? kStepTaken : kStepNext
