@@ -129,6 +129,12 @@ private:
     bool set_float_equality(const Instruction& ins, bool equal);
     template <typename T>
     bool branch_float_equality(const Instruction& ins, bool equal);
+    /// ([A] AND [B]) <> 0 (`when_set`) or = 0, then on to the target.
+    template <typename T>
+    bool bit_test_branch(const Instruction& ins, bool when_set);
+    /// = and <> (IEEE for reals: unordered is unequal), as a BOOL or as a branch.
+    template <typename T>
+    bool equality(const Instruction& ins, bool equal, bool branches);
 
     // One emitter per family (opcodes.hpp); false means "call the step function".
 #define VM_FAMILY(family)                                                                          \
@@ -1224,22 +1230,24 @@ bool Translator::branch_float_equality(const Instruction& ins, bool equal) {
     return true;
 }
 
-template <typename T, typename R>
-bool Translator::emit_Eq(const Instruction& ins) {
+template <typename T>
+bool Translator::equality(const Instruction& ins, bool equal, bool branches) {
     if constexpr (kFloat<T>) {
-        return set_float_equality<T>(ins, true);
+        return branches ? branch_float_equality<T>(ins, equal) : set_float_equality<T>(ins, equal);
     } else {
-        return set_compare<T>(ins, Cond::E, Cond::E);
+        const Cond cond = equal ? Cond::E : Cond::NE;
+        return branches ? branch_compare<T>(ins, cond, cond) : set_compare<T>(ins, cond, cond);
     }
 }
 
 template <typename T, typename R>
+bool Translator::emit_Eq(const Instruction& ins) {
+    return equality<T>(ins, true, false);
+}
+
+template <typename T, typename R>
 bool Translator::emit_Ne(const Instruction& ins) {
-    if constexpr (kFloat<T>) {
-        return set_float_equality<T>(ins, false);
-    } else {
-        return set_compare<T>(ins, Cond::NE, Cond::NE);
-    }
+    return equality<T>(ins, false, false);
 }
 
 template <typename T, typename R>
@@ -1254,20 +1262,12 @@ bool Translator::emit_Le(const Instruction& ins) {
 
 template <typename T, typename R>
 bool Translator::emit_JEq(const Instruction& ins) {
-    if constexpr (kFloat<T>) {
-        return branch_float_equality<T>(ins, true);
-    } else {
-        return branch_compare<T>(ins, Cond::E, Cond::E);
-    }
+    return equality<T>(ins, true, true);
 }
 
 template <typename T, typename R>
 bool Translator::emit_JNe(const Instruction& ins) {
-    if constexpr (kFloat<T>) {
-        return branch_float_equality<T>(ins, false);
-    } else {
-        return branch_compare<T>(ins, Cond::NE, Cond::NE);
-    }
+    return equality<T>(ins, false, true);
 }
 
 template <typename T, typename R>
@@ -1280,24 +1280,24 @@ bool Translator::emit_JLe(const Instruction& ins) {
     return branch_compare<T>(ins, Cond::LE, Cond::BE);
 }
 
-template <typename T, typename R>
-bool Translator::emit_JTst(const Instruction& ins) {
+template <typename T>
+bool Translator::bit_test_branch(const Instruction& ins, bool when_set) {
     charge_block();
     load(rax, ins.a, sizeof(T), false);
     load(rcx, ins.b, sizeof(T), false);
     test(work(rax, sizeof(T)), work(rcx, sizeof(T)));
-    branch_if(Cond::NE, ins.c);
+    branch_if(when_set ? Cond::NE : Cond::E, ins.c);
     return true;
 }
 
 template <typename T, typename R>
+bool Translator::emit_JTst(const Instruction& ins) {
+    return bit_test_branch<T>(ins, true);
+}
+
+template <typename T, typename R>
 bool Translator::emit_JNTst(const Instruction& ins) {
-    charge_block();
-    load(rax, ins.a, sizeof(T), false);
-    load(rcx, ins.b, sizeof(T), false);
-    test(work(rax, sizeof(T)), work(rcx, sizeof(T)));
-    branch_if(Cond::E, ins.c);
-    return true;
+    return bit_test_branch<T>(ins, false);
 }
 
 // [A] += step, then loop while [A] <= [B] (step > 0) or [A] >= [B], compared as T.
