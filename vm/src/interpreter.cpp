@@ -34,20 +34,16 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     // Restore the saved activation.
     std::uint32_t pou = task.current.pou;
     std::uint8_t* base[4];
-    base[static_cast<int>(Base::Static)] = mem;
-    base[static_cast<int>(Base::Frame)] = mem + task.current.frame;
-    base[static_cast<int>(Base::Self)] = mem + task.current.self;
-    base[static_cast<int>(Base::Out)] = mem + task.current.frame + pous[pou].frame_size;
+    activation_bases(base, mem, task.current, pous[pou].frame_size);
     const Instruction* ip = code + task.current.pc;
 
     // Instruction counting: `segment` is where the current straight-line run started; at each
     // taken jump, call and return the run's length is charged, so the count is exact without
     // a counter update per instruction.
-    const std::uint64_t limit = run_limit(task, slice);
+    const std::uint64_t limit = begin_run(task, slice);
     std::int64_t remaining = static_cast<std::int64_t>(limit);
     const Instruction* segment = ip;
     Trap trap = Trap::DivisionByZero;
-    task.fault.native_reason.clear();
 
 #define VM_CHARGE() (remaining -= (ip - segment) + 1)
 #define VM_TRAP(kind)                                                                              \

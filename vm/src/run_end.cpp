@@ -18,9 +18,18 @@ std::uint32_t line_at(const Pou& pou, std::uint32_t instruction) {
 
 } // namespace
 
-std::uint64_t run_limit(const TaskState& task, std::uint64_t slice) {
+std::uint64_t begin_run(TaskState& task, std::uint64_t slice) {
+    task.fault.native_reason.clear();
     const std::uint64_t budget_left = task.budget > task.executed ? task.budget - task.executed : 0;
     return std::min({slice, budget_left, std::uint64_t{INT64_MAX}});
+}
+
+void activation_bases(std::uint8_t* (&base)[4], std::uint8_t* mem, const Activation& at,
+                      std::uint32_t frame_size) {
+    base[static_cast<int>(Base::Static)] = mem;
+    base[static_cast<int>(Base::Frame)] = mem + at.frame;
+    base[static_cast<int>(Base::Self)] = mem + at.self;
+    base[static_cast<int>(Base::Out)] = mem + at.frame + frame_size;
 }
 
 RunState end_finished(TaskState& task, std::uint64_t executed) {

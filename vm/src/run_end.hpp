@@ -11,8 +11,14 @@
 
 namespace eposp::vm::detail {
 
-/// The instructions a run may execute: the slice, bounded by what is left of the budget.
-std::uint64_t run_limit(const TaskState& task, std::uint64_t slice);
+/// Starts a run: forgets the last native failure and returns the instructions the run may
+/// execute (the slice, bounded by what is left of the budget).
+std::uint64_t begin_run(TaskState& task, std::uint64_t slice);
+
+/// The base pointers (indexed by Base) of activation `at`, whose POU has `frame_size` bytes of
+/// frame: its out area follows them.
+void activation_bases(std::uint8_t* (&base)[4], std::uint8_t* mem, const Activation& at,
+                      std::uint32_t frame_size);
 
 /// `executed` is what the run executed in each case.
 RunState end_finished(TaskState& task, std::uint64_t executed);

@@ -2,6 +2,7 @@
 
 #include "eposp/compiler/sema/symbol.hpp"
 
+#include <string>
 #include <string_view>
 
 namespace eposp::compiler::codegen {
@@ -11,8 +12,9 @@ namespace {
 constexpr int kMaximumNodes = 8;
 
 bool is_shift(std::string_view name) {
+    const std::string folded = sema::fold_case(name);
     for (std::string_view shift : {"SHL", "SHR", "ROL", "ROR"}) {
-        if (sema::fold_case(name) == sema::fold_case(shift)) {
+        if (folded == sema::fold_case(shift)) {
             return true;
         }
     }

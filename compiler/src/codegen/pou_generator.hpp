@@ -246,6 +246,8 @@ private:
     void bit_assignment(const ast::BitAccessExpression& target, const ast::Expression& value,
                         const SourceRange& range);
     void if_statement(const ast::IfStatement& node);
+    /// The control variable of an enclosing FOR loop, which its body may not assign.
+    bool is_for_variable(const Place& place) const;
     /// The IF as a conditional move (if_conversion.hpp); false where it is not one.
     bool select_statement(const ast::IfStatement& node);
     void case_statement(const ast::CaseStatement& node);

@@ -157,9 +157,7 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
         return;
     }
     warn_if_input(*node.target);
-    if (target->kind == Place::Kind::Direct &&
-        std::find(for_variables_.begin(), for_variables_.end(), target->operand.raw) !=
-            for_variables_.end()) {
+    if (is_for_variable(*target)) {
         error(node.target->range, "the control variable of a FOR loop cannot be assigned in "
                                   "its body (IEC 61131-3 7.3.3.4.2)");
         return;
@@ -224,6 +222,12 @@ void PouGenerator::if_statement(const ast::IfStatement& node) {
     bind(end);
 }
 
+bool PouGenerator::is_for_variable(const Place& place) const {
+    return place.kind == Place::Kind::Direct &&
+           std::find(for_variables_.begin(), for_variables_.end(), place.operand.raw) !=
+               for_variables_.end();
+}
+
 bool PouGenerator::select_statement(const ast::IfStatement& node) {
     const auto form = select_form(node);
     if (!form) {
@@ -242,20 +246,18 @@ bool PouGenerator::select_statement(const ast::IfStatement& node) {
     }
     const auto target = variable(*symbol, form->target->range);
     if (!target || target->kind != Place::Kind::Direct || !target->writable ||
-        !sema::is_scalar(*target->type) || target->type->range ||
-        std::find(for_variables_.begin(), for_variables_.end(), target->operand.raw) !=
-            for_variables_.end()) {
+        !sema::is_scalar(*target->type) || target->type->range || is_for_variable(*target)) {
         return false;
     }
     const sema::Type& type = *target->type;
-    const auto aliases_target = [&](vm::Operand operand) {
-        return operand.base() == target->operand.base() &&
-               operand.offset() < target->operand.offset() + type.size &&
-               target->operand.offset() < operand.offset() + 8;
+    const auto aliases_target = [&](const Value& value) {
+        return value.operand.base() == target->operand.base() &&
+               value.operand.offset() < target->operand.offset() + type.size &&
+               target->operand.offset() < value.operand.offset() + value.type->size;
     };
     // The condition and the chosen value are read after the target may have been written.
     const auto apart = [&](std::optional<Value> value) -> std::optional<Value> {
-        if (value && aliases_target(value->operand)) {
+        if (value && aliases_target(*value)) {
             const Operand copy = temp(*value->type);
             move(copy, *value->type, *value);
             value->operand = copy;

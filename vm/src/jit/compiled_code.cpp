@@ -9,24 +9,15 @@ namespace eposp::vm::jit {
 
 CompiledCode::~CompiledCode() = default;
 
-std::size_t CompiledCode::size() const {
-    return generator_->getSize();
-}
-
 RunState CompiledCode::run(const Program& program, std::span<std::uint8_t> memory, TaskState& task,
                            std::uint64_t slice) const {
     const Image& image = program.image();
-    const std::uint64_t limit = detail::run_limit(task, slice);
-    task.fault.native_reason.clear();
+    const std::uint64_t limit = detail::begin_run(task, slice);
 
     std::uint8_t* const mem = memory.data();
     JitContext context;
     StepContext& step = context.step;
-    step.base[static_cast<int>(Base::Static)] = mem;
-    step.base[static_cast<int>(Base::Frame)] = mem + task.current.frame;
-    step.base[static_cast<int>(Base::Self)] = mem + task.current.self;
-    step.base[static_cast<int>(Base::Out)] =
-        mem + task.current.frame + frame_sizes_[task.current.pou];
+    detail::activation_bases(step.base, mem, task.current, frame_sizes_[task.current.pou]);
     step.mem = mem;
     step.mem_size = memory.size();
     step.arrays = image.arrays.data();

@@ -29,9 +29,6 @@ public:
     RunState run(const Program& program, std::span<std::uint8_t> memory, TaskState& task,
                  std::uint64_t slice) const;
 
-    /// Bytes of machine code, for `eposp dump` and the benchmarks.
-    std::size_t size() const;
-
 private:
     friend class Translator;
     friend std::shared_ptr<const CompiledCode> compile(const Image& image);

@@ -11,10 +11,6 @@ RunState CompiledCode::run(const Program&, std::span<std::uint8_t>, TaskState& t
     return task.state;
 }
 
-std::size_t CompiledCode::size() const {
-    return 0;
-}
-
 std::shared_ptr<const CompiledCode> compile(const Image&) {
     return nullptr;
 }

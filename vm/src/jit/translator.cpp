@@ -80,6 +80,8 @@ private:
     std::int64_t charge_so_far() const { return std::int64_t{index_} - segment_ + 1; }
     void charge_block() { sub(rbx, static_cast<std::uint32_t>(charge_so_far())); }
     Xbyak::Label& exit(Exit exit);
+    /// A trap at the instruction being translated, charging its block so far.
+    Exit trap_here() const;
     Xbyak::Label& trap_exit(Trap trap);
     Xbyak::Label& suspend_exit(std::uint32_t pc, std::uint32_t pou);
     void jump_if(Cond cond, const Xbyak::Label& label);
@@ -223,7 +225,7 @@ private:
 namespace {
 
 template <typename T>
-constexpr bool kInteger = std::is_integral_v<T> && !std::is_same_v<T, bool>;
+constexpr bool kInteger = std::is_integral_v<T>;
 template <typename T>
 constexpr bool kFloat = std::is_floating_point_v<T>;
 
@@ -429,12 +431,17 @@ Xbyak::Label& Translator::exit(Exit exit) {
     return exits_.back().label;
 }
 
-Xbyak::Label& Translator::trap_exit(Trap trap) {
+Translator::Exit Translator::trap_here() const {
     Exit e;
     e.kind = ExitKind::Trapped;
     e.pc = index_;
     e.pou = pou_index_;
     e.charge = charge_so_far();
+    return e;
+}
+
+Xbyak::Label& Translator::trap_exit(Trap trap) {
+    Exit e = trap_here();
     e.trap = trap;
     return exit(std::move(e));
 }
@@ -566,11 +573,7 @@ void Translator::call_step(const Instruction& ins) {
     mov(rax, reinterpret_cast<std::size_t>(step_function(ins.opcode)));
     call(rax);
     cmp(eax, kStepTrap);
-    Exit e;
-    e.kind = ExitKind::Trapped;
-    e.pc = index_;
-    e.pou = pou_index_;
-    e.charge = charge_so_far();
+    Exit e = trap_here();
     e.trap_from_step = true;
     jae(exit(std::move(e)));
 }
