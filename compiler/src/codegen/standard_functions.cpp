@@ -146,6 +146,9 @@ std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
               fmt::format("an integer is needed here, not {}", value->type->name));
         return std::nullopt;
     }
+    if (wide_index(*value->type, true)) {
+        return saturated_dint(*value);
+    }
     return explicit_convert(*value, dint, nullptr, expression.range);
 }
 
