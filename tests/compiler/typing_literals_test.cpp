@@ -48,10 +48,11 @@ TEST(TypingLiterals, AConstantIsFoldedWhereItIsUsed) {
     EXPECT_EQ(std::get<std::int64_t>(*t->program().constant_of(t->value(0))), 42);
 }
 
-TEST(TypingLiterals, ALiteralTooLargeForItsTypeIsAnError) {
-    const auto t = type_body("i : INT;", "i := INT#70000;");
+TEST(TypingLiterals, ALiteralThatDoesNotFitItsContextKeepsItsOwnType) {
+    const auto t = type_body("i : INT;", "i := 70000;");
     EXPECT_FALSE(t->front_end->program);
-    EXPECT_NE(t->errors().find("does not fit INT"), std::string::npos) << t->errors();
+    EXPECT_NE(t->errors().find("a value of type INT is expected, not DINT"), std::string::npos)
+        << t->errors();
 }
 
 } // namespace

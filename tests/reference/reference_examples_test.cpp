@@ -80,6 +80,9 @@ TEST_P(ExampleProgram, AgreesWithTheEngineOnEveryVariable) {
     for (int scan = 0; scan < 20; ++scan) {
         const bool engine_ran = engine.scans(1);
         const bool reference_ran = reference.scans(1);
+        if (!reference_ran && reference.fault().starts_with("not supported")) {
+            GTEST_SKIP() << reference.fault();
+        }
         ASSERT_EQ(engine_ran, reference_ran) << "scan " << scan << ": engine " << engine.fault()
                                              << ", reference " << reference.fault();
         if (!engine_ran) {

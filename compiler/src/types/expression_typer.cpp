@@ -445,7 +445,18 @@ const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression
             }
         }
     }
-    return failed ? nullptr : result;
+    if (failed) {
+        return nullptr;
+    }
+    // A literal typed before a wider one (`5 > 3000000000`) takes the common type after all;
+    // literals have no side effects, so typing one again changes nothing else.
+    for (const ast::Expression* operand : operands) {
+        if (is_untyped_literal(*operand) && numeric_context(result) &&
+            program_.type_of(*operand) != result) {
+            type(*operand, result);
+        }
+    }
+    return result;
 }
 
 const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
