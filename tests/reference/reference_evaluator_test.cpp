@@ -156,6 +156,14 @@ TEST(ReferenceEvaluator, StringFunctionsCountFromOne) {
     EXPECT_EQ(p.bits("Main.z"), 0u);
 }
 
+TEST(ReferenceEvaluator, IntegersConvertToTheirDecimalDigits) {
+    const auto p = run("a, b, c : STRING; i : INT := -42; u : ULINT := 18446744073709551615;",
+                       "a := INT_TO_STRING(i); b := ULINT_TO_STRING(u); c := DINT_TO_STRING(0);");
+    EXPECT_EQ(p.string("Main.a"), "-42");
+    EXPECT_EQ(p.string("Main.b"), "18446744073709551615");
+    EXPECT_EQ(p.string("Main.c"), "0");
+}
+
 TEST(ReferenceEvaluator, AStringIsCutAtItsLength) {
     const auto p = run("s : STRING[3];", "s := 'abcdef';");
     EXPECT_EQ(p.string("Main.s"), "abc");

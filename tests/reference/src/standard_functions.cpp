@@ -348,6 +348,12 @@ Value Evaluator::conversion(const types::CallTarget& target, const Value& value)
     const sema::Type& to = *target.result;
     const Shape source = shape_of(from);
     const Shape result = shape_of(to);
+    if (result == Shape::String && is_decimal(from)) {
+        // An integer's decimal digits, with a sign when negative: the one string form of a
+        // number that leaves nothing to choose.
+        return text(to, signed_type(from) ? std::to_string(value.as_signed())
+                                          : std::to_string(value.bits));
+    }
     if (source == Shape::String || result == Shape::String || source == Shape::Unsupported ||
         result == Shape::Unsupported) {
         throw Unsupported("conversions to and from strings (" + target.name + ")");

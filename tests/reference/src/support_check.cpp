@@ -152,9 +152,13 @@ private:
             !kFunctions.contains(target->name)) {
             throw Unsupported("the standard function " + target->name);
         }
-        if (target->kind == types::CallKind::Conversion &&
+        const bool decimal = target->kind == types::CallKind::Conversion &&
+                             shape_of(*target->result) == Shape::String &&
+                             is_decimal(*target->operand);
+        if (target->kind == types::CallKind::Conversion && !decimal &&
             (!is_modelled(*target->operand) || !is_modelled(*target->result))) {
-            throw Unsupported("the conversion " + target->name + " (strings are not modelled)");
+            throw Unsupported("the conversion " + target->name +
+                              " (only integers convert to strings)");
         }
         if (target->kind == types::CallKind::StandardFunctionBlock && target->name == "RTC") {
             throw Unsupported("the standard function block RTC");
