@@ -32,9 +32,6 @@ Evaluator::Evaluator(std::unique_ptr<types::FrontEnd> front_end)
         for (const ast::DeclarationSection& section : unit.global_variable_lists) {
             if (const auto* variables = std::get_if<ast::VarSection>(&section)) {
                 for (const ast::VariableDeclaration& declaration : variables->variables) {
-                    if (declaration.address) {
-                        throw Unsupported("located variables (AT %...)");
-                    }
                     const sema::Type* type = program_.types().resolve(declaration.type);
                     for (const ast::Identifier& name : declaration.names) {
                         Value& global = globals_[fold_case(name.name)] =
@@ -84,9 +81,6 @@ Evaluator::Evaluator(std::unique_ptr<types::FrontEnd> front_end)
             throw Unsupported("VAR_ACCESS");
         }
         for (const ast::VariableDeclaration& declaration : variables->variables) {
-            if (declaration.address) {
-                throw Unsupported("located variables (AT %...)");
-            }
             const sema::Type* type = program_.types().resolve(declaration.type);
             for (const ast::Identifier& name : declaration.names) {
                 Value& global = globals_[fold_case(name.name)] =
@@ -171,9 +165,6 @@ Value Evaluator::make(const sema::Type& type, const ast::Initializer* initialize
             // A standard FB is its interface; its state is the evaluator's own.
             if (is_library(type.pou) && field.section == ast::VarSectionKind::Var) {
                 continue;
-            }
-            if (field.declaration != nullptr && field.declaration->address) {
-                throw Unsupported("located variables (AT %...)");
             }
             value.names.push_back(fold_case(field.name));
             value.elements.push_back(make(*field.type, field.declaration != nullptr

@@ -57,8 +57,10 @@ public:
                 throw Unsupported("VAR_ACCESS");
             }
             for (const ast::VariableDeclaration& declaration : variables->variables) {
-                if (declaration.address) {
-                    throw Unsupported("located variables (AT %...)");
+                // Outputs and markers are plain memory in a simulation; inputs are the host's.
+                if (declaration.address &&
+                    declaration.address->area == ast::DirectAddress::Area::Input) {
+                    throw Unsupported("variables located at inputs (AT %I...)");
                 }
             }
         }
@@ -191,6 +193,12 @@ void check_supported(const types::FrontEnd& front_end) {
         for (const ast::Pou& pou : unit.pous) {
             checker.sections(pou.sections);
             checker.statements(pou.body);
+        }
+        for (const ast::Configuration& configuration : unit.configurations) {
+            checker.sections(configuration.sections);
+            for (const ast::Resource& resource : configuration.resources) {
+                checker.sections(resource.sections);
+            }
         }
     }
 }
