@@ -97,6 +97,12 @@ TEST(ReferenceEvaluator, SubrangeViolationIsAFault) {
     EXPECT_EQ(p.fault(), "value out of subrange in Main at line 3");
 }
 
+TEST(ReferenceEvaluator, AForOverASubrangeEndsAtItsLastValue) {
+    const auto p = run("k : INT(1..10); n : DINT;", "FOR k := 1 TO 10 DO n := n + k; END_FOR;");
+    EXPECT_EQ(p.bits("Main.k"), 10u);
+    EXPECT_EQ(p.bits("Main.n"), 55u);
+}
+
 TEST(ReferenceEvaluator, ShiftsAndRotationsWorkAtTheTypesWidth) {
     const auto p =
         run("a, b, c : BYTE; w : WORD; d : DWORD; l : LWORD; x : BYTE;",

@@ -321,21 +321,15 @@ const sema::Type* ExpressionTyper::name(const ast::Expression& expression,
     if (symbol == nullptr) {
         return nullptr; // reported by name resolution
     }
-    switch (symbol->kind) {
-    case sema::SymbolKind::Variable:
+    if (symbol->kind == sema::SymbolKind::Variable) {
         return variable_type(*symbol);
-    case sema::SymbolKind::Pou:
-        // Inside a FUNCTION its name is its result variable (6.6.2.2).
-        if (symbol->pou == current_ && symbol->pou->kind == ast::PouKind::Function &&
-            symbol->pou->return_type) {
-            return program_.types().resolve(*symbol->pou->return_type);
-        }
-        return nullptr;
-    case sema::SymbolKind::ProgramInstance:
-        return nullptr;
-    default:
-        return nullptr;
     }
+    // Inside a FUNCTION its name is its result variable (6.6.2.2).
+    if (symbol->kind == sema::SymbolKind::Pou && symbol->pou == current_ &&
+        symbol->pou->kind == ast::PouKind::Function && symbol->pou->return_type) {
+        return program_.types().resolve(*symbol->pou->return_type);
+    }
+    return nullptr; // a type, POU or program instance named on its own
 }
 
 const sema::Type* ExpressionTyper::member(const ast::Expression& expression,
@@ -570,23 +564,8 @@ const sema::Type* ExpressionTyper::call(const ast::Expression& expression,
 const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
                                             const ast::CallExpression& node, const ast::Pou& pou,
                                             const sema::Type* instance) {
-    // Formal parameters in declaration order; positional arguments take the inputs and
-    // in-outs in that order (6.6.1.4.2).
-    std::vector<std::pair<const ast::VariableDeclaration*, ast::VarSectionKind>> formals;
+    // Positional arguments take the inputs and in-outs in declaration order (6.6.1.4.2).
     const sema::Type* frame = instance != nullptr ? instance : program_.types().frame(pou);
-    for (const ast::DeclarationSection& section : pou.sections) {
-        const auto* variables = std::get_if<ast::VarSection>(&section);
-        if (variables == nullptr || (variables->kind != ast::VarSectionKind::Input &&
-                                     variables->kind != ast::VarSectionKind::InOut &&
-                                     variables->kind != ast::VarSectionKind::Output)) {
-            continue;
-        }
-        for (const ast::VariableDeclaration& declaration : variables->variables) {
-            for (std::size_t i = 0; i < declaration.names.size(); ++i) {
-                formals.emplace_back(&declaration, variables->kind);
-            }
-        }
-    }
     std::vector<const sema::Field*> positional;
     if (frame != nullptr) {
         for (const sema::Field& field : frame->fields) {

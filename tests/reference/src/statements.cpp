@@ -131,6 +131,12 @@ Evaluator::Flow Evaluator::for_loop(const ast::ForStatement& node) {
         if (down ? order(next, *control) > 0 : order(next, *control) < 0) {
             throw Unsupported("a FOR control variable stepping past its type's range");
         }
+        // A subrange control variable keeps its last value rather than step past its range
+        // (docs/st-language.md); a value inside `to` but outside the range is a fault.
+        const bool passed = down ? order(next, to) < 0 : order(next, to) > 0;
+        if (type.range && !type.range->contains(next.as_signed()) && passed) {
+            return Flow::Next;
+        }
         *control = store(next, type);
     }
     return Flow::Next;
