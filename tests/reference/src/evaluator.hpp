@@ -55,6 +55,7 @@ private:
 
     // Expressions (expressions.cpp).
     Value eval(const ast::Expression& expression);
+    const sema::Type& type_of(const ast::Expression& expression);
     Value& place(const ast::Expression& expression);
     Value* variable(const ast::Identifier& name);
     Value constant(const types::Constant& constant, const sema::Type& type);
