@@ -38,6 +38,13 @@ TEST(ReferenceEvaluator, IntegersWrapAtTheirWidthWhereStored) {
     EXPECT_EQ(as_signed(p, "Main.i", 16), 900);
 }
 
+TEST(ReferenceEvaluator, AFunctionsInputIsCutToItsTypeLikeAnyStoredValue) {
+    const auto p = run("a, b : INT := 20000; m : INT; d : DINT;",
+                       "m := MAX(a + b, 5); d := INT_TO_DINT(a + b);");
+    EXPECT_EQ(as_signed(p, "Main.m", 16), 5); // 40000 is -25536 as an INT
+    EXPECT_EQ(as_signed(p, "Main.d", 32), -25536);
+}
+
 TEST(ReferenceEvaluator, NarrowingThenWideningConversionsZeroExtend) {
     const auto p =
         run("d : DINT := -1; ud : UDINT; l, m, n : LINT; u : ULINT; r : LREAL;",

@@ -427,11 +427,12 @@ const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression
             }
             if (result == nullptr) {
                 result = &program_.types().unranged(*type);
-            } else if (const sema::Type* both = common(*result, *type)) {
-                result = both;
             } else if (result->kind == sema::TypeKind::String && type->kind == result->kind &&
                        type->wide == result->wide) {
+                // Strings of any lengths meet in the longest, which holds each of them.
                 result = type->capacity > result->capacity ? type : result;
+            } else if (const sema::Type* both = common(*result, *type)) {
+                result = both;
             } else {
                 diagnostics_.error(
                     range, fmt::format("{} and {} have no common type", result->name, type->name));

@@ -62,7 +62,8 @@ Value Evaluator::call(const ast::Expression& expression, const ast::CallExpressi
     case types::CallKind::StandardFunction:
         return standard_function(*target, node);
     case types::CallKind::Conversion:
-        return conversion(*target, eval(*types::standard_arguments("TO", node).at(0)->value));
+        return conversion(*target, store(eval(*types::standard_arguments("TO", node).at(0)->value),
+                                         *target->operand));
     }
     throw Unsupported("this call");
 }

@@ -127,8 +127,10 @@ Value Evaluator::standard_function(const types::CallTarget& target,
     }
     const sema::Type& result = *target.result;
     const sema::Type* operand = target.operand;
+    // An input is stored into the function's input of the overload's type, so it is cut there
+    // like any stored value, then computed in the operand's working type.
     const auto as = [&](const Value& value) {
-        return widen(value, working(*operand));
+        return widen(store(value, *operand), working(*operand));
     };
     if (name == "MOVE") {
         return in[0];
