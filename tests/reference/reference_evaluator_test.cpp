@@ -177,6 +177,20 @@ TEST(ReferenceEvaluator, IntegersConvertToTheirDecimalDigits) {
     EXPECT_EQ(p.string("Main.c"), "0");
 }
 
+TEST(ReferenceEvaluator, TimeFunctionsAndTimeOfDayWrappingAtMidnight) {
+    const auto p =
+        run("a : TOD; b : TIME; c : DATE; d : TOD; e : TIME;",
+            "a := ADD_TOD_TIME(TOD#23:00:00, T#2h); b := SUB_DT_DT(DT#2024-01-02-00:00:00, "
+            "DT#2024-01-01-12:00:00); c := DT_TO_DATE(DT#1969-12-31-18:00:00);"
+            "d := DT_TO_TOD(DT#1969-12-31-18:00:00); e := MUL_TIME(T#1500ms, 3);");
+    constexpr std::uint64_t kHour = 3'600'000'000'000;
+    EXPECT_EQ(p.bits("Main.a"), 1 * kHour);
+    EXPECT_EQ(p.bits("Main.b"), 12 * kHour);
+    EXPECT_EQ(p.bits("Main.c"), static_cast<std::uint64_t>(-24 * static_cast<std::int64_t>(kHour)));
+    EXPECT_EQ(p.bits("Main.d"), 18 * kHour);
+    EXPECT_EQ(p.bits("Main.e"), 4'500'000'000u);
+}
+
 TEST(ReferenceEvaluator, AStringIsCutAtItsLength) {
     const auto p = run("s : STRING[3];", "s := 'abcdef';");
     EXPECT_EQ(p.string("Main.s"), "abc");

@@ -110,6 +110,11 @@ float math(const std::string& name, float x) {
     return functions.at(name)(x);
 }
 
+std::int64_t since_midnight(std::int64_t ns) {
+    const std::int64_t r = ns % kNsPerDay;
+    return r < 0 ? r + kNsPerDay : r;
+}
+
 std::int64_t position(const Value& value) {
     return signed_type(*value.type)
                ? value.as_signed()
@@ -266,12 +271,18 @@ Value Evaluator::standard_function(const types::CallTarget& target,
                                                               ? bounds.lower
                                                               : bounds.lower + bounds.count - 1));
     }
-    // Table 30 without the TIME_OF_DAY ones (whether they wrap at midnight is the engines' choice).
+    // Table 30; a TIME_OF_DAY wraps around midnight (vm/README.md, as CODESYS).
+    if (name == "ADD_TOD_TIME" || name == "SUB_TOD_TIME") {
+        const std::uint64_t sum =
+            name == "ADD_TOD_TIME" ? in[0].bits + in[1].bits : in[0].bits - in[1].bits;
+        return integer(result,
+                       static_cast<std::uint64_t>(since_midnight(static_cast<std::int64_t>(sum))));
+    }
     if (name == "ADD_TIME" || name == "ADD_DT_TIME" || name == "CONCAT_DATE_TOD") {
         return integer(result, in[0].bits + in[1].bits);
     }
     if (name == "SUB_TIME" || name == "SUB_DT_TIME" || name == "SUB_DATE_DATE" ||
-        name == "SUB_DT_DT") {
+        name == "SUB_DT_DT" || name == "SUB_TOD_TOD") {
         return integer(result, in[0].bits - in[1].bits);
     }
     if (name == "MUL_TIME" || name == "DIV_TIME") {
@@ -403,12 +414,13 @@ Value Evaluator::conversion(const types::CallTarget& target, const Value& value)
     const bool time_source = sema::is_time_like(from);
     const bool time_result = sema::is_time_like(to);
     if (time_source && time_result) {
+        // The day and the time since midnight, also before 1970 (vm/README.md).
         if (from.elementary == E::DateAndTime && to.elementary == E::Date) {
-            return integer(
-                to, static_cast<std::uint64_t>(value.as_signed() - value.as_signed() % kNsPerDay));
+            return integer(to, static_cast<std::uint64_t>(value.as_signed() -
+                                                          since_midnight(value.as_signed())));
         }
         if (from.elementary == E::DateAndTime && to.elementary == E::TimeOfDay) {
-            return integer(to, static_cast<std::uint64_t>(value.as_signed() % kNsPerDay));
+            return integer(to, static_cast<std::uint64_t>(since_midnight(value.as_signed())));
         }
         if ((from.elementary == E::Time || from.elementary == E::Ltime) &&
             (to.elementary == E::Time || to.elementary == E::Ltime)) {
