@@ -129,7 +129,7 @@ TEST(ReferenceEvaluator, BitOperationsAndComparisons) {
     const auto p = run("w : WORD := 16#F0F0; a, b : WORD; n : BOOL; lt, mixed, bit : BOOL; "
                        "u : UDINT := 4000000000; i : DINT := -1;",
                        "a := w AND 16#FF00; b := NOT w XOR 16#000F; n := NOT (3 > 2);"
-                       "lt := -1 < 1; mixed := i < u; bit := w.4;");
+                       "lt := -1 < 1; mixed := i < u; bit := w.4; w.0 := TRUE; w.15 := FALSE;");
     EXPECT_EQ(p.bits("Main.a"), 0xF000u);
     EXPECT_EQ(p.bits("Main.b"), 0x0F00u);
     EXPECT_EQ(p.bits("Main.n"), 0u);
@@ -137,6 +137,13 @@ TEST(ReferenceEvaluator, BitOperationsAndComparisons) {
     // DINT and UDINT compare as LINT (figure 11): -1 < 4000000000.
     EXPECT_EQ(p.bits("Main.mixed"), 1u);
     EXPECT_EQ(p.bits("Main.bit"), 1u);
+    EXPECT_EQ(p.bits("Main.w"), 0x70F1u);
+}
+
+TEST(ReferenceEvaluator, ACharIsItsCode) {
+    const auto p = run("c : CHAR; n : USINT;", "c := CHAR#'A'; n := CHAR_TO_USINT(c) + 1;");
+    EXPECT_EQ(p.bits("Main.c"), 65u);
+    EXPECT_EQ(p.bits("Main.n"), 66u);
 }
 
 TEST(ReferenceEvaluator, RealArithmeticIsInTheTypesPrecision) {

@@ -35,9 +35,17 @@ Evaluator::Flow Evaluator::statement(const ast::Statement& statement) {
         [&](const auto& node) -> Flow {
             using T = std::decay_t<decltype(node)>;
             if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
-                // The value first, then the place it goes (its indices may be changed by a
-                // call in the value, as in the VM's order of evaluation).
+                // The value first, then the place it goes.
                 const Value value = eval(*node.value);
+                if (const auto* bit = std::get_if<ast::BitAccessExpression>(&node.target->node)) {
+                    // 6.5.1.2 partial access: one bit of the variable changes.
+                    Value& word = place(*bit->object);
+                    const std::uint64_t mask = std::uint64_t{1} << bit->bit;
+                    word = store(
+                        integer(*word.type, value.bits != 0 ? word.bits | mask : word.bits & ~mask),
+                        *word.type);
+                    return Flow::Next;
+                }
                 Value& target = place(*node.target);
                 target = store(value, *target.type);
                 return Flow::Next;
