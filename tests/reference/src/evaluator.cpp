@@ -2,6 +2,7 @@
 
 #include "eposp/compiler/sema/symbol.hpp"
 
+#include <charconv>
 #include <sstream>
 #include <unordered_map>
 
@@ -261,7 +262,20 @@ const Value* Evaluator::find(const std::string& path) const {
                                 return nullptr;
                             }
                             const sema::ArrayDimension& bounds = array.dimensions[dimension++];
-                            const std::int64_t i = std::stoll(index) - bounds.lower;
+                            if (index.find_first_not_of(' ') == std::string::npos) {
+                                return nullptr;
+                            }
+                            std::int64_t i = 0;
+                            const auto [end_of_number, error] =
+                                std::from_chars(index.data() + index.find_first_not_of(' '),
+                                                index.data() + index.size(), i);
+                            if (error != std::errc{} ||
+                                index.find_first_not_of(
+                                    ' ', static_cast<std::size_t>(end_of_number - index.data())) !=
+                                    std::string::npos) {
+                                return nullptr; // not a number
+                            }
+                            i -= bounds.lower;
                             if (i < 0 || i >= bounds.count) {
                                 return nullptr;
                             }
