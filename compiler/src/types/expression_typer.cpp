@@ -99,6 +99,12 @@ void ExpressionTyper::configuration(const ast::Configuration& configuration) {
     sections(configuration.sections);
     for (const ast::Resource& resource : configuration.resources) {
         sections(resource.sections);
+        // Program connections: a source or sink of its own type (checked by code generation).
+        for (const ast::ProgramInstance& instance : resource.programs) {
+            for (const ast::Argument& connection : instance.connections) {
+                type(*connection.value, nullptr);
+            }
+        }
     }
 }
 
@@ -249,7 +255,10 @@ const sema::Type* ExpressionTyper::type(const ast::Expression& expression,
             } else if constexpr (std::is_same_v<T, ast::BinaryExpression>) {
                 return binary(expression, node, expected);
             } else {
-                return fail(expression.range, "a direct address has no type in the typing stage");
+                // 6.5.5: the size prefix is the type (X or none BOOL, B BYTE, W WORD, ...).
+                static constexpr E kBySize[] = {E::Bool, E::Bool,  E::Byte,
+                                                E::Word, E::Dword, E::Lword};
+                return &elementary(kBySize[static_cast<int>(node.address.size)]);
             }
         },
         expression.node);
