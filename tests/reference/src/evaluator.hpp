@@ -20,7 +20,7 @@ namespace types = compiler::types;
 
 class Evaluator {
 public:
-    /// Lays out every global and program instance of the first task; throws Unsupported for
+    /// Lays out every global and program instance and finds the first task; throws Unsupported for
     /// what it does not model.
     explicit Evaluator(std::unique_ptr<types::FrontEnd> front_end);
 
@@ -96,13 +96,14 @@ private:
     std::uint64_t steps_ = 0;
     /// Configuration globals and global variable lists, by folded name.
     std::unordered_map<std::string, Value> globals_;
-    /// Program instances by folded path, with the POU each runs.
+    /// Program instances by folded name.
     std::unordered_map<std::string, Value> instances_;
     /// Symbol paths (folded) to the variable: `CONFIG0.G`, `G`, `MAIN`.
     std::unordered_map<std::string, Value*> roots_;
+    /// What the first task runs: each program instance with its PROGRAM, in order.
     std::vector<std::pair<const ast::Pou*, Value*>> task_;
-    Frame* frame_ = nullptr;
-    int line_ = 0;
+    Frame* frame_ = nullptr; ///< the POU being run
+    int line_ = 0;           ///< the line of the statement being run, for fault texts
 };
 
 } // namespace eposp::reference
