@@ -354,6 +354,16 @@ TEST(ReferenceEvaluator, RefusesWhatItDoesNotModel) {
         << p.errors();
 }
 
+TEST(ReferenceEvaluator, RefusesConversionsTheStandardLeavesOpenBeforeRunning) {
+    ReferenceProgram p("PROGRAM Main\nVAR t : TIME; r : REAL; END_VAR\nr := TIME_TO_REAL(t);\n"
+                       "END_PROGRAM\n");
+    EXPECT_FALSE(p.ok());
+    EXPECT_NE(p.errors().find("not supported by the reference evaluator: the conversion "
+                              "TIME_TO_REAL"),
+              std::string::npos)
+        << p.errors();
+}
+
 TEST(ReferenceEvaluator, ReportsFrontEndErrors) {
     ReferenceProgram p("PROGRAM Main\nVAR i : INT; d : DINT; END_VAR\ni := d;\nEND_PROGRAM\n");
     EXPECT_FALSE(p.ok());

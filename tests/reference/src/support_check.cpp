@@ -48,6 +48,16 @@ bool is_modelled(const sema::Type& type) {
     return shape_of(type) != Shape::Unsupported && shape_of(type) != Shape::String;
 }
 
+/// A conversion whose result the standard leaves to the implementation: the evaluator
+/// refuses it.
+bool real_and_time_or_bool(const types::CallTarget& target) {
+    const auto other = [](const sema::Type& type) {
+        return sema::is_time_like(type) || sema::is_bool(type);
+    };
+    return (sema::is_real(*target.operand) && other(*target.result)) ||
+           (sema::is_real(*target.result) && other(*target.operand));
+}
+
 class Checker {
 public:
     explicit Checker(const types::TypedProgram& program) : program_(program) {}
@@ -163,6 +173,10 @@ private:
             (!is_modelled(*target->operand) || !is_modelled(*target->result))) {
             throw Unsupported("the conversion " + target->name +
                               " (only integers convert to strings)");
+        }
+        if (target->kind == types::CallKind::Conversion && real_and_time_or_bool(*target)) {
+            throw Unsupported("the conversion " + target->name +
+                              " (between REAL and TIME, a date or BOOL)");
         }
         if (target->kind == types::CallKind::StandardFunctionBlock && target->name == "RTC") {
             throw Unsupported("the standard function block RTC");
