@@ -346,6 +346,34 @@ END_CONFIGURATION
     EXPECT_EQ(p.bits("count"), 6u);
 }
 
+TEST(ReferenceEvaluator, EnFalseSkipsTheCallAndKeepsTheAssignedVariable) {
+    ReferenceProgram p(R"(
+FUNCTION_BLOCK Counter
+  VAR_OUTPUT n : INT; END_VAR
+  n := n + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR c : Counter; go : BOOL; x : INT := 7; y : INT := 7; z : INT; ok1, ok2, ok3 : BOOL := TRUE;
+      s : STRING := 'keep'; END_VAR
+  c(EN := go, ENO => ok1);
+  x := ABS(EN := go, IN := -3, ENO => ok2);
+  z := 10 + ABS(EN := go, IN := -3);
+  s := LEFT(EN := go, IN := 'abc', L := 1);
+  y := ABS(EN := TRUE, IN := -3, ENO => ok3);
+END_PROGRAM
+)");
+    ASSERT_TRUE(p.ok()) << p.errors();
+    ASSERT_TRUE(p.scans(1)) << p.fault();
+    EXPECT_EQ(p.bits("Main.c.n"), 0u);
+    EXPECT_EQ(p.bits("Main.ok1"), 0u);
+    EXPECT_EQ(p.bits("Main.x"), 7u);
+    EXPECT_EQ(p.bits("Main.ok2"), 0u);
+    EXPECT_EQ(p.bits("Main.z"), 10u); // a skipped function gives 0 inside an expression
+    EXPECT_EQ(p.string("Main.s"), "keep");
+    EXPECT_EQ(p.bits("Main.y"), 3u);
+    EXPECT_EQ(p.bits("Main.ok3"), 1u);
+}
+
 TEST(ReferenceEvaluator, RefusesWhatItDoesNotModel) {
     ReferenceProgram p("PROGRAM Main\nVAR p : POINTER TO INT; x : INT; END_VAR\np := ADR(x);\n"
                        "END_PROGRAM\n");

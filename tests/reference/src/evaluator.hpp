@@ -80,6 +80,8 @@ private:
 
     // Calls (calls.cpp).
     Value call(const ast::Expression& expression, const ast::CallExpression& node);
+    /// The call itself, once EN allows it.
+    Value execute(const types::CallTarget* target, const ast::CallExpression& node);
     /// A user POU, or (`standard` its name) a standard FB modelled in
     /// standard_function_blocks.cpp.
     Value pou_call(const ast::CallExpression& node, const ast::Pou& pou, Value* instance,
@@ -104,6 +106,8 @@ private:
     std::vector<std::pair<const ast::Pou*, Value*>> task_;
     Frame* frame_ = nullptr; ///< the POU being run
     int line_ = 0;           ///< the line of the statement being run, for fault texts
+    /// The last call that EN skipped: an assignment of it keeps its target.
+    const ast::Expression* skipped_ = nullptr;
 };
 
 } // namespace eposp::reference

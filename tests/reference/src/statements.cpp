@@ -36,7 +36,11 @@ Evaluator::Flow Evaluator::statement(const ast::Statement& statement) {
             using T = std::decay_t<decltype(node)>;
             if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
                 // The value first, then the place it goes.
+                skipped_ = nullptr;
                 const Value value = eval(*node.value);
+                if (skipped_ == node.value.get()) {
+                    return Flow::Next; // a call EN skipped leaves the target as it was
+                }
                 if (const auto* bit = std::get_if<ast::BitAccessExpression>(&node.target->node)) {
                     // 6.5.1.2 partial access: one bit of the variable changes.
                     Value& word = place(*bit->object);

@@ -182,10 +182,6 @@ private:
             throw Unsupported("the standard function block RTC");
         }
         for (const ast::Argument& argument : node.arguments) {
-            if (argument.name && (sema::fold_case(argument.name->name) == "EN" ||
-                                  sema::fold_case(argument.name->name) == "ENO")) {
-                throw Unsupported("EN and ENO");
-            }
             this->expression(*argument.value);
         }
     }
