@@ -143,7 +143,9 @@ TEST(Robustness, InvalidUtf8IsReportedWhereItIs) {
     const test::Parsed parsed = parse_text("PROGRAM P\n  x := 1; \xc3\x28\nEND_PROGRAM\n");
     ASSERT_FALSE(parsed.diagnostics.all().empty());
     const Diagnostic& first = parsed.diagnostics.all().front();
-    EXPECT_EQ(first.message, "the file is not valid UTF-8 text here");
+    EXPECT_EQ(first.message, "the file is not valid UTF-8 text here; it is read as Windows-1252, "
+                             "as CODESYS exports it");
+    EXPECT_EQ(first.severity, Severity::Warning);
     EXPECT_EQ(first.range.begin, (SourcePosition{2, 11}));
 }
 
