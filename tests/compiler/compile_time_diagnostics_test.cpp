@@ -38,6 +38,7 @@ PROGRAM Main
 VAR s : STRING[3] := 'abcdef'; t : STRING[3]; n : INT; fits : STRING[3] := 'xyz'; END_VAR
 t := 'ghijk';
 n := Length('lmnopq');
+fits := SEL(t = 'ghijk', 'yes', 'no'); (* a comparison cuts nothing *)
 END_PROGRAM
 )");
     ASSERT_TRUE(run.ok()) << run.errors();
@@ -52,6 +53,8 @@ END_PROGRAM
     EXPECT_THAT(run.errors(), HasSubstr("test.st:9:13: warning: this string of 6 characters is "
                                         "cut to the 4 of STRING[4]"));
     EXPECT_THAT(run.errors(), Not(HasSubstr(":7:76:"))); // 'xyz' fits
+    EXPECT_THAT(run.errors(), Not(HasSubstr(":10:")));
+    EXPECT_EQ(run.get_string("Main.fits"), "yes"); // t holds 'ghi': G is FALSE, SEL gives IN0
 }
 
 TEST(CompileTimeDiagnostics, AFileThatIsNotUtf8IsReadAsWindows1252WithOneWarning) {

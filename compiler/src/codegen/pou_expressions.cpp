@@ -460,9 +460,6 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
         if (text->type == E::Char || text->type == E::Wchar) {
             return character(expression, text->type);
         }
-        if (hint != nullptr) {
-            program_.warn_if_cut(expression, *hint);
-        }
         const bool wide = text->type == E::Wstring || text->type == E::Wchar;
         const std::size_t length = wide ? std::get<std::u16string>(text->value).size()
                                         : std::get<std::string>(text->value).size();
