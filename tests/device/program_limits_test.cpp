@@ -17,7 +17,7 @@ std::string static_data_program(long elements) {
     return "VAR_GLOBAL a : " + array + "; END_VAR\nVAR_GLOBAL b : " + array + "; END_VAR\n" +
            "PROGRAM Main\nVAR_EXTERNAL b : " + array + "; END_VAR\nVAR n : DINT; END_VAR\n" +
            "n := n + 1; b[" + std::to_string(elements) + "] := n;\nEND_PROGRAM\n" +
-           "CONFIGURATION C\nRESOURCE R ON PLC\nTASK T(INTERVAL := T#1ms);\n" +
+           "CONFIGURATION C\nRESOURCE R ON PLC\nTASK T(INTERVAL := T#1ms, PRIORITY := 1);\n" +
            "PROGRAM Inst WITH T : Main;\nEND_RESOURCE\nEND_CONFIGURATION\n";
 }
 
@@ -41,9 +41,10 @@ TEST(ProgramLimits, StaticDataOverTheLimitIsRefusedByTheCompiler) {
 
 TEST(ProgramLimits, ATaskIntervalBelowOneMillisecondIsRefusedByTheCompiler) {
     const std::string source = write_source(
-        "fast.st", "PROGRAM Main\nEND_PROGRAM\nCONFIGURATION C\nRESOURCE R ON PLC\n"
-                   "TASK T(INTERVAL := T#1ns);\nPROGRAM Inst WITH T : Main;\nEND_RESOURCE\n"
-                   "END_CONFIGURATION\n");
+        "fast.st",
+        "PROGRAM Main\nEND_PROGRAM\nCONFIGURATION C\nRESOURCE R ON PLC\n"
+        "TASK T(INTERVAL := T#1ns, PRIORITY := 1);\nPROGRAM Inst WITH T : Main;\nEND_RESOURCE\n"
+        "END_CONFIGURATION\n");
     const auto built = eposp("build " + source + " -o " + scratch("fast.epx").string());
     EXPECT_EQ(built.exit_code, 1);
     EXPECT_THAT(built.output, HasSubstr(source + ":5:20: error: INTERVAL must be at least 1 ms"));
