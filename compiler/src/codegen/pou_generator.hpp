@@ -327,9 +327,6 @@ private:
                                     const Destination* dest, const SourceRange& range);
     std::optional<Value> string_function(const std::string& name, const Arguments& arguments,
                                          const Destination* dest, const SourceRange& range);
-    std::optional<Value> selection(const std::string& name, const Arguments& arguments,
-                                   const sema::Type* hint, const Destination* dest,
-                                   const SourceRange& range);
     /// ADR(x): the address of x as POINTER TO its type; SIZEOF(x or T): its size in bytes.
     std::optional<Value> address_or_size(const std::string& name, const Arguments& arguments,
                                          const SourceRange& range);
@@ -344,6 +341,14 @@ private:
     std::optional<Value> numeric_function(const std::string& name, const Arguments& arguments,
                                           const sema::Type* hint, const Destination* dest,
                                           const SourceRange& range);
+
+    // --- selection_functions.cpp -------------------------------------------------------------
+    /// MOVE, SEL, MAX, MIN, LIMIT, MUX.
+    std::optional<Value> selection(const std::string& name, const Arguments& arguments,
+                                   const sema::Type* hint, const Destination* dest,
+                                   const SourceRange& range);
+    /// Jumps to `target` when a <= b (a and b of one elementary type or both strings).
+    void jump_if_at_most(const Value& a, const Value& b, vm::Label target);
 
     ProgramGenerator& program_;
     const sema::SemanticModel& model_;
