@@ -151,6 +151,46 @@ END_PROGRAM
     EXPECT_DOUBLE_EQ(run.get<double>("Main.inlined"), expected);
 }
 
+// EN/ENO, VAR_IN_OUT, an FB's inputs and host functions of every kind (EXPT, TIME * REAL,
+// selection on strings) in the arguments of nested calls.
+TEST(CallArguments, EnInOutAndFbInputsAmongHostFunctions) {
+    StProgram run(R"(
+FUNCTION F : DINT
+  VAR_INPUT w : DWORD; s : STRING; b : BOOL; END_VAR
+  VAR_IN_OUT acc : DINT; END_VAR
+  acc := acc + 1;
+  F := LEN(s) * 10 + BOOL_TO_DINT(b) + 1000 * DWORD_TO_DINT(w);
+END_FUNCTION
+FUNCTION H : DINT
+  VAR_INPUT a : LREAL; t : TIME; s : STRING[5]; END_VAR
+  H := LREAL_TO_DINT(a) + 100 * LINT_TO_DINT(TIME_TO_LINT(t)) + 10000 * LEN(s);
+END_FUNCTION
+FUNCTION_BLOCK Fb
+  VAR_INPUT g : BOOL; t : STRING; n : DINT; END_VAR
+  VAR_OUTPUT o : STRING; END_VAR
+  o := SEL(g, t, CONCAT('Y', 'Z'));
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR t : STRING := 'abc'; acc : DINT; r1, r2, r3, r4, r5 : DINT; ok : BOOL; fb : Fb; x : LREAL := 3.0; END_VAR
+r1 := F(DWORD#1, SEL(t = 'abc', 'x', CONCAT(t, t)), MAX(t, 'abd') = 'abd', acc);
+r2 := F(EN := TRUE, w := 2, s := t, b := LEFT(t, 1) = 'a', acc := acc, ENO => ok);
+r3 := H(x ** 2.0, T#1ms * 2.5, MID(t, 2, 2));
+fb(g := t = 'abc', t := CONCAT(t, 'd'), n := F(3, t, t < 'b', acc));
+r4 := F(DINT_TO_DWORD(H(x ** 2.0, T#2ms, 'ab')), CONCAT(t, 'x', t), F(1, t, t <> 'abc', acc) = 1030, acc);
+r5 := fb.n;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int32_t>("Main.r1"), 1061);
+    EXPECT_EQ(run.get<std::int32_t>("Main.r2"), 2031);
+    EXPECT_EQ(run.get<std::int32_t>("Main.r3"), 9 + 200 + 20000);
+    EXPECT_EQ(run.get<std::int32_t>("Main.r5"), 3031);
+    EXPECT_EQ(run.get_string("Main.fb.o"), "YZ");
+    EXPECT_EQ(run.get<std::int32_t>("Main.r4"), (9 + 200 + 20000) * 1000 + 70 + 1);
+    EXPECT_EQ(run.get<std::int32_t>("Main.acc"), 5);
+}
+
 // An output is copied out of the callee's frame before the place it goes to is computed,
 // which may itself call.
 TEST(CallArguments, OutputsSurviveCallsInTheirTargets) {
