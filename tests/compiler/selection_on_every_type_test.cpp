@@ -131,6 +131,43 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int64_t>("Main.rdt2"), expected.get<std::int64_t>("Main.dt2"));
 }
 
+// The other elementary types (ULINT and LWORD compared unsigned), and the comparison
+// operators on dates, times of day, LTIME, WSTRING and CHAR.
+TEST(SelectionOnEveryType, NumbersBitStringsCharactersAndComparisonOperators) {
+    StProgram run(R"(
+PROGRAM Main
+VAR c : CHAR := CHAR#'b'; wc : WCHAR := WCHAR#"b"; rc : CHAR; rwc : WCHAR;
+    b : BOOL; lw : LWORD; u : ULINT; s : SINT; r : REAL; l : LREAL; bt : BYTE;
+    d1 : DATE := D#2024-01-02; tod1 : TOD := TOD#10:00:00; dt1 : DT := DT#2024-01-02-10:00:00; lt : LTIME := LTIME#1us;
+    bits : DINT; ws : WSTRING := "b"; END_VAR
+rc := MAX(c, CHAR#'a', CHAR#'c');
+rwc := MIN(wc, WCHAR#"a");
+b := MAX(FALSE, TRUE);
+lw := MAX(LWORD#16#8000000000000000, LWORD#1);
+u := LIMIT(ULINT#1, ULINT#16#FFFFFFFFFFFFFFFF, ULINT#16#8000000000000001);
+s := MIN(SINT#-5, SINT#3);
+r := MAX(REAL#1.5, REAL#-2.0);
+l := LIMIT(0.0, 7.5, 5.0);
+bt := MUX(2, BYTE#1, BYTE#2, BYTE#255);
+bits := BOOL_TO_DINT(d1 < D#2024-01-03) + 2 * BOOL_TO_DINT(tod1 >= TOD#10:00:00)
+      + 4 * BOOL_TO_DINT(dt1 <> DT#2024-01-02-10:00:00) + 8 * BOOL_TO_DINT(lt > LTIME#999ns)
+      + 16 * BOOL_TO_DINT(ws >= "a") + 32 * BOOL_TO_DINT(c = CHAR#'b') + 64 * BOOL_TO_DINT(GT(c, CHAR#'a'));
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::uint8_t>("Main.rc"), 'c');
+    EXPECT_EQ(run.get<std::uint16_t>("Main.rwc"), 'a');
+    EXPECT_EQ(run.get<bool>("Main.b"), true);
+    EXPECT_EQ(run.get<std::uint64_t>("Main.lw"), 0x8000000000000000ULL);
+    EXPECT_EQ(run.get<std::uint64_t>("Main.u"), 0x8000000000000001ULL);
+    EXPECT_EQ(run.get<std::int8_t>("Main.s"), -5);
+    EXPECT_EQ(run.get<float>("Main.r"), 1.5f);
+    EXPECT_EQ(run.get<double>("Main.l"), 5.0);
+    EXPECT_EQ(run.get<std::uint8_t>("Main.bt"), 255);
+    EXPECT_EQ(run.get<std::int32_t>("Main.bits"), 1 + 2 + 8 + 16 + 32 + 64);
+}
+
 TEST(ComparisonFunctions, OnStringsTimesAndDates) {
     StProgram run(R"(
 PROGRAM Main
