@@ -104,6 +104,26 @@ END_PROGRAM
                 testing::HasSubstr("test.st:5:3: error: a CASE label must be a value of LINT"));
 }
 
+// Definite assignment sees that labels up to the top of ULINT cover a ULINT subrange.
+TEST(CaseUnsignedLabels, ARangeUpToTheTopCoversASubrange) {
+    EXPECT_EQ(diagnostics_of(R"(
+TYPE Small : ULINT(0..10); END_TYPE
+FUNCTION Pick : DINT
+  VAR_INPUT u : Small; END_VAR
+  CASE u OF
+    0..4: Pick := 1;
+    5..16#FFFFFFFFFFFFFFFF: Pick := 2;
+  END_CASE;
+END_FUNCTION
+
+PROGRAM Main
+VAR r : DINT; END_VAR
+r := Pick(3);
+END_PROGRAM
+)"),
+              "");
+}
+
 // The top of the 32-bit unsigned range, through a jump table.
 TEST(CaseUnsignedLabels, JumpTableAtTheTopOfUdint) {
     StProgram run(R"(
