@@ -1,12 +1,15 @@
 // Calls of functions, function block instances and host functions (IEC 61131-3 ed. 3, 6.6.1.7
 // and 7.3.3.2). A function's arguments are written into the caller's out area, which becomes
-// the callee's frame; an FB's inputs are written into its instance before CallFb.
+// the callee's frame (host functions called meanwhile take their block after them); an FB's
+// inputs are written into its instance before CallFb.
 
 #include "eposp/compiler/sema/standard_library.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_generator.hpp"
 
 #include <fmt/format.h>
+#include <stdexcept>
+#include <utility>
 
 namespace eposp::compiler::codegen {
 
@@ -129,15 +132,16 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         }
         bound.push_back({field, &argument, std::nullopt});
     }
-    // First everything that may itself call (and so use the out area) or needs a native.
+    // First the arguments that call a function: the callee's frame is the out area, so they
+    // run before any argument is placed there. Host functions (string comparisons and
+    // functions, conversions) in the others take their block after the arguments placed.
     for (Bound& b : bound) {
         if (b.field->section == ast::VarSectionKind::InOut) {
             const auto target = place(*b.argument->value);
             b.value = target ? in_out_argument(*target, *b.field, b.argument->range) : std::nullopt;
             ok = ok && b.value.has_value();
         } else if (b.field->section == ast::VarSectionKind::Input &&
-                   (contains_call(*b.argument->value) ||
-                    b.field->type->kind == sema::TypeKind::String)) {
+                   contains_call(*b.argument->value)) {
             const Operand slot = temp(*b.field->type);
             const Destination into{slot, b.field->type};
             program_.warn_if_cut(*b.argument->value, *b.field->type);
@@ -152,6 +156,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     if (!ok) {
         return std::nullopt;
     }
+    const std::uint32_t pending = std::exchange(out_pending_, end);
     for (const sema::Field& field : frame.fields) {
         if (field.declaration == nullptr || field.section == ast::VarSectionKind::Output ||
             !is_parameter(field.section)) {
@@ -164,7 +169,8 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
             if (field.section == ast::VarSectionKind::InOut) {
                 error(range, fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", field.name,
                                          function.name.name));
-                return std::nullopt;
+                ok = false;
+                break;
             }
             // 6.6.1.7: an input left out takes its initial value.
             std::vector<std::uint8_t> bytes(field.type->size);
@@ -177,13 +183,25 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                  slot, it->value->operand,
                  Operand::imm(sema::is_scalar(*field.type) ? 0 : field.type->size));
         } else {
+            if (field.type->kind == sema::TypeKind::String) {
+                clear(slot, *field.type); // the header a string function writes through
+            }
             const Destination into{slot, field.type};
             const auto value = value_as(*it->argument->value, *field.type, &into);
             if (!value) {
-                return std::nullopt;
+                ok = false;
+                break;
             }
             move(slot, *field.type, *value);
         }
+    }
+    out_pending_ = pending;
+    if (!ok) {
+        return std::nullopt;
+    }
+    if (out_pending_ != 0) {
+        // Calls in arguments run before any argument is placed (above), so this cannot be.
+        throw std::logic_error("a call while arguments are being placed in the out area");
     }
     out_slot(end);
     emit(Opcode::Call, Operand::imm(index));
@@ -197,17 +215,22 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
              operand, Operand::out(0), Operand::imm(sema::is_scalar(type) ? 0 : type.size));
         result = Value{operand, &type};
     }
+    // The outputs leave the out area before the places they go to are computed, which may
+    // call again.
+    std::vector<std::pair<const Bound*, Operand>> outputs;
     for (const Bound& b : bound) {
-        if (b.field->section != ast::VarSectionKind::Output) {
-            continue;
-        }
-        const auto target = place(*b.argument->value);
-        if (target) {
+        if (b.field->section == ast::VarSectionKind::Output) {
             const Operand copy = temp(*b.field->type);
             emit(Opcode::MovN, copy, Operand::out(b.field->offset),
                  Operand::imm(b.field->type->size));
+            outputs.emplace_back(&b, copy);
+        }
+    }
+    for (const auto& [b, copy] : outputs) {
+        const auto target = place(*b->argument->value);
+        if (target) {
             if (const auto value =
-                    value_as(Value{copy, b.field->type}, b.argument->range, *target->type)) {
+                    value_as(Value{copy, b->field->type}, b->argument->range, *target->type)) {
                 store(*target, *value);
             }
         }
@@ -330,8 +353,9 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
 void PouGenerator::call_native(const std::string& name, const vm::NativeSignature& signature,
                                const std::vector<Value>& arguments) {
     const std::uint32_t import = program_.import(name, signature);
+    const Operand block = native_block();
     for (std::size_t i = 0; i < arguments.size(); ++i) {
-        const Operand slot = Operand::out(vm::parameter_offset(signature, i));
+        const Operand slot = Operand::out(block.offset() + vm::parameter_offset(signature, i));
         const Value& argument = arguments[i];
         if (signature.parameters[i] == vm::Scalar::Ptr &&
             argument.type->kind != sema::TypeKind::Reference &&
@@ -342,8 +366,8 @@ void PouGenerator::call_native(const std::string& name, const vm::NativeSignatur
                  argument.operand);
         }
     }
-    out_slot(vm::argument_block_size(signature));
-    emit(Opcode::CallNative, Operand::imm(import), Operand::out(0));
+    out_slot(block.offset() + vm::argument_block_size(signature));
+    emit(Opcode::CallNative, Operand::imm(import), block);
 }
 
 std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& signature,
@@ -351,11 +375,11 @@ std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& sign
     const Operand result = result_operand(type, dest);
     const vm::Scalar want = sema::scalar_of(type);
     if (signature.result == want) {
-        emit(program_.opcodes().get("Mov", width_suffix(want)), result, Operand::out(0));
+        emit(program_.opcodes().get("Mov", width_suffix(want)), result, native_block());
     } else {
         emit(program_.opcodes().get("Cvt", std::string(type_suffix(signature.result)) +
                                                std::string(type_suffix(want))),
-             result, Operand::out(0));
+             result, native_block());
     }
     return Value{result, &type};
 }

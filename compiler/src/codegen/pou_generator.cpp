@@ -259,6 +259,10 @@ std::uint32_t PouGenerator::out_slot(std::uint32_t end) {
     return end;
 }
 
+Operand PouGenerator::native_block() const {
+    return Operand::out(sema::align_up(out_pending_, 8));
+}
+
 std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const SourceRange& range) {
     used_.insert(sema::fold_case(symbol.name));
     // A PROGRAM's own VAR_GLOBAL lives in its instance; other globals in the configuration.

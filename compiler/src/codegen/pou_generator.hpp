@@ -81,6 +81,9 @@ private:
     void report_unassigned_paths(const std::unordered_set<std::string>& written);
     vm::Operand temp(const sema::Type& type);
     std::uint32_t out_slot(std::uint32_t end);
+    /// Where a host function called now finds its argument block and leaves its result: after
+    /// the arguments already placed for the function call being prepared (out_pending_).
+    vm::Operand native_block() const;
     /// Whether `operand` is a temporary of the current statement (not a variable).
     bool is_temporary(vm::Operand operand) const;
     /// Ends the temporaries allocated since `mark` and forgets what was computed in them.
@@ -342,9 +345,6 @@ private:
                                     const Destination* dest, const SourceRange& range);
     std::optional<Value> string_function(const std::string& name, const Arguments& arguments,
                                          const Destination* dest, const SourceRange& range);
-    std::optional<Value> selection(const std::string& name, const Arguments& arguments,
-                                   const sema::Type* hint, const Destination* dest,
-                                   const SourceRange& range);
     /// ADR(x): the address of x as POINTER TO its type; SIZEOF(x or T): its size in bytes.
     std::optional<Value> address_or_size(const std::string& name, const Arguments& arguments,
                                          const SourceRange& range);
@@ -360,6 +360,14 @@ private:
                                           const sema::Type* hint, const Destination* dest,
                                           const SourceRange& range);
 
+    // --- selection_functions.cpp -------------------------------------------------------------
+    /// MOVE, SEL, MAX, MIN, LIMIT, MUX.
+    std::optional<Value> selection(const std::string& name, const Arguments& arguments,
+                                   const sema::Type* hint, const Destination* dest,
+                                   const SourceRange& range);
+    /// Jumps to `target` when a <= b (a and b of one elementary type or both strings).
+    void jump_if_at_most(const Value& a, const Value& b, vm::Label target);
+
     ProgramGenerator& program_;
     const sema::SemanticModel& model_;
     const ast::Pou& pou_;
@@ -371,6 +379,9 @@ private:
     std::uint32_t frame_top_ = 0;
     std::uint32_t frame_max_ = 0;
     std::uint32_t out_max_ = 0;
+    /// The bytes at the start of the out area that hold the arguments placed so far for the
+    /// function call being prepared; nothing may write there until that call is made.
+    std::uint32_t out_pending_ = 0;
     std::vector<Loop> loops_;
     std::vector<std::uint32_t> for_variables_; // operands of the enclosing FOR loops
     bool result_assigned_ = false;

@@ -299,17 +299,34 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
     const vm::Label end = builder_.label();
     std::vector<vm::Label> bodies;
     std::vector<CaseRange> ranges;
+    // Every value of the selector's type is a label: a ULINT or LWORD selector's labels are
+    // folded and ordered as unsigned 64-bit numbers (their bits kept in CaseRange).
+    const bool unsigned64 = sema::scalar_of(type) == vm::Scalar::U64;
+    const auto fold = [&](const ast::Expression& label) -> std::optional<std::int64_t> {
+        if (!unsigned64) {
+            return types_.fold_integer(label);
+        }
+        const auto bits = types_.fold_unsigned(label);
+        return bits ? std::optional(static_cast<std::int64_t>(*bits)) : std::nullopt;
+    };
+    const auto at_most = [&](std::int64_t a, std::int64_t b) {
+        return unsigned64 ? static_cast<std::uint64_t>(a) <= static_cast<std::uint64_t>(b) : a <= b;
+    };
     for (const ast::CaseBranch& branch_node : node.branches) {
         bodies.push_back(builder_.label());
         for (const ast::CaseLabel& label : branch_node.labels) {
-            const auto low_value = types_.fold_integer(*label.low);
-            const auto high_value = label.high ? types_.fold_integer(*label.high) : low_value;
+            const auto low_value = fold(*label.low);
+            const auto high_value = label.high ? fold(*label.high) : low_value;
             if (!low_value || !high_value) {
-                error(label.range, "a CASE label must be a constant");
+                const bool constant = types_.fold_unsigned(*label.low) &&
+                                      (!label.high || types_.fold_unsigned(*label.high));
+                error(label.range,
+                      constant ? fmt::format("a CASE label must be a value of {}", type.name)
+                               : "a CASE label must be a constant");
                 continue;
             }
             for (const CaseRange& seen : ranges) {
-                if (*low_value <= seen.high && seen.low <= *high_value) {
+                if (at_most(*low_value, seen.high) && at_most(seen.low, *high_value)) {
                     error(label.range, "this CASE label overlaps an earlier one");
                 }
             }
@@ -323,7 +340,11 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
     }
     std::vector<std::pair<std::int64_t, std::int64_t>> labels;
     for (const CaseRange& range : ranges) {
-        labels.emplace_back(range.low, range.high);
+        // A subrange's bounds are signed 64-bit: an unsigned label above them covers none of
+        // its values, a range reaching above them covers all up to its upper bound.
+        if (!unsigned64 || range.low >= 0) {
+            labels.emplace_back(range.low, unsigned64 && range.high < 0 ? INT64_MAX : range.high);
+        }
     }
     // Loading a subrange variable gives its base type; its labels are checked against its own.
     const sema::Type* subrange =

@@ -1,5 +1,6 @@
 // The standard functions of IEC 61131-3 ed. 3, 6.6.2.5 (tables 22-36) that are opcodes or
-// natives: type conversions, numeric, bit shift, selection, comparison and string functions.
+// natives: type conversions, numeric, bit shift, comparison and string functions (selection in
+// selection_functions.cpp).
 
 #include "eposp/compiler/sema/standard_library.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
@@ -369,118 +370,6 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
     }
     call_native(native, {false, S::Bool, parameters}, all);
     return result;
-}
-
-std::optional<Value> PouGenerator::selection(const std::string& name, const Arguments& arguments,
-                                             const sema::Type* hint, const Destination* dest,
-                                             const SourceRange& range) {
-    const std::size_t first = name == "SEL" || name == "MUX" ? 1 : 0;
-    const std::size_t minimum = name == "MOVE" ? 1 : name == "LIMIT" ? 3 : 2;
-    if (arguments.size() < minimum + first - (name == "SEL" || name == "MUX" ? 0 : 0) ||
-        (name == "MOVE" && arguments.size() != 1) || (name == "LIMIT" && arguments.size() != 3) ||
-        (name == "SEL" && arguments.size() != 3)) {
-        error(range, fmt::format("wrong number of arguments for {}", name));
-        return std::nullopt;
-    }
-    if (name == "MOVE") {
-        return eval(*arguments[0]->value, hint, dest);
-    }
-    std::optional<Value> selector;
-    if (name == "SEL") {
-        selector = value_as(*arguments[0]->value, types_.elementary(E::Bool));
-    } else if (name == "MUX") {
-        selector = as_dint(*arguments[0]->value);
-    }
-    if (first == 1 && !selector) {
-        return std::nullopt;
-    }
-    // The values, widened to their common type: non-literals first, so literals take it.
-    std::vector<std::optional<Value>> values(arguments.size());
-    const sema::Type* common = nullptr;
-    for (bool literals : {false, true}) {
-        for (std::size_t i = first; i < arguments.size(); ++i) {
-            if (is_untyped_literal(*arguments[i]->value) != literals) {
-                continue;
-            }
-            values[i] = eval(*arguments[i]->value, common != nullptr ? common : hint);
-            if (!values[i]) {
-                return std::nullopt;
-            }
-            if (common == nullptr || sema::converts_implicitly(*common, *values[i]->type)) {
-                common = values[i]->type;
-            } else if (!sema::converts_implicitly(*values[i]->type, *common)) {
-                error(arguments[i]->range,
-                      fmt::format("{} mixes {} and {}", name, common->name, values[i]->type->name));
-                return std::nullopt;
-            }
-        }
-    }
-    for (std::size_t i = first; i < arguments.size(); ++i) {
-        values[i] = convert(*values[i], *common, nullptr);
-    }
-    const sema::Type& type = *common;
-    if (name != "SEL" && name != "MUX" &&
-        (!sema::is_scalar(type) || type.kind == sema::TypeKind::Reference)) {
-        error(range, fmt::format("{} needs numbers, not {}", name, type.name));
-        return std::nullopt;
-    }
-    // The destination when no argument lives there (so none is overwritten before it is
-    // read), else a temporary of its own (an argument's may be shared with the value cache).
-    bool dest_free = dest != nullptr && dest->type == &type;
-    for (std::size_t i = first; dest_free && i < arguments.size(); ++i) {
-        dest_free = values[i]->operand.raw != dest->operand.raw;
-    }
-    const Operand result = dest_free ? dest->operand : temp(type);
-    const vm::Label done = builder_.label();
-    std::string_view suffix = type_suffix(sema::scalar_of(type));
-    if (suffix == "Bool") {
-        suffix = "U8";
-    }
-    if (name == "SEL") {
-        const vm::Label one = builder_.label();
-        builder_.jump(Opcode::Jt, one, selector->operand);
-        move(result, type, *values[1]);
-        builder_.jump(Opcode::Jmp, done);
-        bind(one);
-        move(result, type, *values[2]);
-    } else if (name == "MUX") {
-        // 6.6.2.5.9: K selects IN0..INn; out of range gives IN0 here.
-        move(result, type, *values[1]);
-        for (std::size_t i = 2; i < arguments.size(); ++i) {
-            const vm::Label next = builder_.label();
-            const std::int32_t k = static_cast<std::int32_t>(i - 1);
-            builder_.jump(Opcode::JNe32, next, selector->operand,
-                          program_.constant({static_cast<std::uint8_t>(k), 0, 0, 0}, 4));
-            move(result, type, *values[i]);
-            builder_.jump(Opcode::Jmp, done);
-            bind(next);
-        }
-    } else if (name == "LIMIT") {
-        const Value& low = *values[0];
-        const Value& in = *values[1];
-        const Value& high = *values[2];
-        const vm::Label above_low = builder_.label();
-        move(result, type, in);
-        builder_.jump(program_.opcodes().get("JLe", suffix), above_low, low.operand, result);
-        move(result, type, low);
-        builder_.jump(Opcode::Jmp, done);
-        bind(above_low);
-        builder_.jump(program_.opcodes().get("JLe", suffix), done, result, high.operand);
-        move(result, type, high);
-    } else {
-        move(result, type, *values[0]);
-        const bool maximum = name == "MAX";
-        for (std::size_t i = 1; i < arguments.size(); ++i) {
-            const vm::Label keep = builder_.label();
-            builder_.jump(program_.opcodes().get("JLe", suffix), keep,
-                          maximum ? values[i]->operand : result,
-                          maximum ? result : values[i]->operand);
-            move(result, type, *values[i]);
-            bind(keep);
-        }
-    }
-    bind(done);
-    return Value{result, &type};
 }
 
 std::optional<Value> PouGenerator::numeric_function(const std::string& name,

@@ -532,16 +532,25 @@ std::optional<std::int64_t> TypeTable::enumerator(const Symbol& value) {
 }
 
 std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expression) {
+    const auto bits = fold(expression, false);
+    return bits ? std::optional(static_cast<std::int64_t>(*bits)) : std::nullopt;
+}
+
+std::optional<std::uint64_t> TypeTable::fold_unsigned(const ast::Expression& expression) {
+    return fold(expression, true);
+}
+
+std::optional<std::uint64_t> TypeTable::fold(const ast::Expression& expression, bool unsigned64) {
     if (const Symbol* value = model_.enum_value(expression)) {
-        return enumerator(*value);
+        const auto number = enumerator(*value);
+        return number ? std::optional(static_cast<std::uint64_t>(*number)) : std::nullopt;
     }
     if (const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node)) {
         if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
-            if (integer->magnitude > static_cast<std::uint64_t>(INT64_MAX)) {
-                return integer->negative ? std::optional(INT64_MIN) : std::nullopt;
+            if (integer->magnitude > static_cast<std::uint64_t>(INT64_MAX) && !unsigned64) {
+                return integer->negative ? std::optional(std::uint64_t{1} << 63) : std::nullopt;
             }
-            const auto magnitude = static_cast<std::int64_t>(integer->magnitude);
-            return integer->negative ? -magnitude : magnitude;
+            return integer->negative ? 0ULL - integer->magnitude : integer->magnitude;
         }
         return std::nullopt;
     }
@@ -559,44 +568,52 @@ std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expre
             if (value == nullptr || !constants_folding_.insert(symbol->variable).second) {
                 return std::nullopt;
             }
-            const auto folded = fold_integer(**value);
+            const auto folded = fold(**value, unsigned64);
             constants_folding_.erase(symbol->variable);
             return folded;
         }
         return std::nullopt;
     }
     if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
-        const auto operand = fold_integer(*unary->operand);
+        const auto operand = fold(*unary->operand, unsigned64);
         if (!operand || unary->op == ast::UnaryOperator::Not) {
             return std::nullopt;
         }
-        return unary->op == ast::UnaryOperator::Negate
-                   ? static_cast<std::int64_t>(0ULL - static_cast<std::uint64_t>(*operand))
-                   : *operand;
+        return unary->op == ast::UnaryOperator::Negate ? 0ULL - *operand : *operand;
     }
     const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
     if (binary == nullptr) {
         return std::nullopt;
     }
-    const auto left = fold_integer(*binary->left);
-    const auto right = fold_integer(*binary->right);
+    const auto left = fold(*binary->left, unsigned64);
+    const auto right = fold(*binary->right, unsigned64);
     if (!left || !right) {
         return std::nullopt;
     }
-    const auto l = static_cast<std::uint64_t>(*left);
-    const auto r = static_cast<std::uint64_t>(*right);
+    const std::uint64_t l = *left;
+    const std::uint64_t r = *right;
+    const auto sl = static_cast<std::int64_t>(l);
+    const auto sr = static_cast<std::int64_t>(r);
     switch (binary->op) {
     case ast::BinaryOperator::Add:
-        return static_cast<std::int64_t>(l + r);
+        return l + r;
     case ast::BinaryOperator::Subtract:
-        return static_cast<std::int64_t>(l - r);
+        return l - r;
     case ast::BinaryOperator::Multiply:
-        return static_cast<std::int64_t>(l * r);
+        return l * r;
     case ast::BinaryOperator::Divide:
-        return *right == 0 || (*left == INT64_MIN && *right == -1) ? std::nullopt
-                                                                   : std::optional(*left / *right);
+        if (unsigned64) {
+            return r == 0 ? std::nullopt : std::optional(l / r);
+        }
+        return sr == 0 || (sl == INT64_MIN && sr == -1)
+                   ? std::nullopt
+                   : std::optional(static_cast<std::uint64_t>(sl / sr));
     case ast::BinaryOperator::Modulo:
-        return *right == 0 || *right == -1 ? std::nullopt : std::optional(*left % *right);
+        if (unsigned64) {
+            return r == 0 ? std::nullopt : std::optional(l % r);
+        }
+        return sr == 0 || sr == -1 ? std::nullopt
+                                   : std::optional(static_cast<std::uint64_t>(sl % sr));
     default:
         return std::nullopt;
     }

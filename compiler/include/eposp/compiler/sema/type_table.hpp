@@ -51,8 +51,13 @@ public:
     /// Folds a constant integer expression: literals, enumeration values, constants, + - * /
     /// MOD and parentheses (ed. 3, 6.4.2). Nothing when the expression is not constant.
     std::optional<std::int64_t> fold_integer(const ast::Expression& expression);
+    /// The same over the values of ULINT and LWORD (CASE labels of such a selector): literals
+    /// up to 2^64 - 1, arithmetic modulo 2^64, / and MOD unsigned.
+    std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression);
 
 private:
+    /// fold_integer and fold_unsigned: the result's 64 bits.
+    std::optional<std::uint64_t> fold(const ast::Expression& expression, bool unsigned64);
     Type& add(Type type);
     const Type* resolve_uncached(const ast::TypeSpec& spec);
     const Type* array(const ast::ArrayType& spec, const SourceRange& range);

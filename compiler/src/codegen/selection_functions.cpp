@@ -1,0 +1,154 @@
+// The selection functions of IEC 61131-3 ed. 3, 6.6.2.5.9 (table 32): MOVE, SEL, MAX, MIN,
+// LIMIT and MUX, on every elementary type; strings compare lexicographically (6.6.2.5.10).
+
+#include "pou_generator.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::codegen {
+
+using E = ast::ElementaryType;
+using vm::Opcode;
+using vm::Operand;
+
+namespace {
+
+/// The type two inputs of a selection share: the wider of the two (a string of the larger
+/// capacity, so that no input is cut short), or null when they do not mix.
+const sema::Type* common_type(const sema::Type* common, const sema::Type& next) {
+    if (common == nullptr) {
+        return &next;
+    }
+    if (common->kind == sema::TypeKind::String && next.kind == sema::TypeKind::String) {
+        return common->wide != next.wide          ? nullptr
+               : next.capacity > common->capacity ? &next
+                                                  : common;
+    }
+    if (sema::converts_implicitly(*common, next)) {
+        return &next;
+    }
+    return sema::converts_implicitly(next, *common) ? common : nullptr;
+}
+
+} // namespace
+
+void PouGenerator::jump_if_at_most(const Value& a, const Value& b, vm::Label target) {
+    if (a.type->kind == sema::TypeKind::String) {
+        const auto at_most = compare(ast::BinaryOperator::LessEqual, a, b, nullptr);
+        builder_.jump(Opcode::Jt, target, at_most->operand);
+        return;
+    }
+    std::string_view suffix = type_suffix(sema::scalar_of(*a.type));
+    if (suffix == "Bool") {
+        suffix = "U8";
+    }
+    builder_.jump(program_.opcodes().get("JLe", suffix), target, a.operand, b.operand);
+}
+
+std::optional<Value> PouGenerator::selection(const std::string& name, const Arguments& arguments,
+                                             const sema::Type* hint, const Destination* dest,
+                                             const SourceRange& range) {
+    const std::size_t first = name == "SEL" || name == "MUX" ? 1 : 0;
+    const std::size_t minimum = name == "MOVE" ? 1 : name == "LIMIT" ? 3 : 2;
+    if (arguments.size() < minimum + first || (name == "MOVE" && arguments.size() != 1) ||
+        (name == "LIMIT" && arguments.size() != 3) || (name == "SEL" && arguments.size() != 3)) {
+        error(range, fmt::format("wrong number of arguments for {}", name));
+        return std::nullopt;
+    }
+    if (name == "MOVE") {
+        return eval(*arguments[0]->value, hint, dest);
+    }
+    std::optional<Value> selector;
+    if (name == "SEL") {
+        selector = value_as(*arguments[0]->value, types_.elementary(E::Bool));
+    } else if (name == "MUX") {
+        selector = as_dint(*arguments[0]->value);
+    }
+    if (first == 1 && !selector) {
+        return std::nullopt;
+    }
+    // The values, widened to their common type: non-literals first, so literals take it.
+    std::vector<std::optional<Value>> values(arguments.size());
+    const sema::Type* common = nullptr;
+    for (bool literals : {false, true}) {
+        for (std::size_t i = first; i < arguments.size(); ++i) {
+            if (is_untyped_literal(*arguments[i]->value) != literals) {
+                continue;
+            }
+            values[i] = eval(*arguments[i]->value, common != nullptr ? common : hint);
+            if (!values[i]) {
+                return std::nullopt;
+            }
+            const sema::Type* both = common_type(common, *values[i]->type);
+            if (both == nullptr) {
+                error(arguments[i]->range,
+                      fmt::format("{} mixes {} and {}", name, common->name, values[i]->type->name));
+                return std::nullopt;
+            }
+            common = both;
+        }
+    }
+    for (std::size_t i = first; i < arguments.size(); ++i) {
+        values[i] = convert(*values[i], *common, nullptr);
+    }
+    const sema::Type& type = *common;
+    if (name != "SEL" && name != "MUX" &&
+        ((!sema::is_scalar(type) && type.kind != sema::TypeKind::String) ||
+         type.kind == sema::TypeKind::Reference)) {
+        error(range, fmt::format("{} needs values of an elementary type, not {}", name, type.name));
+        return std::nullopt;
+    }
+    // The destination when no argument lives there (so none is overwritten before it is
+    // read), else a temporary of its own (an argument's may be shared with the value cache).
+    bool dest_free = dest != nullptr && dest->type == &type;
+    for (std::size_t i = first; dest_free && i < arguments.size(); ++i) {
+        dest_free = values[i]->operand.raw != dest->operand.raw;
+    }
+    const Value result{dest_free ? dest->operand : temp(type), &type};
+    const vm::Label done = builder_.label();
+    if (name == "SEL") {
+        const vm::Label one = builder_.label();
+        builder_.jump(Opcode::Jt, one, selector->operand);
+        move(result.operand, type, *values[1]);
+        builder_.jump(Opcode::Jmp, done);
+        bind(one);
+        move(result.operand, type, *values[2]);
+    } else if (name == "MUX") {
+        // 6.6.2.5.9: K selects IN0..INn; out of range gives IN0 here.
+        move(result.operand, type, *values[1]);
+        for (std::size_t i = 2; i < arguments.size(); ++i) {
+            const vm::Label next = builder_.label();
+            const std::int32_t k = static_cast<std::int32_t>(i - 1);
+            builder_.jump(Opcode::JNe32, next, selector->operand,
+                          program_.constant({static_cast<std::uint8_t>(k), 0, 0, 0}, 4));
+            move(result.operand, type, *values[i]);
+            builder_.jump(Opcode::Jmp, done);
+            bind(next);
+        }
+    } else if (name == "LIMIT") {
+        const Value& low = *values[0];
+        const Value& in = *values[1];
+        const Value& high = *values[2];
+        const vm::Label above_low = builder_.label();
+        move(result.operand, type, in);
+        jump_if_at_most(low, result, above_low);
+        move(result.operand, type, low);
+        builder_.jump(Opcode::Jmp, done);
+        bind(above_low);
+        jump_if_at_most(result, high, done);
+        move(result.operand, type, high);
+    } else {
+        move(result.operand, type, *values[0]);
+        const bool maximum = name == "MAX";
+        for (std::size_t i = 1; i < arguments.size(); ++i) {
+            const vm::Label keep = builder_.label();
+            jump_if_at_most(maximum ? *values[i] : result, maximum ? result : *values[i], keep);
+            move(result.operand, type, *values[i]);
+            bind(keep);
+        }
+    }
+    bind(done);
+    return result;
+}
+
+} // namespace eposp::compiler::codegen
