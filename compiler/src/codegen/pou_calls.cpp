@@ -144,7 +144,6 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                    contains_call(*b.argument->value)) {
             const Operand slot = temp(*b.field->type);
             const Destination into{slot, b.field->type};
-            program_.warn_if_cut(*b.argument->value, *b.field->type);
             b.value = value_as(*b.argument->value, *b.field->type, &into);
             if (b.value) {
                 move(slot, *b.field->type, *b.value);
@@ -187,6 +186,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                 clear(slot, *field.type); // the header a string function writes through
             }
             const Destination into{slot, field.type};
+            program_.warn_if_cut(*it->argument->value, *field.type);
             const auto value = value_as(*it->argument->value, *field.type, &into);
             if (!value) {
                 ok = false;
