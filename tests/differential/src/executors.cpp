@@ -1,0 +1,14 @@
+#include "eposp/differential/executors.hpp"
+
+#include "eposp/differential/vm_executor.hpp"
+
+namespace eposp::differential {
+
+Executors all_executors() {
+    std::vector<std::unique_ptr<Executor>> executors;
+    executors.push_back(std::make_unique<VmExecutor>(vm::Engine::Interpreter));
+    executors.push_back(std::make_unique<VmExecutor>(vm::Engine::Compiled));
+    return Executors(std::move(executors));
+}
+
+} // namespace eposp::differential
