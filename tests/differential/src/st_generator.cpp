@@ -953,7 +953,7 @@ void Generator::struct_types(Block& program) {
             type.members.push_back(member);
         }
         program.push_back(statement("TYPE " + type.name + " : STRUCT$bEND_STRUCT; END_TYPE", {},
-                                    {std::move(members)}, false));
+                                    {std::move(members)}));
         structs_.push_back(std::move(type));
     }
 }
@@ -1128,7 +1128,7 @@ void Generator::main_program(Block& program) {
 GeneratedProgram Generator::run() {
     GeneratedProgram result;
     for (const auto& text : checksum_functions()) {
-        result.block.push_back(statement(text, {}, {}, false));
+        result.block.push_back(statement(text));
     }
     struct_types(result.block);
     for (int f = 0; f < options_.functions; ++f) {
