@@ -1,7 +1,7 @@
 #include "eposp/compiler/compiler.hpp"
 
 #include "codegen/program_generator.hpp"
-#include "codegen/standard_library_source.hpp"
+#include "stdlib/standard_library_source.hpp"
 #include "eposp/compiler/parser.hpp"
 #include "eposp/compiler/sema/resolver.hpp"
 
@@ -25,7 +25,7 @@ std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId>
 
     // The built-in library is parsed like a user file, so its errors would point into it.
     const FileId library_file =
-        sources.add("<standard library>", std::string(codegen::standard_library_source()));
+        sources.add("<standard library>", std::string(stdlib::standard_library_source()));
     std::vector<ast::CompilationUnit> library_units;
     library_units.push_back(parse(sources, library_file, diagnostics));
     const sema::SemanticModel library_model = sema::resolve_library(library_units, diagnostics);

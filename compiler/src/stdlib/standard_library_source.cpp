@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::stdlib {
 
 namespace {
 
@@ -188,4 +188,4 @@ std::string_view standard_library_source() {
     return source;
 }
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::stdlib

@@ -1,0 +1,33 @@
+#pragma once
+
+// The front end of a compilation without code generation: parse, resolve names, type. Test
+// oracles (the reference evaluator) start from here.
+
+#include "eposp/compiler/ast/compilation_unit.hpp"
+#include "eposp/compiler/diagnostics.hpp"
+#include "eposp/compiler/sema/semantic_model.hpp"
+#include "eposp/compiler/source_manager.hpp"
+#include "eposp/compiler/types/typed_program.hpp"
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace eposp::compiler::types {
+
+/// A program after the front end: its files' trees, the names, the built-in library of
+/// standard FBs (stdlib/standard_library_source.cpp) and the types.
+struct FrontEnd {
+    std::vector<ast::CompilationUnit> units;
+    std::optional<sema::SemanticModel> model;
+    std::vector<ast::CompilationUnit> library_units;
+    std::optional<sema::SemanticModel> library_model;
+    std::unique_ptr<TypedProgram> program;
+};
+
+/// Parses, resolves and types `files`; null `program` when an error was reported.
+std::unique_ptr<FrontEnd> analyse(SourceManager& sources, std::span<const FileId> files,
+                                  Diagnostics& diagnostics);
+
+} // namespace eposp::compiler::types

@@ -1,0 +1,98 @@
+#pragma once
+
+// The typing stage (issue 16): every expression of a parsed, name-resolved program with its IEC
+// type, its value when constant, and for every call what it calls. It owns the type rules of
+// IEC 61131-3 ed. 3 (implicit widening of figure 11, ANY_* generic functions and operators,
+// untyped literals taking the type their context needs, conversions, calls) and the choices
+// docs/st-language.md documents where the standard leaves them open.
+
+#include "eposp/compiler/ast/compilation_unit.hpp"
+#include "eposp/compiler/diagnostics.hpp"
+#include "eposp/compiler/sema/semantic_model.hpp"
+#include "eposp/compiler/sema/type_table.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <variant>
+
+namespace eposp::compiler::types {
+
+/// A folded constant: BOOL, a signed or unsigned integer (also bit strings, TIME and dates in
+/// ns, enumeration values), a real number, or a string's characters.
+using Constant = std::variant<bool, std::int64_t, std::uint64_t, double, std::string>;
+
+enum class CallKind {
+    Function,              ///< a user FUNCTION
+    FunctionBlock,         ///< an instance of a user FUNCTION_BLOCK
+    StandardFunction,      ///< ed. 3, 6.6.2.5: ABS, SEL, CONCAT, ...
+    Conversion,            ///< `<T>_TO_<U>`, `TO_<U>`, TRUNC (6.6.2.5.3)
+    StandardFunctionBlock, ///< an instance of SR, TON, CTU, ... (6.6.3.5)
+};
+
+/// What a call expression calls.
+struct CallTarget {
+    CallKind kind = CallKind::Function;
+    /// The user FUNCTION or FB, or the library POU of a standard FB; null for functions.
+    const ast::Pou* pou = nullptr;
+    /// The standard function or FB, upper case (`LIMIT`, `DINT_TO_UDINT`, `TON`).
+    std::string name{};
+    /// The overload chosen: the type of a generic function's ANY_* inputs (`MAX` on INT), the
+    /// source of a conversion; null where the function has none.
+    const sema::Type* operand = nullptr;
+    /// The result's type (null for an FB call used as a statement).
+    const sema::Type* result = nullptr;
+};
+
+class TypedProgram {
+public:
+    TypedProgram(const sema::SemanticModel& model,
+                 std::function<const ast::Pou*(std::string_view)> library,
+                 std::function<bool(const ast::VariableDeclaration&)> is_constant,
+                 Diagnostics& diagnostics);
+    TypedProgram(const TypedProgram&) = delete;
+    TypedProgram& operator=(const TypedProgram&) = delete;
+
+    /// The IEC type of an expression of the program; null when it was not typed (an error
+    /// was reported, or the expression names a type or POU rather than a value).
+    const sema::Type* type_of(const ast::Expression& expression) const;
+    /// Its value when it is constant (a literal, a CONSTANT, an enumeration value, an
+    /// operation on constants).
+    const Constant* constant_of(const ast::Expression& expression) const;
+    /// What a CallExpression calls; null for any other expression.
+    const CallTarget* call_target(const ast::Expression& expression) const;
+
+    /// Whether a declaration is in a CONSTANT section.
+    bool is_constant(const ast::VariableDeclaration& declaration) const {
+        return is_constant_(declaration);
+    }
+    const sema::SemanticModel& model() const { return model_; }
+    sema::TypeTable& types() { return types_; }
+    const sema::TypeTable& types() const { return types_; }
+
+    // Construction, used by the typing pass.
+    void set_type(const ast::Expression& expression, const sema::Type& type);
+    void set_constant(const ast::Expression& expression, Constant value);
+    void set_call(const ast::Expression& expression, CallTarget target);
+
+private:
+    const sema::SemanticModel& model_;
+    std::function<bool(const ast::VariableDeclaration&)> is_constant_;
+    sema::TypeTable types_;
+    std::unordered_map<const ast::Expression*, const sema::Type*> types_of_;
+    std::unordered_map<const ast::Expression*, Constant> constants_;
+    std::unordered_map<const ast::Expression*, CallTarget> calls_;
+};
+
+/// Types every expression of `units` (POU bodies, initial values, CASE labels, FOR bounds,
+/// program connections) against `model`; type errors go to `diagnostics`. `library` finds the
+/// POU implementing a standard FB (for its instance layout).
+std::unique_ptr<TypedProgram> type_program(std::span<const ast::CompilationUnit> units,
+                                           const sema::SemanticModel& model,
+                                           std::function<const ast::Pou*(std::string_view)> library,
+                                           Diagnostics& diagnostics);
+
+} // namespace eposp::compiler::types

@@ -1,0 +1,667 @@
+#include "expression_typer.hpp"
+
+#include "eposp/compiler/sema/standard_library.hpp"
+#include "eposp/compiler/sema/symbol.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::types {
+
+namespace {
+
+bool fits(const ast::IntegerLiteral& literal, ast::ElementaryType type) {
+    const auto range = ast::integer_range(type);
+    if (!range) {
+        return ast::is_real(type);
+    }
+    if (literal.negative) {
+        return literal.magnitude == 0 ||
+               (range->min < 0 &&
+                literal.magnitude - 1 <= static_cast<std::uint64_t>(-(range->min + 1)));
+    }
+    return literal.magnitude <= range->max;
+}
+
+bool numeric_context(const sema::Type* type) {
+    return type != nullptr && type->kind == sema::TypeKind::Elementary &&
+           (sema::is_numeric(*type) || sema::is_bit_string(*type));
+}
+
+} // namespace
+
+bool is_untyped_literal(const ast::Expression& expression) {
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        return unary->op != ast::UnaryOperator::Not && is_untyped_literal(*unary->operand);
+    }
+    const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
+    if (literal == nullptr) {
+        return false;
+    }
+    if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
+        return !integer->type;
+    }
+    const auto* real = std::get_if<ast::RealLiteral>(&literal->value);
+    return real != nullptr && !real->type;
+}
+
+ExpressionTyper::ExpressionTyper(TypedProgram& program, Diagnostics& diagnostics)
+    : program_(program), diagnostics_(diagnostics) {}
+
+const sema::Type* ExpressionTyper::fail(const SourceRange& range, std::string message) {
+    diagnostics_.error(range, std::move(message));
+    return nullptr;
+}
+
+void ExpressionTyper::pou(const ast::Pou& pou) {
+    current_ = &pou;
+    sections(pou.sections);
+    statements(pou.body);
+    current_ = nullptr;
+}
+
+void ExpressionTyper::sections(const std::vector<ast::DeclarationSection>& sections) {
+    for (const ast::DeclarationSection& section : sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables == nullptr) {
+            continue;
+        }
+        for (const ast::VariableDeclaration& declaration : variables->variables) {
+            if (declaration.initial_value) {
+                initializer(*declaration.initial_value, program_.types().resolve(declaration.type));
+            }
+        }
+    }
+}
+
+void ExpressionTyper::configuration(const ast::Configuration& configuration) {
+    sections(configuration.sections);
+    for (const ast::Resource& resource : configuration.resources) {
+        sections(resource.sections);
+    }
+}
+
+void ExpressionTyper::initializer(const ast::Initializer& initializer, const sema::Type* target) {
+    if (target == nullptr) {
+        return;
+    }
+    if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer.value)) {
+        expect(**expression, *target, "an initial value");
+    } else if (const auto* elements =
+                   std::get_if<std::vector<ast::ArrayInitElement>>(&initializer.value)) {
+        for (const ast::ArrayInitElement& element : *elements) {
+            if (element.repeat_count) {
+                type(*element.repeat_count, &elementary(E::Dint));
+            }
+            if (element.value) {
+                this->initializer(*element.value, target->kind == sema::TypeKind::Array
+                                                      ? target->element
+                                                      : nullptr);
+            }
+        }
+    } else {
+        for (const ast::StructInitElement& element :
+             std::get<std::vector<ast::StructInitElement>>(initializer.value)) {
+            const sema::Field* field = target->field(element.member.name);
+            if (element.value) {
+                this->initializer(*element.value, field != nullptr ? field->type : nullptr);
+            }
+        }
+    }
+}
+
+void ExpressionTyper::statements(const ast::StatementList& list) {
+    for (const ast::Statement& statement : list) {
+        this->statement(statement);
+    }
+}
+
+void ExpressionTyper::condition(const ast::Expression& expression) {
+    expect(expression, elementary(E::Bool), "a condition");
+}
+
+void ExpressionTyper::expect(const ast::Expression& expression, const sema::Type& target,
+                             const char* what) {
+    const sema::Type* actual = type(expression, &target);
+    if (actual == nullptr) {
+        return;
+    }
+    const sema::Type& to = program_.types().unranged(target);
+    if (!sema::converts_implicitly(program_.types().unranged(*actual), to) &&
+        !sema::conforms(*actual, target)) {
+        diagnostics_.error(expression.range, fmt::format("{} of type {} is expected, not {}", what,
+                                                         target.name, actual->name));
+    }
+}
+
+void ExpressionTyper::statement(const ast::Statement& statement) {
+    std::visit(
+        [&](const auto& node) {
+            using T = std::decay_t<decltype(node)>;
+            if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
+                if (const sema::Type* target = type(*node.target, nullptr)) {
+                    expect(*node.value, *target, "a value");
+                }
+            } else if constexpr (std::is_same_v<T, ast::CallStatement>) {
+                type(*node.call, nullptr);
+            } else if constexpr (std::is_same_v<T, ast::IfStatement>) {
+                for (const ast::ConditionalBlock& branch : node.branches) {
+                    condition(*branch.condition);
+                    statements(branch.body);
+                }
+                statements(node.else_body);
+            } else if constexpr (std::is_same_v<T, ast::CaseStatement>) {
+                const sema::Type* selector = type(*node.selector, nullptr);
+                for (const ast::CaseBranch& branch : node.branches) {
+                    for (const ast::CaseLabel& label : branch.labels) {
+                        for (const ast::ExpressionPtr* bound : {&label.low, &label.high}) {
+                            if (*bound && selector != nullptr) {
+                                expect(**bound, *selector, "a CASE label");
+                            }
+                        }
+                    }
+                    statements(branch.body);
+                }
+                statements(node.else_body);
+            } else if constexpr (std::is_same_v<T, ast::ForStatement>) {
+                const sema::Symbol* symbol = program_.model().resolved(node.control_variable);
+                const sema::Type* control = symbol != nullptr ? variable_type(*symbol) : nullptr;
+                if (control != nullptr) {
+                    expect(*node.from, *control, "a FOR bound");
+                    expect(*node.to, *control, "a FOR bound");
+                    if (node.by) {
+                        expect(*node.by, *control, "a FOR step");
+                    }
+                }
+                statements(node.body);
+            } else if constexpr (std::is_same_v<T, ast::WhileStatement>) {
+                condition(*node.condition);
+                statements(node.body);
+            } else if constexpr (std::is_same_v<T, ast::RepeatStatement>) {
+                statements(node.body);
+                condition(*node.until);
+            }
+        },
+        statement.node);
+}
+
+const sema::Type* ExpressionTyper::variable_type(const sema::Symbol& symbol) {
+    if (symbol.variable != nullptr) {
+        return program_.types().resolve(symbol.variable->type);
+    }
+    if (!symbol.standard_type.empty()) {
+        if (const auto e = ast::elementary_type_from_name(symbol.standard_type)) {
+            return &elementary(*e);
+        }
+    }
+    return nullptr;
+}
+
+const sema::Type* ExpressionTyper::type(const ast::Expression& expression,
+                                        const sema::Type* expected) {
+    const sema::Type* result = std::visit(
+        [&](const auto& node) -> const sema::Type* {
+            using T = std::decay_t<decltype(node)>;
+            if constexpr (std::is_same_v<T, ast::LiteralExpression>) {
+                return literal(expression, node.value, expected);
+            } else if constexpr (std::is_same_v<T, ast::NameExpression>) {
+                return name(expression, node);
+            } else if constexpr (std::is_same_v<T, ast::MemberExpression>) {
+                return member(expression, node);
+            } else if constexpr (std::is_same_v<T, ast::BitAccessExpression>) {
+                type(*node.object, nullptr);
+                return &elementary(E::Bool);
+            } else if constexpr (std::is_same_v<T, ast::IndexExpression>) {
+                return index(node);
+            } else if constexpr (std::is_same_v<T, ast::DereferenceExpression>) {
+                const sema::Type* reference = type(*node.reference, nullptr);
+                return reference != nullptr && reference->kind == sema::TypeKind::Reference
+                           ? reference->element
+                           : nullptr;
+            } else if constexpr (std::is_same_v<T, ast::ReferenceExpression>) {
+                const sema::Type* target = type(*node.target, nullptr);
+                return target != nullptr ? &program_.types().reference(target) : nullptr;
+            } else if constexpr (std::is_same_v<T, ast::CallExpression>) {
+                return call(expression, node, expected);
+            } else if constexpr (std::is_same_v<T, ast::UnaryExpression>) {
+                return unary(expression, node, expected);
+            } else if constexpr (std::is_same_v<T, ast::BinaryExpression>) {
+                return binary(expression, node, expected);
+            } else {
+                return fail(expression.range, "a direct address has no type in the typing stage");
+            }
+        },
+        expression.node);
+    if (result != nullptr) {
+        program_.set_type(expression, *result);
+        fold(expression, *result);
+    }
+    return result;
+}
+
+const sema::Type* ExpressionTyper::literal(const ast::Expression& expression,
+                                           const ast::Literal& literal,
+                                           const sema::Type* expected) {
+    if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal)) {
+        if (integer->type) {
+            if (!fits(*integer, *integer->type)) {
+                return fail(expression.range, fmt::format("the literal does not fit {}",
+                                                          ast::name_of(*integer->type)));
+            }
+            return &elementary(*integer->type);
+        }
+        if (numeric_context(expected) && fits(*integer, expected->elementary)) {
+            return &program_.types().unranged(*expected);
+        }
+        for (const E e : {E::Dint, E::Lint, E::Ulint}) {
+            if (fits(*integer, e)) {
+                return &elementary(e);
+            }
+        }
+        return fail(expression.range, "the literal fits no integer type");
+    }
+    if (const auto* real = std::get_if<ast::RealLiteral>(&literal)) {
+        if (real->type) {
+            return &elementary(*real->type);
+        }
+        return expected != nullptr && sema::is_real(*expected) ? expected : &elementary(E::Lreal);
+    }
+    if (std::holds_alternative<ast::BoolLiteral>(literal)) {
+        return &elementary(E::Bool);
+    }
+    if (const auto* duration = std::get_if<ast::DurationLiteral>(&literal)) {
+        return &elementary(duration->type);
+    }
+    if (const auto* date = std::get_if<ast::DateTimeLiteral>(&literal)) {
+        return &elementary(date->type);
+    }
+    if (const auto* text = std::get_if<ast::StringLiteral>(&literal)) {
+        if (text->type == E::Char || text->type == E::Wchar) {
+            return &elementary(text->type);
+        }
+        const std::size_t length =
+            std::visit([](const auto& value) { return value.size(); }, text->value);
+        return &program_.types().string(static_cast<std::uint32_t>(length),
+                                        text->type == E::Wstring);
+    }
+    if (std::holds_alternative<ast::EnumValueLiteral>(literal)) {
+        const sema::Symbol* value = program_.model().enum_value(expression);
+        return value != nullptr ? program_.types().enumeration_of(*value) : nullptr;
+    }
+    return &program_.types().null();
+}
+
+const sema::Type* ExpressionTyper::name(const ast::Expression& expression,
+                                        const ast::NameExpression& node) {
+    if (const sema::Symbol* value = program_.model().enum_value(expression)) {
+        return program_.types().enumeration_of(*value);
+    }
+    const sema::Symbol* symbol = program_.model().resolved(node.name);
+    if (symbol == nullptr) {
+        return nullptr; // reported by name resolution
+    }
+    switch (symbol->kind) {
+    case sema::SymbolKind::Variable:
+        return variable_type(*symbol);
+    case sema::SymbolKind::Pou:
+        // Inside a FUNCTION its name is its result variable (6.6.2.2).
+        if (symbol->pou == current_ && symbol->pou->kind == ast::PouKind::Function &&
+            symbol->pou->return_type) {
+            return program_.types().resolve(*symbol->pou->return_type);
+        }
+        return nullptr;
+    case sema::SymbolKind::ProgramInstance:
+        return nullptr;
+    default:
+        return nullptr;
+    }
+}
+
+const sema::Type* ExpressionTyper::member(const ast::Expression& expression,
+                                          const ast::MemberExpression& node) {
+    if (const sema::Symbol* value = program_.model().enum_value(expression)) {
+        return program_.types().enumeration_of(*value);
+    }
+    const sema::Type* object = type(*node.object, nullptr);
+    if (object == nullptr) {
+        return nullptr;
+    }
+    if (const sema::Field* field = object->field(node.member.name)) {
+        return field->type;
+    }
+    return fail(node.member.range,
+                fmt::format("{} has no member '{}'", object->name, node.member.name));
+}
+
+const sema::Type* ExpressionTyper::index(const ast::IndexExpression& node) {
+    const sema::Type* array = type(*node.array, nullptr);
+    for (const ast::ExpressionPtr& index : node.indices) {
+        const sema::Type* type = this->type(*index, nullptr);
+        if (type != nullptr && !sema::is_integer(program_.types().unranged(*type)) &&
+            type->kind != sema::TypeKind::Enum) {
+            diagnostics_.error(index->range,
+                               fmt::format("an array index is an integer, not {}", type->name));
+        }
+    }
+    if (array == nullptr) {
+        return nullptr;
+    }
+    if (array->kind != sema::TypeKind::Array) {
+        return fail(node.array->range, fmt::format("{} is not an array", array->name));
+    }
+    return array->element;
+}
+
+const sema::Type* ExpressionTyper::unary(const ast::Expression& expression,
+                                         const ast::UnaryExpression& node,
+                                         const sema::Type* expected) {
+    const sema::Type* operand = type(*node.operand, expected);
+    if (operand == nullptr) {
+        return nullptr;
+    }
+    const sema::Type& plain = program_.types().unranged(*operand);
+    if (node.op == ast::UnaryOperator::Not) {
+        if (!sema::is_bool(plain) && !sema::is_bit_string(plain) && !sema::is_integer(plain)) {
+            return fail(expression.range,
+                        fmt::format("NOT needs BOOL or bits, not {}", plain.name));
+        }
+        return &plain;
+    }
+    if (!sema::is_numeric(plain) && plain.elementary != E::Time && plain.elementary != E::Ltime) {
+        return fail(expression.range, fmt::format("a sign needs a number, not {}", plain.name));
+    }
+    return &plain;
+}
+
+const sema::Type* ExpressionTyper::common(const sema::Type& a, const sema::Type& b) {
+    const sema::Type& x = program_.types().unranged(a);
+    const sema::Type& y = program_.types().unranged(b);
+    if (sema::converts_implicitly(x, y)) {
+        return &y;
+    }
+    if (sema::converts_implicitly(y, x)) {
+        return &x;
+    }
+    for (const E e : {E::Int, E::Dint, E::Lint, E::Lreal, E::Word, E::Dword, E::Lword}) {
+        const sema::Type& candidate = elementary(e);
+        if (sema::converts_implicitly(x, candidate) && sema::converts_implicitly(y, candidate)) {
+            return &candidate;
+        }
+    }
+    return nullptr;
+}
+
+const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression*>& operands,
+                                         const sema::Type* expected, const SourceRange& range) {
+    // Typed operands first; the untyped literals then take their common type.
+    const sema::Type* result = nullptr;
+    bool failed = false;
+    for (const bool literals : {false, true}) {
+        for (const ast::Expression* operand : operands) {
+            if (is_untyped_literal(*operand) != literals) {
+                continue;
+            }
+            const sema::Type* context = result != nullptr ? result : expected;
+            if (literals && result != nullptr && !numeric_context(result)) {
+                context = nullptr;
+            }
+            const sema::Type* type = this->type(*operand, context);
+            if (type == nullptr) {
+                failed = true;
+                continue;
+            }
+            if (result == nullptr) {
+                result = &program_.types().unranged(*type);
+            } else if (const sema::Type* both = common(*result, *type)) {
+                result = both;
+            } else if (result->kind == sema::TypeKind::String && type->kind == result->kind &&
+                       type->wide == result->wide) {
+                result = type->capacity > result->capacity ? type : result;
+            } else {
+                diagnostics_.error(
+                    range, fmt::format("{} and {} have no common type", result->name, type->name));
+                failed = true;
+            }
+        }
+    }
+    return failed ? nullptr : result;
+}
+
+const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
+                                          const ast::BinaryExpression& node,
+                                          const sema::Type* expected) {
+    using Op = ast::BinaryOperator;
+    const SourceRange& range = expression.range;
+    switch (node.op) {
+    case Op::Power: {
+        // EXPT (table 24): IN1 ANY_REAL, IN2 ANY_NUM; the result has IN1's type.
+        const sema::Type* base =
+            type(*node.left, expected != nullptr && sema::is_real(*expected) ? expected : nullptr);
+        type(*node.right, nullptr);
+        if (base == nullptr) {
+            return nullptr;
+        }
+        return sema::is_real(*base) ? base : &elementary(E::Lreal);
+    }
+    case Op::Less:
+    case Op::Greater:
+    case Op::LessEqual:
+    case Op::GreaterEqual:
+    case Op::Equal:
+    case Op::NotEqual: {
+        const sema::Type* operands = unify({node.left.get(), node.right.get()}, nullptr, range);
+        return operands != nullptr ? &elementary(E::Bool) : nullptr;
+    }
+    case Op::And:
+    case Op::Or:
+    case Op::Xor: {
+        const sema::Type* operands = unify({node.left.get(), node.right.get()}, expected, range);
+        if (operands != nullptr && !sema::is_bool(*operands) && !sema::is_bit_string(*operands) &&
+            !sema::is_integer(*operands)) {
+            return fail(range,
+                        fmt::format("AND, OR and XOR need BOOL or bits, not {}", operands->name));
+        }
+        return operands;
+    }
+    default:
+        break;
+    }
+    // TIME * ANY_NUM and TIME / ANY_NUM (table 30).
+    if (node.op == Op::Multiply || node.op == Op::Divide) {
+        const sema::Type* left =
+            is_untyped_literal(*node.left) ? nullptr : type(*node.left, nullptr);
+        if (left != nullptr && sema::is_time_like(*left)) {
+            const sema::Type* factor = type(*node.right, &elementary(E::Lint));
+            if (factor != nullptr && !sema::is_numeric(*factor)) {
+                return fail(range,
+                            fmt::format("a TIME is scaled by a number, not {}", factor->name));
+            }
+            return left;
+        }
+    }
+    const sema::Type* operands = unify({node.left.get(), node.right.get()}, expected, range);
+    if (operands == nullptr) {
+        return nullptr;
+    }
+    if (sema::is_numeric(*operands) || sema::is_bit_string(*operands)) {
+        return operands;
+    }
+    if (sema::is_time_like(*operands) && (node.op == Op::Add || node.op == Op::Subtract)) {
+        return operands;
+    }
+    return fail(range, fmt::format("arithmetic needs numbers, not {}", operands->name));
+}
+
+std::vector<const ast::Argument*> ExpressionTyper::inputs(const ast::CallExpression& node) {
+    std::vector<const ast::Argument*> result;
+    for (const ast::Argument& argument : node.arguments) {
+        if (argument.name && (sema::fold_case(argument.name->name) == "EN" ||
+                              sema::fold_case(argument.name->name) == "ENO")) {
+            if (argument.kind == ast::Argument::Kind::Input) {
+                condition(*argument.value);
+            } else {
+                type(*argument.value, nullptr);
+            }
+            continue;
+        }
+        result.push_back(&argument);
+    }
+    return result;
+}
+
+const sema::Type* ExpressionTyper::call(const ast::Expression& expression,
+                                        const ast::CallExpression& node,
+                                        const sema::Type* expected) {
+    if (const auto* callee = std::get_if<ast::NameExpression>(&node.callee->node)) {
+        const sema::Symbol* symbol = program_.model().resolved(callee->name);
+        if (symbol != nullptr && symbol->kind == sema::SymbolKind::Pou &&
+            symbol->pou->kind == ast::PouKind::Function) {
+            return pou_call(expression, node, *symbol->pou, nullptr);
+        }
+        const std::string upper = sema::fold_case(callee->name.name);
+        if ((symbol == nullptr || symbol->kind == sema::SymbolKind::StandardFunction) &&
+            (sema::is_conversion_function(upper) || upper == "TRUNC")) {
+            return conversion(expression, node, upper);
+        }
+        if (symbol != nullptr && symbol->kind == sema::SymbolKind::StandardFunction) {
+            return standard_call(expression, node, upper, expected);
+        }
+    }
+    const sema::Type* instance = type(*node.callee, nullptr);
+    if (instance == nullptr || instance->kind != sema::TypeKind::Instance ||
+        instance->pou == nullptr) {
+        return fail(node.callee->range, "only functions and FB instances can be called");
+    }
+    return pou_call(expression, node, *instance->pou, instance);
+}
+
+const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
+                                            const ast::CallExpression& node, const ast::Pou& pou,
+                                            const sema::Type* instance) {
+    // Formal parameters in declaration order; positional arguments take the inputs and
+    // in-outs in that order (6.6.1.4.2).
+    std::vector<std::pair<const ast::VariableDeclaration*, ast::VarSectionKind>> formals;
+    const sema::Type* frame = instance != nullptr ? instance : program_.types().frame(pou);
+    for (const ast::DeclarationSection& section : pou.sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables == nullptr || (variables->kind != ast::VarSectionKind::Input &&
+                                     variables->kind != ast::VarSectionKind::InOut &&
+                                     variables->kind != ast::VarSectionKind::Output)) {
+            continue;
+        }
+        for (const ast::VariableDeclaration& declaration : variables->variables) {
+            for (std::size_t i = 0; i < declaration.names.size(); ++i) {
+                formals.emplace_back(&declaration, variables->kind);
+            }
+        }
+    }
+    std::vector<const sema::Field*> positional;
+    if (frame != nullptr) {
+        for (const sema::Field& field : frame->fields) {
+            if (field.section == ast::VarSectionKind::Input ||
+                field.section == ast::VarSectionKind::InOut) {
+                positional.push_back(&field);
+            }
+        }
+    }
+    std::size_t next = 0;
+    for (const ast::Argument* argument : inputs(node)) {
+        const sema::Field* field = nullptr;
+        if (argument->name) {
+            field = frame != nullptr ? frame->field(argument->name->name) : nullptr;
+        } else if (next < positional.size()) {
+            field = positional[next++];
+        }
+        if (field == nullptr) {
+            type(*argument->value, nullptr);
+            diagnostics_.error(argument->range,
+                               fmt::format("{} has no such parameter", pou.name.name));
+            continue;
+        }
+        if (argument->kind == ast::Argument::Kind::Output) {
+            const sema::Type* target = type(*argument->value, nullptr);
+            if (target != nullptr && !sema::converts_implicitly(*field->type, *target)) {
+                diagnostics_.error(argument->range,
+                                   fmt::format("output {} of type {} goes into {}", field->name,
+                                               field->type->name, target->name));
+            }
+        } else if (field->section == ast::VarSectionKind::InOut) {
+            const sema::Type* actual = type(*argument->value, field->type);
+            if (actual != nullptr && !sema::same_type(*actual, *field->type) &&
+                !sema::conforms(*actual, *field->type) &&
+                !(actual->kind == sema::TypeKind::String && field->type->kind == actual->kind)) {
+                diagnostics_.error(argument->range,
+                                   fmt::format("VAR_IN_OUT {} takes a {}, not a {}", field->name,
+                                               field->type->name, actual->name));
+            }
+        } else {
+            expect(*argument->value, *field->type, "an input");
+        }
+    }
+    CallTarget target;
+    target.pou = &pou;
+    if (instance != nullptr) {
+        const ast::Pou* library = nullptr;
+        target.kind = CallKind::FunctionBlock;
+        if (const sema::Symbol* symbol = program_.model().global().find(pou.name.name);
+            symbol != nullptr && symbol->kind == sema::SymbolKind::StandardFunctionBlock) {
+            library = &pou;
+        }
+        if (library != nullptr) {
+            target.kind = CallKind::StandardFunctionBlock;
+            target.name = sema::fold_case(pou.name.name);
+        }
+        program_.set_call(expression, target);
+        return nullptr;
+    }
+    target.kind = CallKind::Function;
+    target.result = pou.return_type ? program_.types().resolve(*pou.return_type) : nullptr;
+    program_.set_call(expression, target);
+    return target.result;
+}
+
+const sema::Type* ExpressionTyper::conversion(const ast::Expression& expression,
+                                              const ast::CallExpression& node,
+                                              const std::string& name) {
+    const auto arguments = inputs(node);
+    if (arguments.size() != 1) {
+        return fail(expression.range, fmt::format("{} takes one input", name));
+    }
+    CallTarget target{.kind = CallKind::Conversion, .name = name};
+    const sema::Type* source = nullptr;
+    const sema::Type* result = nullptr;
+    if (name == "TRUNC") {
+        // Table 22: TRUNC of an ANY_REAL; the project truncates to DINT.
+        source = type(*arguments[0]->value, nullptr);
+        if (source != nullptr && !sema::is_real(*source)) {
+            return fail(expression.range, fmt::format("TRUNC needs a REAL, not {}", source->name));
+        }
+        result = &elementary(E::Dint);
+    } else {
+        const auto separator = name.find("_TO_");
+        const std::string to =
+            name.starts_with("TO_") ? name.substr(3) : name.substr(separator + 4);
+        const auto to_type = ast::elementary_type_from_name(to);
+        result = *to_type == E::String || *to_type == E::Wstring
+                     ? &program_.types().string(80, *to_type == E::Wstring)
+                     : &elementary(*to_type);
+        if (name.starts_with("TO_")) {
+            source = type(*arguments[0]->value, nullptr);
+        } else {
+            const auto from = *ast::elementary_type_from_name(name.substr(0, separator));
+            const sema::Type& from_type = from == E::String || from == E::Wstring
+                                              ? program_.types().string(80, from == E::Wstring)
+                                              : elementary(from);
+            expect(*arguments[0]->value, from_type, "a conversion's input");
+            source = &from_type;
+        }
+    }
+    if (source == nullptr) {
+        return nullptr;
+    }
+    target.operand = &program_.types().unranged(*source);
+    target.result = result;
+    program_.set_call(expression, target);
+    return result;
+}
+
+} // namespace eposp::compiler::types

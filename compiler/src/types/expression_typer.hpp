@@ -1,0 +1,76 @@
+#pragma once
+
+// The typing pass over one program: walks every POU body and initial value, giving each
+// expression its type from the bottom up, with the type its context expects passed down so
+// that an untyped literal takes it (IEC 61131-3 ed. 3, 6.3.3).
+
+#include "eposp/compiler/types/typed_program.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace eposp::compiler::types {
+
+class ExpressionTyper {
+public:
+    ExpressionTyper(TypedProgram& program, Diagnostics& diagnostics);
+
+    void pou(const ast::Pou& pou);
+    void sections(const std::vector<ast::DeclarationSection>& sections);
+    void configuration(const ast::Configuration& configuration);
+
+private:
+    using E = ast::ElementaryType;
+
+    void statements(const ast::StatementList& list);
+    void statement(const ast::Statement& statement);
+    void initializer(const ast::Initializer& initializer, const sema::Type* target);
+    void condition(const ast::Expression& expression);
+    /// Types `expression` where a value of `target` is expected, and checks that it converts.
+    void expect(const ast::Expression& expression, const sema::Type& target, const char* what);
+
+    /// The type of `expression`; `expected` is what its context needs (null: nothing).
+    const sema::Type* type(const ast::Expression& expression, const sema::Type* expected);
+    const sema::Type* literal(const ast::Expression& expression, const ast::Literal& literal,
+                              const sema::Type* expected);
+    const sema::Type* name(const ast::Expression& expression, const ast::NameExpression& node);
+    const sema::Type* member(const ast::Expression& expression, const ast::MemberExpression& node);
+    const sema::Type* index(const ast::IndexExpression& node);
+    const sema::Type* unary(const ast::Expression& expression, const ast::UnaryExpression& node,
+                            const sema::Type* expected);
+    const sema::Type* binary(const ast::Expression& expression, const ast::BinaryExpression& node,
+                             const sema::Type* expected);
+    const sema::Type* call(const ast::Expression& expression, const ast::CallExpression& node,
+                           const sema::Type* expected);
+    const sema::Type* pou_call(const ast::Expression& expression, const ast::CallExpression& node,
+                               const ast::Pou& pou, const sema::Type* instance);
+    const sema::Type* standard_call(const ast::Expression& expression,
+                                    const ast::CallExpression& node, const std::string& name,
+                                    const sema::Type* expected);
+    const sema::Type* conversion(const ast::Expression& expression, const ast::CallExpression& node,
+                                 const std::string& name);
+
+    /// Both operands of a binary operator (or all inputs of a generic function) typed and
+    /// brought to their common type; untyped literals take the others' type.
+    const sema::Type* unify(const std::vector<const ast::Expression*>& operands,
+                            const sema::Type* expected, const SourceRange& range);
+    /// The smallest type both convert to implicitly (figure 11); null if there is none.
+    const sema::Type* common(const sema::Type& a, const sema::Type& b);
+    const sema::Type* variable_type(const sema::Symbol& symbol);
+    /// The arguments of a call except EN and ENO, in order.
+    std::vector<const ast::Argument*> inputs(const ast::CallExpression& node);
+    void fold(const ast::Expression& expression, const sema::Type& type);
+
+    const sema::Type& elementary(E e) { return program_.types().elementary(e); }
+    const sema::Type* fail(const SourceRange& range, std::string message);
+
+    TypedProgram& program_;
+    Diagnostics& diagnostics_;
+    const ast::Pou* current_ = nullptr;
+};
+
+/// An integer or real literal without a type prefix, or the negation of one: it takes the type
+/// of its context.
+bool is_untyped_literal(const ast::Expression& expression);
+
+} // namespace eposp::compiler::types

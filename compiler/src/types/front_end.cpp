@@ -1,0 +1,50 @@
+#include "eposp/compiler/types/front_end.hpp"
+
+#include "../stdlib/standard_library_source.hpp"
+#include "eposp/compiler/parser.hpp"
+#include "eposp/compiler/sema/resolver.hpp"
+#include "eposp/compiler/sema/symbol.hpp"
+
+#include <string>
+
+namespace eposp::compiler::types {
+
+std::unique_ptr<FrontEnd> analyse(SourceManager& sources, std::span<const FileId> files,
+                                  Diagnostics& diagnostics) {
+    auto result = std::make_unique<FrontEnd>();
+    for (const FileId file : files) {
+        result->units.push_back(parse(sources, file, diagnostics));
+    }
+    if (diagnostics.has_errors()) {
+        return result;
+    }
+    result->model.emplace(sema::resolve(result->units, diagnostics));
+    const FileId library_file =
+        sources.add("<standard library>", std::string(stdlib::standard_library_source()));
+    result->library_units.push_back(parse(sources, library_file, diagnostics));
+    result->library_model.emplace(sema::resolve_library(result->library_units, diagnostics));
+    if (diagnostics.has_errors()) {
+        return result;
+    }
+    const FrontEnd* front_end = result.get();
+    auto program = type_program(
+        result->units, *result->model,
+        [front_end](std::string_view name) -> const ast::Pou* {
+            const std::string key = sema::fold_case(name);
+            for (const ast::CompilationUnit& unit : front_end->library_units) {
+                for (const ast::Pou& pou : unit.pous) {
+                    if (sema::fold_case(pou.name.name) == key) {
+                        return &pou;
+                    }
+                }
+            }
+            return nullptr;
+        },
+        diagnostics);
+    if (!diagnostics.has_errors()) {
+        result->program = std::move(program);
+    }
+    return result;
+}
+
+} // namespace eposp::compiler::types

@@ -1,0 +1,98 @@
+#include "eposp/compiler/types/typed_program.hpp"
+
+#include "expression_typer.hpp"
+
+#include <unordered_set>
+
+namespace eposp::compiler::types {
+
+TypedProgram::TypedProgram(const sema::SemanticModel& model,
+                           std::function<const ast::Pou*(std::string_view)> library,
+                           std::function<bool(const ast::VariableDeclaration&)> is_constant,
+                           Diagnostics& diagnostics)
+    : model_(model), is_constant_(is_constant),
+      types_(model, diagnostics, std::move(library), std::move(is_constant)) {}
+
+const sema::Type* TypedProgram::type_of(const ast::Expression& expression) const {
+    const auto found = types_of_.find(&expression);
+    return found != types_of_.end() ? found->second : nullptr;
+}
+
+const Constant* TypedProgram::constant_of(const ast::Expression& expression) const {
+    const auto found = constants_.find(&expression);
+    return found != constants_.end() ? &found->second : nullptr;
+}
+
+const CallTarget* TypedProgram::call_target(const ast::Expression& expression) const {
+    const auto found = calls_.find(&expression);
+    return found != calls_.end() ? &found->second : nullptr;
+}
+
+void TypedProgram::set_type(const ast::Expression& expression, const sema::Type& type) {
+    types_of_[&expression] = &type;
+}
+
+void TypedProgram::set_constant(const ast::Expression& expression, Constant value) {
+    constants_.insert_or_assign(&expression, std::move(value));
+}
+
+void TypedProgram::set_call(const ast::Expression& expression, CallTarget target) {
+    calls_.insert_or_assign(&expression, std::move(target));
+}
+
+namespace {
+
+void collect_constants(const std::vector<ast::DeclarationSection>& sections,
+                       std::unordered_set<const ast::VariableDeclaration*>& constants) {
+    for (const ast::DeclarationSection& section : sections) {
+        const auto* variables = std::get_if<ast::VarSection>(&section);
+        if (variables != nullptr && variables->constant) {
+            for (const ast::VariableDeclaration& declaration : variables->variables) {
+                constants.insert(&declaration);
+            }
+        }
+    }
+}
+
+} // namespace
+
+std::unique_ptr<TypedProgram> type_program(std::span<const ast::CompilationUnit> units,
+                                           const sema::SemanticModel& model,
+                                           std::function<const ast::Pou*(std::string_view)> library,
+                                           Diagnostics& diagnostics) {
+    auto constants = std::make_shared<std::unordered_set<const ast::VariableDeclaration*>>();
+    for (const ast::CompilationUnit& unit : units) {
+        for (const ast::Pou& pou : unit.pous) {
+            collect_constants(pou.sections, *constants);
+        }
+        collect_constants(unit.global_variable_lists, *constants);
+        for (const ast::Configuration& configuration : unit.configurations) {
+            collect_constants(configuration.sections, *constants);
+            for (const ast::Resource& resource : configuration.resources) {
+                collect_constants(resource.sections, *constants);
+            }
+        }
+    }
+    auto program = std::make_unique<TypedProgram>(
+        model, std::move(library),
+        [constants](const ast::VariableDeclaration& declaration) {
+            return constants->contains(&declaration);
+        },
+        diagnostics);
+    ExpressionTyper typer(*program, diagnostics);
+    // Declarations first, so that a constant's value is known wherever it is used.
+    for (const ast::CompilationUnit& unit : units) {
+        typer.sections(unit.global_variable_lists);
+        for (const ast::Configuration& configuration : unit.configurations) {
+            typer.configuration(configuration);
+        }
+    }
+    for (const ast::CompilationUnit& unit : units) {
+        for (const ast::Pou& pou : unit.pous) {
+            typer.pou(pou);
+        }
+    }
+    return program;
+}
+
+} // namespace eposp::compiler::types
