@@ -42,10 +42,15 @@ TEST(Reducer, KeepsOnlyWhatTheConditionNeeds) {
 }
 
 TEST(Differential, ExecutorsAgreeOnFixedSeeds) {
+    GeneratorOptions options;
+    // Issue 16 items 11 and 5 (being fixed): the compiler refuses these programs today.
+    options.huge_case_labels = false;
+    options.string_max_min_limit = false;
     const auto executors = all_executors();
-    for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-        if (const auto finding = check_seed(seed, {}, executors.pointers(), kScans, true)) {
-            ADD_FAILURE() << describe(*finding);
+    for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+        if (const auto finding = check_seed(seed, options, executors.pointers(), kScans, true);
+            !finding.agree()) {
+            ADD_FAILURE() << describe(finding);
         }
     }
 }

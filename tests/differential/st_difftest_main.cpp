@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <random>
 #include <string>
 
@@ -53,6 +54,25 @@ bool switch_off(GeneratorOptions& options, const std::string& feature) {
         }
     }
     return false;
+}
+
+/// Programs an executor refused (the reference evaluator does not support everything): a
+/// comparison that silently lost an executor must not read as agreement.
+struct Refusals {
+    std::map<std::string, std::uint64_t> count;
+    std::map<std::string, std::string> example;
+};
+
+void count_refusals(const Verdict& verdict, Refusals& refusals) {
+    for (std::size_t i = 0; i < verdict.classes.size(); ++i) {
+        if (verdict.classes[i] == -1) {
+            const std::string& name = verdict.names[i];
+            if (refusals.count[name]++ == 0) {
+                const std::string& errors = verdict.executions[i].errors;
+                refusals.example[name] = errors.substr(0, errors.find('\n'));
+            }
+        }
+    }
 }
 
 std::optional<Arguments> parse(int argc, char** argv) {
@@ -107,6 +127,7 @@ int main(int argc, char** argv) {
     auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
+    Refusals refusals;
     double last_report = 0;
     std::uint64_t checked = 0;
     std::uint64_t found = 0;
@@ -115,28 +136,36 @@ int main(int argc, char** argv) {
                                  : elapsed() >= arguments->minutes * 60) {
             break;
         }
-        if (auto finding = check_seed(seed, arguments->options, executors.pointers(),
-                                      arguments->scans, arguments->reduce)) {
+        const auto finding = check_seed(seed, arguments->options, executors.pointers(),
+                                        arguments->scans, arguments->reduce);
+        if (!finding.agree()) {
             ++found;
-            std::cout << describe(*finding) << std::endl;
+            std::cout << describe(finding) << std::endl;
         }
+        count_refusals(finding.verdict, refusals);
         ++checked;
         if (elapsed() - last_report >= 10) {
             last_report = elapsed();
             std::printf("%llu programs (seeds %llu..%llu), %.1f programs/s, %llu mismatches\n",
                         static_cast<unsigned long long>(checked),
                         static_cast<unsigned long long>(arguments->from),
-                        static_cast<unsigned long long>(seed), static_cast<double>(checked) / elapsed(),
+                        static_cast<unsigned long long>(seed),
+                        static_cast<double>(checked) / elapsed(),
                         static_cast<unsigned long long>(found));
             std::fflush(stdout);
         }
     }
     std::printf("done: %llu programs in %.0f s (%.1f programs/s), %llu mismatches; executors:",
-                static_cast<unsigned long long>(checked), elapsed(), static_cast<double>(checked) / elapsed(),
-                static_cast<unsigned long long>(found));
+                static_cast<unsigned long long>(checked), elapsed(),
+                static_cast<double>(checked) / elapsed(), static_cast<unsigned long long>(found));
     for (const Executor* executor : executors.pointers()) {
         std::printf(" %s", executor->name().c_str());
     }
     std::printf("\n");
+    for (const auto& [name, count] : refusals.count) {
+        std::printf("%s refused %llu of %llu programs, e.g. %s\n", name.c_str(),
+                    static_cast<unsigned long long>(count),
+                    static_cast<unsigned long long>(checked), refusals.example[name].c_str());
+    }
     return found == 0 ? 0 : 1;
 }

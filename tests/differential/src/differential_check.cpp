@@ -94,17 +94,13 @@ Verdict compare(const std::vector<Executor*>& executors, const std::string& sour
     return verdict;
 }
 
-std::optional<Finding> check_seed(std::uint64_t seed, const GeneratorOptions& options,
-                                  const std::vector<Executor*>& executors, int scans,
-                                  bool reduce_it) {
+Finding check_seed(std::uint64_t seed, const GeneratorOptions& options,
+                   const std::vector<Executor*>& executors, int scans, bool reduce_it) {
     std::mt19937_64 random(seed);
     GeneratedProgram program = generate_program(random, options);
     Finding finding{seed, {}, render(program.block), {}};
     finding.verdict = compare(executors, finding.program, scans);
-    if (finding.verdict.outcome == Verdict::Outcome::Agree) {
-        return std::nullopt;
-    }
-    if (reduce_it) {
+    if (reduce_it && !finding.agree()) {
         const Verdict::Outcome outcome = finding.verdict.outcome;
         const std::vector<int> classes = finding.verdict.classes;
         const std::string error = first_error(finding.verdict);

@@ -8,7 +8,6 @@
 #include "eposp/differential/st_generator.hpp"
 
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,19 +33,21 @@ struct Verdict {
 /// Runs `source` for `scans` scans on each executor and compares them.
 Verdict compare(const std::vector<Executor*>& executors, const std::string& source, int scans);
 
-/// A seed whose program the executors disagree on.
+/// What the executors did with the program of one seed.
 struct Finding {
     std::uint64_t seed = 0;
     Verdict verdict;
     std::string program;
     std::string reduced; ///< empty when not reduced
+
+    bool agree() const { return verdict.outcome == Verdict::Outcome::Agree; }
 };
 
-/// Generates the program of `seed` (std::mt19937_64 seeded with it), compares the executors on
-/// it and, when they disagree and `reduce` is set, reduces it while they keep disagreeing alike.
-/// nullopt when they agree; a Finding with Outcome::Invalid when the VM rejects the program.
-std::optional<Finding> check_seed(std::uint64_t seed, const GeneratorOptions& options,
-                                  const std::vector<Executor*>& executors, int scans, bool reduce);
+/// Generates the program of `seed` (std::mt19937_64 seeded with it) and compares the executors
+/// on it; when they disagree (or the VM rejects it) and `reduce` is set, reduces it while they
+/// keep disagreeing alike.
+Finding check_seed(std::uint64_t seed, const GeneratorOptions& options,
+                   const std::vector<Executor*>& executors, int scans, bool reduce);
 
 /// The report of a finding: seed, executors' results, reduced program (or the whole one).
 std::string describe(const Finding& finding);
