@@ -1,7 +1,7 @@
 #include "eposp/differential/reducer.hpp"
 
 #include <cstddef>
-#include <optional>
+#include <vector>
 
 namespace eposp::differential {
 namespace {
@@ -10,7 +10,7 @@ namespace {
 /// changes tried remove the most) and applies a change to the `target`-th candidate.
 class Edit {
 public:
-    enum class Kind { Drop, Replace };
+    enum class Kind { Drop, Unwrap, Replace };
     Edit(Kind kind, std::size_t target) : kind_(kind), target_(target) {}
 
     /// Applies the change; false if there are not that many candidates.
@@ -29,6 +29,9 @@ private:
                 block.erase(block.begin() + static_cast<std::ptrdiff_t>(i));
                 return true;
             }
+            if (kind_ == Kind::Unwrap && block[i].droppable && unwrap(block, i)) {
+                return true;
+            }
             for (auto& segment : block[i].segments) {
                 for (auto& expr : segment.expr) {
                     if (visit(expr)) {
@@ -41,6 +44,35 @@ private:
                     }
                 }
             }
+        }
+        return false;
+    }
+
+    /// Replaces the statement by the statements of one of its blocks (an IF by its THEN part, a
+    /// loop by its body, a CASE by one arm); each block is a candidate.
+    bool unwrap(Block& block, std::size_t i) {
+        std::vector<const Block*> inner;
+        for (const auto& segment : block[i].segments) {
+            for (const auto& candidate : segment.block) {
+                inner.push_back(&candidate);
+            }
+        }
+        for (const Block* candidate : inner) {
+            if (seen_++ != target_) {
+                continue;
+            }
+            // A CASE arm (`1:` and its statements) is a statement of its own: take what it holds.
+            const Block* statements = candidate;
+            while (statements->size() == 1 && statements->front().segments.size() <= 2 &&
+                   !statements->front().segments.front().block.empty() &&
+                   statements->front().segments.front().expr.empty()) {
+                statements = &statements->front().segments.front().block.front();
+            }
+            Block replacement = *statements;
+            block.erase(block.begin() + static_cast<std::ptrdiff_t>(i));
+            block.insert(block.begin() + static_cast<std::ptrdiff_t>(i), replacement.begin(),
+                         replacement.end());
+            return true;
         }
         return false;
     }
@@ -86,6 +118,7 @@ Block reduce(Block program, const Interesting& interesting) {
     bool changed = true;
     while (changed) {
         changed = pass(program, Edit::Kind::Drop, interesting);
+        changed = pass(program, Edit::Kind::Unwrap, interesting) || changed;
         changed = pass(program, Edit::Kind::Replace, interesting) || changed;
     }
     return program;

@@ -1,7 +1,8 @@
 #pragma once
 
 // A small delta-debugging reducer for generated programs: drops statements (declarations
-// included) and replaces expressions by a literal of their type, one at a time, keeping each
+// included), replaces a compound statement by one of its blocks and an expression by a literal
+// of its type, one at a time, keeping each
 // change under which the program stays interesting (it still compiles and the executors still
 // disagree the same way), until no single change is kept.
 
