@@ -7,8 +7,9 @@ namespace eposp::differential {
 
 Executors all_executors() {
     std::vector<std::unique_ptr<Executor>> executors;
-    executors.push_back(std::make_unique<VmExecutor>(vm::Engine::Interpreter));
-    executors.push_back(std::make_unique<VmExecutor>(vm::Engine::Compiled));
+    const auto compiled = std::make_shared<CompiledSource>();
+    executors.push_back(std::make_unique<VmExecutor>(vm::Engine::Interpreter, compiled));
+    executors.push_back(std::make_unique<VmExecutor>(vm::Engine::Compiled, compiled));
     executors.push_back(std::make_unique<ReferenceExecutor>());
     return Executors(std::move(executors));
 }

@@ -23,21 +23,30 @@ std::string VmExecutor::name() const {
     return engine_ == vm::Engine::Interpreter ? "interpreter" : "compiled";
 }
 
+const CompiledSource& VmExecutor::compiled(const std::string& source) {
+    if (cache_->source != source) {
+        compiler::SourceManager sources;
+        const compiler::FileId file = sources.add("main.st", source);
+        compiler::Diagnostics diagnostics;
+        cache_->source = source;
+        cache_->image = compiler::compile(sources, std::span(&file, 1), diagnostics);
+        cache_->errors = compiler::render(diagnostics, sources);
+    }
+    return *cache_;
+}
+
 Execution VmExecutor::run(const std::string& source, int scans) {
     Execution execution;
     std::int64_t now_ns = 0;
     vm::NativeRegistry natives;
     vm::stdlib::register_standard_library(natives);
     vm::stdlib::register_clock(natives, [&now_ns] { return now_ns; });
-    compiler::SourceManager sources;
-    const compiler::FileId file = sources.add("main.st", source);
-    compiler::Diagnostics diagnostics;
-    auto image = compiler::compile(sources, std::span(&file, 1), diagnostics);
-    if (!image) {
-        execution.errors = compiler::render(diagnostics, sources);
+    const CompiledSource& compiled_source = compiled(source);
+    if (!compiled_source.image) {
+        execution.errors = compiled_source.errors;
         return execution;
     }
-    auto program = vm::link(std::move(*image), natives, engine_);
+    auto program = vm::link(*compiled_source.image, natives, engine_);
     if (!program) {
         execution.errors = program.error();
         return execution;
