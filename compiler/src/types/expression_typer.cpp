@@ -66,10 +66,32 @@ void ExpressionTyper::sections(const std::vector<ast::DeclarationSection>& secti
             continue;
         }
         for (const ast::VariableDeclaration& declaration : variables->variables) {
+            type_spec(declaration.type);
             if (declaration.initial_value) {
                 initializer(*declaration.initial_value, program_.types().resolve(declaration.type));
             }
         }
+    }
+}
+
+void ExpressionTyper::type_declaration(const ast::TypeDeclaration& declaration) {
+    type_spec(declaration.type);
+    if (declaration.initial_value) {
+        initializer(*declaration.initial_value, program_.types().resolve(declaration.type));
+    }
+}
+
+void ExpressionTyper::type_spec(const ast::TypeSpec& spec) {
+    // Members of a STRUCT, inline or declared, have initial values of their own.
+    if (const auto* structure = std::get_if<ast::StructType>(&spec.node)) {
+        for (const ast::VariableDeclaration& member : structure->members) {
+            type_spec(member.type);
+            if (member.initial_value) {
+                initializer(*member.initial_value, program_.types().resolve(member.type));
+            }
+        }
+    } else if (const auto* array = std::get_if<ast::ArrayType>(&spec.node)) {
+        type_spec(*array->element);
     }
 }
 
@@ -585,13 +607,20 @@ const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
                                                field->type->name, target->name));
             }
         } else if (field->section == ast::VarSectionKind::InOut) {
-            const sema::Type* actual = type(*argument->value, field->type);
-            if (actual != nullptr && !sema::same_type(*actual, *field->type) &&
-                !sema::conforms(*actual, *field->type) &&
-                !(actual->kind == sema::TypeKind::String && field->type->kind == actual->kind)) {
+            // A VAR_IN_OUT is held as a reference to the variable passed (6.6.1.2.2).
+            const bool by_reference =
+                field->type->kind == sema::TypeKind::Reference ||
+                (field->type->kind == sema::TypeKind::Struct && field->type->conformant);
+            const sema::Type& formal = by_reference && field->type->element != nullptr
+                                           ? *field->type->element
+                                           : *field->type;
+            const sema::Type* actual = type(*argument->value, &formal);
+            if (actual != nullptr && !sema::same_type(*actual, formal) &&
+                !sema::conforms(*actual, formal) &&
+                !(actual->kind == sema::TypeKind::String && formal.kind == actual->kind)) {
                 diagnostics_.error(argument->range,
                                    fmt::format("VAR_IN_OUT {} takes a {}, not a {}", field->name,
-                                               field->type->name, actual->name));
+                                               formal.name, actual->name));
             }
         } else {
             expect(*argument->value, *field->type, "an input");
@@ -622,8 +651,9 @@ const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
 const sema::Type* ExpressionTyper::conversion(const ast::Expression& expression,
                                               const ast::CallExpression& node,
                                               const std::string& name) {
-    const auto arguments = inputs(node);
-    if (arguments.size() != 1) {
+    inputs(node); // EN and ENO
+    const auto arguments = standard_arguments("TO", node);
+    if (arguments.size() != 1 || arguments[0] == nullptr) {
         return fail(expression.range, fmt::format("{} takes one input", name));
     }
     CallTarget target{.kind = CallKind::Conversion, .name = name};

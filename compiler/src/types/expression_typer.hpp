@@ -18,10 +18,12 @@ public:
     void pou(const ast::Pou& pou);
     void sections(const std::vector<ast::DeclarationSection>& sections);
     void configuration(const ast::Configuration& configuration);
+    void type_declaration(const ast::TypeDeclaration& declaration);
 
 private:
     using E = ast::ElementaryType;
 
+    void type_spec(const ast::TypeSpec& spec);
     void statements(const ast::StatementList& list);
     void statement(const ast::Statement& statement);
     void initializer(const ast::Initializer& initializer, const sema::Type* target);

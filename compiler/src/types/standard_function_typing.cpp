@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <map>
+#include <optional>
 #include <set>
 
 namespace eposp::compiler::types {
@@ -18,15 +20,54 @@ const std::set<std::string> kComparison = {"GT", "GE", "EQ", "LE", "LT", "NE"};
 const std::set<std::string> kBitwise = {"AND", "OR", "XOR"};
 const std::set<std::string> kShift = {"SHL", "SHR", "ROL", "ROR"};
 
+/// A time function's first input and second input (none: any number).
+std::optional<std::pair<ast::ElementaryType, std::optional<ast::ElementaryType>>>
+time_function(const std::string& name) {
+    using E = ast::ElementaryType;
+    static const std::map<std::string, std::pair<E, std::optional<E>>> functions = {
+        {"ADD_TIME", {E::Time, E::Time}},
+        {"SUB_TIME", {E::Time, E::Time}},
+        {"MUL_TIME", {E::Time, std::nullopt}},
+        {"DIV_TIME", {E::Time, std::nullopt}},
+        {"ADD_TOD_TIME", {E::TimeOfDay, E::Time}},
+        {"SUB_TOD_TIME", {E::TimeOfDay, E::Time}},
+        {"ADD_DT_TIME", {E::DateAndTime, E::Time}},
+        {"SUB_DT_TIME", {E::DateAndTime, E::Time}},
+        {"SUB_DATE_DATE", {E::Date, E::Date}},
+        {"SUB_TOD_TOD", {E::TimeOfDay, E::TimeOfDay}},
+        {"SUB_DT_DT", {E::DateAndTime, E::DateAndTime}},
+        {"CONCAT_DATE_TOD", {E::Date, E::TimeOfDay}},
+    };
+    const auto found = functions.find(name);
+    if (found == functions.end()) {
+        return std::nullopt;
+    }
+    return found->second;
+}
+
+ast::ElementaryType time_result(const std::string& name) {
+    using E = ast::ElementaryType;
+    if (name == "CONCAT_DATE_TOD" || name == "ADD_DT_TIME" || name == "SUB_DT_TIME") {
+        return E::DateAndTime;
+    }
+    if (name == "ADD_TOD_TIME" || name == "SUB_TOD_TIME") {
+        return E::TimeOfDay;
+    }
+    return E::Time;
+}
+
 } // namespace
 
 const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expression,
                                                  const ast::CallExpression& node,
                                                  const std::string& name,
                                                  const sema::Type* expected) {
-    const auto arguments = inputs(node);
+    inputs(node); // EN and ENO
     std::vector<const ast::Expression*> values;
-    for (const ast::Argument* argument : arguments) {
+    for (const ast::Argument* argument : standard_arguments(name, node)) {
+        if (argument == nullptr) {
+            return fail(expression.range, fmt::format("{} has no such input", name));
+        }
         values.push_back(argument->value.get());
     }
     const SourceRange& range = expression.range;
@@ -180,6 +221,37 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
         type(*values[0], nullptr);
         integer(*values[1]);
         result = &elementary(E::Dint);
+    } else if (const auto time = time_function(name)) {
+        // Table 30: fixed signatures; MUL_TIME and DIV_TIME scale by any number.
+        if (!count(2, 2)) {
+            return nullptr;
+        }
+        expect(*values[0], elementary(time->first), "a time");
+        if (time->second) {
+            expect(*values[1], elementary(*time->second), "a time");
+        } else {
+            const sema::Type* factor = type(*values[1], &elementary(E::Lint));
+            if (factor != nullptr && !sema::is_numeric(*factor)) {
+                return fail(range,
+                            fmt::format("{} scales by a number, not {}", name, factor->name));
+            }
+        }
+        target.operand = &elementary(time->first);
+        result = &elementary(time_result(name));
+    } else if (name == "ADR" || name == "SIZEOF") {
+        if (!count(1, 1)) {
+            return nullptr;
+        }
+        const sema::Type* object = type(*values[0], nullptr);
+        if (object == nullptr) {
+            return nullptr;
+        }
+        // ADR is an address for any POINTER TO; SIZEOF fits the smallest unsigned type
+        // (docs/st-language.md, references and pointers).
+        result = name == "ADR"            ? &program_.types().reference(nullptr)
+                 : object->size <= 0xFF   ? &elementary(E::Usint)
+                 : object->size <= 0xFFFF ? &elementary(E::Uint)
+                                          : &elementary(E::Udint);
     } else {
         return fail(range, fmt::format("the typing stage does not know {} yet", name));
     }

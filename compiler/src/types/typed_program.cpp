@@ -82,6 +82,11 @@ std::unique_ptr<TypedProgram> type_program(std::span<const ast::CompilationUnit>
     ExpressionTyper typer(*program, diagnostics);
     // Declarations first, so that a constant's value is known wherever it is used.
     for (const ast::CompilationUnit& unit : units) {
+        for (const ast::TypeDeclaration& declaration : unit.types) {
+            typer.type_declaration(declaration);
+        }
+    }
+    for (const ast::CompilationUnit& unit : units) {
         typer.sections(unit.global_variable_lists);
         for (const ast::Configuration& configuration : unit.configurations) {
             typer.configuration(configuration);

@@ -96,3 +96,13 @@ std::unique_ptr<TypedProgram> type_program(std::span<const ast::CompilationUnit>
                                            Diagnostics& diagnostics);
 
 } // namespace eposp::compiler::types
+
+namespace eposp::compiler::types {
+
+/// The inputs of a call of the standard function `name` (upper case) in the order of its
+/// signature (`IN1, IN2, ...`; `G, IN0, IN1`; `IN, L, P`; ...), written positionally or
+/// formally in any order; EN and ENO are left out. Null where an input name is unknown.
+std::vector<const ast::Argument*> standard_arguments(std::string_view name,
+                                                     const ast::CallExpression& call);
+
+} // namespace eposp::compiler::types

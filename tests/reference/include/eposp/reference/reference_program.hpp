@@ -26,6 +26,8 @@ public:
     ~ReferenceProgram();
     ReferenceProgram(const ReferenceProgram&) = delete;
     ReferenceProgram& operator=(const ReferenceProgram&) = delete;
+    ReferenceProgram(ReferenceProgram&&) noexcept;
+    ReferenceProgram& operator=(ReferenceProgram&&) noexcept;
 
     bool ok() const;
     const std::string& errors() const;
@@ -44,6 +46,8 @@ public:
 private:
     std::unique_ptr<Evaluator> evaluator_;
     std::string errors_;
+    std::string fault_;
+    std::int64_t now_ns_ = 0;
 };
 
 } // namespace eposp::reference

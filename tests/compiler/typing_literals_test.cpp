@@ -1,0 +1,58 @@
+// The typing stage: an untyped literal takes the type its context needs (IEC 61131-3 ed. 3,
+// 6.3.3); with no context an integer is a DINT (a LINT when it does not fit), a real an LREAL.
+
+#include "typing_helpers.hpp"
+
+#include <gtest/gtest.h>
+
+namespace eposp::compiler::test {
+namespace {
+
+TEST(TypingLiterals, AnUntypedLiteralTakesTheTypeOfItsTarget) {
+    const auto t = type_body("i : INT; r : REAL; w : BYTE; l : LREAL;",
+                             "i := 5; r := 1; w := 16#FF; l := 2.5; r := 2.5;");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    EXPECT_EQ(t->type_of(0), "INT");
+    EXPECT_EQ(t->type_of(1), "REAL");
+    EXPECT_EQ(t->type_of(2), "BYTE");
+    EXPECT_EQ(t->type_of(3), "LREAL");
+    EXPECT_EQ(t->type_of(4), "REAL");
+}
+
+TEST(TypingLiterals, WithoutContextIntegersAreDintOrLintAndRealsLreal) {
+    const auto t = type_body("b : BOOL;", "b := 5 > 3000000000; b := 1.5 > 1.0;");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    const auto& compare = std::get<ast::BinaryExpression>(t->value(0).node);
+    EXPECT_EQ(t->program().type_of(*compare.left)->name, "LINT"); // takes the other side's type
+    EXPECT_EQ(t->program().type_of(*compare.right)->name, "LINT");
+    const auto& reals = std::get<ast::BinaryExpression>(t->value(1).node);
+    EXPECT_EQ(t->program().type_of(*reals.left)->name, "LREAL");
+}
+
+TEST(TypingLiterals, ATypedLiteralKeepsItsTypeAndIsFolded) {
+    const auto t = type_body("u : ULINT; d : DINT; s : STRING;",
+                             "u := ULINT#9542150923762281093; d := -7; s := 'abc';");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    EXPECT_EQ(t->type_of(0), "ULINT");
+    EXPECT_EQ(std::get<std::uint64_t>(*t->program().constant_of(t->value(0))),
+              9542150923762281093U);
+    EXPECT_EQ(std::get<std::int64_t>(*t->program().constant_of(t->value(1))), -7);
+    EXPECT_EQ(t->type_of(2), "STRING[3]");
+    EXPECT_EQ(std::get<std::string>(*t->program().constant_of(t->value(2))), "abc");
+}
+
+TEST(TypingLiterals, AConstantIsFoldedWhereItIsUsed) {
+    const auto t = type_source("PROGRAM Main\nVAR CONSTANT k : INT := 42; END_VAR\n"
+                               "VAR x : INT; END_VAR\nx := k;\nEND_PROGRAM\n");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    EXPECT_EQ(std::get<std::int64_t>(*t->program().constant_of(t->value(0))), 42);
+}
+
+TEST(TypingLiterals, ALiteralTooLargeForItsTypeIsAnError) {
+    const auto t = type_body("i : INT;", "i := INT#70000;");
+    EXPECT_FALSE(t->front_end->program);
+    EXPECT_NE(t->errors().find("does not fit INT"), std::string::npos) << t->errors();
+}
+
+} // namespace
+} // namespace eposp::compiler::test

@@ -1,0 +1,194 @@
+#include "support_check.hpp"
+
+#include "eposp/compiler/sema/symbol.hpp"
+#include "value.hpp"
+
+#include <set>
+
+namespace eposp::reference {
+
+namespace ast = compiler::ast;
+namespace types = compiler::types;
+
+namespace {
+
+const std::set<std::string> kFunctions = {"ABS",         "SQRT",
+                                          "LN",          "LOG",
+                                          "EXP",         "SIN",
+                                          "COS",         "TAN",
+                                          "ASIN",        "ACOS",
+                                          "ATAN",        "ATAN2",
+                                          "EXPT",        "MOVE",
+                                          "ADD",         "MUL",
+                                          "SUB",         "DIV",
+                                          "MOD",         "SHL",
+                                          "SHR",         "ROL",
+                                          "ROR",         "AND",
+                                          "OR",          "XOR",
+                                          "NOT",         "SEL",
+                                          "MAX",         "MIN",
+                                          "LIMIT",       "MUX",
+                                          "GT",          "GE",
+                                          "EQ",          "LE",
+                                          "LT",          "NE",
+                                          "LEN",         "LEFT",
+                                          "RIGHT",       "MID",
+                                          "CONCAT",      "INSERT",
+                                          "DELETE",      "REPLACE",
+                                          "FIND",        "LOWER_BOUND",
+                                          "UPPER_BOUND", "ADD_TIME",
+                                          "SUB_TIME",    "MUL_TIME",
+                                          "DIV_TIME",    "ADD_DT_TIME",
+                                          "SUB_DT_TIME", "SUB_DATE_DATE",
+                                          "SUB_DT_DT",   "CONCAT_DATE_TOD"};
+
+bool is_modelled(const sema::Type& type) {
+    return shape_of(type) != Shape::Unsupported && shape_of(type) != Shape::String;
+}
+
+class Checker {
+public:
+    explicit Checker(const types::TypedProgram& program) : program_(program) {}
+
+    void sections(const std::vector<ast::DeclarationSection>& sections) {
+        for (const ast::DeclarationSection& section : sections) {
+            const auto* variables = std::get_if<ast::VarSection>(&section);
+            if (variables == nullptr) {
+                throw Unsupported("VAR_ACCESS");
+            }
+            for (const ast::VariableDeclaration& declaration : variables->variables) {
+                if (declaration.address) {
+                    throw Unsupported("located variables (AT %...)");
+                }
+            }
+        }
+    }
+
+    void statements(const ast::StatementList& list) {
+        for (const ast::Statement& statement : list) {
+            std::visit([&](const auto& node) { this->statement(node); }, statement.node);
+        }
+    }
+
+private:
+    void statement(const ast::AssignmentStatement& node) {
+        expression(*node.target);
+        expression(*node.value);
+    }
+    void statement(const ast::CallStatement& node) { expression(*node.call); }
+    void statement(const ast::IfStatement& node) {
+        for (const ast::ConditionalBlock& branch : node.branches) {
+            expression(*branch.condition);
+            statements(branch.body);
+        }
+        statements(node.else_body);
+    }
+    void statement(const ast::CaseStatement& node) {
+        expression(*node.selector);
+        for (const ast::CaseBranch& branch : node.branches) {
+            statements(branch.body);
+        }
+        statements(node.else_body);
+    }
+    void statement(const ast::ForStatement& node) {
+        expression(*node.from);
+        expression(*node.to);
+        if (node.by) {
+            expression(*node.by);
+        }
+        statements(node.body);
+    }
+    void statement(const ast::WhileStatement& node) {
+        expression(*node.condition);
+        statements(node.body);
+    }
+    void statement(const ast::RepeatStatement& node) {
+        statements(node.body);
+        expression(*node.until);
+    }
+    template <typename T>
+    void statement(const T&) {}
+
+    void expression(const ast::Expression& expression) {
+        if (const sema::Type* type = program_.type_of(expression);
+            type != nullptr && shape_of(*type) == Shape::Unsupported) {
+            throw Unsupported("values of type " + type->name);
+        }
+        std::visit([&](const auto& node) { this->node(expression, node); }, expression.node);
+    }
+    void node(const ast::Expression&, const ast::LiteralExpression& node) {
+        if (std::holds_alternative<ast::NullLiteral>(node.value)) {
+            throw Unsupported("NULL");
+        }
+    }
+    void node(const ast::Expression&, const ast::NameExpression&) {}
+    void node(const ast::Expression&, const ast::DirectAddressExpression&) {
+        throw Unsupported("direct addresses (%I, %Q, %M)");
+    }
+    void node(const ast::Expression&, const ast::MemberExpression& node) {
+        expression(*node.object);
+    }
+    void node(const ast::Expression&, const ast::BitAccessExpression& node) {
+        expression(*node.object);
+    }
+    void node(const ast::Expression&, const ast::IndexExpression& node) {
+        expression(*node.array);
+        for (const ast::ExpressionPtr& index : node.indices) {
+            expression(*index);
+        }
+    }
+    void node(const ast::Expression&, const ast::DereferenceExpression&) {
+        throw Unsupported("pointers and references (^)");
+    }
+    void node(const ast::Expression&, const ast::ReferenceExpression&) {
+        throw Unsupported("pointers and references (REF)");
+    }
+    void node(const ast::Expression& expression, const ast::CallExpression& node) {
+        const types::CallTarget* target = program_.call_target(expression);
+        if (target == nullptr) {
+            throw Unsupported("a call the typing stage did not resolve");
+        }
+        if (target->kind == types::CallKind::StandardFunction &&
+            !kFunctions.contains(target->name)) {
+            throw Unsupported("the standard function " + target->name);
+        }
+        if (target->kind == types::CallKind::Conversion &&
+            (!is_modelled(*target->operand) || !is_modelled(*target->result))) {
+            throw Unsupported("the conversion " + target->name + " (strings are not modelled)");
+        }
+        if (target->kind == types::CallKind::StandardFunctionBlock && target->name == "RTC") {
+            throw Unsupported("the standard function block RTC");
+        }
+        for (const ast::Argument& argument : node.arguments) {
+            if (argument.name && (sema::fold_case(argument.name->name) == "EN" ||
+                                  sema::fold_case(argument.name->name) == "ENO")) {
+                throw Unsupported("EN and ENO");
+            }
+            this->expression(*argument.value);
+        }
+    }
+    void node(const ast::Expression&, const ast::UnaryExpression& node) {
+        expression(*node.operand);
+    }
+    void node(const ast::Expression&, const ast::BinaryExpression& node) {
+        expression(*node.left);
+        expression(*node.right);
+    }
+
+    const types::TypedProgram& program_;
+};
+
+} // namespace
+
+void check_supported(const types::FrontEnd& front_end) {
+    Checker checker(*front_end.program);
+    for (const ast::CompilationUnit& unit : front_end.units) {
+        checker.sections(unit.global_variable_lists);
+        for (const ast::Pou& pou : unit.pous) {
+            checker.sections(pou.sections);
+            checker.statements(pou.body);
+        }
+    }
+}
+
+} // namespace eposp::reference
