@@ -6,6 +6,7 @@
 //   st_difftest --minutes M [--from S]   as many as fit in M minutes
 //   st_difftest --print SEED             the program of one seed, to reproduce by hand
 //   options: --scans K (4), --no-reduce, --ties (real-to-integer conversions of ties),
+//            --narrow-promotion (GeneratorOptions::narrow_promotion),
 //            --without FEATURE (reals strings arrays structs loops case in-out
 //            huge-case-labels string-max-min-limit; repeatable)
 
@@ -94,6 +95,8 @@ std::optional<Arguments> parse(int argc, char** argv) {
             arguments.reduce = false;
         } else if (flag == "--ties") {
             arguments.options.real_ties = true;
+        } else if (flag == "--narrow-promotion") {
+            arguments.options.narrow_promotion = true;
         } else if (flag == "--without" && has_value) {
             if (!switch_off(arguments.options, argv[++i])) {
                 return std::nullopt;
@@ -113,8 +116,9 @@ std::optional<Arguments> parse(int argc, char** argv) {
 int main(int argc, char** argv) {
     const auto arguments = parse(argc, argv);
     if (!arguments) {
-        std::cerr << "usage: st_difftest (--seeds N | --minutes M | --print SEED) [--from S] "
-                     "[--scans K] [--no-reduce] [--ties] [--without FEATURE]...\n";
+        std::cerr
+            << "usage: st_difftest (--seeds N | --minutes M | --print SEED) [--from S] "
+               "[--scans K] [--no-reduce] [--ties] [--narrow-promotion] [--without FEATURE]...\n";
         return 2;
     }
     if (arguments->print) {

@@ -3,7 +3,14 @@
 #include "eposp/differential/st_generator.hpp"
 #include "eposp/reference/reference_program.hpp"
 
+#include <string_view>
+
 namespace eposp::differential {
+namespace {
+
+constexpr std::string_view kRefusal = "not supported by the reference evaluator";
+
+} // namespace
 
 Execution ReferenceExecutor::run(const std::string& source, int scans) {
     Execution execution;
@@ -15,6 +22,10 @@ Execution ReferenceExecutor::run(const std::string& source, int scans) {
     execution.loaded = true;
     for (int scan = 0; scan < scans; ++scan) {
         if (!program.scans(1)) {
+            // What the evaluator meets only while running and does not model is a refusal too.
+            if (program.fault().starts_with(kRefusal)) {
+                return Execution{false, program.fault(), {}, {}, {}};
+            }
             execution.fault_scan = scan;
             execution.fault = program.fault();
             break;

@@ -99,6 +99,8 @@ private:
     Expr access(const Place& place, int depth, std::string replacement);
     Expr signed_expr(Ty type, int depth);
     Expr unsigned_expr(Ty type, int depth);
+    /// `value`, an operation of a type narrower than DINT, kept within its type.
+    Expr in_range(Ty type, Expr value);
     Expr bit_string_expr(Ty type, int depth);
     Expr bool_expr(int depth);
     Expr real_expr(Ty type, int depth);
@@ -342,8 +344,9 @@ Expr Generator::signed_expr(Ty type, int depth) {
         if (type == Ty::Int && options_.strings) {
             return chance(50)
                        ? pattern("LEN($0)", {string_expr(depth - 1, 80)}, r)
-                       : pattern("FIND($0, $1)",
-                                 {string_expr(depth - 1, 80), string_expr(depth - 1, 80)}, r);
+                       // FIND of an empty string is left open: IN2 is never empty.
+                       : pattern("FIND($0, CONCAT($1, 'q'))",
+                                 {string_expr(depth - 1, 40), string_expr(depth - 1, 39)}, r);
         }
         return conversion_to(type, depth);
     default:
@@ -352,6 +355,16 @@ Expr Generator::signed_expr(Ty type, int depth) {
         }
         return conversion_to(type, depth);
     }
+}
+
+Expr Generator::in_range(Ty type, Expr value) {
+    if (!is_narrow(type) || is_signed(type) || options_.narrow_promotion) {
+        return value;
+    }
+    // Cut explicitly: the value is then the same whether the operation was computed in DINT or
+    // at the type's width, and passed on as it is stored.
+    const std::string wide = is_bit_string(type) ? "LWORD" : "DINT";
+    return pattern(wide + "_TO_" + type_name(type) + "($0)", {std::move(value)}, one_literal(type));
 }
 
 Expr Generator::unsigned_expr(Ty type, int depth) {
@@ -364,7 +377,7 @@ Expr Generator::unsigned_expr(Ty type, int depth) {
     const std::string k = reduction_modulus(type);
     switch (below(4)) {
     case 0:
-        return pattern(chance(50) ? "($0 + $1)" : "($0 - $1)", {sub(), sub()}, r);
+        return in_range(type, pattern(chance(50) ? "($0 + $1)" : "($0 - $1)", {sub(), sub()}, r));
     case 1:
         return wraps ? pattern("($0 * $1)", {sub(), sub()}, r)
                      : pattern("(($0 MOD " + k + ") * ($1 MOD " + k + "))", {sub(), sub()}, r);
@@ -392,19 +405,20 @@ Expr Generator::bit_string_expr(Ty type, int depth) {
         return pattern("($0" + op + "$1)", {sub(), sub()}, r);
     }
     case 2:
-        return pattern("(NOT $0)", {sub()}, r);
+        return in_range(type, pattern("(NOT $0)", {sub()}, r));
     case 3:
     case 4: {
         const std::string shift =
             std::array{"SHL", "SHR", "ROL", "ROR"}[static_cast<std::size_t>(below(4))];
-        return pattern(shift + "($0, " + n + ")", {sub()}, r);
+        return in_range(type, pattern(shift + "($0, " + n + ")", {sub()}, r));
     }
     case 5:
-        return pattern(chance(50) ? "($0 + $1)" : "($0 - $1)", {sub(), sub()}, r);
+        return in_range(type, pattern(chance(50) ? "($0 + $1)" : "($0 - $1)", {sub(), sub()}, r));
     case 6:
         // BYTE and WORD may be computed in DINT: factors below 256 cannot overflow it.
-        return is_narrow(type) ? pattern("(($0 AND 16#FF) * ($1 AND 16#FF))", {sub(), sub()}, r)
-                               : pattern("($0 * $1)", {sub(), sub()}, r);
+        return is_narrow(type)
+                   ? in_range(type, pattern("(($0 AND 16#FF) * ($1 AND 16#FF))", {sub(), sub()}, r))
+                   : pattern("($0 * $1)", {sub(), sub()}, r);
     default:
         return pattern("($0 " + std::string(chance(50) ? "/" : "MOD") + " ($1 OR 1))",
                        {sub(), sub()}, r);
@@ -574,7 +588,8 @@ Expr Generator::conversion_to(Ty type, int depth) {
     while (from == type || from == Ty::String || (is_real(from) && is_integer(type))) {
         from = chance(10) ? Ty::Bool : any_scalar_type();
     }
-    if (type == Ty::Bool && is_real(from)) {
+    if ((type == Ty::Bool && is_real(from)) || (from == Ty::Bool && is_real(type))) {
+        // IEC 61131-3 converts BOOL to and from integers and bit strings only.
         from = any_integer_type();
     }
     // Chains through a second conversion reach the 32/64-bit cases of issue 16 item 1.
