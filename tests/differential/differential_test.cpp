@@ -6,6 +6,7 @@
 #include "eposp/differential/reducer.hpp"
 
 #include <gtest/gtest.h>
+#include <map>
 #include <random>
 
 namespace eposp::differential {
@@ -41,6 +42,14 @@ TEST(Reducer, KeepsOnlyWhatTheConditionNeeds) {
     EXPECT_EQ(render(reduced), "a := (1 + y);\nd := 3;\nkeep;\n");
 }
 
+// Seeds whose programs hit defects of issue 16 that other branches are fixing now. A known seed
+// must still disagree: once its fix is merged this test fails until its line is deleted, so
+// that the seed is checked as every other one again.
+const std::map<std::uint64_t, const char*> kKnownDefects = {
+    {41, "item 1: a 32-bit unsigned result widened to 64 bits on the compiled engine"},
+    {43, "item 1: a 32-bit unsigned result widened to 64 bits on the compiled engine"},
+};
+
 TEST(Differential, ExecutorsAgreeOnFixedSeeds) {
     GeneratorOptions options;
     // Issue 16 items 11 and 5 (being fixed): the compiler refuses these programs today.
@@ -48,8 +57,13 @@ TEST(Differential, ExecutorsAgreeOnFixedSeeds) {
     options.string_max_min_limit = false;
     const auto executors = all_executors();
     for (std::uint64_t seed = 1; seed <= 60; ++seed) {
-        if (const auto finding = check_seed(seed, options, executors.pointers(), kScans, true);
-            !finding.agree()) {
+        const auto known = kKnownDefects.find(seed);
+        const bool reduce = known == kKnownDefects.end();
+        const auto finding = check_seed(seed, options, executors.pointers(), kScans, reduce);
+        if (known != kKnownDefects.end()) {
+            EXPECT_FALSE(finding.agree()) << "seed " << seed << " agrees now that " << known->second
+                                          << " is fixed: delete it from kKnownDefects";
+        } else if (!finding.agree()) {
             ADD_FAILURE() << describe(finding);
         }
     }
