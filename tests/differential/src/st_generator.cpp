@@ -430,7 +430,8 @@ Expr Generator::bool_expr(int depth) {
     switch (below(5)) {
     case 0:
     case 1: {
-        const Ty type = any_scalar_type();
+        // Strings compared in arguments next to others are how issue 16 item 2 showed.
+        const Ty type = options_.strings && chance(25) ? Ty::String : any_scalar_type();
         const std::string op = std::array{
             " = ", " <> ", " < ", " <= ", " > ", " >= "}[static_cast<std::size_t>(below(6))];
         return pattern("($0" + op + "$1)", {expr(type, depth - 1, 40), expr(type, depth - 1, 40)},
