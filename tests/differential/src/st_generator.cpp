@@ -119,7 +119,7 @@ private:
     void case_statement(Scope& scope, int depth, Block& out);
     void for_statement(Scope& scope, int depth, Block& out);
     void while_statement(Scope& scope, int depth, Block& out, bool repeat);
-    void loop_exit(Scope& scope, Block& out);
+    void loop_exit(Block& out);
     void fb_call(Scope& scope, Block& out);
     void in_out_call(Scope& scope, Block& out);
     void fold(const Scope& scope, const Expr& value, Ty type, Block& out);
@@ -646,7 +646,7 @@ void Generator::one_statement(Scope& scope, int depth, Block& out) {
     } else if (kind < 15 && options_.loops) {
         while_statement(scope, depth, out, chance(50));
     } else if (kind < 16 && scope.loops > 0) {
-        loop_exit(scope, out);
+        loop_exit(out);
     } else if (kind < 18 && !scope.fb_instances.empty()) {
         fb_call(scope, out);
     } else if (kind < 19 && options_.in_out) {
@@ -827,8 +827,7 @@ void Generator::while_statement(Scope& scope, int depth, Block& out, bool repeat
     scope.places.push_back(scalar(name, Ty::Dint, 0, false));
 }
 
-void Generator::loop_exit(Scope& scope, Block& out) {
-    (void)scope;
+void Generator::loop_exit(Block& out) {
     out.push_back(
         statement(std::string("IF $e THEN ") + (chance(50) ? "EXIT" : "CONTINUE") + "; END_IF;",
                   {expr(Ty::Bool, 1)}));
@@ -1079,29 +1078,23 @@ void Generator::final_folds(Scope& scope, Block& body) {
             fold(scope, leaf(place.name, one_literal(place.type)), place.type, body);
             continue;
         }
-        const std::string i = counter(scope);
-        std::string element = place.name + "[" + i;
-        std::string head = "FOR " + i + " := " + std::to_string(place.dims[0].first) + " TO " +
-                           std::to_string(place.dims[0].first + place.dims[0].second - 1) + " DO$b";
-        std::string tail = "END_FOR;";
-        if (place.dims.size() > 1) {
-            const std::string j = counter(scope);
-            element += ", " + j;
-            head += "";
-            Block inner;
-            fold(scope, leaf(element + "]" + place.member, one_literal(place.type)), place.type,
-                 inner);
-            Block middle{
-                statement("FOR " + j + " := " + std::to_string(place.dims[1].first) + " TO " +
-                              std::to_string(place.dims[1].first + place.dims[1].second - 1) +
-                              " DO$bEND_FOR;",
-                          {}, {std::move(inner)})};
-            body.push_back(statement(head + tail, {}, {std::move(middle)}));
-            continue;
+        // An array: one FOR loop per dimension around the fold of an element.
+        std::vector<std::string> counters;
+        std::string element = place.name + "[";
+        for (std::size_t d = 0; d < place.dims.size(); ++d) {
+            counters.push_back(counter(scope));
+            element += (d > 0 ? ", " : "") + counters.back();
         }
-        Block inner;
-        fold(scope, leaf(element + "]" + place.member, one_literal(place.type)), place.type, inner);
-        body.push_back(statement(head + tail, {}, {std::move(inner)}));
+        Block loops;
+        fold(scope, leaf(element + "]" + place.member, one_literal(place.type)), place.type, loops);
+        for (std::size_t d = place.dims.size(); d-- > 0;) {
+            const auto [lower, count] = place.dims[d];
+            Block outer{statement("FOR " + counters[d] + " := " + std::to_string(lower) + " TO " +
+                                      std::to_string(lower + count - 1) + " DO$bEND_FOR;",
+                                  {}, {std::move(loops)})};
+            loops = std::move(outer);
+        }
+        body.insert(body.end(), loops.begin(), loops.end());
     }
 }
 
