@@ -9,10 +9,11 @@ namespace eposp::compiler::test {
 namespace {
 
 TEST(TypingCalls, GenericFunctionsTakeTheCommonTypeOfTheirInputs) {
-    const auto t = type_body("i : INT; d : DINT; s : STRING[5]; u : STRING[7]; x : DINT; "
-                             "y : STRING[20]; g : BOOL; n : INT;",
-                             "x := MAX(i, d, 3); y := MIN(s, u); y := SEL(IN1 := u, G := g, "
-                             "IN0 := s); n := LEN(u); y := CONCAT(s, u, 'ab');");
+    const auto t =
+        type_body("i : INT; d : DINT; s : STRING[5]; u : STRING[7]; x : DINT; "
+                  "y : STRING[20]; g : BOOL; n : INT;",
+                  "x := MAX(i, d, 3); y := MIN(s, u); y := SEL(IN1 := u, G := g, "
+                  "IN0 := s); n := LEN(u); y := CONCAT(s, u, 'ab'); y := SEL(g, u, 'a');");
     ASSERT_TRUE(t->front_end->program) << t->errors();
     const types::CallTarget* max = t->program().call_target(t->value(0));
     ASSERT_NE(max, nullptr);
@@ -23,6 +24,7 @@ TEST(TypingCalls, GenericFunctionsTakeTheCommonTypeOfTheirInputs) {
     EXPECT_EQ(t->type_of(2), "STRING[7]"); // formal inputs in any order
     EXPECT_EQ(t->type_of(3), "INT");
     EXPECT_EQ(t->type_of(4), "STRING[14]"); // CONCAT holds every input
+    EXPECT_EQ(t->type_of(5), "STRING[7]");  // the longest input, not the last
 }
 
 TEST(TypingCalls, ConversionsNameTheirSourceAndResult) {

@@ -48,10 +48,20 @@ TEST(TypingLiterals, AConstantIsFoldedWhereItIsUsed) {
     EXPECT_EQ(std::get<std::int64_t>(*t->program().constant_of(t->value(0))), 42);
 }
 
-TEST(TypingLiterals, ALiteralTooLargeForItsTypeIsAnError) {
-    const auto t = type_body("i : INT;", "i := INT#70000;");
+TEST(TypingLiterals, ADirectAddressHasTheTypeOfItsSize) {
+    const auto t =
+        type_body("w : WORD; b : BOOL; d : DWORD;", "w := %IW4; b := %IX0.1; d := %MD8;");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    EXPECT_EQ(t->type_of(0), "WORD");
+    EXPECT_EQ(t->type_of(1), "BOOL");
+    EXPECT_EQ(t->type_of(2), "DWORD");
+}
+
+TEST(TypingLiterals, ALiteralThatDoesNotFitItsContextKeepsItsOwnType) {
+    const auto t = type_body("i : INT;", "i := 70000;");
     EXPECT_FALSE(t->front_end->program);
-    EXPECT_NE(t->errors().find("does not fit INT"), std::string::npos) << t->errors();
+    EXPECT_NE(t->errors().find("a value of type INT is expected, not DINT"), std::string::npos)
+        << t->errors();
 }
 
 } // namespace

@@ -38,6 +38,13 @@ TEST(ReferenceEvaluator, IntegersWrapAtTheirWidthWhereStored) {
     EXPECT_EQ(as_signed(p, "Main.i", 16), 900);
 }
 
+TEST(ReferenceEvaluator, AFunctionsInputIsCutToItsTypeLikeAnyStoredValue) {
+    const auto p = run("a, b : INT := 20000; m : INT; d : DINT;",
+                       "m := MAX(a + b, 5); d := INT_TO_DINT(a + b);");
+    EXPECT_EQ(as_signed(p, "Main.m", 16), 5); // 40000 is -25536 as an INT
+    EXPECT_EQ(as_signed(p, "Main.d", 32), -25536);
+}
+
 TEST(ReferenceEvaluator, NarrowingThenWideningConversionsZeroExtend) {
     const auto p =
         run("d : DINT := -1; ud : UDINT; l, m, n : LINT; u : ULINT; r : LREAL;",
@@ -97,6 +104,12 @@ TEST(ReferenceEvaluator, SubrangeViolationIsAFault) {
     EXPECT_EQ(p.fault(), "value out of subrange in Main at line 3");
 }
 
+TEST(ReferenceEvaluator, AForOverASubrangeEndsAtItsLastValue) {
+    const auto p = run("k : INT(1..10); n : DINT;", "FOR k := 1 TO 10 DO n := n + k; END_FOR;");
+    EXPECT_EQ(p.bits("Main.k"), 10u);
+    EXPECT_EQ(p.bits("Main.n"), 55u);
+}
+
 TEST(ReferenceEvaluator, ShiftsAndRotationsWorkAtTheTypesWidth) {
     const auto p =
         run("a, b, c : BYTE; w : WORD; d : DWORD; l : LWORD; x : BYTE;",
@@ -116,7 +129,7 @@ TEST(ReferenceEvaluator, BitOperationsAndComparisons) {
     const auto p = run("w : WORD := 16#F0F0; a, b : WORD; n : BOOL; lt, mixed, bit : BOOL; "
                        "u : UDINT := 4000000000; i : DINT := -1;",
                        "a := w AND 16#FF00; b := NOT w XOR 16#000F; n := NOT (3 > 2);"
-                       "lt := -1 < 1; mixed := i < u; bit := w.4;");
+                       "lt := -1 < 1; mixed := i < u; bit := w.4; w.0 := TRUE; w.15 := FALSE;");
     EXPECT_EQ(p.bits("Main.a"), 0xF000u);
     EXPECT_EQ(p.bits("Main.b"), 0x0F00u);
     EXPECT_EQ(p.bits("Main.n"), 0u);
@@ -124,6 +137,13 @@ TEST(ReferenceEvaluator, BitOperationsAndComparisons) {
     // DINT and UDINT compare as LINT (figure 11): -1 < 4000000000.
     EXPECT_EQ(p.bits("Main.mixed"), 1u);
     EXPECT_EQ(p.bits("Main.bit"), 1u);
+    EXPECT_EQ(p.bits("Main.w"), 0x70F1u);
+}
+
+TEST(ReferenceEvaluator, ACharIsItsCode) {
+    const auto p = run("c : CHAR; n : USINT;", "c := CHAR#'A'; n := CHAR_TO_USINT(c) + 1;");
+    EXPECT_EQ(p.bits("Main.c"), 65u);
+    EXPECT_EQ(p.bits("Main.n"), 66u);
 }
 
 TEST(ReferenceEvaluator, RealArithmeticIsInTheTypesPrecision) {
@@ -154,6 +174,28 @@ TEST(ReferenceEvaluator, StringFunctionsCountFromOne) {
     EXPECT_EQ(p.string("Main.g"), "Hipplo");
     EXPECT_EQ(p.bits("Main.k"), 3u);
     EXPECT_EQ(p.bits("Main.z"), 0u);
+}
+
+TEST(ReferenceEvaluator, IntegersConvertToTheirDecimalDigits) {
+    const auto p = run("a, b, c : STRING; i : INT := -42; u : ULINT := 18446744073709551615;",
+                       "a := INT_TO_STRING(i); b := ULINT_TO_STRING(u); c := DINT_TO_STRING(0);");
+    EXPECT_EQ(p.string("Main.a"), "-42");
+    EXPECT_EQ(p.string("Main.b"), "18446744073709551615");
+    EXPECT_EQ(p.string("Main.c"), "0");
+}
+
+TEST(ReferenceEvaluator, TimeFunctionsAndTimeOfDayWrappingAtMidnight) {
+    const auto p =
+        run("a : TOD; b : TIME; c : DATE; d : TOD; e : TIME;",
+            "a := ADD_TOD_TIME(TOD#23:00:00, T#2h); b := SUB_DT_DT(DT#2024-01-02-00:00:00, "
+            "DT#2024-01-01-12:00:00); c := DT_TO_DATE(DT#1969-12-31-18:00:00);"
+            "d := DT_TO_TOD(DT#1969-12-31-18:00:00); e := MUL_TIME(T#1500ms, 3);");
+    constexpr std::uint64_t kHour = 3'600'000'000'000;
+    EXPECT_EQ(p.bits("Main.a"), 1 * kHour);
+    EXPECT_EQ(p.bits("Main.b"), 12 * kHour);
+    EXPECT_EQ(p.bits("Main.c"), static_cast<std::uint64_t>(-24 * static_cast<std::int64_t>(kHour)));
+    EXPECT_EQ(p.bits("Main.d"), 18 * kHour);
+    EXPECT_EQ(p.bits("Main.e"), 4'500'000'000u);
 }
 
 TEST(ReferenceEvaluator, AStringIsCutAtItsLength) {
@@ -304,11 +346,49 @@ END_CONFIGURATION
     EXPECT_EQ(p.bits("count"), 6u);
 }
 
+TEST(ReferenceEvaluator, EnFalseSkipsTheCallAndKeepsTheAssignedVariable) {
+    ReferenceProgram p(R"(
+FUNCTION_BLOCK Counter
+  VAR_OUTPUT n : INT; END_VAR
+  n := n + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR c : Counter; go : BOOL; x : INT := 7; y : INT := 7; z : INT; ok1, ok2, ok3 : BOOL := TRUE;
+      s : STRING := 'keep'; END_VAR
+  c(EN := go, ENO => ok1);
+  x := ABS(EN := go, IN := -3, ENO => ok2);
+  z := 10 + ABS(EN := go, IN := -3);
+  s := LEFT(EN := go, IN := 'abc', L := 1);
+  y := ABS(EN := TRUE, IN := -3, ENO => ok3);
+END_PROGRAM
+)");
+    ASSERT_TRUE(p.ok()) << p.errors();
+    ASSERT_TRUE(p.scans(1)) << p.fault();
+    EXPECT_EQ(p.bits("Main.c.n"), 0u);
+    EXPECT_EQ(p.bits("Main.ok1"), 0u);
+    EXPECT_EQ(p.bits("Main.x"), 7u);
+    EXPECT_EQ(p.bits("Main.ok2"), 0u);
+    EXPECT_EQ(p.bits("Main.z"), 10u); // a skipped function gives 0 inside an expression
+    EXPECT_EQ(p.string("Main.s"), "keep");
+    EXPECT_EQ(p.bits("Main.y"), 3u);
+    EXPECT_EQ(p.bits("Main.ok3"), 1u);
+}
+
 TEST(ReferenceEvaluator, RefusesWhatItDoesNotModel) {
     ReferenceProgram p("PROGRAM Main\nVAR p : POINTER TO INT; x : INT; END_VAR\np := ADR(x);\n"
                        "END_PROGRAM\n");
     EXPECT_FALSE(p.ok());
     EXPECT_NE(p.errors().find("not supported by the reference evaluator"), std::string::npos)
+        << p.errors();
+}
+
+TEST(ReferenceEvaluator, RefusesConversionsTheStandardLeavesOpenBeforeRunning) {
+    ReferenceProgram p("PROGRAM Main\nVAR t : TIME; r : REAL; END_VAR\nr := TIME_TO_REAL(t);\n"
+                       "END_PROGRAM\n");
+    EXPECT_FALSE(p.ok());
+    EXPECT_NE(p.errors().find("not supported by the reference evaluator: the conversion "
+                              "TIME_TO_REAL"),
+              std::string::npos)
         << p.errors();
 }
 

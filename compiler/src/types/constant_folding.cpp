@@ -51,7 +51,14 @@ void ExpressionTyper::fold(const ast::Expression& expression, const sema::Type& 
                                      std::is_same_v<T, ast::DateTimeLiteral>) {
                     program_.set_constant(expression, value.nanoseconds);
                 } else if constexpr (std::is_same_v<T, ast::StringLiteral>) {
-                    if (const auto* text = std::get_if<std::string>(&value.value)) {
+                    const auto* text = std::get_if<std::string>(&value.value);
+                    if (text != nullptr && value.type == ast::ElementaryType::Char) {
+                        // A CHAR is its character's code.
+                        program_.set_constant(
+                            expression,
+                            static_cast<std::uint64_t>(
+                                text->empty() ? 0 : static_cast<unsigned char>(text->front())));
+                    } else if (text != nullptr) {
                         program_.set_constant(expression, *text);
                     }
                 }

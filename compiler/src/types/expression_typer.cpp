@@ -99,6 +99,12 @@ void ExpressionTyper::configuration(const ast::Configuration& configuration) {
     sections(configuration.sections);
     for (const ast::Resource& resource : configuration.resources) {
         sections(resource.sections);
+        // Program connections: a source or sink of its own type (checked by code generation).
+        for (const ast::ProgramInstance& instance : resource.programs) {
+            for (const ast::Argument& connection : instance.connections) {
+                type(*connection.value, nullptr);
+            }
+        }
     }
 }
 
@@ -249,7 +255,10 @@ const sema::Type* ExpressionTyper::type(const ast::Expression& expression,
             } else if constexpr (std::is_same_v<T, ast::BinaryExpression>) {
                 return binary(expression, node, expected);
             } else {
-                return fail(expression.range, "a direct address has no type in the typing stage");
+                // 6.5.5: the size prefix is the type (X or none BOOL, B BYTE, W WORD, ...).
+                static constexpr E kBySize[] = {E::Bool, E::Bool,  E::Byte,
+                                                E::Word, E::Dword, E::Lword};
+                return &elementary(kBySize[static_cast<int>(node.address.size)]);
             }
         },
         expression.node);
@@ -321,21 +330,15 @@ const sema::Type* ExpressionTyper::name(const ast::Expression& expression,
     if (symbol == nullptr) {
         return nullptr; // reported by name resolution
     }
-    switch (symbol->kind) {
-    case sema::SymbolKind::Variable:
+    if (symbol->kind == sema::SymbolKind::Variable) {
         return variable_type(*symbol);
-    case sema::SymbolKind::Pou:
-        // Inside a FUNCTION its name is its result variable (6.6.2.2).
-        if (symbol->pou == current_ && symbol->pou->kind == ast::PouKind::Function &&
-            symbol->pou->return_type) {
-            return program_.types().resolve(*symbol->pou->return_type);
-        }
-        return nullptr;
-    case sema::SymbolKind::ProgramInstance:
-        return nullptr;
-    default:
-        return nullptr;
     }
+    // Inside a FUNCTION its name is its result variable (6.6.2.2).
+    if (symbol->kind == sema::SymbolKind::Pou && symbol->pou == current_ &&
+        symbol->pou->kind == ast::PouKind::Function && symbol->pou->return_type) {
+        return program_.types().resolve(*symbol->pou->return_type);
+    }
+    return nullptr; // a type, POU or program instance named on its own
 }
 
 const sema::Type* ExpressionTyper::member(const ast::Expression& expression,
@@ -433,11 +436,12 @@ const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression
             }
             if (result == nullptr) {
                 result = &program_.types().unranged(*type);
-            } else if (const sema::Type* both = common(*result, *type)) {
-                result = both;
             } else if (result->kind == sema::TypeKind::String && type->kind == result->kind &&
                        type->wide == result->wide) {
+                // Strings of any lengths meet in the longest, which holds each of them.
                 result = type->capacity > result->capacity ? type : result;
+            } else if (const sema::Type* both = common(*result, *type)) {
+                result = both;
             } else {
                 diagnostics_.error(
                     range, fmt::format("{} and {} have no common type", result->name, type->name));
@@ -445,7 +449,18 @@ const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression
             }
         }
     }
-    return failed ? nullptr : result;
+    if (failed) {
+        return nullptr;
+    }
+    // A literal typed before a wider one (`5 > 3000000000`) takes the common type after all;
+    // literals have no side effects, so typing one again changes nothing else.
+    for (const ast::Expression* operand : operands) {
+        if (is_untyped_literal(*operand) && numeric_context(result) &&
+            program_.type_of(*operand) != result) {
+            type(*operand, result);
+        }
+    }
+    return result;
 }
 
 const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
@@ -559,23 +574,8 @@ const sema::Type* ExpressionTyper::call(const ast::Expression& expression,
 const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
                                             const ast::CallExpression& node, const ast::Pou& pou,
                                             const sema::Type* instance) {
-    // Formal parameters in declaration order; positional arguments take the inputs and
-    // in-outs in that order (6.6.1.4.2).
-    std::vector<std::pair<const ast::VariableDeclaration*, ast::VarSectionKind>> formals;
+    // Positional arguments take the inputs and in-outs in declaration order (6.6.1.4.2).
     const sema::Type* frame = instance != nullptr ? instance : program_.types().frame(pou);
-    for (const ast::DeclarationSection& section : pou.sections) {
-        const auto* variables = std::get_if<ast::VarSection>(&section);
-        if (variables == nullptr || (variables->kind != ast::VarSectionKind::Input &&
-                                     variables->kind != ast::VarSectionKind::InOut &&
-                                     variables->kind != ast::VarSectionKind::Output)) {
-            continue;
-        }
-        for (const ast::VariableDeclaration& declaration : variables->variables) {
-            for (std::size_t i = 0; i < declaration.names.size(); ++i) {
-                formals.emplace_back(&declaration, variables->kind);
-            }
-        }
-    }
     std::vector<const sema::Field*> positional;
     if (frame != nullptr) {
         for (const sema::Field& field : frame->fields) {

@@ -11,12 +11,14 @@ using compiler::sema::fold_case;
 
 namespace {
 
-bool is_enable(const ast::Argument& argument) {
-    if (!argument.name) {
-        return false;
+/// The EN or ENO argument of a call (6.6.1.2.2); null if it has none.
+const ast::Argument* enable(const ast::CallExpression& node, const char* name) {
+    for (const ast::Argument& argument : node.arguments) {
+        if (argument.name && fold_case(argument.name->name) == name) {
+            return &argument;
+        }
     }
-    const std::string name = fold_case(argument.name->name);
-    return name == "EN" || name == "ENO";
+    return nullptr;
 }
 
 } // namespace
@@ -47,11 +49,28 @@ Value Evaluator::call(const ast::Expression& expression, const ast::CallExpressi
     if (target == nullptr) {
         throw Unsupported("a call the typing stage did not resolve");
     }
-    for (const ast::Argument& argument : node.arguments) {
-        if (is_enable(argument)) {
-            throw Unsupported("EN and ENO");
+    // 6.6.1.2.2, as docs/st-language.md says: with EN FALSE the call is not executed, ENO is
+    // FALSE and the call gives 0 (an empty string); an assignment of it keeps its target.
+    const ast::Argument* en = enable(node, "EN");
+    const ast::Argument* eno = enable(node, "ENO");
+    const bool enabled = en == nullptr || eval(*en->value).bits != 0;
+    Value result;
+    if (enabled) {
+        result = execute(target, node);
+    } else {
+        skipped_ = &expression;
+        if (target->result != nullptr) {
+            result = make(*target->result, nullptr);
         }
     }
+    if (eno != nullptr) {
+        Value& flag = place(*eno->value);
+        flag = store(integer(elementary(ast::ElementaryType::Bool), enabled ? 1 : 0), *flag.type);
+    }
+    return result;
+}
+
+Value Evaluator::execute(const types::CallTarget* target, const ast::CallExpression& node) {
     switch (target->kind) {
     case types::CallKind::Function:
         return pou_call(node, *target->pou, nullptr);
@@ -62,7 +81,8 @@ Value Evaluator::call(const ast::Expression& expression, const ast::CallExpressi
     case types::CallKind::StandardFunction:
         return standard_function(*target, node);
     case types::CallKind::Conversion:
-        return conversion(*target, eval(*types::standard_arguments("TO", node).at(0)->value));
+        return conversion(*target, store(eval(*types::standard_arguments("TO", node).at(0)->value),
+                                         *target->operand));
     }
     throw Unsupported("this call");
 }
@@ -93,6 +113,10 @@ Value Evaluator::pou_call(const ast::CallExpression& node, const ast::Pou& pou, 
     std::vector<const ast::Argument*> outputs;
     std::size_t next = 0;
     for (const ast::Argument& argument : node.arguments) {
+        if (argument.name &&
+            (fold_case(argument.name->name) == "EN" || fold_case(argument.name->name) == "ENO")) {
+            continue; // handled by call()
+        }
         if (argument.kind == ast::Argument::Kind::Output) {
             outputs.push_back(&argument);
             continue;

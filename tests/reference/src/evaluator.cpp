@@ -2,6 +2,7 @@
 
 #include "eposp/compiler/sema/symbol.hpp"
 
+#include <charconv>
 #include <sstream>
 #include <unordered_map>
 
@@ -32,9 +33,6 @@ Evaluator::Evaluator(std::unique_ptr<types::FrontEnd> front_end)
         for (const ast::DeclarationSection& section : unit.global_variable_lists) {
             if (const auto* variables = std::get_if<ast::VarSection>(&section)) {
                 for (const ast::VariableDeclaration& declaration : variables->variables) {
-                    if (declaration.address) {
-                        throw Unsupported("located variables (AT %...)");
-                    }
                     const sema::Type* type = program_.types().resolve(declaration.type);
                     for (const ast::Identifier& name : declaration.names) {
                         Value& global = globals_[fold_case(name.name)] =
@@ -84,9 +82,6 @@ Evaluator::Evaluator(std::unique_ptr<types::FrontEnd> front_end)
             throw Unsupported("VAR_ACCESS");
         }
         for (const ast::VariableDeclaration& declaration : variables->variables) {
-            if (declaration.address) {
-                throw Unsupported("located variables (AT %...)");
-            }
             const sema::Type* type = program_.types().resolve(declaration.type);
             for (const ast::Identifier& name : declaration.names) {
                 Value& global = globals_[fold_case(name.name)] =
@@ -171,9 +166,6 @@ Value Evaluator::make(const sema::Type& type, const ast::Initializer* initialize
             // A standard FB is its interface; its state is the evaluator's own.
             if (is_library(type.pou) && field.section == ast::VarSectionKind::Var) {
                 continue;
-            }
-            if (field.declaration != nullptr && field.declaration->address) {
-                throw Unsupported("located variables (AT %...)");
             }
             value.names.push_back(fold_case(field.name));
             value.elements.push_back(make(*field.type, field.declaration != nullptr
@@ -270,7 +262,20 @@ const Value* Evaluator::find(const std::string& path) const {
                                 return nullptr;
                             }
                             const sema::ArrayDimension& bounds = array.dimensions[dimension++];
-                            const std::int64_t i = std::stoll(index) - bounds.lower;
+                            if (index.find_first_not_of(' ') == std::string::npos) {
+                                return nullptr;
+                            }
+                            std::int64_t i = 0;
+                            const auto [end_of_number, error] =
+                                std::from_chars(index.data() + index.find_first_not_of(' '),
+                                                index.data() + index.size(), i);
+                            if (error != std::errc{} ||
+                                index.find_first_not_of(
+                                    ' ', static_cast<std::size_t>(end_of_number - index.data())) !=
+                                    std::string::npos) {
+                                return nullptr; // not a number
+                            }
+                            i -= bounds.lower;
                             if (i < 0 || i >= bounds.count) {
                                 return nullptr;
                             }

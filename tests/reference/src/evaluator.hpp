@@ -20,7 +20,7 @@ namespace types = compiler::types;
 
 class Evaluator {
 public:
-    /// Lays out every global and program instance of the first task; throws Unsupported for
+    /// Lays out every global and program instance and finds the first task; throws Unsupported for
     /// what it does not model.
     explicit Evaluator(std::unique_ptr<types::FrontEnd> front_end);
 
@@ -55,6 +55,7 @@ private:
 
     // Expressions (expressions.cpp).
     Value eval(const ast::Expression& expression);
+    const sema::Type& type_of(const ast::Expression& expression);
     Value& place(const ast::Expression& expression);
     Value* variable(const ast::Identifier& name);
     Value constant(const types::Constant& constant, const sema::Type& type);
@@ -79,6 +80,8 @@ private:
 
     // Calls (calls.cpp).
     Value call(const ast::Expression& expression, const ast::CallExpression& node);
+    /// The call itself, once EN allows it.
+    Value execute(const types::CallTarget* target, const ast::CallExpression& node);
     /// A user POU, or (`standard` its name) a standard FB modelled in
     /// standard_function_blocks.cpp.
     Value pou_call(const ast::CallExpression& node, const ast::Pou& pou, Value* instance,
@@ -95,13 +98,16 @@ private:
     std::uint64_t steps_ = 0;
     /// Configuration globals and global variable lists, by folded name.
     std::unordered_map<std::string, Value> globals_;
-    /// Program instances by folded path, with the POU each runs.
+    /// Program instances by folded name.
     std::unordered_map<std::string, Value> instances_;
     /// Symbol paths (folded) to the variable: `CONFIG0.G`, `G`, `MAIN`.
     std::unordered_map<std::string, Value*> roots_;
+    /// What the first task runs: each program instance with its PROGRAM, in order.
     std::vector<std::pair<const ast::Pou*, Value*>> task_;
-    Frame* frame_ = nullptr;
-    int line_ = 0;
+    Frame* frame_ = nullptr; ///< the POU being run
+    int line_ = 0;           ///< the line of the statement being run, for fault texts
+    /// The last call that EN skipped: an assignment of it keeps its target.
+    const ast::Expression* skipped_ = nullptr;
 };
 
 } // namespace eposp::reference

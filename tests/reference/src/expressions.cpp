@@ -196,8 +196,16 @@ Value Evaluator::eval(const ast::Expression& expression) {
         expression.node);
 }
 
+const sema::Type& Evaluator::type_of(const ast::Expression& expression) {
+    const sema::Type* type = program_.type_of(expression);
+    if (type == nullptr) {
+        throw Unsupported("an expression the typing stage left untyped");
+    }
+    return *type;
+}
+
 Value Evaluator::unary(const ast::Expression& expression, const ast::UnaryExpression& node) {
-    const sema::Type& type = *program_.type_of(expression);
+    const sema::Type& type = type_of(expression);
     if (node.op == ast::UnaryOperator::Plus) {
         return eval(*node.operand);
     }
@@ -217,7 +225,7 @@ Value Evaluator::unary(const ast::Expression& expression, const ast::UnaryExpres
 
 Value Evaluator::binary(const ast::Expression& expression, const ast::BinaryExpression& node) {
     using Op = ast::BinaryOperator;
-    const sema::Type& type = *program_.type_of(expression);
+    const sema::Type& type = type_of(expression);
     switch (node.op) {
     case Op::Less:
     case Op::Greater:

@@ -110,6 +110,11 @@ float math(const std::string& name, float x) {
     return functions.at(name)(x);
 }
 
+std::int64_t since_midnight(std::int64_t ns) {
+    const std::int64_t r = ns % kNsPerDay;
+    return r < 0 ? r + kNsPerDay : r;
+}
+
 std::int64_t position(const Value& value) {
     return signed_type(*value.type)
                ? value.as_signed()
@@ -127,8 +132,10 @@ Value Evaluator::standard_function(const types::CallTarget& target,
     }
     const sema::Type& result = *target.result;
     const sema::Type* operand = target.operand;
+    // An input is stored into the function's input of the overload's type, so it is cut there
+    // like any stored value, then computed in the operand's working type.
     const auto as = [&](const Value& value) {
-        return widen(value, working(*operand));
+        return widen(store(value, *operand), working(*operand));
     };
     if (name == "MOVE") {
         return in[0];
@@ -264,12 +271,18 @@ Value Evaluator::standard_function(const types::CallTarget& target,
                                                               ? bounds.lower
                                                               : bounds.lower + bounds.count - 1));
     }
-    // Table 30 without the TIME_OF_DAY ones (whether they wrap at midnight is the engines' choice).
+    // Table 30; a TIME_OF_DAY wraps around midnight (vm/README.md, as CODESYS).
+    if (name == "ADD_TOD_TIME" || name == "SUB_TOD_TIME") {
+        const std::uint64_t sum =
+            name == "ADD_TOD_TIME" ? in[0].bits + in[1].bits : in[0].bits - in[1].bits;
+        return integer(result,
+                       static_cast<std::uint64_t>(since_midnight(static_cast<std::int64_t>(sum))));
+    }
     if (name == "ADD_TIME" || name == "ADD_DT_TIME" || name == "CONCAT_DATE_TOD") {
         return integer(result, in[0].bits + in[1].bits);
     }
     if (name == "SUB_TIME" || name == "SUB_DT_TIME" || name == "SUB_DATE_DATE" ||
-        name == "SUB_DT_DT") {
+        name == "SUB_DT_DT" || name == "SUB_TOD_TOD") {
         return integer(result, in[0].bits - in[1].bits);
     }
     if (name == "MUL_TIME" || name == "DIV_TIME") {
@@ -343,26 +356,23 @@ Value Evaluator::string_function(const std::string& name, const std::vector<Valu
     throw Unsupported("the standard function " + name);
 }
 
+// Conversions the standard leaves open (from strings, between REAL and TIME or BOOL) were
+// refused before running (support_check.cpp).
 Value Evaluator::conversion(const types::CallTarget& target, const Value& value) {
     const sema::Type& from = *target.operand;
     const sema::Type& to = *target.result;
     const Shape source = shape_of(from);
     const Shape result = shape_of(to);
-    if (source == Shape::String || result == Shape::String || source == Shape::Unsupported ||
-        result == Shape::Unsupported) {
-        throw Unsupported("conversions to and from strings (" + target.name + ")");
+    if (result == Shape::String && is_decimal(from)) {
+        // An integer's decimal digits, with a sign when negative: the one string form of a
+        // number that leaves nothing to choose.
+        return text(to, signed_type(from) ? std::to_string(value.as_signed())
+                                          : std::to_string(value.bits));
     }
     const bool real_source = source == Shape::Real || source == Shape::Lreal;
     const bool real_result = result == Shape::Real || result == Shape::Lreal;
     if (real_source && real_result) {
         return real(to, value.real);
-    }
-    if (real_source || real_result) {
-        if (sema::is_time_like(from) || sema::is_time_like(to) || to.elementary == E::Bool ||
-            from.elementary == E::Bool) {
-            throw Unsupported("a conversion between REAL and " +
-                              std::string(real_source ? to.name : from.name));
-        }
     }
     if (real_result) {
         return widen(integer(from, value.bits), to);
@@ -395,12 +405,13 @@ Value Evaluator::conversion(const types::CallTarget& target, const Value& value)
     const bool time_source = sema::is_time_like(from);
     const bool time_result = sema::is_time_like(to);
     if (time_source && time_result) {
+        // The day and the time since midnight, also before 1970 (vm/README.md).
         if (from.elementary == E::DateAndTime && to.elementary == E::Date) {
-            return integer(
-                to, static_cast<std::uint64_t>(value.as_signed() - value.as_signed() % kNsPerDay));
+            return integer(to, static_cast<std::uint64_t>(value.as_signed() -
+                                                          since_midnight(value.as_signed())));
         }
         if (from.elementary == E::DateAndTime && to.elementary == E::TimeOfDay) {
-            return integer(to, static_cast<std::uint64_t>(value.as_signed() % kNsPerDay));
+            return integer(to, static_cast<std::uint64_t>(since_midnight(value.as_signed())));
         }
         if ((from.elementary == E::Time || from.elementary == E::Ltime) &&
             (to.elementary == E::Time || to.elementary == E::Ltime)) {

@@ -35,9 +35,21 @@ Evaluator::Flow Evaluator::statement(const ast::Statement& statement) {
         [&](const auto& node) -> Flow {
             using T = std::decay_t<decltype(node)>;
             if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
-                // The value first, then the place it goes (its indices may be changed by a
-                // call in the value, as in the VM's order of evaluation).
+                // The value first, then the place it goes.
+                skipped_ = nullptr;
                 const Value value = eval(*node.value);
+                if (skipped_ == node.value.get()) {
+                    return Flow::Next; // a call EN skipped leaves the target as it was
+                }
+                if (const auto* bit = std::get_if<ast::BitAccessExpression>(&node.target->node)) {
+                    // 6.5.1.2 partial access: one bit of the variable changes.
+                    Value& word = place(*bit->object);
+                    const std::uint64_t mask = std::uint64_t{1} << bit->bit;
+                    word = store(
+                        integer(*word.type, value.bits != 0 ? word.bits | mask : word.bits & ~mask),
+                        *word.type);
+                    return Flow::Next;
+                }
                 Value& target = place(*node.target);
                 target = store(value, *target.type);
                 return Flow::Next;
@@ -130,6 +142,12 @@ Evaluator::Flow Evaluator::for_loop(const ast::ForStatement& node) {
         const Value next = integer(type, control->bits + by.bits);
         if (down ? order(next, *control) > 0 : order(next, *control) < 0) {
             throw Unsupported("a FOR control variable stepping past its type's range");
+        }
+        // A subrange control variable keeps its last value rather than step past its range
+        // (docs/st-language.md); a value inside `to` but outside the range is a fault.
+        const bool passed = down ? order(next, to) < 0 : order(next, to) > 0;
+        if (type.range && !type.range->contains(next.as_signed()) && passed) {
+            return Flow::Next;
         }
         *control = store(next, type);
     }

@@ -12,38 +12,50 @@ namespace types = compiler::types;
 
 namespace {
 
-const std::set<std::string> kFunctions = {"ABS",         "SQRT",
-                                          "LN",          "LOG",
-                                          "EXP",         "SIN",
-                                          "COS",         "TAN",
-                                          "ASIN",        "ACOS",
-                                          "ATAN",        "ATAN2",
-                                          "EXPT",        "MOVE",
-                                          "ADD",         "MUL",
-                                          "SUB",         "DIV",
-                                          "MOD",         "SHL",
-                                          "SHR",         "ROL",
-                                          "ROR",         "AND",
-                                          "OR",          "XOR",
-                                          "NOT",         "SEL",
-                                          "MAX",         "MIN",
-                                          "LIMIT",       "MUX",
-                                          "GT",          "GE",
-                                          "EQ",          "LE",
-                                          "LT",          "NE",
-                                          "LEN",         "LEFT",
-                                          "RIGHT",       "MID",
-                                          "CONCAT",      "INSERT",
-                                          "DELETE",      "REPLACE",
-                                          "FIND",        "LOWER_BOUND",
-                                          "UPPER_BOUND", "ADD_TIME",
-                                          "SUB_TIME",    "MUL_TIME",
-                                          "DIV_TIME",    "ADD_DT_TIME",
-                                          "SUB_DT_TIME", "SUB_DATE_DATE",
-                                          "SUB_DT_DT",   "CONCAT_DATE_TOD"};
+const std::set<std::string> kFunctions = {"ABS",          "SQRT",
+                                          "LN",           "LOG",
+                                          "EXP",          "SIN",
+                                          "COS",          "TAN",
+                                          "ASIN",         "ACOS",
+                                          "ATAN",         "ATAN2",
+                                          "EXPT",         "MOVE",
+                                          "ADD",          "MUL",
+                                          "SUB",          "DIV",
+                                          "MOD",          "SHL",
+                                          "SHR",          "ROL",
+                                          "ROR",          "AND",
+                                          "OR",           "XOR",
+                                          "NOT",          "SEL",
+                                          "MAX",          "MIN",
+                                          "LIMIT",        "MUX",
+                                          "GT",           "GE",
+                                          "EQ",           "LE",
+                                          "LT",           "NE",
+                                          "LEN",          "LEFT",
+                                          "RIGHT",        "MID",
+                                          "CONCAT",       "INSERT",
+                                          "DELETE",       "REPLACE",
+                                          "FIND",         "LOWER_BOUND",
+                                          "UPPER_BOUND",  "ADD_TIME",
+                                          "SUB_TIME",     "MUL_TIME",
+                                          "DIV_TIME",     "ADD_DT_TIME",
+                                          "SUB_DT_TIME",  "SUB_DATE_DATE",
+                                          "SUB_DT_DT",    "CONCAT_DATE_TOD",
+                                          "ADD_TOD_TIME", "SUB_TOD_TIME",
+                                          "SUB_TOD_TOD"};
 
 bool is_modelled(const sema::Type& type) {
     return shape_of(type) != Shape::Unsupported && shape_of(type) != Shape::String;
+}
+
+/// A conversion whose result the standard leaves to the implementation: the evaluator
+/// refuses it.
+bool real_and_time_or_bool(const types::CallTarget& target) {
+    const auto other = [](const sema::Type& type) {
+        return sema::is_time_like(type) || sema::is_bool(type);
+    };
+    return (sema::is_real(*target.operand) && other(*target.result)) ||
+           (sema::is_real(*target.result) && other(*target.operand));
 }
 
 class Checker {
@@ -57,8 +69,10 @@ public:
                 throw Unsupported("VAR_ACCESS");
             }
             for (const ast::VariableDeclaration& declaration : variables->variables) {
-                if (declaration.address) {
-                    throw Unsupported("located variables (AT %...)");
+                // Outputs and markers are plain memory in a simulation; inputs are the host's.
+                if (declaration.address &&
+                    declaration.address->area == ast::DirectAddress::Area::Input) {
+                    throw Unsupported("variables located at inputs (AT %I...)");
                 }
             }
         }
@@ -152,18 +166,22 @@ private:
             !kFunctions.contains(target->name)) {
             throw Unsupported("the standard function " + target->name);
         }
-        if (target->kind == types::CallKind::Conversion &&
+        const bool decimal = target->kind == types::CallKind::Conversion &&
+                             shape_of(*target->result) == Shape::String &&
+                             is_decimal(*target->operand);
+        if (target->kind == types::CallKind::Conversion && !decimal &&
             (!is_modelled(*target->operand) || !is_modelled(*target->result))) {
-            throw Unsupported("the conversion " + target->name + " (strings are not modelled)");
+            throw Unsupported("the conversion " + target->name +
+                              " (only integers convert to strings)");
+        }
+        if (target->kind == types::CallKind::Conversion && real_and_time_or_bool(*target)) {
+            throw Unsupported("the conversion " + target->name +
+                              " (between REAL and TIME, a date or BOOL)");
         }
         if (target->kind == types::CallKind::StandardFunctionBlock && target->name == "RTC") {
             throw Unsupported("the standard function block RTC");
         }
         for (const ast::Argument& argument : node.arguments) {
-            if (argument.name && (sema::fold_case(argument.name->name) == "EN" ||
-                                  sema::fold_case(argument.name->name) == "ENO")) {
-                throw Unsupported("EN and ENO");
-            }
             this->expression(*argument.value);
         }
     }
@@ -187,6 +205,12 @@ void check_supported(const types::FrontEnd& front_end) {
         for (const ast::Pou& pou : unit.pous) {
             checker.sections(pou.sections);
             checker.statements(pou.body);
+        }
+        for (const ast::Configuration& configuration : unit.configurations) {
+            checker.sections(configuration.sections);
+            for (const ast::Resource& resource : configuration.resources) {
+                checker.sections(resource.sections);
+            }
         }
     }
 }

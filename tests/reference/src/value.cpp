@@ -56,6 +56,10 @@ bool signed_type(const sema::Type& type) {
     return sema::is_signed(type) || sema::is_time_like(type);
 }
 
+bool is_decimal(const sema::Type& type) {
+    return type.kind == sema::TypeKind::Elementary && sema::is_integer(type);
+}
+
 std::uint64_t wrap(std::uint64_t raw, unsigned width, bool is_signed) {
     if (width >= 64) {
         return raw;

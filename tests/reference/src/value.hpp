@@ -50,6 +50,8 @@ Shape shape_of(const sema::Type& type);
 /// The width in bits of an integer-shaped type and whether it is signed.
 unsigned width_of(const sema::Type& type);
 bool signed_type(const sema::Type& type);
+/// ANY_INT: the types whose `_TO_STRING` is their decimal digits.
+bool is_decimal(const sema::Type& type);
 /// `raw` cut to `width` bits and extended back to 64 the way a type of that width holds it.
 std::uint64_t wrap(std::uint64_t raw, unsigned width, bool is_signed);
 /// `value` as the integer type `type` holds it (wrapping at its width).
