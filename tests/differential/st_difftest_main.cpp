@@ -5,6 +5,7 @@
 //   st_difftest --seeds N [--from S]     N programs from seed S (default 1)
 //   st_difftest --minutes M [--from S]   as many as fit in M minutes
 //   st_difftest --print SEED             the program of one seed, to reproduce by hand
+//   st_difftest --file PROGRAM.st        one program (a reduced one, edited) on every executor
 //   options: --scans K (4), --no-reduce, --ties (real-to-integer conversions of ties),
 //            --narrow-promotion (GeneratorOptions::narrow_promotion),
 //            --without FEATURE (reals strings arrays structs loops case in-out
@@ -16,9 +17,11 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <random>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -30,6 +33,7 @@ struct Arguments {
     std::uint64_t seeds = 0;
     double minutes = 0;
     std::optional<std::uint64_t> print;
+    std::string file;
     int scans = 4;
     bool reduce = true;
     GeneratorOptions options;
@@ -89,6 +93,8 @@ std::optional<Arguments> parse(int argc, char** argv) {
             arguments.minutes = std::stod(argv[++i]);
         } else if (flag == "--print" && has_value) {
             arguments.print = std::stoull(argv[++i]);
+        } else if (flag == "--file" && has_value) {
+            arguments.file = argv[++i];
         } else if (flag == "--scans" && has_value) {
             arguments.scans = std::stoi(argv[++i]);
         } else if (flag == "--no-reduce") {
@@ -105,7 +111,8 @@ std::optional<Arguments> parse(int argc, char** argv) {
             return std::nullopt;
         }
     }
-    if (arguments.seeds == 0 && arguments.minutes <= 0 && !arguments.print) {
+    if (arguments.seeds == 0 && arguments.minutes <= 0 && !arguments.print &&
+        arguments.file.empty()) {
         return std::nullopt;
     }
     return arguments;
@@ -117,7 +124,8 @@ int main(int argc, char** argv) {
     const auto arguments = parse(argc, argv);
     if (!arguments) {
         std::cerr
-            << "usage: st_difftest (--seeds N | --minutes M | --print SEED) [--from S] "
+            << "usage: st_difftest (--seeds N | --minutes M | --print SEED | --file PATH) [--from "
+               "S] "
                "[--scans K] [--no-reduce] [--ties] [--narrow-promotion] [--without FEATURE]...\n";
         return 2;
     }
@@ -127,6 +135,14 @@ int main(int argc, char** argv) {
         return 0;
     }
     auto executors = all_executors();
+    if (!arguments->file.empty()) {
+        std::ifstream in(arguments->file);
+        std::ostringstream source;
+        source << in.rdbuf();
+        const Verdict verdict = compare(executors.pointers(), source.str(), arguments->scans);
+        std::cout << verdict.describe();
+        return verdict.outcome == Verdict::Outcome::Agree ? 0 : 1;
+    }
     const auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
