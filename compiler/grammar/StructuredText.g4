@@ -23,7 +23,7 @@ libraryElement
 typeDeclarationBlock : TYPE typeDeclaration+ END_TYPE ;
 
 // The ';' after a type declaration may be left out, as CODESYS allows (`END_STRUCT END_TYPE`).
-typeDeclaration : identifier ':' typeSpec (':=' initializer)? ';'? ;
+typeDeclaration : identifier ':' typeSpec (':=' declarationInitializer)? ';'? ;
 
 functionDeclaration
     : FUNCTION identifier (':' typeSpec)? varSection* statementList END_FUNCTION ;
@@ -66,7 +66,15 @@ varSection
 varQualifier : CONSTANT | RETAIN | NON_RETAIN | PERSISTENT ;
 
 varDeclaration
-    : identifier (',' identifier)* (AT DIRECT_ADDRESS)? ':' typeSpec (':=' initializer)? ';' ;
+    : identifier (',' identifier)* (AT DIRECT_ADDRESS)? ':' typeSpec
+      (':=' declarationInitializer)? ';' ;
+
+// CODESYS V2 writes an array's initial values without brackets (`:= 1, 3, 7`), only here where
+// the ';' ends the list.
+declarationInitializer
+    : initializer                                                           # bracketedInitializer
+    | arrayInitElement (',' arrayInitElement)+                              # bareArrayInitializer
+    ;
 
 accessDeclaration
     : identifier ':' accessPath ':' typeSpec direction=(READ_ONLY | READ_WRITE)? ';' ;
@@ -198,7 +206,8 @@ literal
     | TYPED_LITERAL
     ;
 
-identifier : IDENTIFIER ;
+// ON is a keyword only inside a RESOURCE declaration; elsewhere it is a name, as in CODESYS.
+identifier : IDENTIFIER | ON ;
 
 // ---------------------------------------------------------------------------------------------
 // Lexer
@@ -295,7 +304,8 @@ TYPED_LITERAL
     : NAME '#' ([+-]? DIGITS ('.' DIGITS EXPONENT? | '#' [0-9a-zA-Z_]+)? | NAME | STRING_LITERAL
       | WSTRING_LITERAL)
     ;
-REAL_LITERAL : DIGITS '.' DIGITS EXPONENT? ;
+// `1E37` without a point is a CODESYS form; the AST builder warns about it.
+REAL_LITERAL : DIGITS '.' DIGITS EXPONENT? | DIGITS EXPONENT ;
 BASED_INTEGER : DIGITS '#' [0-9a-zA-Z_]+ ;
 INTEGER : DIGITS ;
 STRING_LITERAL : '\'' ('$' . | ~['$\r\n])* '\'' ;

@@ -39,6 +39,9 @@ public:
     ast::VariableDeclaration variable(P::VarDeclarationContext& context);
     std::optional<ast::DirectAddress> direct_address(antlr4::Token& token);
     ast::InitializerPtr initializer(P::InitializerContext* context);
+    ast::InitializerPtr declaration_initializer(P::DeclarationInitializerContext* context);
+    std::vector<ast::ArrayInitElement>
+    array_elements(const std::vector<P::ArrayInitElementContext*>& contexts);
 
     // ast_builder_types.cpp
     ast::TypeSpec type_spec(P::TypeSpecContext& context);
@@ -57,6 +60,7 @@ public:
     SourceRange range(antlr4::ParserRuleContext& context) const;
     SourceRange range(antlr4::Token& token) const;
     void error(const SourceRange& range, std::string message);
+    void warning(const SourceRange& range, std::string message);
 
 private:
     template <typename Operand>
@@ -73,6 +77,7 @@ private:
 
     FileId file_;
     Diagnostics& diagnostics_;
+    bool warned_about_on_ = false;
 };
 
 } // namespace eposp::compiler

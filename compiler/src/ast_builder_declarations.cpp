@@ -86,7 +86,7 @@ void AstBuilder::global_variable_list(P::VarSectionContext& context,
 
 ast::TypeDeclaration AstBuilder::type_declaration(P::TypeDeclarationContext& context) {
     return {identifier(*context.identifier()), type_spec(*context.typeSpec()),
-            initializer(context.initializer()), range(context)};
+            declaration_initializer(context.declarationInitializer()), range(context)};
 }
 
 ast::Pou AstBuilder::function(P::FunctionDeclarationContext& context) {
@@ -261,7 +261,7 @@ ast::VariableDeclaration AstBuilder::variable(P::VarDeclarationContext& context)
     ast::VariableDeclaration result{{},
                                     std::nullopt,
                                     type_spec(*context.typeSpec()),
-                                    initializer(context.initializer()),
+                                    declaration_initializer(context.declarationInitializer()),
                                     range(context)};
     for (P::IdentifierContext* name : context.identifier()) {
         result.names.push_back(identifier(*name));
@@ -321,14 +321,7 @@ ast::InitializerPtr AstBuilder::initializer(P::InitializerContext* context) {
     auto result = std::make_unique<ast::Initializer>();
     result->range = range(*context);
     if (auto* array = dynamic_cast<P::ArrayInitializerContext*>(context)) {
-        std::vector<ast::ArrayInitElement> elements;
-        for (P::ArrayInitElementContext* element : array->arrayInitElement()) {
-            ast::ExpressionPtr count = element->INTEGER() != nullptr
-                                           ? literal_expression(*element->INTEGER()->getSymbol())
-                                           : nullptr;
-            elements.push_back({std::move(count), initializer(element->initializer())});
-        }
-        result->value = std::move(elements);
+        result->value = array_elements(array->arrayInitElement());
     } else if (auto* structure = dynamic_cast<P::StructInitializerContext*>(context)) {
         std::vector<ast::StructInitElement> elements;
         for (P::StructInitElementContext* element : structure->structInitElement()) {
@@ -341,6 +334,34 @@ ast::InitializerPtr AstBuilder::initializer(P::InitializerContext* context) {
             expression(*dynamic_cast<P::ExpressionInitializerContext&>(*context).expression());
     }
     return result;
+}
+
+ast::InitializerPtr AstBuilder::declaration_initializer(P::DeclarationInitializerContext* context) {
+    if (auto* bracketed = dynamic_cast<P::BracketedInitializerContext*>(context)) {
+        return initializer(bracketed->initializer());
+    }
+    auto* bare = dynamic_cast<P::BareArrayInitializerContext*>(context);
+    if (bare == nullptr) {
+        return nullptr;
+    }
+    auto result = std::make_unique<ast::Initializer>();
+    result->range = range(*bare);
+    result->value = array_elements(bare->arrayInitElement());
+    warning(result->range, "array initial values without brackets are a CODESYS V2 form; IEC "
+                           "61131-3 (6.4.4.5) writes them in brackets: [1, 2, 3]");
+    return result;
+}
+
+std::vector<ast::ArrayInitElement>
+AstBuilder::array_elements(const std::vector<P::ArrayInitElementContext*>& contexts) {
+    std::vector<ast::ArrayInitElement> elements;
+    for (P::ArrayInitElementContext* element : contexts) {
+        ast::ExpressionPtr count = element->INTEGER() != nullptr
+                                       ? literal_expression(*element->INTEGER()->getSymbol())
+                                       : nullptr;
+        elements.push_back({std::move(count), initializer(element->initializer())});
+    }
+    return elements;
 }
 
 } // namespace eposp::compiler

@@ -242,6 +242,11 @@ ast::ExpressionPtr AstBuilder::literal_expression(antlr4::Token& token) {
         error(where, decoded.error());
         return literal(ast::IntegerLiteral{}); // placeholder; the unit has errors anyway
     }
+    if (token.getType() == P::REAL_LITERAL && token.getText().find('.') == std::string::npos) {
+        warning(where, "real literal '" + token.getText() +
+                           "' has no decimal point, which IEC 61131-3 (6.3.2) requires; "
+                           "accepted as CODESYS does");
+    }
     if (auto* enum_value = std::get_if<ast::EnumValueLiteral>(&*decoded)) {
         // Names are ASCII, so their lengths in bytes are lengths in columns.
         const auto prefix = static_cast<std::uint32_t>(enum_value->type_name.name.size());
@@ -280,6 +285,12 @@ std::vector<ast::Argument> AstBuilder::arguments(P::ArgumentListContext* context
 }
 
 ast::Identifier AstBuilder::identifier(P::IdentifierContext& context) {
+    if (context.ON() != nullptr && !warned_about_on_) {
+        warned_about_on_ = true; // once per file: the point is the form, not each use
+        warning(range(context), "'" + context.getText() +
+                                    "' is a keyword of IEC 61131-3 (RESOURCE ... ON); accepted "
+                                    "as a name, as CODESYS does");
+    }
     return {context.getText(), range(context)};
 }
 
@@ -298,6 +309,10 @@ SourceRange AstBuilder::range(antlr4::Token& token) const {
 
 void AstBuilder::error(const SourceRange& where, std::string message) {
     diagnostics_.error(where, std::move(message));
+}
+
+void AstBuilder::warning(const SourceRange& where, std::string message) {
+    diagnostics_.warning(where, std::move(message));
 }
 
 } // namespace eposp::compiler

@@ -1,5 +1,6 @@
 #include "literal_decoder.hpp"
 
+#include "eposp/vm/stdlib/string_layout.hpp"
 #include "utf8.hpp"
 
 #include <algorithm>
@@ -416,6 +417,12 @@ Result<ast::Literal> decode_string(std::string_view text, bool wide) {
         const Result<std::uint64_t> code = parse_digits(hex, 16);
         append(static_cast<char32_t>(*code));
         i += 1 + hex_digits;
+    }
+    if (const std::size_t length = wide ? wide_value.size() : narrow.size();
+        length > vm::stdlib::kMaxStringCapacity) {
+        return Error{"a string literal of " + std::to_string(length) +
+                     " characters is longer than the longest string (" +
+                     std::to_string(vm::stdlib::kMaxStringCapacity) + " characters)"};
     }
     if (wide) {
         return ast::Literal{ast::StringLiteral{std::move(wide_value), ElementaryType::Wstring}};

@@ -22,23 +22,20 @@ namespace {
 using generated::StructuredTextLexer;
 using generated::StructuredTextParser;
 
-// The ANTLR runtime rejects invalid UTF-8 with an exception. Each invalid byte becomes a space
-// (one byte, one column, so positions stay true) and the first one is reported.
-std::string valid_utf8(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
-    std::string text = sources.text(file);
-    bool reported = false;
+// The ANTLR runtime needs UTF-8. A file that is not, such as one exported from CODESYS with
+// a 'ü' in a comment, is read as Windows-1252, one character a byte (so columns stay true),
+// with one warning where the first byte that is not UTF-8 is.
+std::string utf8_text(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
+    const std::string& text = sources.text(file);
     std::uint32_t line = 1;
     std::uint32_t column = 1;
     for (std::size_t position = 0; position < text.size();) {
-        const std::size_t start = position;
         const std::optional<char32_t> code_point = utf8::decode(text, position);
         if (!code_point) {
-            if (!reported) {
-                diagnostics.error({file, {line, column}, {line, column}},
-                                  "the file is not valid UTF-8 text here");
-                reported = true;
-            }
-            text[start] = ' ';
+            diagnostics.warning({file, {line, column}, {line, column}},
+                                "the file is not valid UTF-8 text here; it is read as "
+                                "Windows-1252, as CODESYS exports it");
+            return utf8::from_windows_1252(text);
         }
         if (code_point == U'\n') {
             ++line;
@@ -104,7 +101,7 @@ StructuredTextParser::CompilationUnitContext* parse_two_stage(StructuredTextPars
 
 ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
     const std::size_t errors_before = diagnostics.error_count();
-    const std::string text = valid_utf8(sources, file, diagnostics);
+    const std::string text = utf8_text(sources, file, diagnostics);
     antlr4::ANTLRInputStream input(text);
     StructuredTextLexer lexer(&input);
     lexer.removeErrorListeners(); // INVALID_CHARACTER leaves the lexer nothing to report

@@ -121,6 +121,10 @@ std::string describe_expected(const antlr4::dfa::Vocabulary& vocabulary,
         if (token == static_cast<ssize_t>(antlr4::Token::EPSILON)) {
             continue;
         }
+        if (type == StructuredTextParser::ON &&
+            expected.contains(static_cast<ssize_t>(StructuredTextParser::IDENTIFIER))) {
+            continue; // ON is a name outside a RESOURCE declaration: "a name" says it
+        }
         items.push_back(expected_name(vocabulary, type));
     }
     if (items.empty() || items.size() > kMaxListed) {

@@ -49,6 +49,35 @@ TEST(Robustness, HandPickedGarbageIsRejectedOrAcceptedCleanly) {
     }
 }
 
+// Each once crashed the compiler (exit 139 or 134); each now gives diagnostics or an image the
+// loader accepts.
+TEST(Robustness, InputsThatOnceCrashedTheCompilerCompileOrFailCleanly) {
+    std::string nested = "TYPE S0 : STRUCT a, b : LWORD; END_STRUCT; END_TYPE\n";
+    for (int level = 1; level <= 40; ++level) {
+        nested += "TYPE S" + std::to_string(level) + " : STRUCT a, b : S" +
+                  std::to_string(level - 1) + "; END_STRUCT; END_TYPE\n";
+    }
+    const std::string main = "PROGRAM Main VAR a : A; END_VAR END_PROGRAM";
+    const std::string inputs[] = {
+        "FUNCTION_BLOCK A VAR b : A; END_VAR END_FUNCTION_BLOCK " + main,
+        "FUNCTION_BLOCK A VAR b : ARRAY[0..3] OF A; END_VAR END_FUNCTION_BLOCK " + main,
+        "FUNCTION_BLOCK A VAR b : B; END_VAR END_FUNCTION_BLOCK "
+        "FUNCTION_BLOCK B VAR a : A; END_VAR END_FUNCTION_BLOCK " +
+            main,
+        "FUNCTION_BLOCK A EXTENDS A END_FUNCTION_BLOCK " + main,
+        "PROGRAM Main VAR a, b : ARRAY[0..40000000] OF DINT; END_VAR a[1] := 1; END_PROGRAM",
+        "PROGRAM Main VAR a, b : ARRAY[0..10000000] OF DINT; END_VAR a[1] := b[2]; END_PROGRAM",
+        nested + "PROGRAM Main VAR s : S40; END_VAR s.a.a.a.a.a := s.b.b.b.b.b; END_PROGRAM",
+        "PROGRAM Main VAR s : STRING; END_VAR s := '" + std::string(65536, 'x') + "'; END_PROGRAM",
+        "TYPE Node : STRUCT next : POINTER TO Node; END_STRUCT; END_TYPE "
+        "PROGRAM Main VAR n : Node; END_VAR n.next := ADR(n); END_PROGRAM",
+        "PROGRAM Main VAR x : DINT; END_VAR x := 1 / 0; END_PROGRAM",
+    };
+    for (const std::string& input : inputs) {
+        EXPECT_EQ(fuzz_one(input), 0) << input.substr(0, 200);
+    }
+}
+
 TEST(Robustness, RandomTokenSoupNeverCrashes) {
     const char* pieces[] = {
         "PROGRAM",    "END_PROGRAM", "IF",  "THEN", "END_IF",  "(",       ")",     "[",
@@ -114,7 +143,9 @@ TEST(Robustness, InvalidUtf8IsReportedWhereItIs) {
     const test::Parsed parsed = parse_text("PROGRAM P\n  x := 1; \xc3\x28\nEND_PROGRAM\n");
     ASSERT_FALSE(parsed.diagnostics.all().empty());
     const Diagnostic& first = parsed.diagnostics.all().front();
-    EXPECT_EQ(first.message, "the file is not valid UTF-8 text here");
+    EXPECT_EQ(first.message, "the file is not valid UTF-8 text here; it is read as Windows-1252, "
+                             "as CODESYS exports it");
+    EXPECT_EQ(first.severity, Severity::Warning);
     EXPECT_EQ(first.range.begin, (SourcePosition{2, 11}));
 }
 

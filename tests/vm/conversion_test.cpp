@@ -39,14 +39,15 @@ TEST_P(Conversion, FollowsIecRules) {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 INSTANTIATE_TEST_SUITE_P(
-    RealToIntegerRoundsHalfAwayFromZero, Conversion,
+    RealToIntegerRoundsTiesToEven, Conversion,
     ::testing::Values(
-        ConversionCase{"REAL_TO_INT_2_5", Opcode::CvtF32I16, bits(2.5F), 3, 2},
+        ConversionCase{"REAL_TO_INT_2_5", Opcode::CvtF32I16, bits(2.5F), 2, 2},
         ConversionCase{"REAL_TO_INT_minus2_5", Opcode::CvtF32I16, bits(-2.5F),
-                       bits(std::int16_t{-3}), 2},
+                       bits(std::int16_t{-2}), 2},
         ConversionCase{"REAL_TO_INT_1_4", Opcode::CvtF32I16, bits(1.4F), 1, 2},
         ConversionCase{"LREAL_TO_DINT_minus1_6", Opcode::CvtF64I32, bits(-1.6), bits(-2), 4},
-        ConversionCase{"LREAL_TO_DINT_0_5", Opcode::CvtF64I32, bits(0.5), 1, 4},
+        ConversionCase{"LREAL_TO_DINT_0_5", Opcode::CvtF64I32, bits(0.5), 0, 4},
+        ConversionCase{"LREAL_TO_DINT_3_5", Opcode::CvtF64I32, bits(3.5), 4, 4},
         ConversionCase{"LREAL_TO_SINT_saturates_high", Opcode::CvtF64I8, bits(300.0), 127, 1},
         ConversionCase{"LREAL_TO_SINT_saturates_low", Opcode::CvtF64I8, bits(-300.0), 0x80, 1},
         ConversionCase{"LREAL_TO_UINT_negative_is_0", Opcode::CvtF64U16, bits(-5.0), 0, 2},

@@ -129,8 +129,9 @@ To saturate(From integral) {
 }
 
 /// IEC 61131-3 type conversion (*_TO_*): integers wrap modulo 2^n, anything to BOOL is <> 0,
-/// BOOL is 0 or 1, a real to an integer rounds to nearest with halves away from zero
-/// (IEC 61131-3 3rd ed. 6.6.2.5.6: REAL_TO_INT(2.5) = 3, (-2.5) = -3) and saturates.
+/// BOOL is 0 or 1, a real to an integer rounds to nearest with ties to even, as IEC 60559 does
+/// (IEC 61131-3 3rd ed. 6.6.2.5.6: REAL_TO_INT(2.5) = 2, (3.5) = 4, (-2.5) = -2) and saturates.
+/// nearbyint rounds so in the default rounding mode, which nothing here changes.
 template <typename To, typename From>
 To convert(From x) {
     if constexpr (std::is_same_v<From, BoolByte>) {
@@ -138,7 +139,7 @@ To convert(From x) {
     } else if constexpr (std::is_same_v<To, BoolByte>) {
         return static_cast<BoolByte>(x != From{0} ? 1 : 0);
     } else if constexpr (std::is_floating_point_v<From> && std::is_integral_v<To>) {
-        return saturate<To>(std::round(x));
+        return saturate<To>(std::nearbyint(x));
     } else {
         return static_cast<To>(x);
     }

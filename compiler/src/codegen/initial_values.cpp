@@ -77,6 +77,26 @@ std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) 
     return bytes;
 }
 
+void ProgramGenerator::warn_if_cut(const ast::Expression& expression, const sema::Type& target) {
+    const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
+    const auto* text =
+        literal != nullptr ? std::get_if<ast::StringLiteral>(&literal->value) : nullptr;
+    if (text == nullptr || target.kind != sema::TypeKind::String) {
+        return;
+    }
+    const auto* narrow = std::get_if<std::string>(&text->value);
+    if (target.wide != (narrow == nullptr)) {
+        return; // a type mismatch, reported as such
+    }
+    const std::size_t length =
+        narrow != nullptr ? narrow->size() : std::get<std::u16string>(text->value).size();
+    if (length > target.capacity) {
+        diagnostics_.warning(expression.range,
+                             fmt::format("this string of {} characters is cut to the {} of {}",
+                                         length, target.capacity, target.name));
+    }
+}
+
 std::optional<std::vector<std::uint8_t>>
 ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type) {
     const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
@@ -264,6 +284,7 @@ void ProgramGenerator::apply_initializer(const sema::Type& type,
             return;
         }
         if (const auto value = constant_value(**expression, type)) {
+            warn_if_cut(**expression, type);
             std::copy(value->begin(), value->end(), bytes.begin());
         } else {
             diagnostics_.error((*expression)->range,

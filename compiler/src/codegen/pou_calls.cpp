@@ -140,6 +140,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                     b.field->type->kind == sema::TypeKind::String)) {
             const Operand slot = temp(*b.field->type);
             const Destination into{slot, b.field->type};
+            program_.warn_if_cut(*b.argument->value, *b.field->type);
             b.value = value_as(*b.argument->value, *b.field->type, &into);
             if (b.value) {
                 move(slot, *b.field->type, *b.value);
@@ -226,6 +227,7 @@ std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sem
             error(argument.range, fmt::format("bad argument for '{}'", function.name.name));
             return std::nullopt;
         }
+        program_.warn_if_cut(*argument.value, *field->type);
         const auto value = value_as(*argument.value, *field->type);
         if (!value) {
             return std::nullopt;
@@ -281,6 +283,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             }
             continue;
         }
+        program_.warn_if_cut(*argument.value, *field->type);
         if (slot.kind == Place::Kind::Direct) {
             const Destination into{slot.operand, field->type};
             if (const auto value = value_as(*argument.value, *field->type, &into)) {

@@ -63,11 +63,19 @@ std::optional<Place> PouGenerator::conformant_element(const Place& array,
     const sema::Type& dint = types_.elementary(ast::ElementaryType::Dint);
     Operand linear{};
     for (std::size_t d = 0; d < node.indices.size(); ++d) {
-        const auto index = index_value(*node.indices[d]);
+        const Operand bounds = dimension_bounds(array, d);
+        // The bounds are known only when running: any lower bound may be negative.
+        const auto index = index_value(*node.indices[d], true, [&] {
+            const sema::Type& lint = types_.elementary(ast::ElementaryType::Lint);
+            const Operand lower = temp(lint);
+            const Operand count = temp(lint);
+            emit(Opcode::CvtI32I64, lower, bounds);
+            emit(Opcode::CvtU32I64, count, shifted(bounds, 4));
+            return std::pair(lower, count);
+        });
         if (!index) {
             return std::nullopt;
         }
-        const Operand bounds = dimension_bounds(array, d);
         const Operand term = temp(dint);
         emit(Opcode::IdxDim, term, bounds, index->operand);
         if (d == 0) {

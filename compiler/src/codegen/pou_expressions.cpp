@@ -175,8 +175,8 @@ PouGenerator::displaced_index(const ast::Expression& index, std::int64_t lower) 
                         static_cast<std::int32_t>(static_cast<std::uint32_t>(moved)), 4};
 }
 
-std::optional<PouGenerator::ElementIndex> PouGenerator::element_index(const ast::Expression& index,
-                                                                      std::int64_t lower) {
+std::optional<PouGenerator::ElementIndex>
+PouGenerator::element_index(const ast::Expression& index, std::int64_t lower, std::uint32_t count) {
     if (auto displaced = displaced_index(index, lower)) {
         return displaced;
     }
@@ -185,7 +185,14 @@ std::optional<PouGenerator::ElementIndex> PouGenerator::element_index(const ast:
         return std::nullopt;
     }
     const auto bound = static_cast<std::int32_t>(lower);
-    // An INT indexes as it is; a UDINT has the DINT's bits, so the modular check is the same.
+    if (wide_index(*value->type, lower < 0)) {
+        const sema::Type& lint = types_.elementary(E::Lint);
+        return ElementIndex{
+            dint_index(*value, integer_constant(lint, lower), integer_constant(lint, count)), bound,
+            4};
+    }
+    // An INT indexes as it is; a UDINT has the DINT's bits, so the modular check is the same
+    // where no index is negative.
     if (value->type->kind != sema::TypeKind::Enum) {
         switch (sema::scalar_of(*value->type)) {
         case vm::Scalar::I16:
@@ -248,7 +255,8 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     const bool one = type.dimensions.size() == 1;
     std::optional<ElementIndex> single;
     if (one) {
-        single = element_index(*node.indices[0], type.dimensions[0].lower);
+        single =
+            element_index(*node.indices[0], type.dimensions[0].lower, type.dimensions[0].count);
         if (!single) {
             return std::nullopt;
         }
@@ -258,11 +266,15 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     // ARRAY[0..2, 0..2] is out of range, not m[1, 2].
     Operand linear = one ? single->operand : Operand{};
     for (std::size_t d = 0; !one && d < node.indices.size(); ++d) {
-        const auto value = index_value(*node.indices[d]);
+        const auto& dimension = type.dimensions[d];
+        const auto value = index_value(*node.indices[d], dimension.lower < 0, [&] {
+            const sema::Type& lint = types_.elementary(E::Lint);
+            return std::pair(integer_constant(lint, dimension.lower),
+                             integer_constant(lint, dimension.count));
+        });
         if (!value) {
             return std::nullopt;
         }
-        const auto& dimension = type.dimensions[d];
         const Operand term = temp(dint);
         emit(Opcode::IdxDim, term, dimension_constant(dimension.lower, dimension.count),
              value->operand);
@@ -305,10 +317,16 @@ std::optional<Value> PouGenerator::integer_index(const ast::Expression& expressi
     return value;
 }
 
-std::optional<Value> PouGenerator::index_value(const ast::Expression& expression) {
+std::optional<Value>
+PouGenerator::index_value(const ast::Expression& expression, bool negative_lower,
+                          const std::function<std::pair<Operand, Operand>()>& bounds) {
     const auto value = integer_index(expression);
     if (!value) {
         return std::nullopt;
+    }
+    if (wide_index(*value->type, negative_lower)) {
+        const auto [lower, count] = bounds();
+        return Value{dint_index(*value, lower, count), &types_.elementary(E::Dint)};
     }
     return Value{dint_operand(*value), &types_.elementary(E::Dint)};
 }
@@ -714,6 +732,9 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
     const bool arithmetic = node.op == Op::Add || node.op == Op::Subtract ||
                             node.op == Op::Multiply || node.op == Op::Divide ||
                             node.op == Op::Modulo;
+    if (!check_divisor(node.op, *node.right)) {
+        return std::nullopt;
+    }
     if (node.op == Op::Power) {
         const sema::Type& lreal = types_.elementary(E::Lreal);
         const auto base = value_as(*node.left, lreal);
@@ -868,6 +889,21 @@ std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
     call_native(std::string(multiply ? "MUL_TIME" : "DIV_TIME") + (real ? "_LREAL" : ""), signature,
                 {time, *converted});
     return native_result(signature, *time.type, dest);
+}
+
+bool PouGenerator::check_divisor(ast::BinaryOperator op, const ast::Expression& divisor) {
+    if (op != ast::BinaryOperator::Divide && op != ast::BinaryOperator::Modulo) {
+        return true;
+    }
+    const auto* literal = std::get_if<ast::LiteralExpression>(&divisor.node);
+    const auto* real =
+        literal != nullptr ? std::get_if<ast::RealLiteral>(&literal->value) : nullptr;
+    if ((real != nullptr && real->value == 0.0) || types_.fold_integer(divisor) == 0) {
+        error(divisor.range,
+              op == ast::BinaryOperator::Divide ? "division by zero" : "MOD by zero");
+        return false;
+    }
+    return true;
 }
 
 std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,

@@ -121,15 +121,30 @@ private:
         std::int32_t lower = 0;
         std::uint8_t size = 4;
     };
-    std::optional<ElementIndex> element_index(const ast::Expression& index, std::int64_t lower);
+    std::optional<ElementIndex> element_index(const ast::Expression& index, std::int64_t lower,
+                                              std::uint32_t count);
     /// `j + 1` or `j - 1` on a DINT variable: j itself, with the constant moved into the bound.
     std::optional<ElementIndex> displaced_index(const ast::Expression& index, std::int64_t lower);
     /// `value` as a DINT: itself, or a conversion (remembered in the value cache).
     vm::Operand dint_operand(const Value& value);
     /// An array index of any integer type, checked to be one.
     std::optional<Value> integer_index(const ast::Expression& expression);
-    /// An array index as DINT (converted once per statement), checked to be an integer.
-    std::optional<Value> index_value(const ast::Expression& expression);
+    /// An array index as DINT (converted once per statement), checked to be an integer; a wide
+    /// one (wide_index()) through dint_index() with the LINT bounds that `bounds` emits.
+    std::optional<Value>
+    index_value(const ast::Expression& expression, bool negative_lower,
+                const std::function<std::pair<vm::Operand, vm::Operand>()>& bounds);
+    // pou_wide_integers.cpp: 64-bit integers (and UDINT) where the VM takes a DINT.
+    /// Whether an index of `type` needs dint_index(): a DINT would not hold every value, and
+    /// cut to 32 bits one outside the dimension could name an element.
+    bool wide_index(const sema::Type& type, bool negative_lower) const;
+    /// `index` as the DINT that names the same element of the dimension of LINT `lower` and
+    /// `count`, or one outside it where the index is outside.
+    vm::Operand dint_index(const Value& index, vm::Operand lower, vm::Operand count);
+    /// An integer as LINT, a ULINT above `high` made `high`.
+    vm::Operand as_lint_clamped(const Value& value, std::int64_t high);
+    /// A LINT, ULINT or UDINT as DINT, beyond DINT's range made its nearest limit.
+    Value saturated_dint(const Value& value);
     /// The value of `expression` of its own type; an untyped literal takes `hint`.
     std::optional<Value> eval(const ast::Expression& expression, const sema::Type* hint,
                               const Destination* dest = nullptr);
@@ -182,6 +197,9 @@ private:
     /// TIME * number, TIME / number.
     std::optional<Value> scale_time(bool multiply, const Value& time, const ast::Expression& factor,
                                     const Destination* dest);
+    /// Reports a divisor of / or MOD that is a constant zero, as a constant index out of range
+    /// is: the division would stop the task at every run. False when it did.
+    bool check_divisor(ast::BinaryOperator op, const ast::Expression& divisor);
     /// A binary operator on operands already of their common type.
     std::optional<Value> apply(ast::BinaryOperator op, const Value& left, const Value& right,
                                const Destination* dest, const SourceRange& range);

@@ -4,6 +4,7 @@
 #include "call_inlining.hpp"
 #include "constant_declarations.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
+#include "eposp/vm/image_limits.hpp"
 #include "jump_threading.hpp"
 #include "pou_generator.hpp"
 
@@ -174,11 +175,15 @@ std::optional<vm::Image> ProgramGenerator::generate() {
     if (diagnostics_.has_errors()) {
         return std::nullopt;
     }
+    check_limits();
+    if (diagnostics_.has_errors()) {
+        return std::nullopt;
+    }
     if (tasks_.empty()) {
         diagnostics_.warning({}, "there is no PROGRAM to run: the image has no task");
     }
     for (vm::Task& task : tasks_) {
-        task.stack_size = stack_size();
+        task.stack_size = static_cast<std::uint32_t>(stack_size()); // checked above
         builder_.task(std::move(task));
     }
     auto image = builder_.finish();
@@ -244,7 +249,7 @@ void ProgramGenerator::check_recursion() {
     }
 }
 
-std::uint32_t ProgramGenerator::stack_size() const {
+std::uint64_t ProgramGenerator::stack_size() const {
     // Without recursion (6.6.1.1) a chain of calls holds each POU's frame at most once, so the
     // sum of all frames bounds the stack any task needs.
     return pou_frames_total_ + kStackMargin;
@@ -410,6 +415,14 @@ std::uint64_t ProgramGenerator::task_interval(const ast::TaskDeclaration& task) 
         literal != nullptr ? std::get_if<ast::DurationLiteral>(&literal->value) : nullptr;
     if (duration == nullptr || duration->nanoseconds <= 0) {
         diagnostics_.error(task.interval->range, "INTERVAL must be a positive TIME literal");
+        return kDefaultIntervalNs;
+    }
+    if (static_cast<std::uint64_t>(duration->nanoseconds) < vm::kMinTaskIntervalNs) {
+        diagnostics_.error(task.interval->range,
+                           fmt::format("INTERVAL must be at least {} ms: the controller runs "
+                                       "cyclic tasks on a {} ms tick",
+                                       vm::kMinTaskIntervalNs / 1'000'000,
+                                       vm::kMinTaskIntervalNs / 1'000'000));
         return kDefaultIntervalNs;
     }
     return static_cast<std::uint64_t>(duration->nanoseconds);

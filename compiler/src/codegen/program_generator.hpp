@@ -73,6 +73,9 @@ public:
     /// The value of a constant expression of type `type`, encoded as in memory.
     std::optional<std::vector<std::uint8_t>> constant_value(const ast::Expression& expression,
                                                             const sema::Type& type);
+    /// Warns when `expression` is a string literal longer than the STRING[n] `target` it goes
+    /// to (an assignment, initial value or argument): it is cut to n characters.
+    void warn_if_cut(const ast::Expression& expression, const sema::Type& target);
     /// Reports a constant `value` of `expression` that lies outside the subrange `type`.
     void check_in_subrange(const ast::Expression& expression, std::int64_t value,
                            const sema::Type& type);
@@ -120,7 +123,10 @@ private:
     void connect_programs();
     /// 6.6.1.1: POUs shall not call themselves, directly or through others.
     void check_recursion();
-    std::uint32_t stack_size() const;
+    /// What the loader would refuse (eposp/vm/image_limits.hpp), reported with the limit.
+    void check_limits();
+    void check_call_depth();
+    std::uint64_t stack_size() const;
 
     PouSource program_;
     PouSource library_;
@@ -139,7 +145,7 @@ private:
     std::unordered_map<const sema::Type*, std::uint32_t> descriptors_;
     std::unordered_map<const sema::Type*, std::vector<std::uint8_t>> default_values_;
     std::vector<vm::Task> tasks_;
-    std::uint32_t pou_frames_total_ = 0;
+    std::uint64_t pou_frames_total_ = 0;
     std::unordered_set<const ast::VariableDeclaration*> constants_declared_;
     std::map<std::tuple<int, int, std::vector<std::uint32_t>>, Place> direct_variables_;
     std::unordered_map<const ast::Pou*, std::unordered_set<const ast::Pou*>> calls_;

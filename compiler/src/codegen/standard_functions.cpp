@@ -146,6 +146,9 @@ std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
               fmt::format("an integer is needed here, not {}", value->type->name));
         return std::nullopt;
     }
+    if (wide_index(*value->type, true)) {
+        return saturated_dint(*value);
+    }
     return explicit_convert(*value, dint, nullptr, expression.range);
 }
 
@@ -504,6 +507,11 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (arguments.size() < 2) {
             error(range, fmt::format("{} takes two or more arguments", name));
             return std::nullopt;
+        }
+        for (std::size_t i = 1; i < arguments.size(); ++i) {
+            if (!check_divisor(op, *arguments[i]->value)) {
+                return std::nullopt;
+            }
         }
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
         // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is

@@ -1,17 +1,16 @@
 #include "eposp/compiler/sema/type_table.hpp"
 
+#include "eposp/vm/image_limits.hpp"
 #include "eposp/vm/stdlib/string_layout.hpp"
 
 #include <fmt/format.h>
+#include <utility>
 
 namespace eposp::compiler::sema {
 
 namespace {
 
 using E = ast::ElementaryType;
-
-// Limits that keep every layout inside the VM's 30-bit operand offsets.
-constexpr std::uint64_t kMaxTypeSize = 1U << 28;
 
 std::uint32_t elementary_size(E type) {
     switch (type) {
@@ -123,6 +122,14 @@ const Type* TypeTable::resolve(const ast::TypeSpec& spec) {
         return it->second;
     }
     if (in_progress_[&spec]) {
+        // A reference does not contain its target (a linked list's `next : REF_TO Node`): it
+        // gets the structure still being laid out, whose address is all it needs.
+        const auto* node = std::get_if<ast::StructType>(&spec.node);
+        if (const auto partial =
+                node != nullptr ? partial_structures_.find(node) : partial_structures_.end();
+            through_reference_ && partial != partial_structures_.end()) {
+            return partial->second;
+        }
         diagnostics_.error(spec.range, "this type contains itself");
         return nullptr;
     }
@@ -167,7 +174,9 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
         return structure(*node);
     }
     const auto& node = std::get<ast::ReferenceType>(spec.node);
+    const bool outer = std::exchange(through_reference_, true);
     const Type* target = resolve(*node.target);
+    through_reference_ = outer;
     if (target != nullptr && target->conformant) {
         diagnostics_.error(spec.range, "ARRAY[*] is only allowed for VAR_IN_OUT");
         return nullptr;
@@ -176,7 +185,9 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
 }
 
 const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& range) {
+    const bool outer = std::exchange(through_reference_, false); // elements need their size
     const Type* element = resolve(*spec.element);
+    through_reference_ = outer;
     if (element == nullptr) {
         return nullptr;
     }
@@ -209,8 +220,10 @@ const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& rang
         }
         const auto n = static_cast<std::uint64_t>(*high - *low + 1);
         count *= n;
-        if (count * element->size > kMaxTypeSize) {
-            diagnostics_.error(range, "this array is too large");
+        if (count * element->size > vm::kMaxAreaSize) {
+            diagnostics_.error(range, fmt::format("this array is too large: its data exceeds the "
+                                                  "limit of {} bytes",
+                                                  vm::kMaxAreaSize));
             return nullptr;
         }
         type.dimensions.push_back({*low, static_cast<std::uint32_t>(n)});
@@ -245,8 +258,12 @@ void TypeTable::lay_out(Type& type,
                         const std::vector<const ast::VariableDeclaration*>& declarations,
                         const std::vector<ast::VarSectionKind>& sections, std::uint32_t start) {
     std::uint64_t offset = start;
-    for (std::size_t i = 0; i < declarations.size(); ++i) {
+    bool too_large = false;
+    const bool outer = through_reference_;
+    for (std::size_t i = 0; i < declarations.size() && !too_large; ++i) {
         const ast::VariableDeclaration& declaration = *declarations[i];
+        // A member needs its target's size, a VAR_IN_OUT only its address (6.5.1.2).
+        through_reference_ = sections[i] == ast::VarSectionKind::InOut;
         const Type* member = resolve(declaration.type);
         if (member == nullptr) {
             continue;
@@ -263,29 +280,37 @@ void TypeTable::lay_out(Type& type,
             member = &reference(member);
         }
         for (const ast::Identifier& name : declaration.names) {
-            offset = align_up(static_cast<std::uint32_t>(offset), member->align);
-            type.fields.push_back(
-                {name.name, member, static_cast<std::uint32_t>(offset), sections[i], &declaration});
-            offset += member->size;
-            type.align = std::max(type.align, member->align);
-            if (offset > kMaxTypeSize) {
-                diagnostics_.error(declaration.range, "this structure or instance is too large");
-                return;
+            const std::uint64_t at = align_up(static_cast<std::uint32_t>(offset), member->align);
+            if (at + member->size > vm::kMaxAreaSize) {
+                // The members laid out so far stay a consistent type for what follows.
+                diagnostics_.error(declaration.range,
+                                   fmt::format("this structure or instance is too large: its data "
+                                               "exceeds the limit of {} bytes",
+                                               vm::kMaxAreaSize));
+                too_large = true;
+                break;
             }
+            type.fields.push_back(
+                {name.name, member, static_cast<std::uint32_t>(at), sections[i], &declaration});
+            offset = at + member->size;
+            type.align = std::max(type.align, member->align);
         }
     }
+    through_reference_ = outer;
     type.size = align_up(static_cast<std::uint32_t>(offset), type.align);
 }
 
 const Type* TypeTable::structure(const ast::StructType& spec) {
-    Type type{.kind = TypeKind::Struct, .name = "STRUCT"};
+    Type& type = add({.kind = TypeKind::Struct, .name = "STRUCT"});
+    partial_structures_[&spec] = &type;
     std::vector<const ast::VariableDeclaration*> declarations;
     for (const ast::VariableDeclaration& member : spec.members) {
         declarations.push_back(&member);
     }
     lay_out(type, declarations,
             std::vector<ast::VarSectionKind>(declarations.size(), ast::VarSectionKind::Var), 0);
-    return &add(std::move(type));
+    partial_structures_.erase(&spec);
+    return &type;
 }
 
 const Type* TypeTable::enumeration(const ast::EnumType& spec, std::string name) {
@@ -381,6 +406,9 @@ const Type* TypeTable::declared(const Symbol& symbol) {
                            std::holds_alternative<ast::SubrangeType>(spec.node);
     if (type != nullptr && anonymous) {
         const_cast<Type*>(type)->name = symbol.name; // named on first use, for messages
+        if (const auto it = references_.find(type); it != references_.end()) {
+            const_cast<Type*>(it->second)->name = "REF_TO " + symbol.name; // made from inside
+        }
     }
     return type;
 }
@@ -409,15 +437,23 @@ const Type& TypeTable::with_default(const Type& type, const ast::TypeDeclaration
 
 const Type* TypeTable::instance(const ast::Pou& pou) {
     if (const auto it = instances_.find(&pou); it != instances_.end()) {
+        if (instances_in_progress_.contains(&pou) && !through_reference_) {
+            diagnostics_.error(pou.name.range,
+                               fmt::format("'{}' contains an instance of itself", pou.name.name));
+            return nullptr;
+        }
         return it->second;
     }
     Type& type = add({.kind = TypeKind::Instance, .name = pou.name.name, .pou = &pou});
     instances_[&pou] = &type;
+    instances_in_progress_.insert(&pou);
     std::uint32_t start = 0;
     if (pou.extends) {
         const Symbol* base = model_.resolved(*pou.extends);
         if (base != nullptr && base->kind == SymbolKind::Pou) {
             type.base = instance(*base->pou);
+        }
+        if (type.base != nullptr) {
             start = type.base->size;
             type.align = type.base->align;
         }
@@ -437,6 +473,7 @@ const Type* TypeTable::instance(const ast::Pou& pou) {
     }
     lay_out(type, declarations, sections, start);
     type.size = std::max<std::uint32_t>(type.size, 1);
+    instances_in_progress_.erase(&pou);
     return &type;
 }
 

@@ -59,9 +59,9 @@ FUNCTION_BLOCK TP
   IF Q THEN
     ET := CURRENT_TIME() - start;
     IF ET >= PT THEN ET := PT; Q := FALSE; END_IF;
-  ELSIF NOT IN THEN
-    ET := T#0s;
   END_IF;
+  (* ET holds PT after the pulse only while IN stays TRUE, also in the call ending the pulse *)
+  IF NOT Q AND NOT IN THEN ET := T#0s; END_IF;
   M := IN;
 END_FUNCTION_BLOCK
 

@@ -352,7 +352,9 @@ Xbyak::Reg Translator::part(const Xbyak::Reg64& r, int bytes) {
 // A value an instruction stores from rax (or xmm0) is still there when the next one starts: its
 // loads of that operand take the register, which spares the store-to-load forwarding latency on
 // every chain of dependent instructions. Valid only from the store to the next instruction's
-// first write of the register, and never across a block start.
+// first write of the register, and never across a block start. Only the stored bytes are the
+// value: above them the register holds whatever the storing instruction computed (a narrowing
+// conversion stores 4 bytes of a 64-bit result), so a load that needs more extends them anew.
 bool Translator::holds(const std::optional<Held>& held, std::uint32_t field, int bytes) {
     return held && held->field == field && held->bytes == bytes;
 }
@@ -375,14 +377,13 @@ void Translator::load(const Xbyak::Reg64& r, std::uint32_t field, int bytes, boo
     }
 }
 
-// Into rax, extended to 64 bits. A held DWORD is already zero-extended (32-bit operations clear
-// the upper half).
+// Into rax, extended to 64 bits.
 void Translator::load64(std::uint32_t field, int bytes, bool sign) {
     const bool hit = bytes >= 4 && holds(held_rax_, field, bytes);
     held_rax_.reset();
     if (hit) {
-        if (bytes == 4 && sign) {
-            movsxd(rax, eax);
+        if (bytes == 4) {
+            sign ? movsxd(rax, eax) : mov(eax, eax);
         }
     } else if (bytes == 8) {
         mov(rax, at(field, 8));

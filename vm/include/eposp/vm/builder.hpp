@@ -25,6 +25,7 @@ public:
     // --- static data -------------------------------------------------------------------------
     /// Reserves `size` zero-initialised bytes aligned to `align`; returns their offset.
     std::uint32_t allocate(std::uint32_t size, std::uint32_t align);
+    std::uint32_t static_size() const { return image_.static_size; }
     /// Sets the initial value of bytes already allocated.
     void initialise(std::uint32_t offset, std::span<const std::uint8_t> bytes);
     /// Allocates and initialises a constant: a value, a string, a template for a frame.

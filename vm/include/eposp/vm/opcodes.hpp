@@ -65,8 +65,8 @@
 //                                                                             (safe point)
 //  Add/Sub/Mul/Neg/Eq/Ne/JEq/JNe/Sqrt<F>        IEEE 754 (F32, F64)
 //  Cvt<T><U>         [dst U]  [src T]  -        IEC conversion: ints wrap, to BOOL is <> 0,
-//                                               REAL to int rounds half away from zero
-//                                               and saturates (NaN gives 0)
+//                                               REAL to int rounds to nearest, ties to
+//                                               even, and saturates (NaN gives 0)
 //  Trunc<F>          [LINT]   [F]      -        TRUNC: toward zero, saturating
 //  Range<I>          [x]      [lo, hi] -        trap unless lo <= [A] <= hi: a store into a
 //                                               subrange type (B: two values of the type)

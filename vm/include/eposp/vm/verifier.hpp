@@ -2,13 +2,11 @@
 
 #include "eposp/core/result.hpp"
 #include "eposp/vm/image.hpp"
+#include "eposp/vm/image_limits.hpp"
 
 #include <optional>
 
 namespace eposp::vm {
-
-/// The largest task stack and static data area an image may ask for.
-inline constexpr std::uint32_t kMaxAreaSize = 64U << 20;
 
 /// Checks everything the interpreter relies on, so that it can run without checking static
 /// operands: every memory operand lies inside its area for its width (static data, the POU's

@@ -82,6 +82,11 @@ private:
     std::unordered_map<const ast::TypeDeclaration*, const Type*> renamed_with_default_;
     std::unordered_map<const ast::Pou*, const Type*> frames_;
     std::unordered_map<const ast::TypeSpec*, bool> in_progress_;
+    /// STRUCTs being laid out, for references to them from inside (a linked list's `next`).
+    std::unordered_map<const ast::StructType*, const Type*> partial_structures_;
+    std::unordered_set<const ast::Pou*> instances_in_progress_;
+    /// Whether the type being resolved is the target of a reference, which needs no size.
+    bool through_reference_ = false;
     std::unordered_set<const ast::VariableDeclaration*> constants_folding_;
     std::unordered_map<const ast::EnumValue*, std::pair<const Type*, std::int64_t>> enum_values_;
 };
