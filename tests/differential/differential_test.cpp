@@ -47,7 +47,6 @@ TEST(Reducer, KeepsOnlyWhatTheConditionNeeds) {
 // that the seed is checked as every other one again.
 const std::map<std::uint64_t, const char*> kKnownDefects = {
     {34, "item 10: MUX on STRING whose last input is a string function of a literal"},
-    {36, "item 1: a 32-bit unsigned result widened to 64 bits on the compiled engine"},
 };
 
 TEST(Differential, ExecutorsAgreeOnFixedSeeds) {
