@@ -5,6 +5,7 @@
 #   ./eposp.sh test       set up, build and run every test
 #   ./eposp.sh sanitize   set up, build with AddressSanitizer + UBSan and run every test
 #   ./eposp.sh fuzz [S]   set up clang, build the libFuzzer targets, run each for S seconds (60)
+#   ./eposp.sh difftest [M]  build st_difftest, run generated programs on every executor M minutes (10)
 #   ./eposp.sh build      set up and build only
 #   ./eposp.sh setup      install the Debian packages that are missing, nothing else
 #
@@ -86,6 +87,16 @@ sanitize)
         -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g"
     run_tests build-sanitize
     ;;
+difftest)
+    # New seeds each run (from the clock); a mismatch prints its seed and reduced program and
+    # makes the exit status 1. Reproduce one with: build/tests/differential/st_difftest
+    # --seeds 1 --from SEED (docs/testing.md, Differential testing).
+    setup
+    log "building st_difftest in build"
+    cmake -S . -B build -G Ninja >/dev/null
+    cmake --build build --target st_difftest
+    build/tests/differential/st_difftest --minutes "${2:-10}" --from "$(date +%s)" "${@:3}"
+    ;;
 fuzz)
     setup && install_missing "${FUZZ_PACKAGES[@]}"
     log "building the fuzz targets in build-fuzz"
@@ -96,7 +107,7 @@ fuzz)
     fuzz "${2:-60}"
     ;;
 *)
-    sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'
     exit 1
     ;;
 esac
