@@ -6,7 +6,6 @@
 #include "eposp/differential/reducer.hpp"
 
 #include <gtest/gtest.h>
-#include <map>
 #include <random>
 
 namespace eposp::differential {
@@ -42,27 +41,12 @@ TEST(Reducer, KeepsOnlyWhatTheConditionNeeds) {
     EXPECT_EQ(render(reduced), "a := (1 + y);\nd := 3;\nkeep;\n");
 }
 
-// Seeds whose programs hit defects of issue 16 that other branches are fixing now. A known seed
-// must still disagree: once its fix is merged this test fails until its line is deleted, so
-// that the seed is checked as every other one again.
-const std::map<std::uint64_t, const char*> kKnownDefects = {
-    {34, "item 10: MUX on STRING whose last input is a string function of a literal"},
-};
-
+// Every feature on, the defects of issue 16 it once found (items 1, 5, 10, 11) among them.
 TEST(Differential, ExecutorsAgreeOnFixedSeeds) {
-    GeneratorOptions options;
-    // Issue 16 items 11 and 5 (being fixed): the compiler refuses these programs today.
-    options.huge_case_labels = false;
-    options.string_max_min_limit = false;
     const auto executors = all_executors();
     for (std::uint64_t seed = 1; seed <= 60; ++seed) {
-        const auto known = kKnownDefects.find(seed);
-        const bool reduce = known == kKnownDefects.end();
-        const auto finding = check_seed(seed, options, executors.pointers(), kScans, reduce);
-        if (known != kKnownDefects.end()) {
-            EXPECT_FALSE(finding.agree()) << "seed " << seed << " agrees now that " << known->second
-                                          << " is fixed: delete it from kKnownDefects";
-        } else if (!finding.agree()) {
+        const auto finding = check_seed(seed, GeneratorOptions{}, executors.pointers(), kScans, true);
+        if (!finding.agree()) {
             ADD_FAILURE() << describe(finding);
         }
     }
