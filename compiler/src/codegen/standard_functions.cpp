@@ -491,7 +491,11 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         const sema::Type& lint = types_.elementary(E::Lint);
         const Operand wide = temp(lint);
         emit(op("Trunc", *value->type), wide, value->operand);
-        return explicit_convert(Value{wide, &lint}, types_.elementary(E::Dint), dest, range);
+        // Into DINT it saturates as the *_TO_* conversions do: through LREAL, which holds every
+        // DINT exactly and keeps a larger value out of DINT's range.
+        const auto real =
+            explicit_convert(Value{wide, &lint}, types_.elementary(E::Lreal), nullptr, range);
+        return real ? explicit_convert(*real, types_.elementary(E::Dint), dest, range) : real;
     }
     if (name == "ABS") {
         if (!arity(1)) {
