@@ -178,6 +178,8 @@ primaryExpression
     | identifier                                                            # nameExpression
     | '(' expression ')'                                                    # parenthesizedExpression
     | REF '(' expression ')'                                                # refExpression
+    // Table 29 and 30 list the operators MOD, AND, OR, XOR and NOT as functions as well.
+    | name=(MOD | AND | OR | XOR | NOT) '(' argumentList? ')'               # operatorCall
     | DIRECT_ADDRESS                                                        # directAddressExpression
     ;
 
