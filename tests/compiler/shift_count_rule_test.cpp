@@ -138,12 +138,12 @@ INSTANTIATE_TEST_SUITE_P(EveryWidthAndCountType, ShiftCount,
                                             ::testing::ValuesIn(kCounts)),
                          name);
 
-TEST(ShiftCountRule, ALiteralCountBeyond32BitsKeepsItsWholeValue) {
+TEST(ShiftCountRule, ALiteralCountBeyond32BitsOrNegativeKeepsItsWholeValue) {
     StProgram run(R"(PROGRAM Main
-VAR a, b, c, d : DWORD; e : LWORD; END_VAR
+VAR a, b, c, d, f : DWORD; e : LWORD; g : BYTE; END_VAR
 a := SHL(DWORD#1, 4294967297); b := ROL(DWORD#1, 4294967297);
 c := SHR(DWORD#16#80000000, LINT#4294967327); d := ROR(DWORD#1, ULINT#18446744073709551615);
-e := SHL(LWORD#1, ULINT#9223372036854775808);
+e := SHL(LWORD#1, ULINT#9223372036854775808); f := SHL(DWORD#1, -1); g := ROL(BYTE#1, -1);
 END_PROGRAM
 )");
     ASSERT_TRUE(run.ok()) << run.errors();
@@ -153,6 +153,8 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::uint32_t>("Main.c"), 0u);
     EXPECT_EQ(run.get<std::uint32_t>("Main.d"), 2u); // ROR by 2^64-1: by 31, ROL by 1
     EXPECT_EQ(run.get<std::uint64_t>("Main.e"), 0u);
+    EXPECT_EQ(run.get<std::uint32_t>("Main.f"), 0u);
+    EXPECT_EQ(run.get<std::uint8_t>("Main.g"), 0x80u); // ROL by 2^32 - 1, modulo 8: 7
 }
 
 } // namespace
