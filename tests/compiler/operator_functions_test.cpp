@@ -1,6 +1,7 @@
-// The operators of IEC 61131-3 ed. 3 tables 29 and 30 are functions as well: MOD, AND, OR, XOR
-// and NOT are keywords, yet `MOD(a, b)` and `AND(a, b, c)` call them as ADD(...) and DIV(...)
-// are called, positionally or with named inputs, and give what the operator gives.
+// The operators of IEC 61131-3 ed. 3 tables 29 and 30 are functions as well: MOD, AND, OR and
+// XOR are keywords, yet `MOD(a, b)` and `AND(a, b, c)` call them as ADD(...) and DIV(...) are
+// called, positionally or with named inputs, and give what the operator gives. NOT(x) is the
+// operator NOT applied to (x), the same value.
 #include "codegen_harness.hpp"
 
 #include <cstdint>
@@ -16,7 +17,7 @@ VAR y : DINT := -17; z : DINT := 5; w : WORD := 16#F0F0; p, q : BOOL := TRUE;
 m := MOD(y, z); m2 := mod(IN1 := 17, IN2 := z) + 1; s := ADD(y, z, 1); a := SUB(y, z);
 u := MUL(y, z); d := DIV(y, z); e := EXPT(LREAL#1.5, 2);
 x1 := AND(w, 16#FF00, 16#3FFF); x2 := OR(w, 16#000F); x3 := XOR(w, 16#FFFF); x4 := NOT(w);
-b1 := AND(p, NOT q); b2 := OR(p, FALSE) AND NOT(q); b3 := XOR(p, q, TRUE); b4 := NOT(IN := p);
+b1 := AND(p, NOT q); b2 := OR(p, FALSE) AND NOT(q); b3 := XOR(p, q, TRUE); b4 := NOT(p);
 END_PROGRAM
 )");
     ASSERT_TRUE(run.ok()) << run.errors();
