@@ -1,7 +1,7 @@
-// Every path from a real number to a duration rounds to the nearest nanosecond with ties to
-// even (IEC 60559), as REAL_TO_TIME does: MUL_TIME and DIV_TIME by a REAL or LREAL, `*` and `/`
-// of a TIME by a real, and the fraction of a TIME or TOD literal. They rounded ties away from
-// zero.
+// Every path from a real number to a duration rounds ties to even (IEC 60559), as REAL_TO_TIME
+// does (to its unit, the millisecond): MUL_TIME and DIV_TIME by a REAL or LREAL, `*` and `/` of
+// a TIME by a real, and the fraction of a TIME or TOD literal, to the nanosecond. They rounded
+// ties away from zero.
 #include "codegen_harness.hpp"
 
 #include <cstdint>
@@ -13,22 +13,25 @@ namespace {
 TEST(RealToDurationRounding, TimeScaledByARealRoundsTiesToEven) {
     StProgram run(R"(PROGRAM Main
 VAR three : TIME := T#3ns; half : LREAL := 0.5; r : REAL := 2.0;
-    a, b, c, d, e, f, g, h : TIME; END_VAR
+    a, b, c, d, e, f, g, h, i : TIME; j : LTIME; END_VAR
 a := MUL_TIME(three, half); b := MUL_TIME(T#5ns, 0.5); c := MUL_TIME(T#-3ns, half);
 d := DIV_TIME(three, r); e := DIV_TIME(T#5ns, LREAL#2.0);
 f := three * half; g := T#7ns / r; h := MUL_TIME(T#7ns, 0.5);
+i := REAL_TO_TIME(2.5); j := LREAL_TO_LTIME(half * 5.0);
 END_PROGRAM
 )");
     ASSERT_TRUE(run.ok()) << run.errors();
     ASSERT_TRUE(run.scans(1)) << run.fault();
-    EXPECT_EQ(run.get<std::int64_t>("Main.a"), 2);  // 1.5 ns
-    EXPECT_EQ(run.get<std::int64_t>("Main.b"), 2);  // 2.5 ns
-    EXPECT_EQ(run.get<std::int64_t>("Main.c"), -2); // -1.5 ns
-    EXPECT_EQ(run.get<std::int64_t>("Main.d"), 2);  // 1.5 ns
-    EXPECT_EQ(run.get<std::int64_t>("Main.e"), 2);  // 2.5 ns
-    EXPECT_EQ(run.get<std::int64_t>("Main.f"), 2);  // 1.5 ns
-    EXPECT_EQ(run.get<std::int64_t>("Main.g"), 4);  // 3.5 ns
-    EXPECT_EQ(run.get<std::int64_t>("Main.h"), 4);  // 3.5 ns
+    EXPECT_EQ(run.get<std::int64_t>("Main.a"), 2);         // 1.5 ns
+    EXPECT_EQ(run.get<std::int64_t>("Main.b"), 2);         // 2.5 ns
+    EXPECT_EQ(run.get<std::int64_t>("Main.c"), -2);        // -1.5 ns
+    EXPECT_EQ(run.get<std::int64_t>("Main.d"), 2);         // 1.5 ns
+    EXPECT_EQ(run.get<std::int64_t>("Main.e"), 2);         // 2.5 ns
+    EXPECT_EQ(run.get<std::int64_t>("Main.f"), 2);         // 1.5 ns
+    EXPECT_EQ(run.get<std::int64_t>("Main.g"), 4);         // 3.5 ns
+    EXPECT_EQ(run.get<std::int64_t>("Main.h"), 4);         // 3.5 ns
+    EXPECT_EQ(run.get<std::int64_t>("Main.i"), 2'000'000); // 2.5 ms, TIME's unit as a number
+    EXPECT_EQ(run.get<std::int64_t>("Main.j"), 2);         // 2.5 ns
 }
 
 TEST(RealToDurationRounding, ALiteralsFractionRoundsTiesToEven) {
