@@ -1,5 +1,6 @@
 #include "literal_decoder.hpp"
 
+#include "eposp/vm/stdlib/duration_fraction.hpp"
 #include "eposp/vm/stdlib/string_layout.hpp"
 #include "utf8.hpp"
 
@@ -150,19 +151,6 @@ Prefixed split_prefix(std::string_view text) {
             text.substr(hash + 1)};
 }
 
-// The nanoseconds of a literal's fraction (`exact`, below one unit), rounded so that the whole
-// duration `before + result` is the nearest, ties to even, as REAL_TO_TIME rounds (IEC 60559):
-// T#2.5ns is 2 ns and T#3.5ns is 4 ns.
-std::int64_t fraction_nanoseconds(double exact, std::int64_t before) {
-    const double below = std::floor(exact);
-    auto result = static_cast<std::int64_t>(below);
-    const double rest = exact - below;
-    if (rest > 0.5 || (rest == 0.5 && ((before ^ result) & 1) != 0)) {
-        ++result;
-    }
-    return result;
-}
-
 // IEC 61131-3 ed. 3, 6.3.4, table 8: T#1d2h3m4s5ms6us7ns, optional '_' between the parts, the
 // last part may have a fraction, only the most significant part may exceed its natural range.
 Result<ast::Literal> decode_duration(std::string_view text) {
@@ -250,8 +238,8 @@ Result<ast::Literal> decode_duration(std::string_view text) {
             if (!fraction) {
                 return Error{fraction.error()};
             }
-            const std::int64_t extra =
-                fraction_nanoseconds(*fraction * static_cast<double>(unit.nanoseconds), total);
+            const std::int64_t extra = vm::stdlib::fraction_nanoseconds(
+                *fraction * static_cast<double>(unit.nanoseconds), total);
             if (__builtin_add_overflow(total, extra, &total)) {
                 return Error{"duration " + quoted(text) + " is too long for 64-bit nanoseconds"};
             }
@@ -320,8 +308,8 @@ Result<std::int64_t> time_of_day_nanoseconds(std::string_view text, std::string_
         if (!fraction) {
             return Error{fraction.error()};
         }
-        nanoseconds += fraction_nanoseconds(*fraction * static_cast<double>(kNanosecondsPerSecond),
-                                            nanoseconds);
+        nanoseconds += vm::stdlib::fraction_nanoseconds(
+            *fraction * static_cast<double>(kNanosecondsPerSecond), nanoseconds);
     }
     return nanoseconds;
 }

@@ -51,5 +51,23 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int64_t>("Main.g"), 2);
 }
 
+TEST(RealToDurationRounding, TextReadAsADurationRoundsTiesToEvenAsALiteralDoes) {
+    StProgram run(R"(PROGRAM Main
+VAR a, b, c, d : TIME; e : TOD; f : LTIME; END_VAR
+a := STRING_TO_TIME('T#2.5ns'); b := STRING_TO_TIME('T#3.5ns'); c := STRING_TO_TIME('T#-2.5ns');
+d := STRING_TO_TIME('T#1s0.5ns'); e := STRING_TO_TOD('TOD#00:00:01.0000000035');
+f := STRING_TO_LTIME('LTIME#0.0025us');
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int64_t>("Main.a"), 2);
+    EXPECT_EQ(run.get<std::int64_t>("Main.b"), 4);
+    EXPECT_EQ(run.get<std::int64_t>("Main.c"), -2);
+    EXPECT_EQ(run.get<std::int64_t>("Main.d"), 1'000'000'000);
+    EXPECT_EQ(run.get<std::int64_t>("Main.e"), 1'000'000'004);
+    EXPECT_EQ(run.get<std::int64_t>("Main.f"), 2);
+}
+
 } // namespace
 } // namespace eposp::compiler::test
