@@ -13,10 +13,11 @@ namespace {
 TEST(OperatorFunctions, EveryArithmeticAndLogicalOperatorCanBeCalled) {
     StProgram run(R"(PROGRAM Main
 VAR y : DINT := -17; z : DINT := 5; w : WORD := 16#F0F0; p, q : BOOL := TRUE;
-    m, m2, s, a, u, d : DINT; e : LREAL; x1, x2, x3, x4 : WORD; b1, b2, b3, b4 : BOOL; END_VAR
+    m, m2, m3, s, a, u, d : DINT; e : LREAL; x1, x2, x3, x4 : WORD; b1, b2, b3, b4, b5 : BOOL; END_VAR
 m := MOD(y, z); m2 := mod(IN1 := 17, IN2 := z) + 1; s := ADD(y, z, 1); a := SUB(y, z);
 u := MUL(y, z); d := DIV(y, z); e := EXPT(LREAL#1.5, 2);
 x1 := AND(w, 16#FF00, 16#3FFF); x2 := OR(w, 16#000F); x3 := XOR(w, 16#FFFF); x4 := NOT(w);
+m3 := y MOD(z); b5 := FALSE OR(p) AND(FALSE); (* still the operators *)
 b1 := AND(p, NOT q); b2 := OR(p, FALSE) AND NOT(q); b3 := XOR(p, q, TRUE); b4 := NOT(p);
 END_PROGRAM
 )");
@@ -37,6 +38,8 @@ END_PROGRAM
     EXPECT_FALSE(run.get<bool>("Main.b2"));
     EXPECT_TRUE(run.get<bool>("Main.b3"));
     EXPECT_FALSE(run.get<bool>("Main.b4"));
+    EXPECT_EQ(run.get<std::int32_t>("Main.m3"), -2);
+    EXPECT_FALSE(run.get<bool>("Main.b5"));
 }
 
 TEST(OperatorFunctions, AConstantZeroDivisorOfModIsAnErrorAsForTheOperator) {
