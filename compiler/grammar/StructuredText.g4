@@ -178,6 +178,10 @@ primaryExpression
     | identifier                                                            # nameExpression
     | '(' expression ')'                                                    # parenthesizedExpression
     | REF '(' expression ')'                                                # refExpression
+    // Tables 29 and 30 list the operators MOD, AND, OR and XOR as functions as well. NOT(x)
+    // needs no rule of its own: NOT applied to (x) is the same value, and a second way to read
+    // it would make the parser look to the closing parenthesis at every NOT (.
+    | name=(MOD | AND | OR | XOR) '(' argumentList? ')'                     # operatorCall
     | DIRECT_ADDRESS                                                        # directAddressExpression
     ;
 

@@ -206,6 +206,13 @@ ast::ExpressionPtr AstBuilder::primary(P::PrimaryExpressionContext& context) {
         const SourceRange where = id.range;
         return make(where, ast::NameExpression{std::move(id)});
     }
+    if (auto* call = dynamic_cast<P::OperatorCallContext*>(&context)) {
+        // The same call as one of a function named like the operator.
+        const SourceRange where = range(*call->name);
+        auto callee = make(where, ast::NameExpression{{call->name->getText(), where}});
+        return make(range(context),
+                    ast::CallExpression{std::move(callee), arguments(call->argumentList())});
+    }
     if (auto* parenthesized = dynamic_cast<P::ParenthesizedExpressionContext*>(&context)) {
         return expression(*parenthesized->expression());
     }

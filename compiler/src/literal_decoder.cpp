@@ -1,5 +1,6 @@
 #include "literal_decoder.hpp"
 
+#include "eposp/vm/stdlib/duration_fraction.hpp"
 #include "eposp/vm/stdlib/string_layout.hpp"
 #include "utf8.hpp"
 
@@ -237,8 +238,8 @@ Result<ast::Literal> decode_duration(std::string_view text) {
             if (!fraction) {
                 return Error{fraction.error()};
             }
-            const auto extra = static_cast<std::int64_t>(
-                std::llround(*fraction * static_cast<double>(unit.nanoseconds)));
+            const std::int64_t extra = vm::stdlib::fraction_nanoseconds(
+                *fraction * static_cast<double>(unit.nanoseconds), total);
             if (__builtin_add_overflow(total, extra, &total)) {
                 return Error{"duration " + quoted(text) + " is too long for 64-bit nanoseconds"};
             }
@@ -307,8 +308,8 @@ Result<std::int64_t> time_of_day_nanoseconds(std::string_view text, std::string_
         if (!fraction) {
             return Error{fraction.error()};
         }
-        nanoseconds += static_cast<std::int64_t>(
-            std::llround(*fraction * static_cast<double>(kNanosecondsPerSecond)));
+        nanoseconds += vm::stdlib::fraction_nanoseconds(
+            *fraction * static_cast<double>(kNanosecondsPerSecond), nanoseconds);
     }
     return nanoseconds;
 }

@@ -38,6 +38,10 @@ constexpr std::size_t kExpressionStarts[] = {
     StructuredTextParser::MINUS,
     StructuredTextParser::PLUS,
     StructuredTextParser::NOT,
+    StructuredTextParser::MOD, // MOD, AND, OR and XOR start a call of them: MOD(a, b)
+    StructuredTextParser::AND,
+    StructuredTextParser::OR,
+    StructuredTextParser::XOR,
     StructuredTextParser::REF,
     StructuredTextParser::DIRECT_ADDRESS,
 };

@@ -47,6 +47,10 @@ bool StProgram::scans(int n, std::int64_t step_ns) {
 }
 
 std::string StProgram::fault() const {
+    // The machine keeps the last fault record (or a default one) after the task runs again.
+    if (!ok() || machine_->task(0).state != vm::RunState::Faulted) {
+        return "";
+    }
     return machine_->describe_fault(0);
 }
 

@@ -456,7 +456,14 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         }
         const auto value = eval(*arguments[0]->value, hint);
         const sema::Type& udint = types_.elementary(E::Udint);
-        auto count = value ? eval(*arguments[1]->value, &udint) : std::nullopt;
+        // An untyped literal count is a UDINT where it fits one, else of its own value's type.
+        const auto* written = std::get_if<ast::LiteralExpression>(&arguments[1]->value->node);
+        const auto* integer =
+            written != nullptr ? std::get_if<ast::IntegerLiteral>(&written->value) : nullptr;
+        const bool udint_literal =
+            integer == nullptr || (!integer->negative && integer->magnitude <= 0xFFFF'FFFF);
+        auto count =
+            value ? eval(*arguments[1]->value, udint_literal ? &udint : nullptr) : std::nullopt;
         if (!count) {
             return std::nullopt;
         }
@@ -468,7 +475,25 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             error(arguments[1]->range, "the shift count must be an integer");
             return std::nullopt;
         }
-        count = explicit_convert(*count, udint, nullptr, range);
+        // A count is taken as unsigned (a negative one as its two's complement): SHL and SHR
+        // by one of at least the width give 0, ROL and ROR rotate by it modulo the width. The
+        // VM's count is a UDINT: cut to 32 bits, a 64-bit count keeps its remainder modulo
+        // every width (a divisor of 2^32), but a shift needs one beyond 32 bits kept beyond.
+        const bool shift = name == "SHL" || name == "SHR";
+        const vm::Scalar wide = sema::scalar_of(*count->type);
+        if (shift && (wide == vm::Scalar::I64 || wide == vm::Scalar::U64)) {
+            // Beyond UDINT's range, UDINT's maximum: as far beyond every width.
+            const Operand top = integer_constant(udint, 0xFFFF'FFFF);
+            const Operand beyond = temp(types_.elementary(E::Bool));
+            const Operand cut = temp(udint);
+            emit(Opcode::LtU64, beyond, integer_constant(types_.elementary(E::Ulint), 0xFFFF'FFFF),
+                 count->operand);
+            emit(Opcode::CvtI64I32, cut, count->operand);
+            emit(Opcode::CMov32, cut, beyond, top);
+            count = Value{cut, &udint};
+        } else {
+            count = explicit_convert(*count, udint, nullptr, range);
+        }
         const std::string family = name == "SHL"   ? "Shl"
                                    : name == "SHR" ? "Shr"
                                    : name == "ROL" ? "Rol"
@@ -491,7 +516,11 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         const sema::Type& lint = types_.elementary(E::Lint);
         const Operand wide = temp(lint);
         emit(op("Trunc", *value->type), wide, value->operand);
-        return explicit_convert(Value{wide, &lint}, types_.elementary(E::Dint), dest, range);
+        // Into DINT it saturates as the *_TO_* conversions do: through LREAL, which holds every
+        // DINT exactly and keeps a larger value out of DINT's range.
+        const auto real =
+            explicit_convert(Value{wide, &lint}, types_.elementary(E::Lreal), nullptr, range);
+        return real ? explicit_convert(*real, types_.elementary(E::Dint), dest, range) : real;
     }
     if (name == "ABS") {
         if (!arity(1)) {

@@ -237,10 +237,9 @@ Value Evaluator::standard_function(const types::CallTarget& target,
     if (name == "SHL" || name == "SHR" || name == "ROL" || name == "ROR") {
         const sema::Type& type = *operand;
         const unsigned width = width_of(type);
-        const std::int64_t n = position(in[1]);
-        if (n < 0) {
-            throw Unsupported("a shift by a negative count");
-        }
+        // The count taken as unsigned, a negative one as its 64-bit two's complement
+        // (docs/st-language.md): SHL and SHR by at least the width give 0.
+        const std::uint64_t n = in[1].bits;
         const std::uint64_t mask =
             width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << width) - 1;
         const std::uint64_t bits = widen(in[0], type).bits & mask;
@@ -248,7 +247,7 @@ Value Evaluator::standard_function(const types::CallTarget& target,
             throw Unsupported("SHR of a signed integer (arithmetic or logical is not defined)");
         }
         if (name == "SHL" || name == "SHR") {
-            if (static_cast<std::uint64_t>(n) >= width) {
+            if (n >= width) {
                 return integer(type, 0);
             }
             return integer(type, name == "SHL" ? bits << n : bits >> n);

@@ -3,10 +3,10 @@
 // so ADD_TIME, SUB_TIME, ADD_DT_TIME, SUB_DT_TIME, SUB_DATE_DATE, SUB_TOD_TOD, SUB_DT_DT and
 // CONCAT_DATE_TOD are the Add64/Sub64 opcodes; only what needs more than one add is here.
 
+#include "../value_semantics.hpp"
 #include "library_parts.hpp"
 #include "time_units.hpp"
 
-#include <cmath>
 #include <limits>
 
 namespace eposp::vm::stdlib {
@@ -24,19 +24,10 @@ std::int64_t floor_to_day(std::int64_t ns) {
     return ns - wrap_to_day(ns);
 }
 
-/// LREAL to a nanosecond count: half away from zero, saturating, NaN gives 0 (like CvtF64I64).
+/// LREAL to a nanosecond count exactly as CvtF64I64 (REAL_TO_TIME) does: to nearest, ties to
+/// even (IEC 60559), saturating, NaN gives 0.
 std::int64_t round_to_ns(double ns) {
-    if (std::isnan(ns)) {
-        return 0;
-    }
-    constexpr auto kMax = std::numeric_limits<std::int64_t>::max();
-    if (ns >= 9.2233720368547758e18) {
-        return kMax;
-    }
-    if (ns <= -9.2233720368547758e18) {
-        return std::numeric_limits<std::int64_t>::min();
-    }
-    return static_cast<std::int64_t>(std::round(ns));
+    return detail::convert<std::int64_t>(ns);
 }
 
 std::int64_t wrapping_mul(std::int64_t a, std::int64_t b) {

@@ -1,5 +1,6 @@
 #include "value_text.hpp"
 
+#include "eposp/vm/stdlib/duration_fraction.hpp"
 #include "time_units.hpp"
 
 #include <algorithm>
@@ -111,8 +112,9 @@ std::optional<std::int64_t> read_date(Cursor& c) {
     return valid ? std::optional(days) : std::nullopt;
 }
 
-/// `.ddd`: the fraction of `unit` nanoseconds it stands for.
-std::int64_t read_fraction(Cursor& c, std::int64_t unit) {
+/// `.ddd`: the fraction of `unit` nanoseconds it stands for, after `before` nanoseconds
+/// (duration_fraction.hpp: ties to even on the whole value).
+std::int64_t read_fraction(Cursor& c, std::int64_t unit, std::int64_t before) {
     if (!c.accept('.')) {
         return 0;
     }
@@ -121,8 +123,10 @@ std::int64_t read_fraction(Cursor& c, std::int64_t unit) {
     if (!digits || count > 18) {
         return 0;
     }
-    return std::llround(static_cast<double>(*digits) / std::pow(10.0, static_cast<double>(count)) *
-                        static_cast<double>(unit));
+    return fraction_nanoseconds(static_cast<double>(*digits) /
+                                    std::pow(10.0, static_cast<double>(count)) *
+                                    static_cast<double>(unit),
+                                before);
 }
 
 /// hh:mm:ss[.f] as nanoseconds since midnight.
@@ -139,9 +143,10 @@ std::optional<std::int64_t> read_time_of_day(Cursor& c) {
     if (!seconds || *seconds > 59) {
         return std::nullopt;
     }
-    return static_cast<std::int64_t>(*hours) * kNsPerH +
-           static_cast<std::int64_t>(*minutes) * kNsPerMin +
-           static_cast<std::int64_t>(*seconds) * kNsPerS + read_fraction(c, kNsPerS);
+    const std::int64_t whole = static_cast<std::int64_t>(*hours) * kNsPerH +
+                               static_cast<std::int64_t>(*minutes) * kNsPerMin +
+                               static_cast<std::int64_t>(*seconds) * kNsPerS;
+    return whole + read_fraction(c, kNsPerS, whole);
 }
 
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {
@@ -327,10 +332,10 @@ std::int64_t parse_duration(std::string_view text) {
         bool has_unit = false;
         for (const auto& unit : kUnits) {
             Cursor after = c;
-            const auto fraction = read_fraction(after, unit.ns);
+            const std::uint64_t so_far = total + *whole * static_cast<std::uint64_t>(unit.ns);
+            const auto fraction = read_fraction(after, unit.ns, static_cast<std::int64_t>(so_far));
             if (after.accept(unit.name)) {
-                total += *whole * static_cast<std::uint64_t>(unit.ns) +
-                         static_cast<std::uint64_t>(fraction);
+                total = so_far + static_cast<std::uint64_t>(fraction);
                 c = after;
                 has_unit = true;
                 break;
