@@ -7,7 +7,6 @@
 //   st_difftest --print SEED             the program of one seed, to reproduce by hand
 //   st_difftest --file PROGRAM.st        one program (a reduced one, edited) on every executor
 //   options: --scans K (4), --no-reduce, --ties (real-to-integer conversions of ties),
-//            --narrow-promotion (GeneratorOptions::narrow_promotion),
 //            --without FEATURE (reals strings arrays structs loops case in-out
 //            huge-case-labels string-max-min-limit; repeatable)
 
@@ -101,8 +100,6 @@ std::optional<Arguments> parse(int argc, char** argv) {
             arguments.reduce = false;
         } else if (flag == "--ties") {
             arguments.options.real_ties = true;
-        } else if (flag == "--narrow-promotion") {
-            arguments.options.narrow_promotion = true;
         } else if (flag == "--without" && has_value) {
             if (!switch_off(arguments.options, argv[++i])) {
                 return std::nullopt;
@@ -126,7 +123,7 @@ int main(int argc, char** argv) {
         std::cerr
             << "usage: st_difftest (--seeds N | --minutes M | --print SEED | --file PATH) [--from "
                "S] "
-               "[--scans K] [--no-reduce] [--ties] [--narrow-promotion] [--without FEATURE]...\n";
+               "[--scans K] [--no-reduce] [--ties] [--without FEATURE]...\n";
         return 2;
     }
     if (arguments->print) {

@@ -358,11 +358,11 @@ Expr Generator::signed_expr(Ty type, int depth) {
 }
 
 Expr Generator::in_range(Ty type, Expr value) {
-    if (!is_narrow(type) || is_signed(type) || options_.narrow_promotion) {
+    // Half the time the result stays as computed in DINT (st-language.md), to be cut where it is
+    // stored or passed to an input; otherwise it is cut here, explicitly.
+    if (!is_narrow(type) || is_signed(type) || chance(50)) {
         return value;
     }
-    // Cut explicitly: the value is then the same whether the operation was computed in DINT or
-    // at the type's width, and passed on as it is stored.
     const std::string wide = is_bit_string(type) ? "LWORD" : "DINT";
     return pattern(wide + "_TO_" + type_name(type) + "($0)", {std::move(value)}, one_literal(type));
 }

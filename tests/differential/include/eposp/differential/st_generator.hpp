@@ -36,11 +36,6 @@ struct GeneratorOptions {
     bool string_max_min_limit = true;
     /// Real-to-integer conversions of values that may lie halfway between two integers.
     bool real_ties = false;
-    /// USINT, UINT, BYTE and WORD operations whose result leaves the type's range inside an
-    /// expression (computed in DINT, st-language.md) and is passed on before it is stored:
-    /// whether a function argument cuts it is not settled, so by default every such result is
-    /// cut explicitly. (SINT and INT results stay in range by construction.)
-    bool narrow_promotion = false;
 };
 
 /// One program; its source is render(block). Main's checksum is `Main.checksum`.
