@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace eposp::vm::test {
@@ -227,5 +228,21 @@ private:
     std::optional<Program> program_;
     std::optional<Machine> machine_;
 };
+
+/// Every opcode whose OpcodeInfo `keep` accepts: the parameters of a suite over opcodes.
+inline std::vector<std::uint16_t> opcodes_where(const std::function<bool(Opcode)>& keep) {
+    std::vector<std::uint16_t> opcodes;
+    for (std::uint16_t op = 0; op < kOpcodeCount; ++op) {
+        if (keep(static_cast<Opcode>(op))) {
+            opcodes.push_back(op);
+        }
+    }
+    return opcodes;
+}
+
+/// A test instance named after its opcode.
+inline std::string opcode_name(const ::testing::TestParamInfo<std::uint16_t>& op) {
+    return std::string(opcode_info(static_cast<Opcode>(op.param)).name);
+}
 
 } // namespace eposp::vm::test

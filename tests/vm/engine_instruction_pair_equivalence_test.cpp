@@ -76,20 +76,11 @@ TEST_P(EnginePairs, CompiledCodeGivesTheInterpretersResultForEveryDependentSecon
     }
 }
 
-std::vector<std::uint16_t> producers() {
-    std::vector<std::uint16_t> opcodes;
-    for (std::uint16_t op = 0; op < kOpcodeCount; ++op) {
-        if (producer(opcode_info(static_cast<Opcode>(op)))) {
-            opcodes.push_back(op);
-        }
-    }
-    return opcodes;
-}
-
-INSTANTIATE_TEST_SUITE_P(StoreThenLoad, EnginePairs, ::testing::ValuesIn(producers()),
-                         [](const ::testing::TestParamInfo<std::uint16_t>& op) {
-                             return std::string(opcode_info(static_cast<Opcode>(op.param)).name);
-                         });
+INSTANTIATE_TEST_SUITE_P(StoreThenLoad, EnginePairs,
+                         ::testing::ValuesIn(opcodes_where([](Opcode op) {
+                             return producer(opcode_info(op));
+                         })),
+                         opcode_name);
 
 } // namespace
 } // namespace eposp::vm::test

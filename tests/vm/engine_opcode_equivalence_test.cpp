@@ -61,20 +61,11 @@ TEST_P(EngineOpcodes, CompiledCodeGivesTheInterpretersResult) {
     }
 }
 
-std::vector<std::uint16_t> plain_opcodes() {
-    std::vector<std::uint16_t> opcodes;
-    for (std::uint16_t op = 0; op < kOpcodeCount; ++op) {
-        if (plain(opcode_info(static_cast<Opcode>(op))) && static_cast<Opcode>(op) != Opcode::Ret) {
-            opcodes.push_back(op);
-        }
-    }
-    return opcodes;
-}
-
-INSTANTIATE_TEST_SUITE_P(PlainOperands, EngineOpcodes, ::testing::ValuesIn(plain_opcodes()),
-                         [](const ::testing::TestParamInfo<std::uint16_t>& op) {
-                             return std::string(opcode_info(static_cast<Opcode>(op.param)).name);
-                         });
+INSTANTIATE_TEST_SUITE_P(PlainOperands, EngineOpcodes,
+                         ::testing::ValuesIn(opcodes_where([](Opcode op) {
+                             return plain(opcode_info(op)) && op != Opcode::Ret;
+                         })),
+                         opcode_name);
 
 } // namespace
 } // namespace eposp::vm::test
