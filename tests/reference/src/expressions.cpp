@@ -282,11 +282,9 @@ Value Evaluator::time_arithmetic(ast::BinaryOperator op, const Value& left, cons
     }
     switch (op) {
     case Op::Add:
-        return integer(type, left.bits + right.bits);
     case Op::Subtract:
-        return integer(type, left.bits - right.bits);
     case Op::Multiply:
-        return integer(type, left.bits * right.bits);
+        return arithmetic(op, left, right, type);
     case Op::Divide:
         return arithmetic(op, left, widen(right, elementary(E::Lint)), type);
     default:
