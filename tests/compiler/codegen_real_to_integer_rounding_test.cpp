@@ -123,19 +123,5 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int64_t>("Main.nan_lint"), 0);
 }
 
-TEST(RealToInteger, TruncStaysTruncation) {
-    StProgram run(R"(
-PROGRAM Main
-VAR r : REAL := 2.5; l : LREAL := -3.7; a, b, c : DINT; END_VAR
-a := TRUNC(r); b := TRUNC(l); c := TRUNC(3.5);
-END_PROGRAM
-)");
-    ASSERT_TRUE(run.ok()) << run.errors();
-    ASSERT_TRUE(run.scans(1)) << run.fault();
-    EXPECT_EQ(run.get<std::int32_t>("Main.a"), 2);
-    EXPECT_EQ(run.get<std::int32_t>("Main.b"), -3);
-    EXPECT_EQ(run.get<std::int32_t>("Main.c"), 3);
-}
-
 } // namespace
 } // namespace eposp::compiler::test

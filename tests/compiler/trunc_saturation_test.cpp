@@ -30,8 +30,10 @@ END_PROGRAM
 
 TEST(TruncSaturation, AValueInsideDintStaysTruncated) {
     StProgram run(R"(PROGRAM Main
-VAR a, b, c : DINT; x : LREAL := -2147483647.5; END_VAR
-a := TRUNC(2.5); b := TRUNC(-3.7); c := TRUNC(x);
+VAR a, b, c, d, e, f : DINT; x : LREAL := -2147483647.5; r : REAL := 2.5; l : LREAL := -3.7;
+END_VAR
+a := TRUNC(2.5); b := TRUNC(-3.7); c := TRUNC(x); d := TRUNC(r); e := TRUNC(l);
+f := TRUNC(3.5);
 END_PROGRAM
 )");
     ASSERT_TRUE(run.ok()) << run.errors();
@@ -39,6 +41,9 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int32_t>("Main.a"), 2);
     EXPECT_EQ(run.get<std::int32_t>("Main.b"), -3);
     EXPECT_EQ(run.get<std::int32_t>("Main.c"), -2147483647);
+    EXPECT_EQ(run.get<std::int32_t>("Main.d"), 2); // a REAL variable as an LREAL one
+    EXPECT_EQ(run.get<std::int32_t>("Main.e"), -3);
+    EXPECT_EQ(run.get<std::int32_t>("Main.f"), 3); // toward zero, not to even
 }
 
 } // namespace
