@@ -187,7 +187,7 @@ TEST(RunTimeError, RecursionWithoutFramesStopsAtTheCallDepthLimit) {
     emit_recursion(h, 0);
     ASSERT_EQ(h.run(), RunState::Faulted);
     EXPECT_EQ(h.machine->describe_fault(0), "stack overflow in Again at line 4");
-    EXPECT_EQ(h.machine->task(0).depth, TaskState::kMaxCallDepth);
+    EXPECT_EQ(h.machine->task(0).depth, kMaxCallDepth);
     EXPECT_EQ(h.machine->run_cycle(0), RunState::Faulted);
 }
 

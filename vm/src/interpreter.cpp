@@ -73,7 +73,7 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     do {                                                                                           \
         const Pou& callee = pous[callee_index];                                                    \
         const auto frame = static_cast<std::uint32_t>(base[3] - mem);                              \
-        if (task.depth == TaskState::kMaxCallDepth ||                                              \
+        if (task.depth == kMaxCallDepth ||                                              \
             std::uint64_t{frame} + callee.frame_size + callee.out_size > task.stack_end) {         \
             VM_TRAP(Trap::StackOverflow);                                                          \
         }                                                                                          \

@@ -778,7 +778,7 @@ void Translator::enter(std::uint32_t callee_index) {
     const Pou& callee = image_.pous[callee_index];
     mov(rdi, qword[r15 + kDepth]);
     mov(eax, dword[rdi]);
-    cmp(eax, TaskState::kMaxCallDepth);
+    cmp(eax, kMaxCallDepth);
     je(trap_exit(Trap::StackOverflow));
     lea(rdx, ptr[r13 + pou_->frame_size]);
     mov(rcx, rdx);

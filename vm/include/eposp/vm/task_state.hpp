@@ -48,8 +48,6 @@ inline constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::
 /// the current activation here and resuming picks it up, so a higher-priority task can run in
 /// between on its own stack.
 struct TaskState {
-    static constexpr std::uint32_t kMaxCallDepth = vm::kMaxCallDepth;
-
     std::uint32_t stack_begin = 0; ///< this task's frames live in [stack_begin, stack_end)
     std::uint32_t stack_end = 0;
     RunState state = RunState::Idle;
