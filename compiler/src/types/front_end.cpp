@@ -9,20 +9,29 @@
 
 namespace eposp::compiler::types {
 
-std::unique_ptr<FrontEnd> analyse(SourceManager& sources, std::span<const FileId> files,
-                                  Diagnostics& diagnostics) {
+std::unique_ptr<FrontEnd> resolve_names(SourceManager& sources, std::span<const FileId> files,
+                                        Diagnostics& diagnostics) {
     auto result = std::make_unique<FrontEnd>();
     for (const FileId file : files) {
         result->units.push_back(parse(sources, file, diagnostics));
     }
+    // A file with syntax errors yields no declarations: resolving the others against it would
+    // only add errors about names that are in fact declared there.
     if (diagnostics.has_errors()) {
         return result;
     }
     result->model.emplace(sema::resolve(result->units, diagnostics));
+    // The built-in library is parsed like a user file, so its errors would point into it.
     const FileId library_file =
         sources.add("<standard library>", std::string(stdlib::standard_library_source()));
     result->library_units.push_back(parse(sources, library_file, diagnostics));
     result->library_model.emplace(sema::resolve_library(result->library_units, diagnostics));
+    return result;
+}
+
+std::unique_ptr<FrontEnd> analyse(SourceManager& sources, std::span<const FileId> files,
+                                  Diagnostics& diagnostics) {
+    auto result = resolve_names(sources, files, diagnostics);
     if (diagnostics.has_errors()) {
         return result;
     }

@@ -26,7 +26,12 @@ struct FrontEnd {
     std::unique_ptr<TypedProgram> program;
 };
 
-/// Parses, resolves and types `files`; null `program` when an error was reported.
+/// Parses and resolves `files` and the built-in library, without typing: what code generation
+/// starts from. Diagnostics tell whether it succeeded.
+std::unique_ptr<FrontEnd> resolve_names(SourceManager& sources, std::span<const FileId> files,
+                                        Diagnostics& diagnostics);
+
+/// resolve_names(), then types the program; null `program` when an error was reported.
 std::unique_ptr<FrontEnd> analyse(SourceManager& sources, std::span<const FileId> files,
                                   Diagnostics& diagnostics);
 
