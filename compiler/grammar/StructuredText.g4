@@ -305,7 +305,8 @@ DATE_AND_TIME_LITERAL
     ;
 // INT#16#FF, REAL#1.5, BOOL#TRUE, STRING#'x', and the qualified enumeration value Color#Red.
 TYPED_LITERAL
-    : NAME '#' ([+-]? DIGITS ('.' DIGITS EXPONENT? | '#' [0-9a-zA-Z_]+)? | NAME | STRING_LITERAL
+    : NAME '#' ([+-]? DIGITS ('.' DIGITS EXPONENT? | EXPONENT | '#' [0-9a-zA-Z_]+)? | NAME
+      | STRING_LITERAL
       | WSTRING_LITERAL)
     ;
 // `1E37` without a point is a CODESYS form; the AST builder warns about it.

@@ -2,6 +2,8 @@
 #include "literal_decoder.hpp"
 #include "token_range.hpp"
 
+#include <string_view>
+
 namespace eposp::compiler {
 
 namespace {
@@ -249,8 +251,15 @@ ast::ExpressionPtr AstBuilder::literal_expression(antlr4::Token& token) {
         error(where, decoded.error());
         return literal(ast::IntegerLiteral{}); // placeholder; the unit has errors anyway
     }
-    if (token.getType() == P::REAL_LITERAL && token.getText().find('.') == std::string::npos) {
-        warning(where, "real literal '" + token.getText() +
+    // `1E37` and `REAL#1E37` (not `REAL#1`, which needs no point); the number follows any `#`.
+    const std::string text = token.getText();
+    const std::size_t hash = text.find('#');
+    const std::string_view number =
+        std::string_view(text).substr(hash == std::string::npos ? 0 : hash + 1);
+    if (std::holds_alternative<ast::RealLiteral>(*decoded) &&
+        number.find('.') == std::string_view::npos &&
+        number.find_first_of("eE") != std::string_view::npos) {
+        warning(where, "real literal '" + text +
                            "' has no decimal point, which IEC 61131-3 (6.3.2) requires; "
                            "accepted as CODESYS does");
     }

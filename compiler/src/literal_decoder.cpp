@@ -506,7 +506,9 @@ Result<ast::Literal> decode_typed(std::string_view text) {
     if (!body.empty() && (body.front() == '-' || body.front() == '+')) {
         body.remove_prefix(1);
     }
-    const bool real_syntax = body.find('.') != std::string_view::npos;
+    // `1.5`, `1.5E3` or CODESYS's `1E3`; a based integer (`16#1E`) has no exponent.
+    const bool real_syntax = body.find_first_of(".eE") != std::string_view::npos &&
+                             body.find('#') == std::string_view::npos;
     if (ast::is_real(*type)) {
         Result<double> value = real_syntax ? parse_real(body) : Result<double>(0.0);
         if (!real_syntax) {

@@ -28,6 +28,25 @@ END_PROGRAM
                                         "decimal point, which IEC 61131-3 (6.3.2) requires"));
 }
 
+TEST(CodesysForms, TypedRealLiteralsWithAnExponentButNoPoint) {
+    StProgram run(R"(
+PROGRAM Main
+VAR big : REAL; small : LREAL; n : INT; END_VAR
+big := REAL#1E37;
+small := LREAL#-2e-3;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<float>("Main.big"), 1e37f);
+    EXPECT_EQ(run.get<double>("Main.small"), -2e-3);
+    EXPECT_THAT(run.errors(), HasSubstr("test.st:4:8: warning: real literal 'REAL#1E37' has no "
+                                        "decimal point, which IEC 61131-3 (6.3.2) requires"));
+    // An integer type takes no exponent.
+    EXPECT_THAT(diagnostics_of("PROGRAM Main VAR n : INT; END_VAR n := INT#1E3; END_PROGRAM"),
+                HasSubstr("error: INT# needs an integer value, not '1E3'"));
+}
+
 TEST(CodesysForms, OnAndOffAreNamesOutsideAResource) {
     StProgram run(R"(
 PROGRAM Main
