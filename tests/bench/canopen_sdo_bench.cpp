@@ -1,8 +1,8 @@
-#include "eposp/canmaster/can/frame_timing.hpp"
-#include "eposp/canmaster/can/virtual_bus.hpp"
-#include "eposp/canmaster/canopen/object_dictionary.hpp"
-#include "eposp/canmaster/canopen/sdo_client.hpp"
-#include "eposp/canmaster/canopen/sdo_server.hpp"
+#include "eposp/can/frame_timing.hpp"
+#include "eposp/can/virtual_bus.hpp"
+#include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/canopen/sdo_client.hpp"
+#include "eposp/canopen/sdo_server.hpp"
 
 #include <benchmark/benchmark.h>
 #include <chrono>

@@ -1,6 +1,7 @@
 #include "../drives/plant_test_motor.hpp"
-#include "eposp/canmaster/canopen/nmt_protocol.hpp"
+#include "eposp/canopen/nmt_protocol.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
+#include "eposp/test/epos2_network.hpp"
 
 #include <benchmark/benchmark.h>
 #include <chrono>
@@ -19,7 +20,7 @@ void BM_Epos2Network(benchmark::State& state) {
     core::EventLoop loop;
     drives::epos2::Epos2DriveConfig config;
     config.axis = drives::plant::test::tuned_axis();
-    drives::epos2::Epos2Network network = drives::epos2::make_epos2_network(loop, count, config);
+    test::Epos2Network network = test::make_epos2_network(loop, count, config);
     auto master = network.bus->connect("master");
     master->on_receive([](const can::Frame&) {});
     // The master's configuration, written the way its SDOs would leave it.

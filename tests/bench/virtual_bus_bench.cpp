@@ -1,4 +1,4 @@
-#include "eposp/canmaster/can/virtual_bus.hpp"
+#include "eposp/can/virtual_bus.hpp"
 
 #include <benchmark/benchmark.h>
 #include <chrono>

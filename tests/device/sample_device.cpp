@@ -1,8 +1,8 @@
 #include "sample_device.hpp"
 
-#include "eposp/canmaster/can/virtual_bus.hpp"
-#include "eposp/canmaster/canopen/eds_export.hpp"
-#include "eposp/canmaster/canopen/node.hpp"
+#include "eposp/can/virtual_bus.hpp"
+#include "eposp/canopen/eds_export.hpp"
+#include "eposp/canopen/node.hpp"
 
 #include <cstdint>
 

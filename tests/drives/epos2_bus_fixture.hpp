@@ -3,9 +3,9 @@
 // The test bench of a simulated EPOS2 driven purely through CAN frames, the way a CANopen master
 // configures and moves a real one: NMT, SDO writes, controlword and target by RPDO, statusword
 // and position by TPDO on SYNC, EMCY on errors. All in virtual time.
-#include "eposp/canmaster/can/virtual_bus.hpp"
-#include "eposp/canmaster/canopen/nmt_protocol.hpp"
-#include "eposp/canmaster/canopen/sdo_client.hpp"
+#include "eposp/can/virtual_bus.hpp"
+#include "eposp/canopen/nmt_protocol.hpp"
+#include "eposp/canopen/sdo_client.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
 #include "plant_test_motor.hpp"
 

@@ -1,11 +1,11 @@
 // The EPOS2 dictionary as a master sees it: a canopen::Node runs on it on a virtual bus, an SDO
 // client reads and writes it, PDOs carry its default mappings. Abort codes as EPOS2 FW spec
 // table 4-12 lists them.
-#include "eposp/canmaster/can/virtual_bus.hpp"
-#include "eposp/canmaster/canopen/nmt_protocol.hpp"
-#include "eposp/canmaster/canopen/node.hpp"
-#include "eposp/canmaster/canopen/sdo_client.hpp"
-#include "eposp/canmaster/canopen/store_restore_objects.hpp"
+#include "eposp/can/virtual_bus.hpp"
+#include "eposp/canopen/nmt_protocol.hpp"
+#include "eposp/canopen/node.hpp"
+#include "eposp/canopen/sdo_client.hpp"
+#include "eposp/canopen/store_restore_objects.hpp"
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
 
 #include <filesystem>

@@ -2,6 +2,7 @@
 // moves a real one: NMT, SDO writes of the mode and profile, controlword and target by RPDO,
 // statusword and position by TPDO on SYNC, EMCY on errors. All in virtual time.
 #include "epos2_bus_fixture.hpp"
+#include "eposp/test/epos2_network.hpp"
 
 #include <set>
 
@@ -297,7 +298,7 @@ TEST_F(Epos2DriveWithLimitSwitch, LimitSwitchNotInTheExecutionMaskIsOnlyDisplaye
 
 TEST(Epos2Network, EveryDriveBootsWithItsOwnNodeId) {
     core::EventLoop loop;
-    Epos2Network network = make_epos2_network(loop, 3, drive_config(plant::test::tuned_axis()), 5);
+    eposp::test::Epos2Network network = eposp::test::make_epos2_network(loop, 3, drive_config(plant::test::tuned_axis()), 5);
     std::vector<std::uint32_t> boot_ups;
     auto master = network.bus->connect("master");
     master->on_receive([&boot_ups](const can::Frame& frame) { boot_ups.push_back(frame.id); });

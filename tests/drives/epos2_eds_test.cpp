@@ -1,5 +1,5 @@
 // The EDS that ships in drives/epos2/ is a fresh export of the dictionary, and reads back to it.
-#include "eposp/canmaster/canopen/eds_import.hpp"
+#include "eposp/canopen/eds_import.hpp"
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
 #include "eposp/drives/epos2/epos2_eds.hpp"
 

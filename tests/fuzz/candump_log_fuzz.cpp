@@ -1,8 +1,8 @@
 // `candump -L` logs, lines and frames of arbitrary text: an error or records, never a crash.
 // A record read must print as a line that reads back to the same record.
 
-#include "eposp/canmaster/can/candump_format.hpp"
-#include "eposp/canmaster/can/candump_log_reader.hpp"
+#include "eposp/can/candump_format.hpp"
+#include "eposp/can/candump_log_reader.hpp"
 #include "fuzz_check.hpp"
 
 #include <cstddef>

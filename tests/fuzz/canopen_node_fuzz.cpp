@@ -8,9 +8,9 @@
 // (long enough for heartbeat and guarding timeouts); flags: bit 7 extended, bit 6 remote, bits
 // 0..3 the DLC (above 8 taken as 8); identifier big-endian. A truncated record ends the input.
 
-#include "eposp/canmaster/can/virtual_bus.hpp"
-#include "eposp/canmaster/canopen/node.hpp"
-#include "eposp/canmaster/canopen/value_codec.hpp"
+#include "eposp/can/virtual_bus.hpp"
+#include "eposp/canopen/node.hpp"
+#include "eposp/canopen/value_codec.hpp"
 #include "eposp/core/event_loop.hpp"
 #include "fuzz_check.hpp"
 

@@ -2,8 +2,8 @@
 // dictionary, never a crash. What imports must export to an EDS that imports back to the same
 // export (eds_export.hpp).
 
-#include "eposp/canmaster/canopen/eds_export.hpp"
-#include "eposp/canmaster/canopen/eds_import.hpp"
+#include "eposp/canopen/eds_export.hpp"
+#include "eposp/canopen/eds_import.hpp"
 #include "fuzz_check.hpp"
 
 #include <cstddef>

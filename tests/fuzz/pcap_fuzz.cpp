@@ -1,7 +1,7 @@
 // pcap captures of arbitrary bytes: an error or records, never a crash. Every record read
 // holds a classic CAN frame (pcap_reader.hpp).
 
-#include "eposp/canmaster/can/pcap_reader.hpp"
+#include "eposp/can/pcap_reader.hpp"
 #include "fuzz_check.hpp"
 
 #include <cstddef>

@@ -2,7 +2,7 @@
 // the server's framing and command parser (socketcand_protocol.hpp) never crash, find the same
 // messages however the bytes are segmented, and the errors it answers stay one message.
 
-#include "eposp/canmaster/can/socketcand_protocol.hpp"
+#include "eposp/can/io/socketcand_protocol.hpp"
 #include "fuzz_check.hpp"
 
 #include <algorithm>
@@ -16,7 +16,7 @@
 
 namespace {
 
-namespace sc = eposp::can::socketcand;
+namespace sc = eposp::can::io::socketcand;
 using eposp::fuzz::require;
 
 /// Replies are not bound by the length limit on what clients send, only by the brackets.

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eposp/canmaster/canopen/object_dictionary.hpp"
+#include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
 
 #include <array>

@@ -2,14 +2,14 @@
 // canmaster service owns are added by that service, with the write rules and hooks the service
 // needs, and then given the EPOS2's names and attributes; the rest is data.
 #include "entry_builder.hpp"
-#include "eposp/canmaster/canopen/emcy_producer.hpp"
-#include "eposp/canmaster/canopen/error_history.hpp"
-#include "eposp/canmaster/canopen/heartbeat_consumer.hpp"
-#include "eposp/canmaster/canopen/heartbeat_producer.hpp"
-#include "eposp/canmaster/canopen/node_guarding.hpp"
-#include "eposp/canmaster/canopen/pdo_objects.hpp"
-#include "eposp/canmaster/canopen/sdo_server.hpp"
-#include "eposp/canmaster/canopen/sync_objects.hpp"
+#include "eposp/canopen/emcy_producer.hpp"
+#include "eposp/canopen/error_history.hpp"
+#include "eposp/canopen/heartbeat_consumer.hpp"
+#include "eposp/canopen/heartbeat_producer.hpp"
+#include "eposp/canopen/node_guarding.hpp"
+#include "eposp/canopen/pdo_objects.hpp"
+#include "eposp/canopen/sdo_server.hpp"
+#include "eposp/canopen/sync_objects.hpp"
 #include "object_areas.hpp"
 
 #include <array>

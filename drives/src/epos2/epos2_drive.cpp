@@ -673,22 +673,4 @@ void Epos2Drive::read_counts_per_turn() {
     counts_per_turn_ = 4.0 * dictionary_.objects().get_as<std::uint32_t>(0x2210, 1);
 }
 
-Epos2Network make_epos2_network(core::EventLoop& loop, std::size_t count,
-                                const Epos2DriveConfig& config, canopen::NodeId first_node_id) {
-    Epos2Network network;
-    network.bus = std::make_unique<can::VirtualBus>(loop);
-    for (std::size_t n = 0; n < count; ++n) {
-        Epos2DriveConfig drive_config = config;
-        drive_config.dictionary.node_id = static_cast<canopen::NodeId>(first_node_id + n);
-        drive_config.dictionary.serial_number = config.dictionary.serial_number + n;
-        drive_config.dictionary.parameter_file.clear();
-        network.ports.push_back(
-            network.bus->connect("epos2-" + std::to_string(drive_config.dictionary.node_id)));
-        network.drives.push_back(
-            std::make_unique<Epos2Drive>(loop, *network.ports.back(), drive_config));
-        network.drives.back()->start();
-    }
-    return network;
-}
-
 } // namespace eposp::drives::epos2

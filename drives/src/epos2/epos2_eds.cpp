@@ -1,6 +1,6 @@
 #include "eposp/drives/epos2/epos2_eds.hpp"
 
-#include "eposp/canmaster/canopen/eds_export.hpp"
+#include "eposp/canopen/eds_export.hpp"
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
 
 #include <utility>

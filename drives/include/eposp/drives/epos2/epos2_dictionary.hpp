@@ -1,10 +1,10 @@
 #pragma once
 
-#include "eposp/canmaster/canopen/device_info.hpp"
-#include "eposp/canmaster/canopen/node.hpp"
-#include "eposp/canmaster/canopen/object_dictionary.hpp"
-#include "eposp/canmaster/canopen/parameter_store.hpp"
-#include "eposp/canmaster/canopen/store_restore_objects.hpp"
+#include "eposp/canopen/device_info.hpp"
+#include "eposp/canopen/node.hpp"
+#include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/canopen/parameter_store.hpp"
+#include "eposp/canopen/store_restore_objects.hpp"
 
 #include <cstdint>
 #include <filesystem>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "eposp/canmaster/can/port.hpp"
-#include "eposp/canmaster/can/virtual_bus.hpp"
-#include "eposp/canmaster/canopen/node.hpp"
+#include "eposp/can/port.hpp"
+#include "eposp/can/virtual_bus.hpp"
+#include "eposp/canopen/node.hpp"
 #include "eposp/core/event_loop.hpp"
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
 #include "eposp/drives/motion/device_control.hpp"
@@ -154,16 +154,5 @@ private:
     core::ScopedTimer controlword_timer_;
     core::ScopedTimer control_timer_;
 };
-
-/// N simulated EPOS2s on one virtual bus in one process, node-IDs first_node_id, +1, …; the
-/// caller connects its master to `bus`. Every drive gets `config` with its own node-ID and
-/// serial number (and no parameter file).
-struct Epos2Network {
-    std::unique_ptr<can::VirtualBus> bus;
-    std::vector<std::unique_ptr<can::VirtualPort>> ports;
-    std::vector<std::unique_ptr<Epos2Drive>> drives;
-};
-Epos2Network make_epos2_network(core::EventLoop& loop, std::size_t count,
-                                const Epos2DriveConfig& config, canopen::NodeId first_node_id = 1);
 
 } // namespace eposp::drives::epos2

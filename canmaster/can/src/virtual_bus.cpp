@@ -1,0 +1,474 @@
+#include "eposp/can/virtual_bus.hpp"
+
+#include "eposp/can/arbitration.hpp"
+#include "eposp/can/error_frame.hpp"
+#include "virtual_bus_impl.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace eposp::can {
+namespace {
+
+constexpr std::uint32_t kMinBitrate = 10'000;
+constexpr std::uint32_t kMaxBitrate = 1'000'000;
+constexpr std::uint64_t kNanosecondsPerSecond = 1'000'000'000;
+/// ISO 11898-1:2015, 12.1.4: bus-off recovery waits for 128 runs of 11 recessive bits.
+constexpr std::uint64_t kBusOffRecoveryRuns = 128;
+/// The ACK slot and the ACK delimiter follow the CRC delimiter.
+constexpr std::size_t kAckSlotAfterCrc = 1;
+constexpr std::size_t kAckDelimiterAfterCrc = 2;
+
+const BusConfig& validated(const BusConfig& config) {
+    if (config.bitrate < kMinBitrate || config.bitrate > kMaxBitrate ||
+        kNanosecondsPerSecond % config.bitrate != 0) {
+        throw std::invalid_argument("VirtualBus: the bit rate must be 10 kbit/s ... 1 Mbit/s and "
+                                    "divide 10^9, so that a bit time is a whole number of ns");
+    }
+    return config;
+}
+
+// ISO 11898-1:2015, 10.4.4: an error frame is the error flag and the error delimiter; the
+// intermission follows. The flag is the 6 bits of one node: all nodes detect a disturbance of
+// the wire at the same bit, so their flags coincide.
+Timeline error_timeline(std::size_t error_flag, std::size_t recessive_from) {
+    const std::size_t delimiter_end = error_flag + kErrorFlagBits + kErrorDelimiterBits;
+    return {.concluded = delimiter_end,
+            .bus_free = delimiter_end + kIntermissionBits,
+            .recessive_from = recessive_from,
+            .error_flag = error_flag};
+}
+
+/// `dominant_flag`: some node that detects the error is error-active and sends an active
+/// (dominant) error flag; error-passive nodes send recessive ones.
+Timeline timeline_of(Outcome outcome, const FrameLength& length, bool dominant_flag) {
+    const std::size_t crc_end = length.stuffed;
+    switch (outcome) {
+    case Outcome::Delivered:
+    case Outcome::Dropped:
+        // The receivers' dominant ACK is the last dominant bit.
+        return {.concluded = length.to_end_of_frame(),
+                .bus_free = length.total(),
+                .recessive_from = crc_end + kAckDelimiterAfterCrc,
+                .error_flag = std::nullopt};
+    case Outcome::Corrupted:
+        // 10.4.4.2: the flag starts at the bit after the error, here after the CRC sequence.
+        // With only passive flags the recessive run is taken to start with the flag.
+        return error_timeline(crc_end, dominant_flag ? crc_end + kErrorFlagBits : crc_end);
+    case Outcome::NotAcknowledged: {
+        // The transmitter sees the ACK slot recessive and flags the error at the next bit.
+        const std::size_t flag = crc_end + kAckSlotAfterCrc + 1;
+        return error_timeline(flag, dominant_flag ? flag + kErrorFlagBits
+                                                  : crc_end - length.trailing_recessive);
+    }
+    }
+    throw std::logic_error("unknown transmission outcome");
+}
+
+} // namespace
+
+// --- the controller's side ----------------------------------------------------------------
+
+const Frame* VirtualPort::Impl::next_frame() const {
+    if (babbled) {
+        return &*babbled;
+    }
+    return tx_queue.empty() ? nullptr : &tx_queue.front();
+}
+
+void VirtualPort::Impl::receive(const Frame& frame, std::size_t capacity) {
+    if (!paused && rx_queue.empty()) {
+        ++counts.rx_frames;
+        port.deliver(frame);
+        return;
+    }
+    if (rx_queue.size() >= capacity) {
+        ++counts.rx_overflows;
+        report_overflow(Overflow::Receive, frame);
+        return;
+    }
+    ++counts.rx_frames;
+    rx_queue.push_back(frame);
+}
+
+void VirtualPort::Impl::report_overflow(Overflow overflow, const Frame& lost) const {
+    if (overflow_handler) {
+        overflow_handler(overflow, lost);
+    }
+}
+
+// --- the bus ------------------------------------------------------------------------------
+
+VirtualBus::Impl::Impl(core::EventLoop& event_loop, const BusConfig& bus_config)
+    : loop(event_loop), config(bus_config), bit(bit_duration(bus_config.bitrate)),
+      created(event_loop.now()), recessive_since(created) {}
+
+core::TimePoint VirtualBus::Impl::at_bit(core::TimePoint start, std::size_t bits) const {
+    return start + bit * static_cast<std::int64_t>(bits);
+}
+
+void VirtualBus::Impl::attach(VirtualPort& port) {
+    ports.push_back(&port);
+}
+
+void VirtualBus::Impl::detach(VirtualPort& port) {
+    std::ranges::replace(ports, &port, nullptr);
+    has_vacancies = true;
+    if (current && current->sender == port.impl_.get()) {
+        current->sender = nullptr;
+    }
+}
+
+void VirtualBus::Impl::compact_ports() {
+    if (has_vacancies) {
+        std::erase(ports, nullptr);
+        has_vacancies = false;
+    }
+}
+
+void VirtualBus::Impl::notify_observers(const WireEvent& event) {
+    // Observers added by an observer see the next event; removed ones are erased afterwards.
+    const ObserverId end = next_observer;
+    notifying = true;
+    for (const auto& [id, observer] : observers) {
+        if (id >= end) {
+            break;
+        }
+        if (observer) {
+            observer(event);
+        }
+    }
+    notifying = false;
+    std::erase_if(observers, [](const auto& entry) { return !entry.second; });
+}
+
+// Frames queued at the same instant must all compete, so arbitration is a deferred event.
+void VirtualBus::Impl::request_arbitration() {
+    if (!current && !arbitration.pending()) {
+        arbitration = core::ScopedTimer(loop, loop.post([this] { arbitrate(); }));
+    }
+}
+
+// ISO 11898-1:2015, 10.4.2.3: the lowest arbitration field wins. Each controller offers the
+// head of its FIFO queue. Equal fields (the same frame from two controllers, an error on a
+// real bus) go to the controller connected first.
+void VirtualBus::Impl::arbitrate() {
+    compact_ports();
+    const core::TimePoint now = loop.now();
+    VirtualPort::Impl* winner = nullptr;
+    const Frame* winning_frame = nullptr;
+    std::optional<core::TimePoint> suspended_until;
+    for (VirtualPort* port : ports) {
+        VirtualPort::Impl& controller = *port->impl_;
+        const Frame* frame = controller.next_frame();
+        if (frame == nullptr || controller.counters.state() == ErrorState::BusOff) {
+            continue;
+        }
+        if (controller.suspended_until > now) {
+            suspended_until = std::min(suspended_until.value_or(controller.suspended_until),
+                                       controller.suspended_until);
+            continue;
+        }
+        if (winner == nullptr || wins_arbitration(*frame, *winning_frame)) {
+            winner = &controller;
+            winning_frame = frame;
+        }
+    }
+    if (winner != nullptr) {
+        suspension_end.cancel();
+        start(*winner, *winning_frame);
+    } else if (suspended_until) {
+        suspension_end =
+            core::ScopedTimer(loop, loop.at(*suspended_until, [this] { request_arbitration(); }));
+    }
+}
+
+Outcome VirtualBus::Impl::outcome_of(const VirtualPort::Impl& sender, const Frame& frame) {
+    // ISO 11898-1:2015, 10.4.2.7: some other controller that takes part in traffic sends the
+    // dominant ACK; without one the transmitter detects an ACK error.
+    const bool acknowledged = std::ranges::any_of(ports, [&sender](const VirtualPort* port) {
+        return port != nullptr && port->impl_.get() != &sender &&
+               port->impl_->counters.state() != ErrorState::BusOff;
+    });
+    if (!acknowledged) {
+        return Outcome::NotAcknowledged;
+    }
+    const std::optional<FrameFault> fault = faults.take(frame);
+    if (!fault) {
+        return Outcome::Delivered;
+    }
+    return *fault == FrameFault::Drop ? Outcome::Dropped : Outcome::Corrupted;
+}
+
+bool VirtualBus::Impl::dominant_error_flag(const VirtualPort::Impl& sender, Outcome outcome) const {
+    const auto active = [](const VirtualPort::Impl& controller) {
+        return controller.counters.state() == ErrorState::Active;
+    };
+    if (outcome == Outcome::NotAcknowledged) {
+        return active(sender);
+    }
+    return std::ranges::any_of(ports, [&active](const VirtualPort* port) {
+        return port != nullptr && active(*port->impl_);
+    });
+}
+
+void VirtualBus::Impl::start(VirtualPort::Impl& sender, const Frame& next) {
+    const Frame frame = next;
+    const Outcome outcome = outcome_of(sender, frame);
+    const FrameLength length = frame_length(frame);
+    const Timeline timeline = timeline_of(outcome, length, dominant_error_flag(sender, outcome));
+    const core::TimePoint now = loop.now();
+
+    count_recessive_runs(now);
+    recessive_since = at_bit(now, timeline.recessive_from);
+    for (VirtualPort* port : ports) {
+        if (port->impl_->recovering) {
+            schedule_recovery(*port->impl_);
+        }
+    }
+
+    current = Transmission{.sender = &sender,
+                           .sender_name = std::string(sender.port.name()),
+                           .frame = frame,
+                           .from_queue = !sender.babbled,
+                           .outcome = outcome,
+                           .length = length,
+                           .timeline = timeline,
+                           .start = now,
+                           .receivers_before = next_sequence};
+    transmission_step =
+        core::ScopedTimer(loop, loop.at(at_bit(now, timeline.concluded), [this] { conclude(); }));
+}
+
+template <typename Visit>
+void VirtualBus::Impl::for_each_receiver(const Transmission& transmission, Visit visit) {
+    // By index: a callback may connect ports (they come after `count`) or disconnect them (their
+    // slot becomes null; compaction waits for the next arbitration).
+    const std::size_t count = ports.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        VirtualPort* port = ports[i];
+        if (port == nullptr || port->impl_.get() == transmission.sender ||
+            port->impl_->sequence >= transmission.receivers_before ||
+            port->impl_->counters.state() == ErrorState::BusOff) {
+            continue;
+        }
+        const ErrorState before = visit(*port->impl_);
+        if (ports[i] == port) {
+            settle_state(*port->impl_, before);
+        }
+    }
+}
+
+void VirtualBus::Impl::conclude() {
+    Transmission& transmission = *current;
+    switch (transmission.outcome) {
+    case Outcome::Delivered:
+        ++stats.frames;
+        notify_observers({.start = transmission.start,
+                          .end = at_bit(transmission.start, transmission.timeline.concluded),
+                          .frame = transmission.frame,
+                          .sender = transmission.sender_name});
+        transmitted(transmission);
+        for_each_receiver(transmission, [this, &transmission](VirtualPort::Impl& receiver) {
+            const ErrorState before = change_counters(
+                receiver, [](ErrorCounters& counters) { counters.receive_success(); });
+            receiver.receive(transmission.frame, config.rx_queue_capacity);
+            return before;
+        });
+        break;
+    case Outcome::Dropped:
+        ++stats.dropped_frames;
+        transmitted(transmission);
+        break;
+    case Outcome::Corrupted:
+    case Outcome::NotAcknowledged:
+        conclude_with_error(transmission);
+        break;
+    }
+    transmission_step =
+        core::ScopedTimer(loop, loop.at(at_bit(transmission.start, transmission.timeline.bus_free),
+                                        [this] { finish(); }));
+}
+
+void VirtualBus::Impl::transmitted(Transmission& transmission) {
+    if (transmission.sender == nullptr) {
+        return;
+    }
+    VirtualPort::Impl& sender = *transmission.sender;
+    if (transmission.from_queue && !sender.tx_queue.empty()) {
+        sender.tx_queue.pop_front();
+    }
+    ++sender.counts.tx_frames;
+    settle_state(sender, change_counters(
+                             sender, [](ErrorCounters& counters) { counters.transmit_success(); }));
+}
+
+void VirtualBus::Impl::conclude_with_error(Transmission& transmission) {
+    ++stats.error_frames;
+    const bool ack_error = transmission.outcome == Outcome::NotAcknowledged;
+    const auto transmit_error = [ack_error](ErrorCounters& counters) {
+        counters.transmit_error(ack_error);
+    };
+
+    // The error frame shows the transmitter's counters after the error.
+    ErrorCounters after = transmission.sender ? transmission.sender->counters : ErrorCounters{};
+    const ErrorState before = after.state();
+    if (before != ErrorState::BusOff) {
+        transmit_error(after);
+    }
+    const bool state_changed = after.state() != before;
+    const bool sent_recessive = transmission.length.trailing_recessive > 0;
+    notify_observers(
+        {.start = at_bit(transmission.start, *transmission.timeline.error_flag),
+         .end = at_bit(transmission.start, transmission.timeline.concluded),
+         .frame = ack_error ? ack_error_frame(after, state_changed)
+                            : crc_sequence_bit_error_frame(sent_recessive, after, state_changed),
+         .sender = transmission.sender_name});
+
+    if (transmission.sender != nullptr) {
+        VirtualPort::Impl& sender = *transmission.sender;
+        settle_state(sender, change_counters(sender, transmit_error));
+    }
+    if (!ack_error) {
+        for_each_receiver(transmission, [this](VirtualPort::Impl& receiver) {
+            return change_counters(receiver,
+                                   [](ErrorCounters& counters) { counters.receive_error(); });
+        });
+    }
+}
+
+void VirtualBus::Impl::finish() {
+    const Transmission transmission = std::move(*current);
+    current.reset();
+    const std::size_t bits = transmission.timeline.bus_free;
+    stats.bits += bits;
+    stats.stuff_bits += transmission.length.stuff_bits;
+    stats.busy += bit * static_cast<std::int64_t>(bits);
+    if (transmission.sender != nullptr &&
+        transmission.sender->counters.state() == ErrorState::Passive) {
+        transmission.sender->suspended_until = at_bit(loop.now(), kSuspendTransmissionBits);
+    }
+    request_arbitration();
+}
+
+// --- fault confinement --------------------------------------------------------------------
+
+void VirtualBus::Impl::settle_state(VirtualPort::Impl& port, ErrorState before) {
+    const ErrorState after = port.counters.state();
+    if (after == before) {
+        return;
+    }
+    if (before == ErrorState::BusOff) {
+        port.recovering = false;
+        port.recovery_timer.cancel();
+        if (port.next_frame() != nullptr) {
+            request_arbitration();
+        }
+    }
+    if (after == ErrorState::BusOff && config.bus_off_recovery == BusOffRecovery::Automatic) {
+        start_recovery(port);
+    }
+    port.notify(after); // last: the handler may even destroy the port
+}
+
+void VirtualBus::Impl::start_recovery(VirtualPort::Impl& port) {
+    port.recovering = true;
+    port.counting_from = loop.now();
+    port.recessive_runs = 0;
+    schedule_recovery(port);
+}
+
+// A recovering controller counts the runs of 11 recessive bits in each stretch of recessive
+// bus that ends with a start of frame; the stretch in progress decides when it is done.
+void VirtualBus::Impl::count_recessive_runs(core::TimePoint start_of_frame) {
+    const core::Duration run = bit * static_cast<std::int64_t>(kRecessiveRunBits);
+    for (VirtualPort* port : ports) {
+        VirtualPort::Impl& controller = *port->impl_;
+        const core::TimePoint from = std::max(recessive_since, controller.counting_from);
+        if (controller.recovering && start_of_frame > from) {
+            controller.recessive_runs += static_cast<std::uint64_t>((start_of_frame - from) / run);
+        }
+    }
+}
+
+void VirtualBus::Impl::schedule_recovery(VirtualPort::Impl& port) {
+    const std::uint64_t missing =
+        kBusOffRecoveryRuns - std::min(port.recessive_runs, kBusOffRecoveryRuns);
+    const core::TimePoint done =
+        at_bit(std::max(recessive_since, port.counting_from), missing * kRecessiveRunBits);
+    port.recovery_timer = core::ScopedTimer(loop, loop.at(done, [this, &port] {
+        const ErrorState before = port.counters.state();
+        port.counters.reset();
+        settle_state(port, before);
+    }));
+}
+
+// --- public interface ---------------------------------------------------------------------
+
+VirtualBus::VirtualBus(core::EventLoop& loop, BusConfig config)
+    : loop_(loop), config_(std::move(config)),
+      impl_(std::make_unique<Impl>(loop, validated(config_))) {}
+
+VirtualBus::~VirtualBus() {
+    for (VirtualPort* port : impl_->ports) {
+        if (port != nullptr) {
+            port->bus_ = nullptr;
+            port->impl_->recovery_timer.cancel();
+        }
+    }
+}
+
+std::unique_ptr<VirtualPort> VirtualBus::connect(std::string name) {
+    std::unique_ptr<VirtualPort> port(new VirtualPort(*this, std::move(name)));
+    impl_->attach(*port);
+    return port;
+}
+
+core::Duration VirtualBus::bit_time() const {
+    return impl_->bit;
+}
+
+BusStatistics VirtualBus::statistics() const {
+    BusStatistics stats = impl_->stats;
+    stats.elapsed = loop_.now() - impl_->created;
+    return stats;
+}
+
+double BusStatistics::load() const {
+    if (elapsed <= core::Duration::zero()) {
+        return 0.0;
+    }
+    return static_cast<double>(busy.count()) / static_cast<double>(elapsed.count());
+}
+
+VirtualBus::ObserverId VirtualBus::add_observer(Observer observer) {
+    const ObserverId id = impl_->next_observer++;
+    impl_->observers.emplace(id, std::move(observer));
+    return id;
+}
+
+void VirtualBus::remove_observer(ObserverId id) {
+    const auto entry = impl_->observers.find(id);
+    if (entry == impl_->observers.end()) {
+        return;
+    }
+    if (impl_->notifying) {
+        entry->second = nullptr;
+    } else {
+        impl_->observers.erase(entry);
+    }
+}
+
+VirtualBus::FaultId VirtualBus::drop_frames(FrameFilter filter, std::uint64_t count) {
+    return impl_->faults.add(FrameFault::Drop, std::move(filter), count);
+}
+
+VirtualBus::FaultId VirtualBus::corrupt_frames(FrameFilter filter, std::uint64_t count) {
+    return impl_->faults.add(FrameFault::Corrupt, std::move(filter), count);
+}
+
+bool VirtualBus::cancel_fault(FaultId id) {
+    return impl_->faults.cancel(id);
+}
+
+} // namespace eposp::can

@@ -1,0 +1,135 @@
+#pragma once
+
+#include "eposp/can/error_counters.hpp"
+#include "eposp/can/frame_timing.hpp"
+#include "eposp/can/virtual_bus.hpp"
+#include "frame_faults.hpp"
+
+#include <deque>
+#include <map>
+#include <optional>
+#include <vector>
+
+// Internal: the state behind VirtualBus and VirtualPort, shared by their two sources.
+namespace eposp::can {
+
+/// The controller behind a VirtualPort: queues, error counters, bus-off recovery.
+class VirtualPort::Impl {
+public:
+    Impl(VirtualPort& owner, std::uint64_t connection) : port(owner), sequence(connection) {}
+
+    /// What the controller wants to send next: the babbled frame or the head of its queue.
+    const Frame* next_frame() const;
+    /// A frame taken from the wire: delivered now, or queued while paused or behind others.
+    void receive(const Frame& frame, std::size_t capacity);
+    void report_overflow(Overflow overflow, const Frame& lost) const;
+    void notify(ErrorState state) const { port.notify_error_state(state); }
+
+    VirtualPort& port;
+    const std::uint64_t sequence; ///< connection order
+    std::deque<Frame> tx_queue;
+    std::deque<Frame> rx_queue;
+    bool paused = false;
+    std::optional<Frame> babbled;
+    ErrorCounters counters;
+    PortStatistics counts; ///< frame and overflow counts; counters and state are read live
+    core::TimePoint suspended_until{};
+    OverflowHandler overflow_handler;
+
+    // Bus-off recovery (ISO 11898-1:2015, 12.1.4): occurrences of 11 recessive bits seen.
+    bool recovering = false;
+    core::TimePoint counting_from{};
+    std::uint64_t recessive_runs = 0;
+    core::ScopedTimer recovery_timer;
+};
+
+/// How a transmission ends.
+enum class Outcome {
+    Delivered,       ///< received by every other controller
+    Dropped,         ///< lost by fault injection
+    Corrupted,       ///< bit error at the end of the CRC sequence, error frame
+    NotAcknowledged, ///< nobody could acknowledge it: ACK error, error frame
+};
+
+/// The instants of one transmission, in bit times from its start of frame.
+struct Timeline {
+    std::size_t concluded = 0;             ///< end of EOF, or end of the error delimiter
+    std::size_t bus_free = 0;              ///< end of intermission
+    std::size_t recessive_from = 0;        ///< start of the recessive bits that follow
+    std::optional<std::size_t> error_flag; ///< start of the error flag, if any
+};
+
+struct Transmission {
+    VirtualPort::Impl* sender; ///< null once that port is gone
+    std::string sender_name;
+    Frame frame;
+    bool from_queue; ///< false for a babbled frame, which stays
+    Outcome outcome;
+    FrameLength length;
+    Timeline timeline;
+    core::TimePoint start;
+    std::uint64_t receivers_before; ///< ports connected later do not receive it
+};
+
+class VirtualBus::Impl {
+public:
+    Impl(core::EventLoop& event_loop, const BusConfig& bus_config);
+
+    void attach(VirtualPort& port);
+    void detach(VirtualPort& port);
+    void request_arbitration();
+    void notify_observers(const WireEvent& event);
+
+    /// Applies `change` to the counters of a port that takes part in traffic; the caller then
+    /// settles the state change with settle_state() once no callback can interfere.
+    template <typename Change>
+    ErrorState change_counters(VirtualPort::Impl& port, Change change) {
+        const ErrorState before = port.counters.state();
+        if (before != ErrorState::BusOff) {
+            change(port.counters);
+        }
+        return before;
+    }
+    void settle_state(VirtualPort::Impl& port, ErrorState before);
+    void start_recovery(VirtualPort::Impl& port);
+
+    core::EventLoop& loop;
+    const BusConfig& config;
+    const core::Duration bit;
+    const core::TimePoint created;
+
+    std::vector<VirtualPort*> ports; ///< connection order; null where a port left
+    bool has_vacancies = false;
+    std::uint64_t next_sequence = 0;
+
+    std::map<ObserverId, Observer> observers; ///< empty functions are removed ones
+    ObserverId next_observer = 1;
+    bool notifying = false;
+
+    FrameFaults faults;
+    BusStatistics stats;
+
+    std::optional<Transmission> current;
+    core::TimePoint recessive_since;
+    core::ScopedTimer arbitration;
+    core::ScopedTimer suspension_end;
+    core::ScopedTimer transmission_step;
+
+private:
+    void arbitrate();
+    void start(VirtualPort::Impl& sender, const Frame& frame);
+    Outcome outcome_of(const VirtualPort::Impl& sender, const Frame& frame);
+    bool dominant_error_flag(const VirtualPort::Impl& sender, Outcome outcome) const;
+    void conclude();
+    void conclude_with_error(Transmission& transmission);
+    void finish();
+    void transmitted(Transmission& transmission);
+    template <typename Visit>
+    void for_each_receiver(const Transmission& transmission, Visit visit);
+    void count_recessive_runs(core::TimePoint start_of_frame);
+    void schedule_recovery(VirtualPort::Impl& port);
+    void compact_ports();
+    core::TimePoint at_bit(core::TimePoint start, std::size_t bits) const;
+};
+
+} // namespace eposp::can

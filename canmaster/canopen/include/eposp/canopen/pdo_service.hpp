@@ -1,0 +1,62 @@
+#pragma once
+
+#include "eposp/can/frame.hpp"
+#include "eposp/can/port.hpp"
+#include "eposp/canopen/emergency.hpp"
+#include "eposp/canopen/nmt_state.hpp"
+#include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/canopen/rpdo.hpp"
+#include "eposp/canopen/tpdo.hpp"
+#include "eposp/core/event_loop.hpp"
+
+#include <bitset>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace eposp::canopen {
+
+/// Every RPDO and TPDO whose objects a dictionary holds (add_pdo_objects()), as one service for
+/// a node to compose: frames, SYNC notifications and NMT state changes go to all of them. At a
+/// SYNC the TPDOs sample before the RPDOs apply what they received, so a synchronous TPDO
+/// reports the state of the cycle that ends.
+class PdoService {
+public:
+    PdoService(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
+               EmergencyCallback emergency = {});
+    ~PdoService();
+    PdoService(const PdoService&) = delete;
+    PdoService& operator=(const PdoService&) = delete;
+
+    void on_frame(const can::Frame& frame);
+    /// The SYNC consumer's notification; `counter` is 0 for a SYNC without counter.
+    void on_sync(std::uint8_t counter);
+    /// The synchronous window of the last SYNC closed (SyncConsumer::on_window_closed).
+    void on_window_closed();
+    void set_nmt_state(NmtState state);
+    /// Re-reads every PDO's parameters (after ObjectDictionary::reset_to_defaults).
+    void reload();
+
+    std::size_t rpdo_count() const { return rpdos_.size(); }
+    std::size_t tpdo_count() const { return tpdos_.size(); }
+    /// PDO `number`, 1-based; out of range is a programming error (std::out_of_range).
+    Rpdo& rpdo(std::size_t number);
+    Tpdo& tpdo(std::size_t number);
+
+private:
+    void index_identifiers();
+
+    ObjectDictionary& od_;
+    std::vector<std::unique_ptr<Rpdo>> rpdos_;
+    std::vector<std::unique_ptr<Tpdo>> tpdos_;
+    /// The 11-bit identifiers of every PDO's COB-ID, valid or not: every frame on the bus
+    /// reaches on_frame(), and most are none of this node's PDOs. Rebuilt at the first frame
+    /// after a communication parameter changed or a reload.
+    std::bitset<can::kMaxStandardId + 1> standard_ids_;
+    bool identifiers_stale_ = true;
+    std::vector<ObjectDictionary::ListenerId> od_listeners_;
+};
+
+} // namespace eposp::canopen

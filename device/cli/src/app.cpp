@@ -1,0 +1,34 @@
+#include "commands.hpp"
+#include "cli.hpp"
+#include "version.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace eposp::device {
+
+int run_cli(int argc, char** argv) {
+    CLI::App app{"eposp - a soft-PLC reimplementation of the maxon EPOS P", "eposp"};
+    app.set_version_flag("--version", std::string("eposp ") + kVersion);
+    app.require_subcommand(1);
+    app.fallthrough(false);
+
+    int exit_code = 0;
+    cli::add_bus_command(app, exit_code);
+    cli::add_node_command(app, exit_code);
+    cli::add_drive_command(app, exit_code);
+    cli::add_check_command(app, exit_code);
+    cli::add_build_command(app, exit_code);
+    cli::add_dump_command(app, exit_code);
+    cli::add_run_command(app, exit_code);
+    cli::add_bench_command(app, exit_code);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // --help and --version end here with 0; every usage error is a user error: 1.
+        return app.exit(error) == 0 ? 0 : 1;
+    }
+    return exit_code;
+}
+
+} // namespace eposp::device

@@ -1,0 +1,62 @@
+// `eposp bus`: hosts a simulated CAN bus that outside tools join over socketcand, optionally
+// bridged to a real SocketCAN interface, fed from a candump log and recorded to traces.
+#include "commands.hpp"
+#include "eposp/can/candump_log_reader.hpp"
+#include "eposp/can/candump_replay.hpp"
+#include "eposp/device/hosted_bus.hpp"
+#include "options.hpp"
+
+#include <fmt/format.h>
+#include <memory>
+#include <optional>
+
+namespace eposp::device::cli {
+namespace {
+
+constexpr std::string_view kCommand = "bus";
+
+struct BusOptions {
+    HostedBusOptions hosting;
+    std::optional<std::string> replay;
+};
+
+int run_bus(const BusOptions& options) {
+    auto hosted = HostedBus::open(options.hosting);
+    if (!hosted) {
+        return report_user_error(kCommand, hosted.error());
+    }
+    HostedBus& host = **hosted;
+
+    std::unique_ptr<can::CandumpReplay> replay;
+    if (options.replay) {
+        auto records = can::read_candump_log_file(*options.replay);
+        if (!records) {
+            return report_user_error(kCommand, records.error());
+        }
+        replay = std::make_unique<can::CandumpReplay>(host.loop(), host.attach("replay"),
+                                                      std::move(*records));
+    }
+
+    host.run();
+    if (replay) {
+        const can::ReplayReport& report = replay->report();
+        fmt::print("replay: {} frames sent, {} refused, {} skipped{}\n", report.sent,
+                   report.refused, report.skipped, replay->finished() ? "" : " (cut short)");
+    }
+    host.print_summary();
+    return 0;
+}
+
+} // namespace
+
+void add_bus_command(CLI::App& app, int& exit_code) {
+    auto options = std::make_shared<BusOptions>();
+    CLI::App* command = app.add_subcommand(
+        "bus", "Host a simulated CAN bus that outside tools join (real time unless --virtual)");
+    add_hosted_bus_options(*command, options->hosting);
+    command->add_option("--replay", options->replay, "Play a candump -L log onto the bus")
+        ->check(CLI::ExistingFile);
+    command->callback([options, &exit_code] { exit_code = run_bus(*options); });
+}
+
+} // namespace eposp::device::cli

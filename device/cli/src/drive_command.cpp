@@ -1,0 +1,77 @@
+// `eposp drive epos2`: one simulated maxon EPOS2 on a simulated CAN bus, hosted like `eposp bus`
+// (socketcand, SocketCAN bridge, traces), so that outside CANopen masters can drive it.
+#include "commands.hpp"
+#include "eposp/drives/epos2/epos2_drive.hpp"
+#include "eposp/drives/plant/axis_file.hpp"
+#include "eposp/device/hosted_bus.hpp"
+#include "options.hpp"
+
+#include <cstdio>
+#include <fmt/format.h>
+#include <memory>
+
+namespace eposp::device::cli {
+namespace {
+
+constexpr std::string_view kCommand = "drive epos2";
+
+struct DriveOptions {
+    HostedBusOptions hosting;
+    int node_id = 1;
+    std::string config; ///< the machine's YAML file; the reference axis without one
+};
+
+int run_drive(const DriveOptions& options) {
+    if (options.hosting.virtual_time && !options.hosting.duration) {
+        // The drive's control loop never idles: a virtual run needs an end.
+        return report_user_error(kCommand, "--virtual needs --for DURATION");
+    }
+    drives::epos2::Epos2DriveConfig config;
+    config.dictionary.node_id = static_cast<canopen::NodeId>(options.node_id);
+    if (!options.config.empty()) {
+        auto axis = drives::plant::load_axis_file(options.config);
+        if (!axis) {
+            return report_user_error(kCommand, axis.error());
+        }
+        config.axis = std::move(*axis);
+    }
+    auto hosted = HostedBus::open(options.hosting);
+    if (!hosted) {
+        return report_user_error(kCommand, hosted.error());
+    }
+    HostedBus& host = **hosted;
+
+    drives::epos2::Epos2Drive drive(host.loop(),
+                                    host.attach(fmt::format("epos2 {}", options.node_id)), config);
+    drive.start();
+    fmt::print("epos2: node {} on bus {}{}\n", options.node_id, options.hosting.name,
+               host.socketcand_address() ? ", socketcand " + *host.socketcand_address() : "");
+    std::fflush(stdout);
+
+    host.run();
+    fmt::print("epos2: node {} stopped in {}\n", options.node_id,
+               drives::motion::to_string(drive.state()));
+    host.print_summary();
+    return 0;
+}
+
+} // namespace
+
+void add_drive_command(CLI::App& app, int& exit_code) {
+    CLI::App* drive = app.add_subcommand("drive", "Run a simulated drive on a CAN bus");
+    drive->require_subcommand(1);
+    auto options = std::make_shared<DriveOptions>();
+    CLI::App* epos2 = drive->add_subcommand(
+        "epos2", "A simulated maxon EPOS2 24/5 on a simulated bus that outside tools join (real "
+                 "time unless --virtual)");
+    epos2->add_option("--node-id", options->node_id, "CANopen node-ID")
+        ->check(CLI::Range(1, 127))
+        ->capture_default_str();
+    epos2->add_option("--config", options->config,
+                      "YAML file of the simulated machine: motor, gearhead, encoder, load, power "
+                      "stage, gains, switch positions (docs/epos2.md)");
+    add_hosted_bus_options(*epos2, options->hosting);
+    epos2->callback([options, &exit_code] { exit_code = run_drive(*options); });
+}
+
+} // namespace eposp::device::cli

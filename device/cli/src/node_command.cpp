@@ -1,0 +1,143 @@
+// `eposp node`: a plain CANopen slave built from an EDS file, hosted on a simulated bus that
+// outside tools (python-can, CANopen browsers) join over socketcand or SocketCAN.
+#include "commands.hpp"
+#include "eposp/canopen/eds_import.hpp"
+#include "eposp/canopen/error_history.hpp"
+#include "eposp/canopen/nmt_protocol.hpp"
+#include "eposp/canopen/node.hpp"
+#include "eposp/device/hosted_bus.hpp"
+#include "options.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fmt/format.h>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace eposp::device::cli {
+namespace {
+
+constexpr std::string_view kCommand = "node";
+
+struct NodeOptions {
+    HostedBusOptions hosting;
+    std::string eds;
+    unsigned node_id = 0;
+    std::optional<std::string> parameter_file;
+};
+
+core::Result<std::string> read_text_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        return core::Error{fmt::format("cannot read {}: {}", path, std::strerror(errno))};
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// A sub-object of the dictionary as UNSIGNED32, or `fallback` when the EDS lacks it.
+std::uint32_t u32_or(const canopen::ObjectDictionary& od, std::uint16_t index,
+                     std::uint8_t sub_index, std::uint32_t fallback) {
+    return od.find(index, sub_index) != nullptr ? od.get_as<std::uint32_t>(index, sub_index)
+                                                : fallback;
+}
+
+/// CiA 306 leaves persistence out of an EDS, so the node decides: 0x1010 "save all parameters"
+/// stores every writable entry but the error history and the store / restore commands.
+void make_parameters_persistent(canopen::ObjectDictionary& od) {
+    constexpr std::uint16_t kStoreParameters = 0x1010;
+    constexpr std::uint16_t kRestoreDefaultParameters = 0x1011;
+    for (const auto& [index, object] : od.objects()) {
+        if (index == canopen::kPreDefinedErrorFieldIndex || index == kStoreParameters ||
+            index == kRestoreDefaultParameters) {
+            continue;
+        }
+        for (const auto& [sub_index, sub] : object.subs) {
+            od.find(index, sub_index)->persistent = canopen::writable(sub.access);
+        }
+    }
+}
+
+/// The node's configuration beyond the EDS: 0x1000 and 0x1018 come from the EDS where it has
+/// them (the node adds only what the dictionary lacks), else from its [DeviceInfo].
+canopen::NodeConfig node_config(const NodeOptions& options, const canopen::ImportedEds& eds) {
+    const canopen::ObjectDictionary& od = eds.dictionary;
+    canopen::NodeConfig config;
+    config.node_id = static_cast<canopen::NodeId>(options.node_id);
+    config.device_type = u32_or(od, canopen::kDeviceTypeIndex, 0, 0);
+    config.identity = {
+        .vendor_id = u32_or(od, canopen::kIdentityIndex, 1, eds.device.vendor_number),
+        .product_code = u32_or(od, canopen::kIdentityIndex, 2, eds.device.product_number),
+        .revision_number = u32_or(od, canopen::kIdentityIndex, 3, eds.device.revision_number),
+        .serial_number = u32_or(od, canopen::kIdentityIndex, 4, 0),
+    };
+    if (options.parameter_file) {
+        config.parameter_file = *options.parameter_file;
+    }
+    return config;
+}
+
+int run_node(const NodeOptions& options) {
+    const auto text = read_text_file(options.eds);
+    if (!text) {
+        return report_user_error(kCommand, text.error());
+    }
+    auto eds =
+        canopen::import_eds(*text, options.eds, static_cast<canopen::NodeId>(options.node_id));
+    if (!eds) {
+        return report_user_error(kCommand, eds.error());
+    }
+    // The import tolerates missing sections; a file without any object is not a device's EDS
+    // (CiA 306 4.6.1: [MandatoryObjects] lists at least 0x1000, 0x1001 and 0x1018).
+    if (eds->dictionary.objects().empty()) {
+        return report_user_error(
+            kCommand, fmt::format("{}: lists no object ([MandatoryObjects], [OptionalObjects] and "
+                                  "[ManufacturerObjects] are missing or empty)",
+                                  options.eds));
+    }
+    make_parameters_persistent(eds->dictionary);
+    auto hosted = HostedBus::open(options.hosting);
+    if (!hosted) {
+        return report_user_error(kCommand, hosted.error());
+    }
+    HostedBus& host = **hosted;
+
+    const std::string port_name = fmt::format("node {}", options.node_id);
+    canopen::Node node(host.loop(), host.attach(port_name), eds->dictionary,
+                       node_config(options, *eds));
+    const std::string& name =
+        eds->device.product_name.empty() ? options.eds : eds->device.product_name;
+    fmt::print("node {} ({}) on bus {}{}\n", options.node_id, name, options.hosting.name,
+               host.socketcand_address() ? ", socketcand " + *host.socketcand_address() : "");
+    node.start();
+
+    host.run();
+    fmt::print("node {}: {}\n", options.node_id, canopen::to_string(node.nmt_state()));
+    host.print_summary();
+    return 0;
+}
+
+} // namespace
+
+void add_node_command(CLI::App& app, int& exit_code) {
+    auto options = std::make_shared<NodeOptions>();
+    CLI::App* command = app.add_subcommand(
+        "node", "Run a CANopen slave built from an EDS file on a simulated bus that outside "
+                "tools join (real time unless --virtual)");
+    command->add_option("--eds", options->eds, "The node's electronic data sheet (CiA 306 EDS/DCF)")
+        ->required();
+    command
+        ->add_option("--node-id", options->node_id,
+                     fmt::format("The node-ID, 1..{} ($NODEID in the EDS)", canopen::kMaxNodeId))
+        ->required()
+        ->check(CLI::Range(1U, unsigned{canopen::kMaxNodeId}));
+    command->add_option("--parameter-file", options->parameter_file,
+                        "Non-volatile memory of 0x1010 store / 0x1011 restore");
+    add_hosted_bus_options(*command, options->hosting);
+    command->callback([options, &exit_code] { exit_code = run_node(*options); });
+}
+
+} // namespace eposp::device::cli

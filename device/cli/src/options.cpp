@@ -1,0 +1,58 @@
+#include "options.hpp"
+
+#include <cstdio>
+#include <fmt/format.h>
+
+namespace eposp::device::cli {
+
+int report_user_error(std::string_view command, std::string_view message) {
+    fmt::print(stderr, "eposp {}: error: {}\n", command, message);
+    return 1;
+}
+
+CLI::Option* add_duration_option(CLI::App& command, const std::string& name,
+                                 std::optional<core::Duration>& target,
+                                 const std::string& description) {
+    return command
+        .add_option_function<std::string>(
+            name,
+            [&target](const std::string& text) {
+                target = core::parse_duration(text);
+                if (!target) {
+                    throw CLI::ValidationError(
+                        "--for", "'" + text + "' is not a duration (examples: 10s, 250ms, 2m)");
+                }
+            },
+            description)
+        ->type_name("DURATION");
+}
+
+CLI::Option* add_engine_option(CLI::App& command, vm::Engine& target) {
+    return command
+        .add_option_function<std::string>(
+            "--engine",
+            [&target](const std::string& name) {
+                target = name == "interpreter" ? vm::Engine::Interpreter : vm::Engine::Compiled;
+            },
+            "What runs the program: compiled (machine code where the build can) or interpreter")
+        ->check(CLI::IsMember({"compiled", "interpreter"}))
+        ->default_str(target == vm::Engine::Compiled ? "compiled" : "interpreter");
+}
+
+void add_hosted_bus_options(CLI::App& command, HostedBusOptions& options) {
+    command.add_option("--socketcand", options.socketcand,
+                       "Serve the socketcand protocol on HOST:PORT (e.g. 127.0.0.1:29536)");
+    command.add_option("--socketcan", options.socketcan,
+                       "Bridge a Linux CAN interface (e.g. can0, vcan0) onto the bus");
+    command.add_option("--name", options.name, "The bus's interface name")->capture_default_str();
+    command.add_option("--bitrate", options.bitrate, "Bit rate in bit/s")->capture_default_str();
+    command.add_option("--log", options.log, "Record a candump -L log to FILE");
+    command.add_option("--pcap", options.pcap, "Record a pcap (LINKTYPE_CAN_SOCKETCAN) to FILE");
+    add_duration_option(command, "--for", options.duration,
+                        "Stop after DURATION (otherwise at SIGINT/SIGTERM, or when a --virtual "
+                        "run has nothing left to do)");
+    command.add_flag("--virtual", options.virtual_time,
+                     "Run in virtual time, as fast as the CPU allows (no outside clients)");
+}
+
+} // namespace eposp::device::cli

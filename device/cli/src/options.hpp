@@ -1,0 +1,31 @@
+#pragma once
+
+#include "eposp/core/time.hpp"
+#include "eposp/device/hosted_bus.hpp"
+#include "eposp/vm/program.hpp"
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace eposp::device::cli {
+
+/// Adds `--for DURATION` (`10s`, `250ms`, `2m`, ...), the bound every long-running command takes.
+CLI::Option* add_duration_option(CLI::App& command, const std::string& name,
+                                 std::optional<core::Duration>& target,
+                                 const std::string& description);
+
+/// Adds `--engine compiled|interpreter`: what runs the program (the interpreter is the reference,
+/// compiled code the fast one; both give the same results).
+CLI::Option* add_engine_option(CLI::App& command, vm::Engine& target);
+
+/// Reports a user-facing failure as `eposp <command>: error: <message>` on stderr and returns
+/// the exit code for it, 1.
+int report_user_error(std::string_view command, std::string_view message);
+
+/// Adds the hosting options (--socketcand, --socketcan, --name, --bitrate, --log, --pcap, --for,
+/// --virtual) to `command`.
+void add_hosted_bus_options(CLI::App& command, HostedBusOptions& options);
+
+} // namespace eposp::device::cli

@@ -1,0 +1,164 @@
+// `eposp run app.epx|FILES… [--for 10s] [--watch PATH]… [--ns-per-instruction N]
+// [--retain FILE --start warm] [--engine interpreter]`: runs a program in the PLC runtime in
+// virtual time, and prints each task's statistics, the errors raised and the watched variables at
+// the end.
+#include "commands.hpp"
+#include "options.hpp"
+#include "eposp/device/epos_p.hpp"
+#include "program_input.hpp"
+
+#include <fmt/format.h>
+#include <memory>
+#include <optional>
+
+namespace eposp::device::cli {
+namespace {
+
+constexpr std::string_view kCommand = "run";
+constexpr core::Duration kDefaultDuration = std::chrono::seconds(10);
+
+struct RunOptions {
+    std::vector<std::string> paths;
+    std::optional<core::Duration> duration;
+    std::vector<std::string> watch;
+    std::uint64_t ns_per_instruction = 0;
+    std::uint64_t watchdog = vm::RuntimeConfig{}.watchdog_instructions;
+    std::optional<std::string> retain_file;
+    std::string start = "cold";
+    vm::Engine engine = vm::default_engine();
+};
+
+std::string statistics_line(const vm::TaskStatistics& s, std::uint64_t ns_per_instruction) {
+    // Without a cost model every cycle takes no time: execution times, jitter and overruns
+    // would all be 0, which says nothing about the program.
+    if (ns_per_instruction == 0) {
+        return fmt::format("{} instructions in the last cycle; execution time not modelled "
+                           "(--ns-per-instruction N gives each instruction N ns)",
+                           s.instructions_last);
+    }
+    return fmt::format("execution last {} min {} avg {} max {}, jitter last {} max {}, "
+                       "{} overruns, {} instructions in the last cycle",
+                       core::format_duration(s.execution_last),
+                       core::format_duration(s.execution_min),
+                       core::format_duration(s.execution_average()),
+                       core::format_duration(s.execution_max), core::format_duration(s.jitter_last),
+                       core::format_duration(s.jitter_max), s.overruns, s.instructions_last);
+}
+
+void print_task_summary(Plc& plc, std::uint64_t ns_per_instruction) {
+    const auto& tasks = plc.image().tasks;
+    vm::PlcRuntime& runtime = plc.runtime();
+    for (std::size_t task = 0; task < tasks.size(); ++task) {
+        const vm::Task& spec = tasks[task];
+        const vm::TaskStatistics& statistics = runtime.statistics(task);
+        const std::string when =
+            spec.kind == vm::TaskKind::Cyclic
+                ? "every " + core::format_duration(core::Duration(spec.interval_ns))
+                : std::string("on its event");
+        if (runtime.task_faulted(task)) {
+            fmt::print("  {}: stopped after {} cycles: {}\n", spec.name, statistics.cycles,
+                       runtime.fault_text(task));
+        } else {
+            fmt::print("  {}: {} cycles, {} (priority {})\n", spec.name, statistics.cycles, when,
+                       spec.priority);
+        }
+        fmt::print("    {}\n", statistics_line(statistics, ns_per_instruction));
+    }
+}
+
+void print_errors(const Plc& plc) {
+    for (const RaisedError& error : plc.errors()) {
+        fmt::print("  error 0x{:04X} at {}: {}\n", error.code,
+                   core::format_duration(error.when.time_since_epoch()), error.text);
+    }
+}
+
+std::optional<vm::StartMode> start_mode(const std::string& name) {
+    if (name == "cold") {
+        return vm::StartMode::Cold;
+    }
+    if (name == "warm") {
+        return vm::StartMode::Warm;
+    }
+    if (name == "hot") {
+        return vm::StartMode::Hot;
+    }
+    return std::nullopt;
+}
+
+int run_program(const RunOptions& options) {
+    auto image = program_image(options.paths);
+    if (!image) {
+        return report_user_error(kCommand, image.error());
+    }
+    vm::RuntimeConfig config;
+    config.cost.ns_per_instruction = options.ns_per_instruction;
+    config.watchdog_instructions = options.watchdog;
+    config.engine = options.engine;
+    if (options.retain_file) {
+        config.retain_file = *options.retain_file;
+    }
+    EposPConfig device_config;
+    device_config.runtime = std::move(config);
+    auto device = std::make_unique<EposP>(std::move(device_config));
+    Plc& plc = device->plc();
+    if (const auto error = plc.load(std::move(*image))) {
+        return report_user_error(kCommand, error->message);
+    }
+    // Unknown watch paths are found before the run, not after it.
+    for (const std::string& path : options.watch) {
+        if (const auto value = plc.value_of(path); !value) {
+            return report_user_error(kCommand, fmt::format("--watch {}: {}", path, value.error()));
+        }
+    }
+    if (const auto error = plc.runtime().start(*start_mode(options.start))) {
+        return report_user_error(kCommand, error->message);
+    }
+    const core::Duration duration = options.duration.value_or(kDefaultDuration);
+    device->loop().run_until(device->loop().now() + duration);
+    plc.runtime().stop(); // saves the RETAIN variables
+
+    fmt::print("ran {} of virtual time\n", core::format_duration(duration));
+    print_task_summary(plc, options.ns_per_instruction);
+    print_errors(plc);
+    for (const std::string& path : options.watch) {
+        fmt::print("{} = {}\n", path, *plc.value_of(path));
+    }
+    bool faulted = false;
+    for (std::size_t task = 0; task < plc.image().tasks.size(); ++task) {
+        faulted = faulted || plc.runtime().task_faulted(task);
+    }
+    return faulted ? 1 : 0;
+}
+
+} // namespace
+
+void add_run_command(CLI::App& app, int& exit_code) {
+    auto options = std::make_shared<RunOptions>();
+    CLI::App* command =
+        app.add_subcommand("run", "Run a program's tasks in virtual time and print what they did");
+    command->add_option("files", options->paths, "One .epx image, or the .st files of one program")
+        ->required();
+    add_duration_option(*command, "--for", options->duration, "Virtual time to run (default 10s)");
+    command->add_option("--watch", options->watch,
+                        "Print this variable at the end (e.g. Inst0.counter); repeatable");
+    command
+        ->add_option("--ns-per-instruction", options->ns_per_instruction,
+                     "Virtual time one VM instruction takes (0: cycles take no time and "
+                     "their execution time is not modelled)")
+        ->capture_default_str();
+    command
+        ->add_option("--watchdog", options->watchdog,
+                     "Instructions one task cycle may execute before it is stopped")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    command->add_option("--retain", options->retain_file,
+                        "File the RETAIN variables are kept in between runs");
+    command->add_option("--start", options->start, "Start mode: cold, warm or hot")
+        ->check(CLI::IsMember({"cold", "warm", "hot"}))
+        ->capture_default_str();
+    add_engine_option(*command, options->engine);
+    command->callback([options, &exit_code] { exit_code = run_program(*options); });
+}
+
+} // namespace eposp::device::cli

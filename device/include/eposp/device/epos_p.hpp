@@ -1,0 +1,58 @@
+#pragma once
+
+#include "eposp/can/virtual_bus.hpp"
+#include "eposp/core/event_loop.hpp"
+#include "eposp/device/plc.hpp"
+#include "eposp/drives/epos2/epos2_drive.hpp"
+
+#include <cstdint>
+#include <memory>
+
+namespace eposp::device {
+
+struct EposPConfig {
+    /// Virtual time (as fast as the CPU allows, deterministic) or the wall clock.
+    core::Pace pace = core::Pace::Virtual;
+    vm::RuntimeConfig runtime;
+    /// The internal EPOS2 on port 1; its node-ID is always 1 (DESIGN.md, "CAN").
+    drives::epos2::Epos2DriveConfig internal_drive;
+    /// Port 2, the external CAN bus.
+    std::uint32_t external_bit_rate = 1'000'000;
+};
+
+/// The EPOS P: the PLC and two CAN ports on one event loop. Port 1 is the internal bus to the
+/// internal EPOS2 (node 1, always present); port 2 is the external CAN bus, an in-process virtual
+/// bus that simulated slaves join. Powered up by the constructor: the internal EPOS2 boots at
+/// once; a program runs once it is loaded into plc() and started.
+///
+/// Neither copyable nor movable: the drive, the ports and the PLC refer to the loop.
+class EposP {
+public:
+    explicit EposP(EposPConfig config = {});
+    ~EposP();
+    EposP(const EposP&) = delete;
+    EposP& operator=(const EposP&) = delete;
+
+    core::EventLoop& loop() { return loop_; }
+    Plc& plc() { return plc_; }
+
+    /// Port 1: the internal bus, the controller's own port on it and the internal EPOS2.
+    can::VirtualBus& internal_bus() { return internal_bus_; }
+    can::Port& internal_port() { return *internal_port_; }
+    drives::epos2::Epos2Drive& internal_drive() { return *internal_drive_; }
+    /// Port 2: the external CAN bus and the controller's own port on it.
+    can::VirtualBus& external_bus() { return external_bus_; }
+    can::Port& external_port() { return *external_port_; }
+
+private:
+    core::EventLoop loop_;
+    can::VirtualBus internal_bus_;
+    std::unique_ptr<can::VirtualPort> internal_port_;
+    std::unique_ptr<can::VirtualPort> internal_drive_port_;
+    std::unique_ptr<drives::epos2::Epos2Drive> internal_drive_;
+    can::VirtualBus external_bus_;
+    std::unique_ptr<can::VirtualPort> external_port_;
+    Plc plc_;
+};
+
+} // namespace eposp::device

@@ -1,0 +1,52 @@
+#pragma once
+
+#include "eposp/core/event_loop.hpp"
+#include "eposp/core/result.hpp"
+#include "eposp/vm/native.hpp"
+#include "eposp/vm/plc_runtime.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace eposp::device {
+
+/// An error the PLC runtime raised, with the time it happened at.
+struct RaisedError {
+    core::TimePoint when;
+    std::uint16_t code = 0;
+    std::string text;
+};
+
+/// The programmable part of the EPOS P: a PLC runtime linked against the natives a PLC offers
+/// (the standard library, and a clock that reads the loop's time for TON, TOF, TP and the RTC),
+/// its tasks on the loop, its errors collected.
+///
+/// Neither copyable nor movable: the runtime refers to the natives and the error sink to this.
+class Plc {
+public:
+    Plc(core::EventLoop& loop, vm::RuntimeConfig config);
+    Plc(const Plc&) = delete;
+    Plc& operator=(const Plc&) = delete;
+
+    /// Verifies, links and loads a program image; the error says why it cannot run. The program
+    /// does not start: runtime().start() starts it.
+    std::optional<core::Error> load(vm::Image image) { return runtime_.load(std::move(image)); }
+
+    vm::PlcRuntime& runtime() { return runtime_; }
+    const vm::Image& image() const { return runtime_.image(); }
+    const std::vector<RaisedError>& errors() const { return errors_; }
+    /// The value of the variable at `path` (`Inst0.counter`) as an IEC literal.
+    core::Result<std::string> value_of(const std::string& path) const {
+        return runtime_.read(path);
+    }
+
+private:
+    core::EventLoop& loop_;
+    vm::NativeRegistry natives_;
+    std::vector<RaisedError> errors_;
+    vm::PlcRuntime runtime_;
+};
+
+} // namespace eposp::device

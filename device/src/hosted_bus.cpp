@@ -1,0 +1,177 @@
+#include "eposp/device/hosted_bus.hpp"
+
+#include "eposp/can/bus_recorder.hpp"
+#include "eposp/can/candump_log_writer.hpp"
+#include "eposp/can/pcap_writer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <fmt/format.h>
+
+namespace eposp::device {
+namespace {
+
+// CiA 301 table 2: the bit rates a CANopen network runs at.
+constexpr std::array<std::uint32_t, 8> kCiaBitrates{10'000,  20'000,  50'000,  125'000,
+                                                    250'000, 500'000, 800'000, 1'000'000};
+
+std::optional<std::string> validate(const HostedBusOptions& options) {
+    if (std::ranges::find(kCiaBitrates, options.bitrate) == kCiaBitrates.end()) {
+        return fmt::format("--bitrate {} is not a CANopen bit rate (one of {})", options.bitrate,
+                           fmt::join(kCiaBitrates, ", "));
+    }
+    if (options.virtual_time && (options.socketcand || options.socketcan)) {
+        return "--virtual runs faster than the wall clock, so outside clients "
+               "(--socketcand, --socketcan) cannot take part";
+    }
+    return std::nullopt;
+}
+
+// A virtual run's traces start at 0 s; a real-time run's show wall-clock times like candump.
+can::TraceClock trace_clock(const core::EventLoop& loop, bool virtual_time) {
+    if (virtual_time) {
+        return can::TraceClock{};
+    }
+    return can::TraceClock::aligned(
+        loop.now(), std::chrono::time_point_cast<core::Duration>(std::chrono::system_clock::now()));
+}
+
+void print_port(const std::string_view name, const can::PortStatistics& port) {
+    fmt::print("  {:<16} tx {:>8}  rx {:>8}  tx-overflows {:>4}  rx-overflows {:>4}  {}\n", name,
+               port.tx_frames, port.rx_frames, port.tx_overflows, port.rx_overflows,
+               can::to_string(port.state));
+}
+
+} // namespace
+
+// The traces a run writes, each recording the bus until the run ends.
+class HostedBus::Recording {
+public:
+    Recording(can::VirtualBus& bus, can::TraceClock clock) : bus_(bus), clock_(clock) {}
+
+    template <typename Writer>
+    std::optional<std::string> add(const std::string& path) {
+        auto output = can::TraceOutput::create(path);
+        if (!output) {
+            return output.error();
+        }
+        sinks_.push_back(std::make_unique<Writer>(std::move(*output)));
+        recorders_.push_back(std::make_unique<can::BusRecorder>(bus_, *sinks_.back(), clock_));
+        return std::nullopt;
+    }
+
+private:
+    can::VirtualBus& bus_;
+    can::TraceClock clock_;
+    std::vector<std::unique_ptr<can::TraceSink>> sinks_;
+    std::vector<std::unique_ptr<can::BusRecorder>> recorders_;
+};
+
+HostedBus::HostedBus(const HostedBusOptions& options)
+    : options_(options), loop_(options.virtual_time ? core::Pace::Virtual : core::Pace::RealTime),
+      bus_(loop_, can::BusConfig{.name = options.name, .bitrate = options.bitrate}),
+      clock_(trace_clock(loop_, options.virtual_time)),
+      recording_(std::make_unique<Recording>(bus_, clock_)) {}
+
+HostedBus::~HostedBus() = default;
+
+core::Result<std::unique_ptr<HostedBus>> HostedBus::open(const HostedBusOptions& options) {
+    if (auto problem = validate(options)) {
+        return core::Error{*problem};
+    }
+    std::unique_ptr<HostedBus> hosted(new HostedBus(options));
+    if (auto problem = hosted->open_outside_world()) {
+        return core::Error{*problem};
+    }
+    return hosted;
+}
+
+std::optional<std::string> HostedBus::open_outside_world() {
+    if (options_.log) {
+        if (auto problem = recording_->add<can::CandumpLogWriter>(*options_.log)) {
+            return problem;
+        }
+    }
+    if (options_.pcap) {
+        if (auto problem = recording_->add<can::PcapWriter>(*options_.pcap)) {
+            return problem;
+        }
+    }
+    attach("monitor");
+
+    if (options_.socketcand) {
+        auto opened = can::io::SocketcandServer::open(
+            bus_, {.listen = *options_.socketcand, .epoch_offset = clock_.epoch_offset()});
+        if (!opened) {
+            return opened.error();
+        }
+        server_ = std::move(*opened);
+        server_->on_client_event([](const can::io::SocketcandClientEvent& event) {
+            if (event.kind == can::io::SocketcandClientEvent::Kind::Connected) {
+                fmt::print("socketcand: {} joined from {}\n", event.client, event.remote);
+            } else {
+                fmt::print("socketcand: {} left ({})\n", event.client, event.reason);
+            }
+            std::fflush(stdout);
+        });
+        fmt::print("socketcand: listening on {} (bus {})\n", server_->address(), options_.name);
+    }
+
+    if (options_.socketcan) {
+        auto opened = can::io::SocketCanPort::open(loop_, *options_.socketcan);
+        if (!opened) {
+            return fmt::format("--socketcan {}: {}", *options_.socketcan, opened.error());
+        }
+        socketcan_ = std::move(*opened);
+        bridge_ = std::make_unique<can::PortBridge>(attach("socketcan:" + *options_.socketcan),
+                                                    *socketcan_);
+        fmt::print("socketcan: {} bridged to bus {}\n", *options_.socketcan, options_.name);
+    }
+    std::fflush(stdout);
+    return std::nullopt;
+}
+
+std::optional<std::string> HostedBus::socketcand_address() const {
+    if (!server_) {
+        return std::nullopt;
+    }
+    return server_->address();
+}
+
+can::VirtualPort& HostedBus::attach(const std::string& name) {
+    own_ports_.push_back(bus_.connect(name));
+    return *own_ports_.back();
+}
+
+RunEnd HostedBus::run() {
+    std::fflush(stdout);
+    const RunEnd end = run_until_done(loop_, options_.duration);
+    if (end == RunEnd::Interrupted) {
+        fmt::print("interrupted\n");
+    }
+    return end;
+}
+
+void HostedBus::print_summary() const {
+    const can::BusStatistics stats = bus_.statistics();
+    fmt::print("bus {} at {} kbit/s: {:.3f} s, {} frames, {} error frames, {} dropped, {} bits "
+               "({} stuff bits), load {:.2f} %\n",
+               bus_.config().name, bus_.config().bitrate / 1000,
+               std::chrono::duration<double>(stats.elapsed).count(), stats.frames,
+               stats.error_frames, stats.dropped_frames, stats.bits, stats.stuff_bits,
+               stats.load() * 100.0);
+    for (const auto& port : own_ports_) {
+        print_port(port->name(), port->statistics());
+    }
+    if (server_) {
+        for (const auto& client : server_->clients()) {
+            if (client.port) {
+                print_port(client.client, *client.port);
+            }
+        }
+    }
+}
+
+} // namespace eposp::device

@@ -1,5 +1,0 @@
-#include "eposp/device/cli.hpp"
-
-int main(int argc, char** argv) {
-    return eposp::device::run_cli(argc, argv);
-}
