@@ -69,6 +69,12 @@ HeartbeatConsumer::~HeartbeatConsumer() {
     od_.remove_listener(listener_);
 }
 
+void HeartbeatConsumer::receive_keys(ReceiveKeys& keys) const {
+    for (const auto& [node, monitor] : monitors_) {
+        keys.push_back(error_control_can_id(node));
+    }
+}
+
 void HeartbeatConsumer::on_frame(const can::Frame& frame) {
     if (state_ == NmtState::Initialising || frame.extended || frame.remote || frame.error ||
         frame.dlc != 1 || frame.id <= kErrorControlCanIdBase ||

@@ -1,6 +1,7 @@
 #include "eposp/canopen/node.hpp"
 
 #include "eposp/canopen/emergency.hpp"
+#include "eposp/canopen/nmt_protocol.hpp"
 #include "eposp/canopen/predefined_connection_set.hpp"
 #include "eposp/canopen/value_codec.hpp"
 #include "lss_configuration_file.hpp"
@@ -145,7 +146,8 @@ Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary,
     sync_consumer_.on_sync(
         [this](const SyncEvent& sync) { pdo_.on_sync(sync.counter.value_or(0)); });
     sync_consumer_.on_window_closed([this] { pdo_.on_window_closed(); });
-    port_.on_receive([this](const can::Frame& frame) { on_frame(frame); });
+    route_frames();
+    port_.on_receive([this](const can::Frame& frame) { router_.dispatch(frame); });
     port_.on_error_state([this](can::ErrorState state) {
         if (state != can::ErrorState::BusOff) {
             emcy_.controller_recovered();
@@ -159,6 +161,9 @@ Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary,
 Node::~Node() {
     port_.on_receive({});
     port_.on_error_state({});
+    for (const auto id : cob_id_listeners_) {
+        od_.remove_listener(id);
+    }
 }
 
 void Node::on_controller_state(std::function<void(can::ErrorState)> handler) {
@@ -192,14 +197,34 @@ void Node::on_reset_application(std::function<void()> handler) {
     application_reset_handler_ = std::move(handler);
 }
 
-void Node::on_frame(const can::Frame& frame) {
-    lss_.on_frame(frame);
-    nmt_.on_frame(frame);
-    sync_consumer_.on_frame(frame);
-    sdo_.on_frame(frame);
-    pdo_.on_frame(frame);
-    heartbeat_consumer_.on_frame(frame);
-    guarding_.on_frame(frame);
+void Node::route_frames() {
+    router_.add([](ReceiveKeys& keys) { keys.push_back(kLssMasterCobId); },
+                [this](const can::Frame& frame) { lss_.on_frame(frame); });
+    router_.add([](ReceiveKeys& keys) { keys.push_back(kNmtCanId); },
+                [this](const can::Frame& frame) { nmt_.on_frame(frame); });
+    router_.add([this](ReceiveKeys& keys) { sync_consumer_.receive_keys(keys); },
+                [this](const can::Frame& frame) { sync_consumer_.on_frame(frame); });
+    router_.add([this](ReceiveKeys& keys) { sdo_.receive_keys(keys); },
+                [this](const can::Frame& frame) { sdo_.on_frame(frame); });
+    router_.add([this](ReceiveKeys& keys) { pdo_.receive_keys(keys); },
+                [this](const can::Frame& frame) { pdo_.on_frame(frame); });
+    router_.add([this](ReceiveKeys& keys) { heartbeat_consumer_.receive_keys(keys); },
+                [this](const can::Frame& frame) { heartbeat_consumer_.on_frame(frame); });
+    router_.add([this](ReceiveKeys& keys) { guarding_.receive_keys(keys); },
+                [this](const can::Frame& frame) { guarding_.on_frame(frame); });
+    // The objects the identifiers come from; reset communication (where a new node-ID takes
+    // effect) invalidates too.
+    std::vector<std::uint16_t> indices{kCobIdSyncIndex, kConsumerHeartbeatTimeIndex};
+    for (std::size_t n = 1; n <= pdo_.rpdo_count(); ++n) {
+        indices.push_back(pdo_communication_index(PdoDirection::Receive, n));
+    }
+    for (std::size_t n = 1; n <= pdo_.tpdo_count(); ++n) {
+        indices.push_back(pdo_communication_index(PdoDirection::Transmit, n));
+    }
+    for (const std::uint16_t index : indices) {
+        cob_id_listeners_.push_back(
+            od_.on_change(index, [this](std::uint16_t, std::uint8_t) { router_.invalidate(); }));
+    }
 }
 
 void Node::set_nmt_state(NmtState state) {
@@ -260,6 +285,7 @@ void Node::reset_communication() {
     adopt_node_id(lss_.reset_communication());
     restore_stored_values(true);
     pdo_.reload();
+    router_.invalidate();
 }
 
 void Node::adopt_node_id(NodeId node_id) {

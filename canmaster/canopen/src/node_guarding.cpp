@@ -37,6 +37,10 @@ NodeGuarding::~NodeGuarding() {
     }
 }
 
+void NodeGuarding::receive_keys(ReceiveKeys& keys) const {
+    keys.push_back(error_control_can_id(node_id_));
+}
+
 void NodeGuarding::on_frame(const can::Frame& frame) {
     if (state_ == NmtState::Initialising || !frame.remote || frame.extended || frame.error ||
         frame.id != error_control_can_id(node_id_) || heartbeat_in_use()) {

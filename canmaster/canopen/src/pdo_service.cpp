@@ -8,54 +8,30 @@
 namespace eposp::canopen {
 
 PdoService::PdoService(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
-                       EmergencyCallback emergency)
-    : od_(od) {
-    const auto stale = [this](std::uint16_t, std::uint8_t) {
-        identifiers_stale_ = true;
-    };
+                       EmergencyCallback emergency) {
     for (std::size_t n = 1; n <= count_pdos(od, PdoDirection::Receive); ++n) {
         rpdos_.push_back(std::make_unique<Rpdo>(loop, od, n, emergency));
-        od_listeners_.push_back(
-            od.on_change(pdo_communication_index(PdoDirection::Receive, n), stale));
     }
     for (std::size_t n = 1; n <= count_pdos(od, PdoDirection::Transmit); ++n) {
         tpdos_.push_back(std::make_unique<Tpdo>(loop, port, od, n, emergency));
-        od_listeners_.push_back(
-            od.on_change(pdo_communication_index(PdoDirection::Transmit, n), stale));
     }
 }
 
-PdoService::~PdoService() {
-    for (const auto id : od_listeners_) {
-        od_.remove_listener(id);
-    }
-}
-
-void PdoService::index_identifiers() {
-    standard_ids_.reset();
-    const auto add = [this](PdoCobId cob_id) {
-        if (!cob_id.extended()) {
-            standard_ids_.set(cob_id.can_id() & can::kMaxStandardId);
-        }
-    };
+void PdoService::receive_keys(ReceiveKeys& keys) const {
+    // A TPDO takes its remote requests, and its own identifier sent by another node (a collision).
     for (const auto& rpdo : rpdos_) {
-        add(rpdo->cob_id());
+        if (rpdo->cob_id().valid()) {
+            keys.push_back(receive_key(rpdo->cob_id().raw));
+        }
     }
     for (const auto& tpdo : tpdos_) {
-        add(tpdo->cob_id());
+        if (tpdo->cob_id().valid()) {
+            keys.push_back(receive_key(tpdo->cob_id().raw));
+        }
     }
-    identifiers_stale_ = false;
 }
 
 void PdoService::on_frame(const can::Frame& frame) {
-    if (!frame.extended) {
-        if (identifiers_stale_) {
-            index_identifiers();
-        }
-        if (frame.id > can::kMaxStandardId || !standard_ids_.test(frame.id)) {
-            return;
-        }
-    }
     for (auto& rpdo : rpdos_) {
         rpdo->on_frame(frame);
     }
@@ -92,7 +68,6 @@ void PdoService::set_nmt_state(NmtState state) {
 }
 
 void PdoService::reload() {
-    identifiers_stale_ = true;
     for (auto& rpdo : rpdos_) {
         rpdo->reload();
     }

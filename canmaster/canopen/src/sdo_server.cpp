@@ -52,6 +52,10 @@ void SdoServer::set_nmt_state(NmtState state) {
     }
 }
 
+void SdoServer::receive_keys(ReceiveKeys& keys) const {
+    keys.push_back(receive_key(request_cob_id_));
+}
+
 void SdoServer::on_frame(const can::Frame& frame) {
     if (!enabled_ || !is_message_on(frame, request_cob_id_)) {
         return;

@@ -22,6 +22,12 @@ SyncConsumer::~SyncConsumer() {
     }
 }
 
+void SyncConsumer::receive_keys(ReceiveKeys& keys) const {
+    if (cob_id_) {
+        keys.push_back(receive_key(*cob_id_));
+    }
+}
+
 void SyncConsumer::on_frame(const can::Frame& frame) {
     // CiA 301 7.3.2.2: SYNC in pre-operational and operational only.
     if ((state_ != NmtState::PreOperational && state_ != NmtState::Operational) || !cob_id_ ||

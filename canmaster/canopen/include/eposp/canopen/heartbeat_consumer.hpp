@@ -2,6 +2,7 @@
 
 #include "eposp/can/frame.hpp"
 #include "eposp/canopen/emergency.hpp"
+#include "eposp/canopen/frame_router.hpp"
 #include "eposp/canopen/nmt_state.hpp"
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/core/event_loop.hpp"
@@ -53,6 +54,8 @@ public:
     HeartbeatConsumer& operator=(const HeartbeatConsumer&) = delete;
 
     void on_frame(const can::Frame& frame);
+    /// Adds the identifiers of the frames on_frame() takes now (FrameRouter).
+    void receive_keys(ReceiveKeys& keys) const;
     void set_nmt_state(NmtState state);
 
     /// The state a monitored node reported last; nullopt before its first heartbeat, after a

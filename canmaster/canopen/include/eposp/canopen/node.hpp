@@ -5,6 +5,7 @@
 #include "eposp/can/port.hpp"
 #include "eposp/canopen/emcy_producer.hpp"
 #include "eposp/canopen/error_history.hpp"
+#include "eposp/canopen/frame_router.hpp"
 #include "eposp/canopen/heartbeat_consumer.hpp"
 #include "eposp/canopen/heartbeat_producer.hpp"
 #include "eposp/canopen/lss_protocol.hpp"
@@ -76,7 +77,8 @@ struct NodeConfig {
 std::uint8_t error_register_bits(std::uint16_t emcy_error_code);
 
 /// A CANopen slave node (CiA 301), CANopenNode-style: a dictionary, a port and the services on
-/// them. The node owns the port's receive handler and hands every frame to every service, tells
+/// them. The node owns the port's receive handler and hands each frame to the services that take
+/// its identifier (FrameRouter: the table follows every COB-ID and node-ID change), tells
 /// every service the NMT state, feeds SYNCs (received or its own) to the PDOs and the services'
 /// emergencies to its EMCY producer.
 ///
@@ -128,7 +130,8 @@ public:
     PdoService& pdo() { return pdo_; }
 
 private:
-    void on_frame(const can::Frame& frame);
+    /// Each service receives the frames of its identifiers; the table follows their changes.
+    void route_frames();
     void set_nmt_state(NmtState state);
     void raise_emergency(std::uint16_t error_code);
     /// Stored values (or defaults) back in the communication area only, or in all of it.
@@ -150,6 +153,8 @@ private:
     StoredValuesReport stored_values_;
     std::function<void()> application_reset_handler_;
     std::function<void(can::ErrorState)> controller_state_handler_;
+    FrameRouter router_;
+    std::vector<ObjectDictionary::ListenerId> cob_id_listeners_;
 
     NmtSlave nmt_;
     EmcyProducer emcy_;

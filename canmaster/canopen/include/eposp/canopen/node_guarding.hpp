@@ -2,6 +2,7 @@
 
 #include "eposp/can/port.hpp"
 #include "eposp/canopen/emergency.hpp"
+#include "eposp/canopen/frame_router.hpp"
 #include "eposp/canopen/nmt_state.hpp"
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/core/event_loop.hpp"
@@ -41,6 +42,8 @@ public:
     NodeGuarding& operator=(const NodeGuarding&) = delete;
 
     void on_frame(const can::Frame& frame);
+    /// Adds the identifiers of the frames on_frame() takes now (FrameRouter).
+    void receive_keys(ReceiveKeys& keys) const;
     void set_nmt_state(NmtState state);
     /// A node-ID LSS configured, at the node's reset communication (CiA 305).
     void set_node_id(NodeId node_id) { node_id_ = node_id; }

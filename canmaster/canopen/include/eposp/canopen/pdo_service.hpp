@@ -3,13 +3,13 @@
 #include "eposp/can/frame.hpp"
 #include "eposp/can/port.hpp"
 #include "eposp/canopen/emergency.hpp"
+#include "eposp/canopen/frame_router.hpp"
 #include "eposp/canopen/nmt_state.hpp"
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/canopen/rpdo.hpp"
 #include "eposp/canopen/tpdo.hpp"
 #include "eposp/core/event_loop.hpp"
 
-#include <bitset>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -26,11 +26,12 @@ class PdoService {
 public:
     PdoService(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
                EmergencyCallback emergency = {});
-    ~PdoService();
     PdoService(const PdoService&) = delete;
     PdoService& operator=(const PdoService&) = delete;
 
     void on_frame(const can::Frame& frame);
+    /// Adds the identifiers of the frames on_frame() takes now (FrameRouter).
+    void receive_keys(ReceiveKeys& keys) const;
     /// The SYNC consumer's notification; `counter` is 0 for a SYNC without counter.
     void on_sync(std::uint8_t counter);
     /// The synchronous window of the last SYNC closed (SyncConsumer::on_window_closed).
@@ -46,17 +47,8 @@ public:
     Tpdo& tpdo(std::size_t number);
 
 private:
-    void index_identifiers();
-
-    ObjectDictionary& od_;
     std::vector<std::unique_ptr<Rpdo>> rpdos_;
     std::vector<std::unique_ptr<Tpdo>> tpdos_;
-    /// The 11-bit identifiers of every PDO's COB-ID, valid or not: every frame on the bus
-    /// reaches on_frame(), and most are none of this node's PDOs. Rebuilt at the first frame
-    /// after a communication parameter changed or a reload.
-    std::bitset<can::kMaxStandardId + 1> standard_ids_;
-    bool identifiers_stale_ = true;
-    std::vector<ObjectDictionary::ListenerId> od_listeners_;
 };
 
 } // namespace eposp::canopen

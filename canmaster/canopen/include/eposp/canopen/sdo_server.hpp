@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/can/port.hpp"
+#include "eposp/canopen/frame_router.hpp"
 #include "eposp/canopen/nmt_state.hpp"
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/canopen/sdo_block_receiver.hpp"
@@ -47,6 +48,8 @@ public:
 
     /// Feeds a received frame; frames other than this server's requests are ignored.
     void on_frame(const can::Frame& frame);
+    /// Adds the identifiers of the frames on_frame() takes now (FrameRouter).
+    void receive_keys(ReceiveKeys& keys) const;
     /// The node's NMT state; the server starts in pre-operational. Leaving pre-operational and
     /// operational drops a running transfer without a reply.
     void set_nmt_state(NmtState state);

@@ -2,6 +2,7 @@
 
 #include "eposp/can/frame.hpp"
 #include "eposp/canopen/emergency.hpp"
+#include "eposp/canopen/frame_router.hpp"
 #include "eposp/canopen/nmt_state.hpp"
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/core/event_loop.hpp"
@@ -40,6 +41,8 @@ public:
 
     /// A frame from the bus, or a SYNC this node produced itself (SyncProducer::on_sent).
     void on_frame(const can::Frame& frame);
+    /// Adds the identifiers of the frames on_frame() takes now (FrameRouter).
+    void receive_keys(ReceiveKeys& keys) const;
     void set_nmt_state(NmtState state);
 
     void on_sync(SyncListener listener);

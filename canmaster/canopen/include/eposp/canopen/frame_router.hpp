@@ -1,0 +1,56 @@
+#pragma once
+
+#include "eposp/can/frame.hpp"
+#include "eposp/canopen/cob_id.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+namespace eposp::canopen {
+
+/// What a receiver registers: a CAN identifier with its frame format, written like a COB-ID
+/// entry's identifier bits (kCobIdExtended | 29 bits, or 11 bits alone).
+using ReceiveKey = std::uint32_t;
+using ReceiveKeys = std::vector<ReceiveKey>;
+
+/// The key of the frames a COB-ID entry names (its valid / RTR / generate bits do not count).
+constexpr ReceiveKey receive_key(std::uint32_t cob_id) {
+    return (cob_id & kCobIdExtended) | can_id(cob_id);
+}
+constexpr ReceiveKey receive_key(const can::Frame& frame) {
+    return frame.extended ? kCobIdExtended | frame.id : frame.id;
+}
+
+/// Which service hears which frame: a table keyed by identifier, as lely-core's CAN network
+/// keeps its receivers, so a received frame reaches only the services that take its identifier
+/// instead of every one of them. A receiver says which keys it takes now; the table asks again
+/// before the next frame after invalidate() (a COB-ID or the node-ID changed). Error frames
+/// reach no receiver.
+class FrameRouter {
+public:
+    using KeySource = std::function<void(ReceiveKeys& keys)>;
+    using Handler = std::function<void(const can::Frame& frame)>;
+
+    /// `handler` gets every frame whose key `keys` lists, once however often it lists it.
+    void add(KeySource keys, Handler handler);
+    /// The receivers' keys may have changed.
+    void invalidate() { stale_ = true; }
+    /// Hands `frame` to the receivers of its key, in the order they were added.
+    void dispatch(const can::Frame& frame);
+
+private:
+    struct Receiver {
+        KeySource keys;
+        Handler handler;
+    };
+    void rebuild();
+
+    std::vector<Receiver> receivers_;
+    std::unordered_map<ReceiveKey, std::vector<std::size_t>> table_;
+    bool stale_ = true;
+    int depth_ = 0; ///< dispatches in progress
+};
+
+} // namespace eposp::canopen

@@ -1,0 +1,113 @@
+// FrameRouter: a received frame reaches only the receivers of its identifier.
+#include "eposp/canopen/frame_router.hpp"
+
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+namespace eposp::canopen {
+namespace {
+
+struct Routed {
+    FrameRouter router;
+    std::vector<std::string> heard;
+
+    /// A receiver named `name` that takes `keys` (which the test may change).
+    void add(const std::string& name, ReceiveKeys& keys) {
+        router.add([&keys](ReceiveKeys& out) { out.insert(out.end(), keys.begin(), keys.end()); },
+                   [this, name](const can::Frame& frame) {
+                       heard.push_back(name + ":" + std::to_string(frame.id));
+                   });
+    }
+};
+
+can::Frame extended_frame(std::uint32_t id) {
+    can::Frame frame = can::Frame::data_frame(id, {0});
+    frame.extended = true;
+    return frame;
+}
+
+TEST(FrameRouter, AFrameReachesOnlyTheReceiversOfItsIdentifierInTheOrderAdded) {
+    Routed routed;
+    ReceiveKeys sync{0x080};
+    ReceiveKeys sdo{0x601};
+    ReceiveKeys also_sync{0x080, 0x181};
+    routed.add("sync", sync);
+    routed.add("sdo", sdo);
+    routed.add("pdo", also_sync);
+
+    routed.router.dispatch(can::Frame::data_frame(0x080, {}));
+    routed.router.dispatch(can::Frame::data_frame(0x601, {0x40, 0, 0x10, 0, 0, 0, 0, 0}));
+    routed.router.dispatch(can::Frame::data_frame(0x200, {1}));
+
+    EXPECT_EQ(routed.heard, (std::vector<std::string>{"sync:128", "pdo:128", "sdo:1537"}));
+}
+
+TEST(FrameRouter, ElevenAndTwentyNineBitIdentifiersAreDifferentKeys) {
+    Routed routed;
+    ReceiveKeys standard{receive_key(0x181)};
+    ReceiveKeys extended{receive_key(kCobIdExtended | 0x181)};
+    routed.add("standard", standard);
+    routed.add("extended", extended);
+
+    routed.router.dispatch(extended_frame(0x181));
+    routed.router.dispatch(can::Frame::data_frame(0x181, {0}));
+
+    EXPECT_EQ(routed.heard, (std::vector<std::string>{"extended:385", "standard:385"}));
+}
+
+TEST(FrameRouter, AKeyListedTwiceDeliversTheFrameOnce) {
+    Routed routed;
+    ReceiveKeys twice{0x181, 0x181};
+    routed.add("pdo", twice);
+    routed.router.dispatch(can::Frame::data_frame(0x181, {0}));
+    EXPECT_EQ(routed.heard, (std::vector<std::string>{"pdo:385"}));
+}
+
+TEST(FrameRouter, AfterInvalidateTheReceiversAreAskedAgain) {
+    Routed routed;
+    ReceiveKeys sync{0x080};
+    routed.add("sync", sync);
+    routed.router.dispatch(can::Frame::data_frame(0x080, {}));
+
+    sync = {0x081}; // 0x1005 written: the table still routes the old identifier
+    routed.router.dispatch(can::Frame::data_frame(0x081, {}));
+    routed.router.invalidate();
+    routed.router.dispatch(can::Frame::data_frame(0x080, {}));
+    routed.router.dispatch(can::Frame::data_frame(0x081, {}));
+
+    EXPECT_EQ(routed.heard, (std::vector<std::string>{"sync:128", "sync:129"}));
+}
+
+TEST(FrameRouter, ErrorFramesReachNoReceiver) {
+    Routed routed;
+    ReceiveKeys keys{0x004}; // an error frame's id holds its error class (here: controller)
+    routed.add("any", keys);
+    can::Frame error = can::Frame::data_frame(0x004, {0, 0x04});
+    error.error = true;
+    routed.router.dispatch(error);
+    EXPECT_TRUE(routed.heard.empty());
+}
+
+TEST(FrameRouter, AReceiverThatInvalidatesWhileHandlingAFrameChangesTheNextFrameOnly) {
+    FrameRouter router;
+    ReceiveKeys keys{0x000};
+    std::vector<std::uint32_t> heard;
+    router.add([&keys](ReceiveKeys& out) { out = keys; },
+               [&](const can::Frame& frame) {
+                   heard.push_back(frame.id);
+                   keys = {0x001}; // e.g. a reset communication that moves the node's identifiers
+                   router.invalidate();
+               });
+    router.add([](ReceiveKeys& out) { out.push_back(0x000); },
+               [&](const can::Frame& frame) { heard.push_back(0x100 + frame.id); });
+
+    router.dispatch(can::Frame::data_frame(0x000, {1, 0}));
+    router.dispatch(can::Frame::data_frame(0x000, {1, 0}));
+    router.dispatch(can::Frame::data_frame(0x001, {}));
+
+    EXPECT_EQ(heard, (std::vector<std::uint32_t>{0x000, 0x100, 0x100, 0x001}));
+}
+
+} // namespace
+} // namespace eposp::canopen
