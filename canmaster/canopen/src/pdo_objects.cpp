@@ -1,5 +1,6 @@
 #include "eposp/canopen/pdo_objects.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <stdexcept>
 #include <string>
@@ -16,7 +17,14 @@ struct Limits {
     std::uint8_t mapping_entries = 8;
     bool extended_ids = true;
     std::optional<CanIdRange> can_id_range;
+    std::vector<std::uint8_t> transmission_types; ///< empty: every type CiA 301 allows
 };
+
+bool accepted_transmission_type(const Limits& limits, std::uint8_t type) {
+    return valid_transmission_type(limits.direction, type) &&
+           (limits.transmission_types.empty() ||
+            std::ranges::find(limits.transmission_types, type) != limits.transmission_types.end());
+}
 
 bool in(CanIdRange range, std::uint32_t id) {
     return id >= range.first && id <= range.last;
@@ -124,8 +132,8 @@ void add_communication(ObjectDictionary& od, const Limits& limits, const PdoDefa
     SubObject& type = add_persistent(od, index, kPdoTransmissionTypeSub, "Transmission type",
                                      DataType::Unsigned8, encode(defaults.transmission_type));
     guard<std::uint8_t>(od, index, type, [limits](std::uint8_t value) {
-        return valid_transmission_type(limits.direction, value) ? AbortCode::None
-                                                                : AbortCode::InvalidValue;
+        return accepted_transmission_type(limits, value) ? AbortCode::None
+                                                         : AbortCode::InvalidValue;
     });
     if (limits.direction == PdoDirection::Receive) {
         // CiA 301 7.5.2.35: an RPDO's event timer is its deadline; sub-indices 3 and 6 are
@@ -185,9 +193,15 @@ void add_mapping(ObjectDictionary& od, const Limits& limits, const PdoDefaults& 
 
 void add_pdos(ObjectDictionary& od, PdoDirection direction, const std::vector<PdoDefaults>& pdos,
               const PdoObjectsConfig& config) {
+    const bool receive = direction == PdoDirection::Receive;
     for (std::size_t i = 0; i < pdos.size(); ++i) {
-        const Limits limits{direction, i + 1, config.mapping_entries, config.extended_ids,
-                            config.can_id_range};
+        const Limits limits{direction,
+                            config.first_number + i,
+                            config.mapping_entries,
+                            config.extended_ids,
+                            config.can_id_range,
+                            receive ? config.rpdo_transmission_types
+                                    : config.tpdo_transmission_types};
         add_communication(od, limits, pdos[i], config);
         add_mapping(od, limits, pdos[i]);
     }
@@ -287,8 +301,10 @@ PdoObjectsConfig epos2_pdo_defaults(NodeId node) {
 }
 
 void add_pdo_objects(ObjectDictionary& od, const PdoObjectsConfig& config) {
-    if (config.rpdos.size() > kMaxPdoNumber || config.tpdos.size() > kMaxPdoNumber) {
-        throw std::invalid_argument("add_pdo_objects: at most 512 PDOs each way");
+    const std::size_t last =
+        config.first_number - 1 + std::max(config.rpdos.size(), config.tpdos.size());
+    if (config.first_number == 0 || last > kMaxPdoNumber) {
+        throw std::invalid_argument("add_pdo_objects: PDO numbers are 1..512");
     }
     add_pdos(od, PdoDirection::Receive, config.rpdos, config);
     add_pdos(od, PdoDirection::Transmit, config.tpdos, config);

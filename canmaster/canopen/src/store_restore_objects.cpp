@@ -73,4 +73,11 @@ void add_restore_pdo_cob_ids_object(ObjectDictionary& dictionary, ParameterStore
     entries.value = entries.default_value;
 }
 
+void add_erase_program_object(ObjectDictionary& dictionary, std::function<AbortCode()> erase) {
+    add_command(dictionary, 0x1011, 2, "Erase Application Program").on_write =
+        [erase = std::move(erase)](std::span<const std::uint8_t> value) {
+            return is_signature(value, kEraseSignature) ? erase() : AbortCode::TransferOrStore;
+        };
+}
+
 } // namespace eposp::canopen

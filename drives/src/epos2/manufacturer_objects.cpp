@@ -1,9 +1,8 @@
 // The manufacturer-specific area of the EPOS2 (firmware specification 8.2.34 - 8.2.83) as data,
 // for an EPOS2 24/5 where the specification gives values per hardware. The behaviour behind the
 // objects belongs to the device and attaches to them through hooks and listeners.
-#include "entry_builder.hpp"
+#include "eposp/canopen/entry_builder.hpp"
 #include "object_areas.hpp"
-#include "object_types.hpp"
 
 #include <array>
 #include <fmt/format.h>
@@ -11,7 +10,8 @@
 namespace eposp::drives::epos2 {
 namespace {
 
-using namespace od_types;
+using namespace canopen::od_types;
+using canopen::Entry;
 
 // 8.2.34 - 8.2.43
 void add_interface_objects(canopen::ObjectDictionary& od, const Epos2DictionaryConfig& config) {

@@ -3,16 +3,16 @@
 // by another object ("1 ... Maximal Profile Velocity") are checked against its current value;
 // those of tables 8-119 and 8-126 (functions of motor type, pole pairs and gear) keep only their
 // static bound until the motor model computes them.
-#include "entry_builder.hpp"
+#include "eposp/canopen/entry_builder.hpp"
 #include "object_areas.hpp"
-#include "object_types.hpp"
 
 #include <fmt/format.h>
 
 namespace eposp::drives::epos2 {
 namespace {
 
-using namespace od_types;
+using namespace canopen::od_types;
+using canopen::Entry;
 
 // 8.2.84 - 8.2.91
 void add_device_control_objects(canopen::ObjectDictionary& od) {

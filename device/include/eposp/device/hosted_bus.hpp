@@ -1,8 +1,8 @@
 #pragma once
 
-#include "eposp/can/port_bridge.hpp"
 #include "eposp/can/io/socketcan_port.hpp"
 #include "eposp/can/io/socketcand_server.hpp"
+#include "eposp/can/port_bridge.hpp"
 #include "eposp/can/trace_clock.hpp"
 #include "eposp/can/virtual_bus.hpp"
 #include "eposp/core/event_loop.hpp"

@@ -85,6 +85,13 @@ struct PdoObjectsConfig {
     bool extended_ids = true;         ///< a COB-ID may set bit 29 (29-bit CAN-ID)
     /// The CAN-IDs a valid PDO may use, on top of the IDs CiA 301 7.3.5 restricts.
     std::optional<CanIdRange> can_id_range;
+    /// The number of the first PDO of `rpdos` and `tpdos`: 257 puts them at 0x1500 / 0x1700 and
+    /// 0x1900 / 0x1B00 (the EPOS P's internal PDOs).
+    std::size_t first_number = 1;
+    /// The transmission types a device accepts (EPOS P tables 15 and 20); empty: every type
+    /// CiA 301 allows for the direction. Others are refused with InvalidValue.
+    std::vector<std::uint8_t> rpdo_transmission_types;
+    std::vector<std::uint8_t> tpdo_transmission_types;
 };
 
 /// CiA 301 defaults for a device without a profile: the predefined connection set's COB-IDs
@@ -102,7 +109,8 @@ PdoObjectsConfig epos2_pdo_defaults(NodeId node);
 /// - COB-ID: bits 0..29 change only while the PDO is invalid (InvalidValue); a valid PDO's
 ///   entry must be cob_id_acceptable() and within config.can_id_range; bits 11..28 of an
 ///   11-bit COB-ID, or bit 29 where extended IDs are not supported: InvalidValue.
-/// - transmission type: reserved values, and 252/253 for an RPDO: InvalidValue.
+/// - transmission type: reserved values, 252/253 for an RPDO, and a type outside the config's
+///   list: InvalidValue.
 /// - inhibit time and SYNC start value change only while the PDO is invalid (InvalidValue);
 ///   a SYNC start value above 240: InvalidValue.
 /// - mapping (CiA 301 7.5.2.36 procedure): sub-index 0 and the entries change only while the

@@ -14,6 +14,8 @@ namespace eposp::canopen {
 /// the ASCII letters "save" and "load", first letter in the lowest byte.
 inline constexpr std::uint32_t kSaveSignature = 0x6576'6173;
 inline constexpr std::uint32_t kLoadSignature = 0x6461'6F6C;
+/// EPOS P firmware specification 10.10, table 9: "eras".
+inline constexpr std::uint32_t kEraseSignature = 0x7361'7265;
 
 struct StoreRestoreOptions {
     /// Asked before a restore; returns the code that refuses it, or None. The EPOS2 allows a
@@ -36,5 +38,10 @@ void add_store_restore_objects(ObjectDictionary& dictionary, ParameterStore& sto
 void add_restore_pdo_cob_ids_object(ObjectDictionary& dictionary, ParameterStore& store,
                                     std::function<NodeId()> node_id,
                                     StoreRestoreOptions options = {});
+
+/// Adds EPOS P 0x1011 sub 2 "Erase Application Program" (EPOS P firmware specification 10.10,
+/// table 9): "eras" calls `erase` (which may refuse, e.g. while the program runs); any other value
+/// is refused with TransferOrStore. Needs add_store_restore_objects() first.
+void add_erase_program_object(ObjectDictionary& dictionary, std::function<AbortCode()> erase);
 
 } // namespace eposp::canopen

@@ -1,20 +1,20 @@
-#include "entry_builder.hpp"
+#include "eposp/canopen/entry_builder.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
-namespace eposp::drives::epos2 {
+namespace eposp::canopen {
 namespace {
 
-std::int64_t decode_integer(canopen::DataType type, std::span<const std::uint8_t> bytes) {
+std::int64_t decode_integer(DataType type, std::span<const std::uint8_t> bytes) {
     std::uint64_t raw = 0;
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         raw |= std::uint64_t{bytes[i]} << (8 * i);
     }
     const std::size_t bits = 8 * bytes.size();
-    if (canopen::is_signed_integer(type) && bits > 0 && bits < 64 && (raw >> (bits - 1)) != 0) {
+    if (is_signed_integer(type) && bits > 0 && bits < 64 && (raw >> (bits - 1)) != 0) {
         raw |= ~std::uint64_t{0} << bits; // sign-extend
     }
     return static_cast<std::int64_t>(raw);
@@ -22,12 +22,12 @@ std::int64_t decode_integer(canopen::DataType type, std::span<const std::uint8_t
 
 } // namespace
 
-canopen::Bytes encode_integer(canopen::DataType type, std::int64_t value) {
-    const auto size = canopen::fixed_size(type);
-    if (!size || !canopen::is_numeric(type) || canopen::is_real(type)) {
+Bytes encode_integer(DataType type, std::int64_t value) {
+    const auto size = fixed_size(type);
+    if (!size || !is_numeric(type) || is_real(type)) {
         throw std::invalid_argument("encode_integer: not an integer type");
     }
-    canopen::Bytes bytes(*size);
+    Bytes bytes(*size);
     const auto raw = static_cast<std::uint64_t>(value);
     for (std::size_t i = 0; i < *size; ++i) {
         bytes[i] = static_cast<std::uint8_t>(raw >> (8 * i));
@@ -47,14 +47,14 @@ Entry& Entry::one_of(std::initializer_list<std::int64_t> values) {
     set_write_check([type = sub_.type, allowed = std::vector<std::int64_t>(values)](
                         std::span<const std::uint8_t> value) {
         return std::ranges::find(allowed, decode_integer(type, value)) != allowed.end()
-                   ? canopen::AbortCode::None
-                   : canopen::AbortCode::InvalidValue;
+                   ? AbortCode::None
+                   : AbortCode::InvalidValue;
     });
     return *this;
 }
 
-Entry& Entry::at_most(const canopen::ObjectDictionary& od, std::uint16_t index,
-                      std::uint8_t sub_index, bool symmetric) {
+Entry& Entry::at_most(const ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index,
+                      bool symmetric) {
     // The bound is looked up at each write: it may be added after this entry.
     set_write_check(
         [&od, type = sub_.type, index, sub_index, symmetric](std::span<const std::uint8_t> value) {
@@ -62,15 +62,14 @@ Entry& Entry::at_most(const canopen::ObjectDictionary& od, std::uint16_t index,
             const std::int64_t bound =
                 decode_integer(od.find(index, sub_index)->type, od.get(index, sub_index));
             if (written > bound) {
-                return canopen::AbortCode::ValueTooHigh;
+                return AbortCode::ValueTooHigh;
             }
-            return symmetric && written < -bound ? canopen::AbortCode::ValueTooLow
-                                                 : canopen::AbortCode::None;
+            return symmetric && written < -bound ? AbortCode::ValueTooLow : AbortCode::None;
         });
     return *this;
 }
 
-void Entry::set_write_check(canopen::SubObject::WriteHook check) {
+void Entry::set_write_check(SubObject::WriteHook check) {
     if (sub_.on_write) {
         throw std::logic_error("Entry: an entry has one write check");
     }
@@ -87,32 +86,31 @@ Entry& Entry::pdo_mappable() {
     return *this;
 }
 
-Entry add_var(canopen::ObjectDictionary& od, std::uint16_t index, std::string name,
-              canopen::DataType type, canopen::Access access, std::int64_t default_value) {
+Entry add_var(ObjectDictionary& od, std::uint16_t index, std::string name, DataType type,
+              Access access, std::int64_t default_value) {
     return Entry(
         od.add_variable(index, std::move(name), type, access, encode_integer(type, default_value)));
 }
 
-Entry add_entry(canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index,
-                std::string name, canopen::DataType type, canopen::Access access,
-                std::int64_t default_value) {
+Entry add_entry(ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index, std::string name,
+                DataType type, Access access, std::int64_t default_value) {
     return Entry(od.add_sub(index, sub_index, std::move(name), type, access,
                             encode_integer(type, default_value)));
 }
 
-Entry existing_entry(canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index,
+Entry existing_entry(ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index,
                      std::string name) {
-    canopen::SubObject* sub = od.find(index, sub_index);
+    SubObject* sub = od.find(index, sub_index);
     if (sub == nullptr) {
         throw std::logic_error("existing_entry: the service did not add the object");
     }
     // A VAR object carries its name twice (the object's and sub-index 0's, CiA 306 exports the
-    // object's): both take the EPOS2's name.
-    if (canopen::Object& object = *od.find(index); object.code == canopen::ObjectCode::Var) {
+    // object's): both take the device's name.
+    if (Object& object = *od.find(index); object.code == ObjectCode::Var) {
         object.name = name;
     }
     sub->name = std::move(name);
     return Entry(*sub);
 }
 
-} // namespace eposp::drives::epos2
+} // namespace eposp::canopen

@@ -1,0 +1,89 @@
+#pragma once
+
+#include "eposp/canopen/device_info.hpp"
+#include "eposp/canopen/lss_protocol.hpp"
+#include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/canopen/parameter_store.hpp"
+#include "eposp/canopen/store_restore_objects.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace eposp::device {
+
+/// EPOS P firmware specification 11.1 and table 29: the firmware this dictionary follows and the
+/// hardware it is (EPOS P 24/5).
+inline constexpr std::uint16_t kSoftwareVersion = 0x0110;
+inline constexpr std::uint16_t kHardwareVersion = 0x7300;
+inline constexpr std::uint16_t kApplicationNumber = 0x0000;
+inline constexpr std::uint16_t kApplicationVersion = 0x0000;
+/// 10.1: CiA 405, IEC 61131-3 programmable device.
+inline constexpr std::uint32_t kDeviceType = 0x0000'0195;
+
+/// 10.36: the axes 0..31 at 0x5280 + n, and table 30's slave numbers.
+inline constexpr std::uint16_t kAxisIndex = 0x5280;
+inline constexpr std::uint8_t kAxisCount = 32;
+inline constexpr std::uint8_t kInternalSlave = 0; ///< the internal EPOS2 (node 1 on port 1)
+inline constexpr std::uint8_t kNoSlave = 255;
+/// 10.37, table 31.
+inline constexpr std::uint16_t kProgramControlIndex = 0x5F51;
+enum class ProgramControl : std::uint16_t {
+    Stopped = 0,
+    Coldstart = 1,
+    Warmstart = 2,
+    Hotstart = 3
+};
+
+/// 10.20 - 10.29: the network list's sub-index for a slave: 1..127 the node-IDs on port 2, 128
+/// the internal EPOS2.
+inline constexpr std::uint8_t kInternalSlaveSubIndex = 0x80;
+
+struct EposPDictionaryConfig {
+    canopen::NodeId node_id = 1;     ///< 0x5000: the controller's node-ID on port 2
+    std::uint32_t serial_number = 0; ///< 0x1018 sub 4
+    /// The non-volatile memory of 0x1010 / 0x1011: nothing is written before a "save".
+    std::filesystem::path parameter_file;
+    /// Asked before 0x1011 "load": firmware 0110h refuses it while the program runs.
+    canopen::StoreRestoreOptions restore;
+    /// 0x1011 sub 2 "eras": deletes the application program, or says why not.
+    std::function<canopen::AbortCode()> erase_program;
+};
+
+/// The object dictionary of the EPOS P exactly as chapter 10 of its firmware specification
+/// lists it (table 32 and sections 10.1 - 10.49): every object with its type, access, default,
+/// value range, persistence and PDO mappability, plus the non-volatile memory behind
+/// 0x1010 / 0x1011. The objects hold data; the device's behaviour (the manager, the PLC, the
+/// process image) attaches to them through dictionary hooks and listeners.
+///
+/// Neither copyable nor movable: the hooks of 0x1010 / 0x1011 refer to the store.
+class EposPDictionary {
+public:
+    explicit EposPDictionary(EposPDictionaryConfig config);
+    EposPDictionary(const EposPDictionary&) = delete;
+    EposPDictionary& operator=(const EposPDictionary&) = delete;
+
+    canopen::ObjectDictionary& objects() { return od_; }
+    const canopen::ObjectDictionary& objects() const { return od_; }
+    canopen::ParameterStore& store() { return store_; }
+
+private:
+    EposPDictionaryConfig config_;
+    canopen::ObjectDictionary od_;
+    canopen::ParameterStore store_;
+};
+
+/// 0x1018 (10.13): maxon's vendor ID; product code = hardware version : application number,
+/// revision = software version : application version (high word : low word), as on the EPOS2.
+canopen::LssAddress epos_p_identity(std::uint32_t serial_number);
+
+/// What the EPOS P's EDS says beyond its objects (CiA 306 [DeviceInfo]): maxon, the EPOS P 24/5,
+/// the bit rates of table 28, no LSS, a granularity of 8 bits.
+canopen::DeviceInfo epos_p_device_info();
+
+/// The EDS (CiA 306) of the EPOS P as it ships in device/epos-p.eds: the dictionary with its
+/// defaults, exported by canopen's export_eds().
+std::string epos_p_eds();
+
+} // namespace eposp::device

@@ -1,0 +1,60 @@
+// EPOS P firmware specification 10.31 - 10.37: 0x5000 - 0x5F51.
+#include "eposp/canopen/entry_builder.hpp"
+#include "eposp/drives/epos2/epos2_dictionary.hpp"
+#include "object_areas.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::device::dictionary {
+namespace {
+
+using namespace canopen::od_types;
+
+void add_versions(canopen::ObjectDictionary& od, std::uint16_t index, const std::string& name,
+                  const std::string& part, std::uint16_t software, std::uint16_t hardware,
+                  std::uint16_t application_number, std::uint16_t application_version) {
+    od.add_object(index, name, kArray);
+    add_entry(od, index, 1, part + " Software Version", kU16, kRO, software);
+    add_entry(od, index, 2, part + " Hardware Version", kU16, kRO, hardware);
+    add_entry(od, index, 3, part + " Application Number", kU16, kRO, application_number);
+    add_entry(od, index, 4, part + " Application Version", kU16, kRO, application_version);
+}
+
+// 10.36: axis n's slave (table 30), the statusword its PDO brings and its controlword. Axis 0
+// is the internal EPOS2 by default; the others have no slave.
+void add_axes(canopen::ObjectDictionary& od) {
+    for (std::uint8_t axis = 0; axis < kAxisCount; ++axis) {
+        const auto index = static_cast<std::uint16_t>(kAxisIndex + axis);
+        od.add_object(index, fmt::format("Axis {} Control- and Statusword", axis), kRecord);
+        add_entry(od, index, 1, fmt::format("Axis {} Slave Number", axis), kU8, kRW,
+                  axis == 0 ? kInternalSlave : kNoSlave)
+            .range(0, kNoSlave)
+            .persistent();
+        add_entry(od, index, 2, fmt::format("Axis {} Statusword", axis), kU16, kRW, 0)
+            .pdo_mappable();
+        add_entry(od, index, 3, fmt::format("Axis {} Controlword", axis), kU16, kRW, 0)
+            .pdo_mappable();
+    }
+}
+
+} // namespace
+
+void add_manufacturer_objects(canopen::ObjectDictionary& od, const EposPDictionaryConfig& config) {
+    // 10.31: takes effect at the next start, from the stored parameters.
+    add_var(od, 0x5000, "Node Id", kU8, kRW, config.node_id).range(1, 127).persistent();
+    // 10.32, table 28: 0 = 1 Mbit/s ... 7 = 20 kbit/s, 9 = auto detection (5, 8 reserved).
+    add_var(od, 0x5001, "CAN Bitrate", kU16, kRW, 0).one_of({0, 1, 2, 3, 4, 6, 7, 9}).persistent();
+    add_versions(od, 0x5003, "EPOS P Version", "EPOS P", kSoftwareVersion, kHardwareVersion,
+                 kApplicationNumber, kApplicationVersion); // 10.33
+    // 10.34: the internal module is the simulated EPOS2.
+    add_versions(od, 0x5004, "Modul Version", "Modul", drives::epos2::kSoftwareVersion,
+                 drives::epos2::kHardwareVersion, drives::epos2::kApplicationNumber,
+                 drives::epos2::kApplicationVersion);
+    add_var(od, 0x5005, "Serial Communication Frame Timeout", kU16, kRW, 500).persistent(); // 10.35
+    add_axes(od);
+    add_var(od, kProgramControlIndex, "Program Control", kU16, kRW, 0) // 10.37, table 31
+        .one_of({0, 1, 2, 3})
+        .persistent();
+}
+
+} // namespace eposp::device::dictionary
