@@ -38,21 +38,28 @@ void add_communication_objects(canopen::ObjectDictionary& od, canopen::Parameter
                                const EposPDictionaryConfig& config) {
     add_var(od, 0x1000, "Device Type", kU32, kRO, kDeviceType);         // 10.1
     canopen::add_error_objects(od, canopen::kEposPErrorHistoryEntries); // 10.2, 10.4
-    add_var(od, 0x1002, "Manufacturer Status Register", kU32, kRO, 0);  // 10.3
+    od.find(0x1003)->name = "Error History";
+    for (std::uint8_t sub = 1; sub <= canopen::kEposPErrorHistoryEntries; ++sub) {
+        existing_entry(od, 0x1003, sub, fmt::format("Error History ({})", sub));
+    }
+    add_var(od, 0x1002, "Manufacturer Status Register", kU32, kRO, 0); // 10.3
     // 10.5 - 10.7, 10.14: the EPOS P produces SYNC; its cycle is 0 (off) or at least 1 ms, its
     // window 0 (none) or at least 0.5 ms.
     canopen::add_sync_objects(od, {.producer = true,
                                    .window = true,
                                    .min_cycle_period_us = 1000,
                                    .min_window_length_us = 500});
-    for (const std::uint16_t index :
-         {canopen::kCobIdSyncIndex, canopen::kCommunicationCyclePeriodIndex,
-          canopen::kSynchronousWindowLengthIndex, canopen::kSyncCounterOverflowIndex}) {
-        od.find(index, 0)->persistent = true;
-    }
+    existing_entry(od, canopen::kCobIdSyncIndex, 0, "COB-ID SYNC Message").persistent();
+    existing_entry(od, canopen::kCommunicationCyclePeriodIndex, 0, "Communication Cycle Time")
+        .persistent();
+    existing_entry(od, canopen::kSynchronousWindowLengthIndex, 0, "Synchronous Window Length")
+        .persistent();
+    existing_entry(od, canopen::kSyncCounterOverflowIndex, 0, "Synchronous Counter").persistent();
     od.add_variable(0x1008, "Device Name", canopen::DataType::VisibleString, kConst,
                     canopen::encode_string("EPOS P"));             // 10.8
     canopen::add_store_restore_objects(od, store, config.restore); // 10.9, 10.10
+    existing_entry(od, 0x1010, 1, "Save All Parameters");
+    existing_entry(od, 0x1011, 1, "Restore All Default Parameters");
     canopen::add_erase_program_object(
         od, config.erase_program ? config.erase_program
                                  : [] { return canopen::AbortCode::TransferOrStore; });

@@ -44,7 +44,7 @@ canopen::DeviceInfo epos_p_device_info() {
     info.product_number = identity.product_code;
     info.revision_number = identity.revision_number;
     info.baud_rates_kbit = {20, 50, 125, 250, 500, 800, 1000}; // table 28
-    info.simple_boot_up_master = true; // chapter 8: a CANopen manager
+    info.simple_boot_up_master = true;                         // chapter 8: a CANopen manager
     return info;
 }
 

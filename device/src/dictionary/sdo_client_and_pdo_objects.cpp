@@ -62,6 +62,18 @@ void add_sdo_client_and_pdo_objects(canopen::ObjectDictionary& od) {
     internal.rpdos[0].cob_id = 0x181;
     internal.rpdos[0].mapping = {0x5280'0210};
     canopen::add_pdo_objects(od, internal);
+    // The internal PDOs are numbered 1..4 of their own port (10.16 - 10.19).
+    for (std::size_t n = 1; n <= kInternalPdos; ++n) {
+        const std::size_t number = kInternalPdoNumber + n - 1;
+        for (const auto direction :
+             {canopen::PdoDirection::Receive, canopen::PdoDirection::Transmit}) {
+            const std::string pdo = fmt::format(
+                "{} PDO {} internal",
+                direction == canopen::PdoDirection::Receive ? "Receive" : "Transmit", n);
+            od.find(canopen::pdo_communication_index(direction, number))->name = pdo + " Parameter";
+            od.find(canopen::pdo_mapping_index(direction, number))->name = pdo + " Mapping";
+        }
+    }
 }
 
 } // namespace eposp::device::dictionary
