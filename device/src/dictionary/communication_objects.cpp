@@ -1,6 +1,7 @@
 // EPOS P firmware specification 10.1 - 10.14: 0x1000 - 0x1019.
 #include "eposp/canopen/entry_builder.hpp"
 #include "eposp/canopen/error_history.hpp"
+#include "eposp/canopen/heartbeat_consumer.hpp"
 #include "eposp/canopen/store_restore_objects.hpp"
 #include "eposp/canopen/sync_objects.hpp"
 #include "object_areas.hpp"
@@ -15,10 +16,10 @@ using namespace canopen::od_types;
 // 10.11, table 10: one entry per possible producer, 1..127 on port 2 and 128 the internal EPOS2;
 // port code in bits 31..24, node-ID in 23..16, time in ms in 15..0.
 void add_consumer_heartbeat_time(canopen::ObjectDictionary& od) {
-    od.add_object(0x1016, "Consumer Heartbeat Time", kArray);
+    canopen::add_heartbeat_consumer_objects(od, 0x80);
     for (int sub = 1; sub <= 0x80; ++sub) {
-        add_entry(od, 0x1016, static_cast<std::uint8_t>(sub),
-                  fmt::format("Consumer Heartbeat Time Node {}", sub), kU32, kRW, 0)
+        existing_entry(od, canopen::kConsumerHeartbeatTimeIndex, static_cast<std::uint8_t>(sub),
+                       fmt::format("Consumer Heartbeat Time Node {}", sub))
             .persistent();
     }
 }
