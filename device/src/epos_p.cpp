@@ -1,5 +1,7 @@
 #include "eposp/device/epos_p.hpp"
 
+#include "plc_objects.hpp"
+
 namespace eposp::device {
 namespace {
 
@@ -10,6 +12,17 @@ drives::epos2::Epos2DriveConfig internal_drive_config(drives::epos2::Epos2DriveC
     return config;
 }
 
+EposPDictionaryConfig dictionary_config(const EposPConfig& config, const Plc& plc) {
+    EposPDictionaryConfig dictionary;
+    dictionary.node_id = config.node_id;
+    dictionary.serial_number = config.serial_number;
+    dictionary.parameter_file = config.parameter_file;
+    dictionary.restore.restore_permitted = [&plc] {
+        return restore_permitted(plc);
+    };
+    return dictionary;
+}
+
 } // namespace
 
 EposP::EposP(EposPConfig config)
@@ -18,9 +31,10 @@ EposP::EposP(EposPConfig config)
       internal_drive_port_(internal_bus_.connect("internal-epos2")),
       internal_drive_(std::make_unique<drives::epos2::Epos2Drive>(
           loop_, *internal_drive_port_, internal_drive_config(std::move(config.internal_drive)))),
-      external_bus_(loop_,
-                    can::BusConfig{.name = "external", .bitrate = config.external_bit_rate}),
-      external_port_(external_bus_.connect("epos-p")), plc_(loop_, std::move(config.runtime)) {
+      external_bus_(loop_, can::BusConfig{.name = "external", .bitrate = config.external_bit_rate}),
+      external_port_(external_bus_.connect("epos-p")), plc_(loop_, std::move(config.runtime)),
+      dictionary_(dictionary_config(config, plc_)) {
+    bind_plc(dictionary_.objects(), plc_);
     internal_drive_->start();
 }
 

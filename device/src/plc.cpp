@@ -19,6 +19,9 @@ Plc::Plc(core::EventLoop& loop, vm::RuntimeConfig config)
     : loop_(loop), natives_(plc_natives(loop)),
       runtime_(loop, natives_, std::move(config), [this](std::uint16_t code, std::string text) {
           errors_.push_back({loop_.now(), code, std::move(text)});
+          if (error_handler_) {
+              error_handler_(errors_.back());
+          }
       }) {}
 
 } // namespace eposp::device

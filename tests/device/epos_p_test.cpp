@@ -1,7 +1,10 @@
 // The EPOS P as a library: its two ports, the internal EPOS2 and the PLC on one virtual loop.
 #include "eposp/canopen/nmt_protocol.hpp"
+#include "eposp/canopen/store_restore_objects.hpp"
+#include "eposp/canopen/value_codec.hpp"
 #include "eposp/compiler/compiler.hpp"
 #include "eposp/device/epos_p.hpp"
+#include "eposp/device/error_entry.hpp"
 
 #include <gtest/gtest.h>
 #include <vector>
@@ -53,6 +56,94 @@ TEST(EposP, RunsTheProgramsTasksAndTimersInTheLoopsTime) {
     device.loop().run_for(10ms);
     EXPECT_EQ(*device.plc().value_of("Main.elapsed"), "TRUE");
     EXPECT_TRUE(device.plc().errors().empty());
+}
+
+constexpr const char* kDoubler = R"(
+    PROGRAM Main
+    VAR
+        scans : DINT;
+        input AT %ID24 : DINT;   (* 0xA1C0 sub 1 *)
+        output AT %QD24 : DINT;  (* 0xA640 sub 1 *)
+    END_VAR
+    scans := scans + 1;
+    output := input * 2;
+    END_PROGRAM)";
+
+canopen::AbortCode write_u16(EposP& device, std::uint16_t index, std::uint8_t sub,
+                             std::uint16_t value) {
+    return device.objects().write(index, sub, canopen::encode(value));
+}
+
+TEST(EposP, ProgramControlStartsAndStopsTheProgram) {
+    EposP device;
+    ASSERT_FALSE(device.plc().load(compile_program(kDoubler)));
+    EXPECT_EQ(device.objects().get_as<std::uint16_t>(0x5F51, 0), 0u);
+
+    ASSERT_EQ(write_u16(device, 0x5F51, 0, 1), canopen::AbortCode::None); // coldstart
+    EXPECT_EQ(device.objects().get_as<std::uint16_t>(0x5F51, 0), 1u);
+    device.loop().run_for(95ms);
+    EXPECT_EQ(*device.plc().value_of("Main.scans"), "10");
+    // Starting a running program is refused; stopping it is not.
+    EXPECT_EQ(write_u16(device, 0x5F51, 0, 2), canopen::AbortCode::DeviceState);
+    ASSERT_EQ(write_u16(device, 0x5F51, 0, 0), canopen::AbortCode::None);
+    device.loop().run_for(100ms);
+    EXPECT_EQ(*device.plc().value_of("Main.scans"), "10");
+    EXPECT_EQ(device.objects().get_as<std::uint16_t>(0x5F51, 0), 0u);
+}
+
+TEST(EposP, ProgramControlWithoutAProgramIsRefused) {
+    EposP device;
+    EXPECT_EQ(write_u16(device, 0x5F51, 0, 1), canopen::AbortCode::DeviceState);
+    EXPECT_EQ(write_u16(device, 0x5F51, 0, 0), canopen::AbortCode::None);
+}
+
+TEST(EposP, TheProcessImageObjectsAreThePlcsInputsAndOutputs) {
+    EposP device;
+    ASSERT_FALSE(device.plc().load(compile_program(kDoubler)));
+    ASSERT_EQ(write_u16(device, 0x5F51, 0, 1), canopen::AbortCode::None);
+    ASSERT_EQ(device.objects().write(0xA1C0, 1, canopen::encode(std::int32_t{-21})),
+              canopen::AbortCode::None);
+    device.loop().run_for(15ms);
+    canopen::Bytes output;
+    ASSERT_EQ(device.objects().read(0xA640, 1, output), canopen::AbortCode::None);
+    EXPECT_EQ(canopen::decode<std::int32_t>(output), -42);
+    EXPECT_EQ(device.objects().get_as<std::int32_t>(0xA640, 2), 0);
+}
+
+TEST(EposP, RestoreIsRefusedWhileTheProgramRuns) {
+    EposP device;
+    ASSERT_FALSE(device.plc().load(compile_program(kDoubler)));
+    ASSERT_EQ(write_u16(device, 0x5F51, 0, 2), canopen::AbortCode::None); // warmstart
+    EXPECT_EQ(device.objects().write(0x1011, 1, canopen::encode(canopen::kLoadSignature)),
+              canopen::AbortCode::DeviceState);
+    ASSERT_EQ(write_u16(device, 0x5F51, 0, 0), canopen::AbortCode::None);
+    EXPECT_NE(device.objects().write(0x1011, 1, canopen::encode(canopen::kLoadSignature)),
+              canopen::AbortCode::DeviceState);
+}
+
+TEST(EposP, APlcErrorGoesToTheErrorHistoryAndTheErrorRegister) {
+    EposP device;
+    ASSERT_FALSE(device.plc().load(compile_program(R"(
+        PROGRAM Main
+        VAR zero : DINT; quotient : DINT; END_VAR
+        quotient := 10 / zero;
+        END_PROGRAM)")));
+    ASSERT_EQ(write_u16(device, 0x5F51, 0, 1), canopen::AbortCode::None);
+    device.loop().run_for(15ms);
+
+    ASSERT_FALSE(device.plc().errors().empty());
+    const std::uint16_t code = device.plc().errors().front().code;
+    EXPECT_EQ(device.objects().get_as<std::uint8_t>(0x1003, 0), device.plc().errors().size());
+    // Table 4: no warning, port code 0 and node-ID 0 (the controller itself), the code.
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1003, 1), std::uint32_t{code});
+    EXPECT_EQ(device.objects().get_as<std::uint8_t>(0x1001, 0) & 0x01, 0x01);
+}
+
+TEST(EposP, ErrorEntriesFollowTable4) {
+    EXPECT_EQ((ErrorEntry{.code = 0x8130, .port = 2, .node = 5, .warning = false}.encode()),
+              0x0205'8130u);
+    EXPECT_EQ((ErrorEntry{.code = 0x8182, .port = 2, .node = 127, .warning = true}.encode()),
+              0x827F'8182u);
 }
 
 } // namespace

@@ -2,10 +2,12 @@
 
 #include "eposp/can/virtual_bus.hpp"
 #include "eposp/core/event_loop.hpp"
+#include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/device/plc.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 
 namespace eposp::device {
@@ -18,12 +20,19 @@ struct EposPConfig {
     drives::epos2::Epos2DriveConfig internal_drive;
     /// Port 2, the external CAN bus.
     std::uint32_t external_bit_rate = 1'000'000;
+    /// The controller's node-ID on port 2 (0x5000) and serial number (0x1018 sub 4).
+    canopen::NodeId node_id = 1;
+    std::uint32_t serial_number = 0;
+    /// The non-volatile memory of 0x1010 / 0x1011; empty: "save" is refused.
+    std::filesystem::path parameter_file;
 };
 
-/// The EPOS P: the PLC and two CAN ports on one event loop. Port 1 is the internal bus to the
-/// internal EPOS2 (node 1, always present); port 2 is the external CAN bus, an in-process virtual
-/// bus that simulated slaves join. Powered up by the constructor: the internal EPOS2 boots at
-/// once; a program runs once it is loaded into plc() and started.
+/// The EPOS P: the PLC, its object dictionary and two CAN ports on one event loop. Port 1 is the
+/// internal bus to the internal EPOS2 (node 1, always present); port 2 is the external CAN bus,
+/// an in-process virtual bus that simulated slaves join. The dictionary is bound to the PLC
+/// (program control 0x5F51, the process image 0xA000 - 0xA680, the PLC's errors in 0x1003; see
+/// plc_objects.hpp). Powered up by the constructor: the internal EPOS2 boots at once; a program
+/// runs once it is loaded into plc() and started (by 0x5F51 or plc().runtime().start()).
 ///
 /// Neither copyable nor movable: the drive, the ports and the PLC refer to the loop.
 class EposP {
@@ -35,6 +44,7 @@ public:
 
     core::EventLoop& loop() { return loop_; }
     Plc& plc() { return plc_; }
+    canopen::ObjectDictionary& objects() { return dictionary_.objects(); }
 
     /// Port 1: the internal bus, the controller's own port on it and the internal EPOS2.
     can::VirtualBus& internal_bus() { return internal_bus_; }
@@ -53,6 +63,7 @@ private:
     can::VirtualBus external_bus_;
     std::unique_ptr<can::VirtualPort> external_port_;
     Plc plc_;
+    EposPDictionary dictionary_;
 };
 
 } // namespace eposp::device

@@ -6,6 +6,7 @@
 #include "eposp/vm/plc_runtime.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,8 +36,13 @@ public:
     std::optional<core::Error> load(vm::Image image) { return runtime_.load(std::move(image)); }
 
     vm::PlcRuntime& runtime() { return runtime_; }
+    const vm::PlcRuntime& runtime() const { return runtime_; }
     const vm::Image& image() const { return runtime_.image(); }
     const std::vector<RaisedError>& errors() const { return errors_; }
+    /// Told of every error as it is raised (the device's error history).
+    void on_error(std::function<void(const RaisedError& error)> handler) {
+        error_handler_ = std::move(handler);
+    }
     /// The value of the variable at `path` (`Inst0.counter`) as an IEC literal.
     core::Result<std::string> value_of(const std::string& path) const {
         return runtime_.read(path);
@@ -46,6 +52,7 @@ private:
     core::EventLoop& loop_;
     vm::NativeRegistry natives_;
     std::vector<RaisedError> errors_;
+    std::function<void(const RaisedError&)> error_handler_;
     vm::PlcRuntime runtime_;
 };
 
