@@ -1,5 +1,6 @@
 #include "eposp/device/epos_p.hpp"
 
+#include "network_port.hpp"
 #include "plc_objects.hpp"
 
 namespace eposp::device {
@@ -35,7 +36,20 @@ EposP::EposP(EposPConfig config)
       external_port_(external_bus_.connect("epos-p")), plc_(loop_, std::move(config.runtime)),
       dictionary_(dictionary_config(config, plc_)) {
     bind_plc(dictionary_.objects(), plc_);
+    internal_network_ =
+        std::make_unique<NetworkPort>(loop_, *internal_port_, dictionary_.objects(), kInternalPort);
+    external_network_ =
+        std::make_unique<NetworkPort>(loop_, *external_port_, dictionary_.objects(), kExternalPort);
     internal_drive_->start();
+}
+
+void EposP::boot_networks() {
+    internal_network_->boot();
+    external_network_->boot();
+}
+
+const manager::NetworkBoot& EposP::network(std::uint8_t port) const {
+    return (port == kInternalPort ? internal_network_ : external_network_)->network();
 }
 
 EposP::~EposP() = default;

@@ -146,5 +146,78 @@ TEST(EposP, ErrorEntriesFollowTable4) {
               0x827F'8182u);
 }
 
+constexpr std::uint32_t kMandatorySlave = 0x0000'000D; // slave, boot slave, mandatory (table 26)
+
+void write_u32(EposP& device, std::uint16_t index, std::uint8_t sub, std::uint32_t value) {
+    ASSERT_EQ(device.objects().write(index, sub, canopen::encode(value)), canopen::AbortCode::None)
+        << std::hex << index << " sub " << int(sub);
+}
+
+/// Assigns the slave of network-list sub-index `sub` (node `node` on `port`) as mandatory,
+/// expects maxon's vendor ID and watches its heartbeat at 100 ms.
+void assign_mandatory(EposP& device, std::uint8_t sub, std::uint8_t port, std::uint8_t node) {
+    write_u32(device, 0x1F81, sub, kMandatorySlave);
+    write_u32(device, 0x1F85, sub, 0xFB);
+    write_u32(device, 0x1016, sub, std::uint32_t{port} << 24 | std::uint32_t{node} << 16 | 100);
+}
+
+std::uint32_t history(EposP& device, std::uint8_t sub) {
+    return device.objects().get_as<std::uint32_t>(0x1003, sub);
+}
+
+TEST(EposP, TheInternalEpos2BootsAsTheMandatorySlaveOfPortOne) {
+    EposP device;
+    assign_mandatory(device, kInternalSlaveSubIndex, kInternalPort, 1);
+    device.boot_networks();
+    device.loop().run_for(2s);
+
+    EXPECT_TRUE(device.network(kInternalPort).report().network_started);
+    EXPECT_EQ(device.objects().get_as<std::uint8_t>(0x1003, 0), 0u);
+    EXPECT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::Operational);
+    // Configured to produce its heartbeat at half the consumer time.
+    EXPECT_EQ(device.internal_drive().objects().get_as<std::uint16_t>(0x1017, 0), 50u);
+}
+
+TEST(EposP, VendorMismatchOfTheInternalEpos2IsInTheHistoryWithPortOne) {
+    EposP device;
+    assign_mandatory(device, kInternalSlaveSubIndex, kInternalPort, 1);
+    write_u32(device, 0x1F85, kInternalSlaveSubIndex, 0xFC);
+    device.boot_networks();
+    device.loop().run_for(2s);
+
+    EXPECT_FALSE(device.network(kInternalPort).report().network_started);
+    EXPECT_EQ(history(device, 1), 0x0101'6382u); // port 1, node 1, Vendor-Id Error
+    EXPECT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::PreOperational);
+}
+
+TEST(EposP, AMissingMandatorySlaveOnPortTwoIsNoAnswerInTheHistory) {
+    EposP device;
+    assign_mandatory(device, 5, kExternalPort, 5);
+    device.boot_networks();
+    device.loop().run_for(3s);
+
+    EXPECT_FALSE(device.network(kExternalPort).report().network_started);
+    EXPECT_EQ(history(device, 1), 0x0205'8182u); // port 2, node 5, CAN No Answer Error
+    EXPECT_EQ(device.objects().get_as<std::uint8_t>(0x1001, 0) & 0x10, 0x10); // communication
+}
+
+TEST(EposP, AnEpos2OnPortTwoBootsAndStarts) {
+    EposP device;
+    auto port = device.external_bus().connect("epos2-2");
+    drives::epos2::Epos2DriveConfig config;
+    config.dictionary.node_id = 2;
+    drives::epos2::Epos2Drive drive(device.loop(), *port, config);
+    drive.start();
+    assign_mandatory(device, 2, kExternalPort, 2);
+    device.boot_networks();
+    device.loop().run_for(2s);
+
+    EXPECT_TRUE(device.network(kExternalPort).report().network_started);
+    EXPECT_EQ(drive.node().nmt_state(), canopen::NmtState::Operational);
+    EXPECT_EQ(device.objects().get_as<std::uint8_t>(0x1003, 0), 0u);
+    // Port 1 had nothing assigned: its network starts empty, the internal EPOS2 stays put.
+    EXPECT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::PreOperational);
+}
+
 } // namespace
 } // namespace eposp::device

@@ -1,12 +1,12 @@
 #include "eposp/manager/network_boot.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace eposp::manager {
 
-NetworkBoot::NetworkBoot(core::EventLoop& loop, ManagerServices services, NetworkList list,
-                         ErrorSink errors)
-    : loop_(loop), services_(services), list_(std::move(list)), errors_(std::move(errors)) {
+NetworkBoot::NetworkBoot(core::EventLoop& loop, ManagerServices services, ErrorSink errors)
+    : loop_(loop), services_(services), errors_(std::move(errors)) {
     services_.heartbeat.on_state_change(
         [this](canopen::NodeId node, canopen::NmtState state) { on_heartbeat(node, state); });
     services_.heartbeat.on_timeout([this](canopen::NodeId node) { on_heartbeat_lost(node); });
@@ -35,12 +35,18 @@ const SlaveEntry* NetworkBoot::entry(canopen::NodeId node) const {
     return nullptr;
 }
 
+bool NetworkBoot::has_slaves() const {
+    return std::ranges::any_of(list_.slaves,
+                               [](const SlaveEntry& slave) { return slave.assigned(); });
+}
+
 bool NetworkBoot::booted(canopen::NodeId node) const {
     const auto found = booted_.find(node);
     return found != booted_.end() && found->second;
 }
 
-void NetworkBoot::start(std::function<void(const BootReport& report)> done) {
+void NetworkBoot::start(NetworkList list, std::function<void(const BootReport& report)> done) {
+    list_ = std::move(list);
     done_ = std::move(done);
     report_ = {};
     booted_.clear();
@@ -59,7 +65,7 @@ void NetworkBoot::start(std::function<void(const BootReport& report)> done) {
     }
     // CiA 302-2: the slaves start from a known state, and their boot-up messages show who is
     // there; the boot time gives them room to send them.
-    if ((list_.nmt_startup & nmt_startup::kMaster) != 0) {
+    if ((list_.nmt_startup & nmt_startup::kMaster) != 0 && has_slaves()) {
         services_.nmt.send(canopen::NmtCommand::ResetCommunication, canopen::kAllNodes);
     }
     boot_timer_ = core::ScopedTimer(loop_, loop_.after(list_.boot_time, [this] {
@@ -151,7 +157,7 @@ void NetworkBoot::start_network_when_ready() {
         all_booted = all_booted && (!slave.assigned() || booted(slave.node_id));
     }
     report_.network_started = true;
-    if ((list_.nmt_startup & nmt_startup::kDoNotStartSlaves) == 0) {
+    if ((list_.nmt_startup & nmt_startup::kDoNotStartSlaves) == 0 && has_slaves()) {
         // Node 0 would also start an optional slave that failed its checks.
         if ((list_.nmt_startup & nmt_startup::kStartAllNodes) != 0 && all_booted) {
             services_.nmt.send(canopen::NmtCommand::Start, canopen::kAllNodes);

@@ -12,9 +12,9 @@
 #include <algorithm>
 #include <gtest/gtest.h>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
-#include <memory>
 #include <vector>
 
 namespace eposp::manager {
@@ -129,11 +129,11 @@ struct Network {
 
     void start() {
         boot = std::make_unique<NetworkBoot>(
-            loop, ManagerServices{sdo, nmt, *heartbeat}, list,
+            loop, ManagerServices{sdo, nmt, *heartbeat},
             [this](const ManagerError& error) { errors.push_back(error); });
         boot->on_master_operational([this] { master_operational = true; });
         boot->on_slave_lost([this](NodeId node) { lost.push_back(node); });
-        boot->start();
+        boot->start(list);
     }
 
     bool started_all() const {
@@ -435,6 +435,18 @@ TEST(NetworkBoot, StartupBitThreeLeavesTheSlavesToTheApplication) {
     network.start();
     network.loop.run_for(1s);
     EXPECT_TRUE(network.boot->report().network_started);
+    EXPECT_EQ(network.slaves[2]->state(), NmtState::PreOperational);
+}
+
+TEST(NetworkBoot, AnEmptyNetworkListSendsNoNmtCommand) {
+    Network network;
+    network.add_slave(2);
+    network.list.nmt_startup = nmt_startup::kMaster | nmt_startup::kStartAllNodes;
+    network.start();
+    network.loop.run_for(1s);
+    EXPECT_TRUE(network.boot->report().network_started);
+    EXPECT_TRUE(network.nmt_commands.empty());
+    EXPECT_TRUE(network.master_operational);
     EXPECT_EQ(network.slaves[2]->state(), NmtState::PreOperational);
 }
 

@@ -5,12 +5,15 @@
 #include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/device/plc.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
+#include "eposp/manager/network_boot.hpp"
 
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 
 namespace eposp::device {
+
+class NetworkPort;
 
 struct EposPConfig {
     /// Virtual time (as fast as the CPU allows, deterministic) or the wall clock.
@@ -46,6 +49,13 @@ public:
     Plc& plc() { return plc_; }
     canopen::ObjectDictionary& objects() { return dictionary_.objects(); }
 
+    /// Boots the networks of both ports as the dictionary's network lists say (8.1): the
+    /// internal EPOS2 (sub-index 128 of 0x1F81 ...) on port 1, the slaves of sub-indices 1..127
+    /// on port 2. Failures go to the error history with their port and node-ID.
+    void boot_networks();
+    /// The boot-up of port 1 (kInternalPort) or 2 (kExternalPort).
+    const manager::NetworkBoot& network(std::uint8_t port) const;
+
     /// Port 1: the internal bus, the controller's own port on it and the internal EPOS2.
     can::VirtualBus& internal_bus() { return internal_bus_; }
     can::Port& internal_port() { return *internal_port_; }
@@ -64,6 +74,8 @@ private:
     std::unique_ptr<can::VirtualPort> external_port_;
     Plc plc_;
     EposPDictionary dictionary_;
+    std::unique_ptr<NetworkPort> internal_network_;
+    std::unique_ptr<NetworkPort> external_network_;
 };
 
 } // namespace eposp::device

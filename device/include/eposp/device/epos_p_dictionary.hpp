@@ -36,6 +36,10 @@ enum class ProgramControl : std::uint16_t {
     Hotstart = 3
 };
 
+/// Tables 4 and 10: the port codes of the error history and of 0x1016.
+inline constexpr std::uint8_t kInternalPort = 1;
+inline constexpr std::uint8_t kExternalPort = 2;
+
 /// 10.20 - 10.29: the network list's sub-index for a slave: 1..127 the node-IDs on port 2, 128
 /// the internal EPOS2.
 inline constexpr std::uint8_t kInternalSlaveSubIndex = 0x80;

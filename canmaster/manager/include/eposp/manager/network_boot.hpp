@@ -60,14 +60,15 @@ class NetworkBoot {
 public:
     using ErrorSink = std::function<void(const ManagerError& error)>;
 
-    NetworkBoot(core::EventLoop& loop, ManagerServices services, NetworkList list,
-                ErrorSink errors);
+    NetworkBoot(core::EventLoop& loop, ManagerServices services, ErrorSink errors);
     ~NetworkBoot();
     NetworkBoot(const NetworkBoot&) = delete;
     NetworkBoot& operator=(const NetworkBoot&) = delete;
 
-    /// Begins the boot-up; `done` is told once, when every slave's boot has ended.
-    void start(std::function<void(const BootReport& report)> done = {});
+    /// Begins the boot-up of the network `list` describes (again, at a cold or warm start of the
+    /// application: the boot in progress is dropped); `done` is told once, when every slave's
+    /// boot has ended.
+    void start(NetworkList list, std::function<void(const BootReport& report)> done = {});
     /// The master became operational (0x1F80 bit 2 clear), at the network start.
     void on_master_operational(std::function<void()> handler);
     /// A slave was lost (heartbeat) or booted again after a boot-up message.
@@ -80,6 +81,9 @@ public:
 
 private:
     const SlaveEntry* entry(canopen::NodeId node) const;
+    /// A network without assigned slaves gets no NMT command: the master leaves nodes it does
+    /// not manage alone.
+    bool has_slaves() const;
     void boot_all();
     void boot(const SlaveEntry& slave);
     void on_booted(const SlaveBootResult& result);

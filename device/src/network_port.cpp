@@ -1,0 +1,100 @@
+#include "network_port.hpp"
+
+#include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/device/error_entry.hpp"
+
+#include <chrono>
+
+namespace eposp::device {
+namespace {
+
+constexpr std::uint16_t kProducerHeartbeatIndex = 0x1017;
+constexpr canopen::NodeId kInternalEposNodeId = 1;
+
+/// The time 0x1016 gives the producer `node` of `port`, or 0.
+std::uint16_t consumer_time_ms(const canopen::ObjectDictionary& od, std::uint8_t port,
+                               canopen::NodeId node) {
+    for (const auto& [sub_index, sub] : od.find(canopen::kConsumerHeartbeatTimeIndex)->subs) {
+        if (sub_index == 0) {
+            continue;
+        }
+        const auto entry = canopen::ConsumerHeartbeatEntry::decode(
+            od.get_as<std::uint32_t>(canopen::kConsumerHeartbeatTimeIndex, sub_index));
+        if (entry.used() && entry.port_code == port && entry.node == node) {
+            return entry.time_ms;
+        }
+    }
+    return 0;
+}
+
+manager::SlaveEntry slave_entry(const canopen::ObjectDictionary& od, std::uint8_t port,
+                                std::uint8_t sub_index, canopen::NodeId node) {
+    const auto at = [&od, sub_index](std::uint16_t index) {
+        return od.get_as<std::uint32_t>(index, sub_index);
+    };
+    manager::SlaveEntry slave;
+    slave.node_id = node;
+    slave.assignment = at(0x1F81);
+    slave.device_type = at(0x1F84);
+    slave.identity = {.vendor_id = at(0x1F85),
+                      .product_code = at(0x1F86),
+                      .revision_number = at(0x1F87),
+                      .serial_number = at(0x1F88)};
+    slave.configuration_date = at(0x1F26);
+    slave.configuration_time = at(0x1F27);
+    const std::uint16_t consumer_ms = consumer_time_ms(od, port, node);
+    slave.heartbeat = std::chrono::milliseconds(consumer_ms);
+    if (consumer_ms != 0) {
+        // Half the time the consumer allows: one lost heartbeat is no error yet.
+        slave.configuration.push_back(
+            {kProducerHeartbeatIndex, 0,
+             canopen::encode(static_cast<std::uint16_t>(std::max(1, consumer_ms / 2)))});
+    }
+    return slave;
+}
+
+} // namespace
+
+manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint8_t port) {
+    manager::NetworkList list;
+    list.nmt_startup = od.get_as<std::uint32_t>(0x1F80, 0);
+    list.boot_time = std::chrono::milliseconds(od.get_as<std::uint32_t>(0x1F89, 0));
+    if (port == kInternalPort) {
+        list.slaves.push_back(slave_entry(od, port, kInternalSlaveSubIndex, kInternalEposNodeId));
+        return list;
+    }
+    for (std::uint8_t node = 1; node <= 127; ++node) {
+        if (od.get_as<std::uint32_t>(0x1F81, node) != 0) {
+            list.slaves.push_back(slave_entry(od, port, node, node));
+        }
+    }
+    return list;
+}
+
+NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::ObjectDictionary& od,
+                         std::uint8_t port_code)
+    : port_(port), od_(od), port_code_(port_code), sdo_(loop, port), nmt_(port),
+      heartbeat_(loop, od, {}, port_code),
+      network_(loop, {sdo_, nmt_, heartbeat_}, [this](const manager::ManagerError& error) {
+          record_error(od_, {.code = error.code,
+                             .port = port_code_,
+                             .node = error.node,
+                             .warning = error.warning});
+      }) {
+    // The manager supervises from power-up on (it is never in NMT initialisation).
+    heartbeat_.set_nmt_state(canopen::NmtState::PreOperational);
+    port_.on_receive([this](const can::Frame& frame) {
+        sdo_.on_frame(frame);
+        heartbeat_.on_frame(frame);
+    });
+}
+
+NetworkPort::~NetworkPort() {
+    port_.on_receive({});
+}
+
+void NetworkPort::boot(std::function<void(const manager::BootReport& report)> done) {
+    network_.start(network_list(od_, port_code_), std::move(done));
+}
+
+} // namespace eposp::device

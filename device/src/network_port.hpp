@@ -1,0 +1,49 @@
+#pragma once
+
+#include "eposp/can/port.hpp"
+#include "eposp/canopen/heartbeat_consumer.hpp"
+#include "eposp/canopen/nmt_master.hpp"
+#include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/canopen/sdo_client.hpp"
+#include "eposp/core/event_loop.hpp"
+#include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/manager/network_boot.hpp"
+
+#include <cstdint>
+#include <functional>
+
+namespace eposp::device {
+
+/// The network list of one port as the dictionary holds it (10.11, 10.20 - 10.30): on port 2
+/// the slaves of sub-indices 1..127, on port 1 the internal EPOS2 (sub-index 128, node 1). Each
+/// slave is configured to produce its heartbeat at half the consumer time 0x1016 watches it with.
+manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint8_t port);
+
+/// The EPOS P as the CANopen manager of one of its ports: an SDO client, an NMT master and a
+/// heartbeat consumer for the entries of 0x1016 with the port's code, and the network boot-up
+/// of manager::NetworkBoot on the dictionary's network list. Its errors go to the error history
+/// with the port code and the node-ID (table 4).
+class NetworkPort {
+public:
+    NetworkPort(core::EventLoop& loop, can::Port& port, canopen::ObjectDictionary& od,
+                std::uint8_t port_code);
+    ~NetworkPort();
+    NetworkPort(const NetworkPort&) = delete;
+    NetworkPort& operator=(const NetworkPort&) = delete;
+
+    /// Boots the port's network as the dictionary configures it now; `done` is told once every
+    /// slave's boot has ended.
+    void boot(std::function<void(const manager::BootReport& report)> done = {});
+    const manager::NetworkBoot& network() const { return network_; }
+
+private:
+    can::Port& port_;
+    canopen::ObjectDictionary& od_;
+    std::uint8_t port_code_;
+    canopen::SdoClient sdo_;
+    canopen::NmtMaster nmt_;
+    canopen::HeartbeatConsumer heartbeat_;
+    manager::NetworkBoot network_;
+};
+
+} // namespace eposp::device
