@@ -87,10 +87,27 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
         sdo_.on_frame(frame);
         heartbeat_.on_frame(frame);
     });
+    port_.on_error_state([this](can::ErrorState state) { report_controller_state(state); });
+}
+
+// Table 1: the controller's state changes, node-ID 0 (the master's own port).
+void NetworkPort::report_controller_state(can::ErrorState state) {
+    if (state == can::ErrorState::Passive) {
+        record_error(od_,
+                     {.code = kCanPassiveError, .port = port_code_, .node = 0, .warning = false});
+    } else if (state == can::ErrorState::BusOff) {
+        record_error(od_,
+                     {.code = kCanBusOffError, .port = port_code_, .node = 0, .warning = false});
+    }
+}
+
+void NetworkPort::report_lost_frame() {
+    record_error(od_, {.code = kCanOverrunError, .port = port_code_, .node = 0, .warning = false});
 }
 
 NetworkPort::~NetworkPort() {
     port_.on_receive({});
+    port_.on_error_state({});
 }
 
 void NetworkPort::boot(std::function<void(const manager::BootReport& report)> done) {

@@ -19,9 +19,15 @@ namespace eposp::device {
 /// slave is configured to produce its heartbeat at half the consumer time 0x1016 watches it with.
 manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint8_t port);
 
+/// Table 1: the CAN errors of a port.
+inline constexpr std::uint16_t kCanOverrunError = 0x8110;
+inline constexpr std::uint16_t kCanPassiveError = 0x8120;
+inline constexpr std::uint16_t kCanBusOffError = 0x81FD;
+
 /// The EPOS P as the CANopen manager of one of its ports: an SDO client, an NMT master and a
 /// heartbeat consumer for the entries of 0x1016 with the port's code, and the network boot-up
-/// of manager::NetworkBoot on the dictionary's network list. Its errors go to the error history
+/// of manager::NetworkBoot on the dictionary's network list. Its errors, and the port's CAN
+/// errors (error passive 0x8120, bus-off 0x81FD, a lost frame 0x8110), go to the error history
 /// with the port code and the node-ID (table 4).
 class NetworkPort {
 public:
@@ -35,8 +41,12 @@ public:
     /// slave's boot has ended.
     void boot(std::function<void(const manager::BootReport& report)> done = {});
     const manager::NetworkBoot& network() const { return network_; }
+    /// The port's controller lost a received frame (its queue was full).
+    void report_lost_frame();
 
 private:
+    void report_controller_state(can::ErrorState state);
+
     can::Port& port_;
     canopen::ObjectDictionary& od_;
     std::uint8_t port_code_;

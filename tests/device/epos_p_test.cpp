@@ -219,5 +219,16 @@ TEST(EposP, AnEpos2OnPortTwoBootsAndStarts) {
     EXPECT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::PreOperational);
 }
 
+TEST(EposP, BusOffAndErrorPassiveOfPortTwoAreInTheHistory) {
+    EposP device;
+    // Port 2 is a virtual port here: its faults can be injected.
+    auto& port = static_cast<can::VirtualPort&>(device.external_port());
+    port.force_error_state(can::ErrorState::Passive);
+    port.force_error_state(can::ErrorState::BusOff);
+    device.loop().run_for(10ms);
+    EXPECT_EQ(history(device, 2), 0x0200'8120u); // port 2, the master, CAN Passive Error
+    EXPECT_EQ(history(device, 1), 0x0200'81FDu); // port 2, the master, CAN Bus Off Error
+}
+
 } // namespace
 } // namespace eposp::device
