@@ -35,7 +35,7 @@ EposP::EposP(EposPConfig config)
       external_bus_(loop_, can::BusConfig{.name = "external", .bitrate = config.external_bit_rate}),
       external_port_(external_bus_.connect("epos-p")), plc_(loop_, std::move(config.runtime)),
       dictionary_(dictionary_config(config, plc_)) {
-    bind_plc(dictionary_.objects(), plc_);
+    bind_plc(dictionary_.objects(), plc_, [this] { boot_networks(); });
     internal_network_ =
         std::make_unique<NetworkPort>(loop_, *internal_port_, dictionary_.objects(), kInternalPort);
     external_network_ =

@@ -10,7 +10,8 @@
 namespace eposp::device {
 namespace {
 
-canopen::AbortCode program_control(Plc& plc, std::uint16_t value) {
+canopen::AbortCode program_control(Plc& plc, std::uint16_t value,
+                                   const std::function<void()>& on_cold_or_warm_start) {
     vm::PlcRuntime& runtime = plc.runtime();
     if (value == static_cast<std::uint16_t>(ProgramControl::Stopped)) {
         if (runtime.state() == vm::ProgramState::Running) {
@@ -21,18 +22,26 @@ canopen::AbortCode program_control(Plc& plc, std::uint16_t value) {
     if (runtime.state() != vm::ProgramState::Stopped) {
         return canopen::AbortCode::DeviceState; // no program, or one that runs
     }
-    return runtime.start(static_cast<vm::StartMode>(value)) ? canopen::AbortCode::DeviceState
-                                                            : canopen::AbortCode::None;
+    const auto mode = static_cast<vm::StartMode>(value);
+    if (runtime.start(mode)) {
+        return canopen::AbortCode::DeviceState;
+    }
+    if (mode != vm::StartMode::Hot && on_cold_or_warm_start) {
+        on_cold_or_warm_start();
+    }
+    return canopen::AbortCode::None;
 }
 
-void bind_program_control(canopen::ObjectDictionary& od, Plc& plc) {
+void bind_program_control(canopen::ObjectDictionary& od, Plc& plc,
+                          std::function<void()> on_cold_or_warm_start) {
     canopen::SubObject& control = *od.find(kProgramControlIndex, 0);
     control.on_read = [&plc] {
         return canopen::encode(plc.runtime().program_control());
     };
-    control.on_write = [&plc](std::span<const std::uint8_t> value) {
-        return program_control(plc, canopen::decode<std::uint16_t>(value));
-    };
+    control.on_write =
+        [&plc, on_start = std::move(on_cold_or_warm_start)](std::span<const std::uint8_t> value) {
+            return program_control(plc, canopen::decode<std::uint16_t>(value), on_start);
+        };
 }
 
 void bind_process_image(canopen::ObjectDictionary& od, Plc& plc) {
@@ -64,8 +73,9 @@ canopen::AbortCode restore_permitted(const Plc& plc) {
                                                               : canopen::AbortCode::None;
 }
 
-void bind_plc(canopen::ObjectDictionary& od, Plc& plc) {
-    bind_program_control(od, plc);
+void bind_plc(canopen::ObjectDictionary& od, Plc& plc,
+              std::function<void()> on_cold_or_warm_start) {
+    bind_program_control(od, plc, std::move(on_cold_or_warm_start));
     bind_process_image(od, plc);
     plc.on_error([&od](const RaisedError& error) {
         record_error(od, {.code = error.code, .port = 0, .node = 0, .warning = false});

@@ -230,5 +230,15 @@ TEST(EposP, BusOffAndErrorPassiveOfPortTwoAreInTheHistory) {
     EXPECT_EQ(history(device, 1), 0x0200'81FDu); // port 2, the master, CAN Bus Off Error
 }
 
+TEST(EposP, AColdStartOfTheProgramBootsTheNetworks) {
+    EposP device;
+    ASSERT_FALSE(device.plc().load(compile_program(kDoubler)));
+    assign_mandatory(device, kInternalSlaveSubIndex, kInternalPort, 1);
+    ASSERT_EQ(write_u16(device, 0x5F51, 0, 1), canopen::AbortCode::None);
+    device.loop().run_for(2s);
+    EXPECT_TRUE(device.network(kInternalPort).report().network_started);
+    EXPECT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::Operational);
+}
+
 } // namespace
 } // namespace eposp::device

@@ -51,7 +51,8 @@ public:
 
     /// Boots the networks of both ports as the dictionary's network lists say (8.1): the
     /// internal EPOS2 (sub-index 128 of 0x1F81 ...) on port 1, the slaves of sub-indices 1..127
-    /// on port 2. Failures go to the error history with their port and node-ID.
+    /// on port 2. Failures go to the error history with their port and node-ID. A cold or warm
+    /// start of the program through 0x5F51 does it too.
     void boot_networks();
     /// The boot-up of port 1 (kInternalPort) or 2 (kExternalPort).
     const manager::NetworkBoot& network(std::uint8_t port) const;
