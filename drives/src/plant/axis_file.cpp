@@ -1,15 +1,10 @@
 #include "eposp/drives/plant/axis_file.hpp"
 
 #include "eposp/drives/plant/reference_axis.hpp"
+#include "eposp/yaml/reader.hpp"
 
 #include <fmt/format.h>
-#include <fstream>
-#include <functional>
-#include <map>
-#include <sstream>
 #include <string>
-#include <type_traits>
-#include <yaml-cpp/yaml.h>
 
 namespace eposp::drives::plant {
 namespace {
@@ -18,63 +13,7 @@ namespace {
 constexpr double kMilli = 1e-3;
 constexpr double kGramSquareCentimetre = 1e-7; ///< kg·m²
 
-/// An error at a node, "file:line:col: error: message" as every eposp diagnostic.
-struct FileError {
-    std::string message;
-};
-
-template <typename T>
-std::string_view kind_of() {
-    if constexpr (std::is_same_v<T, bool>) {
-        return "true or false";
-    } else if constexpr (std::is_integral_v<T>) {
-        return "an integer in range";
-    } else {
-        return "a number";
-    }
-}
-
-class Reader {
-public:
-    explicit Reader(std::string_view source) : source_(source) {}
-
-    [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const {
-        const YAML::Mark mark = node.Mark();
-        throw FileError{
-            fmt::format("{}:{}:{}: error: {}", source_, mark.line + 1, mark.column + 1, message)};
-    }
-
-    /// Calls `read` for each key of the mapping `node`; a key without a reader is an error.
-    void each_key(const YAML::Node& node, std::string_view section,
-                  const std::map<std::string, std::function<void(const YAML::Node&)>>& readers) {
-        if (!node.IsMap()) {
-            fail(node, fmt::format("'{}' must be a mapping", section));
-        }
-        for (const auto& entry : node) {
-            const auto key = entry.first.as<std::string>();
-            const auto reader = readers.find(key);
-            if (reader == readers.end()) {
-                fail(entry.first, fmt::format("unknown key '{}' in '{}'", key, section));
-            }
-            reader->second(entry.second);
-        }
-    }
-
-    template <typename T>
-    T scalar(const YAML::Node& node, std::string_view what) const {
-        if (!node.IsScalar()) {
-            fail(node, fmt::format("{} must be a number", what));
-        }
-        try {
-            return node.as<T>();
-        } catch (const YAML::BadConversion&) {
-            fail(node, fmt::format("{} must be {}", what, kind_of<T>()));
-        }
-    }
-
-private:
-    std::string_view source_;
-};
+using yaml::Reader;
 
 void read_motor(Reader& in, const YAML::Node& node, MotorParameters& motor) {
     in.each_key(node, "motor",
@@ -245,25 +184,15 @@ AxisParameters read_axis(Reader& in, const YAML::Node& root) {
 } // namespace
 
 core::Result<AxisParameters> parse_axis_file(std::string_view text, std::string_view source) {
-    Reader in(source);
-    try {
-        return read_axis(in, YAML::Load(std::string(text)));
-    } catch (const FileError& error) {
-        return core::Error{error.message};
-    } catch (const YAML::Exception& error) {
-        return core::Error{fmt::format("{}:{}:{}: error: {}", source, error.mark.line + 1,
-                                       error.mark.column + 1, error.msg)};
-    }
+    return yaml::parse<AxisParameters>(text, source, read_axis);
 }
 
 core::Result<AxisParameters> load_axis_file(const std::filesystem::path& path) {
-    std::ifstream file(path);
-    if (!file) {
-        return core::Error{fmt::format("{}: error: cannot read the file", path.string())};
+    auto text = yaml::read_text(path);
+    if (!text) {
+        return core::Error{text.error()};
     }
-    std::ostringstream text;
-    text << file.rdbuf();
-    return parse_axis_file(text.str(), path.string());
+    return parse_axis_file(*text, path.string());
 }
 
 } // namespace eposp::drives::plant
