@@ -3,6 +3,8 @@
 #include "network_port.hpp"
 #include "plc_objects.hpp"
 
+#include <fmt/format.h>
+
 namespace eposp::device {
 namespace {
 
@@ -26,6 +28,8 @@ EposPDictionaryConfig dictionary_config(const EposPConfig& config, const Plc& pl
 
 } // namespace
 
+EposP::EposP() : EposP(EposPConfig{}) {}
+
 EposP::EposP(EposPConfig config)
     : loop_(config.pace), internal_bus_(loop_, can::BusConfig{.name = "internal"}),
       internal_port_(internal_bus_.connect("epos-p")),
@@ -35,7 +39,8 @@ EposP::EposP(EposPConfig config)
       external_bus_(loop_, can::BusConfig{.name = "external", .bitrate = config.external_bit_rate}),
       external_port_(external_bus_.connect("epos-p")), plc_(loop_, std::move(config.runtime)),
       dictionary_(dictionary_config(config, plc_)) {
-    bind_plc(dictionary_.objects(), plc_, [this] { boot_networks(); });
+    bind_plc(dictionary_.objects(), plc_,
+             [this](vm::StartMode mode) { return start_program(mode); });
     internal_network_ =
         std::make_unique<NetworkPort>(loop_, *internal_port_, dictionary_.objects(), kInternalPort);
     external_network_ =
@@ -49,6 +54,33 @@ EposP::EposP(EposPConfig config)
         });
     }
     internal_drive_->start();
+}
+
+void EposP::add_network(const NetworkFile& network) {
+    apply_network(network, dictionary_.objects());
+    for (const NetworkSlave& slave : network.slaves) {
+        if (slave.port != kExternalPort || slave.kind != NetworkSlave::Kind::Epos2) {
+            continue;
+        }
+        drives::epos2::Epos2DriveConfig config;
+        config.dictionary.node_id = slave.node_id;
+        config.dictionary.serial_number = slave.node_id;
+        slave_ports_.push_back(external_bus_.connect(fmt::format("epos2-{}", slave.node_id)));
+        slaves_.push_back(std::make_unique<drives::epos2::Epos2Drive>(loop_, *slave_ports_.back(),
+                                                                      std::move(config)));
+        slaves_.back()->start();
+    }
+}
+
+std::optional<core::Error> EposP::start_program(vm::StartMode mode) {
+    if (auto error = plc_.runtime().start(mode)) {
+        return error;
+    }
+    // 8.1: the boot-up runs at each cold or warm start of the application.
+    if (mode != vm::StartMode::Hot) {
+        boot_networks();
+    }
+    return std::nullopt;
 }
 
 void EposP::boot_networks() {

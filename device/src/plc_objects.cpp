@@ -10,8 +10,7 @@
 namespace eposp::device {
 namespace {
 
-canopen::AbortCode program_control(Plc& plc, std::uint16_t value,
-                                   const std::function<void()>& on_cold_or_warm_start) {
+canopen::AbortCode program_control(Plc& plc, std::uint16_t value, const ProgramStart& start) {
     vm::PlcRuntime& runtime = plc.runtime();
     if (value == static_cast<std::uint16_t>(ProgramControl::Stopped)) {
         if (runtime.state() == vm::ProgramState::Running) {
@@ -19,29 +18,19 @@ canopen::AbortCode program_control(Plc& plc, std::uint16_t value,
         }
         return canopen::AbortCode::None;
     }
-    if (runtime.state() != vm::ProgramState::Stopped) {
-        return canopen::AbortCode::DeviceState; // no program, or one that runs
-    }
-    const auto mode = static_cast<vm::StartMode>(value);
-    if (runtime.start(mode)) {
-        return canopen::AbortCode::DeviceState;
-    }
-    if (mode != vm::StartMode::Hot && on_cold_or_warm_start) {
-        on_cold_or_warm_start();
-    }
-    return canopen::AbortCode::None;
+    // No program, one that runs, or one that cannot start.
+    return start(static_cast<vm::StartMode>(value)) ? canopen::AbortCode::DeviceState
+                                                    : canopen::AbortCode::None;
 }
 
-void bind_program_control(canopen::ObjectDictionary& od, Plc& plc,
-                          std::function<void()> on_cold_or_warm_start) {
+void bind_program_control(canopen::ObjectDictionary& od, Plc& plc, ProgramStart start) {
     canopen::SubObject& control = *od.find(kProgramControlIndex, 0);
     control.on_read = [&plc] {
         return canopen::encode(plc.runtime().program_control());
     };
-    control.on_write =
-        [&plc, on_start = std::move(on_cold_or_warm_start)](std::span<const std::uint8_t> value) {
-            return program_control(plc, canopen::decode<std::uint16_t>(value), on_start);
-        };
+    control.on_write = [&plc, start = std::move(start)](std::span<const std::uint8_t> value) {
+        return program_control(plc, canopen::decode<std::uint16_t>(value), start);
+    };
 }
 
 void bind_process_image(canopen::ObjectDictionary& od, Plc& plc) {
@@ -73,9 +62,8 @@ canopen::AbortCode restore_permitted(const Plc& plc) {
                                                               : canopen::AbortCode::None;
 }
 
-void bind_plc(canopen::ObjectDictionary& od, Plc& plc,
-              std::function<void()> on_cold_or_warm_start) {
-    bind_program_control(od, plc, std::move(on_cold_or_warm_start));
+void bind_plc(canopen::ObjectDictionary& od, Plc& plc, ProgramStart start) {
+    bind_program_control(od, plc, std::move(start));
     bind_process_image(od, plc);
     plc.on_error([&od](const RaisedError& error) {
         record_error(od, {.code = error.code, .port = 0, .node = 0, .warning = false});

@@ -1,12 +1,15 @@
-// `eposp run app.epx|FILES… [--for 10s] [--watch PATH]… [--ns-per-instruction N]
-// [--retain FILE --start warm] [--engine interpreter]`: runs a program in the PLC runtime in
-// virtual time, and prints each task's statistics, the errors raised and the watched variables at
-// the end.
+// `eposp run app.epx|FILES… [--for 10s] [--network net.yaml] [--watch PATH]…
+// [--ns-per-instruction N] [--retain FILE --start warm] [--engine interpreter]`: runs a program on
+// the EPOS P in virtual time (with the network of the file: slaves booted at the start) and
+// prints the boot report, each task's statistics, the errors raised and the watched variables.
 #include "commands.hpp"
-#include "options.hpp"
 #include "eposp/device/epos_p.hpp"
+#include "eposp/device/network_file.hpp"
+#include "eposp/manager/boot_error.hpp"
+#include "options.hpp"
 #include "program_input.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <memory>
 #include <optional>
@@ -26,6 +29,7 @@ struct RunOptions {
     std::optional<std::string> retain_file;
     std::string start = "cold";
     vm::Engine engine = vm::default_engine();
+    std::optional<std::string> network;
 };
 
 std::string statistics_line(const vm::TaskStatistics& s, std::uint64_t ns_per_instruction) {
@@ -86,6 +90,45 @@ std::optional<vm::StartMode> start_mode(const std::string& name) {
     return std::nullopt;
 }
 
+std::string identity_read(const manager::SlaveBootResult& result) {
+    std::string text = fmt::format("device type 0x{:08X}", result.device_type);
+    const std::pair<canopen::LssPart, std::string_view> parts[] = {
+        {canopen::LssPart::VendorId, "vendor"},
+        {canopen::LssPart::ProductCode, "product"},
+        {canopen::LssPart::RevisionNumber, "revision"},
+        {canopen::LssPart::SerialNumber, "serial"}};
+    for (const auto& [part, name] : parts) {
+        if (const std::uint32_t value = result.identity.part(part); value != 0) {
+            text += fmt::format(", {} 0x{:08X}", name, value);
+        }
+    }
+    return text;
+}
+
+// Each port with slaves: whether its network started, and each slave's boot.
+void print_boot_report(const EposP& device, const NetworkFile& network) {
+    for (const std::uint8_t port : {kInternalPort, kExternalPort}) {
+        if (std::ranges::none_of(
+                network.slaves, [port](const NetworkSlave& slave) { return slave.port == port; })) {
+            continue;
+        }
+        const manager::BootReport& report = device.network(port).report();
+        fmt::print("boot-up of port {} ({}): {}\n", port,
+                   port == kInternalPort ? "internal" : "CAN",
+                   report.network_started ? "network started"
+                                          : "held back: a mandatory slave did not boot");
+        for (const manager::SlaveBootResult& slave : report.slaves) {
+            const std::string when = core::format_duration(slave.finished.time_since_epoch());
+            if (slave.error) {
+                fmt::print("  node {}: failed at {}: 0x{:04X} {}\n", slave.node, when,
+                           static_cast<std::uint16_t>(*slave.error), describe(*slave.error));
+            } else {
+                fmt::print("  node {}: booted at {}: {}\n", slave.node, when, identity_read(slave));
+            }
+        }
+    }
+}
+
 int run_program(const RunOptions& options) {
     auto image = program_image(options.paths);
     if (!image) {
@@ -98,9 +141,23 @@ int run_program(const RunOptions& options) {
     if (options.retain_file) {
         config.retain_file = *options.retain_file;
     }
+    std::optional<NetworkFile> network;
+    if (options.network) {
+        auto loaded = load_network_file(*options.network);
+        if (!loaded) {
+            return report_user_error(kCommand, loaded.error());
+        }
+        network = std::move(*loaded);
+    }
     EposPConfig device_config;
     device_config.runtime = std::move(config);
+    if (network) {
+        device_config.external_bit_rate = network->bit_rate;
+    }
     auto device = std::make_unique<EposP>(std::move(device_config));
+    if (network) {
+        device->add_network(*network);
+    }
     Plc& plc = device->plc();
     if (const auto error = plc.load(std::move(*image))) {
         return report_user_error(kCommand, error->message);
@@ -111,7 +168,7 @@ int run_program(const RunOptions& options) {
             return report_user_error(kCommand, fmt::format("--watch {}: {}", path, value.error()));
         }
     }
-    if (const auto error = plc.runtime().start(*start_mode(options.start))) {
+    if (const auto error = device->start_program(*start_mode(options.start))) {
         return report_user_error(kCommand, error->message);
     }
     const core::Duration duration = options.duration.value_or(kDefaultDuration);
@@ -119,6 +176,9 @@ int run_program(const RunOptions& options) {
     plc.runtime().stop(); // saves the RETAIN variables
 
     fmt::print("ran {} of virtual time\n", core::format_duration(duration));
+    if (network) {
+        print_boot_report(*device, *network);
+    }
     print_task_summary(plc, options.ns_per_instruction);
     print_errors(plc);
     for (const std::string& path : options.watch) {
@@ -157,6 +217,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
     command->add_option("--start", options->start, "Start mode: cold, warm or hot")
         ->check(CLI::IsMember({"cold", "warm", "hot"}))
         ->capture_default_str();
+    command->add_option("--network", options->network,
+                        "The CANopen network (YAML, docs/network.md): slaves, checks, axes");
     add_engine_option(*command, options->engine);
     command->callback([options, &exit_code] { exit_code = run_program(*options); });
 }

@@ -3,6 +3,7 @@
 #include "eposp/can/virtual_bus.hpp"
 #include "eposp/core/event_loop.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/device/network_file.hpp"
 #include "eposp/device/plc.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
 #include "eposp/manager/network_boot.hpp"
@@ -10,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 namespace eposp::device {
 
@@ -40,7 +42,8 @@ struct EposPConfig {
 /// Neither copyable nor movable: the drive, the ports and the PLC refer to the loop.
 class EposP {
 public:
-    explicit EposP(EposPConfig config = {});
+    EposP();
+    explicit EposP(EposPConfig config);
     ~EposP();
     EposP(const EposP&) = delete;
     EposP& operator=(const EposP&) = delete;
@@ -49,10 +52,20 @@ public:
     Plc& plc() { return plc_; }
     canopen::ObjectDictionary& objects() { return dictionary_.objects(); }
 
+    /// Sets the network up as the file says (apply_network) and powers up an in-process EPOS2 on
+    /// port 2 for each slave of kind epos2 (serial number = its node-ID).
+    void add_network(const NetworkFile& network);
+    /// The simulated EPOS2s add_network() put on port 2.
+    const std::vector<std::unique_ptr<drives::epos2::Epos2Drive>>& simulated_slaves() const {
+        return slaves_;
+    }
+
+    /// Starts the loaded program as 0x5F51 does (1 cold, 2 warm, 3 hot); a cold or warm start
+    /// boots the networks too (8.1). The error says why it cannot start.
+    std::optional<core::Error> start_program(vm::StartMode mode);
     /// Boots the networks of both ports as the dictionary's network lists say (8.1): the
     /// internal EPOS2 (sub-index 128 of 0x1F81 ...) on port 1, the slaves of sub-indices 1..127
-    /// on port 2. Failures go to the error history with their port and node-ID. A cold or warm
-    /// start of the program through 0x5F51 does it too.
+    /// on port 2. Failures go to the error history with their port and node-ID.
     void boot_networks();
     /// The boot-up of port 1 (kInternalPort) or 2 (kExternalPort).
     const manager::NetworkBoot& network(std::uint8_t port) const;
@@ -77,6 +90,8 @@ private:
     EposPDictionary dictionary_;
     std::unique_ptr<NetworkPort> internal_network_;
     std::unique_ptr<NetworkPort> external_network_;
+    std::vector<std::unique_ptr<can::VirtualPort>> slave_ports_;
+    std::vector<std::unique_ptr<drives::epos2::Epos2Drive>> slaves_;
 };
 
 } // namespace eposp::device

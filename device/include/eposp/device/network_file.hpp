@@ -1,0 +1,53 @@
+#pragma once
+
+#include "eposp/canopen/lss_protocol.hpp"
+#include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/core/result.hpp"
+#include "eposp/core/time.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace eposp::device {
+
+/// One slave of a network file (docs/network.md).
+struct NetworkSlave {
+    enum class Kind : std::uint8_t {
+        Epos2,    ///< simulated in this process
+        External, ///< another process on socketcand, or real hardware
+    };
+    std::uint8_t port = 2; ///< 1: the internal EPOS2 (node 1), 2: the CAN bus
+    canopen::NodeId node_id = 0;
+    Kind kind = Kind::Epos2;
+    bool mandatory = true;
+    std::optional<std::uint8_t> axis; ///< 0..31: the axis it serves (0x5280 + axis)
+    /// Expected values of the boot-up checks; 0 is not checked.
+    std::uint32_t device_type = 0;
+    canopen::LssAddress identity;
+    /// The consumer heartbeat time the controller watches it with; 0: no supervision.
+    std::uint16_t heartbeat_ms = 100;
+};
+
+/// What a user writes instead of setting objects one by one.
+struct NetworkFile {
+    std::uint32_t bit_rate = 1'000'000;                        ///< port 2, bit/s
+    core::Duration boot_time = std::chrono::milliseconds(500); ///< 0x1F89
+    std::vector<NetworkSlave> slaves;
+};
+
+/// Reads a network file; every mistake is an error "file:line:col: error: message" (`source`
+/// names the text): unknown keys, values out of range, a node listed twice on a port, an axis
+/// served twice, an internal slave other than node 1.
+core::Result<NetworkFile> parse_network_file(std::string_view text, std::string_view source);
+core::Result<NetworkFile> load_network_file(const std::filesystem::path& path);
+
+/// Writes the network into the EPOS P's dictionary: per slave 0x1F81 (slave, boot slave,
+/// mandatory), 0x1F84 - 0x1F88, 0x1016 (port code, node-ID, time) and its axis' slave number
+/// 0x5280 + axis sub 1 (table 30); 0x1F89. Axes the file does not name keep their defaults.
+void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od);
+
+} // namespace eposp::device

@@ -1,0 +1,198 @@
+#include "eposp/device/network_file.hpp"
+
+#include "eposp/canopen/device_info.hpp"
+#include "eposp/canopen/heartbeat_consumer.hpp"
+#include "eposp/canopen/value_codec.hpp"
+#include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/manager/network_list.hpp"
+#include "eposp/yaml/reader.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+
+namespace eposp::device {
+namespace {
+
+using yaml::Reader;
+
+constexpr std::uint8_t kMaxNodeId = 127;
+
+core::Duration duration(Reader& in, const YAML::Node& node, std::string_view what) {
+    const auto text = in.scalar<std::string>(node, what);
+    const auto parsed = core::parse_duration(text);
+    if (!parsed) {
+        in.fail(node, fmt::format("{} must be a duration such as 500ms or 1s", what));
+    }
+    return *parsed;
+}
+
+template <typename T>
+T in_range(Reader& in, const YAML::Node& node, std::string_view what, std::int64_t low,
+           std::int64_t high) {
+    const auto value = in.scalar<std::int64_t>(node, what);
+    if (value < low || value > high) {
+        in.fail(node, fmt::format("{} must be {}..{}", what, low, high));
+    }
+    return static_cast<T>(value);
+}
+
+void read_expected(Reader& in, const YAML::Node& node, NetworkSlave& slave) {
+    const auto u32 = [&in](std::uint32_t& field, std::string_view what) {
+        return [&in, &field, what](const YAML::Node& value) {
+            field = in_range<std::uint32_t>(in, value, what, 0, 0xFFFF'FFFF);
+        };
+    };
+    in.each_key(node, "expect",
+                {{"device_type", u32(slave.device_type, "expect.device_type")},
+                 {"vendor_id", u32(slave.identity.vendor_id, "expect.vendor_id")},
+                 {"product_code", u32(slave.identity.product_code, "expect.product_code")},
+                 {"revision_number", u32(slave.identity.revision_number, "expect.revision_number")},
+                 {"serial_number", u32(slave.identity.serial_number, "expect.serial_number")}});
+}
+
+NetworkSlave read_slave(Reader& in, const YAML::Node& node) {
+    NetworkSlave slave;
+    bool has_node = false;
+    in.each_key(node, "slaves",
+                {{"node",
+                  [&](const YAML::Node& value) {
+                      slave.node_id = in_range<canopen::NodeId>(in, value, "node", 1, kMaxNodeId);
+                      has_node = true;
+                  }},
+                 {"port",
+                  [&](const YAML::Node& value) {
+                      const auto port = in.scalar<std::string>(value, "port");
+                      if (port != "internal" && port != "can") {
+                          in.fail(value, "port must be 'internal' (the internal EPOS2) or 'can'");
+                      }
+                      slave.port = port == "internal" ? kInternalPort : kExternalPort;
+                  }},
+                 {"kind",
+                  [&](const YAML::Node& value) {
+                      const auto kind = in.scalar<std::string>(value, "kind");
+                      if (kind != "epos2" && kind != "external") {
+                          in.fail(value, "kind must be 'epos2' (simulated here) or 'external'");
+                      }
+                      slave.kind = kind == "epos2" ? NetworkSlave::Kind::Epos2
+                                                   : NetworkSlave::Kind::External;
+                  }},
+                 {"mandatory",
+                  [&](const YAML::Node& value) {
+                      slave.mandatory = in.scalar<bool>(value, "mandatory");
+                  }},
+                 {"axis",
+                  [&](const YAML::Node& value) {
+                      slave.axis = in_range<std::uint8_t>(in, value, "axis", 0, kAxisCount - 1);
+                  }},
+                 {"heartbeat",
+                  [&](const YAML::Node& value) {
+                      const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                          duration(in, value, "heartbeat"));
+                      if (ms.count() < 0 || ms.count() > 0xFFFF) {
+                          in.fail(value, "heartbeat must be 0..65535ms");
+                      }
+                      slave.heartbeat_ms = static_cast<std::uint16_t>(ms.count());
+                  }},
+                 {"expect", [&](const YAML::Node& value) {
+                      read_expected(in, value, slave);
+                  }}});
+    if (!has_node) {
+        in.fail(node, "a slave needs its 'node'");
+    }
+    if (slave.port == kInternalPort &&
+        (slave.node_id != 1 || slave.kind != NetworkSlave::Kind::Epos2)) {
+        in.fail(node, "the internal slave is the EPOS2 with node 1");
+    }
+    return slave;
+}
+
+NetworkFile read_network(Reader& in, const YAML::Node& root) {
+    NetworkFile network;
+    std::set<std::pair<std::uint8_t, canopen::NodeId>> nodes;
+    std::set<std::uint8_t> axes;
+    in.each_key(root, "network",
+                {{"bit_rate",
+                  [&](const YAML::Node& value) {
+                      network.bit_rate =
+                          in_range<std::uint32_t>(in, value, "bit_rate", 1, 1'000'000);
+                      if (std::ranges::find(canopen::kEdsBaudRatesKbit, network.bit_rate / 1000) ==
+                              canopen::kEdsBaudRatesKbit.end() ||
+                          network.bit_rate % 1000 != 0) {
+                          in.fail(value, "bit_rate must be a CANopen bit rate (10000 ... 1000000)");
+                      }
+                  }},
+                 {"boot_time",
+                  [&](const YAML::Node& value) {
+                      network.boot_time = duration(in, value, "boot_time");
+                      if (network.boot_time < std::chrono::milliseconds(200) ||
+                          network.boot_time > std::chrono::milliseconds(30000)) {
+                          in.fail(value, "boot_time must be 200ms..30s (0x1F89)");
+                      }
+                  }},
+                 {"slaves", [&](const YAML::Node& list) {
+                      if (!list.IsSequence()) {
+                          in.fail(list, "'slaves' must be a list");
+                      }
+                      for (const YAML::Node& node : list) {
+                          NetworkSlave slave = read_slave(in, node);
+                          if (!nodes.emplace(slave.port, slave.node_id).second) {
+                              in.fail(node, fmt::format("node {} is listed twice", slave.node_id));
+                          }
+                          if (slave.axis && !axes.insert(*slave.axis).second) {
+                              in.fail(node, fmt::format("axis {} is served twice", *slave.axis));
+                          }
+                          network.slaves.push_back(slave);
+                      }
+                  }}});
+    return network;
+}
+
+} // namespace
+
+core::Result<NetworkFile> parse_network_file(std::string_view text, std::string_view source) {
+    return yaml::parse<NetworkFile>(text, source, read_network);
+}
+
+core::Result<NetworkFile> load_network_file(const std::filesystem::path& path) {
+    auto text = yaml::read_text(path);
+    if (!text) {
+        return core::Error{text.error()};
+    }
+    return parse_network_file(*text, path.string());
+}
+
+void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od) {
+    od.set_as<std::uint32_t>(
+        0x1F89, 0,
+        static_cast<std::uint32_t>(
+            std::chrono::duration_cast<std::chrono::milliseconds>(network.boot_time).count()));
+    std::uint8_t heartbeat_entry = 0;
+    for (const NetworkSlave& slave : network.slaves) {
+        const std::uint8_t sub =
+            slave.port == kInternalPort ? kInternalSlaveSubIndex : slave.node_id;
+        std::uint32_t assignment = manager::assignment::kSlave | manager::assignment::kBootSlave;
+        if (slave.mandatory) {
+            assignment |= manager::assignment::kMandatory;
+        }
+        od.set_as<std::uint32_t>(0x1F81, sub, assignment);
+        od.set_as<std::uint32_t>(0x1F84, sub, slave.device_type);
+        od.set_as<std::uint32_t>(0x1F85, sub, slave.identity.vendor_id);
+        od.set_as<std::uint32_t>(0x1F86, sub, slave.identity.product_code);
+        od.set_as<std::uint32_t>(0x1F87, sub, slave.identity.revision_number);
+        od.set_as<std::uint32_t>(0x1F88, sub, slave.identity.serial_number);
+        if (slave.heartbeat_ms != 0) {
+            od.set_as<std::uint32_t>(canopen::kConsumerHeartbeatTimeIndex, ++heartbeat_entry,
+                                     std::uint32_t{slave.port} << 24 |
+                                         std::uint32_t{slave.node_id} << 16 | slave.heartbeat_ms);
+        }
+        if (slave.axis) {
+            od.set_as<std::uint8_t>(static_cast<std::uint16_t>(kAxisIndex + *slave.axis), 1,
+                                    slave.port == kInternalPort ? kInternalSlave : slave.node_id);
+        }
+    }
+}
+
+} // namespace eposp::device

@@ -1,0 +1,143 @@
+// Network files: what they set in the EPOS P's dictionary, and every mistake named with its line.
+#include "eposp/device/epos_p.hpp"
+#include "eposp/device/network_file.hpp"
+#include "eposp_command.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace eposp::device {
+namespace {
+
+using namespace std::chrono_literals;
+using testing::HasSubstr;
+
+constexpr const char* kTwoAxes = R"(bit_rate: 500000
+boot_time: 800ms
+slaves:
+  - node: 1
+    port: internal
+    axis: 0
+    heartbeat: 100ms
+    expect:
+      vendor_id: 0xFB
+  - node: 2
+    kind: epos2
+    axis: 1
+    mandatory: false
+    heartbeat: 200ms
+    expect:
+      product_code: 0x62200000
+  - node: 9
+    kind: external
+    heartbeat: 0ms
+)";
+
+TEST(NetworkFile, ReadsSlavesChecksAndAxes) {
+    const auto network = parse_network_file(kTwoAxes, "net.yaml");
+    ASSERT_TRUE(network.ok()) << network.error();
+    EXPECT_EQ(network->bit_rate, 500'000u);
+    EXPECT_EQ(network->boot_time, 800ms);
+    ASSERT_EQ(network->slaves.size(), 3u);
+    EXPECT_EQ(network->slaves[0].port, kInternalPort);
+    EXPECT_EQ(network->slaves[0].identity.vendor_id, 0xFBu);
+    EXPECT_EQ(network->slaves[1].port, kExternalPort);
+    EXPECT_FALSE(network->slaves[1].mandatory);
+    EXPECT_EQ(network->slaves[1].axis, std::uint8_t{1});
+    EXPECT_EQ(network->slaves[2].kind, NetworkSlave::Kind::External);
+    EXPECT_EQ(network->slaves[2].heartbeat_ms, 0u);
+}
+
+TEST(NetworkFile, ApplyWritesTheNetworkListAndTheAxisTable) {
+    EposP device;
+    device.add_network(*parse_network_file(kTwoAxes, "net.yaml"));
+    const canopen::ObjectDictionary& od = device.objects();
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1F89, 0), 800u);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1F81, kInternalSlaveSubIndex), 0x0Du);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1F85, kInternalSlaveSubIndex), 0xFBu);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1F81, 2), 0x05u); // optional
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1F86, 2), 0x6220'0000u);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1F81, 9), 0x0Du);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1016, 1), 0x0101'0064u); // port 1, node 1, 100 ms
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1016, 2), 0x0202'00C8u); // port 2, node 2, 200 ms
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1016, 3), 0u);
+    EXPECT_EQ(od.get_as<std::uint8_t>(0x5280, 1), kInternalSlave);
+    EXPECT_EQ(od.get_as<std::uint8_t>(0x5281, 1), 2u);
+    EXPECT_EQ(device.simulated_slaves().size(), 1u); // node 9 is external
+}
+
+struct BadFile {
+    const char* name;
+    const char* text;
+    const char* message; ///< file:line:col: error: ...
+};
+
+class NetworkFileMistake : public ::testing::TestWithParam<BadFile> {};
+
+TEST_P(NetworkFileMistake, IsAnErrorAtItsLine) {
+    const auto network = parse_network_file(GetParam().text, "net.yaml");
+    ASSERT_FALSE(network.ok());
+    EXPECT_THAT(network.error(), HasSubstr(GetParam().message));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    All, NetworkFileMistake,
+    ::testing::Values(
+        BadFile{"UnknownKey", "bit_rate: 1000000\nspeed: 3\n",
+                "net.yaml:2:1: error: unknown key 'speed' in 'network'"},
+        BadFile{"BitRate", "bit_rate: 300000\n", "net.yaml:1:11: error: bit_rate must be"},
+        BadFile{"BootTime", "boot_time: 100ms\n", "net.yaml:1:12: error: boot_time must be"},
+        BadFile{"NotADuration", "boot_time: soon\n",
+                "net.yaml:1:12: error: boot_time must be a duration"},
+        BadFile{"NodeRange", "slaves:\n  - node: 128\n",
+                "net.yaml:2:11: error: node must be 1..127"},
+        BadFile{"NoNode", "slaves:\n  - axis: 1\n",
+                "net.yaml:2:5: error: a slave needs its 'node'"},
+        BadFile{"NodeTwice", "slaves:\n  - node: 3\n  - node: 3\n",
+                "net.yaml:3:5: error: node 3 is listed twice"},
+        BadFile{"AxisTwice", "slaves:\n  - node: 3\n    axis: 1\n  - node: 4\n    axis: 1\n",
+                "net.yaml:4:5: error: axis 1 is served twice"},
+        BadFile{"AxisRange", "slaves:\n  - node: 3\n    axis: 32\n",
+                "net.yaml:3:11: error: axis must be 0..31"},
+        BadFile{"InternalNode", "slaves:\n  - node: 2\n    port: internal\n",
+                "net.yaml:2:5: error: the internal slave is the EPOS2 with node 1"},
+        BadFile{"Kind", "slaves:\n  - node: 2\n    kind: escon\n",
+                "net.yaml:3:11: error: kind must be"},
+        BadFile{"Syntax", "slaves: [\n", "net.yaml:"},
+        BadFile{"NotAList", "slaves: 3\n", "net.yaml:1:9: error: 'slaves' must be a list"}),
+    [](const auto& test) { return std::string(test.param.name); });
+
+TEST(RunCommand, WithANetworkPrintsTheBootReport) {
+    const std::string program =
+        write_source("main.st", "PROGRAM Main\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n");
+    const std::string network = write_source("net.yaml", kTwoAxes);
+    const auto result = eposp("run " + program + " --network " + network + " --for 3s");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("boot-up of port 1 (internal): network started"));
+    EXPECT_THAT(result.output, HasSubstr("node 1: booted at"));
+    EXPECT_THAT(result.output, HasSubstr("node 2: booted at"));
+    // Node 9 is not there: no answer, and as a mandatory slave it holds port 2 back.
+    EXPECT_THAT(result.output, HasSubstr("boot-up of port 2 (CAN): held back"));
+    EXPECT_THAT(result.output, HasSubstr("node 9: failed at"));
+    EXPECT_THAT(result.output, HasSubstr("0x8182 CAN No Answer Error"));
+}
+
+TEST(RunCommand, ABadNetworkFileIsAUserErrorWithItsLine) {
+    const std::string program = write_source("main.st", "PROGRAM Main\nEND_PROGRAM\n");
+    const std::string network = write_source("net.yaml", "slaves:\n  - node: 0\n");
+    const auto result = eposp("run " + program + " --network " + network);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("net.yaml:2:11: error: node must be 1..127"));
+}
+
+TEST(RunCommand, ADirectoryAsTheNetworkFileIsAUserError) {
+    const std::string program = write_source("main.st", "PROGRAM Main\nEND_PROGRAM\n");
+    const auto directory = scratch("network-dir");
+    std::filesystem::create_directories(directory);
+    const auto result = eposp("run " + program + " --network " + directory.string());
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("cannot read the file"));
+}
+
+} // namespace
+} // namespace eposp::device
