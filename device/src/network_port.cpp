@@ -10,6 +10,8 @@ namespace {
 
 constexpr std::uint16_t kProducerHeartbeatIndex = 0x1017;
 constexpr canopen::NodeId kInternalEposNodeId = 1;
+/// 10.16 - 10.19: the internal PDOs 0x1500 / 0x1900 ... are PDO numbers 257 ...
+constexpr std::size_t kInternalPdoNumber = 257;
 
 /// The time 0x1016 gives the producer `node` of `port`, or 0.
 std::uint16_t consumer_time_ms(const canopen::ObjectDictionary& od, std::uint8_t port,
@@ -74,7 +76,11 @@ manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint
 NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::ObjectDictionary& od,
                          std::uint8_t port_code)
     : port_(port), od_(od), port_code_(port_code), sdo_(loop, port), nmt_(port),
-      heartbeat_(loop, od, {}, port_code),
+      heartbeat_(loop, od, {}, port_code), sync_producer_(loop, port, od),
+      sync_consumer_(loop, od, [this](std::uint16_t code) { report_pdo_error(code); }),
+      pdo_(
+          loop, port, od, [this](std::uint16_t code) { report_pdo_error(code); },
+          port_code == kInternalPort ? kInternalPdoNumber : 1),
       network_(loop, {sdo_, nmt_, heartbeat_}, [this](const manager::ManagerError& error) {
           record_error(od_, {.code = error.code,
                              .port = port_code_,
@@ -83,9 +89,19 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
       }) {
     // The manager supervises from power-up on (it is never in NMT initialisation).
     heartbeat_.set_nmt_state(canopen::NmtState::PreOperational);
+    set_nmt_state(canopen::NmtState::PreOperational);
+    // The controller does not hear its own SYNCs: they reach its PDOs this way.
+    sync_producer_.on_sent([this](const can::Frame& frame) { sync_consumer_.on_frame(frame); });
+    sync_consumer_.on_sync(
+        [this](const canopen::SyncEvent& sync) { pdo_.on_sync(sync.counter.value_or(0)); });
+    sync_consumer_.on_window_closed([this] { pdo_.on_window_closed(); });
+    // 8.1: the boot-up comes before the controller's own switch to operational.
+    network_.on_network_started([this] { set_nmt_state(canopen::NmtState::Operational); });
     port_.on_receive([this](const can::Frame& frame) {
         sdo_.on_frame(frame);
         heartbeat_.on_frame(frame);
+        sync_consumer_.on_frame(frame);
+        pdo_.on_frame(frame);
     });
     port_.on_error_state([this](can::ErrorState state) { report_controller_state(state); });
 }
@@ -101,6 +117,17 @@ void NetworkPort::report_controller_state(can::ErrorState state) {
     }
 }
 
+void NetworkPort::set_nmt_state(canopen::NmtState state) {
+    sync_producer_.set_nmt_state(state);
+    sync_consumer_.set_nmt_state(state);
+    pdo_.set_nmt_state(state);
+}
+
+// The emergencies of the controller's own PDO and SYNC services (a short PDO: 0x8210).
+void NetworkPort::report_pdo_error(std::uint16_t code) {
+    record_error(od_, {.code = code, .port = port_code_, .node = 0, .warning = false});
+}
+
 void NetworkPort::report_lost_frame() {
     record_error(od_, {.code = kCanOverrunError, .port = port_code_, .node = 0, .warning = false});
 }
@@ -111,6 +138,7 @@ NetworkPort::~NetworkPort() {
 }
 
 void NetworkPort::boot(std::function<void(const manager::BootReport& report)> done) {
+    set_nmt_state(canopen::NmtState::PreOperational);
     network_.start(network_list(od_, port_code_), std::move(done));
 }
 

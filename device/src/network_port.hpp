@@ -4,7 +4,10 @@
 #include "eposp/canopen/heartbeat_consumer.hpp"
 #include "eposp/canopen/nmt_master.hpp"
 #include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/canopen/pdo_service.hpp"
 #include "eposp/canopen/sdo_client.hpp"
+#include "eposp/canopen/sync_consumer.hpp"
+#include "eposp/canopen/sync_producer.hpp"
 #include "eposp/core/event_loop.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/manager/network_boot.hpp"
@@ -26,7 +29,10 @@ inline constexpr std::uint16_t kCanBusOffError = 0x81FD;
 
 /// The EPOS P as the CANopen manager of one of its ports: an SDO client, an NMT master and a
 /// heartbeat consumer for the entries of 0x1016 with the port's code, and the network boot-up
-/// of manager::NetworkBoot on the dictionary's network list. Its errors, and the port's CAN
+/// of manager::NetworkBoot on the dictionary's network list; the SYNC producer of 0x1005 -
+/// 0x1007 and the port's PDOs (port 1: 0x1500 / 0x1900 ..., port 2: 0x1400 / 0x1800 ...),
+/// which run once the port's network started: its slaves' TPDOs land in the dictionary (the
+/// axis table 0x5280 + n, the process image). Its errors, and the port's CAN
 /// errors (error passive 0x8120, bus-off 0x81FD, a lost frame 0x8110), go to the error history
 /// with the port code and the node-ID (table 4).
 class NetworkPort {
@@ -46,6 +52,9 @@ public:
 
 private:
     void report_controller_state(can::ErrorState state);
+    void report_pdo_error(std::uint16_t code);
+    /// The state of the controller's own services on this port.
+    void set_nmt_state(canopen::NmtState state);
 
     can::Port& port_;
     canopen::ObjectDictionary& od_;
@@ -53,6 +62,9 @@ private:
     canopen::SdoClient sdo_;
     canopen::NmtMaster nmt_;
     canopen::HeartbeatConsumer heartbeat_;
+    canopen::SyncProducer sync_producer_;
+    canopen::SyncConsumer sync_consumer_;
+    canopen::PdoService pdo_;
     manager::NetworkBoot network_;
 };
 

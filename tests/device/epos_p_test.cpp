@@ -240,5 +240,39 @@ TEST(EposP, AColdStartOfTheProgramBootsTheNetworks) {
     EXPECT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::Operational);
 }
 
+TEST(EposP, TheInternalEpos2sStatuswordArrivesInAxisZeroByItsPdo) {
+    EposP device;
+    assign_mandatory(device, kInternalSlaveSubIndex, kInternalPort, 1);
+    device.boot_networks();
+    device.loop().run_for(2s);
+    ASSERT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::Operational);
+
+    // Shutdown: the drive goes to Ready to Switch On, its TPDO 1 (0x181) sends the statusword,
+    // and the controller's internal RPDO 1 (0x1500 / 0x1700) maps it into 0x5280 sub 2.
+    ASSERT_EQ(device.internal_drive().objects().write(0x6040, 0, canopen::encode(std::uint16_t{6})),
+              canopen::AbortCode::None);
+    device.loop().run_for(20ms);
+    const auto statusword = device.internal_drive().objects().get_as<std::uint16_t>(0x6041, 0);
+    EXPECT_EQ(statusword & 0x006F, 0x0021); // Ready to Switch On
+    EXPECT_EQ(device.objects().get_as<std::uint16_t>(0x5280, 2), statusword);
+}
+
+TEST(EposP, SyncIsProducedOnBothPortsAsConfigured) {
+    EposP device;
+    std::size_t internal_syncs = 0;
+    std::size_t external_syncs = 0;
+    auto internal_monitor = device.internal_bus().connect("monitor");
+    auto external_monitor = device.external_bus().connect("monitor");
+    internal_monitor->on_receive(
+        [&](const can::Frame& frame) { internal_syncs += frame.id == 0x80; });
+    external_monitor->on_receive(
+        [&](const can::Frame& frame) { external_syncs += frame.id == 0x80; });
+    write_u32(device, 0x1006, 0, 1000);        // 1 ms
+    write_u32(device, 0x1005, 0, 0x4000'0080); // generate
+    device.loop().run_for(100ms);
+    EXPECT_NEAR(static_cast<double>(internal_syncs), 100, 1);
+    EXPECT_NEAR(static_cast<double>(external_syncs), 100, 1);
+}
+
 } // namespace
 } // namespace eposp::device

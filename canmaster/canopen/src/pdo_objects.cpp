@@ -315,10 +315,11 @@ void add_pdo_objects(ObjectDictionary& od, NodeId node, std::size_t rpdo_count,
     add_pdo_objects(od, cia301_pdo_defaults(node, rpdo_count, tpdo_count));
 }
 
-std::size_t count_pdos(const ObjectDictionary& od, PdoDirection direction) {
+std::size_t count_pdos(const ObjectDictionary& od, PdoDirection direction,
+                       std::size_t first_number) {
     std::size_t count = 0;
-    while (count < kMaxPdoNumber &&
-           od.find(pdo_communication_index(direction, count + 1)) != nullptr) {
+    while (first_number + count <= kMaxPdoNumber &&
+           od.find(pdo_communication_index(direction, first_number + count)) != nullptr) {
         ++count;
     }
     return count;

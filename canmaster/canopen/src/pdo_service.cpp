@@ -8,11 +8,13 @@
 namespace eposp::canopen {
 
 PdoService::PdoService(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
-                       EmergencyCallback emergency) {
-    for (std::size_t n = 1; n <= count_pdos(od, PdoDirection::Receive); ++n) {
+                       EmergencyCallback emergency, std::size_t first_number) {
+    const std::size_t rpdos = count_pdos(od, PdoDirection::Receive, first_number);
+    for (std::size_t n = first_number; n < first_number + rpdos; ++n) {
         rpdos_.push_back(std::make_unique<Rpdo>(loop, od, n, emergency));
     }
-    for (std::size_t n = 1; n <= count_pdos(od, PdoDirection::Transmit); ++n) {
+    const std::size_t tpdos = count_pdos(od, PdoDirection::Transmit, first_number);
+    for (std::size_t n = first_number; n < first_number + tpdos; ++n) {
         tpdos_.push_back(std::make_unique<Tpdo>(loop, port, od, n, emergency));
     }
 }

@@ -18,6 +18,10 @@ void NetworkBoot::on_master_operational(std::function<void()> handler) {
     master_operational_ = std::move(handler);
 }
 
+void NetworkBoot::on_network_started(std::function<void()> handler) {
+    network_started_ = std::move(handler);
+}
+
 void NetworkBoot::on_slave_lost(std::function<void(canopen::NodeId node)> handler) {
     slave_lost_ = std::move(handler);
 }
@@ -168,6 +172,9 @@ void NetworkBoot::start_network_when_ready() {
                 }
             }
         }
+    }
+    if (network_started_) {
+        network_started_();
     }
     if ((list_.nmt_startup & nmt_startup::kNotSelfStarting) == 0 && master_operational_) {
         master_operational_();

@@ -125,8 +125,10 @@ void add_pdo_objects(ObjectDictionary& od, const PdoObjectsConfig& config);
 void add_pdo_objects(ObjectDictionary& od, NodeId node, std::size_t rpdo_count,
                      std::size_t tpdo_count);
 
-/// The number of PDOs of `direction` in `od`: its communication objects n = 1, 2, ... present.
-std::size_t count_pdos(const ObjectDictionary& od, PdoDirection direction);
+/// The number of PDOs of `direction` in `od`: its communication objects n = first_number,
+/// first_number + 1, ... present.
+std::size_t count_pdos(const ObjectDictionary& od, PdoDirection direction,
+                       std::size_t first_number = 1);
 
 /// A PDO's communication parameters as the dictionary holds them now; a missing sub-index
 /// reads as 0.

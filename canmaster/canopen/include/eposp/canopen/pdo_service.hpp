@@ -24,8 +24,10 @@ namespace eposp::canopen {
 /// reports the state of the cycle that ends.
 class PdoService {
 public:
+    /// The PDOs numbered `first_number`, first_number + 1, ... that `od` holds: 1 for a node's
+    /// PDOs, 257 for the EPOS P's internal ones (0x1500, 0x1900).
     PdoService(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
-               EmergencyCallback emergency = {});
+               EmergencyCallback emergency = {}, std::size_t first_number = 1);
     PdoService(const PdoService&) = delete;
     PdoService& operator=(const PdoService&) = delete;
 
@@ -42,7 +44,8 @@ public:
 
     std::size_t rpdo_count() const { return rpdos_.size(); }
     std::size_t tpdo_count() const { return tpdos_.size(); }
-    /// PDO `number`, 1-based; out of range is a programming error (std::out_of_range).
+    /// The service's PDO `number`, 1-based (PDO first_number + number - 1 of the dictionary);
+    /// out of range is a programming error (std::out_of_range).
     Rpdo& rpdo(std::size_t number);
     Tpdo& tpdo(std::size_t number);
 

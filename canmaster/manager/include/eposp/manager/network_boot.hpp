@@ -71,6 +71,8 @@ public:
     void start(NetworkList list, std::function<void(const BootReport& report)> done = {});
     /// The master became operational (0x1F80 bit 2 clear), at the network start.
     void on_master_operational(std::function<void()> handler);
+    /// Every mandatory slave booted and the start commands went out.
+    void on_network_started(std::function<void()> handler);
     /// A slave was lost (heartbeat) or booted again after a boot-up message.
     void on_slave_lost(std::function<void(canopen::NodeId node)> handler);
     void on_slave_booted(std::function<void(canopen::NodeId node)> handler);
@@ -98,6 +100,7 @@ private:
     ErrorSink errors_;
     std::function<void(const BootReport&)> done_;
     std::function<void()> master_operational_;
+    std::function<void()> network_started_;
     std::function<void(canopen::NodeId)> slave_lost_;
     std::function<void(canopen::NodeId)> slave_booted_;
     BootReport report_;
