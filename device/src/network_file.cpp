@@ -113,40 +113,51 @@ NetworkFile read_network(Reader& in, const YAML::Node& root) {
     NetworkFile network;
     std::set<std::pair<std::uint8_t, canopen::NodeId>> nodes;
     std::set<std::uint8_t> axes;
-    in.each_key(root, "network",
-                {{"bit_rate",
-                  [&](const YAML::Node& value) {
-                      network.bit_rate =
-                          in_range<std::uint32_t>(in, value, "bit_rate", 1, 1'000'000);
-                      if (std::ranges::find(canopen::kEdsBaudRatesKbit, network.bit_rate / 1000) ==
-                              canopen::kEdsBaudRatesKbit.end() ||
-                          network.bit_rate % 1000 != 0) {
-                          in.fail(value, "bit_rate must be a CANopen bit rate (10000 ... 1000000)");
-                      }
-                  }},
-                 {"boot_time",
-                  [&](const YAML::Node& value) {
-                      network.boot_time = duration(in, value, "boot_time");
-                      if (network.boot_time < std::chrono::milliseconds(200) ||
-                          network.boot_time > std::chrono::milliseconds(30000)) {
-                          in.fail(value, "boot_time must be 200ms..30s (0x1F89)");
-                      }
-                  }},
-                 {"slaves", [&](const YAML::Node& list) {
-                      if (!list.IsSequence()) {
-                          in.fail(list, "'slaves' must be a list");
-                      }
-                      for (const YAML::Node& node : list) {
-                          NetworkSlave slave = read_slave(in, node);
-                          if (!nodes.emplace(slave.port, slave.node_id).second) {
-                              in.fail(node, fmt::format("node {} is listed twice", slave.node_id));
-                          }
-                          if (slave.axis && !axes.insert(*slave.axis).second) {
-                              in.fail(node, fmt::format("axis {} is served twice", *slave.axis));
-                          }
-                          network.slaves.push_back(slave);
-                      }
-                  }}});
+    in.each_key(
+        root, "network",
+        {{"bit_rate",
+          [&](const YAML::Node& value) {
+              network.bit_rate = in_range<std::uint32_t>(in, value, "bit_rate", 1, 1'000'000);
+              if (std::ranges::find(canopen::kEdsBaudRatesKbit, network.bit_rate / 1000) ==
+                      canopen::kEdsBaudRatesKbit.end() ||
+                  network.bit_rate % 1000 != 0) {
+                  in.fail(value, "bit_rate must be a CANopen bit rate (10000 ... 1000000)");
+              }
+          }},
+         {"boot_time",
+          [&](const YAML::Node& value) {
+              network.boot_time = duration(in, value, "boot_time");
+              if (network.boot_time < std::chrono::milliseconds(200) ||
+                  network.boot_time > std::chrono::milliseconds(30000)) {
+                  in.fail(value, "boot_time must be 200ms..30s (0x1F89)");
+              }
+          }},
+         {"sync_period",
+          [&](const YAML::Node& value) {
+              const core::Duration period = duration(in, value, "sync_period");
+              const auto us = std::chrono::duration_cast<std::chrono::microseconds>(period);
+              // 10.6: 1 ms and more, in whole microseconds.
+              if (period < std::chrono::milliseconds(1) || us != period ||
+                  us.count() > 0xFFFF'FFFF) {
+                  in.fail(value, "sync_period must be 1ms or more, in whole microseconds (0x1006)");
+              }
+              network.sync_period = period;
+          }},
+         {"slaves", [&](const YAML::Node& list) {
+              if (!list.IsSequence()) {
+                  in.fail(list, "'slaves' must be a list");
+              }
+              for (const YAML::Node& node : list) {
+                  NetworkSlave slave = read_slave(in, node);
+                  if (!nodes.emplace(slave.port, slave.node_id).second) {
+                      in.fail(node, fmt::format("node {} is listed twice", slave.node_id));
+                  }
+                  if (slave.axis && !axes.insert(*slave.axis).second) {
+                      in.fail(node, fmt::format("axis {} is served twice", *slave.axis));
+                  }
+                  network.slaves.push_back(slave);
+              }
+          }}});
     return network;
 }
 
@@ -169,6 +180,15 @@ void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od) {
         0x1F89, 0,
         static_cast<std::uint32_t>(
             std::chrono::duration_cast<std::chrono::milliseconds>(network.boot_time).count()));
+    if (network.sync_period) {
+        constexpr std::uint32_t kGenerate = 1U << 30; // 10.5, table 6
+        od.set_as<std::uint32_t>(
+            0x1006, 0,
+            static_cast<std::uint32_t>(
+                std::chrono::duration_cast<std::chrono::microseconds>(*network.sync_period)
+                    .count()));
+        od.set_as<std::uint32_t>(0x1005, 0, od.get_as<std::uint32_t>(0x1005, 0) | kGenerate);
+    }
     std::uint8_t heartbeat_entry = 0;
     for (const NetworkSlave& slave : network.slaves) {
         const std::uint8_t sub =

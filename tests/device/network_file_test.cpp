@@ -14,6 +14,7 @@ using testing::HasSubstr;
 
 constexpr const char* kTwoAxes = R"(bit_rate: 500000
 boot_time: 800ms
+sync_period: 2ms
 slaves:
   - node: 1
     port: internal
@@ -53,6 +54,8 @@ TEST(NetworkFile, ApplyWritesTheNetworkListAndTheAxisTable) {
     device.add_network(*parse_network_file(kTwoAxes, "net.yaml"));
     const canopen::ObjectDictionary& od = device.objects();
     EXPECT_EQ(od.get_as<std::uint32_t>(0x1F89, 0), 800u);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1006, 0), 2000u);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1005, 0), 0x4000'0080u);
     EXPECT_EQ(od.get_as<std::uint32_t>(0x1F81, kInternalSlaveSubIndex), 0x0Du);
     EXPECT_EQ(od.get_as<std::uint32_t>(0x1F85, kInternalSlaveSubIndex), 0xFBu);
     EXPECT_EQ(od.get_as<std::uint32_t>(0x1F81, 2), 0x05u); // optional
@@ -87,6 +90,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "net.yaml:2:1: error: unknown key 'speed' in 'network'"},
         BadFile{"BitRate", "bit_rate: 300000\n", "net.yaml:1:11: error: bit_rate must be"},
         BadFile{"BootTime", "boot_time: 100ms\n", "net.yaml:1:12: error: boot_time must be"},
+        BadFile{"SyncPeriod", "sync_period: 500us\n", "net.yaml:1:14: error: sync_period must be"},
         BadFile{"NotADuration", "boot_time: soon\n",
                 "net.yaml:1:12: error: boot_time must be a duration"},
         BadFile{"NodeRange", "slaves:\n  - node: 128\n",

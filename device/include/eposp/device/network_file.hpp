@@ -36,6 +36,8 @@ struct NetworkSlave {
 struct NetworkFile {
     std::uint32_t bit_rate = 1'000'000;                        ///< port 2, bit/s
     core::Duration boot_time = std::chrono::milliseconds(500); ///< 0x1F89
+    /// 0x1006 with the generate bit of 0x1005; none: no SYNC.
+    std::optional<core::Duration> sync_period;
     std::vector<NetworkSlave> slaves;
 };
 
@@ -47,7 +49,8 @@ core::Result<NetworkFile> load_network_file(const std::filesystem::path& path);
 
 /// Writes the network into the EPOS P's dictionary: per slave 0x1F81 (slave, boot slave,
 /// mandatory), 0x1F84 - 0x1F88, 0x1016 (port code, node-ID, time) and its axis' slave number
-/// 0x5280 + axis sub 1 (table 30); 0x1F89. Axes the file does not name keep their defaults.
+/// 0x5280 + axis sub 1 (table 30); 0x1F89; a SYNC period in 0x1006 and the generate bit of
+/// 0x1005. Axes the file does not name keep their defaults.
 void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od);
 
 } // namespace eposp::device
