@@ -9,6 +9,7 @@ namespace eposp::device {
 namespace {
 
 constexpr std::uint16_t kProducerHeartbeatIndex = 0x1017;
+constexpr std::uint16_t kRequestNmtIndex = 0x1F82;
 constexpr canopen::NodeId kInternalEposNodeId = 1;
 /// 10.16 - 10.19: the internal PDOs 0x1500 / 0x1900 ... are PDO numbers 257 ...
 constexpr std::size_t kInternalPdoNumber = 257;
@@ -53,6 +54,41 @@ manager::SlaveEntry slave_entry(const canopen::ObjectDictionary& od, std::uint8_
              canopen::encode(static_cast<std::uint16_t>(std::max(1, consumer_ms / 2)))});
     }
     return slave;
+}
+
+/// Table 27: the NMT state a read of 0x1F82 gives (0 unknown: no heartbeat heard).
+std::uint32_t request_nmt_value(std::optional<canopen::NmtState> state) {
+    if (!state) {
+        return 0x00;
+    }
+    switch (*state) {
+    case canopen::NmtState::Stopped:
+        return 0x04;
+    case canopen::NmtState::Operational:
+        return 0x05;
+    case canopen::NmtState::PreOperational:
+        return 0x7F;
+    default:
+        return 0x00; // a boot-up message: the state that follows is not known yet
+    }
+}
+
+/// Table 27: the NMT command a write of 0x1F82 asks for.
+std::optional<canopen::NmtCommand> requested_command(std::uint32_t value) {
+    switch (value) {
+    case 0x04:
+        return canopen::NmtCommand::Stop;
+    case 0x05:
+        return canopen::NmtCommand::Start;
+    case 0x06:
+        return canopen::NmtCommand::ResetNode;
+    case 0x07:
+        return canopen::NmtCommand::ResetCommunication;
+    case 0x7F:
+        return canopen::NmtCommand::EnterPreOperational;
+    default:
+        return std::nullopt;
+    }
 }
 
 } // namespace
@@ -104,6 +140,32 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
         pdo_.on_frame(frame);
     });
     port_.on_error_state([this](can::ErrorState state) { report_controller_state(state); });
+    bind_request_nmt();
+}
+
+// 10.24: sub-index n is node n of port 2, sub-index 128 the internal EPOS2 (node 1 of port 1).
+void NetworkPort::bind_request_nmt() {
+    const auto bind = [this](std::uint8_t sub_index, canopen::NodeId node) {
+        canopen::SubObject& entry = *od_.find(kRequestNmtIndex, sub_index);
+        entry.on_read = [this, node] {
+            return canopen::encode(request_nmt_value(heartbeat_.remote_state(node)));
+        };
+        entry.on_write = [this, node](std::span<const std::uint8_t> value) {
+            const auto command = requested_command(canopen::decode<std::uint32_t>(value));
+            if (!command) {
+                return canopen::AbortCode::InvalidValue;
+            }
+            nmt_.send(*command, node);
+            return canopen::AbortCode::None;
+        };
+    };
+    if (port_code_ == kInternalPort) {
+        bind(kInternalSlaveSubIndex, kInternalEposNodeId);
+        return;
+    }
+    for (std::uint8_t node = 1; node <= 127; ++node) {
+        bind(node, node);
+    }
 }
 
 // Table 1: the controller's state changes, node-ID 0 (the master's own port).

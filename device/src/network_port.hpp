@@ -32,9 +32,9 @@ inline constexpr std::uint16_t kCanBusOffError = 0x81FD;
 /// of manager::NetworkBoot on the dictionary's network list; the SYNC producer of 0x1005 -
 /// 0x1007 and the port's PDOs (port 1: 0x1500 / 0x1900 ..., port 2: 0x1400 / 0x1800 ...),
 /// which run once the port's network started: its slaves' TPDOs land in the dictionary (the
-/// axis table 0x5280 + n, the process image). Its errors, and the port's CAN
-/// errors (error passive 0x8120, bus-off 0x81FD, a lost frame 0x8110), go to the error history
-/// with the port code and the node-ID (table 4).
+/// axis table 0x5280 + n, the process image); and Request NMT 0x1F82 for the port's slaves. Its
+/// errors, and the port's CAN errors (error passive 0x8120, bus-off 0x81FD, a lost frame 0x8110),
+/// go to the error history with the port code and the node-ID (table 4).
 class NetworkPort {
 public:
     NetworkPort(core::EventLoop& loop, can::Port& port, canopen::ObjectDictionary& od,
@@ -52,6 +52,8 @@ public:
 
 private:
     void report_controller_state(can::ErrorState state);
+    /// 0x1F82 Request NMT for this port's slaves (table 27).
+    void bind_request_nmt();
     void report_pdo_error(std::uint16_t code);
     /// The state of the controller's own services on this port.
     void set_nmt_state(canopen::NmtState state);

@@ -274,5 +274,28 @@ TEST(EposP, SyncIsProducedOnBothPortsAsConfigured) {
     EXPECT_NEAR(static_cast<double>(external_syncs), 100, 1);
 }
 
+TEST(EposP, RequestNmtReadsTheSlavesStatesAndSendsCommands) {
+    EposP device;
+    assign_mandatory(device, kInternalSlaveSubIndex, kInternalPort, 1);
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1F82, kInternalSlaveSubIndex), 0x00u);
+    device.boot_networks();
+    device.loop().run_for(2s);
+    // Table 27: 0x05 operational (heartbeat active).
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1F82, kInternalSlaveSubIndex), 0x05u);
+
+    write_u32(device, 0x1F82, kInternalSlaveSubIndex, 0x04); // stop
+    device.loop().run_for(200ms);
+    EXPECT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::Stopped);
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1F82, kInternalSlaveSubIndex), 0x04u);
+    write_u32(device, 0x1F82, kInternalSlaveSubIndex, 0x7F); // enter pre-operational
+    device.loop().run_for(200ms);
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1F82, kInternalSlaveSubIndex), 0x7Fu);
+    EXPECT_EQ(device.objects().write(0x1F82, kInternalSlaveSubIndex,
+                                     canopen::encode(std::uint32_t{0x08})),
+              canopen::AbortCode::InvalidValue);
+    // A node on port 2 nobody heard of: state unknown.
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1F82, 5), 0x00u);
+}
+
 } // namespace
 } // namespace eposp::device
