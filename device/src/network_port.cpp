@@ -113,9 +113,9 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
                          std::uint8_t port_code)
     : port_(port), od_(od), port_code_(port_code), sdo_(loop, port), nmt_(port),
       heartbeat_(loop, od, {}, port_code), sync_producer_(loop, port, od),
-      sync_consumer_(loop, od, [this](std::uint16_t code) { report_pdo_error(code); }),
+      sync_consumer_(loop, od, [this](std::uint16_t code) { record_port_error(code); }),
       pdo_(
-          loop, port, od, [this](std::uint16_t code) { report_pdo_error(code); },
+          loop, port, od, [this](std::uint16_t code) { record_port_error(code); },
           port_code == kInternalPort ? kInternalPdoNumber : 1),
       network_(loop, {sdo_, nmt_, heartbeat_}, [this](const manager::ManagerError& error) {
           record_error(od_, {.code = error.code,
@@ -171,11 +171,9 @@ void NetworkPort::bind_request_nmt() {
 // Table 1: the controller's state changes, node-ID 0 (the master's own port).
 void NetworkPort::report_controller_state(can::ErrorState state) {
     if (state == can::ErrorState::Passive) {
-        record_error(od_,
-                     {.code = kCanPassiveError, .port = port_code_, .node = 0, .warning = false});
+        record_port_error(kCanPassiveError);
     } else if (state == can::ErrorState::BusOff) {
-        record_error(od_,
-                     {.code = kCanBusOffError, .port = port_code_, .node = 0, .warning = false});
+        record_port_error(kCanBusOffError);
     }
 }
 
@@ -185,13 +183,14 @@ void NetworkPort::set_nmt_state(canopen::NmtState state) {
     pdo_.set_nmt_state(state);
 }
 
-// The emergencies of the controller's own PDO and SYNC services (a short PDO: 0x8210).
-void NetworkPort::report_pdo_error(std::uint16_t code) {
+// An error of the port itself; also the emergencies of the controller's own PDO and SYNC
+// services (a short PDO: 0x8210).
+void NetworkPort::record_port_error(std::uint16_t code) {
     record_error(od_, {.code = code, .port = port_code_, .node = 0, .warning = false});
 }
 
 void NetworkPort::report_lost_frame() {
-    record_error(od_, {.code = kCanOverrunError, .port = port_code_, .node = 0, .warning = false});
+    record_port_error(kCanOverrunError);
 }
 
 NetworkPort::~NetworkPort() {

@@ -54,7 +54,8 @@ private:
     void report_controller_state(can::ErrorState state);
     /// 0x1F82 Request NMT for this port's slaves (table 27).
     void bind_request_nmt();
-    void report_pdo_error(std::uint16_t code);
+    /// An error of the port itself (node-ID 0) in the history.
+    void record_port_error(std::uint16_t code);
     /// The state of the controller's own services on this port.
     void set_nmt_state(canopen::NmtState state);
 

@@ -59,12 +59,10 @@ void NetworkBoot::start(NetworkList list, std::function<void(const BootReport& r
     initial_boot_reported_ = false;
     for (const SlaveEntry& slave : list_.slaves) {
         if (slave.mandatory() && !slave.assigned()) {
-            errors_(
-                {.node = slave.node_id, .code = static_cast<std::uint16_t>(BootError::NotSlave)});
             SlaveBootResult result;
             result.node = slave.node_id;
             result.error = BootError::NotSlave;
-            report_.slaves.push_back(result);
+            record(result);
         }
     }
     // CiA 302-2: the slaves start from a known state, and their boot-up messages show who is
@@ -85,11 +83,26 @@ void NetworkBoot::boot_all() {
         }
     }
     if (boots_.empty()) {
-        initial_boot_reported_ = true;
-        start_network_when_ready();
-        if (done_) {
-            done_(report_);
-        }
+        finish_initial_boot();
+    }
+}
+
+void NetworkBoot::finish_initial_boot() {
+    initial_boot_reported_ = true;
+    start_network_when_ready();
+    if (done_) {
+        done_(report_);
+    }
+}
+
+void NetworkBoot::record(const SlaveBootResult& result) {
+    report_.slaves.push_back(result);
+    booted_[result.node] = !result.error;
+    if (result.error) {
+        const SlaveEntry* slave = entry(result.node);
+        errors_({.node = result.node,
+                 .code = static_cast<std::uint16_t>(*result.error),
+                 .warning = slave != nullptr && !slave->mandatory()});
     }
 }
 
@@ -116,22 +129,10 @@ void NetworkBoot::on_booted(const SlaveBootResult& result) {
         boots_.erase(found);
         cleanup_timer_ = core::ScopedTimer(loop_, loop_.post([this] { finished_boots_.clear(); }));
     }
-    report_.slaves.push_back(result);
-    const SlaveEntry* slave = entry(result.node);
-    booted_[result.node] = !result.error;
-    if (result.error) {
-        errors_({.node = result.node,
-                 .code = static_cast<std::uint16_t>(*result.error),
-                 .warning = slave != nullptr && !slave->mandatory()});
-    }
+    record(result);
     if (!initial_boot_reported_) {
-        if (!boots_.empty()) {
-            return;
-        }
-        initial_boot_reported_ = true;
-        start_network_when_ready();
-        if (done_) {
-            done_(report_);
+        if (boots_.empty()) {
+            finish_initial_boot();
         }
         return;
     }

@@ -89,6 +89,10 @@ private:
     void boot_all();
     void boot(const SlaveEntry& slave);
     void on_booted(const SlaveBootResult& result);
+    /// A slave's boot ended: into the report, and its error (a warning for an optional one).
+    void record(const SlaveBootResult& result);
+    /// Every slave of the initial boot has ended: the network starts if it may, `done` is told.
+    void finish_initial_boot();
     void on_heartbeat(canopen::NodeId node, canopen::NmtState state);
     void on_heartbeat_lost(canopen::NodeId node);
     void start_network_when_ready();
