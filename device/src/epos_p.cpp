@@ -1,5 +1,6 @@
 #include "eposp/device/epos_p.hpp"
 
+#include "eposp/device/axis_process_data.hpp"
 #include "network_port.hpp"
 #include "plc_objects.hpp"
 
@@ -53,12 +54,31 @@ EposP::EposP(EposPConfig config)
             }
         });
     }
+    internal_network_->on_sync([this] { follow_sync(); });
     internal_drive_->start();
+}
+
+void EposP::follow_sync() {
+    const canopen::ObjectDictionary& od = dictionary_.objects();
+    const auto period = std::chrono::microseconds(od.get_as<std::uint32_t>(0x1006, 0));
+    const auto window = std::chrono::microseconds(od.get_as<std::uint32_t>(0x1007, 0));
+    const core::Duration delay =
+        window.count() > 0 && window < period ? core::Duration(window) : core::Duration(period) / 2;
+    plc_.runtime().align_cycles(loop_.now() + delay, period);
+}
+
+NetworkPort& EposP::network_port(std::uint8_t port) {
+    return *(port == kInternalPort ? internal_network_ : external_network_);
 }
 
 void EposP::add_network(const NetworkFile& network) {
     apply_network(network, dictionary_.objects());
     for (const NetworkSlave& slave : network.slaves) {
+        if (slave.axis) {
+            network_port(slave.port)
+                .set_slave_configuration(slave.node_id,
+                                         axis_slave_configuration(slave.node_id, *slave.axis));
+        }
         if (slave.port != kExternalPort || slave.kind != NetworkSlave::Kind::Epos2) {
             continue;
         }

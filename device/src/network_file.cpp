@@ -1,5 +1,7 @@
 #include "eposp/device/network_file.hpp"
 
+#include "eposp/device/axis_process_data.hpp"
+
 #include "eposp/canopen/device_info.hpp"
 #include "eposp/canopen/heartbeat_consumer.hpp"
 #include "eposp/canopen/value_codec.hpp"
@@ -190,6 +192,8 @@ void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od) {
         od.set_as<std::uint32_t>(0x1005, 0, od.get_as<std::uint32_t>(0x1005, 0) | kGenerate);
     }
     std::uint8_t heartbeat_entry = 0;
+    // Each port's axes take its PDOs in the order of the file (257: the first internal one).
+    std::size_t next_pdo[] = {0, kFirstInternalPdo, 1};
     for (const NetworkSlave& slave : network.slaves) {
         const std::uint8_t sub =
             slave.port == kInternalPort ? kInternalSlaveSubIndex : slave.node_id;
@@ -211,6 +215,7 @@ void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od) {
         if (slave.axis) {
             od.set_as<std::uint8_t>(static_cast<std::uint16_t>(kAxisIndex + *slave.axis), 1,
                                     slave.port == kInternalPort ? kInternalSlave : slave.node_id);
+            configure_axis_pdos(od, next_pdo[slave.port]++, slave.node_id, *slave.axis);
         }
     }
 }

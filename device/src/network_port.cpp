@@ -11,8 +11,6 @@ namespace {
 constexpr std::uint16_t kProducerHeartbeatIndex = 0x1017;
 constexpr std::uint16_t kRequestNmtIndex = 0x1F82;
 constexpr canopen::NodeId kInternalEposNodeId = 1;
-/// 10.16 - 10.19: the internal PDOs 0x1500 / 0x1900 ... are PDO numbers 257 ...
-constexpr std::size_t kInternalPdoNumber = 257;
 
 /// The time 0x1016 gives the producer `node` of `port`, or 0.
 std::uint16_t consumer_time_ms(const canopen::ObjectDictionary& od, std::uint8_t port,
@@ -93,17 +91,24 @@ std::optional<canopen::NmtCommand> requested_command(std::uint32_t value) {
 
 } // namespace
 
-manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint8_t port) {
+manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint8_t port,
+                                  const SlaveConfigurations& configurations) {
     manager::NetworkList list;
     list.nmt_startup = od.get_as<std::uint32_t>(0x1F80, 0);
     list.boot_time = std::chrono::milliseconds(od.get_as<std::uint32_t>(0x1F89, 0));
     if (port == kInternalPort) {
         list.slaves.push_back(slave_entry(od, port, kInternalSlaveSubIndex, kInternalEposNodeId));
-        return list;
+    } else {
+        for (std::uint8_t node = 1; node <= 127; ++node) {
+            if (od.get_as<std::uint32_t>(0x1F81, node) != 0) {
+                list.slaves.push_back(slave_entry(od, port, node, node));
+            }
+        }
     }
-    for (std::uint8_t node = 1; node <= 127; ++node) {
-        if (od.get_as<std::uint32_t>(0x1F81, node) != 0) {
-            list.slaves.push_back(slave_entry(od, port, node, node));
+    for (manager::SlaveEntry& slave : list.slaves) {
+        if (const auto found = configurations.find(slave.node_id); found != configurations.end()) {
+            slave.configuration.insert(slave.configuration.end(), found->second.begin(),
+                                       found->second.end());
         }
     }
     return list;
@@ -116,7 +121,7 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
       sync_consumer_(loop, od, [this](std::uint16_t code) { record_port_error(code); }),
       pdo_(
           loop, port, od, [this](std::uint16_t code) { record_port_error(code); },
-          port_code == kInternalPort ? kInternalPdoNumber : 1),
+          port_code == kInternalPort ? kFirstInternalPdo : 1),
       network_(loop, {sdo_, nmt_, heartbeat_}, [this](const manager::ManagerError& error) {
           record_error(od_, {.code = error.code,
                              .port = port_code_,
@@ -128,8 +133,12 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
     set_nmt_state(canopen::NmtState::PreOperational);
     // The controller does not hear its own SYNCs: they reach its PDOs this way.
     sync_producer_.on_sent([this](const can::Frame& frame) { sync_consumer_.on_frame(frame); });
-    sync_consumer_.on_sync(
-        [this](const canopen::SyncEvent& sync) { pdo_.on_sync(sync.counter.value_or(0)); });
+    sync_consumer_.on_sync([this](const canopen::SyncEvent& sync) {
+        pdo_.on_sync(sync.counter.value_or(0));
+        if (sync_listener_) {
+            sync_listener_();
+        }
+    });
     sync_consumer_.on_window_closed([this] { pdo_.on_window_closed(); });
     // 8.1: the boot-up comes before the controller's own switch to operational.
     network_.on_network_started([this] { set_nmt_state(canopen::NmtState::Operational); });
@@ -200,7 +209,7 @@ NetworkPort::~NetworkPort() {
 
 void NetworkPort::boot(std::function<void(const manager::BootReport& report)> done) {
     set_nmt_state(canopen::NmtState::PreOperational);
-    network_.start(network_list(od_, port_code_), std::move(done));
+    network_.start(network_list(od_, port_code_, configurations_), std::move(done));
 }
 
 } // namespace eposp::device

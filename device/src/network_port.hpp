@@ -14,13 +14,18 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <vector>
 
 namespace eposp::device {
 
 /// The network list of one port as the dictionary holds it (10.11, 10.20 - 10.30): on port 2
 /// the slaves of sub-indices 1..127, on port 1 the internal EPOS2 (sub-index 128, node 1). Each
-/// slave is configured to produce its heartbeat at half the consumer time 0x1016 watches it with.
-manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint8_t port);
+/// slave is configured to produce its heartbeat at half the consumer time 0x1016 watches it with,
+/// then as `configurations` says for its node-ID (the axis PDO set-up of a network file).
+using SlaveConfigurations = std::map<canopen::NodeId, std::vector<manager::ConfigurationWrite>>;
+manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint8_t port,
+                                  const SlaveConfigurations& configurations = {});
 
 /// Table 1: the CAN errors of a port.
 inline constexpr std::uint16_t kCanOverrunError = 0x8110;
@@ -47,6 +52,13 @@ public:
     /// slave's boot has ended.
     void boot(std::function<void(const manager::BootReport& report)> done = {});
     const manager::NetworkBoot& network() const { return network_; }
+    /// What the boot writes into slave `node` after its checks passed (a concise DCF).
+    void set_slave_configuration(canopen::NodeId node,
+                                 std::vector<manager::ConfigurationWrite> writes) {
+        configurations_[node] = std::move(writes);
+    }
+    /// Told of each SYNC the port sends, after its synchronous PDOs have been handled.
+    void on_sync(std::function<void()> listener) { sync_listener_ = std::move(listener); }
     /// The port's controller lost a received frame (its queue was full).
     void report_lost_frame();
 
@@ -69,6 +81,8 @@ private:
     canopen::SyncConsumer sync_consumer_;
     canopen::PdoService pdo_;
     manager::NetworkBoot network_;
+    SlaveConfigurations configurations_;
+    std::function<void()> sync_listener_;
 };
 
 } // namespace eposp::device

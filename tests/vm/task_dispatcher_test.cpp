@@ -159,6 +159,32 @@ TEST(TaskDispatcher, CycleNIsDueAtStartPlusNIntervalsWithoutDrift) {
     EXPECT_EQ(d.dispatcher->statistics(0).jitter_max, 0ns);
 }
 
+TEST(TaskDispatcher, AlignMovesTasksWhoseIntervalIsAMultipleOfTheClockOntoItsGrid) {
+    // A 2 ms and a 1 ms task, and a 1.5 ms one that no 1 ms clock can carry.
+    Dispatched d({{"Two", TaskKind::Cyclic, 2'000'000, 0, 100},
+                  {"One", TaskKind::Cyclic, 1'000'000, 1, 100},
+                  {"Odd", TaskKind::Cyclic, 1'500'000, 2, 100}});
+    d.dispatcher->start();
+    d.loop.run_until(core::TimePoint{1200us});
+    d.timeline.events.clear();
+    // A clock tick at 1.2 ms whose cycle should run 0.5 ms after it, at 1.7 ms.
+    d.dispatcher->align(core::TimePoint{1700us}, 1ms);
+    d.loop.run_until(core::TimePoint{3900us});
+    EXPECT_EQ(d.timeline.events,
+              (std::vector<std::string>{"1500 begin Odd", "1600 end Odd", "1700 begin Two",
+                                        "1800 end Two", "1800 begin One", "1900 end One",
+                                        "2700 begin One", "2800 end One", "3000 begin Odd",
+                                        "3100 end Odd", "3700 begin Two", "3800 end Two",
+                                        "3800 begin One", "3900 end One"}));
+    // Aligning again at the next ticks changes nothing: the tasks are on the grid.
+    d.dispatcher->align(core::TimePoint{4700us}, 1ms);
+    d.dispatcher->align(core::TimePoint{3700us}, 1ms);
+    d.timeline.events.clear();
+    d.loop.run_until(core::TimePoint{4800us});
+    EXPECT_EQ(d.timeline.events,
+              (std::vector<std::string>{"4500 begin Odd", "4600 end Odd", "4700 begin One", "4800 end One"}));
+}
+
 TEST(TaskDispatcher, CyclicTaskStillRunningAtItsNextReleaseIsATimerTaskError) {
     // 1.5 ms of work every 1 ms: the releases at 1 and 3 ms find it busy and are skipped.
     Dispatched d({{"Slow", TaskKind::Cyclic, 1'000'000, 0, 1500}});

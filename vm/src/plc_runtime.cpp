@@ -153,6 +153,12 @@ void PlcRuntime::raise_event(std::size_t task) {
     }
 }
 
+void PlcRuntime::align_cycles(core::TimePoint anchor, core::Duration period) {
+    if (state() == ProgramState::Running) {
+        dispatcher_->align(anchor, period);
+    }
+}
+
 void PlcRuntime::set_watchdog(std::size_t task, std::uint64_t instructions) {
     dispatcher_->set_watchdog(task, instructions);
 }

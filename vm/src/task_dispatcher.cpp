@@ -74,6 +74,33 @@ void TaskDispatcher::release_on_rising_edges() {
     }
 }
 
+void TaskDispatcher::align(core::TimePoint anchor, core::Duration period) {
+    if (!running_ || period <= core::Duration::zero()) {
+        return;
+    }
+    const core::TimePoint now = loop_.now();
+    bool moved = false;
+    for (Slot& slot : slots_) {
+        const core::Duration interval(slot.spec->interval_ns);
+        if (!releases_cyclically(slot) || interval % period != core::Duration::zero()) {
+            continue;
+        }
+        if ((slot.next_release - anchor) % period == core::Duration::zero()) {
+            continue; // in step already (a task of several periods keeps its phase)
+        }
+        // The first tick of the grid at or after now (the anchor may lie either side of it).
+        core::Duration offset = (anchor - now) % period;
+        if (offset < core::Duration::zero()) {
+            offset += period;
+        }
+        slot.next_release = now + offset;
+        moved = true;
+    }
+    if (moved) {
+        arm_wake_up();
+    }
+}
+
 void TaskDispatcher::set_watchdog(std::size_t task, std::uint64_t instructions) {
     slots_.at(task).watchdog = instructions;
 }

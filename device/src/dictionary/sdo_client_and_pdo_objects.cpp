@@ -14,7 +14,6 @@ using namespace canopen::od_types;
 constexpr std::uint32_t kPdoOff = 0xC000'0000; ///< not valid, no RTR (tables 13, 18)
 constexpr std::size_t kExternalPdos = 32;
 constexpr std::size_t kInternalPdos = 4;
-constexpr std::size_t kInternalPdoNumber = 0x1500 - 0x1400 + 1; ///< PDO 257: 0x1500, 0x1900
 
 // 10.15: 0x1280 is the client of the internal EPOS2, 0x1281 + n - 1 that of node n on port 2.
 // The server's node-ID is fixed; the COB-IDs follow it.
@@ -58,13 +57,13 @@ void add_sdo_client_and_pdo_objects(canopen::ObjectDictionary& od) {
     canopen::add_pdo_objects(od, epos_p_pdos(1, kExternalPdos));
     // The first internal RPDO takes the internal EPOS2's TPDO 1 (its statusword, 0x181) into
     // axis 0's statusword (10.16, 10.17: 0x1500 = 0x181, 0x1700 = 0x52800210).
-    canopen::PdoObjectsConfig internal = epos_p_pdos(kInternalPdoNumber, kInternalPdos);
+    canopen::PdoObjectsConfig internal = epos_p_pdos(kFirstInternalPdo, kInternalPdos);
     internal.rpdos[0].cob_id = 0x181;
     internal.rpdos[0].mapping = {0x5280'0210};
     canopen::add_pdo_objects(od, internal);
     // The internal PDOs are numbered 1..4 of their own port (10.16 - 10.19).
     for (std::size_t n = 1; n <= kInternalPdos; ++n) {
-        const std::size_t number = kInternalPdoNumber + n - 1;
+        const std::size_t number = kFirstInternalPdo + n - 1;
         for (const auto direction :
              {canopen::PdoDirection::Receive, canopen::PdoDirection::Transmit}) {
             const std::string pdo = fmt::format(

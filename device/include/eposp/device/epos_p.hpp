@@ -39,6 +39,11 @@ struct EposPConfig {
 /// plc_objects.hpp). Powered up by the constructor: the internal EPOS2 boots at once; a program
 /// runs once it is loaded into plc() and started (by 0x5F51 or plc().runtime().start()).
 ///
+/// While the EPOS P produces SYNC, each cyclic task whose interval is a multiple of the SYNC
+/// period runs in step with it: the synchronous window 0x1007 after the SYNC (half a period
+/// without a window), once the slaves' synchronous TPDOs of that SYNC are in. Its outputs go
+/// out with the synchronous TPDOs of the next SYNC.
+///
 /// Neither copyable nor movable: the drive, the ports and the PLC refer to the loop.
 class EposP {
 public:
@@ -79,6 +84,11 @@ public:
     can::Port& external_port() { return *external_port_; }
 
 private:
+    NetworkPort& network_port(std::uint8_t port);
+    /// DESIGN.md, "One communication cycle": at each SYNC, puts the PLC's cyclic tasks a
+    /// fixed delay after it, when the slaves' synchronous TPDOs are in.
+    void follow_sync();
+
     core::EventLoop loop_;
     can::VirtualBus internal_bus_;
     std::unique_ptr<can::VirtualPort> internal_port_;

@@ -6,6 +6,7 @@
 #include "eposp/canopen/parameter_store.hpp"
 #include "eposp/canopen/store_restore_objects.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -39,6 +40,10 @@ enum class ProgramControl : std::uint16_t {
 /// Tables 4 and 10: the port codes of the error history and of 0x1016.
 inline constexpr std::uint8_t kInternalPort = 1;
 inline constexpr std::uint8_t kExternalPort = 2;
+
+/// 10.16 - 10.19: the internal PDOs (0x1500 / 0x1900 ...) follow the 256 numbers of CiA 301's
+/// PDO objects: the first is PDO number 257 (canopen::pdo_communication_index).
+inline constexpr std::size_t kFirstInternalPdo = 257;
 
 /// 10.20 - 10.29: the network list's sub-index for a slave: 1..127 the node-IDs on port 2, 128
 /// the internal EPOS2.

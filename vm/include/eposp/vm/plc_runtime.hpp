@@ -83,6 +83,9 @@ public:
     /// The device's event for an event task (see TaskDispatcher::raise_event); ignored while
     /// the program is not running.
     void raise_event(std::size_t task);
+    /// Runs the cyclic tasks whose interval is a multiple of `period` in step with a clock of
+    /// that period (TaskDispatcher::align); ignored while the program is not running.
+    void align_cycles(core::TimePoint anchor, core::Duration period);
     /// The watchdog of one task, instead of RuntimeConfig::watchdog_instructions (kept until
     /// the next load).
     void set_watchdog(std::size_t task, std::uint64_t instructions);

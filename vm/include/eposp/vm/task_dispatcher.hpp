@@ -64,6 +64,13 @@ public:
     /// runs what they release.
     void check_event_inputs();
 
+    /// Puts the next release of every cyclic task whose interval is a whole multiple of
+    /// `period` on the grid anchor + k * period (the first point at or after now): from then on
+    /// the task runs in step with a clock of that period (the SYNC), a fixed time after its
+    /// ticks. A task already on the grid is left alone, so the device may call this at every
+    /// tick.
+    void align(core::TimePoint anchor, core::Duration period);
+
     /// Instructions one cycle of the task may execute (all its programs together).
     void set_watchdog(std::size_t task, std::uint64_t instructions);
 
