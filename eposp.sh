@@ -78,7 +78,7 @@ setup) setup ;;
 build) setup && build build ;;
 demo)
     setup && build build
-    examples/bus-demo/run.sh build/device/eposp
+    examples/two-axis/run.sh build/device/eposp
     examples/plc-basics/run.sh build/device/eposp
     ;;
 test) setup && build build && run_tests build ;;

@@ -92,6 +92,24 @@ void EposP::add_network(const NetworkFile& network) {
     }
 }
 
+std::vector<TracedAxis> EposP::simulated_axes() const {
+    std::vector<TracedAxis> axes;
+    for (std::uint8_t axis = 0; axis < kAxisCount; ++axis) {
+        const auto slave =
+            dictionary_.objects().get_as<std::uint8_t>(static_cast<std::uint16_t>(kAxisIndex + axis), 1);
+        if (slave == kInternalSlave) {
+            axes.push_back({axis, internal_drive_.get()});
+            continue;
+        }
+        for (const auto& drive : slaves_) {
+            if (drive->node().node_id() == slave) {
+                axes.push_back({axis, drive.get()});
+            }
+        }
+    }
+    return axes;
+}
+
 std::optional<core::Error> EposP::start_program(vm::StartMode mode) {
     if (auto error = plc_.runtime().start(mode)) {
         return error;

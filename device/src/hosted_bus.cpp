@@ -1,6 +1,5 @@
 #include "eposp/device/hosted_bus.hpp"
 
-#include "eposp/can/bus_recorder.hpp"
 #include "eposp/can/candump_log_writer.hpp"
 #include "eposp/can/pcap_writer.hpp"
 
@@ -46,34 +45,11 @@ void print_port(const std::string_view name, const can::PortStatistics& port) {
 
 } // namespace
 
-// The traces a run writes, each recording the bus until the run ends.
-class HostedBus::Recording {
-public:
-    Recording(can::VirtualBus& bus, can::TraceClock clock) : bus_(bus), clock_(clock) {}
-
-    template <typename Writer>
-    std::optional<std::string> add(const std::string& path) {
-        auto output = can::TraceOutput::create(path);
-        if (!output) {
-            return output.error();
-        }
-        sinks_.push_back(std::make_unique<Writer>(std::move(*output)));
-        recorders_.push_back(std::make_unique<can::BusRecorder>(bus_, *sinks_.back(), clock_));
-        return std::nullopt;
-    }
-
-private:
-    can::VirtualBus& bus_;
-    can::TraceClock clock_;
-    std::vector<std::unique_ptr<can::TraceSink>> sinks_;
-    std::vector<std::unique_ptr<can::BusRecorder>> recorders_;
-};
-
 HostedBus::HostedBus(const HostedBusOptions& options)
     : options_(options), loop_(options.virtual_time ? core::Pace::Virtual : core::Pace::RealTime),
       bus_(loop_, can::BusConfig{.name = options.name, .bitrate = options.bitrate}),
       clock_(trace_clock(loop_, options.virtual_time)),
-      recording_(std::make_unique<Recording>(bus_, clock_)) {}
+      traces_(std::make_unique<TraceFiles>(clock_)) {}
 
 HostedBus::~HostedBus() = default;
 
@@ -90,12 +66,12 @@ core::Result<std::unique_ptr<HostedBus>> HostedBus::open(const HostedBusOptions&
 
 std::optional<std::string> HostedBus::open_outside_world() {
     if (options_.log) {
-        if (auto problem = recording_->add<can::CandumpLogWriter>(*options_.log)) {
+        if (auto problem = traces_->add<can::CandumpLogWriter>(*options_.log, {&bus_})) {
             return problem;
         }
     }
     if (options_.pcap) {
-        if (auto problem = recording_->add<can::PcapWriter>(*options_.pcap)) {
+        if (auto problem = traces_->add<can::PcapWriter>(*options_.pcap, {&bus_})) {
             return problem;
         }
     }

@@ -11,9 +11,9 @@ mkdir -p "$out"
 
 section() { printf '\n\033[1m%s\033[0m\n' "$*"; }
 
-section "3. A Structured Text program compiled to a program image"
+section "The PLC alone: a Structured Text program compiled to a program image"
 "$eposp" build "$here/blinker.st" -o "$out/blinker.epx"
 "$eposp" dump "$out/blinker.epx" | sed -n '/^tasks:/,/^$/p'
 
-section "4. The program's task run for 2 s of virtual time"
+section "Its task run for 2 s of virtual time"
 "$eposp" run "$out/blinker.epx" --for 2s --watch Cell.flashes --watch Cell.lamp

@@ -1,15 +1,21 @@
-// `eposp run app.epx|FILES… [--for 10s] [--network net.yaml] [--watch PATH]…
+// `eposp run app.epx|FILES… [--for 10s] [--network net.yaml] [--trace axes.csv]
+// [--can-log bus.log] [--pcap bus.pcap] [--watch PATH]…
 // [--ns-per-instruction N] [--retain FILE --start warm] [--engine interpreter]`: runs a program on
 // the EPOS P in virtual time (with the network of the file: slaves booted at the start) and
 // prints the boot report, each task's statistics, the errors raised and the watched variables.
 #include "commands.hpp"
+#include "eposp/can/candump_log_writer.hpp"
+#include "eposp/can/pcap_writer.hpp"
+#include "eposp/device/axis_trace.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/network_file.hpp"
+#include "eposp/device/trace_files.hpp"
 #include "eposp/manager/boot_error.hpp"
 #include "options.hpp"
 #include "program_input.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 #include <optional>
@@ -30,7 +36,81 @@ struct RunOptions {
     std::string start = "cold";
     vm::Engine engine = vm::default_engine();
     std::optional<std::string> network;
+    std::optional<std::string> trace;
+    std::optional<std::string> can_log;
+    std::optional<std::string> pcap;
 };
+
+constexpr core::Duration kTracePeriodWithoutSync = std::chrono::milliseconds(1);
+
+// A file the run writes must not be one it reads: a typo would destroy the program or the network.
+std::optional<std::string> overwrites_an_input(const RunOptions& options) {
+    std::vector<std::string> inputs = options.paths;
+    if (options.network) {
+        inputs.push_back(*options.network);
+    }
+    if (options.retain_file) {
+        inputs.push_back(*options.retain_file);
+    }
+    const std::pair<const char*, const std::optional<std::string>*> outputs[] = {
+        {"--trace", &options.trace}, {"--can-log", &options.can_log}, {"--pcap", &options.pcap}};
+    std::vector<std::string> written;
+    for (const auto& [option, path] : outputs) {
+        if (!*path) {
+            continue;
+        }
+        for (const std::string& input : inputs) {
+            std::error_code error;
+            if (std::filesystem::equivalent(**path, input, error)) {
+                return fmt::format("{} {} would overwrite the input {}", option, **path, input);
+            }
+        }
+        for (const std::string& other : written) {
+            std::error_code error;
+            if (other == **path || std::filesystem::equivalent(**path, other, error)) {
+                return fmt::format("{} {}: that file is written twice", option, **path);
+            }
+        }
+        written.push_back(**path);
+    }
+    return std::nullopt;
+}
+
+// The traces the options ask for: the axes of the simulated drives, both buses in the candump
+// log, the CAN bus (port 2) in the pcap.
+struct RunTraces {
+    TraceFiles buses;
+    std::unique_ptr<AxisTrace> axes;
+};
+
+core::Result<std::unique_ptr<RunTraces>> open_traces(const RunOptions& options, EposP& device,
+                                                     const std::optional<NetworkFile>& network) {
+    auto traces = std::make_unique<RunTraces>();
+    if (options.can_log) {
+        if (auto error = traces->buses.add<can::CandumpLogWriter>(
+                *options.can_log, {&device.internal_bus(), &device.external_bus()})) {
+            return core::Error{fmt::format("--can-log: {}", *error)};
+        }
+    }
+    if (options.pcap) {
+        if (auto error =
+                traces->buses.add<can::PcapWriter>(*options.pcap, {&device.external_bus()})) {
+            return core::Error{fmt::format("--pcap: {}", *error)};
+        }
+    }
+    if (options.trace) {
+        auto output = can::TraceOutput::create(*options.trace);
+        if (!output) {
+            return core::Error{fmt::format("--trace: {}", output.error())};
+        }
+        const core::Duration period = network && network->sync_period
+                                          ? *network->sync_period
+                                          : kTracePeriodWithoutSync;
+        traces->axes = std::make_unique<AxisTrace>(device.loop(), std::move(*output),
+                                                   device.simulated_axes(), period);
+    }
+    return traces;
+}
 
 std::string statistics_line(const vm::TaskStatistics& s, std::uint64_t ns_per_instruction) {
     // Without a cost model every cycle takes no time: execution times, jitter and overruns
@@ -130,6 +210,9 @@ void print_boot_report(const EposP& device, const NetworkFile& network) {
 }
 
 int run_program(const RunOptions& options) {
+    if (auto problem = overwrites_an_input(options)) {
+        return report_user_error(kCommand, *problem);
+    }
     auto image = program_image(options.paths);
     if (!image) {
         return report_user_error(kCommand, image.error());
@@ -168,12 +251,19 @@ int run_program(const RunOptions& options) {
             return report_user_error(kCommand, fmt::format("--watch {}: {}", path, value.error()));
         }
     }
+    auto traces = open_traces(options, *device, network);
+    if (!traces) {
+        return report_user_error(kCommand, traces.error());
+    }
     if (const auto error = device->start_program(*start_mode(options.start))) {
         return report_user_error(kCommand, error->message);
     }
     const core::Duration duration = options.duration.value_or(kDefaultDuration);
     device->loop().run_until(device->loop().now() + duration);
     plc.runtime().stop(); // saves the RETAIN variables
+    if ((*traces)->axes && !(*traces)->axes->good()) {
+        return report_user_error(kCommand, fmt::format("--trace {}: write failed", *options.trace));
+    }
 
     fmt::print("ran {} of virtual time\n", core::format_duration(duration));
     if (network) {
@@ -219,6 +309,12 @@ void add_run_command(CLI::App& app, int& exit_code) {
         ->capture_default_str();
     command->add_option("--network", options->network,
                         "The CANopen network (YAML, docs/network.md): slaves, checks, axes");
+    command->add_option("--trace", options->trace,
+                        "Write a CSV of the simulated axes to FILE (docs/eposp.md, \"Axis trace\")");
+    command->add_option("--can-log", options->can_log,
+                        "Record both CAN buses as a candump -L log to FILE");
+    command->add_option("--pcap", options->pcap,
+                        "Record the CAN bus of port 2 as a pcap (LINKTYPE_CAN_SOCKETCAN) to FILE");
     add_engine_option(*command, options->engine);
     command->callback([options, &exit_code] { exit_code = run_program(*options); });
 }

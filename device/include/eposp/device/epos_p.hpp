@@ -2,6 +2,7 @@
 
 #include "eposp/can/virtual_bus.hpp"
 #include "eposp/core/event_loop.hpp"
+#include "eposp/device/axis_trace.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/device/network_file.hpp"
 #include "eposp/device/plc.hpp"
@@ -64,6 +65,10 @@ public:
     const std::vector<std::unique_ptr<drives::epos2::Epos2Drive>>& simulated_slaves() const {
         return slaves_;
     }
+
+    /// The axes of the axis table (0x5280 + n sub 1) that a drive in this process serves: the
+    /// internal EPOS2 and the simulated slaves of add_network(), in axis order.
+    std::vector<TracedAxis> simulated_axes() const;
 
     /// Starts the loaded program as 0x5F51 does (1 cold, 2 warm, 3 hot); a cold or warm start
     /// boots the networks too (8.1). The error says why it cannot start.

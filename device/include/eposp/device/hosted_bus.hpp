@@ -8,6 +8,7 @@
 #include "eposp/core/event_loop.hpp"
 #include "eposp/core/result.hpp"
 #include "eposp/device/run_control.hpp"
+#include "eposp/device/trace_files.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -59,8 +60,6 @@ public:
     void print_summary() const;
 
 private:
-    class Recording;
-
     explicit HostedBus(const HostedBusOptions& options);
     std::optional<std::string> open_outside_world();
 
@@ -68,7 +67,7 @@ private:
     core::EventLoop loop_;
     can::VirtualBus bus_;
     can::TraceClock clock_;
-    std::unique_ptr<Recording> recording_;
+    std::unique_ptr<TraceFiles> traces_;
     std::vector<std::unique_ptr<can::VirtualPort>> own_ports_;
     std::unique_ptr<can::io::SocketcandServer> server_;
     std::unique_ptr<can::io::SocketCanPort> socketcan_;

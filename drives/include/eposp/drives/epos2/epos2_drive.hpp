@@ -63,6 +63,7 @@ public:
 
     canopen::Node& node() { return node_; }
     canopen::ObjectDictionary& objects() { return dictionary_.objects(); }
+    const canopen::ObjectDictionary& objects() const { return dictionary_.objects(); }
     motion::DriveState state() const { return device_control_.state(); }
     const plant::ServoAxis& axis() const { return axis_; }
 
