@@ -1,10 +1,9 @@
 #include "eposp/device/network_file.hpp"
 
-#include "eposp/device/axis_process_data.hpp"
-
 #include "eposp/canopen/device_info.hpp"
 #include "eposp/canopen/heartbeat_consumer.hpp"
 #include "eposp/canopen/value_codec.hpp"
+#include "eposp/device/axis_process_data.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/manager/network_list.hpp"
 #include "eposp/yaml/reader.hpp"
@@ -115,9 +114,14 @@ NetworkFile read_network(Reader& in, const YAML::Node& root) {
     NetworkFile network;
     std::set<std::pair<std::uint8_t, canopen::NodeId>> nodes;
     std::set<std::uint8_t> axes;
+    std::vector<std::pair<canopen::NodeId, YAML::Node>> can_slaves;
     in.each_key(
         root, "network",
-        {{"bit_rate",
+        {{"node_id",
+          [&](const YAML::Node& value) {
+              network.node_id = in_range<canopen::NodeId>(in, value, "node_id", 1, 127);
+          }},
+         {"bit_rate",
           [&](const YAML::Node& value) {
               network.bit_rate = in_range<std::uint32_t>(in, value, "bit_rate", 1, 1'000'000);
               if (std::ranges::find(canopen::kEdsBaudRatesKbit, network.bit_rate / 1000) ==
@@ -157,9 +161,19 @@ NetworkFile read_network(Reader& in, const YAML::Node& root) {
                   if (slave.axis && !axes.insert(*slave.axis).second) {
                       in.fail(node, fmt::format("axis {} is served twice", *slave.axis));
                   }
+                  if (slave.port == kExternalPort) {
+                      can_slaves.emplace_back(slave.node_id, node);
+                  }
                   network.slaves.push_back(slave);
               }
           }}});
+    for (const auto& [node_id, node] : can_slaves) {
+        if (node_id == network.node_id) {
+            in.fail(node, fmt::format("node {} is the EPOS P's own node-ID on the CAN bus "
+                                      "(node_id)",
+                                      node_id));
+        }
+    }
     return network;
 }
 

@@ -128,6 +128,13 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
                              .node = error.node,
                              .warning = error.warning});
       }) {
+    if (port_code == kExternalPort) {
+        const auto own_id = od.get_as<std::uint8_t>(kNodeIdIndex, 0);
+        sdo_server_ = std::make_unique<canopen::SdoServer>(loop, port, od, own_id);
+        // No boot-up message: the manager's first frame is its reset of the slaves, and a
+        // controller alone on its bus would only collect ACK errors with it.
+        heartbeat_producer_ = std::make_unique<canopen::HeartbeatProducer>(loop, port, od, own_id);
+    }
     // The manager supervises from power-up on (it is never in NMT initialisation).
     heartbeat_.set_nmt_state(canopen::NmtState::PreOperational);
     set_nmt_state(canopen::NmtState::PreOperational);
@@ -143,6 +150,9 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
     // 8.1: the boot-up comes before the controller's own switch to operational.
     network_.on_network_started([this] { set_nmt_state(canopen::NmtState::Operational); });
     port_.on_receive([this](const can::Frame& frame) {
+        if (sdo_server_) {
+            sdo_server_->on_frame(frame);
+        }
         sdo_.on_frame(frame);
         heartbeat_.on_frame(frame);
         sync_consumer_.on_frame(frame);
@@ -187,6 +197,10 @@ void NetworkPort::report_controller_state(can::ErrorState state) {
 }
 
 void NetworkPort::set_nmt_state(canopen::NmtState state) {
+    if (sdo_server_) {
+        sdo_server_->set_nmt_state(state);
+        heartbeat_producer_->set_nmt_state(state);
+    }
     sync_producer_.set_nmt_state(state);
     sync_consumer_.set_nmt_state(state);
     pdo_.set_nmt_state(state);

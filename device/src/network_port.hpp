@@ -2,10 +2,12 @@
 
 #include "eposp/can/port.hpp"
 #include "eposp/canopen/heartbeat_consumer.hpp"
+#include "eposp/canopen/heartbeat_producer.hpp"
 #include "eposp/canopen/nmt_master.hpp"
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/canopen/pdo_service.hpp"
 #include "eposp/canopen/sdo_client.hpp"
+#include "eposp/canopen/sdo_server.hpp"
 #include "eposp/canopen/sync_consumer.hpp"
 #include "eposp/canopen/sync_producer.hpp"
 #include "eposp/core/event_loop.hpp"
@@ -15,6 +17,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace eposp::device {
@@ -40,6 +43,10 @@ inline constexpr std::uint16_t kCanBusOffError = 0x81FD;
 /// axis table 0x5280 + n, the process image); and Request NMT 0x1F82 for the port's slaves. Its
 /// errors, and the port's CAN errors (error passive 0x8120, bus-off 0x81FD, a lost frame 0x8110),
 /// go to the error history with the port code and the node-ID (table 4).
+///
+/// On port 2 the EPOS P is also a node of its own, with the node-ID 0x5000 had at power-up: it
+/// sends its heartbeat as 0x1017 says and serves its dictionary by SDO (0x600 / 0x580 +
+/// node-ID), so a service tool on the bus reads and writes its objects.
 class NetworkPort {
 public:
     NetworkPort(core::EventLoop& loop, can::Port& port, canopen::ObjectDictionary& od,
@@ -81,6 +88,9 @@ private:
     canopen::SyncConsumer sync_consumer_;
     canopen::PdoService pdo_;
     manager::NetworkBoot network_;
+    /// Port 2 only: the EPOS P's own node.
+    std::unique_ptr<canopen::SdoServer> sdo_server_;
+    std::unique_ptr<canopen::HeartbeatProducer> heartbeat_producer_;
     SlaveConfigurations configurations_;
     std::function<void()> sync_listener_;
 };

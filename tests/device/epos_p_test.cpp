@@ -1,5 +1,6 @@
 // The EPOS P as a library: its two ports, the internal EPOS2 and the PLC on one virtual loop.
 #include "eposp/canopen/nmt_protocol.hpp"
+#include "eposp/canopen/sdo_client.hpp"
 #include "eposp/canopen/store_restore_objects.hpp"
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/compiler/compiler.hpp"
@@ -295,6 +296,51 @@ TEST(EposP, RequestNmtReadsTheSlavesStatesAndSendsCommands) {
               canopen::AbortCode::InvalidValue);
     // A node on port 2 nobody heard of: state unknown.
     EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1F82, 5), 0x00u);
+}
+
+TEST(EposP, OnTheCanBusItIsANodeWithHeartbeatAndAnSdoServer) {
+    EposPConfig config;
+    config.node_id = 9;
+    EposP device(config);
+    // A service tool on port 2.
+    auto tool = device.external_bus().connect("tool");
+    std::vector<can::Frame> heard;
+    canopen::SdoClient sdo(device.loop(), *tool);
+    tool->on_receive([&](const can::Frame& frame) {
+        heard.push_back(frame);
+        sdo.on_frame(frame);
+    });
+    device.loop().run_for(10ms);
+    EXPECT_TRUE(heard.empty()); // alone on its bus it sends nothing unasked
+
+    std::optional<std::uint32_t> device_type;
+    sdo.upload(9, 0x1000, 0, [&](canopen::AbortCode code, canopen::Bytes value) {
+        ASSERT_EQ(code, canopen::AbortCode::None);
+        device_type = canopen::decode<std::uint32_t>(value);
+    });
+    std::optional<canopen::AbortCode> written;
+    sdo.download(9, 0x1017, 0, canopen::encode(std::uint16_t{100}),
+                 [&](canopen::AbortCode code) { written = code; });
+    device.loop().run_for(10ms);
+    EXPECT_EQ(device_type, 0x195u);
+    EXPECT_EQ(written, canopen::AbortCode::None);
+
+    // 0x1017 = 100 ms: its heartbeat, pre-operational (0x7F) until its network started.
+    heard.clear();
+    device.loop().run_for(250ms);
+    std::vector<std::uint8_t> states;
+    for (const can::Frame& frame : heard) {
+        if (frame.id == 0x709) {
+            states.push_back(frame.payload()[0]);
+        }
+    }
+    EXPECT_EQ(states, (std::vector<std::uint8_t>{0x7F, 0x7F}));
+    device.boot_networks(); // nothing assigned: port 2 starts at once
+    heard.clear();
+    device.loop().run_for(1s);
+    ASSERT_FALSE(heard.empty());
+    EXPECT_EQ(heard.back().id, 0x709u);
+    EXPECT_EQ(heard.back().payload()[0], 0x05);
 }
 
 } // namespace

@@ -49,6 +49,13 @@ TEST(NetworkFile, ReadsSlavesChecksAndAxes) {
     EXPECT_EQ(network->slaves[2].heartbeat_ms, 0u);
 }
 
+TEST(NetworkFile, ASlaveMayTakeNodeOneWhenTheEposPHasAnotherNodeId) {
+    const auto network = parse_network_file("node_id: 5\nslaves:\n  - node: 1\n", "net.yaml");
+    ASSERT_TRUE(network.ok()) << network.error();
+    EXPECT_EQ(network->node_id, 5);
+    EXPECT_EQ(network->slaves.at(0).node_id, 1);
+}
+
 TEST(NetworkFile, ApplyWritesTheNetworkListAndTheAxisTable) {
     EposP device;
     device.add_network(*parse_network_file(kTwoAxes, "net.yaml"));
@@ -108,7 +115,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"Kind", "slaves:\n  - node: 2\n    kind: escon\n",
                 "net.yaml:3:11: error: kind must be"},
         BadFile{"Syntax", "slaves: [\n", "net.yaml:"},
-        BadFile{"NotAList", "slaves: 3\n", "net.yaml:1:9: error: 'slaves' must be a list"}),
+        BadFile{"NotAList", "slaves: 3\n", "net.yaml:1:9: error: 'slaves' must be a list"},
+        BadFile{"OwnNodeId", "slaves:\n  - node: 1\n",
+                "net.yaml:2:5: error: node 1 is the EPOS P's own node-ID on the CAN bus"},
+        BadFile{"OwnNodeIdSetLater", "slaves:\n  - node: 7\nnode_id: 7\n",
+                "net.yaml:2:5: error: node 7 is the EPOS P's own node-ID"},
+        BadFile{"NodeIdRange", "node_id: 0\n", "net.yaml:1:10: error: node_id must be 1..127"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(RunCommand, WithANetworkPrintsTheBootReport) {

@@ -236,6 +236,7 @@ int run_program(const RunOptions& options) {
     device_config.runtime = std::move(config);
     if (network) {
         device_config.external_bit_rate = network->bit_rate;
+        device_config.node_id = network->node_id;
     }
     auto device = std::make_unique<EposP>(std::move(device_config));
     if (network) {

@@ -41,7 +41,7 @@ void add_axes(canopen::ObjectDictionary& od) {
 
 void add_manufacturer_objects(canopen::ObjectDictionary& od, const EposPDictionaryConfig& config) {
     // 10.31: takes effect at the next start, from the stored parameters.
-    add_var(od, 0x5000, "Node Id", kU8, kRW, config.node_id).range(1, 127).persistent();
+    add_var(od, kNodeIdIndex, "Node Id", kU8, kRW, config.node_id).range(1, 127).persistent();
     // 10.32, table 28: 0 = 1 Mbit/s ... 7 = 20 kbit/s, 9 = auto detection (5, 8 reserved).
     add_var(od, 0x5001, "CAN Bitrate", kU16, kRW, 0).one_of({0, 1, 2, 3, 4, 6, 7, 9}).persistent();
     add_versions(od, 0x5003, "EPOS P Version", "EPOS P", kSoftwareVersion, kHardwareVersion,

@@ -24,6 +24,7 @@ inline constexpr std::uint16_t kApplicationVersion = 0x0000;
 inline constexpr std::uint32_t kDeviceType = 0x0000'0195;
 
 /// 10.36: the axes 0..31 at 0x5280 + n, and table 30's slave numbers.
+inline constexpr std::uint16_t kNodeIdIndex = 0x5000; ///< 10.31: the node-ID on port 2
 inline constexpr std::uint16_t kAxisIndex = 0x5280;
 inline constexpr std::uint8_t kAxisCount = 32;
 inline constexpr std::uint8_t kInternalSlave = 0; ///< the internal EPOS2 (node 1 on port 1)

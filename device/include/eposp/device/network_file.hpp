@@ -34,6 +34,7 @@ struct NetworkSlave {
 
 /// What a user writes instead of setting objects one by one.
 struct NetworkFile {
+    canopen::NodeId node_id = 1;                               ///< the EPOS P's on port 2 (0x5000)
     std::uint32_t bit_rate = 1'000'000;                        ///< port 2, bit/s
     core::Duration boot_time = std::chrono::milliseconds(500); ///< 0x1F89
     /// 0x1006 with the generate bit of 0x1005; none: no SYNC.
@@ -43,7 +44,7 @@ struct NetworkFile {
 
 /// Reads a network file; every mistake is an error "file:line:col: error: message" (`source`
 /// names the text): unknown keys, values out of range, a node listed twice on a port, an axis
-/// served twice, an internal slave other than node 1.
+/// served twice, an internal slave other than node 1, a slave with the EPOS P's own node-ID.
 core::Result<NetworkFile> parse_network_file(std::string_view text, std::string_view source);
 core::Result<NetworkFile> load_network_file(const std::filesystem::path& path);
 
