@@ -21,9 +21,9 @@ std::optional<std::string> validate(const HostedBusOptions& options) {
         return fmt::format("--bitrate {} is not a CANopen bit rate (one of {})", options.bitrate,
                            fmt::join(kCiaBitrates, ", "));
     }
-    if (options.virtual_time && (options.socketcand || options.socketcan)) {
+    if (options.virtual_time && (options.socketcand || options.socketcan || options.join)) {
         return "--virtual runs faster than the wall clock, so outside clients "
-               "(--socketcand, --socketcan) cannot take part";
+               "(--socketcand, --socketcan, --join) cannot take part";
     }
     return std::nullopt;
 }
@@ -105,7 +105,50 @@ std::optional<std::string> HostedBus::open_outside_world() {
                                                     *socketcan_);
         fmt::print("socketcan: {} bridged to bus {}\n", *options_.socketcan, options_.name);
     }
+
+    if (options_.join) {
+        if (auto problem = join_server()) {
+            return problem;
+        }
+    }
     std::fflush(stdout);
+    return std::nullopt;
+}
+
+std::optional<std::string> HostedBus::join_server() {
+    const std::string& address = *options_.join;
+    auto opened = can::io::SocketcandClientPort::open(loop_, address, options_.join_bus);
+    if (!opened) {
+        return fmt::format("--join {}: {}", address, opened.error());
+    }
+    joined_ = std::move(*opened);
+    // Bridged at once: what the bus sends meanwhile waits in the port until raw mode is on.
+    join_bridge_ = std::make_unique<can::PortBridge>(attach("join:" + address), *joined_);
+
+    // Nothing else runs yet, so the loop is run here until the server has answered; the port
+    // gives up by itself when it does not (its handshake timeout).
+    using Event = can::io::SocketcandClientPort::Event;
+    joined_->on_event([this](const Event& event) {
+        if (event.kind != Event::Kind::ServerError) {
+            loop_.stop();
+        }
+    });
+    constexpr auto kLongestHandshake = std::chrono::seconds(30);
+    loop_.run_for(kLongestHandshake);
+    if (!joined_->connected()) {
+        const std::string& failure = joined_->failure();
+        return fmt::format("--join {}: {}", address,
+                           failure.empty() ? "no answer from the server" : failure);
+    }
+    // Without the server the host's nodes talk to nobody: the run ends, saying why.
+    joined_->on_event([this](const Event& event) {
+        fmt::print(stderr, "join: {}\n", event.text);
+        std::fflush(stderr);
+        if (event.kind == Event::Kind::Failed) {
+            loop_.stop();
+        }
+    });
+    fmt::print("join: bus {} of {} bridged to bus {}\n", options_.join_bus, address, options_.name);
     return std::nullopt;
 }
 

@@ -44,6 +44,13 @@ void add_hosted_bus_options(CLI::App& command, HostedBusOptions& options) {
                        "Serve the socketcand protocol on HOST:PORT (e.g. 127.0.0.1:29536)");
     command.add_option("--socketcan", options.socketcan,
                        "Bridge a Linux CAN interface (e.g. can0, vcan0) onto the bus");
+    CLI::Option* join = command.add_option(
+        "--join", options.join,
+        "Join the bus that a socketcand server on HOST:PORT serves (e.g. another eposp's "
+        "--socketcand), bridged both ways");
+    command.add_option("--join-bus", options.join_bus, "The bus to open on the --join server")
+        ->capture_default_str()
+        ->needs(join);
     command.add_option("--name", options.name, "The bus's interface name")->capture_default_str();
     command.add_option("--bitrate", options.bitrate, "Bit rate in bit/s")->capture_default_str();
     command.add_option("--log", options.log, "Record a candump -L log to FILE");

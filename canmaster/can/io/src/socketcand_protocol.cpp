@@ -37,16 +37,30 @@ std::optional<std::uint32_t> parse_hex(std::string_view text, std::size_t max_di
     return value;
 }
 
+struct Identifier {
+    std::uint32_t id = 0;
+    bool extended = false;
+};
+
+/// 1..8 hex digits; extended when written with 8 digits or beyond 11 bits (see SendFrame).
+std::optional<Identifier> parse_identifier(std::string_view text) {
+    constexpr std::size_t kExtendedIdDigits = 8;
+    const auto id = parse_hex(text, kExtendedIdDigits);
+    if (!id || *id > kMaxExtendedId) {
+        return std::nullopt;
+    }
+    return Identifier{*id, text.size() == kExtendedIdDigits || *id > kMaxStandardId};
+}
+
 Command parse_send(std::span<const std::string_view> args, bool remote) {
     if (args.size() < 2) {
         return Malformed{"a send needs an identifier and a length"};
     }
-    constexpr std::size_t kExtendedIdDigits = 8;
-    const auto id = parse_hex(args[0], kExtendedIdDigits);
-    if (!id || *id > kMaxExtendedId) {
+    const auto identifier = parse_identifier(args[0]);
+    if (!identifier) {
         return Malformed{"the identifier must be 1 to 8 hex digits up to 1FFFFFFF"};
     }
-    const bool extended = args[0].size() == kExtendedIdDigits || *id > kMaxStandardId;
+    const auto [id, extended] = *identifier;
     if (args[1].size() != 1 || args[1][0] < '0' || args[1][0] > '0' + kMaxDataLength) {
         return Malformed{"the length must be a digit 0 to 8"};
     }
@@ -56,7 +70,7 @@ Command parse_send(std::span<const std::string_view> args, bool remote) {
         if (!data_fields.empty()) {
             return Malformed{"a sendrtr carries no data bytes"};
         }
-        return SendFrame{Frame::remote_frame(*id, dlc, extended)};
+        return SendFrame{Frame::remote_frame(id, dlc, extended)};
     }
     if (data_fields.size() != dlc) {
         return Malformed{"the length does not match the number of data bytes"};
@@ -69,7 +83,7 @@ Command parse_send(std::span<const std::string_view> args, bool remote) {
         }
         bytes[i] = static_cast<std::uint8_t>(*byte);
     }
-    return SendFrame{Frame::data_frame(*id, std::span(bytes.data(), dlc), extended)};
+    return SendFrame{Frame::data_frame(id, std::span(bytes.data(), dlc), extended)};
 }
 
 std::optional<Mode> mode_named(std::string_view name) {
@@ -95,6 +109,94 @@ bool is_unsupported_command(std::string_view name) {
         "add",         "update",     "delete",    "filter",  "muxfilter", "subscribe",
         "unsubscribe", "statistics", "isotpconf", "sendpdu", "fdsend"};
     return std::ranges::find(kNames, name) != kNames.end();
+}
+
+/// SEC.USEC as socketcand writes it (`%ld.%06ld`); 1 to 6 fraction digits are taken.
+std::optional<core::Duration> parse_stamp(std::string_view text) {
+    const std::size_t dot = text.find('.');
+    if (dot == std::string_view::npos) {
+        return std::nullopt;
+    }
+    const std::string_view whole = text.substr(0, dot);
+    std::string fraction(text.substr(dot + 1));
+    constexpr std::size_t kMicroDigits = 6;
+    const auto digits = [](std::string_view s) {
+        return !s.empty() && std::ranges::all_of(s, [](char c) { return c >= '0' && c <= '9'; });
+    };
+    if (!digits(whole) || !digits(fraction) || fraction.size() > kMicroDigits) {
+        return std::nullopt;
+    }
+    fraction.resize(kMicroDigits, '0');
+    std::int64_t seconds = 0;
+    std::int64_t micros = 0;
+    const auto parsed = std::from_chars(whole.data(), whole.data() + whole.size(), seconds);
+    if (parsed.ec != std::errc{}) {
+        return std::nullopt; // beyond 64 bits
+    }
+    std::from_chars(fraction.data(), fraction.data() + fraction.size(), micros);
+    return std::chrono::seconds(seconds) + std::chrono::microseconds(micros);
+}
+
+/// `frame ID SEC.USEC DATA` with DATA as hex without spaces, absent when empty.
+ServerMessage parse_frame(std::span<const std::string_view> args) {
+    if (args.size() < 2 || args.size() > 3) {
+        return Malformed{"a frame has an identifier, a time stamp and the data"};
+    }
+    const auto identifier = parse_identifier(args[0]);
+    const auto stamp = parse_stamp(args[1]);
+    const std::string_view data = args.size() == 3 ? args[2] : std::string_view{};
+    if (!identifier || !stamp) {
+        return Malformed{"a frame needs a hex identifier up to 1FFFFFFF and SEC.USEC"};
+    }
+    if (data.size() % 2 != 0 || data.size() > 2 * std::size_t{kMaxDataLength}) {
+        return Malformed{"a frame's data must be 0 to 8 bytes as hex digit pairs"};
+    }
+    std::array<std::uint8_t, kMaxDataLength> bytes{};
+    for (std::size_t i = 0; i < data.size() / 2; ++i) {
+        const auto byte = parse_hex(data.substr(2 * i, 2), 2);
+        if (!byte) {
+            return Malformed{"a frame's data must be 0 to 8 bytes as hex digit pairs"};
+        }
+        bytes[i] = static_cast<std::uint8_t>(*byte);
+    }
+    return ReceivedFrame{Frame::data_frame(identifier->id, std::span(bytes.data(), data.size() / 2),
+                                           identifier->extended),
+                         *stamp};
+}
+
+/// `rtr ID SEC.USEC DLC`, as our server reports remote frames.
+ServerMessage parse_remote(std::span<const std::string_view> args) {
+    const auto identifier = args.size() == 3 ? parse_identifier(args[0]) : std::nullopt;
+    const auto stamp = args.size() == 3 ? parse_stamp(args[1]) : std::nullopt;
+    const auto dlc = args.size() == 3 ? parse_hex(args[2], 1) : std::nullopt;
+    if (!identifier || !stamp || !dlc || *dlc > kMaxDataLength) {
+        return Malformed{"a remote frame has an identifier, SEC.USEC and a length 0 to 8"};
+    }
+    return ReceivedFrame{
+        Frame::remote_frame(identifier->id, static_cast<std::uint8_t>(*dlc), identifier->extended),
+        *stamp};
+}
+
+/// `error CLASS SEC.USEC` is an error frame on the bus; any other `error ...` is a reply.
+ServerMessage parse_error(std::span<const std::string_view> args) {
+    if (args.size() == 2) {
+        const auto error_class = parse_identifier(args[0]);
+        const auto stamp = parse_stamp(args[1]);
+        if (error_class && stamp) {
+            Frame frame;
+            frame.id = error_class->id;
+            frame.error = true;
+            frame.dlc = kMaxDataLength; // SocketCAN's CAN_ERR_DLC; the details are not sent
+            return ReceivedFrame{frame, *stamp};
+        }
+    }
+    if (args.empty()) {
+        return ErrorReply{};
+    }
+    // The reason as written, from its first word to its last (the fields view the message).
+    const char* begin = args.front().data();
+    const char* end = args.back().data() + args.back().size();
+    return ErrorReply{std::string(begin, end)};
 }
 
 std::string format_id(const Frame& frame) {
@@ -213,6 +315,41 @@ std::string format_received(const Frame& frame, core::Duration since_epoch) {
     }
     text += " >";
     return text;
+}
+
+ServerMessage parse_server_message(std::string_view message) {
+    if (message.size() < 2 || message.front() != '<' || message.back() != '>') {
+        return Malformed{"a message is enclosed in < and >"};
+    }
+    const auto fields = split_fields(message.substr(1, message.size() - 2));
+    if (fields.empty()) {
+        return Malformed{"empty message"};
+    }
+    const std::string_view name = fields.front();
+    const auto args = std::span(fields).subspan(1);
+    const bool bare = args.empty();
+    if (name == "hi" && bare) {
+        return Hi{};
+    }
+    if (name == "ok" && bare) {
+        return Ok{};
+    }
+    if (name == "echo" && bare) {
+        return Echo{};
+    }
+    if (name == "hi" || name == "ok" || name == "echo") {
+        return Malformed{fmt::format("{} takes no arguments", name)};
+    }
+    if (name == "frame") {
+        return parse_frame(args);
+    }
+    if (name == "rtr") {
+        return parse_remote(args);
+    }
+    if (name == "error") {
+        return parse_error(args);
+    }
+    return Unknown{std::string(name)};
 }
 
 } // namespace eposp::can::io::socketcand

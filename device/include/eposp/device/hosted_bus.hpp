@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/can/io/socketcan_port.hpp"
+#include "eposp/can/io/socketcand_client_port.hpp"
 #include "eposp/can/io/socketcand_server.hpp"
 #include "eposp/can/port_bridge.hpp"
 #include "eposp/can/trace_clock.hpp"
@@ -24,6 +25,10 @@ struct HostedBusOptions {
     std::uint32_t bitrate = 1'000'000;
     std::optional<std::string> socketcand;
     std::optional<std::string> socketcan;
+    /// A socketcand server (HOST:PORT) whose bus `join_bus` this bus is bridged onto, so that
+    /// the host's nodes sit on a bus another process serves.
+    std::optional<std::string> join;
+    std::string join_bus = "can0";
     std::optional<std::string> log;
     std::optional<std::string> pcap;
     std::optional<core::Duration> duration;
@@ -31,13 +36,15 @@ struct HostedBusOptions {
 };
 
 /// A simulated CAN bus on its own event loop, as a long-running command hosts it: outside tools
-/// join over socketcand or a bridged SocketCAN interface, traces record every frame, and the run
-/// lasts for --for or until SIGINT/SIGTERM. The host acknowledges frames through a "monitor"
-/// port like a logging interface on a real bus, so a single client's frames complete.
+/// join over socketcand or a bridged SocketCAN interface, or the bus itself joins a socketcand
+/// server's (--join); traces record every frame, and the run lasts for --for or until
+/// SIGINT/SIGTERM (or until a joined server goes away). The host acknowledges frames through a
+/// "monitor" port like a logging interface on a real bus, so a single client's frames complete.
 class HostedBus {
 public:
-    /// Validates the options, opens the traces, the socketcand server and the SocketCAN bridge
-    /// and prints where they are; or says why one cannot be opened.
+    /// Validates the options, opens the traces, the socketcand server, the SocketCAN bridge and
+    /// the joined server (waiting until it is in raw mode, so that no node's boot-up is sent
+    /// before) and prints where they are; or says why one cannot be opened.
     static core::Result<std::unique_ptr<HostedBus>> open(const HostedBusOptions& options);
 
     ~HostedBus();
@@ -62,6 +69,7 @@ public:
 private:
     explicit HostedBus(const HostedBusOptions& options);
     std::optional<std::string> open_outside_world();
+    std::optional<std::string> join_server();
 
     HostedBusOptions options_;
     core::EventLoop loop_;
@@ -72,6 +80,8 @@ private:
     std::unique_ptr<can::io::SocketcandServer> server_;
     std::unique_ptr<can::io::SocketCanPort> socketcan_;
     std::unique_ptr<can::PortBridge> bridge_;
+    std::unique_ptr<can::io::SocketcandClientPort> joined_;
+    std::unique_ptr<can::PortBridge> join_bridge_;
 };
 
 } // namespace eposp::device

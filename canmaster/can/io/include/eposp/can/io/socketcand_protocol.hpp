@@ -16,7 +16,8 @@ namespace eposp::can::io::socketcand {
 
 /// The longest message accepted from a client, brackets included. The longest valid one, a
 /// `send` of an extended frame with eight bytes, has 43 characters; the rest is room for
-/// extra spaces.
+/// extra spaces. A client takes the same limit for what a server sends (its longest frame
+/// message has 52 characters).
 inline constexpr std::size_t kMaxMessageLength = 128;
 /// protocol.md, mode NO_BUS: "canbus may be at maximum 16 characters long".
 inline constexpr std::size_t kMaxBusNameLength = 16;
@@ -100,5 +101,30 @@ std::string format_error(std::string_view reason);
 /// the space before it. Remote frames are `< rtr ID SEC.USEC DLC >`, error frames
 /// `< error CLASS SEC.USEC >`.
 std::string format_received(const Frame& frame, core::Duration since_epoch);
+
+// ---- What a client receives -------------------------------------------------------------------
+
+/// `< hi >`, the greeting on connect.
+struct Hi {};
+/// `< ok >`, the answer to `open` and to a mode switch.
+struct Ok {};
+/// `< frame ID SEC.USEC DATA >`, `< rtr ID SEC.USEC DLC >` or `< error CLASS SEC.USEC >` as
+/// format_received() writes them (socketcand itself sends no remote frames). The identifier is
+/// extended when written with 8 digits or when it does not fit 11 bits, as in a send.
+struct ReceivedFrame {
+    Frame frame;
+    core::Duration since_epoch{};
+};
+/// `< error REASON >`: the server refused what the client asked for.
+struct ErrorReply {
+    std::string reason;
+};
+
+/// Unknown carries the first word of a message no server of the protocol sends in raw mode for a
+/// classic CAN bus (e.g. socketcand's `fdframe`).
+using ServerMessage = std::variant<Hi, Ok, Echo, ReceivedFrame, ErrorReply, Unknown, Malformed>;
+
+/// Parses one message as scan_message() delimits it, brackets included.
+ServerMessage parse_server_message(std::string_view message);
 
 } // namespace eposp::can::io::socketcand
