@@ -74,7 +74,9 @@ NetworkPort& EposP::network_port(std::uint8_t port) {
 void EposP::add_network(const NetworkFile& network) {
     apply_network(network, dictionary_.objects());
     for (const NetworkSlave& slave : network.slaves) {
-        if (slave.axis) {
+        if (slave.concise_dcf) {
+            network_port(slave.port).set_slave_configuration(slave.node_id, *slave.concise_dcf);
+        } else if (slave.axis) {
             network_port(slave.port)
                 .set_slave_configuration(slave.node_id,
                                          axis_slave_configuration(slave.node_id, *slave.axis));
@@ -124,6 +126,10 @@ std::optional<core::Error> EposP::start_program(vm::StartMode mode) {
 void EposP::boot_networks() {
     internal_network_->boot();
     external_network_->boot();
+}
+
+manager::NetworkList EposP::network_list(std::uint8_t port) const {
+    return (port == kInternalPort ? internal_network_ : external_network_)->list();
 }
 
 const manager::NetworkBoot& EposP::network(std::uint8_t port) const {

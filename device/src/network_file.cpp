@@ -5,6 +5,7 @@
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/device/axis_process_data.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/manager/concise_dcf.hpp"
 #include "eposp/manager/network_list.hpp"
 #include "eposp/yaml/reader.hpp"
 
@@ -51,10 +52,31 @@ void read_expected(Reader& in, const YAML::Node& node, NetworkSlave& slave) {
                  {"vendor_id", u32(slave.identity.vendor_id, "expect.vendor_id")},
                  {"product_code", u32(slave.identity.product_code, "expect.product_code")},
                  {"revision_number", u32(slave.identity.revision_number, "expect.revision_number")},
-                 {"serial_number", u32(slave.identity.serial_number, "expect.serial_number")}});
+                 {"serial_number", u32(slave.identity.serial_number, "expect.serial_number")},
+                 {"configuration_date",
+                  u32(slave.configuration_date, "expect.configuration_date")},
+                 {"configuration_time",
+                  u32(slave.configuration_time, "expect.configuration_time")}});
 }
 
-NetworkSlave read_slave(Reader& in, const YAML::Node& node) {
+// A concise DCF named relative to the network file; its writes replace the axis set-up.
+std::vector<manager::ConfigurationWrite> read_concise_dcf(Reader& in, const YAML::Node& value,
+                                                          const std::filesystem::path& base) {
+    const auto name = in.scalar<std::string>(value, "dcf");
+    const std::filesystem::path path = base / name;
+    const auto bytes = yaml::read_text(path);
+    if (!bytes) {
+        in.fail(value, fmt::format("dcf {}: cannot read the file", path.string()));
+    }
+    auto writes = manager::decode_concise_dcf(
+        {reinterpret_cast<const std::uint8_t*>(bytes->data()), bytes->size()});
+    if (!writes) {
+        in.fail(value, fmt::format("dcf {}: {}", path.string(), writes.error()));
+    }
+    return std::move(*writes);
+}
+
+NetworkSlave read_slave(Reader& in, const YAML::Node& node, const std::filesystem::path& base) {
     NetworkSlave slave;
     bool has_node = false;
     in.each_key(node, "slaves",
@@ -97,6 +119,10 @@ NetworkSlave read_slave(Reader& in, const YAML::Node& node) {
                       }
                       slave.heartbeat_ms = static_cast<std::uint16_t>(ms.count());
                   }},
+                 {"dcf",
+                  [&](const YAML::Node& value) {
+                      slave.concise_dcf = read_concise_dcf(in, value, base);
+                  }},
                  {"expect", [&](const YAML::Node& value) {
                       read_expected(in, value, slave);
                   }}});
@@ -110,7 +136,7 @@ NetworkSlave read_slave(Reader& in, const YAML::Node& node) {
     return slave;
 }
 
-NetworkFile read_network(Reader& in, const YAML::Node& root) {
+NetworkFile read_network(Reader& in, const YAML::Node& root, const std::filesystem::path& base) {
     NetworkFile network;
     std::set<std::pair<std::uint8_t, canopen::NodeId>> nodes;
     std::set<std::uint8_t> axes;
@@ -154,7 +180,7 @@ NetworkFile read_network(Reader& in, const YAML::Node& root) {
                   in.fail(list, "'slaves' must be a list");
               }
               for (const YAML::Node& node : list) {
-                  NetworkSlave slave = read_slave(in, node);
+                  NetworkSlave slave = read_slave(in, node, base);
                   if (!nodes.emplace(slave.port, slave.node_id).second) {
                       in.fail(node, fmt::format("node {} is listed twice", slave.node_id));
                   }
@@ -179,8 +205,11 @@ NetworkFile read_network(Reader& in, const YAML::Node& root) {
 
 } // namespace
 
-core::Result<NetworkFile> parse_network_file(std::string_view text, std::string_view source) {
-    return yaml::parse<NetworkFile>(text, source, read_network);
+core::Result<NetworkFile> parse_network_file(std::string_view text, std::string_view source,
+                                             const std::filesystem::path& base) {
+    return yaml::parse<NetworkFile>(text, source, [&base](Reader& in, const YAML::Node& root) {
+        return read_network(in, root, base);
+    });
 }
 
 core::Result<NetworkFile> load_network_file(const std::filesystem::path& path) {
@@ -188,7 +217,7 @@ core::Result<NetworkFile> load_network_file(const std::filesystem::path& path) {
     if (!text) {
         return core::Error{text.error()};
     }
-    return parse_network_file(*text, path.string());
+    return parse_network_file(*text, path.string(), path.parent_path());
 }
 
 void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od) {
@@ -221,6 +250,8 @@ void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od) {
         od.set_as<std::uint32_t>(0x1F86, sub, slave.identity.product_code);
         od.set_as<std::uint32_t>(0x1F87, sub, slave.identity.revision_number);
         od.set_as<std::uint32_t>(0x1F88, sub, slave.identity.serial_number);
+        od.set_as<std::uint32_t>(0x1F26, sub, slave.configuration_date);
+        od.set_as<std::uint32_t>(0x1F27, sub, slave.configuration_time);
         if (slave.heartbeat_ms != 0) {
             od.set_as<std::uint32_t>(canopen::kConsumerHeartbeatTimeIndex, ++heartbeat_entry,
                                      std::uint32_t{slave.port} << 24 |

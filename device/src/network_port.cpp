@@ -223,7 +223,7 @@ NetworkPort::~NetworkPort() {
 
 void NetworkPort::boot(std::function<void(const manager::BootReport& report)> done) {
     set_nmt_state(canopen::NmtState::PreOperational);
-    network_.start(network_list(od_, port_code_, configurations_), std::move(done));
+    network_.start(list(), std::move(done));
 }
 
 } // namespace eposp::device

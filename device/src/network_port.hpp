@@ -59,6 +59,8 @@ public:
     /// slave's boot has ended.
     void boot(std::function<void(const manager::BootReport& report)> done = {});
     const manager::NetworkBoot& network() const { return network_; }
+    /// The network list boot() starts from now.
+    manager::NetworkList list() const { return network_list(od_, port_code_, configurations_); }
     /// What the boot writes into slave `node` after its checks passed (a concise DCF).
     void set_slave_configuration(canopen::NodeId node,
                                  std::vector<manager::ConfigurationWrite> writes) {

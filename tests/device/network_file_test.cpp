@@ -1,6 +1,7 @@
 // Network files: what they set in the EPOS P's dictionary, and every mistake named with its line.
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/network_file.hpp"
+#include "eposp/manager/concise_dcf.hpp"
 #include "eposp_command.hpp"
 
 #include <gmock/gmock.h>
@@ -54,6 +55,59 @@ TEST(NetworkFile, ASlaveMayTakeNodeOneWhenTheEposPHasAnotherNodeId) {
     ASSERT_TRUE(network.ok()) << network.error();
     EXPECT_EQ(network->node_id, 5);
     EXPECT_EQ(network->slaves.at(0).node_id, 1);
+}
+
+TEST(NetworkFile, AConciseDcfConfiguresItsSlaveInsteadOfTheAxisSetUp) {
+    // A DCF as `eposp dcf` writes them, with a heartbeat of 70 ms and a following error window.
+    const std::vector<manager::ConfigurationWrite> writes = {
+        {0x1017, 0, canopen::encode(std::uint16_t{70})},
+        {0x6065, 0, canopen::encode(std::uint32_t{4321})}};
+    const auto bytes = manager::encode_concise_dcf(writes);
+    const auto dcf = scratch("node2.cdcf");
+    std::ofstream(dcf, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    const auto path = write_source("net.yaml", "slaves:\n  - {node: 2, axis: 1, heartbeat: 0ms, dcf: node2.cdcf}\n");
+    const auto network = load_network_file(path);
+    ASSERT_TRUE(network.ok()) << network.error();
+    ASSERT_TRUE(network->slaves.at(0).concise_dcf);
+    EXPECT_EQ(network->slaves.at(0).concise_dcf->size(), 2u);
+
+    EposP device;
+    device.add_network(*network);
+    device.boot_networks();
+    device.loop().run_for(2s);
+    const canopen::ObjectDictionary& slave = device.simulated_slaves().at(0)->objects();
+    EXPECT_EQ(slave.get_as<std::uint16_t>(0x1017, 0), 70u);
+    EXPECT_EQ(slave.get_as<std::uint32_t>(0x6065, 0), 4321u);
+    EXPECT_EQ(slave.get_as<std::uint8_t>(0x1A00, 0), 1u); // its TPDO 1 left as it was
+}
+
+TEST(NetworkFile, ABrokenOrMissingConciseDcfIsAnErrorAtItsLine) {
+    write_source("cut.cdcf", std::string("\x01\x00\x00\x00\x17", 5));
+    const auto cut = load_network_file(write_source("net.yaml", "slaves:\n  - node: 2\n    dcf: cut.cdcf\n"));
+    ASSERT_FALSE(cut.ok());
+    EXPECT_THAT(cut.error(), HasSubstr("net.yaml:3:10: error: dcf "));
+    EXPECT_THAT(cut.error(), HasSubstr("cut.cdcf: entry 1 of 1 is cut off at byte 4"));
+    const auto missing =
+        load_network_file(write_source("net2.yaml", "slaves:\n  - {node: 2, dcf: nowhere.cdcf}\n"));
+    ASSERT_FALSE(missing.ok());
+    EXPECT_THAT(missing.error(), HasSubstr("nowhere.cdcf: cannot read the file"));
+}
+
+TEST(NetworkFile, AConfigurationDateMismatchOnAMandatorySlaveHoldsTheNetworkBack) {
+    const auto network = parse_network_file(
+        "slaves:\n  - node: 2\n    expect: {configuration_date: 14000, configuration_time: 3600000}\n",
+        "net.yaml");
+    ASSERT_TRUE(network.ok()) << network.error();
+    EposP device;
+    device.add_network(*network);
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1F26, 2), 14000u);
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1F27, 2), 3600000u);
+    device.boot_networks();
+    device.loop().run_for(2s);
+    EXPECT_FALSE(device.network(kExternalPort).report().network_started);
+    // Table 4: port 2, node 2, 0x6386 (the slave's 0x1020 holds no configuration).
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1003, 1), 0x0202'6386u);
 }
 
 TEST(NetworkFile, ApplyWritesTheNetworkListAndTheAxisTable) {

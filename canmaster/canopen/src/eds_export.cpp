@@ -127,8 +127,20 @@ void write_object_list(EdsWriter& out, const ObjectDictionary& dictionary, Objec
     }
 }
 
-// CiA 306 4.6.3: the keys of one value, in the order the standard lists them.
-void write_value_keys(EdsWriter& out, const SubObject& sub) {
+void write_commissioning(EdsWriter& out, const DeviceCommissioning& commissioning) {
+    out.section("DeviceComissioning");
+    out.key("NodeID", fmt::format("0x{:02X}", commissioning.node_id));
+    out.key("NodeName", commissioning.node_name);
+    out.key("Baudrate", commissioning.baudrate_kbit);
+    out.key("NetNumber", commissioning.net_number);
+    out.key("NetworkName", commissioning.network_name);
+    out.key("CANopenManager", commissioning.canopen_manager ? 1 : 0);
+}
+
+// CiA 306 4.6.3: the keys of one value, in the order the standard lists them; a DCF adds the
+// configured value where it is not the default.
+void write_value_keys(EdsWriter& out, const ObjectDictionary& dictionary, std::uint16_t index,
+                      std::uint8_t sub_index, const SubObject& sub, bool configured) {
     out.key("DataType", fmt::format("0x{:04X}", static_cast<std::uint16_t>(sub.type)));
     if (sub.low_limit) {
         out.key("LowLimit", format_eds_value(sub.type, *sub.low_limit));
@@ -139,16 +151,22 @@ void write_value_keys(EdsWriter& out, const SubObject& sub) {
     out.key("AccessType", to_string(sub.access));
     out.key("DefaultValue", format_eds_value(sub.type, sub.default_value));
     out.key("PDOMapping", sub.pdo_mappable ? 1 : 0);
+    if (configured && readable(sub.access) && writable(sub.access)) {
+        if (const Bytes value = dictionary.get(index, sub_index); value != sub.default_value) {
+            out.key("ParameterValue", format_eds_value(sub.type, value));
+        }
+    }
 }
 
-void write_object(EdsWriter& out, const Object& object) {
+void write_object(EdsWriter& out, const ObjectDictionary& dictionary, const Object& object,
+                  bool configured) {
     const std::string section = fmt::format("{:04X}", object.index);
     out.section(section);
     out.key("ParameterName", object.name);
     out.key("ObjectType", fmt::format("0x{:X}", static_cast<unsigned>(object.code)));
     if (object.code != ObjectCode::Array && object.code != ObjectCode::Record) {
         if (const auto it = object.subs.find(0); it != object.subs.end()) {
-            write_value_keys(out, it->second);
+            write_value_keys(out, dictionary, object.index, 0, it->second, configured);
         }
         return;
     }
@@ -157,23 +175,36 @@ void write_object(EdsWriter& out, const Object& object) {
         out.section(fmt::format("{}sub{:X}", section, sub_index));
         out.key("ParameterName", sub.name);
         out.key("ObjectType", fmt::format("0x{:X}", static_cast<unsigned>(ObjectCode::Var)));
-        write_value_keys(out, sub);
+        write_value_keys(out, dictionary, object.index, sub_index, sub, configured);
     }
+}
+
+std::string write_document(const ObjectDictionary& dictionary, const DeviceInfo& info,
+                           const DeviceCommissioning* commissioning) {
+    EdsWriter out;
+    write_file_info(out, info.file);
+    write_device_info(out, info, dictionary);
+    if (commissioning) {
+        write_commissioning(out, *commissioning);
+    }
+    write_object_list(out, dictionary, ObjectList::Mandatory, "MandatoryObjects");
+    write_object_list(out, dictionary, ObjectList::Optional, "OptionalObjects");
+    write_object_list(out, dictionary, ObjectList::Manufacturer, "ManufacturerObjects");
+    for (const auto& [index, object] : dictionary.objects()) {
+        write_object(out, dictionary, object, commissioning != nullptr);
+    }
+    return out.take();
 }
 
 } // namespace
 
 std::string export_eds(const ObjectDictionary& dictionary, const DeviceInfo& info) {
-    EdsWriter out;
-    write_file_info(out, info.file);
-    write_device_info(out, info, dictionary);
-    write_object_list(out, dictionary, ObjectList::Mandatory, "MandatoryObjects");
-    write_object_list(out, dictionary, ObjectList::Optional, "OptionalObjects");
-    write_object_list(out, dictionary, ObjectList::Manufacturer, "ManufacturerObjects");
-    for (const auto& [index, object] : dictionary.objects()) {
-        write_object(out, object);
-    }
-    return out.take();
+    return write_document(dictionary, info, nullptr);
+}
+
+std::string export_dcf(const ObjectDictionary& dictionary, const DeviceInfo& info,
+                       const DeviceCommissioning& commissioning) {
+    return write_document(dictionary, info, &commissioning);
 }
 
 } // namespace eposp::canopen

@@ -20,6 +20,7 @@ int run_cli(int argc, char** argv) {
     cli::add_build_command(app, exit_code);
     cli::add_dump_command(app, exit_code);
     cli::add_eds_command(app, exit_code);
+    cli::add_dcf_command(app, exit_code);
     cli::add_run_command(app, exit_code);
     cli::add_serve_command(app, exit_code);
     cli::add_bench_command(app, exit_code);

@@ -77,6 +77,9 @@ public:
     /// internal EPOS2 (sub-index 128 of 0x1F81 ...) on port 1, the slaves of sub-indices 1..127
     /// on port 2. Failures go to the error history with their port and node-ID.
     void boot_networks();
+    /// The network list the boot of port 1 or 2 works from now: the dictionary's objects and
+    /// the configuration writes of each slave (its concise DCF).
+    manager::NetworkList network_list(std::uint8_t port) const;
     /// The boot-up of port 1 (kInternalPort) or 2 (kExternalPort).
     const manager::NetworkBoot& network(std::uint8_t port) const;
 

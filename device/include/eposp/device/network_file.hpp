@@ -4,6 +4,7 @@
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/core/result.hpp"
 #include "eposp/core/time.hpp"
+#include "eposp/manager/network_list.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -28,6 +29,11 @@ struct NetworkSlave {
     /// Expected values of the boot-up checks; 0 is not checked.
     std::uint32_t device_type = 0;
     canopen::LssAddress identity;
+    /// 0x1F26 / 0x1F27, against the slave's 0x1020 (checked when both are set).
+    std::uint32_t configuration_date = 0;
+    std::uint32_t configuration_time = 0;
+    /// The writes of the concise DCF the file names, instead of the axis' PDO set-up.
+    std::optional<std::vector<manager::ConfigurationWrite>> concise_dcf;
     /// The consumer heartbeat time the controller watches it with; 0: no supervision.
     std::uint16_t heartbeat_ms = 100;
 };
@@ -45,11 +51,13 @@ struct NetworkFile {
 /// Reads a network file; every mistake is an error "file:line:col: error: message" (`source`
 /// names the text): unknown keys, values out of range, a node listed twice on a port, an axis
 /// served twice, an internal slave other than node 1, a slave with the EPOS P's own node-ID.
-core::Result<NetworkFile> parse_network_file(std::string_view text, std::string_view source);
+/// A slave's `dcf` is read from `base` / its name (a file's directory).
+core::Result<NetworkFile> parse_network_file(std::string_view text, std::string_view source,
+                                             const std::filesystem::path& base = {});
 core::Result<NetworkFile> load_network_file(const std::filesystem::path& path);
 
 /// Writes the network into the EPOS P's dictionary: per slave 0x1F81 (slave, boot slave,
-/// mandatory), 0x1F84 - 0x1F88, 0x1016 (port code, node-ID, time) and its axis' slave number
+/// mandatory), 0x1F84 - 0x1F88, 0x1F26 / 0x1F27, 0x1016 (port code, node-ID, time) and its axis' slave number
 /// 0x5280 + axis sub 1 (table 30); 0x1F89; a SYNC period in 0x1006 and the generate bit of
 /// 0x1005. Axes the file does not name keep their defaults.
 void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od);

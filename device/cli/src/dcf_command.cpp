@@ -1,0 +1,92 @@
+// `eposp dcf --network net.yaml [-o DIR]`: the configuration a network file describes, as files
+// a CANopen configuration tool reads: the EPOS P's DCF (CiA 306, its dictionary as configured)
+// and a concise DCF (CiA 302-3) per slave with the writes its boot-up makes.
+#include "commands.hpp"
+#include "eposp/canopen/eds_export.hpp"
+#include "eposp/core/durable_file.hpp"
+#include "eposp/device/epos_p.hpp"
+#include "eposp/device/network_file.hpp"
+#include "eposp/manager/concise_dcf.hpp"
+#include "options.hpp"
+
+#include <filesystem>
+#include <fmt/format.h>
+#include <memory>
+#include <span>
+
+namespace eposp::device::cli {
+namespace {
+
+constexpr std::string_view kCommand = "dcf";
+
+struct DcfOptions {
+    std::string network;
+    std::string directory = ".";
+};
+
+std::optional<core::Error> write_bytes(const std::filesystem::path& path,
+                                       std::span<const std::uint8_t> bytes) {
+    if (auto error = core::write_file_durably(path, bytes)) {
+        return error;
+    }
+    fmt::print("wrote {}\n", path.string());
+    return std::nullopt;
+}
+
+int write_dcfs(const DcfOptions& options) {
+    auto network = load_network_file(options.network);
+    if (!network) {
+        return report_user_error(kCommand, network.error());
+    }
+    const std::filesystem::path directory(options.directory);
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error || !std::filesystem::is_directory(directory)) {
+        return report_user_error(
+            kCommand, fmt::format("-o {}: not a directory the files can go into", options.directory));
+    }
+    EposPConfig config;
+    config.node_id = network->node_id;
+    config.external_bit_rate = network->bit_rate;
+    EposP device(config);
+    device.add_network(*network);
+
+    const canopen::DeviceCommissioning commissioning{
+        .node_id = network->node_id,
+        .node_name = "EPOS P",
+        .baudrate_kbit = network->bit_rate / 1000,
+        .network_name = std::filesystem::path(options.network).stem().string(),
+        .canopen_manager = true};
+    const std::string dcf = canopen::export_dcf(device.objects(), epos_p_device_info(), commissioning);
+    const auto text = std::as_bytes(std::span(dcf));
+    if (auto failed = write_bytes(directory / "epos-p.dcf",
+                                  {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()})) {
+        return report_user_error(kCommand, failed->message);
+    }
+    for (const std::uint8_t port : {kInternalPort, kExternalPort}) {
+        for (const manager::SlaveEntry& slave : device.network_list(port).slaves) {
+            const auto name = fmt::format("{}-node{}.cdcf", port == kInternalPort ? "internal" : "can",
+                                          slave.node_id);
+            if (auto failed = write_bytes(directory / name,
+                                          manager::encode_concise_dcf(slave.configuration))) {
+                return report_user_error(kCommand, failed->message);
+            }
+        }
+    }
+    return 0;
+}
+
+} // namespace
+
+void add_dcf_command(CLI::App& app, int& exit_code) {
+    auto options = std::make_shared<DcfOptions>();
+    CLI::App* command = app.add_subcommand(
+        "dcf", "Write a network's configuration: the EPOS P's DCF and each slave's concise DCF");
+    command->add_option("--network", options->network, "The network file (docs/network.md)")
+        ->required();
+    command->add_option("-o,--output", options->directory, "The directory to write them into")
+        ->capture_default_str();
+    command->callback([options, &exit_code] { exit_code = write_dcfs(*options); });
+}
+
+} // namespace eposp::device::cli
