@@ -32,6 +32,31 @@ TEST(ServeCommand, APythonCanToolReadsTheEposPBySdoAndSeesTheAxesPdos) {
     EXPECT_THAT(served, HasSubstr("boot-up of port 2 (CAN): network started"));
 }
 
+// Axis 1 is an EPOS2 in another process (`eposp drive epos2 --join`): the EPOS P boots it over
+// socketcand, sets up its PDOs, and the two-axis program moves it to its target.
+TEST(ServeCommand, AnExternalSlaveInAnotherProcessIsBootedAndMoved) {
+    const auto network = write_source("external.yaml", R"(sync_period: 2ms
+slaves:
+  - {node: 1, port: internal, axis: 0}
+  - {node: 3, kind: external, axis: 1, heartbeat: 500ms}
+)");
+    const auto out = scratch("serve.out");
+    const auto drive_out = scratch("drive.out");
+    const auto result = test::run_command(
+        "sh -c '" +
+        start_in_background(out, "serve " + kExample + "two-axis.st --network " + network +
+                                     " --socketcand 127.0.0.1:0 --for 8s --watch Cell.both_done") +
+        kEposp + " drive epos2 --node-id 3 --join $address --join-bus external --for 7s > " +
+        drive_out.string() + " 2>&1; echo drive exit $?; wait $pid; echo serve exit $?'");
+    const std::string served = read_file(out);
+    const std::string drive = read_file(drive_out);
+    EXPECT_THAT(result.output, HasSubstr("drive exit 0")) << drive;
+    EXPECT_THAT(served, HasSubstr("boot-up of port 2 (CAN): network started\n  node 3: booted at"))
+        << served;
+    EXPECT_THAT(served, HasSubstr("Cell.both_done = TRUE")) << served;
+    EXPECT_THAT(drive, HasSubstr("epos2: node 3 stopped in Operation Enable")) << drive;
+}
+
 TEST(ServeCommand, AnAddressInUseOrMalformedIsAClearError) {
     const auto result = eposp("serve --socketcand not-an-address --for 1s");
     EXPECT_EQ(result.exit_code, 1);

@@ -6,6 +6,12 @@
 #include <tuple>
 
 namespace eposp::vm {
+namespace {
+
+/// align() leaves a task alone within 1/8 of the clock's period of its grid.
+constexpr int kAlignmentTolerance = 8;
+
+} // namespace
 
 TaskDispatcher::TaskDispatcher(core::EventLoop& loop, Machine& machine, TaskHooks& hooks,
                                CostModel cost)
@@ -85,8 +91,15 @@ void TaskDispatcher::align(core::TimePoint anchor, core::Duration period) {
         if (!releases_cyclically(slot) || interval % period != core::Duration::zero()) {
             continue;
         }
-        if ((slot.next_release - anchor) % period == core::Duration::zero()) {
-            continue; // in step already (a task of several periods keeps its phase)
+        // In step already (a task of several periods keeps its phase), or near enough: in real
+        // time the clock's ticks are seen a little late, and chasing that jitter would move the
+        // task at every tick.
+        core::Duration phase = (slot.next_release - anchor) % period;
+        if (phase < core::Duration::zero()) {
+            phase += period;
+        }
+        if (std::min(phase, period - phase) <= period / kAlignmentTolerance) {
+            continue;
         }
         // The first tick of the grid at or after now (the anchor may lie either side of it).
         core::Duration offset = (anchor - now) % period;

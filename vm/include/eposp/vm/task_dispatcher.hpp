@@ -67,8 +67,8 @@ public:
     /// Puts the next release of every cyclic task whose interval is a whole multiple of
     /// `period` on the grid anchor + k * period (the first point at or after now): from then on
     /// the task runs in step with a clock of that period (the SYNC), a fixed time after its
-    /// ticks. A task already on the grid is left alone, so the device may call this at every
-    /// tick.
+    /// ticks. A task already on the grid, or within 1/8 period of it (real time sees ticks a
+    /// little late), is left alone, so the device may call this at every tick.
     void align(core::TimePoint anchor, core::Duration period);
 
     /// Instructions one cycle of the task may execute (all its programs together).
