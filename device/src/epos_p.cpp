@@ -58,6 +58,51 @@ EposP::EposP(EposPConfig config)
     internal_drive_->start();
 }
 
+std::optional<core::Error> EposP::bind_event(const EventBinding& event) {
+    vm::PlcRuntime& runtime = plc_.runtime();
+    const auto task = runtime.task_index(event.task);
+    if (!task || plc_.image().tasks[*task].kind != vm::TaskKind::Event) {
+        return core::Error{fmt::format(
+            "event task {}: the program has no such task with SINGLE (an event task)", event.task)};
+    }
+    const auto raise = [&runtime, task = *task] {
+        runtime.raise_event(task);
+    };
+    switch (event.source) {
+    case EventBinding::Source::Sync:
+        sync_tasks_.push_back(*task);
+        break;
+    case EventBinding::Source::Emcy:
+        network_port(event.port).on_emergency(
+            [raise, node = event.node](const canopen::Emergency& emergency) {
+                if (!node || emergency.node == *node) {
+                    raise();
+                }
+            });
+        break;
+    case EventBinding::Source::Rpdo:
+        network_port(event.port).on_rpdo(event.rpdo, raise);
+        break;
+    case EventBinding::Source::Input: {
+        const auto entry = vm::object_entry_of(vm::IoArea::Input, event.input_byte);
+        const std::uint8_t mask = static_cast<std::uint8_t>(1U << event.input_bit);
+        // The bit's level after the last write (shared: the dictionary may copy its listeners);
+        // an edge is 0 -> 1.
+        dictionary_.objects().on_change(
+            entry->index, [this, raise, byte = event.input_byte, mask,
+                           level = std::make_shared<bool>(false)](std::uint16_t, std::uint8_t) {
+                const bool now = (plc_.runtime().process_image().inputs()[byte] & mask) != 0;
+                if (now && !*level) {
+                    raise();
+                }
+                *level = now;
+            });
+        break;
+    }
+    }
+    return std::nullopt;
+}
+
 void EposP::follow_sync() {
     const canopen::ObjectDictionary& od = dictionary_.objects();
     const auto period = std::chrono::microseconds(od.get_as<std::uint32_t>(0x1006, 0));
@@ -65,6 +110,9 @@ void EposP::follow_sync() {
     const core::Duration delay =
         window.count() > 0 && window < period ? core::Duration(window) : core::Duration(period) / 2;
     plc_.runtime().align_cycles(loop_.now() + delay, period);
+    for (const std::size_t task : sync_tasks_) {
+        plc_.runtime().raise_event(task);
+    }
 }
 
 NetworkPort& EposP::network_port(std::uint8_t port) {

@@ -7,9 +7,11 @@
 #include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/manager/concise_dcf.hpp"
 #include "eposp/manager/network_list.hpp"
+#include "eposp/vm/process_image.hpp"
 #include "eposp/yaml/reader.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <string>
@@ -136,6 +138,71 @@ NetworkSlave read_slave(Reader& in, const YAML::Node& node, const std::filesyste
     return slave;
 }
 
+// "%IX4.2": byte 4, bit 2 of the process input image.
+void read_input_bit(Reader& in, const YAML::Node& value, EventBinding& event) {
+    const auto text = in.scalar<std::string>(value, "input");
+    unsigned byte = 0;
+    unsigned bit = 0;
+    char end = 0;
+    if (std::sscanf(text.c_str(), "%%IX%u.%u%c", &byte, &bit, &end) != 2 ||
+        byte >= vm::kProcessImageSize || bit > 7) {
+        in.fail(value, fmt::format("input must be a process input bit %IX0.0 .. %IX{}.7",
+                                   vm::kProcessImageSize - 1));
+    }
+    event.input_byte = byte;
+    event.input_bit = static_cast<std::uint8_t>(bit);
+}
+
+EventBinding read_event(Reader& in, const YAML::Node& node) {
+    EventBinding event;
+    bool has_source = false;
+    std::optional<YAML::Node> rpdo_node;
+    in.each_key(node, "events",
+                {{"task",
+                  [&](const YAML::Node& value) { event.task = in.scalar<std::string>(value, "task"); }},
+                 {"on",
+                  [&](const YAML::Node& value) {
+                      static const std::map<std::string, EventBinding::Source> sources = {
+                          {"sync", EventBinding::Source::Sync},
+                          {"emcy", EventBinding::Source::Emcy},
+                          {"rpdo", EventBinding::Source::Rpdo},
+                          {"input", EventBinding::Source::Input}};
+                      const auto found = sources.find(in.scalar<std::string>(value, "on"));
+                      if (found == sources.end()) {
+                          in.fail(value, "on must be 'sync', 'emcy', 'rpdo' or 'input'");
+                      }
+                      event.source = found->second;
+                      has_source = true;
+                  }},
+                 {"port",
+                  [&](const YAML::Node& value) {
+                      const auto port = in.scalar<std::string>(value, "port");
+                      if (port != "internal" && port != "can") {
+                          in.fail(value, "port must be 'internal' or 'can'");
+                      }
+                      event.port = port == "internal" ? kInternalPort : kExternalPort;
+                  }},
+                 {"node",
+                  [&](const YAML::Node& value) {
+                      event.node = in_range<canopen::NodeId>(in, value, "node", 1, kMaxNodeId);
+                  }},
+                 {"rpdo",
+                  [&](const YAML::Node& value) {
+                      event.rpdo = in_range<std::size_t>(in, value, "rpdo", 1, 32);
+                      rpdo_node = value;
+                  }},
+                 {"input", [&](const YAML::Node& value) { read_input_bit(in, value, event); }}});
+    if (event.task.empty() || !has_source) {
+        in.fail(node, "an event needs its 'task' and what it is 'on'");
+    }
+    if (event.source == EventBinding::Source::Rpdo &&
+        (event.rpdo == 0 || (event.port == kInternalPort && event.rpdo > 4))) {
+        in.fail(rpdo_node.value_or(node),
+                "an rpdo event needs 'rpdo': 1..32 on the CAN port, 1..4 on the internal one");
+    }
+    return event;
+}
+
 NetworkFile read_network(Reader& in, const YAML::Node& root, const std::filesystem::path& base) {
     NetworkFile network;
     std::set<std::pair<std::uint8_t, canopen::NodeId>> nodes;
@@ -174,6 +241,15 @@ NetworkFile read_network(Reader& in, const YAML::Node& root, const std::filesyst
                   in.fail(value, "sync_period must be 1ms or more, in whole microseconds (0x1006)");
               }
               network.sync_period = period;
+          }},
+         {"events",
+          [&](const YAML::Node& list) {
+              if (!list.IsSequence()) {
+                  in.fail(list, "'events' must be a list");
+              }
+              for (const YAML::Node& node : list) {
+                  network.events.push_back(read_event(in, node));
+              }
           }},
          {"slaves", [&](const YAML::Node& list) {
               if (!list.IsSequence()) {

@@ -157,6 +157,7 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
         heartbeat_.on_frame(frame);
         sync_consumer_.on_frame(frame);
         pdo_.on_frame(frame);
+        emcy_.on_frame(frame);
     });
     port_.on_error_state([this](can::ErrorState state) { report_controller_state(state); });
     bind_request_nmt();
@@ -197,6 +198,7 @@ void NetworkPort::report_controller_state(can::ErrorState state) {
 }
 
 void NetworkPort::set_nmt_state(canopen::NmtState state) {
+    emcy_.set_nmt_state(state);
     if (sdo_server_) {
         sdo_server_->set_nmt_state(state);
         heartbeat_producer_->set_nmt_state(state);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/can/port.hpp"
+#include "eposp/canopen/emcy_consumer.hpp"
 #include "eposp/canopen/heartbeat_consumer.hpp"
 #include "eposp/canopen/heartbeat_producer.hpp"
 #include "eposp/canopen/nmt_master.hpp"
@@ -68,6 +69,14 @@ public:
     }
     /// Told of each SYNC the port sends, after its synchronous PDOs have been handled.
     void on_sync(std::function<void()> listener) { sync_listener_ = std::move(listener); }
+    /// Told of each EMCY a node on the port sends.
+    void on_emergency(canopen::EmcyConsumer::Listener listener) {
+        emcy_.on_emergency(std::move(listener));
+    }
+    /// Told each time RPDO `number` of the port (1..) has stored its data.
+    void on_rpdo(std::size_t number, std::function<void()> listener) {
+        pdo_.rpdo(number).on_applied(std::move(listener));
+    }
     /// The port's controller lost a received frame (its queue was full).
     void report_lost_frame();
 
@@ -89,6 +98,7 @@ private:
     canopen::SyncProducer sync_producer_;
     canopen::SyncConsumer sync_consumer_;
     canopen::PdoService pdo_;
+    canopen::EmcyConsumer emcy_;
     manager::NetworkBoot network_;
     /// Port 2 only: the EPOS P's own node.
     std::unique_ptr<canopen::SdoServer> sdo_server_;

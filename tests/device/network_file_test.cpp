@@ -50,6 +50,32 @@ TEST(NetworkFile, ReadsSlavesChecksAndAxes) {
     EXPECT_EQ(network->slaves[2].heartbeat_ms, 0u);
 }
 
+TEST(NetworkFile, ReadsTheEventsThatReleaseTasks) {
+    const auto network = parse_network_file(R"(events:
+  - {task: OnSync, on: sync}
+  - {task: OnEmcy, on: emcy, node: 4}
+  - {task: OnPdo, on: rpdo, port: internal, rpdo: 2}
+  - {task: OnKey, on: input, input: "%IX3.7"}
+)",
+                                            "net.yaml");
+    ASSERT_TRUE(network.ok()) << network.error();
+    ASSERT_EQ(network->events.size(), 4u);
+    EXPECT_EQ(network->events[1].source, EventBinding::Source::Emcy);
+    EXPECT_EQ(network->events[1].node, 4);
+    EXPECT_EQ(network->events[2].port, kInternalPort);
+    EXPECT_EQ(network->events[2].rpdo, 2u);
+    EXPECT_EQ(network->events[3].input_byte, 3u);
+    EXPECT_EQ(network->events[3].input_bit, 7);
+}
+
+TEST(RunCommand, AnEventForATaskTheProgramLacksIsAUserError) {
+    const std::string program = write_source("main.st", "PROGRAM Main\nEND_PROGRAM\n");
+    const std::string network = write_source("net.yaml", "events:\n  - {task: OnSync, on: sync}\n");
+    const auto result = eposp("run " + program + " --network " + network + " --for 1s");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("eposp run: error: event task OnSync: the program has no such task"));
+}
+
 TEST(NetworkFile, ASlaveMayTakeNodeOneWhenTheEposPHasAnotherNodeId) {
     const auto network = parse_network_file("node_id: 5\nslaves:\n  - node: 1\n", "net.yaml");
     ASSERT_TRUE(network.ok()) << network.error();
@@ -174,7 +200,15 @@ INSTANTIATE_TEST_SUITE_P(
                 "net.yaml:2:5: error: node 1 is the EPOS P's own node-ID on the CAN bus"},
         BadFile{"OwnNodeIdSetLater", "slaves:\n  - node: 7\nnode_id: 7\n",
                 "net.yaml:2:5: error: node 7 is the EPOS P's own node-ID"},
-        BadFile{"NodeIdRange", "node_id: 0\n", "net.yaml:1:10: error: node_id must be 1..127"}),
+        BadFile{"NodeIdRange", "node_id: 0\n", "net.yaml:1:10: error: node_id must be 1..127"},
+        BadFile{"EventSource", "events:\n  - {task: T, on: timer}\n",
+                "net.yaml:2:19: error: on must be 'sync', 'emcy', 'rpdo' or 'input'"},
+        BadFile{"EventWithoutTask", "events:\n  - {on: sync}\n",
+                "net.yaml:2:5: error: an event needs its 'task'"},
+        BadFile{"EventRpdo", "events:\n  - {task: T, on: rpdo, port: internal, rpdo: 5}\n",
+                "net.yaml:2:47: error: an rpdo event needs 'rpdo'"},
+        BadFile{"EventInput", "events:\n  - {task: T, on: input, input: \"%IX224.0\"}\n",
+                "net.yaml:2:33: error: input must be a process input bit"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(RunCommand, WithANetworkPrintsTheBootReport) {

@@ -59,7 +59,15 @@ void Rpdo::on_frame(const can::Frame& frame) {
         }
         pending_ = Bytes(data.begin(), data.end()); // the last one before the SYNC counts
     } else {
-        mapping_.unpack(od_, data);
+        apply(data);
+    }
+}
+
+void Rpdo::apply(std::span<const std::uint8_t> data) {
+    mapping_.unpack(od_, data);
+    // By index: a listener may add another.
+    for (std::size_t i = 0; i < applied_.size(); ++i) {
+        applied_[i]();
     }
 }
 
@@ -70,7 +78,7 @@ void Rpdo::on_sync(std::uint8_t /*counter*/) {
     }
     const Bytes data = std::move(*pending_);
     pending_.reset();
-    mapping_.unpack(od_, data);
+    apply(data);
 }
 
 void Rpdo::on_window_closed() {

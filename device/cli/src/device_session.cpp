@@ -17,6 +17,10 @@ namespace {
 
 constexpr core::Duration kTracePeriodWithoutSync = std::chrono::milliseconds(1);
 
+bool network_has_events(const std::optional<NetworkFile>& network) {
+    return network && !network->events.empty();
+}
+
 // A file the run writes must not be one it reads: a typo would destroy the program or the network.
 std::optional<std::string> overwrites_an_input(const SessionOptions& options) {
     std::vector<std::string> inputs = options.paths;
@@ -266,6 +270,16 @@ core::Result<std::unique_ptr<DeviceSession>> DeviceSession::open(const SessionOp
             return *error;
         }
         session->has_program_ = true;
+    }
+    if (network_has_events(session->network_) && !session->has_program_) {
+        return core::Error{"the network file's events release tasks of a program: give one"};
+    }
+    if (session->network_) {
+        for (const EventBinding& event : session->network_->events) {
+            if (auto error = session->device_->bind_event(event)) {
+                return *error;
+            }
+        }
     }
     // Unknown watch paths are found before the run, not after it.
     for (const std::string& path : options.watch) {

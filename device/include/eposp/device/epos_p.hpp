@@ -66,6 +66,10 @@ public:
         return slaves_;
     }
 
+    /// Lets `event` release the event task it names (docs/network.md, "Events"); the program
+    /// must be loaded. The error says why not: no such task, or not an event task.
+    std::optional<core::Error> bind_event(const EventBinding& event);
+
     /// The axes of the axis table (0x5280 + n sub 1) that a drive in this process serves: the
     /// internal EPOS2 and the simulated slaves of add_network(), in axis order.
     std::vector<TracedAxis> simulated_axes() const;
@@ -98,6 +102,7 @@ private:
     void follow_sync();
 
     core::EventLoop loop_;
+    std::vector<std::size_t> sync_tasks_; ///< event tasks released at each SYNC
     can::VirtualBus internal_bus_;
     std::unique_ptr<can::VirtualPort> internal_port_;
     std::unique_ptr<can::VirtualPort> internal_drive_port_;

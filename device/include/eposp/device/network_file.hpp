@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -38,6 +39,23 @@ struct NetworkSlave {
     std::uint16_t heartbeat_ms = 100;
 };
 
+/// A device event that releases an event task of the program (docs/network.md, "Events").
+struct EventBinding {
+    enum class Source : std::uint8_t {
+        Sync,  ///< each SYNC the EPOS P sends
+        Emcy,  ///< an EMCY from `node` (any node without one) on `port`
+        Rpdo,  ///< the data of RPDO `rpdo` of `port` stored
+        Input, ///< a rising edge of process input bit %IX`input_byte`.`input_bit`
+    };
+    std::string task;
+    Source source = Source::Sync;
+    std::uint8_t port = 2;
+    std::optional<canopen::NodeId> node;
+    std::size_t rpdo = 0;
+    std::uint32_t input_byte = 0;
+    std::uint8_t input_bit = 0;
+};
+
 /// What a user writes instead of setting objects one by one.
 struct NetworkFile {
     canopen::NodeId node_id = 1;                               ///< the EPOS P's on port 2 (0x5000)
@@ -46,6 +64,7 @@ struct NetworkFile {
     /// 0x1006 with the generate bit of 0x1005; none: no SYNC.
     std::optional<core::Duration> sync_period;
     std::vector<NetworkSlave> slaves;
+    std::vector<EventBinding> events;
 };
 
 /// Reads a network file; every mistake is an error "file:line:col: error: message" (`source`

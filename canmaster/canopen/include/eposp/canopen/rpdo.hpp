@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace eposp::canopen {
@@ -56,6 +57,10 @@ public:
     /// (ObjectDictionary::reset_to_defaults tells no listener).
     void reload();
 
+    /// Told each time received data has been stored into the mapped objects (at once, or at
+    /// the SYNC for a synchronous RPDO).
+    void on_applied(std::function<void()> listener) { applied_.push_back(std::move(listener)); }
+
     std::size_t number() const { return number_; }
     /// Valid with a usable, non-empty mapping (in whatever NMT state).
     bool active() const { return active_; }
@@ -66,12 +71,14 @@ private:
     bool accepts(const can::Frame& frame) const;
     bool synchronous() const { return comm_.transmission_type <= kSyncCyclicMax; }
     void restart_deadline();
+    void apply(std::span<const std::uint8_t> data);
 
     core::EventLoop& loop_;
     ObjectDictionary& od_;
     std::size_t number_;
     EmergencyCallback emergency_;
     std::vector<ObjectDictionary::ListenerId> listeners_;
+    std::vector<std::function<void()>> applied_;
     PdoCommunication comm_;
     PdoMapping mapping_;
     bool active_ = false;
