@@ -1,6 +1,7 @@
 #include "eposp/device/epos_p.hpp"
 
 #include "eposp/device/axis_process_data.hpp"
+#include "manufacturer_status.hpp"
 #include "network_port.hpp"
 #include "plc_objects.hpp"
 
@@ -55,6 +56,12 @@ EposP::EposP(EposPConfig config)
         });
     }
     internal_network_->on_sync([this] { follow_sync(); });
+    manufacturer_status_ = std::make_unique<ManufacturerStatus>(dictionary_.objects());
+    for (const std::uint8_t port : {kInternalPort, kExternalPort}) {
+        network_port(port).on_emergency([this, port](const canopen::Emergency& emergency) {
+            manufacturer_status_->on_emergency(port, emergency);
+        });
+    }
     internal_drive_->start();
 }
 

@@ -9,6 +9,13 @@ std::uint32_t ErrorEntry::encode() const {
            std::uint32_t{node} << 16 | code;
 }
 
+ErrorEntry ErrorEntry::decode(std::uint32_t value) {
+    return {.code = static_cast<std::uint16_t>(value),
+            .port = static_cast<std::uint8_t>((value >> 24) & 0x0F),
+            .node = static_cast<std::uint8_t>(value >> 16),
+            .warning = (value >> 31) != 0};
+}
+
 void record_error(canopen::ObjectDictionary& od, const ErrorEntry& error) {
     canopen::ErrorHistory history(od);
     history.record(error.encode());

@@ -1,6 +1,7 @@
 // The EPOS P as a library: its two ports, the internal EPOS2 and the PLC on one virtual loop.
 #include "eposp/canopen/nmt_protocol.hpp"
 #include "eposp/canopen/sdo_client.hpp"
+#include "eposp/manager/network_list.hpp"
 #include "eposp/canopen/store_restore_objects.hpp"
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/compiler/compiler.hpp"
@@ -341,6 +342,39 @@ TEST(EposP, OnTheCanBusItIsANodeWithHeartbeatAndAnSdoServer) {
     ASSERT_FALSE(heard.empty());
     EXPECT_EQ(heard.back().id, 0x709u);
     EXPECT_EQ(heard.back().payload()[0], 0x05);
+}
+
+TEST(EposP, TheManufacturerStatusRegisterGathersSlavesErrorRegistersAndMasterWarnings) {
+    EposP device;
+    const auto status = [&device] {
+        return device.objects().get_as<std::uint32_t>(0x1002, 0);
+    };
+    EXPECT_EQ(status(), 0u);
+    // Port 2 is pre-operational from power-up: its EMCY consumer listens.
+    auto nodes = device.external_bus().connect("nodes");
+    nodes->send(can::Frame::data_frame(0x085, {0x10, 0x32, 0x05, 0, 0, 0, 0, 0})); // generic+voltage
+    nodes->send(can::Frame::data_frame(0x086, {0x10, 0x81, 0x11, 0, 0, 0, 0, 0})); // generic+comm
+    device.loop().run_for(10ms);
+    EXPECT_EQ(status(), 0x15u); // bits 0, 2, 4 of table 3
+    nodes->send(can::Frame::data_frame(0x085, {0x00, 0x00, 0x00, 0, 0, 0, 0, 0})); // reset
+    device.loop().run_for(10ms);
+    EXPECT_EQ(status(), 0x11u);
+
+    // An optional slave that does not answer: a warning of the master (bits 16, 20), no bit of
+    // the error register.
+    write_u32(device, 0x1F81, 9, manager::assignment::kSlave | manager::assignment::kBootSlave);
+    device.boot_networks();
+    device.loop().run_for(2s);
+    ASSERT_EQ(history(device, 1), 0x8209'8182u);
+    EXPECT_EQ(status(), 0x0011'0011u);
+    // A CAN error of the port sets the error register, copied into bits 8..15.
+    static_cast<can::VirtualPort&>(device.external_port()).force_error_state(can::ErrorState::Passive);
+    device.loop().run_for(10ms);
+    EXPECT_EQ(status(), 0x0011'1011u); // 0x1001: the communication bit
+    // Clearing the history clears the warnings.
+    ASSERT_EQ(device.objects().write(0x1003, 0, canopen::encode(std::uint8_t{0})),
+              canopen::AbortCode::None);
+    EXPECT_EQ(status() & 0xFFFF'0000u, 0u);
 }
 
 } // namespace

@@ -20,6 +20,11 @@ namespace {
 /// allowed by socketcand's framing and costs that client nothing.
 constexpr std::string_view kFrameSeparator = " ";
 
+/// python-can 4.1 reads each handshake reply with one recv() and wants exactly `< ok >` in it:
+/// a frame sent right behind the reply to `< rawmode >` would land in the same read and fail
+/// its handshake. Frames of this first moment of raw mode wait and follow it.
+constexpr core::Duration kRawModeSettle = std::chrono::milliseconds(20);
+
 } // namespace
 
 SocketcandSession::SocketcandSession(boost::asio::ip::tcp::socket socket, std::string name,
@@ -135,6 +140,12 @@ void SocketcandSession::handle(const sc::SwitchMode& mode) {
     }
     state_ = State::Raw;
     enqueue(sc::kOk);
+    settle_ = core::ScopedTimer(bus_.loop(), bus_.loop().after(kRawModeSettle, [this] {
+                                    if (!held_frames_.empty()) {
+                                        enqueue(held_frames_);
+                                        held_frames_.clear();
+                                    }
+                                }));
 }
 
 void SocketcandSession::handle(const sc::Echo&) {
@@ -177,6 +188,10 @@ void SocketcandSession::on_bus_frame(const Frame& frame) {
     const core::Duration stamp = bus_.loop().now().time_since_epoch() + config_.epoch_offset;
     std::string message(kFrameSeparator);
     message += sc::format_received(frame, stamp);
+    if (settle_.pending()) {
+        held_frames_ += message;
+        return;
+    }
     enqueue(message);
     if (!receive_paused_ && unsent_bytes() > config_.pause_above_bytes) {
         receive_paused_ = true;

@@ -5,6 +5,7 @@
 #include "eposp/can/io/socketcand_protocol.hpp"
 #include "eposp/can/io/socketcand_server.hpp"
 #include "eposp/can/virtual_bus.hpp"
+#include "eposp/core/event_loop.hpp"
 
 #include <array>
 #include <boost/asio/ip/tcp.hpp>
@@ -75,6 +76,9 @@ private:
     State state_ = State::NoBus;
     std::unique_ptr<VirtualPort> port_;
     bool receive_paused_ = false;
+    /// Frames of the first moments of raw mode, sent once the client has read its `< ok >`.
+    std::string held_frames_;
+    core::ScopedTimer settle_;
     std::string close_reason_;
 
     std::array<char, 4096> read_buffer_{};

@@ -16,6 +16,7 @@
 
 namespace eposp::device {
 
+class ManufacturerStatus;
 class NetworkPort;
 
 struct EposPConfig {
@@ -113,6 +114,7 @@ private:
     EposPDictionary dictionary_;
     std::unique_ptr<NetworkPort> internal_network_;
     std::unique_ptr<NetworkPort> external_network_;
+    std::unique_ptr<ManufacturerStatus> manufacturer_status_;
     std::vector<std::unique_ptr<can::VirtualPort>> slave_ports_;
     std::vector<std::unique_ptr<drives::epos2::Epos2Drive>> slaves_;
 };

@@ -16,6 +16,7 @@ struct ErrorEntry {
     bool warning = false;
 
     std::uint32_t encode() const;
+    static ErrorEntry decode(std::uint32_t value);
 };
 
 /// Records `error` in 0x1003 (newest first) and sets its bits of the error register 0x1001

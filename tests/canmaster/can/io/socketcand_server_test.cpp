@@ -108,6 +108,8 @@ public:
     void disconnect() { socket_.close(); }
 
     const std::vector<std::string>& messages() const { return messages_; }
+    /// Each read as it came from the socket.
+    const std::vector<std::string>& reads() const { return reads_; }
     bool closed() const { return closed_; }
     /// The frames received, in order.
     std::vector<Frame> frames() const {
@@ -145,6 +147,7 @@ private:
                                         return;
                                     }
                                     input_.append(buffer_.data(), size);
+                                    reads_.emplace_back(buffer_.data(), size);
                                     for (std::size_t end = input_.find('>');
                                          end != std::string::npos; end = input_.find('>')) {
                                         const std::size_t start = std::min(input_.find('<'), end);
@@ -164,6 +167,7 @@ private:
     std::array<char, 4096> buffer_{};
     std::string input_;
     std::vector<std::string> messages_;
+    std::vector<std::string> reads_;
     bool connected_ = false;
     bool reading_ = true;
     bool read_pending_ = false;
@@ -285,6 +289,30 @@ TEST_F(SocketcandServerTest, FullSessionCarriesFramesBothWays) {
     client->send("< send 123 2 AA BB >");
     ASSERT_TRUE(run_until([&] { return node_received.size() == 1; }));
     EXPECT_EQ(node_received[0], Frame::data_frame(0x123, {0xAA, 0xBB}));
+}
+
+// python-can 4.1 wants each handshake reply alone in one recv(): on a busy bus the reply to
+// `< rawmode >` must not share a read with the first frames (they follow it a moment later).
+TEST_F(SocketcandServerTest, OnABusyBusTheRawModeReplyArrivesAloneAndTheFramesFollow) {
+    const core::TimerId traffic = loop.every(std::chrono::microseconds(200), [this] {
+        node->send(Frame::data_frame(0x181, {0x01}));
+    });
+    auto client = connect();
+    ASSERT_TRUE(run_until([&] { return client->messages().size() >= 1; }));
+    // A slow client: the read in progress takes the reply to `open`, and it reads again only
+    // 5 ms after asking for raw mode, when whatever the server sent by then arrives at once.
+    client->stop_reading();
+    client->send("< open can0 >");
+    ASSERT_TRUE(run_until([&] { return client->messages().size() >= 2; }));
+    client->send("< rawmode >");
+    loop.run_for(std::chrono::milliseconds(5));
+    const std::size_t reads_before = client->reads().size();
+    client->start_reading();
+    ASSERT_TRUE(run_until([&] { return client->reads().size() > reads_before; }));
+    EXPECT_EQ(client->reads()[reads_before], "< ok >");
+    ASSERT_TRUE(run_until([&] { return client->messages().size() >= 10; }));
+    loop.cancel(traffic);
+    EXPECT_EQ(client->frames().front(), Frame::data_frame(0x181, {0x01}));
 }
 
 TEST_F(SocketcandServerTest, TwoClientsExchangeFramesThroughTheBus) {
