@@ -2,8 +2,8 @@
 // task in step with the SYNC, and examples/two-axis moving both axes through raw process data.
 #include "eposp/canopen/pdo_mapping.hpp"
 #include "eposp/canopen/pdo_objects.hpp"
-#include "eposp/compiler/compiler.hpp"
 #include "eposp/device/axis_process_data.hpp"
+#include "compile_program.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/network_file.hpp"
 
@@ -23,15 +23,6 @@ std::string read_text(const std::string& relative) {
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
-}
-
-vm::Image compile_program(const std::string& source) {
-    compiler::SourceManager sources;
-    const compiler::FileId file = sources.add("main.st", source);
-    compiler::Diagnostics diagnostics;
-    auto image = compiler::compile(sources, std::span(&file, 1), diagnostics);
-    EXPECT_TRUE(image.has_value());
-    return std::move(*image);
 }
 
 NetworkFile network(std::string_view text) {

@@ -1,7 +1,7 @@
 // Event tasks released by the EPOS P's own events (docs/network.md, "Events"): each SYNC, an
 // RPDO stored, a slave's EMCY, a rising edge of a process input bit.
+#include "compile_program.hpp"
 #include "eposp/canopen/value_codec.hpp"
-#include "eposp/compiler/compiler.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/network_file.hpp"
 
@@ -46,15 +46,10 @@ events:
 class DeviceEvents : public testing::Test {
 protected:
     void SetUp() override {
-        compiler::SourceManager sources;
-        const compiler::FileId file = sources.add("main.st", kProgram);
-        compiler::Diagnostics diagnostics;
-        auto image = compiler::compile(sources, std::span(&file, 1), diagnostics);
-        ASSERT_TRUE(image.has_value());
         auto network = parse_network_file(kNetwork, "net.yaml");
         ASSERT_TRUE(network) << network.error();
         device.add_network(*network);
-        ASSERT_FALSE(device.plc().load(std::move(*image)));
+        ASSERT_FALSE(device.plc().load(compile_program(kProgram)));
         for (const EventBinding& event : network->events) {
             ASSERT_FALSE(device.bind_event(event));
         }
@@ -108,13 +103,8 @@ TEST_F(DeviceEvents, ARisingEdgeOfTheProcessInputBitReleasesItsTask) {
 }
 
 TEST(DeviceEventBinding, ATaskThatIsMissingOrNotAnEventTaskIsRefused) {
-    compiler::SourceManager sources;
-    const compiler::FileId file = sources.add("main.st", kProgram);
-    compiler::Diagnostics diagnostics;
-    auto image = compiler::compile(sources, std::span(&file, 1), diagnostics);
-    ASSERT_TRUE(image.has_value());
     EposP device;
-    ASSERT_FALSE(device.plc().load(std::move(*image)));
+    ASSERT_FALSE(device.plc().load(compile_program(kProgram)));
     EventBinding event;
     event.task = "Nowhere";
     const auto missing = device.bind_event(event);

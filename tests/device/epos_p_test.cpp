@@ -4,7 +4,7 @@
 #include "eposp/manager/network_list.hpp"
 #include "eposp/canopen/store_restore_objects.hpp"
 #include "eposp/canopen/value_codec.hpp"
-#include "eposp/compiler/compiler.hpp"
+#include "compile_program.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/error_entry.hpp"
 
@@ -15,15 +15,6 @@ namespace eposp::device {
 namespace {
 
 using namespace std::chrono_literals;
-
-vm::Image compile_program(const std::string& source) {
-    compiler::SourceManager sources;
-    const compiler::FileId file = sources.add("main.st", source);
-    compiler::Diagnostics diagnostics;
-    auto image = compiler::compile(sources, std::span(&file, 1), diagnostics);
-    EXPECT_TRUE(image.has_value());
-    return std::move(*image);
-}
 
 TEST(EposP, TheInternalEpos2BootsAsNodeOneOnPortOneOnly) {
     EposP device;
