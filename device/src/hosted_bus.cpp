@@ -145,6 +145,7 @@ std::optional<std::string> HostedBus::join_server() {
         fmt::print(stderr, "join: {}\n", event.text);
         std::fflush(stderr);
         if (event.kind == Event::Kind::Failed) {
+            join_lost_ = true;
             loop_.stop();
         }
     });
@@ -167,6 +168,9 @@ can::VirtualPort& HostedBus::attach(const std::string& name) {
 RunEnd HostedBus::run() {
     std::fflush(stdout);
     const RunEnd end = run_until_done(loop_, options_.duration);
+    if (join_lost_) {
+        return RunEnd::Lost;
+    }
     if (end == RunEnd::Interrupted) {
         fmt::print("interrupted\n");
     }

@@ -81,8 +81,9 @@ TEST(JoinCommand, TheRunEndsWhenTheServerGoesAway) {
     const auto result = run_command(
         "sh -c '" + start_in_background(bus_out, "bus --socketcand 127.0.0.1:0") + kEposp +
         " drive epos2 --join $address --for 60s > " + drive_out.string() + " 2>&1 & drive=$!; " +
-        wait_for_line(drive_out, "join: ") + "kill -INT $pid; wait $pid; wait $drive'");
+        wait_for_line(drive_out, "join: ") + "kill -INT $pid; wait $pid; wait $drive; echo drive exit $?'");
     const std::string drive = read_file(drive_out);
+    EXPECT_THAT(result.output, HasSubstr("drive exit 1")) << result.output; // cut off: a failure
     EXPECT_THAT(drive, HasSubstr("join: bus can0 of 127.0.0.1:"));
     EXPECT_THAT(drive, HasSubstr(" closed the connection\n"));
     EXPECT_THAT(drive, HasSubstr("epos2: node 1 stopped in"));

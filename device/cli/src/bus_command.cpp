@@ -37,14 +37,15 @@ int run_bus(const BusOptions& options) {
                                                       std::move(*records));
     }
 
-    host.run();
+    const RunEnd end = host.run();
     if (replay) {
         const can::ReplayReport& report = replay->report();
         fmt::print("replay: {} frames sent, {} refused, {} skipped{}\n", report.sent,
                    report.refused, report.skipped, replay->finished() ? "" : " (cut short)");
     }
     host.print_summary();
-    return 0;
+    // A lost --join server ends the run early: the nodes were cut off, which a script must see.
+    return end == RunEnd::Lost ? 1 : 0;
 }
 
 } // namespace

@@ -48,11 +48,12 @@ int run_drive(const DriveOptions& options) {
                host.socketcand_address() ? ", socketcand " + *host.socketcand_address() : "");
     std::fflush(stdout);
 
-    host.run();
+    const RunEnd end = host.run();
     fmt::print("epos2: node {} stopped in {}\n", options.node_id,
                drives::motion::to_string(drive.state()));
     host.print_summary();
-    return 0;
+    // A lost --join server ends the run early: the nodes were cut off, which a script must see.
+    return end == RunEnd::Lost ? 1 : 0;
 }
 
 } // namespace

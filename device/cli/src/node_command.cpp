@@ -114,10 +114,11 @@ int run_node(const NodeOptions& options) {
                host.socketcand_address() ? ", socketcand " + *host.socketcand_address() : "");
     node.start();
 
-    host.run();
+    const RunEnd end = host.run();
     fmt::print("node {}: {}\n", options.node_id, canopen::to_string(node.nmt_state()));
     host.print_summary();
-    return 0;
+    // A lost --join server ends the run early: the nodes were cut off, which a script must see.
+    return end == RunEnd::Lost ? 1 : 0;
 }
 
 } // namespace

@@ -60,8 +60,8 @@ public:
     /// the summary shows its statistics.
     can::VirtualPort& attach(const std::string& name);
 
-    /// Runs until --for elapses, a signal comes or (virtual time) nothing is left to do; prints
-    /// "interrupted" when a signal ended it.
+    /// Runs until --for elapses, a signal comes, (virtual time) nothing is left to do, or the
+    /// server of --join goes away (RunEnd::Lost); prints "interrupted" when a signal ended it.
     RunEnd run();
     /// The bus statistics and those of every port, the host's and the socketcand clients'.
     void print_summary() const;
@@ -76,6 +76,7 @@ private:
     can::VirtualBus bus_;
     can::TraceClock clock_;
     std::unique_ptr<TraceFiles> traces_;
+    bool join_lost_ = false;
     std::vector<std::unique_ptr<can::VirtualPort>> own_ports_;
     std::unique_ptr<can::io::SocketcandServer> server_;
     std::unique_ptr<can::io::SocketCanPort> socketcan_;

@@ -7,7 +7,12 @@
 namespace eposp::device {
 
 /// How a long-running command ended.
-enum class RunEnd { Elapsed, Interrupted, Idle };
+enum class RunEnd {
+    Elapsed,
+    Interrupted,
+    Idle,
+    Lost, ///< the bus it joined went away (HostedBus)
+};
 
 /// Runs `loop` for `duration` (virtual or wall time, as the loop runs) or, without one, until
 /// SIGINT or SIGTERM; a signal always ends the run cleanly after the current event. In virtual
