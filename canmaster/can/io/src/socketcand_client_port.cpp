@@ -1,6 +1,7 @@
 #include "eposp/can/io/socketcand_client_port.hpp"
 
 #include "eposp/can/io/socketcand_protocol.hpp"
+#include "outgoing_bytes.hpp"
 #include "tcp_address.hpp"
 
 #include <array>
@@ -79,7 +80,7 @@ private:
     void enqueue(std::string_view message);
     void flush();
     void on_written(boost::system::error_code error);
-    std::size_t unsent_bytes() const { return held_.size() + pending_.size() + in_flight_.size(); }
+    std::size_t unsent_bytes() const { return held_.size() + outgoing_.size(); }
 
     void report(Event::Kind kind, std::string text);
     void fail(std::string reason);
@@ -98,9 +99,7 @@ private:
     std::array<char, 4096> read_buffer_{};
     std::string input_;
     std::string held_;      ///< frames sent before raw mode is on
-    std::string pending_;   ///< messages waiting for the write in flight
-    std::string in_flight_; ///< what the current write sends
-    bool writing_ = false;
+    OutgoingBytes outgoing_;
 };
 
 // ---- Connecting and the handshake -------------------------------------------------------------
@@ -247,24 +246,21 @@ SendStatus SocketcandClientPort::Connection::send(const Frame& frame) {
 }
 
 void SocketcandClientPort::Connection::enqueue(std::string_view message) {
-    pending_ += message;
+    outgoing_.append(message);
     flush();
 }
 
 void SocketcandClientPort::Connection::flush() {
-    if (writing_ || pending_.empty() || state_ == State::Failed) {
+    if (state_ == State::Failed) {
         return;
     }
-    in_flight_.swap(pending_);
-    pending_.clear();
-    writing_ = true;
-    boost::asio::async_write(socket_, boost::asio::buffer(in_flight_),
-                             [self = shared_from_this()](boost::system::error_code error,
-                                                         std::size_t) { self->on_written(error); });
+    outgoing_.write_next(socket_, [self = shared_from_this()](boost::system::error_code error) {
+        self->on_written(error);
+    });
 }
 
 void SocketcandClientPort::Connection::on_written(boost::system::error_code error) {
-    writing_ = false;
+    outgoing_.written();
     if (state_ == State::Failed) {
         return;
     }
@@ -272,7 +268,6 @@ void SocketcandClientPort::Connection::on_written(boost::system::error_code erro
         fail(fmt::format("writing to {} failed: {}", address_, error.message()));
         return;
     }
-    in_flight_.clear();
     flush();
 }
 
@@ -299,7 +294,7 @@ void SocketcandClientPort::Connection::close() {
     state_ = State::Failed;
     handshake_timer_.cancel();
     held_.clear();
-    pending_.clear();
+    outgoing_.drop_pending();
     boost::system::error_code ignored; // the peer may already be gone; nothing to do about it
     socket_.shutdown(tcp::socket::shutdown_both, ignored);
     socket_.close(ignored);

@@ -212,7 +212,7 @@ void SocketcandSession::enqueue(std::string_view message) {
     if (state_ == State::Closed) {
         return;
     }
-    pending_ += message;
+    outgoing_.append(message);
     if (unsent_bytes() > config_.disconnect_above_bytes) {
         close_soon("it does not read what it is sent");
         return;
@@ -221,19 +221,16 @@ void SocketcandSession::enqueue(std::string_view message) {
 }
 
 void SocketcandSession::flush() {
-    if (writing_ || pending_.empty() || state_ == State::Closed) {
+    if (state_ == State::Closed) {
         return;
     }
-    in_flight_.swap(pending_);
-    pending_.clear();
-    writing_ = true;
-    boost::asio::async_write(socket_, boost::asio::buffer(in_flight_),
-                             [self = shared_from_this()](boost::system::error_code error,
-                                                         std::size_t) { self->on_written(error); });
+    outgoing_.write_next(socket_, [self = shared_from_this()](boost::system::error_code error) {
+        self->on_written(error);
+    });
 }
 
 void SocketcandSession::on_written(boost::system::error_code error) {
-    writing_ = false;
+    outgoing_.written();
     if (state_ == State::Closed) {
         return;
     }
@@ -241,9 +238,8 @@ void SocketcandSession::on_written(boost::system::error_code error) {
         close(fmt::format("write failed: {}", error.message()));
         return;
     }
-    in_flight_.clear();
     flush();
-    if (state_ == State::Closing && !writing_) {
+    if (state_ == State::Closing && !outgoing_.writing()) {
         close(close_reason_);
         return;
     }
@@ -260,7 +256,7 @@ void SocketcandSession::close_after_reply(std::string_view reply, std::string re
     state_ = State::Closing;
     close_reason_ = std::move(reason);
     port_.reset(); // no more bus traffic for a client that is being sent away
-    if (!writing_) {
+    if (!outgoing_.writing()) {
         close(close_reason_);
     }
 }

@@ -6,6 +6,7 @@
 #include "eposp/can/io/socketcand_server.hpp"
 #include "eposp/can/virtual_bus.hpp"
 #include "eposp/core/event_loop.hpp"
+#include "outgoing_bytes.hpp"
 
 #include <array>
 #include <boost/asio/ip/tcp.hpp>
@@ -56,7 +57,7 @@ private:
     void enqueue(std::string_view message);
     void flush();
     void on_written(boost::system::error_code error);
-    std::size_t unsent_bytes() const { return pending_.size() + in_flight_.size(); }
+    std::size_t unsent_bytes() const { return outgoing_.size(); }
     void resume_if_drained();
 
     /// Says why in an error message, then closes once it is sent.
@@ -83,9 +84,7 @@ private:
 
     std::array<char, 4096> read_buffer_{};
     std::string input_;
-    std::string pending_;   ///< messages waiting for the write in flight
-    std::string in_flight_; ///< what the current write sends
-    bool writing_ = false;
+    OutgoingBytes outgoing_;
 };
 
 } // namespace eposp::can::io
