@@ -1,5 +1,7 @@
 #include "eposp/device/hosted_bus.hpp"
 
+#include "eposp/device/socketcand_hosting.hpp"
+
 #include "eposp/can/candump_log_writer.hpp"
 #include "eposp/can/pcap_writer.hpp"
 
@@ -78,21 +80,11 @@ std::optional<std::string> HostedBus::open_outside_world() {
     attach("monitor");
 
     if (options_.socketcand) {
-        auto opened = can::io::SocketcandServer::open(
-            bus_, {.listen = *options_.socketcand, .epoch_offset = clock_.epoch_offset()});
+        auto opened = serve_socketcand(bus_, *options_.socketcand, clock_.epoch_offset());
         if (!opened) {
             return opened.error();
         }
         server_ = std::move(*opened);
-        server_->on_client_event([](const can::io::SocketcandClientEvent& event) {
-            if (event.kind == can::io::SocketcandClientEvent::Kind::Connected) {
-                fmt::print("socketcand: {} joined from {}\n", event.client, event.remote);
-            } else {
-                fmt::print("socketcand: {} left ({})\n", event.client, event.reason);
-            }
-            std::fflush(stdout);
-        });
-        fmt::print("socketcand: listening on {} (bus {})\n", server_->address(), options_.name);
     }
 
     if (options_.socketcan) {

@@ -6,10 +6,10 @@
 #include "commands.hpp"
 #include "device_session.hpp"
 #include "eposp/can/io/socketcan_port.hpp"
-#include "eposp/can/io/socketcand_server.hpp"
 #include "eposp/can/port_bridge.hpp"
 #include "eposp/can/trace_clock.hpp"
 #include "eposp/device/run_control.hpp"
+#include "eposp/device/socketcand_hosting.hpp"
 #include "options.hpp"
 
 #include <chrono>
@@ -44,22 +44,11 @@ core::Result<OutsideWorld> open_outside_world(const ServeOptions& options, EposP
         const auto clock = can::TraceClock::aligned(
             device.loop().now(),
             std::chrono::time_point_cast<core::Duration>(std::chrono::system_clock::now()));
-        auto server = can::io::SocketcandServer::open(
-            bus, {.listen = *options.socketcand, .epoch_offset = clock.epoch_offset()});
+        auto server = serve_socketcand(bus, *options.socketcand, clock.epoch_offset());
         if (!server) {
             return core::Error{fmt::format("--socketcand: {}", server.error())};
         }
         world.server = std::move(*server);
-        world.server->on_client_event([](const can::io::SocketcandClientEvent& event) {
-            if (event.kind == can::io::SocketcandClientEvent::Kind::Connected) {
-                fmt::print("socketcand: {} joined from {}\n", event.client, event.remote);
-            } else {
-                fmt::print("socketcand: {} left ({})\n", event.client, event.reason);
-            }
-            std::fflush(stdout);
-        });
-        fmt::print("socketcand: listening on {} (bus {})\n", world.server->address(),
-                   bus.config().name);
     }
     if (options.socketcan) {
         auto port = can::io::SocketCanPort::open(device.loop(), *options.socketcan);

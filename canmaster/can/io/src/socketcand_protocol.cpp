@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <optional>
 #include <span>
+#include <variant>
 #include <vector>
 
 namespace eposp::can::io::socketcand {
@@ -203,6 +204,19 @@ std::string format_id(const Frame& frame) {
     return frame.extended ? fmt::format("{:08X}", frame.id) : fmt::format("{:03X}", frame.id);
 }
 
+// The words between a message's brackets (at least one), or why there are none: what both
+// sides' parsers start from.
+std::variant<std::vector<std::string_view>, Malformed> message_words(std::string_view message) {
+    if (message.size() < 2 || message.front() != '<' || message.back() != '>') {
+        return Malformed{"a message is enclosed in < and >"};
+    }
+    auto fields = split_fields(message.substr(1, message.size() - 2));
+    if (fields.empty()) {
+        return Malformed{"empty message"};
+    }
+    return fields;
+}
+
 } // namespace
 
 Scan scan_message(std::string_view buffer) {
@@ -243,13 +257,11 @@ std::string_view to_string(Mode mode) {
 }
 
 Command parse_command(std::string_view message) {
-    if (message.size() < 2 || message.front() != '<' || message.back() != '>') {
-        return Malformed{"a message is enclosed in < and >"};
+    auto words = message_words(message);
+    if (const auto* malformed = std::get_if<Malformed>(&words)) {
+        return *malformed;
     }
-    const auto fields = split_fields(message.substr(1, message.size() - 2));
-    if (fields.empty()) {
-        return Malformed{"empty message"};
-    }
+    const auto& fields = std::get<std::vector<std::string_view>>(words);
     const std::string_view name = fields.front();
     const auto args = std::span(fields).subspan(1);
     if (name == "open") {
@@ -318,13 +330,11 @@ std::string format_received(const Frame& frame, core::Duration since_epoch) {
 }
 
 ServerMessage parse_server_message(std::string_view message) {
-    if (message.size() < 2 || message.front() != '<' || message.back() != '>') {
-        return Malformed{"a message is enclosed in < and >"};
+    auto words = message_words(message);
+    if (const auto* malformed = std::get_if<Malformed>(&words)) {
+        return *malformed;
     }
-    const auto fields = split_fields(message.substr(1, message.size() - 2));
-    if (fields.empty()) {
-        return Malformed{"empty message"};
-    }
+    const auto& fields = std::get<std::vector<std::string_view>>(words);
     const std::string_view name = fields.front();
     const auto args = std::span(fields).subspan(1);
     const bool bare = args.empty();
