@@ -116,6 +116,32 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int32_t>("Main.x"), 2);
 }
 
+TEST(Enumerations, StartAtTheirFirstValueWhateverItsNumber) {
+    // 6.4.4.2: without an initial value an enumerated variable holds the first enumerator, in
+    // variables, structure members and FB inputs left out of a call alike.
+    StProgram run(R"(
+TYPE Direction : (Up := 1, Down, Sideways := 7); END_TYPE
+TYPE Holder : STRUCT d : Direction; END_STRUCT; END_TYPE
+FUNCTION_BLOCK Fb
+  VAR_INPUT d : Direction; END_VAR
+  VAR_OUTPUT x : BOOL; END_VAR
+  x := d = Up;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR v : Direction; h : Holder; f : Fb; a, b, c : BOOL; END_VAR
+a := v = Up;
+b := h.d = Up;
+f();
+c := f.x;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_TRUE(run.get<bool>("Main.a"));
+    EXPECT_TRUE(run.get<bool>("Main.b"));
+    EXPECT_TRUE(run.get<bool>("Main.c"));
+}
+
 TEST(CaseStatement, EnumeratorsNamedLikeStandardFunctions) {
     // MOVE, SEL and LIMIT are standard functions; where a value is wanted they are the
     // enumerators, and called they are still the functions.

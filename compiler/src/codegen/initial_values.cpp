@@ -245,6 +245,13 @@ const std::vector<std::uint8_t>& ProgramGenerator::default_value(const sema::Typ
             }
         }
         break;
+    case sema::TypeKind::Enum:
+        // 6.4.4.2: an enumerated type starts at its first value, whatever number that has.
+        if (!type.enumerators.empty()) {
+            const auto first = integer_bytes(type.enumerators.front().second, type.size);
+            std::copy(first.begin(), first.end(), bytes.begin());
+        }
+        break;
     default:
         if (type.range) {
             // 6.4.4.4: a subrange starts at its lower bound, not at 0.
