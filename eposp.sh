@@ -78,6 +78,7 @@ setup) setup ;;
 build) setup && build build ;;
 demo)
     setup && build build
+    examples/pick-and-place/run.sh build/device/eposp
     examples/two-axis/run.sh build/device/eposp
     examples/plc-basics/run.sh build/device/eposp
     ;;

@@ -3,15 +3,19 @@
 #include "codegen/program_generator.hpp"
 #include "eposp/compiler/types/front_end.hpp"
 
+#include <vector>
+
 namespace eposp::compiler {
 
 std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId> files,
-                                 Diagnostics& diagnostics) {
-    const auto front_end = types::resolve_names(sources, files, diagnostics);
+                                 Diagnostics& diagnostics, std::span<const FileId> libraries) {
+    std::vector<FileId> all(files.begin(), files.end());
+    all.insert(all.end(), libraries.begin(), libraries.end());
+    const auto front_end = types::resolve_names(sources, all, diagnostics);
     if (diagnostics.has_errors()) {
         return std::nullopt;
     }
-    codegen::ProgramGenerator generator({*front_end->model, front_end->units},
+    codegen::ProgramGenerator generator({*front_end->model, front_end->units, libraries.size()},
                                         {*front_end->library_model, front_end->library_units},
                                         diagnostics);
     return generator.generate();

@@ -17,12 +17,14 @@ void AxisTrace::sample() {
     std::string rows;
     for (const TracedAxis& traced : axes_) {
         const canopen::ObjectDictionary& od = traced.drive->objects();
-        fmt::format_to(std::back_inserter(rows), "{}.{:09},{},{},{},{},{},{},{},{},{}\n",
+        fmt::format_to(std::back_inserter(rows), "{}.{:09},{},{},{},{},{},{},{},{},{},{}\n",
                        ns / 1'000'000'000, ns % 1'000'000'000, traced.axis,
                        od.get_as<std::uint16_t>(0x6041, 0), od.get_as<std::int8_t>(0x6061, 0),
                        od.get_as<std::int32_t>(0x607A, 0), od.get_as<std::int32_t>(0x6062, 0),
                        od.get_as<std::int32_t>(0x6064, 0), od.get_as<std::int32_t>(0x606B, 0),
-                       od.get_as<std::int32_t>(0x606C, 0), od.get_as<std::int16_t>(0x6078, 0));
+                       od.get_as<std::int32_t>(0x606C, 0), od.get_as<std::int16_t>(0x6078, 0),
+                       traced.driver != nullptr ? plcopen::name(traced.driver->state())
+                                                : std::string_view{});
     }
     output_.write(rows);
 }

@@ -1,5 +1,6 @@
 #include "eposp/device/epos_p.hpp"
 
+#include "device_axis_link.hpp"
 #include "eposp/device/axis_process_data.hpp"
 #include "manufacturer_status.hpp"
 #include "network_port.hpp"
@@ -56,6 +57,11 @@ EposP::EposP(EposPConfig config)
         });
     }
     internal_network_->on_sync([this] { follow_sync(); });
+    axis_link_ = std::make_unique<DeviceAxisLink>(
+        dictionary_.objects(), plc_.runtime().process_image(),
+        [this](std::uint8_t port) -> NetworkPort& { return network_port(port); });
+    motion_ = std::make_unique<plcopen::MotionLibrary>(*axis_link_);
+    motion_->register_blocks(plc_.natives());
     manufacturer_status_ = std::make_unique<ManufacturerStatus>(dictionary_.objects());
     for (const std::uint8_t port : {kInternalPort, kExternalPort}) {
         network_port(port).on_emergency([this, port](const canopen::Emergency& emergency) {
@@ -80,8 +86,8 @@ std::optional<core::Error> EposP::bind_event(const EventBinding& event) {
         sync_tasks_.push_back(*task);
         break;
     case EventBinding::Source::Emcy:
-        network_port(event.port).on_emergency(
-            [raise, node = event.node](const canopen::Emergency& emergency) {
+        network_port(event.port)
+            .on_emergency([raise, node = event.node](const canopen::Emergency& emergency) {
                 if (!node || emergency.node == *node) {
                     raise();
                 }
@@ -152,15 +158,16 @@ void EposP::add_network(const NetworkFile& network) {
 std::vector<TracedAxis> EposP::simulated_axes() const {
     std::vector<TracedAxis> axes;
     for (std::uint8_t axis = 0; axis < kAxisCount; ++axis) {
-        const auto slave =
-            dictionary_.objects().get_as<std::uint8_t>(static_cast<std::uint16_t>(kAxisIndex + axis), 1);
+        const auto slave = dictionary_.objects().get_as<std::uint8_t>(
+            static_cast<std::uint16_t>(kAxisIndex + axis), 1);
+        const plcopen::AxisDriver* driver = &motion_->axis(axis);
         if (slave == kInternalSlave) {
-            axes.push_back({axis, internal_drive_.get()});
+            axes.push_back({axis, internal_drive_.get(), driver});
             continue;
         }
         for (const auto& drive : slaves_) {
             if (drive->node().node_id() == slave) {
-                axes.push_back({axis, drive.get()});
+                axes.push_back({axis, drive.get(), driver});
             }
         }
     }

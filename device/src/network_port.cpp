@@ -116,7 +116,7 @@ manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint
 
 NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::ObjectDictionary& od,
                          std::uint8_t port_code)
-    : port_(port), od_(od), port_code_(port_code), sdo_(loop, port), nmt_(port),
+    : loop_(loop), port_(port), od_(od), port_code_(port_code), sdo_(loop, port), nmt_(port),
       heartbeat_(loop, od, {}, port_code), sync_producer_(loop, port, od),
       sync_consumer_(loop, od, [this](std::uint16_t code) { record_port_error(code); }),
       pdo_(
@@ -142,8 +142,8 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
     sync_producer_.on_sent([this](const can::Frame& frame) { sync_consumer_.on_frame(frame); });
     sync_consumer_.on_sync([this](const canopen::SyncEvent& sync) {
         pdo_.on_sync(sync.counter.value_or(0));
-        if (sync_listener_) {
-            sync_listener_();
+        for (const auto& listener : sync_listeners_) {
+            listener();
         }
     });
     sync_consumer_.on_window_closed([this] { pdo_.on_window_closed(); });

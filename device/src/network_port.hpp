@@ -67,8 +67,12 @@ public:
                                  std::vector<manager::ConfigurationWrite> writes) {
         configurations_[node] = std::move(writes);
     }
-    /// Told of each SYNC the port sends, after its synchronous PDOs have been handled.
-    void on_sync(std::function<void()> listener) { sync_listener_ = std::move(listener); }
+    /// Told of each SYNC the port sends, after its synchronous PDOs have been handled; every
+    /// listener added is told, in the order they were added.
+    void on_sync(std::function<void()> listener) { sync_listeners_.push_back(std::move(listener)); }
+    /// The SDO client the manager reaches the port's slaves with (the motion blocks use it too).
+    canopen::SdoClient& sdo() { return sdo_; }
+    core::EventLoop& loop() { return loop_; }
     /// Told of each EMCY a node on the port sends.
     void on_emergency(canopen::EmcyConsumer::Listener listener) {
         emcy_.on_emergency(std::move(listener));
@@ -89,6 +93,7 @@ private:
     /// The state of the controller's own services on this port.
     void set_nmt_state(canopen::NmtState state);
 
+    core::EventLoop& loop_;
     can::Port& port_;
     canopen::ObjectDictionary& od_;
     std::uint8_t port_code_;
@@ -104,7 +109,7 @@ private:
     std::unique_ptr<canopen::SdoServer> sdo_server_;
     std::unique_ptr<canopen::HeartbeatProducer> heartbeat_producer_;
     SlaveConfigurations configurations_;
-    std::function<void()> sync_listener_;
+    std::vector<std::function<void()>> sync_listeners_;
 };
 
 } // namespace eposp::device

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eposp/compiler/compiler.hpp"
+#include "eposp/device/program_compiler.hpp"
 #include "eposp/vm/image.hpp"
 
 #include <gtest/gtest.h>
@@ -9,13 +9,14 @@
 
 namespace eposp::device {
 
-/// The image of an ST program of one file, for a test that loads it into an EposP; a program
-/// that does not compile fails the test.
+/// The image of an ST program of one file (with the motion library), for a test that loads it
+/// into an EposP; a program that does not compile fails the test.
 inline vm::Image compile_program(const std::string& source) {
     compiler::SourceManager sources;
     const compiler::FileId file = sources.add("main.st", source);
     compiler::Diagnostics diagnostics;
-    auto image = compiler::compile(sources, std::span(&file, 1), diagnostics);
+    auto image = compile_program(sources, std::span(&file, 1), diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << compiler::render(diagnostics, sources);
     EXPECT_TRUE(image.has_value());
     return image ? std::move(*image) : vm::Image{};
 }

@@ -11,8 +11,8 @@ namespace eposp::device {
 namespace {
 
 const std::string kExample = std::string(EPOSP_SOURCE_DIR) + "/examples/two-axis/";
-const std::string kRunExample = "run " + kExample + "two-axis.st --network " + kExample +
-                                "network.yaml --for 5s";
+const std::string kRunExample =
+    "run " + kExample + "two-axis.st --network " + kExample + "network.yaml --for 5s";
 
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> lines;
@@ -38,7 +38,8 @@ TEST(RunNetwork, TheTwoAxisExampleBootsBothPortsAndTracesBothAxesToTheirTargets)
     const auto rows = lines_of(read_file(trace));
     ASSERT_EQ(rows.size(), 1 + 2 * 5001u); // the header, both axes at 0, 1, ... 5000 ms
     EXPECT_EQ(rows[0] + "\n", "time_s,axis,statusword,mode,target_position,position_demand,"
-                              "actual_position,velocity_demand,actual_velocity,current_mA\n");
+                              "actual_position,velocity_demand,actual_velocity,current_mA,"
+                              "plcopen_state\n");
     // At the end both are at their targets, Operation Enabled with Target Reached (0x0537 =
     // 1335), in profile position mode (1), standing still.
     EXPECT_TRUE(rows[rows.size() - 2].starts_with("5.000000000,0,1335,1,20000,20000,20000,0,0,"))
@@ -74,8 +75,8 @@ TEST(RunNetwork, TwoRunsOfTheSameNetworkAndProgramGiveByteIdenticalTracesAndBusL
 TEST(RunNetwork, AnOutputThatNamesAnInputIsRefusedAndTheInputKept) {
     const std::string network = read_file(kExample + "network.yaml");
     const auto copy = write_source("net.yaml", network);
-    const auto result = eposp("run " + kExample + "two-axis.st --network " + copy +
-                              " --for 1s --can-log " + copy);
+    const auto result =
+        eposp("run " + kExample + "two-axis.st --network " + copy + " --for 1s --can-log " + copy);
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_NE(result.output.find("error: --can-log " + copy + " would overwrite the input"),
               std::string::npos)
@@ -88,8 +89,7 @@ TEST(RunNetwork, ADirectoryWhereTheTraceBelongsIsAClearError) {
     std::filesystem::create_directories(directory);
     const auto result = eposp(kRunExample + " --trace " + directory.string());
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_NE(result.output.find("eposp run: error: --trace"), std::string::npos)
-        << result.output;
+    EXPECT_NE(result.output.find("eposp run: error: --trace"), std::string::npos) << result.output;
 }
 
 // The main part of `./eposp.sh demo`.

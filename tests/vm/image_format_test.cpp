@@ -99,7 +99,7 @@ INSTANTIATE_TEST_SUITE_P(
         Corruption{"Empty", [](auto& b) { b.clear(); }, "not a program image (bad magic)"},
         Corruption{"HeaderCut", [](auto& b) { b.resize(10); }, "truncated image header"},
         Corruption{"OtherVersion", [](auto& b) { b[4] = 99; },
-                   "image version 99 is not supported (expected 3)"},
+                   "image version 99 is not supported (expected 4)"},
         Corruption{"ReservedHeaderByte", [](auto& b) { b[7] = 9; },
                    "reserved header bytes are not zero"},
         Corruption{"FlippedBit", [](auto& b) { b[40] ^= 0x10; },
@@ -129,7 +129,7 @@ INSTANTIATE_TEST_SUITE_P(
                                  "section code missing or truncated"},
                       Corruption{"BooleanOtherThan0Or1", // the import's has_result
                                  [](auto& b) {
-                                     b[b.size() - 7] = 2;
+                                     b[b.size() - 11] = 2;
                                      reseal(b);
                                  },
                                  "section imports: invalid boolean 2"},

@@ -54,6 +54,13 @@ std::string signature(const NativeSignature& signature) {
     if (signature.has_result) {
         text += fmt::format(" : {}", scalar_name(signature.result));
     }
+    if (!signature.instance.empty()) {
+        text += " instance {";
+        for (std::size_t i = 0; i < signature.instance.size(); ++i) {
+            text += fmt::format("{}{}", i == 0 ? "" : ", ", scalar_name(signature.instance[i]));
+        }
+        text += "}";
+    }
     return text;
 }
 

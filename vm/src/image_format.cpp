@@ -235,6 +235,8 @@ void describe_imports(Io& io, std::vector<NativeImport>& imports) {
         io.enumerator(i.signature.result, Scalar::Ptr, "scalar type");
         io.list(i.signature.parameters, 1,
                 [&](Scalar& s) { io.enumerator(s, Scalar::Ptr, "scalar type"); });
+        io.list(i.signature.instance, 1,
+                [&](Scalar& s) { io.enumerator(s, Scalar::Ptr, "scalar type"); });
     });
 }
 

@@ -24,8 +24,12 @@ std::uint32_t PouGenerator::generate() {
     declare_locals();
     end_ = builder_.label();
     initialise_frame();
-    statements(pou_.body);
-    report_unused();
+    if (program_.is_native_block(pou_)) {
+        call_native_block();
+    } else {
+        statements(pou_.body);
+        report_unused();
+    }
     bind(end_);
     emit(Opcode::Ret);
     const std::uint32_t frame = sema::align_up(frame_max_, 8);

@@ -73,6 +73,9 @@ private:
 
     // --- pou_generator.cpp: variables, temporaries, moves ----------------------------------
     void declare_locals();
+    /// The body of a native block: its native called with the instance's address; the
+    /// signature lists the instance's fields (native_block.cpp).
+    void call_native_block();
     void initialise_frame();
     /// Warnings: variables never used, a function result never assigned.
     void report_unused();

@@ -65,6 +65,11 @@ ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnos
             pou_models_[&pou] = &program_.model;
         }
     }
+    for (const ast::CompilationUnit& unit : program_.units.last(program_.linked)) {
+        for (const ast::Pou& pou : unit.pous) {
+            linked_pous_.insert(&pou);
+        }
+    }
 }
 
 void ProgramGenerator::collect_constants(const std::vector<ast::DeclarationSection>& sections) {
@@ -119,6 +124,11 @@ bool ProgramGenerator::is_host_function(const ast::Pou& pou) const {
            pou.kind == ast::PouKind::Function && pou.body.empty();
 }
 
+bool ProgramGenerator::is_native_block(const ast::Pou& pou) const {
+    return linked_pous_.contains(&pou) && pou.kind == ast::PouKind::FunctionBlock &&
+           pou.body.empty();
+}
+
 std::uint32_t ProgramGenerator::import(const std::string& name,
                                        const vm::NativeSignature& signature) {
     if (const auto it = imports_.find(name); it != imports_.end()) {
@@ -153,8 +163,10 @@ std::optional<vm::Image> ProgramGenerator::generate() {
             lay_out_globals(configuration);
         }
     }
-    // Every user POU is generated, called or not, so that all its errors are reported.
-    for (const ast::CompilationUnit& unit : program_.units) {
+    // Every user POU is generated, called or not, so that all its errors are reported; a
+    // linked library's only when called.
+    for (const ast::CompilationUnit& unit :
+         program_.units.first(program_.units.size() - program_.linked)) {
         for (const ast::Pou& pou : unit.pous) {
             pou_index(pou);
         }

@@ -28,6 +28,9 @@ std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size);
 struct PouSource {
     const sema::SemanticModel& model;
     std::span<const ast::CompilationUnit> units;
+    /// The last `linked` units are linked libraries (compile()'s `libraries`): their POUs are
+    /// generated only when called, and a FUNCTION_BLOCK without statements there is native.
+    std::size_t linked = 0;
 };
 
 /// Generates the image of a whole program: static layout of globals and program instances
@@ -60,6 +63,9 @@ public:
     const ast::Pou* library_pou(std::string_view name) const;
     /// A FUNCTION without statements in the built-in library: a host function (the clock).
     bool is_host_function(const ast::Pou& pou) const;
+    /// A FUNCTION_BLOCK without statements in a linked library: its body is C++, a native
+    /// function of the same name called with the instance's address (vm/native.hpp).
+    bool is_native_block(const ast::Pou& pou) const;
     std::uint32_t import(const std::string& name, const vm::NativeSignature& signature);
     /// Static data holding `bytes` (shared between equal constants).
     vm::Operand constant(const std::vector<std::uint8_t>& bytes, std::uint32_t align);
@@ -139,6 +145,7 @@ private:
     std::unordered_set<std::string> access_names_;     // folded
     std::unordered_map<const ast::Pou*, std::uint32_t> pou_indices_;
     std::unordered_map<const ast::Pou*, const sema::SemanticModel*> pou_models_;
+    std::unordered_set<const ast::Pou*> linked_pous_; ///< the POUs of linked libraries
     std::deque<QueuedPou> queue_;
     std::unordered_map<std::string, std::uint32_t> imports_;
     std::map<std::pair<std::vector<std::uint8_t>, std::uint32_t>, std::uint32_t> constants_;

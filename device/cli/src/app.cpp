@@ -1,5 +1,5 @@
-#include "commands.hpp"
 #include "cli.hpp"
+#include "commands.hpp"
 #include "version.hpp"
 
 #include <CLI/CLI.hpp>
@@ -24,6 +24,7 @@ int run_cli(int argc, char** argv) {
     cli::add_run_command(app, exit_code);
     cli::add_serve_command(app, exit_code);
     cli::add_bench_command(app, exit_code);
+    cli::add_plot_command(app, exit_code);
 
     try {
         app.parse(argc, argv);

@@ -1,6 +1,6 @@
 #include "program_input.hpp"
 
-#include "eposp/compiler/compiler.hpp"
+#include "eposp/device/program_compiler.hpp"
 #include "eposp/vm/image_format.hpp"
 
 #include <fmt/format.h>
@@ -41,7 +41,7 @@ core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths) {
         }
         files.push_back(*file);
     }
-    auto image = compiler::compile(sources, files, diagnostics);
+    auto image = compile_program(sources, files, diagnostics);
     fmt::print(stderr, "{}", compiler::render(diagnostics, sources));
     if (!image) {
         return core::Error{

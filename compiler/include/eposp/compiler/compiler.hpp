@@ -18,7 +18,12 @@ namespace eposp::compiler {
 /// (`name`), a program instance as its instance name (`Inst0`, or the program's name when there
 /// is no configuration) with its variables below it (`Inst0.x`). A program without a configuration
 /// runs in a cyclic task of 10 ms.
+///
+/// `libraries` are files of declarations the host links with every program (plcopen's motion
+/// blocks): their types and POUs are visible like the program's own, their POUs are generated
+/// only when called, and a FUNCTION_BLOCK without statements in them is a native block whose
+/// body the host registers in C++ (docs/runtime.md, "Native function blocks").
 std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId> files,
-                                 Diagnostics& diagnostics);
+                                 Diagnostics& diagnostics, std::span<const FileId> libraries = {});
 
 } // namespace eposp::compiler

@@ -8,6 +8,7 @@
 #include "eposp/device/plc.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
 #include "eposp/manager/network_boot.hpp"
+#include "eposp/plcopen/motion_library.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -16,6 +17,7 @@
 
 namespace eposp::device {
 
+class DeviceAxisLink;
 class ManufacturerStatus;
 class NetworkPort;
 
@@ -57,6 +59,8 @@ public:
 
     core::EventLoop& loop() { return loop_; }
     Plc& plc() { return plc_; }
+    /// The motion blocks' axes (the axis table 0x5280 - 0x529F) as the PLC drives them.
+    const plcopen::MotionLibrary& motion() const { return *motion_; }
     canopen::ObjectDictionary& objects() { return dictionary_.objects(); }
 
     /// Sets the network up as the file says (apply_network) and powers up an in-process EPOS2 on
@@ -114,6 +118,8 @@ private:
     EposPDictionary dictionary_;
     std::unique_ptr<NetworkPort> internal_network_;
     std::unique_ptr<NetworkPort> external_network_;
+    std::unique_ptr<DeviceAxisLink> axis_link_;
+    std::unique_ptr<plcopen::MotionLibrary> motion_; ///< its blocks are natives of plc_
     std::unique_ptr<ManufacturerStatus> manufacturer_status_;
     std::vector<std::unique_ptr<can::VirtualPort>> slave_ports_;
     std::vector<std::unique_ptr<drives::epos2::Epos2Drive>> slaves_;

@@ -36,6 +36,8 @@ public:
     std::optional<core::Error> load(vm::Image image) { return runtime_.load(std::move(image)); }
 
     vm::PlcRuntime& runtime() { return runtime_; }
+    /// The natives programs link against; more (the motion blocks) are added before a load.
+    vm::NativeRegistry& natives() { return natives_; }
     const vm::PlcRuntime& runtime() const { return runtime_; }
     const vm::Image& image() const { return runtime_.image(); }
     const std::vector<RaisedError>& errors() const { return errors_; }

@@ -11,7 +11,7 @@ namespace eposp::vm {
 
 /// Bumped whenever the binary layout or the meaning of an opcode changes; the loader refuses
 /// other versions.
-inline constexpr std::uint16_t kImageVersion = 3;
+inline constexpr std::uint16_t kImageVersion = 4;
 
 /// Memory addresses (pointer values, static offsets) below this are never valid data: a
 /// pointer of 0 is NULL and dereferencing anything in the guard traps.
@@ -162,6 +162,10 @@ struct NativeSignature {
     bool has_result = false;
     Scalar result = Scalar::Bool;
     std::vector<Scalar> parameters;
+    /// A native function block's instance (its one parameter is the instance's address): the
+    /// scalar of each field in declaration order, VAR_IN_OUT as Ptr, each field aligned to its
+    /// size (vm::NativeBlock). Empty for a native function.
+    std::vector<Scalar> instance{};
 
     bool operator==(const NativeSignature&) const = default;
 };

@@ -8,6 +8,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace eposp::vm {
 
@@ -46,6 +47,63 @@ private:
 
 using NativeFunction = std::function<void(NativeArgs&)>;
 
+/// Where the fields of a native function block's instance are: each field, in declaration order,
+/// at the next offset aligned to its size, as the compiler lays out an instance whose fields are
+/// all elementary or VAR_IN_OUT (a pointer).
+class NativeBlockLayout {
+public:
+    explicit NativeBlockLayout(std::vector<Scalar> fields);
+    const std::vector<Scalar>& fields() const { return fields_; }
+    std::uint32_t offset(std::size_t field) const { return offsets_[field]; }
+    std::uint32_t size() const { return size_; }
+
+private:
+    std::vector<Scalar> fields_;
+    std::vector<std::uint32_t> offsets_;
+    std::uint32_t size_ = 0;
+};
+
+/// The instance of a native function block as its C++ body sees it during one call: its fields
+/// read and written in place, so the block's state lives in the instance (its VAR section) and
+/// is initialised, retained and watched like any FB's.
+class NativeBlock {
+public:
+    /// The instance the call's argument points to.
+    NativeBlock(NativeArgs& args, const NativeBlockLayout& layout)
+        : args_(args), layout_(layout),
+          instance_(args.memory(args.get<std::uint64_t>(0), layout.size())) {}
+
+    /// False when the argument points outside VM memory (only a corrupt image does that).
+    bool valid() const { return !instance_.empty(); }
+    template <typename T>
+    T get(std::size_t field) const {
+        T value;
+        std::memcpy(&value, instance_.data() + layout_.offset(field), sizeof(T));
+        return value;
+    }
+    template <typename T>
+    void set(std::size_t field, T value) {
+        std::memcpy(instance_.data() + layout_.offset(field), &value, sizeof(T));
+    }
+    /// Sets `field` to zero (FALSE, 0).
+    void clear(std::size_t field) {
+        std::memset(instance_.data() + layout_.offset(field), 0,
+                    scalar_size(layout_.fields()[field]));
+    }
+    /// `size` bytes of what the VAR_IN_OUT `field` refers to; empty if it refers to nothing.
+    std::span<std::uint8_t> referenced(std::size_t field, std::uint32_t size) const {
+        return args_.memory(get<std::uint64_t>(field), size);
+    }
+    NativeArgs& args() { return args_; }
+
+private:
+    NativeArgs& args_;
+    const NativeBlockLayout& layout_;
+    std::span<std::uint8_t> instance_;
+};
+
+using NativeBlockFunction = std::function<void(NativeBlock&)>;
+
 /// The host functions a program may import, by name; the device, the standard library and
 /// later plcopen's MC_* blocks fill it. A native FB is a native function whose first parameter
 /// is a pointer to its instance.
@@ -58,6 +116,9 @@ public:
 
     /// Registering a name twice is a programming error.
     void add(std::string name, NativeSignature signature, NativeFunction function);
+    /// A native function block: the body of the FUNCTION_BLOCK `name` declared without
+    /// statements in a linked library, its instance laid out as `fields` say.
+    void add_block(std::string name, std::vector<Scalar> fields, NativeBlockFunction body);
     const Entry* find(const std::string& name) const;
 
 private:

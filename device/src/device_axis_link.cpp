@@ -1,0 +1,136 @@
+#include "device_axis_link.hpp"
+
+#include "eposp/device/axis_process_data.hpp"
+#include "eposp/device/epos_p_dictionary.hpp"
+
+#include <cstring>
+
+namespace eposp::device {
+
+namespace {
+
+constexpr std::uint16_t kAxisTable = 0x5280;
+constexpr std::uint8_t kUnassigned = 255;
+
+template <typename T>
+T entry_value(vm::ProcessImage& image, std::uint16_t index, std::uint8_t sub_index) {
+    T value{};
+    if (const auto bytes = image.entry(index, sub_index)) {
+        std::memcpy(&value, bytes->data(), sizeof(T));
+    }
+    return value;
+}
+
+template <typename T>
+void set_entry(vm::ProcessImage& image, std::uint16_t index, std::uint8_t sub_index, T value) {
+    if (const auto bytes = image.entry(index, sub_index)) {
+        std::memcpy(bytes->data(), &value, sizeof(T));
+    }
+}
+
+} // namespace
+
+DeviceAxisLink::DeviceAxisLink(canopen::ObjectDictionary& od, vm::ProcessImage& image,
+                               std::function<NetworkPort&(std::uint8_t port)> ports)
+    : od_(od), image_(image), ports_(std::move(ports)) {
+    for (const std::uint8_t port : {kInternalPort, kExternalPort}) {
+        ports_(port).on_sync([this, port] { ++syncs_[port]; });
+    }
+}
+
+std::optional<DeviceAxisLink::Slave> DeviceAxisLink::slave(plcopen::AxisNumber axis) const {
+    if (axis >= plcopen::kAxisCount) {
+        return std::nullopt;
+    }
+    const auto number = od_.get_as<std::uint8_t>(kAxisTable + axis, 1);
+    if (number == kUnassigned || number > 127) {
+        return std::nullopt;
+    }
+    return number == 0 ? Slave{kInternalPort, 1} : Slave{kExternalPort, number};
+}
+
+plcopen::AxisPresence DeviceAxisLink::presence(plcopen::AxisNumber axis) const {
+    const auto assigned = slave(axis);
+    if (!assigned) {
+        return plcopen::AxisPresence::Unassigned;
+    }
+    return ports_(assigned->port).network().booted(assigned->node) ? plcopen::AxisPresence::Ready
+                                                                   : plcopen::AxisPresence::Lost;
+}
+
+bool DeviceAxisLink::has_process_data(plcopen::AxisNumber axis) const {
+    return AxisChannels::of(axis).has_value();
+}
+
+std::uint16_t DeviceAxisLink::statusword(plcopen::AxisNumber axis) const {
+    return axis < plcopen::kAxisCount ? od_.get_as<std::uint16_t>(kAxisTable + axis, 2) : 0;
+}
+
+std::int32_t DeviceAxisLink::actual_position(plcopen::AxisNumber axis) const {
+    const auto channels = AxisChannels::of(axis);
+    return channels ? entry_value<std::int32_t>(image_, kActualPositionInputs, channels->sub_index)
+                    : 0;
+}
+
+std::uint32_t DeviceAxisLink::samples(plcopen::AxisNumber axis) const {
+    const auto assigned = slave(axis);
+    return assigned ? syncs_[assigned->port] : 0;
+}
+
+void DeviceAxisLink::set_controlword(plcopen::AxisNumber axis, std::uint16_t controlword) {
+    if (const auto channels = AxisChannels::of(axis)) {
+        set_entry(image_, kControlwordOutputs, channels->sub_index, controlword);
+    }
+}
+
+void DeviceAxisLink::set_target_position(plcopen::AxisNumber axis, std::int32_t position) {
+    if (const auto channels = AxisChannels::of(axis)) {
+        set_entry(image_, kTargetPositionOutputs, channels->sub_index, position);
+    }
+}
+
+void DeviceAxisLink::read(plcopen::AxisNumber axis, std::uint16_t index, std::uint8_t sub_index,
+                          plcopen::SdoDone done) {
+    const auto assigned = slave(axis);
+    if (!assigned) {
+        // Never from inside the call: the reply comes from the loop, as a transfer's would.
+        ports_(kInternalPort).loop().post([done = std::move(done)] {
+            done({.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
+        });
+        return;
+    }
+    ports_(assigned->port)
+        .sdo()
+        .upload(assigned->node, index, sub_index,
+                [done = std::move(done)](canopen::AbortCode code, const canopen::Bytes& value) {
+                    plcopen::SdoReply reply{.abort_code = static_cast<std::uint32_t>(code)};
+                    for (std::size_t i = 0; i < value.size() && i < 4; ++i) {
+                        reply.value |= static_cast<std::uint32_t>(value[i]) << (8 * i);
+                    }
+                    reply.size = static_cast<std::uint8_t>(value.size());
+                    done(reply);
+                });
+}
+
+void DeviceAxisLink::write(plcopen::AxisNumber axis, std::uint16_t index, std::uint8_t sub_index,
+                           std::uint32_t value, std::uint8_t size, plcopen::SdoDone done) {
+    const auto assigned = slave(axis);
+    if (!assigned) {
+        ports_(kInternalPort).loop().post([done = std::move(done)] {
+            done({.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
+        });
+        return;
+    }
+    canopen::Bytes bytes(size);
+    for (std::uint8_t i = 0; i < size; ++i) {
+        bytes[i] = static_cast<std::uint8_t>(value >> (8 * i));
+    }
+    ports_(assigned->port)
+        .sdo()
+        .download(assigned->node, index, sub_index, std::move(bytes),
+                  [done = std::move(done)](canopen::AbortCode code) {
+                      done({.abort_code = static_cast<std::uint32_t>(code)});
+                  });
+}
+
+} // namespace eposp::device

@@ -1,0 +1,53 @@
+#pragma once
+
+#include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/plcopen/axis_link.hpp"
+#include "eposp/vm/process_image.hpp"
+#include "network_port.hpp"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+namespace eposp::device {
+
+/// plcopen's axis link on the EPOS P's manager (DESIGN.md, "Seams"): axis n is the slave that
+/// 0x5280 + n sub 1 assigns (0: the internal EPOS2 on port 1, 1..127: that node on port 2). Its
+/// statusword is 0x5280 + n sub 2 and, for axes 0..15, its position actual value, controlword
+/// and target position are the axis' process image channels (AxisChannels), which the axis PDOs
+/// of the network file carry. SDO transfers go through the port's SDO client; samples() counts
+/// the port's SYNCs, after which the PLC task of the cycle runs with the TPDOs in.
+class DeviceAxisLink : public plcopen::AxisLink {
+public:
+    /// `ports` gives the NetworkPort of port 1 or 2; all must outlive the link.
+    DeviceAxisLink(canopen::ObjectDictionary& od, vm::ProcessImage& image,
+                   std::function<NetworkPort&(std::uint8_t port)> ports);
+
+    plcopen::AxisPresence presence(plcopen::AxisNumber axis) const override;
+    bool has_process_data(plcopen::AxisNumber axis) const override;
+    std::uint16_t statusword(plcopen::AxisNumber axis) const override;
+    std::int32_t actual_position(plcopen::AxisNumber axis) const override;
+    std::uint32_t samples(plcopen::AxisNumber axis) const override;
+    void set_controlword(plcopen::AxisNumber axis, std::uint16_t controlword) override;
+    void set_target_position(plcopen::AxisNumber axis, std::int32_t position) override;
+    void read(plcopen::AxisNumber axis, std::uint16_t index, std::uint8_t sub_index,
+              plcopen::SdoDone done) override;
+    void write(plcopen::AxisNumber axis, std::uint16_t index, std::uint8_t sub_index,
+               std::uint32_t value, std::uint8_t size, plcopen::SdoDone done) override;
+
+private:
+    struct Slave {
+        std::uint8_t port = 0;
+        canopen::NodeId node = 0;
+    };
+    /// The slave 0x5280 + axis sub 1 assigns, if any.
+    std::optional<Slave> slave(plcopen::AxisNumber axis) const;
+
+    canopen::ObjectDictionary& od_;
+    vm::ProcessImage& image_;
+    std::function<NetworkPort&(std::uint8_t port)> ports_;
+    std::array<std::uint32_t, 3> syncs_{}; ///< by port code
+};
+
+} // namespace eposp::device

@@ -1,0 +1,129 @@
+// The motion blocks on the EPOS P's own network (device/src/device_axis_link.cpp): simulated
+// EPOS2s on both ports, moved, stopped by a drive fault and by a lost heartbeat, and the
+// pick-and-place example as a user runs it.
+
+#include "compile_program.hpp"
+#include "eposp/device/epos_p.hpp"
+#include "eposp_command.hpp"
+
+#include <chrono>
+#include <gtest/gtest.h>
+
+namespace eposp::device {
+namespace {
+
+using namespace std::chrono_literals;
+
+constexpr std::string_view kNetwork = R"(
+sync_period: 1ms
+boot_time: 500ms
+slaves:
+  - {node: 1, port: internal, axis: 0, heartbeat: 100ms}
+  - {node: 2, axis: 1, heartbeat: 100ms}
+)";
+
+constexpr std::string_view kProgram = R"ST(
+PROGRAM Main
+VAR
+  Axis0 : AXIS_REF := (AxisNo := 0);
+  Axis1 : AXIS_REF := (AxisNo := 1);
+  Power0, Power1 : MC_Power;
+  Move0, Move1 : MC_MoveAbsolute;
+  State1 : MC_ReadAxisState;
+  Error1 : MC_ReadAxisError;
+  Go : BOOL;
+END_VAR
+Power0(Axis := Axis0, Enable := TRUE);
+Power1(Axis := Axis1, Enable := TRUE);
+Move0(Axis := Axis0, Execute := Go, Position := 20000, Velocity := 3000,
+      Acceleration := 10000, Deceleration := 10000);
+Move1(Axis := Axis1, Execute := Go, Position := -12000, Velocity := 3000,
+      Acceleration := 10000, Deceleration := 10000);
+State1(Axis := Axis1, Enable := TRUE);
+Error1(Axis := Axis1, Enable := TRUE);
+END_PROGRAM
+CONFIGURATION Cell
+  RESOURCE EposP ON EPOS_P
+    TASK Motion (INTERVAL := T#1ms, PRIORITY := 1);
+    PROGRAM Main WITH Motion : Main;
+  END_RESOURCE
+END_CONFIGURATION
+)ST";
+
+class MotionOnNetwork : public testing::Test {
+protected:
+    void SetUp() override {
+        auto network = parse_network_file(kNetwork, "net.yaml");
+        ASSERT_TRUE(network) << network.error();
+        device.add_network(*network);
+        ASSERT_FALSE(device.plc().load(compile_program(std::string(kProgram))));
+        ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+        device.loop().run_for(1s); // booted at about 0.55 s, then powered
+    }
+    std::string value(const std::string& path) { return *device.plc().value_of("Main." + path); }
+    std::int32_t actual_position(std::size_t slave) {
+        return device.simulated_slaves()[slave]->objects().get_as<std::int32_t>(0x6064, 0);
+    }
+    void go() { ASSERT_FALSE(device.plc().runtime().write_value<std::uint8_t>("Main.Go", 1)); }
+
+    EposP device;
+};
+
+TEST_F(MotionOnNetwork, BothAxesArePoweredAndMoveToTheirTargets) {
+    EXPECT_EQ(value("Power0.Status"), "TRUE");
+    EXPECT_EQ(value("Power1.Status"), "TRUE");
+    EXPECT_EQ(value("State1.State"), "1"); // Standstill
+    go();
+    device.loop().run_for(100ms);
+    EXPECT_EQ(value("Move1.Busy"), "TRUE");
+    EXPECT_EQ(value("State1.State"), "3"); // DiscreteMotion
+    device.loop().run_for(3s);
+    EXPECT_EQ(value("Move0.Done"), "TRUE");
+    EXPECT_EQ(value("Move1.Done"), "TRUE");
+    EXPECT_EQ(value("State1.State"), "1");
+    EXPECT_EQ(device.internal_drive().objects().get_as<std::int32_t>(0x6064, 0), 20000);
+    EXPECT_EQ(actual_position(0), -12000);
+}
+
+TEST_F(MotionOnNetwork, ADriveFaultMidMoveIsErrorStopWithTheDrivesErrorCode) {
+    go();
+    device.loop().run_for(200ms);
+    device.simulated_slaves()[0]->set_supply_voltage(5.0); // undervoltage
+    device.loop().run_for(200ms);
+    EXPECT_EQ(value("State1.State"), "6"); // ErrorStop
+    EXPECT_EQ(value("Move1.Error"), "TRUE");
+    EXPECT_EQ(value("Move1.ErrorID"), "4100"); // 16#1004
+    const auto code =
+        device.simulated_slaves()[0]->objects().get_as<std::uint32_t>(0x1003, 1) & 0xFFFF;
+    EXPECT_NE(code, 0);
+    EXPECT_EQ(value("Error1.AxisErrorID"), std::to_string(code));
+    EXPECT_EQ(value("Move0.Busy"), "TRUE"); // the other axis goes on
+}
+
+TEST_F(MotionOnNetwork, ALostHeartbeatMidMoveIsErrorStop) {
+    go();
+    device.loop().run_for(200ms);
+    device.external_bus().drop_frames([](const can::Frame& frame) { return frame.id == 0x702; },
+                                      1000);
+    device.loop().run_for(400ms);
+    EXPECT_EQ(value("State1.State"), "6");
+    EXPECT_EQ(value("Move1.ErrorID"), "4099"); // 16#1003
+    EXPECT_EQ(value("Error1.AxisErrorID"), "4099");
+}
+
+TEST(MotionExamples, ThePickAndPlaceCellRunsItsThreeCycles) {
+    const auto dir = scratch("demo");
+    const auto result =
+        test::run_command("EPOSP_DEMO_DIR=" + dir.string() + " " + EPOSP_SOURCE_DIR +
+                          "/examples/pick-and-place/run.sh " + kEposp + " 2>&1");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("Main.Cycles = 3\nMain.Step = 14\nMain.Failed = FALSE"),
+              std::string::npos)
+        << result.output;
+    // The carriage at the place position while the lift goes down for the first time.
+    EXPECT_NE(result.output.find("1.75 s   carriage   40000 qc      0 rpm"), std::string::npos)
+        << result.output;
+}
+
+} // namespace
+} // namespace eposp::device
