@@ -3,6 +3,7 @@
 #include "eposp/device/axis_process_data.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace eposp::device {
@@ -93,44 +94,91 @@ void DeviceAxisLink::read(plcopen::AxisNumber axis, std::uint16_t index, std::ui
                           plcopen::SdoDone done) {
     const auto assigned = slave(axis);
     if (!assigned) {
-        // Never from inside the call: the reply comes from the loop, as a transfer's would.
-        ports_(kInternalPort).loop().post([done = std::move(done)] {
-            done({.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
-        });
+        reply_later(std::move(done),
+                    {.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
         return;
     }
-    ports_(assigned->port)
-        .sdo()
-        .upload(assigned->node, index, sub_index,
-                [done = std::move(done)](canopen::AbortCode code, const canopen::Bytes& value) {
-                    plcopen::SdoReply reply{.abort_code = static_cast<std::uint32_t>(code)};
-                    for (std::size_t i = 0; i < value.size() && i < 4; ++i) {
-                        reply.value |= static_cast<std::uint32_t>(value[i]) << (8 * i);
-                    }
-                    reply.size = static_cast<std::uint8_t>(value.size());
-                    done(reply);
-                });
+    read(plcopen::NodeAddress{assigned->port, assigned->node}, index, sub_index, std::move(done));
+}
+
+void DeviceAxisLink::read(plcopen::NodeAddress node, std::uint16_t index, std::uint8_t sub_index,
+                          plcopen::SdoDone done) {
+    const auto reply_with = [](canopen::AbortCode code, const canopen::Bytes& value) {
+        plcopen::SdoReply reply{.abort_code = static_cast<std::uint32_t>(code)};
+        for (std::size_t i = 0; i < value.size() && i < 4; ++i) {
+            reply.value |= static_cast<std::uint32_t>(value[i]) << (8 * i);
+        }
+        reply.size = static_cast<std::uint8_t>(std::min<std::size_t>(value.size(), 4));
+        return reply;
+    };
+    if (node.port == 0 && node.node == 0) { // the EPOS P's own dictionary
+        canopen::Bytes value;
+        const canopen::AbortCode code = od_.read(index, sub_index, value);
+        reply_later(std::move(done), reply_with(code, value));
+        return;
+    }
+    if ((node.port != kInternalPort && node.port != kExternalPort) || node.node < 1 ||
+        node.node > 127) {
+        reply_later(std::move(done),
+                    {.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
+        return;
+    }
+    ports_(node.port).sdo().upload(
+        node.node, index, sub_index,
+        [done = std::move(done), reply_with](canopen::AbortCode code, const canopen::Bytes& value) {
+            done(reply_with(code, value));
+        });
 }
 
 void DeviceAxisLink::write(plcopen::AxisNumber axis, std::uint16_t index, std::uint8_t sub_index,
                            std::uint32_t value, std::uint8_t size, plcopen::SdoDone done) {
     const auto assigned = slave(axis);
     if (!assigned) {
-        ports_(kInternalPort).loop().post([done = std::move(done)] {
-            done({.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
-        });
+        reply_later(std::move(done),
+                    {.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
         return;
     }
+    write(plcopen::NodeAddress{assigned->port, assigned->node}, index, sub_index, value, size,
+          std::move(done));
+}
+
+void DeviceAxisLink::write(plcopen::NodeAddress node, std::uint16_t index, std::uint8_t sub_index,
+                           std::uint32_t value, std::uint8_t size, plcopen::SdoDone done) {
     canopen::Bytes bytes(size);
     for (std::uint8_t i = 0; i < size; ++i) {
         bytes[i] = static_cast<std::uint8_t>(value >> (8 * i));
     }
-    ports_(assigned->port)
-        .sdo()
-        .download(assigned->node, index, sub_index, std::move(bytes),
-                  [done = std::move(done)](canopen::AbortCode code) {
-                      done({.abort_code = static_cast<std::uint32_t>(code)});
-                  });
+    if (node.port == 0 && node.node == 0) {
+        const canopen::AbortCode code = od_.write(index, sub_index, bytes);
+        reply_later(std::move(done), {.abort_code = static_cast<std::uint32_t>(code)});
+        return;
+    }
+    if ((node.port != kInternalPort && node.port != kExternalPort) || node.node < 1 ||
+        node.node > 127) {
+        reply_later(std::move(done),
+                    {.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
+        return;
+    }
+    ports_(node.port).sdo().download(node.node, index, sub_index, std::move(bytes),
+                                     [done = std::move(done)](canopen::AbortCode code) {
+                                         done({.abort_code = static_cast<std::uint32_t>(code)});
+                                     });
+}
+
+bool DeviceAxisLink::send_nmt(std::uint8_t port, std::uint8_t node, std::uint8_t command) {
+    using canopen::NmtCommand;
+    const auto known = {NmtCommand::Start, NmtCommand::Stop, NmtCommand::EnterPreOperational,
+                        NmtCommand::ResetNode, NmtCommand::ResetCommunication};
+    if ((port != kInternalPort && port != kExternalPort) || node > 127 ||
+        std::ranges::find(known, static_cast<NmtCommand>(command)) == known.end()) {
+        return false;
+    }
+    ports_(port).nmt().send(static_cast<NmtCommand>(command), node);
+    return true;
+}
+
+void DeviceAxisLink::reply_later(plcopen::SdoDone done, plcopen::SdoReply reply) {
+    ports_(kInternalPort).loop().post([done = std::move(done), reply] { done(reply); });
 }
 
 } // namespace eposp::device

@@ -35,6 +35,11 @@ public:
               plcopen::SdoDone done) override;
     void write(plcopen::AxisNumber axis, std::uint16_t index, std::uint8_t sub_index,
                std::uint32_t value, std::uint8_t size, plcopen::SdoDone done) override;
+    void read(plcopen::NodeAddress node, std::uint16_t index, std::uint8_t sub_index,
+              plcopen::SdoDone done) override;
+    void write(plcopen::NodeAddress node, std::uint16_t index, std::uint8_t sub_index,
+               std::uint32_t value, std::uint8_t size, plcopen::SdoDone done) override;
+    bool send_nmt(std::uint8_t port, std::uint8_t node, std::uint8_t command) override;
 
 private:
     struct Slave {
@@ -43,6 +48,8 @@ private:
     };
     /// The slave 0x5280 + axis sub 1 assigns, if any.
     std::optional<Slave> slave(plcopen::AxisNumber axis) const;
+    /// Tells `done` of `code` from the loop, as a transfer would (never from inside a call).
+    void reply_later(plcopen::SdoDone done, plcopen::SdoReply reply);
 
     canopen::ObjectDictionary& od_;
     vm::ProcessImage& image_;

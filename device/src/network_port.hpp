@@ -72,6 +72,8 @@ public:
     void on_sync(std::function<void()> listener) { sync_listeners_.push_back(std::move(listener)); }
     /// The SDO client the manager reaches the port's slaves with (the motion blocks use it too).
     canopen::SdoClient& sdo() { return sdo_; }
+    /// Its NMT master, for commands the application sends (CAN_Nmt).
+    canopen::NmtMaster& nmt() { return nmt_; }
     core::EventLoop& loop() { return loop_; }
     /// Told of each EMCY a node on the port sends.
     void on_emergency(canopen::EmcyConsumer::Listener listener) {

@@ -21,7 +21,8 @@ END_TYPE
 
 std::vector<blocks::BlockDefinition> all_blocks() {
     auto definitions = blocks::axis_blocks();
-    for (auto* more : {&blocks::motion_blocks, &blocks::parameter_blocks}) {
+    for (auto* more : {&blocks::motion_blocks, &blocks::parameter_blocks, &blocks::maxon_blocks,
+                       &blocks::can_blocks}) {
         for (auto& definition : more()) {
             definitions.push_back(std::move(definition));
         }

@@ -11,7 +11,7 @@ constexpr std::size_t kRemembered = 1024;
 
 SdoRequests::SdoRequests(AxisLink& link) : link_(link), alive_(std::make_shared<bool>(true)) {}
 
-std::uint32_t SdoRequests::track() {
+std::uint32_t SdoRequests::start(const std::function<void(SdoDone done)>& begin) {
     std::uint32_t request = next_++;
     if (request == 0) {
         request = next_++;
@@ -22,27 +22,8 @@ std::uint32_t SdoRequests::track() {
         replies_.erase(order_.front());
         order_.pop_front();
     }
-    return request;
-}
-
-std::uint32_t SdoRequests::read(AxisNumber axis, std::uint16_t index, std::uint8_t sub_index) {
-    const std::uint32_t request = track();
     std::weak_ptr<bool> alive = alive_;
-    link_.read(axis, index, sub_index, [this, alive, request](const SdoReply& reply) {
-        if (!alive.expired()) {
-            if (const auto it = replies_.find(request); it != replies_.end()) {
-                it->second = reply;
-            }
-        }
-    });
-    return request;
-}
-
-std::uint32_t SdoRequests::write(AxisNumber axis, std::uint16_t index, std::uint8_t sub_index,
-                                 std::uint32_t value, std::uint8_t size) {
-    const std::uint32_t request = track();
-    std::weak_ptr<bool> alive = alive_;
-    link_.write(axis, index, sub_index, value, size, [this, alive, request](const SdoReply& reply) {
+    begin([this, alive, request](const SdoReply& reply) {
         if (!alive.expired()) {
             if (const auto it = replies_.find(request); it != replies_.end()) {
                 it->second = reply;

@@ -111,6 +111,48 @@ TEST_F(MotionOnNetwork, ALostHeartbeatMidMoveIsErrorStop) {
     EXPECT_EQ(value("Error1.AxisErrorID"), "4099");
 }
 
+TEST(MaxonBlocksOnNetwork, SdoAndNmtReachAnySlaveAndTheErrorHistoryOfTheEposP) {
+    EposP device;
+    auto network = parse_network_file(kNetwork, "net.yaml");
+    ASSERT_TRUE(network) << network.error();
+    device.add_network(*network);
+    ASSERT_FALSE(device.plc().load(compile_program(R"ST(
+PROGRAM Main
+VAR
+  Controller : AXIS_REF := (AxisNo := 255);
+  Vendor : CAN_SdoRead;
+  Heartbeat : CAN_SdoWrite;
+  Stop : CAN_Nmt;
+  Errors : MU_GetDeviceErrorCount;
+  Go, StopIt : BOOL;
+END_VAR
+Vendor(Execute := Go, Port := 2, NodeId := 2, Index := 16#1018, SubIndex := 1);
+Heartbeat(Execute := Go, Port := 2, NodeId := 2, Index := 16#1017, SubIndex := 0, Data := 40,
+          DataLength := 2);
+Stop(Execute := StopIt, Port := 2, NodeId := 2, Command := 2);
+Errors(Axis := Controller, Enable := TRUE);
+END_PROGRAM
+)ST")));
+    ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+    device.loop().run_for(1s);
+    ASSERT_FALSE(device.plc().runtime().write_value<std::uint8_t>("Main.Go", 1));
+    device.loop().run_for(50ms);
+    const auto value = [&](const std::string& path) {
+        return *device.plc().value_of("Main." + path);
+    };
+    EXPECT_EQ(value("Vendor.Done"), "TRUE");
+    EXPECT_EQ(value("Vendor.Data"), "251"); // maxon's vendor-ID 0xFB
+    EXPECT_EQ(value("Heartbeat.Done"), "TRUE");
+    EXPECT_EQ(device.simulated_slaves()[0]->objects().get_as<std::uint16_t>(0x1017, 0), 40);
+    EXPECT_EQ(value("Errors.Valid"), "TRUE");
+    EXPECT_EQ(value("Errors.ErrorCount"),
+              std::to_string(device.objects().get_as<std::uint8_t>(0x1003, 0)));
+    ASSERT_FALSE(device.plc().runtime().write_value<std::uint8_t>("Main.StopIt", 1));
+    device.loop().run_for(20ms);
+    EXPECT_EQ(value("Stop.Done"), "TRUE");
+    EXPECT_EQ(device.simulated_slaves()[0]->node().nmt_state(), canopen::NmtState::Stopped);
+}
+
 TEST(MotionExamples, ThePickAndPlaceCellRunsItsThreeCycles) {
     const auto dir = scratch("demo");
     const auto result =

@@ -13,6 +13,7 @@
 #include <functional>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace eposp::plcopen::test {
 
@@ -74,7 +75,7 @@ public:
             std::uint32_t value = drive.object(index, sub_index);
             if (index == 0x6061) {
                 value = drive.refuse_mode ? 0 : drive.object(0x6060);
-            } else if (index == 0x1003 && sub_index == 1) {
+            } else if (index == 0x1003 && sub_index == 1 && drive.error_code != 0) {
                 value = drive.error_code;
             }
             const auto size = drive.sizes.find({index, sub_index});
@@ -94,6 +95,45 @@ public:
             drives[axis].objects[{index, sub_index}] = value;
             done({});
         });
+    }
+
+    /// Objects of other nodes, by (port, node): absent ones abort with 0x06020000.
+    std::map<std::pair<std::uint8_t, std::uint8_t>,
+             std::map<std::pair<std::uint16_t, std::uint8_t>, std::uint32_t>>
+        nodes;
+    struct Nmt {
+        std::uint8_t port, node, command;
+    };
+    std::vector<Nmt> nmt_sent;
+
+    void read(NodeAddress node, std::uint16_t index, std::uint8_t sub_index,
+              SdoDone done) override {
+        replies_.push_back([this, node, index, sub_index, done = std::move(done)] {
+            const auto& objects = nodes[{node.port, node.node}];
+            const auto it = objects.find({index, sub_index});
+            done(it == objects.end() ? SdoReply{.abort_code = 0x06020000}
+                                     : SdoReply{.value = it->second, .size = 4});
+        });
+    }
+    void write(NodeAddress node, std::uint16_t index, std::uint8_t sub_index, std::uint32_t value,
+               std::uint8_t size, SdoDone done) override {
+        replies_.push_back([this, node, index, sub_index, value, size, done = std::move(done)] {
+            auto& objects = nodes[{node.port, node.node}];
+            if (!objects.contains({index, sub_index})) {
+                done({.abort_code = 0x06020000});
+                return;
+            }
+            last_write_size = size;
+            objects[{index, sub_index}] = value;
+            done({});
+        });
+    }
+    bool send_nmt(std::uint8_t port, std::uint8_t node, std::uint8_t command) override {
+        if (port < 1 || port > 2) {
+            return false;
+        }
+        nmt_sent.push_back({port, node, command});
+        return true;
     }
 
 private:

@@ -25,6 +25,10 @@ std::vector<BlockDefinition> motion_blocks();
 /// MC_ReadParameter, MC_WriteParameter and their BOOL forms, MC_ReadActualVelocity,
 /// MC_ReadActualCurrent, MC_ReadActualTorque.
 std::vector<BlockDefinition> parameter_blocks();
+/// maxon's MU_* utility blocks: drive I/O, bits of objects, error histories.
+std::vector<BlockDefinition> maxon_blocks();
+/// maxon's CAN_* blocks: SDO and NMT to any node of either port.
+std::vector<BlockDefinition> can_blocks();
 
 /// A variable of `section` with its ST type (elementary, MC_BUFFER_MODE, MC_DIRECTION).
 BlockVariable variable(Section section, std::string_view name, std::string_view type);

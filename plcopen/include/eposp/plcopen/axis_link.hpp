@@ -25,6 +25,13 @@ struct SdoReply {
 };
 using SdoDone = std::function<void(const SdoReply& reply)>;
 
+/// A CANopen node the CAN_* blocks address: port 1 (the internal bus) or 2 (the CAN bus) and its
+/// node-ID; port 0, node 0 is the EPOS P itself (its own object dictionary).
+struct NodeAddress {
+    std::uint8_t port = 0;
+    std::uint8_t node = 0;
+};
+
 /// What the motion blocks need of an axis' drive (DESIGN.md, "Seams"): the cyclic process data
 /// of the SYNC cycle and asynchronous SDO access. The device implements it on its CANopen
 /// manager; tests implement it with a fake drive. Nothing here blocks: an SDO transfer completes
@@ -51,6 +58,16 @@ public:
                       SdoDone done) = 0;
     virtual void write(AxisNumber axis, std::uint16_t index, std::uint8_t sub_index,
                        std::uint32_t value, std::uint8_t size, SdoDone done) = 0;
+
+    /// The same for any node (NodeAddress); a node that cannot be reached aborts the transfer.
+    virtual void read(NodeAddress node, std::uint16_t index, std::uint8_t sub_index,
+                      SdoDone done) = 0;
+    virtual void write(NodeAddress node, std::uint16_t index, std::uint8_t sub_index,
+                       std::uint32_t value, std::uint8_t size, SdoDone done) = 0;
+    /// Sends an NMT command (CiA 301 7.2.8.3.1: 1 start, 2 stop, 128 pre-operational, 129 reset
+    /// node, 130 reset communication) to `node` of port 1 or 2 (node 0: every node); false when
+    /// there is no such port or command.
+    virtual bool send_nmt(std::uint8_t port, std::uint8_t node, std::uint8_t command) = 0;
 };
 
 } // namespace eposp::plcopen

@@ -11,7 +11,8 @@
 
 namespace eposp::plcopen {
 
-/// The PLCopen motion blocks (MC_*) of the EPOS P over one axis link: the ST declarations a
+/// The PLCopen motion blocks (MC_*) and maxon's MU_* and CAN_* blocks of the EPOS P over one
+/// axis link: the ST declarations a
 /// program is compiled with, the C++ bodies registered with the VM, and an AxisDriver per axis
 /// of the axis table. docs/function-blocks.md documents every block.
 class MotionLibrary {
@@ -29,6 +30,7 @@ public:
 
     AxisDriver& axis(AxisNumber axis) { return *drivers_.at(axis); }
     const AxisDriver& axis(AxisNumber axis) const { return *drivers_.at(axis); }
+    AxisLink& link() { return link_; }
     /// SDO transfers the parameter blocks started, until they collect the replies.
     SdoRequests& requests() { return requests_; }
     /// Brings every axis up to date with the link: what runs goes on even while no block of

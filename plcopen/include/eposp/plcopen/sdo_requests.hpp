@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -17,17 +18,25 @@ class SdoRequests {
 public:
     explicit SdoRequests(AxisLink& link);
 
-    /// Starts a transfer; its number is never 0.
-    std::uint32_t read(AxisNumber axis, std::uint16_t index, std::uint8_t sub_index);
-    std::uint32_t write(AxisNumber axis, std::uint16_t index, std::uint8_t sub_index,
-                        std::uint32_t value, std::uint8_t size);
+    /// Starts a transfer of an axis' drive or of any node; its number is never 0.
+    template <typename Target>
+    std::uint32_t read(Target target, std::uint16_t index, std::uint8_t sub_index) {
+        return start([=, this](SdoDone done) { link_.read(target, index, sub_index, done); });
+    }
+    template <typename Target>
+    std::uint32_t write(Target target, std::uint16_t index, std::uint8_t sub_index,
+                        std::uint32_t value, std::uint8_t size) {
+        return start(
+            [=, this](SdoDone done) { link_.write(target, index, sub_index, value, size, done); });
+    }
     /// The reply of `request` once it has come (and forgets it); nullopt while it has not.
     std::optional<SdoReply> take(std::uint32_t request);
     /// The transfer has not replied yet (false once taken, or forgotten).
     bool pending(std::uint32_t request) const;
 
 private:
-    std::uint32_t track();
+    /// Numbers the transfer `begin` starts and keeps its reply.
+    std::uint32_t start(const std::function<void(SdoDone done)>& begin);
 
     AxisLink& link_;
     std::uint32_t next_ = 1;
