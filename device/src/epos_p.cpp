@@ -148,6 +148,9 @@ void EposP::add_network(const NetworkFile& network) {
         drives::epos2::Epos2DriveConfig config;
         config.dictionary.node_id = slave.node_id;
         config.dictionary.serial_number = slave.node_id;
+        if (slave.plant) {
+            config.axis = *slave.plant;
+        }
         slave_ports_.push_back(external_bus_.connect(fmt::format("epos2-{}", slave.node_id)));
         slaves_.push_back(std::make_unique<drives::epos2::Epos2Drive>(loop_, *slave_ports_.back(),
                                                                       std::move(config)));

@@ -5,6 +5,7 @@
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/device/axis_process_data.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/drives/plant/axis_file.hpp"
 #include "eposp/manager/concise_dcf.hpp"
 #include "eposp/manager/network_list.hpp"
 #include "eposp/vm/process_image.hpp"
@@ -49,16 +50,15 @@ void read_expected(Reader& in, const YAML::Node& node, NetworkSlave& slave) {
             field = in_range<std::uint32_t>(in, value, what, 0, 0xFFFF'FFFF);
         };
     };
-    in.each_key(node, "expect",
-                {{"device_type", u32(slave.device_type, "expect.device_type")},
-                 {"vendor_id", u32(slave.identity.vendor_id, "expect.vendor_id")},
-                 {"product_code", u32(slave.identity.product_code, "expect.product_code")},
-                 {"revision_number", u32(slave.identity.revision_number, "expect.revision_number")},
-                 {"serial_number", u32(slave.identity.serial_number, "expect.serial_number")},
-                 {"configuration_date",
-                  u32(slave.configuration_date, "expect.configuration_date")},
-                 {"configuration_time",
-                  u32(slave.configuration_time, "expect.configuration_time")}});
+    in.each_key(
+        node, "expect",
+        {{"device_type", u32(slave.device_type, "expect.device_type")},
+         {"vendor_id", u32(slave.identity.vendor_id, "expect.vendor_id")},
+         {"product_code", u32(slave.identity.product_code, "expect.product_code")},
+         {"revision_number", u32(slave.identity.revision_number, "expect.revision_number")},
+         {"serial_number", u32(slave.identity.serial_number, "expect.serial_number")},
+         {"configuration_date", u32(slave.configuration_date, "expect.configuration_date")},
+         {"configuration_time", u32(slave.configuration_time, "expect.configuration_time")}});
 }
 
 // A concise DCF named relative to the network file; its writes replace the axis set-up.
@@ -125,6 +125,15 @@ NetworkSlave read_slave(Reader& in, const YAML::Node& node, const std::filesyste
                   [&](const YAML::Node& value) {
                       slave.concise_dcf = read_concise_dcf(in, value, base);
                   }},
+                 {"plant",
+                  [&](const YAML::Node& value) {
+                      const auto path = base / in.scalar<std::string>(value, "plant");
+                      auto axis = drives::plant::load_axis_file(path);
+                      if (!axis) {
+                          in.fail(value, fmt::format("plant {}: {}", path.string(), axis.error()));
+                      }
+                      slave.plant = std::move(*axis);
+                  }},
                  {"expect", [&](const YAML::Node& value) {
                       read_expected(in, value, slave);
                   }}});
@@ -134,6 +143,10 @@ NetworkSlave read_slave(Reader& in, const YAML::Node& node, const std::filesyste
     if (slave.port == kInternalPort &&
         (slave.node_id != 1 || slave.kind != NetworkSlave::Kind::Epos2)) {
         in.fail(node, "the internal slave is the EPOS2 with node 1");
+    }
+    if (slave.plant && (slave.port == kInternalPort || slave.kind != NetworkSlave::Kind::Epos2)) {
+        in.fail(node, "'plant' is for EPOS2s simulated on the CAN bus (the internal EPOS2's axis "
+                      "is the device's own)");
     }
     return slave;
 }
@@ -159,7 +172,9 @@ EventBinding read_event(Reader& in, const YAML::Node& node) {
     std::optional<YAML::Node> rpdo_node;
     in.each_key(node, "events",
                 {{"task",
-                  [&](const YAML::Node& value) { event.task = in.scalar<std::string>(value, "task"); }},
+                  [&](const YAML::Node& value) {
+                      event.task = in.scalar<std::string>(value, "task");
+                  }},
                  {"on",
                   [&](const YAML::Node& value) {
                       static const std::map<std::string, EventBinding::Source> sources = {
@@ -191,7 +206,9 @@ EventBinding read_event(Reader& in, const YAML::Node& node) {
                       event.rpdo = in_range<std::size_t>(in, value, "rpdo", 1, 32);
                       rpdo_node = value;
                   }},
-                 {"input", [&](const YAML::Node& value) { read_input_bit(in, value, event); }}});
+                 {"input", [&](const YAML::Node& value) {
+                      read_input_bit(in, value, event);
+                  }}});
     if (event.task.empty() || !has_source) {
         in.fail(node, "an event needs its 'task' and what it is 'on'");
     }

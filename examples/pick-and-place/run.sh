@@ -3,7 +3,7 @@
 # (the internal EPOS2 as axis 0, an EPOS2 on the CAN bus as axis 1; the network file of
 # examples/two-axis), then pick-and-place.st powers and homes both axes and runs three cycles of
 # moves with MC_MoveAbsolute, for 10 s of virtual time. It prints the cell's step and cycle
-# count, the axes every 250 ms from the trace, and leaves the trace in build/demo/.
+# count, the axes every 250 ms from the trace, and leaves the trace and its plot in build/demo/.
 #
 # Usage: examples/pick-and-place/run.sh [path/to/eposp]
 set -euo pipefail
@@ -22,3 +22,4 @@ section "The carriage (axis 0) and the lift (axis 1) every 250 ms, from $out/pic
 awk -F, 'NR > 1 && $1 * 1000 % 250 == 0 && $1 >= 0.5 && $1 <= 7 {
         if ($2 == 0) { t = $1; p0 = $7; v0 = $9 } else { printf "%6.2f s   carriage %7d qc %6d rpm   lift %7d qc %6d rpm\n", t, p0, v0, $7, $9 } }' \
     "$out/pick-and-place.csv"
+"$eposp" plot "$out/pick-and-place.csv" -o "$out/pick-and-place.svg"

@@ -153,18 +153,45 @@ END_PROGRAM
     EXPECT_EQ(device.simulated_slaves()[0]->node().nmt_state(), canopen::NmtState::Stopped);
 }
 
-TEST(MotionExamples, ThePickAndPlaceCellRunsItsThreeCycles) {
+/// Runs examples/NAME/run.sh into the test's own directory; its output.
+std::string run_example(const std::string& name) {
     const auto dir = scratch("demo");
     const auto result =
-        test::run_command("EPOSP_DEMO_DIR=" + dir.string() + " " + EPOSP_SOURCE_DIR +
-                          "/examples/pick-and-place/run.sh " + kEposp + " 2>&1");
-    ASSERT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_NE(result.output.find("Main.Cycles = 3\nMain.Step = 14\nMain.Failed = FALSE"),
+        test::run_command("EPOSP_DEMO_DIR=" + dir.string() + " " + EPOSP_SOURCE_DIR + "/examples/" +
+                          name + "/run.sh " + kEposp + " 2>&1");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / (name + ".svg"))) << result.output;
+    return result.output;
+}
+
+TEST(MotionExamples, ThePickAndPlaceCellRunsItsThreeCycles) {
+    const std::string output = run_example("pick-and-place");
+    EXPECT_NE(output.find("Main.Cycles = 3\nMain.Step = 14\nMain.Failed = FALSE"),
               std::string::npos)
-        << result.output;
+        << output;
     // The carriage at the place position while the lift goes down for the first time.
-    EXPECT_NE(result.output.find("1.75 s   carriage   40000 qc      0 rpm"), std::string::npos)
-        << result.output;
+    EXPECT_NE(output.find("1.75 s   carriage   40000 qc      0 rpm"), std::string::npos) << output;
+}
+
+TEST(MotionExamples, HomingOnTheSwitchThenThreeMoves) {
+    const std::string output = run_example("homing-then-move");
+    EXPECT_NE(output.find("Main.Step = 6\nMain.Visited = 3\nMain.Failed = FALSE\n"
+                          "Main.Position.Position = 0"),
+              std::string::npos)
+        << output;
+    EXPECT_NE(output.find("Homing"), std::string::npos) << output;
+    EXPECT_NE(output.find("3.75 s     19998 qc      0 rpm   Standstill"), std::string::npos)
+        << output;
+}
+
+TEST(MotionExamples, TheConveyorRunsWhenThePushersSensorSeesAPart) {
+    const std::string output = run_example("conveyor");
+    EXPECT_NE(output.find("Main.Parts = 7\nMain.Failed = FALSE"), std::string::npos) << output;
+    // The belt runs at 1500 rpm after the first part, then halts where the halt ends.
+    EXPECT_NE(output.find("1.50 s   belt   18354 qc  1500 rpm ContinuousMotion"), std::string::npos)
+        << output;
+    EXPECT_NE(output.find("2.50 s   belt   60021 qc     0 rpm Standstill"), std::string::npos)
+        << output;
 }
 
 } // namespace

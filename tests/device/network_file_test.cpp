@@ -73,7 +73,8 @@ TEST(RunCommand, AnEventForATaskTheProgramLacksIsAUserError) {
     const std::string network = write_source("net.yaml", "events:\n  - {task: OnSync, on: sync}\n");
     const auto result = eposp("run " + program + " --network " + network + " --for 1s");
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_THAT(result.output, HasSubstr("eposp run: error: event task OnSync: the program has no such task"));
+    EXPECT_THAT(result.output,
+                HasSubstr("eposp run: error: event task OnSync: the program has no such task"));
 }
 
 TEST(NetworkFile, ASlaveMayTakeNodeOneWhenTheEposPHasAnotherNodeId) {
@@ -91,8 +92,10 @@ TEST(NetworkFile, AConciseDcfConfiguresItsSlaveInsteadOfTheAxisSetUp) {
     const auto bytes = manager::encode_concise_dcf(writes);
     const auto dcf = scratch("node2.cdcf");
     std::ofstream(dcf, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    const auto path = write_source("net.yaml", "slaves:\n  - {node: 2, axis: 1, heartbeat: 0ms, dcf: node2.cdcf}\n");
+        .write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size()));
+    const auto path = write_source(
+        "net.yaml", "slaves:\n  - {node: 2, axis: 1, heartbeat: 0ms, dcf: node2.cdcf}\n");
     const auto network = load_network_file(path);
     ASSERT_TRUE(network.ok()) << network.error();
     ASSERT_TRUE(network->slaves.at(0).concise_dcf);
@@ -110,7 +113,8 @@ TEST(NetworkFile, AConciseDcfConfiguresItsSlaveInsteadOfTheAxisSetUp) {
 
 TEST(NetworkFile, ABrokenOrMissingConciseDcfIsAnErrorAtItsLine) {
     write_source("cut.cdcf", std::string("\x01\x00\x00\x00\x17", 5));
-    const auto cut = load_network_file(write_source("net.yaml", "slaves:\n  - node: 2\n    dcf: cut.cdcf\n"));
+    const auto cut =
+        load_network_file(write_source("net.yaml", "slaves:\n  - node: 2\n    dcf: cut.cdcf\n"));
     ASSERT_FALSE(cut.ok());
     EXPECT_THAT(cut.error(), HasSubstr("net.yaml:3:10: error: dcf "));
     EXPECT_THAT(cut.error(), HasSubstr("cut.cdcf: entry 1 of 1 is cut off at byte 4"));
@@ -120,10 +124,30 @@ TEST(NetworkFile, ABrokenOrMissingConciseDcfIsAnErrorAtItsLine) {
     EXPECT_THAT(missing.error(), HasSubstr("nowhere.cdcf: cannot read the file"));
 }
 
+TEST(NetworkFile, APlantFileGivesASimulatedSlaveItsMachine) {
+    write_source("machine.yaml", "switches:\n  home: 6000\n");
+    const auto network = load_network_file(
+        write_source("net.yaml", "slaves:\n  - {node: 2, plant: machine.yaml}\n"));
+    ASSERT_TRUE(network.ok()) << network.error();
+    ASSERT_TRUE(network->slaves.at(0).plant);
+    EXPECT_EQ(network->slaves.at(0).plant->switches.home, 6000);
+
+    const auto internal = load_network_file(
+        write_source("net2.yaml", "slaves:\n  - {node: 1, port: internal, plant: machine.yaml}\n"));
+    ASSERT_FALSE(internal.ok());
+    EXPECT_THAT(internal.error(), HasSubstr("'plant' is for EPOS2s simulated on the CAN bus"));
+    const auto missing = load_network_file(
+        write_source("net3.yaml", "slaves:\n  - {node: 2, plant: nowhere.yaml}\n"));
+    ASSERT_FALSE(missing.ok());
+    EXPECT_THAT(missing.error(), HasSubstr("net3.yaml:2:"));
+    EXPECT_THAT(missing.error(), HasSubstr("plant "));
+}
+
 TEST(NetworkFile, AConfigurationDateMismatchOnAMandatorySlaveHoldsTheNetworkBack) {
-    const auto network = parse_network_file(
-        "slaves:\n  - node: 2\n    expect: {configuration_date: 14000, configuration_time: 3600000}\n",
-        "net.yaml");
+    const auto network =
+        parse_network_file("slaves:\n  - node: 2\n    expect: {configuration_date: 14000, "
+                           "configuration_time: 3600000}\n",
+                           "net.yaml");
     ASSERT_TRUE(network.ok()) << network.error();
     EposP device;
     device.add_network(*network);

@@ -4,6 +4,7 @@
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/core/result.hpp"
 #include "eposp/core/time.hpp"
+#include "eposp/drives/plant/servo_axis.hpp"
 #include "eposp/manager/network_list.hpp"
 
 #include <chrono>
@@ -37,6 +38,9 @@ struct NetworkSlave {
     std::optional<std::vector<manager::ConfigurationWrite>> concise_dcf;
     /// The consumer heartbeat time the controller watches it with; 0: no supervision.
     std::uint16_t heartbeat_ms = 100;
+    /// A simulated slave's machine: motor, load, switches … (an axis file, as `eposp drive
+    /// epos2 --config` reads); the reference axis without one.
+    std::optional<drives::plant::AxisParameters> plant;
 };
 
 /// A device event that releases an event task of the program (docs/network.md, "Events").

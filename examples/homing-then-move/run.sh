@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Homing, then moves, on one axis with the PLCopen motion blocks: the EPOS P boots an EPOS2 on
+# its CAN bus as axis 1 (network.yaml; its machine with a home switch in machine.yaml), then
+# homing-then-move.st powers the axis, writes its homing speeds, homes it on the switch
+# (MC_Home, method 23) and visits three positions, for 6 s of virtual time. It prints the
+# program's end state and the axis every 250 ms, and leaves the trace and its plot in
+# build/demo/.
+#
+# Usage: examples/homing-then-move/run.sh [path/to/eposp]
+set -euo pipefail
+eposp=$(realpath "${1:-build/device/eposp}")
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+out=${EPOSP_DEMO_DIR:-build/demo}
+mkdir -p "$out"
+
+section() { printf '\n\033[1m%s\033[0m\n' "$*"; }
+
+section "Homing, then moves, on axis 1 (examples/homing-then-move)"
+"$eposp" run "$here/homing-then-move.st" --network "$here/network.yaml" --for 6s \
+    --trace "$out/homing-then-move.csv" --watch Main.Step --watch Main.Visited \
+    --watch Main.Failed --watch Main.Position.Position
+
+section "Axis 1 every 250 ms from $out/homing-then-move.csv (qc, rpm, PLCopen state)"
+awk -F, 'NR > 1 && $2 == 1 && $1 * 1000 % 250 == 0 && $1 >= 0.5 {
+        printf "%6.2f s   %7d qc %6d rpm   %s\n", $1, $7, $9, $11 }' "$out/homing-then-move.csv"
+"$eposp" plot "$out/homing-then-move.csv" -o "$out/homing-then-move.svg"
