@@ -123,6 +123,9 @@ void EposP::follow_sync() {
     const core::Duration delay =
         window.count() > 0 && window < period ? core::Duration(window) : core::Duration(period) / 2;
     plc_.runtime().align_cycles(loop_.now() + delay, period);
+    // What the axes run goes on when no block of theirs is called: with the TPDOs in, as the
+    // tasks of the cycle see them (DESIGN.md, "One communication cycle").
+    loop_.after(delay, [this] { motion_->poll(); });
     for (const std::size_t task : sync_tasks_) {
         plc_.runtime().raise_event(task);
     }

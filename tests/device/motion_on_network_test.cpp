@@ -7,7 +7,9 @@
 #include "eposp_command.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <gtest/gtest.h>
+#include <optional>
 
 namespace eposp::device {
 namespace {
@@ -85,6 +87,46 @@ TEST_F(MotionOnNetwork, BothAxesArePoweredAndMoveToTheirTargets) {
     EXPECT_EQ(actual_position(0), -12000);
 }
 
+/// Seconds a move of `distance` qc takes on the drive's trapezoidal profile from rest to rest
+/// (v rpm, a rpm/s, 2000 qc per turn on the reference axis): a triangle when it is too short to
+/// reach v.
+double profile_time(double distance, double v, double a) {
+    const double turns = std::abs(distance) / 2000.0;
+    const double rps = v / 60.0;
+    const double rps2 = a / 60.0;
+    const double ramps = rps * rps / rps2; // the turns both ramps take
+    return turns >= ramps ? turns / rps + rps / rps2 : 2 * std::sqrt(turns / rps2);
+}
+
+TEST_F(MotionOnNetwork, MovesAreDoneWhenTheirProfileEnds) {
+    go();
+    std::optional<double> started[2];
+    std::optional<double> done[2];
+    for (int ms = 1; ms <= 2000 && !(done[0] && done[1]); ++ms) {
+        device.loop().run_for(1ms);
+        const double now = ms / 1000.0;
+        for (const int axis : {0, 1}) {
+            const std::string move = "Move" + std::to_string(axis);
+            if (!started[axis] && value(move + ".Active") == "TRUE") {
+                started[axis] = now;
+            }
+            if (!done[axis] && value(move + ".Done") == "TRUE") {
+                done[axis] = now;
+            }
+        }
+    }
+    ASSERT_TRUE(done[0] && done[1]);
+    // From the cycle the block became Active: the profile parameters go out by SDO and the
+    // set-point handshake takes two SYNCs each way; the drive's target reached comes with the
+    // next TPDO. Together under 10 ms.
+    const double expected[2] = {profile_time(20000, 3000, 10000), profile_time(12000, 3000, 10000)};
+    for (const int axis : {0, 1}) {
+        const double took = *done[axis] - *started[axis];
+        EXPECT_GE(took, expected[axis]) << "axis " << axis;
+        EXPECT_LE(took, expected[axis] + 0.010) << "axis " << axis;
+    }
+}
+
 TEST_F(MotionOnNetwork, ADriveFaultMidMoveIsErrorStopWithTheDrivesErrorCode) {
     go();
     device.loop().run_for(200ms);
@@ -109,6 +151,78 @@ TEST_F(MotionOnNetwork, ALostHeartbeatMidMoveIsErrorStop) {
     EXPECT_EQ(value("State1.State"), "6");
     EXPECT_EQ(value("Move1.ErrorID"), "4099"); // 16#1003
     EXPECT_EQ(value("Error1.AxisErrorID"), "4099");
+}
+
+TEST(MotionOnNetworkPolling, AMoveGoesOnWhenItsBlockIsNoLongerCalled) {
+    auto network = parse_network_file(kNetwork, "net.yaml");
+    ASSERT_TRUE(network) << network.error();
+    EposP device;
+    device.add_network(*network);
+    ASSERT_FALSE(device.plc().load(compile_program(R"ST(
+PROGRAM Main
+VAR
+  Axis1 : AXIS_REF := (AxisNo := 1);
+  Power : MC_Power;
+  Move : MC_MoveAbsolute;
+  Calls : INT;
+  Powered : BOOL;
+END_VAR
+(* Power until it is on, then two calls of the move, then no block at all. *)
+IF NOT Powered THEN
+  Power(Axis := Axis1, Enable := TRUE);
+  Powered := Power.Status;
+ELSIF Calls < 2 THEN
+  Move(Axis := Axis1, Execute := TRUE, Position := 8000, Velocity := 3000,
+       Acceleration := 10000, Deceleration := 10000);
+  Calls := Calls + 1;
+END_IF;
+END_PROGRAM
+)ST")));
+    ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+    device.loop().run_for(2s);
+    const auto& drive = device.simulated_slaves()[0]->objects();
+    EXPECT_EQ(drive.get_as<std::int32_t>(0x6064, 0), 8000);
+    // The set-point handshake was finished for it: the new set-point bit is low again.
+    EXPECT_EQ(drive.get_as<std::uint16_t>(0x6040, 0) & 0x10, 0);
+    EXPECT_EQ(device.motion().axis(1).state(), plcopen::AxisState::Standstill);
+}
+
+TEST(MotionOnNetworkLimits, ALimitSwitchStopsTheAxisInErrorStopWithItsErrorCode) {
+    write_source("machine.yaml", "switches:\n  positive_limit: 15000\n");
+    auto network = load_network_file(write_source(
+        "net.yaml", "sync_period: 1ms\nslaves:\n  - {node: 2, axis: 1, plant: machine.yaml}\n"));
+    ASSERT_TRUE(network) << network.error();
+    EposP device;
+    device.add_network(*network);
+    ASSERT_FALSE(device.plc().load(compile_program(R"ST(
+PROGRAM Main
+VAR
+  Axis1 : AXIS_REF := (AxisNo := 1);
+  Power : MC_Power;
+  ExecuteLimits : MC_WriteParameter;
+  Move : MC_MoveAbsolute;
+  State : MC_ReadAxisState;
+  AxisError : MC_ReadAxisError;
+END_VAR
+Power(Axis := Axis1, Enable := TRUE);
+(* 0x2071 sub 4: the limit switches stop the drive (bits 0 and 1 of the execution mask) *)
+ExecuteLimits(Axis := Axis1, Execute := Power.Status, ParameterNumber := 16#207104, Value := 3);
+Move(Axis := Axis1, Execute := ExecuteLimits.Done, Position := 20000, Velocity := 3000,
+     Acceleration := 10000, Deceleration := 10000);
+State(Axis := Axis1, Enable := TRUE);
+AxisError(Axis := Axis1, Enable := TRUE);
+END_PROGRAM
+)ST")));
+    ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+    device.loop().run_for(2s);
+    const auto value = [&](const std::string& path) {
+        return *device.plc().value_of("Main." + path);
+    };
+    EXPECT_EQ(value("State.State"), "6");               // ErrorStop
+    EXPECT_EQ(value("AxisError.AxisErrorID"), "65287"); // 16#FF07 positive limit switch
+    const auto position = device.simulated_slaves()[0]->objects().get_as<std::int32_t>(0x6064, 0);
+    EXPECT_GE(position, 15000);
+    EXPECT_LT(position, 20000);
 }
 
 TEST(MaxonBlocksOnNetwork, SdoAndNmtReachAnySlaveAndTheErrorHistoryOfTheEposP) {
