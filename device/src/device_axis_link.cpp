@@ -29,6 +29,12 @@ void set_entry(vm::ProcessImage& image, std::uint16_t index, std::uint8_t sub_in
     }
 }
 
+/// A slave of port 1 or 2 (1..127).
+bool on_a_bus(plcopen::NodeAddress node) {
+    return (node.port == kInternalPort || node.port == kExternalPort) && node.node >= 1 &&
+           node.node <= 127;
+}
+
 } // namespace
 
 DeviceAxisLink::DeviceAxisLink(canopen::ObjectDictionary& od, vm::ProcessImage& image,
@@ -117,8 +123,7 @@ void DeviceAxisLink::read(plcopen::NodeAddress node, std::uint16_t index, std::u
         reply_later(std::move(done), reply_with(code, value));
         return;
     }
-    if ((node.port != kInternalPort && node.port != kExternalPort) || node.node < 1 ||
-        node.node > 127) {
+    if (!on_a_bus(node)) {
         reply_later(std::move(done),
                     {.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
         return;
@@ -153,8 +158,7 @@ void DeviceAxisLink::write(plcopen::NodeAddress node, std::uint16_t index, std::
         reply_later(std::move(done), {.abort_code = static_cast<std::uint32_t>(code)});
         return;
     }
-    if ((node.port != kInternalPort && node.port != kExternalPort) || node.node < 1 ||
-        node.node > 127) {
+    if (!on_a_bus(node)) {
         reply_later(std::move(done),
                     {.abort_code = static_cast<std::uint32_t>(canopen::AbortCode::GeneralError)});
         return;

@@ -7,13 +7,7 @@
 # every 250 ms, and leaves the trace and its plot in build/demo/.
 #
 # Usage: examples/conveyor/run.sh [path/to/eposp]
-set -euo pipefail
-eposp=$(realpath "${1:-build/device/eposp}")
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-out=${EPOSP_DEMO_DIR:-build/demo}
-mkdir -p "$out"
-
-section() { printf '\n\033[1m%s\033[0m\n' "$*"; }
+. "$(dirname "${BASH_SOURCE[0]}")/../demo-common.sh"
 
 section "A conveyor started by a drive's digital input (examples/conveyor)"
 "$eposp" run "$here/conveyor.st" --network "$here/network.yaml" --for 8s \

@@ -7,13 +7,7 @@
 # build/demo/.
 #
 # Usage: examples/homing-then-move/run.sh [path/to/eposp]
-set -euo pipefail
-eposp=$(realpath "${1:-build/device/eposp}")
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-out=${EPOSP_DEMO_DIR:-build/demo}
-mkdir -p "$out"
-
-section() { printf '\n\033[1m%s\033[0m\n' "$*"; }
+. "$(dirname "${BASH_SOURCE[0]}")/../demo-common.sh"
 
 section "Homing, then moves, on axis 1 (examples/homing-then-move)"
 "$eposp" run "$here/homing-then-move.st" --network "$here/network.yaml" --for 6s \

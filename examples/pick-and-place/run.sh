@@ -6,13 +6,7 @@
 # count, the axes every 250 ms from the trace, and leaves the trace and its plot in build/demo/.
 #
 # Usage: examples/pick-and-place/run.sh [path/to/eposp]
-set -euo pipefail
-eposp=$(realpath "${1:-build/device/eposp}")
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-out=${EPOSP_DEMO_DIR:-build/demo}
-mkdir -p "$out"
-
-section() { printf '\n\033[1m%s\033[0m\n' "$*"; }
+. "$(dirname "${BASH_SOURCE[0]}")/../demo-common.sh"
 
 section "A pick-and-place cell with MC_Power, MC_Home and MC_MoveAbsolute (examples/pick-and-place)"
 "$eposp" run "$here/pick-and-place.st" --network "$here/../two-axis/network.yaml" --for 10s \

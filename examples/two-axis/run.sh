@@ -6,13 +6,7 @@
 # candump log of both buses and a pcap of the CAN bus in build/demo/.
 #
 # Usage: examples/two-axis/run.sh [path/to/eposp]
-set -euo pipefail
-eposp=$(realpath "${1:-build/device/eposp}")
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-out=${EPOSP_DEMO_DIR:-build/demo}
-mkdir -p "$out"
-
-section() { printf '\n\033[1m%s\033[0m\n' "$*"; }
+. "$(dirname "${BASH_SOURCE[0]}")/../demo-common.sh"
 
 section "An ST program moving two axes on the EPOS P (examples/two-axis)"
 "$eposp" run "$here/two-axis.st" --network "$here/network.yaml" --for 5s \

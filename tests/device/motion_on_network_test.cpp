@@ -52,17 +52,26 @@ CONFIGURATION Cell
 END_CONFIGURATION
 )ST";
 
+/// Puts `network` and `program` on `device` and starts the program cold.
+void start(EposP& device, const core::Result<NetworkFile>& network, const std::string& program) {
+    ASSERT_TRUE(network) << network.error();
+    device.add_network(*network);
+    ASSERT_FALSE(device.plc().load(compile_program(program)));
+    ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+}
+
+/// A variable of the program instance Main, as an IEC literal.
+std::string value(EposP& device, const std::string& path) {
+    return *device.plc().value_of("Main." + path);
+}
+
 class MotionOnNetwork : public testing::Test {
 protected:
     void SetUp() override {
-        auto network = parse_network_file(kNetwork, "net.yaml");
-        ASSERT_TRUE(network) << network.error();
-        device.add_network(*network);
-        ASSERT_FALSE(device.plc().load(compile_program(std::string(kProgram))));
-        ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+        start(device, parse_network_file(kNetwork, "net.yaml"), std::string(kProgram));
         device.loop().run_for(1s); // booted at about 0.55 s, then powered
     }
-    std::string value(const std::string& path) { return *device.plc().value_of("Main." + path); }
+    std::string value(const std::string& path) { return device::value(device, path); }
     std::int32_t actual_position(std::size_t slave) {
         return device.simulated_slaves()[slave]->objects().get_as<std::int32_t>(0x6064, 0);
     }
@@ -154,11 +163,9 @@ TEST_F(MotionOnNetwork, ALostHeartbeatMidMoveIsErrorStop) {
 }
 
 TEST(MotionOnNetworkPolling, AMoveGoesOnWhenItsBlockIsNoLongerCalled) {
-    auto network = parse_network_file(kNetwork, "net.yaml");
-    ASSERT_TRUE(network) << network.error();
+    const auto network = parse_network_file(kNetwork, "net.yaml");
     EposP device;
-    device.add_network(*network);
-    ASSERT_FALSE(device.plc().load(compile_program(R"ST(
+    start(device, network, R"ST(
 PROGRAM Main
 VAR
   Axis1 : AXIS_REF := (AxisNo := 1);
@@ -177,8 +184,7 @@ ELSIF Calls < 2 THEN
   Calls := Calls + 1;
 END_IF;
 END_PROGRAM
-)ST")));
-    ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+)ST");
     device.loop().run_for(2s);
     const auto& drive = device.simulated_slaves()[0]->objects();
     EXPECT_EQ(drive.get_as<std::int32_t>(0x6064, 0), 8000);
@@ -189,12 +195,10 @@ END_PROGRAM
 
 TEST(MotionOnNetworkLimits, ALimitSwitchStopsTheAxisInErrorStopWithItsErrorCode) {
     write_source("machine.yaml", "switches:\n  positive_limit: 15000\n");
-    auto network = load_network_file(write_source(
+    const auto network = load_network_file(write_source(
         "net.yaml", "sync_period: 1ms\nslaves:\n  - {node: 2, axis: 1, plant: machine.yaml}\n"));
-    ASSERT_TRUE(network) << network.error();
     EposP device;
-    device.add_network(*network);
-    ASSERT_FALSE(device.plc().load(compile_program(R"ST(
+    start(device, network, R"ST(
 PROGRAM Main
 VAR
   Axis1 : AXIS_REF := (AxisNo := 1);
@@ -212,11 +216,10 @@ Move(Axis := Axis1, Execute := ExecuteLimits.Done, Position := 20000, Velocity :
 State(Axis := Axis1, Enable := TRUE);
 AxisError(Axis := Axis1, Enable := TRUE);
 END_PROGRAM
-)ST")));
-    ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+)ST");
     device.loop().run_for(2s);
     const auto value = [&](const std::string& path) {
-        return *device.plc().value_of("Main." + path);
+        return device::value(device, path);
     };
     EXPECT_EQ(value("State.State"), "6");               // ErrorStop
     EXPECT_EQ(value("AxisError.AxisErrorID"), "65287"); // 16#FF07 positive limit switch
@@ -227,10 +230,7 @@ END_PROGRAM
 
 TEST(MaxonBlocksOnNetwork, SdoAndNmtReachAnySlaveAndTheErrorHistoryOfTheEposP) {
     EposP device;
-    auto network = parse_network_file(kNetwork, "net.yaml");
-    ASSERT_TRUE(network) << network.error();
-    device.add_network(*network);
-    ASSERT_FALSE(device.plc().load(compile_program(R"ST(
+    start(device, parse_network_file(kNetwork, "net.yaml"), R"ST(
 PROGRAM Main
 VAR
   Controller : AXIS_REF := (AxisNo := 255);
@@ -246,13 +246,12 @@ Heartbeat(Execute := Go, Port := 2, NodeId := 2, Index := 16#1017, SubIndex := 0
 Stop(Execute := StopIt, Port := 2, NodeId := 2, Command := 2);
 Errors(Axis := Controller, Enable := TRUE);
 END_PROGRAM
-)ST")));
-    ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+)ST");
     device.loop().run_for(1s);
     ASSERT_FALSE(device.plc().runtime().write_value<std::uint8_t>("Main.Go", 1));
     device.loop().run_for(50ms);
     const auto value = [&](const std::string& path) {
-        return *device.plc().value_of("Main." + path);
+        return device::value(device, path);
     };
     EXPECT_EQ(value("Vendor.Done"), "TRUE");
     EXPECT_EQ(value("Vendor.Data"), "251"); // maxon's vendor-ID 0xFB

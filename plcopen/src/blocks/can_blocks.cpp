@@ -54,15 +54,8 @@ BlockDefinition sdo_block(BlockInterface declared, bool write) {
                                         : requests.read(*node, index, sub_index));
                     set_flag(block, out.busy, true);
                 }
-                if (!flag(block, out.busy)) {
-                    return;
-                }
-                const std::uint32_t request = block.get<std::uint32_t>(out.work);
-                const auto reply = requests.take(request);
+                const auto reply = followed_reply(block, out, requests);
                 if (!reply) {
-                    if (!requests.pending(request)) {
-                        out.failed(block, ErrorId::SdoAbort);
-                    }
                     return;
                 }
                 block.set<std::uint32_t>(abort_code, reply->abort_code);

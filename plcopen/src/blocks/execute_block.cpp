@@ -80,6 +80,19 @@ void ExecuteOutputs::end(vm::NativeBlock& block, std::size_t output, ErrorId err
     block.set<std::uint16_t>(error_id, static_cast<std::uint16_t>(error));
 }
 
+std::optional<SdoReply> followed_reply(vm::NativeBlock& block, const ExecuteOutputs& out,
+                                       SdoRequests& requests) {
+    if (!flag(block, out.busy)) {
+        return std::nullopt;
+    }
+    const std::uint32_t request = block.get<std::uint32_t>(out.work);
+    auto reply = requests.take(request);
+    if (!reply && !requests.pending(request)) {
+        out.failed(block, ErrorId::SdoAbort);
+    }
+    return reply;
+}
+
 ExecuteBlock::ExecuteBlock(const BlockInterface& interface, Submit submit, bool stops)
     : outputs_(interface), submit_(std::move(submit)), stops_(stops) {}
 

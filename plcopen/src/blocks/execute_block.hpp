@@ -3,6 +3,7 @@
 #include "block_definition.hpp"
 
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -35,6 +36,11 @@ private:
     void end(vm::NativeBlock& block, std::size_t output, ErrorId error) const;
     void clear(vm::NativeBlock& block) const;
 };
+
+/// The reply of the SDO transfer a Busy Execute block follows (its `work`), once it came; a
+/// transfer forgotten meanwhile fails the block.
+std::optional<SdoReply> followed_reply(vm::NativeBlock& block, const ExecuteOutputs& out,
+                                       SdoRequests& requests);
 
 /// A block that gives its axis a command (MotionCommand, MC_Reset) and follows it to its end.
 class ExecuteBlock {

@@ -158,15 +158,8 @@ BlockDefinition writer(WriterSpec spec) {
                     block.set<std::uint8_t>(target_field, std::get<AxisNumber>(*target));
                     set_flag(block, out.busy, true);
                 }
-                if (!flag(block, out.busy)) {
-                    return;
-                }
-                const std::uint32_t request = block.get<std::uint32_t>(out.work);
-                const auto reply = requests.take(request);
+                const auto reply = followed_reply(block, out, requests);
                 if (!reply) {
-                    if (!requests.pending(request)) {
-                        out.failed(block, ErrorId::SdoAbort);
-                    }
                     return;
                 }
                 if (reply->abort_code != 0 || !object) {
