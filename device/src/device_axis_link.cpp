@@ -12,6 +12,9 @@ namespace {
 
 constexpr std::uint16_t kAxisTable = 0x5280;
 constexpr std::uint8_t kUnassigned = 255;
+/// SYNCs without a new statusword after which an axis whose statusword came by PDO is lost:
+/// its slave still sends its heartbeat, but its TPDOs stopped (an NMT stop, a lost frame ID).
+constexpr std::uint32_t kMissedSyncs = 10;
 
 template <typename T>
 T entry_value(vm::ProcessImage& image, std::uint16_t index, std::uint8_t sub_index) {
@@ -43,6 +46,21 @@ DeviceAxisLink::DeviceAxisLink(canopen::ObjectDictionary& od, vm::ProcessImage& 
     for (const std::uint8_t port : {kInternalPort, kExternalPort}) {
         ports_(port).on_sync([this, port] { ++syncs_[port]; });
     }
+    for (plcopen::AxisNumber axis = 0; axis < plcopen::kAxisCount; ++axis) {
+        listeners_.push_back(
+            od_.on_change(kAxisTable + axis, [this, axis](std::uint16_t, std::uint8_t sub_index) {
+                const auto assigned = slave(axis);
+                if (sub_index == 2 && assigned) {
+                    last_statusword_[axis] = syncs_[assigned->port];
+                }
+            }));
+    }
+}
+
+DeviceAxisLink::~DeviceAxisLink() {
+    for (const auto id : listeners_) {
+        od_.remove_listener(id);
+    }
 }
 
 std::optional<DeviceAxisLink::Slave> DeviceAxisLink::slave(plcopen::AxisNumber axis) const {
@@ -61,8 +79,11 @@ plcopen::AxisPresence DeviceAxisLink::presence(plcopen::AxisNumber axis) const {
     if (!assigned) {
         return plcopen::AxisPresence::Unassigned;
     }
-    return ports_(assigned->port).network().booted(assigned->node) ? plcopen::AxisPresence::Ready
-                                                                   : plcopen::AxisPresence::Lost;
+    const auto& last = last_statusword_[axis];
+    const bool pdos_stopped = last && syncs_[assigned->port] - *last > kMissedSyncs;
+    return ports_(assigned->port).network().booted(assigned->node) && !pdos_stopped
+               ? plcopen::AxisPresence::Ready
+               : plcopen::AxisPresence::Lost;
 }
 
 bool DeviceAxisLink::has_process_data(plcopen::AxisNumber axis) const {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace eposp::device {
 
@@ -17,12 +18,17 @@ namespace eposp::device {
 /// statusword is 0x5280 + n sub 2 and, for axes 0..15, its position actual value, controlword
 /// and target position are the axis' process image channels (AxisChannels), which the axis PDOs
 /// of the network file carry. SDO transfers go through the port's SDO client; samples() counts
-/// the port's SYNCs, after which the PLC task of the cycle runs with the TPDOs in.
+/// the port's SYNCs, after which the PLC task of the cycle runs with the TPDOs in. An axis is
+/// lost when its slave is not booted (a failed boot, a lost heartbeat) or, once its statusword
+/// has come by PDO, when none came for 10 SYNCs.
 class DeviceAxisLink : public plcopen::AxisLink {
 public:
     /// `ports` gives the NetworkPort of port 1 or 2; all must outlive the link.
     DeviceAxisLink(canopen::ObjectDictionary& od, vm::ProcessImage& image,
                    std::function<NetworkPort&(std::uint8_t port)> ports);
+    ~DeviceAxisLink() override;
+    DeviceAxisLink(const DeviceAxisLink&) = delete;
+    DeviceAxisLink& operator=(const DeviceAxisLink&) = delete;
 
     plcopen::AxisPresence presence(plcopen::AxisNumber axis) const override;
     bool has_process_data(plcopen::AxisNumber axis) const override;
@@ -55,6 +61,9 @@ private:
     vm::ProcessImage& image_;
     std::function<NetworkPort&(std::uint8_t port)> ports_;
     std::array<std::uint32_t, 3> syncs_{}; ///< by port code
+    /// syncs_ of the axis' port when its statusword last arrived; none before the first.
+    std::array<std::optional<std::uint32_t>, plcopen::kAxisCount> last_statusword_{};
+    std::vector<canopen::ObjectDictionary::ListenerId> listeners_;
 };
 
 } // namespace eposp::device

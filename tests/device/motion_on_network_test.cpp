@@ -277,6 +277,18 @@ std::string run_example(const std::string& name) {
     return result.output;
 }
 
+TEST_F(MotionOnNetwork, StoppedProcessDataMidMoveAreErrorStop) {
+    go();
+    device.loop().run_for(200ms);
+    // The slave's TPDO 1 (statusword, position) stops; its heartbeat goes on.
+    device.external_bus().drop_frames([](const can::Frame& frame) { return frame.id == 0x182; },
+                                      100000);
+    device.loop().run_for(30ms);
+    EXPECT_EQ(value("State1.State"), "6");
+    EXPECT_EQ(value("Move1.ErrorID"), "4099"); // 16#1003
+    EXPECT_EQ(value("Move0.Busy"), "TRUE");    // the other axis goes on
+}
+
 TEST(MotionExamples, ThePickAndPlaceCellRunsItsThreeCycles) {
     const std::string output = run_example("pick-and-place");
     EXPECT_NE(output.find("Main.Cycles = 3\nMain.Step = 14\nMain.Failed = FALSE"),
