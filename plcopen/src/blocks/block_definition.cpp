@@ -33,11 +33,18 @@ AxisDriver* referenced_axis(vm::NativeBlock& block, MotionLibrary& library) {
     return &library.axis(axis_ref[0]);
 }
 
-std::size_t field(const BlockInterface& interface, std::string_view name) {
+std::optional<std::size_t> find_field(const BlockInterface& interface, std::string_view name) {
     for (std::size_t i = 0; i < interface.variables.size(); ++i) {
         if (interface.variables[i].name == name) {
             return i;
         }
+    }
+    return std::nullopt;
+}
+
+std::size_t field(const BlockInterface& interface, std::string_view name) {
+    if (const auto index = find_field(interface, name)) {
+        return *index;
     }
     throw std::logic_error("native block " + std::string(interface.name) + " has no " +
                            std::string(name));

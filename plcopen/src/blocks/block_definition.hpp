@@ -7,6 +7,7 @@
 #include "eposp/plcopen/motion_library.hpp"
 
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -55,7 +56,9 @@ inline void set_flag(vm::NativeBlock& block, std::size_t field, bool value) {
 /// The driver of the axis the block's AXIS_REF names; null when AxisNo is above 31.
 AxisDriver* referenced_axis(vm::NativeBlock& block, MotionLibrary& library);
 
-/// The index of the variable `name` in `interface` (a programming error if it has none).
+/// The index of the variable `name` in `interface`, if it has one.
+std::optional<std::size_t> find_field(const BlockInterface& interface, std::string_view name);
+/// The same for a variable it must have (a programming error if not).
 std::size_t field(const BlockInterface& interface, std::string_view name);
 
 } // namespace eposp::plcopen::blocks

@@ -20,13 +20,9 @@ std::vector<BlockVariable> execute_outputs(std::string_view done, bool abortable
 
 namespace {
 
+/// The index of an output some Execute blocks have; 0 (Axis or Execute) when this one has not.
 std::size_t optional_field(const BlockInterface& interface, std::string_view name) {
-    for (std::size_t i = 0; i < interface.variables.size(); ++i) {
-        if (interface.variables[i].name == name) {
-            return i;
-        }
-    }
-    return 0;
+    return find_field(interface, name).value_or(0);
 }
 
 } // namespace
