@@ -93,7 +93,7 @@ std::optional<std::string> HostedBus::open_outside_world() {
             return fmt::format("--socketcan {}: {}", *options_.socketcan, opened.error());
         }
         socketcan_ = std::move(*opened);
-        bridge_ = std::make_unique<can::PortBridge>(attach("socketcan:" + *options_.socketcan),
+        bridge_ = std::make_unique<can::PortBridge>(attach_gateway("socketcan:" + *options_.socketcan),
                                                     *socketcan_);
         fmt::print("socketcan: {} bridged to bus {}\n", *options_.socketcan, options_.name);
     }
@@ -115,7 +115,7 @@ std::optional<std::string> HostedBus::join_server() {
     }
     joined_ = std::move(*opened);
     // Bridged at once: what the bus sends meanwhile waits in the port until raw mode is on.
-    join_bridge_ = std::make_unique<can::PortBridge>(attach("join:" + address), *joined_);
+    join_bridge_ = std::make_unique<can::PortBridge>(attach_gateway("join:" + address), *joined_);
 
     // Nothing else runs yet, so the loop is run here until the server has answered; the port
     // gives up by itself when it does not (its handshake timeout).
@@ -154,6 +154,11 @@ std::optional<std::string> HostedBus::socketcand_address() const {
 
 can::VirtualPort& HostedBus::attach(const std::string& name) {
     own_ports_.push_back(bus_.connect(name));
+    return *own_ports_.back();
+}
+
+can::VirtualPort& HostedBus::attach_gateway(const std::string& name) {
+    own_ports_.push_back(bus_.connect(name, can::kGatewayTxQueueCapacity));
     return *own_ports_.back();
 }
 

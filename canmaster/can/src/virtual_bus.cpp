@@ -418,8 +418,10 @@ VirtualBus::~VirtualBus() {
     }
 }
 
-std::unique_ptr<VirtualPort> VirtualBus::connect(std::string name) {
-    std::unique_ptr<VirtualPort> port(new VirtualPort(*this, std::move(name)));
+std::unique_ptr<VirtualPort> VirtualBus::connect(std::string name,
+                                                 std::optional<std::size_t> tx_queue_capacity) {
+    std::unique_ptr<VirtualPort> port(new VirtualPort(
+        *this, std::move(name), tx_queue_capacity.value_or(config_.tx_queue_capacity)));
     impl_->attach(*port);
     return port;
 }

@@ -16,7 +16,8 @@ namespace eposp::can {
 /// The controller behind a VirtualPort: queues, error counters, bus-off recovery.
 class VirtualPort::Impl {
 public:
-    Impl(VirtualPort& owner, std::uint64_t connection) : port(owner), sequence(connection) {}
+    Impl(VirtualPort& owner, std::uint64_t connection, std::size_t tx_capacity)
+        : port(owner), sequence(connection), tx_queue_capacity(tx_capacity) {}
 
     /// What the controller wants to send next: the babbled frame or the head of its queue.
     const Frame* next_frame() const;
@@ -27,6 +28,7 @@ public:
 
     VirtualPort& port;
     const std::uint64_t sequence; ///< connection order
+    const std::size_t tx_queue_capacity;
     std::deque<Frame> tx_queue;
     std::deque<Frame> rx_queue;
     bool paused = false;

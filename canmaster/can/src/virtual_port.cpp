@@ -6,9 +6,9 @@
 
 namespace eposp::can {
 
-VirtualPort::VirtualPort(VirtualBus& bus, std::string name)
+VirtualPort::VirtualPort(VirtualBus& bus, std::string name, std::size_t tx_queue_capacity)
     : bus_(&bus), name_(std::move(name)),
-      impl_(std::make_unique<Impl>(*this, bus.impl_->next_sequence++)) {}
+      impl_(std::make_unique<Impl>(*this, bus.impl_->next_sequence++, tx_queue_capacity)) {}
 
 VirtualPort::~VirtualPort() {
     if (bus_ != nullptr) {
@@ -26,7 +26,7 @@ SendStatus VirtualPort::send(const Frame& frame) {
     if (impl_->counters.state() == ErrorState::BusOff) {
         return SendStatus::BusOff;
     }
-    if (impl_->tx_queue.size() >= bus_->config().tx_queue_capacity) {
+    if (impl_->tx_queue.size() >= impl_->tx_queue_capacity) {
         ++impl_->counts.tx_overflows;
         impl_->report_overflow(Overflow::Transmit, frame);
         return SendStatus::TxOverflow;

@@ -197,6 +197,8 @@ void NetworkBoot::on_heartbeat(canopen::NodeId node, canopen::NmtState state) {
     if (const auto running = boots_.find(node); running != boots_.end()) {
         if (state != canopen::NmtState::Initialising) {
             running->second->heartbeat_received();
+        } else {
+            running->second->node_restarted();
         }
         return;
     }

@@ -21,9 +21,7 @@ constexpr std::array<BootError, 4> kIdentityErrors{BootError::VendorId, BootErro
 } // namespace
 
 SlaveBoot::SlaveBoot(core::EventLoop& loop, canopen::SdoClient& sdo, SlaveEntry slave, Done done)
-    : loop_(loop), sdo_(sdo), slave_(std::move(slave)), done_(std::move(done)) {
-    result_.node = slave_.node_id;
-}
+    : loop_(loop), sdo_(sdo), slave_(std::move(slave)), done_(std::move(done)) {}
 
 SlaveBoot::~SlaveBoot() {
     finished_ = true; // the cancelled request's callback finds the boot over
@@ -34,9 +32,42 @@ SlaveBoot::~SlaveBoot() {
 
 void SlaveBoot::start(bool heartbeat_seen) {
     heartbeat_seen_ = heartbeat_seen;
+    // The first request completes by callback: begin() never calls back from here.
+    begin();
+}
+
+void SlaveBoot::begin() {
+    result_ = {};
+    result_.node = slave_.node_id;
     result_.started = loop_.now();
-    // The first request completes by callback: next() never calls back from here.
+    step_ = Step::DeviceType;
     next();
+}
+
+void SlaveBoot::node_restarted() {
+    if (finished_) {
+        return;
+    }
+    heartbeat_seen_ = false; // a reset node produces its heartbeat only once configured again
+    if (request_) {
+        restart_pending_ = true;
+        return;
+    }
+    heartbeat_timer_.cancel(); // waiting for a heartbeat: no request is in flight
+    begin();
+}
+
+bool SlaveBoot::goes_on() {
+    request_ = {};
+    if (finished_) {
+        return false;
+    }
+    if (restart_pending_) {
+        restart_pending_ = false;
+        begin();
+        return false;
+    }
+    return true;
 }
 
 void SlaveBoot::heartbeat_received() {
@@ -51,8 +82,7 @@ void SlaveBoot::read(std::uint16_t index, std::uint8_t sub_index,
     request_ = sdo_.upload(slave_.node_id, index, sub_index,
                            [this, check = std::move(check), on_refusal](canopen::AbortCode code,
                                                                         canopen::Bytes value) {
-                               request_ = {};
-                               if (finished_) {
+                               if (!goes_on()) {
                                    return;
                                }
                                if (code == canopen::AbortCode::SdoTimeout) {
@@ -155,8 +185,7 @@ void SlaveBoot::configure(std::size_t write) {
     const ConfigurationWrite& entry = slave_.configuration[write];
     request_ = sdo_.download(slave_.node_id, entry.index, entry.sub_index, entry.value,
                              [this, write](canopen::AbortCode code) {
-                                 request_ = {};
-                                 if (finished_) {
+                                 if (!goes_on()) {
                                      return;
                                  }
                                  if (code == canopen::AbortCode::SdoTimeout) {

@@ -56,7 +56,7 @@ core::Result<OutsideWorld> open_outside_world(const ServeOptions& options, EposP
             return core::Error{fmt::format("--socketcan: {}", port.error())};
         }
         world.socketcan = std::move(*port);
-        world.bridge_port = bus.connect("socketcan-" + *options.socketcan);
+        world.bridge_port = bus.connect("socketcan-" + *options.socketcan, can::kGatewayTxQueueCapacity);
         world.bridge = std::make_unique<can::PortBridge>(*world.socketcan, *world.bridge_port);
         fmt::print("socketcan: bridged {} onto bus {}\n", *options.socketcan, bus.config().name);
     }

@@ -233,6 +233,20 @@ TEST(VirtualBus, TransmitQueueOverflowIsRefusedCountedAndReported) {
     EXPECT_EQ(overflows, std::vector<Overflow>{Overflow::Transmit});
 }
 
+TEST(VirtualBus, APortConnectedWithItsOwnQueueDepthKeepsIt) {
+    core::EventLoop loop;
+    VirtualBus bus(loop, BusConfig{.tx_queue_capacity = 2});
+    auto controller = bus.connect("controller");
+    auto gateway = bus.connect("gateway", 3);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(gateway->send(kZeroFrame), SendStatus::Queued);
+    }
+    EXPECT_EQ(gateway->send(kZeroFrame), SendStatus::TxOverflow);
+    EXPECT_EQ(controller->send(kZeroFrame), SendStatus::Queued);
+    EXPECT_EQ(controller->send(kZeroFrame), SendStatus::Queued);
+    EXPECT_EQ(controller->send(kZeroFrame), SendStatus::TxOverflow);
+}
+
 TEST(VirtualBus, PausedReceiverQueuesThenLosesFramesAndResumesInOrder) {
     core::EventLoop loop;
     VirtualBus bus(loop, BusConfig{.rx_queue_capacity = 2});

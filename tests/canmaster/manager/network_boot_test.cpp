@@ -35,15 +35,15 @@ constexpr std::uint32_t kMandatorySlave =
 constexpr std::uint32_t kOptionalSlave = assignment::kSlave | assignment::kBootSlave;
 constexpr std::uint16_t kHeartbeatMs = 100;
 
-/// A CANopen slave with an identity, a heartbeat of 50 ms and a configuration date and time in
-/// 0x1020 (CiA 301 7.5.2.24).
+/// A CANopen slave with an identity, a heartbeat (50 ms unless told) and a configuration date and
+/// time in 0x1020 (CiA 301 7.5.2.24).
 struct Slave {
     canopen::ObjectDictionary od;
     std::unique_ptr<can::VirtualPort> port;
     std::unique_ptr<canopen::Node> node;
 
     Slave(core::EventLoop& loop, can::VirtualBus& bus, NodeId id, canopen::LssAddress identity,
-          std::uint32_t device_type) {
+          std::uint32_t device_type, std::uint16_t heartbeat_ms = 50) {
         od.add_object(0x1020, "Verify Configuration", canopen::ObjectCode::Array);
         od.add_sub(0x1020, 1, "Configuration Date", canopen::DataType::Unsigned32,
                    canopen::Access::ReadWrite, canopen::encode(std::uint32_t{0x1234}));
@@ -55,7 +55,7 @@ struct Slave {
         config.device_type = device_type;
         config.identity = identity;
         node = std::make_unique<canopen::Node>(loop, *port, od, config);
-        set_heartbeat(50);
+        set_heartbeat(heartbeat_ms);
         node->start();
     }
     NmtState state() const { return node->nmt_state(); }
@@ -335,6 +335,51 @@ TEST(NetworkBoot, AMandatorySlaveThatBootsLateStartsTheNetwork) {
     network.loop.run_for(1s);
     EXPECT_TRUE(network.boot->report().network_started);
     EXPECT_EQ(network.slaves[2]->state(), NmtState::Operational);
+}
+
+// The slave powers up while the manager's read of its 0x1000 goes unanswered, and produces no
+// heartbeat until it is configured: its boot-up message alone must start its boot again, or the
+// read's timeout leaves it failed for good.
+TEST(NetworkBoot, ABootUpMessageDuringItsFailingBootStartsTheBootAgain) {
+    Network network;
+    network.expect(2, kMandatorySlave).configuration = {
+        {0x1017, 0, canopen::encode(std::uint16_t{50})}};
+    network.start();
+    network.loop.run_for(600ms); // the boot time is over: 0x1000 is being read
+    ASSERT_GT(network.sdo.pending(2), 0u);
+
+    network.slaves[2] = std::make_unique<Slave>(network.loop, network.bus, 2, kIdentity,
+                                                kDeviceType, /*heartbeat_ms=*/0);
+    network.loop.run_for(3s);
+    EXPECT_TRUE(network.boot->booted(2)) << listed(network.errors);
+    EXPECT_TRUE(network.boot->report().network_started);
+    EXPECT_EQ(network.slaves[2]->state(), NmtState::Operational);
+}
+
+// Reset in the middle of its configuration, the slave loses what was written so far: the boot
+// starts over and writes all of it, and no answer from before the reset is taken for a new one.
+TEST(NetworkBoot, ASlaveThatResetsDuringItsConfigurationIsConfiguredFromTheStart) {
+    Network network;
+    Slave& slave = network.add_slave(2);
+    SlaveEntry& entry = network.expect(2, kMandatorySlave);
+    entry.configuration.push_back({0x1017, 0, canopen::encode(std::uint16_t{40})});
+    for (std::uint16_t i = 0; i < 20; ++i) { // a long configuration, overwriting one object
+        entry.configuration.push_back({0x1020, 1, canopen::encode(std::uint32_t{0x1234})});
+    }
+    network.start();
+    for (int step = 0; step < 20'000 && slave.od.get_as<std::uint16_t>(0x1017, 0) != 40; ++step) {
+        network.loop.run_for(100us);
+    }
+    network.loop.run_for(2ms);
+    ASSERT_GT(network.sdo.pending(2), 0u) << "the configuration should still be running";
+
+    slave.node->nmt().apply(canopen::NmtCommand::ResetNode);
+    ASSERT_EQ(slave.od.get_as<std::uint16_t>(0x1017, 0), 50u); // back to its default
+    network.loop.run_for(2s);
+    EXPECT_TRUE(network.errors.empty()) << listed(network.errors);
+    EXPECT_TRUE(network.boot->booted(2));
+    EXPECT_EQ(slave.od.get_as<std::uint16_t>(0x1017, 0), 40u);
+    EXPECT_EQ(slave.state(), NmtState::Operational);
 }
 
 TEST(NetworkBoot, AnOptionalSlaveThatBootsLateIsBootedAndStarted) {

@@ -123,7 +123,7 @@ void SocketcandSession::handle(const sc::OpenBus& open) {
                           fmt::format("it asked for bus '{}', not '{}'", open.bus, served));
         return;
     }
-    port_ = bus_.connect(name_);
+    port_ = bus_.connect(name_, kGatewayTxQueueCapacity);
     port_->on_receive([this](const Frame& frame) { on_bus_frame(frame); });
     state_ = State::Bcm;
     enqueue(sc::kOk);

@@ -70,6 +70,8 @@ private:
     explicit HostedBus(const HostedBusOptions& options);
     std::optional<std::string> open_outside_world();
     std::optional<std::string> join_server();
+    /// The port of a bridge to the outside: it buffers bursts (can::kGatewayTxQueueCapacity).
+    can::VirtualPort& attach_gateway(const std::string& name);
 
     HostedBusOptions options_;
     core::EventLoop loop_;

@@ -10,6 +10,7 @@
 #include <boost/asio/write.hpp>
 #include <cctype>
 #include <deque>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <optional>
 
@@ -289,6 +290,23 @@ TEST_F(SocketcandServerTest, FullSessionCarriesFramesBothWays) {
     client->send("< send 123 2 AA BB >");
     ASSERT_TRUE(run_until([&] { return node_received.size() == 1; }));
     EXPECT_EQ(node_received[0], Frame::data_frame(0x123, {0xAA, 0xBB}));
+}
+
+// A client sends faster than the bus carries (one TCP write of many frames): the session's port
+// buffers them as a gateway does, and every one reaches the bus, in order.
+TEST_F(SocketcandServerTest, ABurstOfFramesInOneWriteReachesTheBusInFull) {
+    auto client = join();
+    constexpr std::uint32_t kBurst = 300; // far more than a controller's transmit queue
+    std::string burst;
+    for (std::uint32_t id = 1; id <= kBurst; ++id) {
+        burst += fmt::format("< send {:X} 1 {:02X} >", id, id & 0xFF);
+    }
+    client->send(burst);
+    ASSERT_TRUE(run_until([&] { return node_received.size() == kBurst; }))
+        << node_received.size() << " of " << kBurst;
+    for (std::uint32_t id = 1; id <= kBurst; ++id) {
+        EXPECT_EQ(node_received[id - 1].id, id);
+    }
 }
 
 // python-can 4.1 wants each handshake reply alone in one recv(): on a busy bus the reply to

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace eposp::can {
@@ -17,6 +18,11 @@ enum class BusOffRecovery {
     Automatic, ///< at once on entering bus-off, like controllers with automatic bus-off recovery
     OnRequest, ///< only after VirtualPort::recover(), like `ip link set canX type can restart`
 };
+
+/// A gateway's port (a bridge to SocketCAN or to socketcand) gets what the other side sent in
+/// bursts: one TCP read, or everything a descheduled host missed. It buffers more than a CAN
+/// controller does, so such a burst reaches the bus in full.
+inline constexpr std::size_t kGatewayTxQueueCapacity = 1024;
 
 struct BusConfig {
     std::string name = "can0";         ///< the interface name traces record
@@ -105,7 +111,7 @@ public:
 
 private:
     friend class VirtualBus;
-    VirtualPort(VirtualBus& bus, std::string name);
+    VirtualPort(VirtualBus& bus, std::string name, std::size_t tx_queue_capacity);
 
     VirtualBus* bus_;
     std::string name_;
@@ -140,8 +146,10 @@ public:
     VirtualBus(const VirtualBus&) = delete;
     VirtualBus& operator=(const VirtualBus&) = delete;
 
-    /// Attaches a new controller named `name` (for statistics and traces).
-    std::unique_ptr<VirtualPort> connect(std::string name);
+    /// Attaches a new controller named `name` (for statistics and traces), its transmit queue
+    /// as deep as BusConfig says unless `tx_queue_capacity` is given.
+    std::unique_ptr<VirtualPort> connect(std::string name,
+                                         std::optional<std::size_t> tx_queue_capacity = {});
 
     const BusConfig& config() const { return config_; }
     core::EventLoop& loop() const { return loop_; }

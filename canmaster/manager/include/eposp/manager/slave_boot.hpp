@@ -31,9 +31,9 @@ struct SlaveBootResult {
 /// heartbeat time, its heartbeat must come within that time. The first check that fails ends
 /// the boot with its error of table 1; a request without answer ends it with NoAnswer.
 ///
-/// The owner tells it of the slave's heartbeats (heartbeat_received; a boot-up message is
-/// none) and of nothing else; it
-/// completes by callback, never from inside start(). Destroying it cancels its SDO request.
+/// The owner tells it of the slave's heartbeats (heartbeat_received) and boot-up messages
+/// (node_restarted); it completes by callback, never from inside start(). Destroying it cancels
+/// its SDO request.
 class SlaveBoot {
 public:
     using Done = std::function<void(const SlaveBootResult& result)>;
@@ -47,6 +47,11 @@ public:
     /// (not only its boot-up message).
     void start(bool heartbeat_seen);
     void heartbeat_received();
+    /// The slave sent a boot-up message: it reset (or only now came up), so whatever the boot
+    /// asked or wrote so far is void and the boot starts over. It does so once the request in
+    /// flight is answered or has timed out: a new request sent now could take the old one's
+    /// late answer for its own.
+    void node_restarted();
     bool finished() const { return finished_; }
 
 private:
@@ -59,7 +64,10 @@ private:
         ErrorControl
     };
 
+    void begin();
     void next();
+    /// Where a request's answer lands: false when the boot is over or starts over instead.
+    bool goes_on();
     void read(std::uint16_t index, std::uint8_t sub_index,
               std::function<void(std::uint32_t value)> check, BootError on_refusal);
     void check_identity_part(std::size_t part);
@@ -75,6 +83,7 @@ private:
     Step step_ = Step::DeviceType;
     bool heartbeat_seen_ = false;
     bool finished_ = false;
+    bool restart_pending_ = false;
     canopen::SdoRequestId request_;
     core::ScopedTimer heartbeat_timer_;
 };
