@@ -205,16 +205,23 @@ Submitted AxisDriver::submit(const MotionCommand& command, BufferMode mode) {
 }
 
 void AxisDriver::start(CommandId id, const MotionCommand& command) {
-    running_ = std::make_unique<Running>();
-    running_->id = id;
-    running_->command = command;
+    running_ = prepare(id, command);
     state_ = state_running(command.kind);
-    using K = MotionCommand::Kind;
-    if (command.kind == K::Stop) {
+    if (command.kind == MotionCommand::Kind::Stop) {
         stop_ = id;
         stop_released_ = false;
     }
-    auto& steps = running_->steps;
+    // A new set-point or homing start is a rising edge: the bit goes low first. Halt stays as
+    // it is until the set-point, or a halted move would resume meanwhile.
+    mode_bits_ &= cia402::kHalt;
+}
+
+std::unique_ptr<AxisDriver::Running> AxisDriver::prepare(CommandId id,
+                                                         const MotionCommand& command) const {
+    auto running = std::make_unique<Running>();
+    running->id = id;
+    running->command = command;
+    auto& steps = running->steps;
     if (const std::int8_t mode = mode_of(command.kind); mode != 0 && mode != mode_) {
         steps.push_back({.index = 0x6060, .value = static_cast<std::uint8_t>(mode), .size = 1});
         steps.push_back({.confirm_mode = true, .value = static_cast<std::uint8_t>(mode)});
@@ -222,6 +229,7 @@ void AxisDriver::start(CommandId id, const MotionCommand& command) {
     const auto u32 = [](std::int32_t value) {
         return static_cast<std::uint32_t>(value);
     };
+    using K = MotionCommand::Kind;
     switch (command.kind) {
     case K::MoveAbsolute:
     case K::MoveRelative:
@@ -248,34 +256,115 @@ void AxisDriver::start(CommandId id, const MotionCommand& command) {
         steps.push_back({.index = 0x2081, .value = u32(command.position)});
         break;
     }
-    // A new set-point or homing start is a rising edge: the bit goes low first. Halt stays as
-    // it is until the set-point, or a halted move would resume meanwhile.
-    mode_bits_ &= cia402::kHalt;
+    return running;
 }
 
-void AxisDriver::issue(const Step& step) {
+AxisDriver::Running* AxisDriver::find(CommandId id) const {
+    for (Running* running : {running_.get(), next_.get()}) {
+        if (running != nullptr && running->id == id) {
+            return running;
+        }
+    }
+    return nullptr;
+}
+
+void AxisDriver::issue(const Running& owner, const Step& step) {
     std::weak_ptr<bool> alive = alive_;
-    auto done = [this, alive, id = running_->id, step](const SdoReply& reply) {
-        if (alive.expired() || !running_ || running_->id != id || running_->failure) {
+    auto done = [this, alive, id = owner.id, step](const SdoReply& reply) {
+        Running* running = alive.expired() ? nullptr : find(id);
+        if (running == nullptr || running->failure) {
             return;
         }
         if (reply.abort_code != 0) {
-            running_->failure = ErrorId::SdoAbort;
+            running->failure = ErrorId::SdoAbort;
         } else if (!step.confirm_mode) {
-            ++running_->confirmed;
+            ++running->confirmed;
         } else if (static_cast<std::int8_t>(reply.value) == static_cast<std::int8_t>(step.value)) {
             mode_ = static_cast<std::int8_t>(step.value);
-            ++running_->confirmed;
-        } else if (++running_->confirmations >= kModeConfirmations) {
-            running_->failure = ErrorId::ModeNotConfirmed;
+            ++running->confirmed;
+        } else if (++running->confirmations >= kModeConfirmations) {
+            running->failure = ErrorId::ModeNotConfirmed;
         } else {
-            running_->reread = step; // the drive may switch later: read 0x6061 again
+            running->reread = step; // the drive may switch later: read 0x6061 again
         }
     };
     if (step.confirm_mode) {
         link_.read(axis_, 0x6061, 0, std::move(done));
     } else {
         link_.write(axis_, step.index, step.sub_index, step.value, step.size, std::move(done));
+    }
+}
+
+bool AxisDriver::steps_done(Running& running) {
+    // Requests to one drive run in order (SdoClient queues them): all go out at once.
+    if (!running.issued) {
+        running.issued = true;
+        for (const Step& step : running.steps) {
+            issue(running, step);
+        }
+    }
+    if (running.reread) {
+        issue(running, *std::exchange(running.reread, std::nullopt));
+    }
+    return running.confirmed == running.steps.size();
+}
+
+std::int32_t AxisDriver::target_of(const MotionCommand& command, std::int32_t start) const {
+    switch (command.kind) {
+    case MotionCommand::Kind::MoveAbsolute:
+        return command.position;
+    case MotionCommand::Kind::MoveRelative:
+        return start + command.position;
+    default: // MoveAdditive: from the last commanded target
+        return last_target_.value_or(start) + command.position;
+    }
+}
+
+// 5.3.2.3: with "change set immediately" clear, the drive keeps one set-point in a buffer and
+// starts it the moment the present move ends. A Buffered position move goes there while the
+// move before it runs, so the axis goes on without waiting a PLC cycle at the target.
+void AxisDriver::hand_on(std::uint16_t statusword) {
+    using Phase = Running::Phase;
+    if (!next_) {
+        if (waiting_.empty() || !is_position_move(waiting_.front().second.kind)) {
+            return;
+        }
+        const auto [id, command] = waiting_.front();
+        waiting_.pop_front();
+        next_ = prepare(id, command);
+    }
+    Running& next = *next_;
+    if (next.failure) {
+        record(next.id, {.status = CommandStatus::Failed, .error = *next.failure});
+        next_.reset();
+        return;
+    }
+    const bool acknowledged = (statusword & cia402::kSetpointAcknowledge) != 0;
+    switch (next.phase) {
+    case Phase::Steps:
+        if (!steps_done(next)) {
+            return;
+        }
+        next.phase = Phase::Setpoint;
+        [[fallthrough]];
+    case Phase::Setpoint:
+        if (!answered() || acknowledged) {
+            return;
+        }
+        next.target = target_of(next.command, running_->target); // it starts where this ends
+        last_target_ = next.target;
+        link_.set_target_position(axis_, next.target);
+        mode_bits_ = cia402::kNewSetpoint; // change set immediately clear: after this move
+        next.phase = Phase::Acknowledge;
+        return;
+    case Phase::Acknowledge:
+        if (answered() && acknowledged) {
+            mode_bits_ = 0; // the drive keeps the acknowledge while the buffer is full
+            next.phase = Phase::Moving;
+        }
+        return;
+    case Phase::Moving:
+        return;
     }
 }
 
@@ -290,48 +379,30 @@ void AxisDriver::advance(std::uint16_t statusword) {
     const K kind = running.command.kind;
     switch (running.phase) {
     case Phase::Steps:
-        // Requests to one drive run in order (SdoClient queues them): all go out at once.
-        if (!running.issued) {
-            running.issued = true;
-            for (const Step& step : running.steps) {
-                issue(step);
-            }
-        }
-        if (running.reread) {
-            issue(*std::exchange(running.reread, std::nullopt));
-        }
-        if (running.confirmed < running.steps.size()) {
+        if (!steps_done(running)) {
             return;
         }
         running.phase = Phase::Setpoint;
         [[fallthrough]];
     case Phase::Setpoint:
         if (is_position_move(kind)) {
-            // The drive takes a new set-point once it has seen the last one's edge fall.
-            if (!answered() || (statusword & cia402::kSetpointAcknowledge) != 0) {
+            // The drive takes a new set-point once it has seen the last one's edge fall. Its
+            // acknowledge may stay high meanwhile (a full set-point buffer): "change set
+            // immediately" replaces what is buffered anyway.
+            if (!answered()) {
                 return;
             }
-            const std::int32_t actual = link_.actual_position(axis_);
-            running.target = kind == K::MoveAbsolute ? running.command.position
-                             : kind == K::MoveRelative
-                                 ? actual + running.command.position
-                                 : last_target_.value_or(actual) + running.command.position;
+            running.target = target_of(running.command, link_.actual_position(axis_));
             last_target_ = running.target;
             link_.set_target_position(axis_, running.target);
             mode_bits_ = cia402::kNewSetpoint | cia402::kChangeImmediately;
             running.phase = Phase::Acknowledge;
             return;
         }
-        if (kind == K::MoveVelocity) {
-            last_target_.reset();
-            mode_bits_ = 0;
-        } else if (kind == K::Home) {
-            last_target_.reset();
-            mode_bits_ = cia402::kNewSetpoint;
-        } else {
-            last_target_.reset();
-            mode_bits_ = cia402::kHalt;
-        }
+        last_target_.reset();
+        mode_bits_ = kind == K::MoveVelocity ? 0
+                     : kind == K::Home      ? cia402::kNewSetpoint
+                                            : cia402::kHalt;
         running.phase = Phase::Moving;
         return;
     case Phase::Acknowledge:
@@ -341,6 +412,18 @@ void AxisDriver::advance(std::uint16_t statusword) {
         }
         return;
     case Phase::Moving:
+        if (is_position_move(kind)) {
+            hand_on(statusword);
+            if (next_ && next_->phase != Phase::Steps && next_->phase != Phase::Setpoint) {
+                // The next move is with the drive: this one ended when the drive took that
+                // one out of its buffer (the acknowledge fell), not at a target reached.
+                if (next_->phase == Phase::Moving && answered() &&
+                    (statusword & cia402::kSetpointAcknowledge) == 0) {
+                    finish(CommandStatus::Done);
+                }
+                return;
+            }
+        }
         if (!answered()) {
             return;
         }
@@ -373,6 +456,10 @@ void AxisDriver::finish(CommandStatus status, ErrorId error) {
         return; // Stopping until its Execute falls
     }
     stop_ = 0;
+    if (next_) {
+        running_ = std::move(next_); // already with the drive, or on its way there
+        return;
+    }
     if (!waiting_.empty()) {
         const auto [id, command] = waiting_.front();
         waiting_.pop_front();
@@ -395,9 +482,11 @@ void AxisDriver::release_stop(CommandId id) {
 }
 
 void AxisDriver::abort_all(CommandStatus status, ErrorId error) {
-    if (running_) {
-        record(running_->id, {.status = status, .error = error});
-        running_.reset();
+    for (std::unique_ptr<Running>* running : {&running_, &next_}) {
+        if (*running) {
+            record((*running)->id, {.status = status, .error = error});
+            running->reset();
+        }
     }
     for (const auto& [id, command] : waiting_) {
         record(id, {.status = status, .error = error});
@@ -419,6 +508,9 @@ CommandReport AxisDriver::report(CommandId id) const {
     }
     if (running_ && running_->id == id) {
         return {.status = CommandStatus::Active, .in_velocity = running_->in_velocity};
+    }
+    if (next_ && next_->id == id) {
+        return {.status = CommandStatus::Buffered};
     }
     for (const auto& [waiting, command] : waiting_) {
         if (waiting == id) {

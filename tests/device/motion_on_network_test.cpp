@@ -193,6 +193,57 @@ END_PROGRAM
     EXPECT_EQ(device.motion().axis(1).state(), plcopen::AxisState::Standstill);
 }
 
+// A buffered sequence of three moves on the EPOS2: the second and third wait in the drive's
+// set-point buffer, so the sequence takes the three profiles' time plus the first move's start
+// (its SDO parameters and handshake), with no stop between the moves.
+TEST(MotionOnNetworkBuffered, ThreeBufferedMovesRunBackToBack) {
+    const auto network = parse_network_file(kNetwork, "net.yaml");
+    EposP device;
+    start(device, network, R"ST(
+PROGRAM Main
+VAR
+  Axis1 : AXIS_REF := (AxisNo := 1);
+  Power : MC_Power;
+  First, Second, Third : MC_MoveAbsolute;
+  Go : BOOL;
+END_VAR
+Power(Axis := Axis1, Enable := TRUE);
+Go := Power.Status;
+First(Axis := Axis1, Execute := Go, Position := 6000, Velocity := 3000, Acceleration := 10000,
+      Deceleration := 10000);
+Second(Axis := Axis1, Execute := Go, Position := 2000, Velocity := 1500, Acceleration := 10000,
+       Deceleration := 10000, BufferMode := mcBuffered);
+Third(Axis := Axis1, Execute := Go, Position := 9000, Velocity := 3000, Acceleration := 20000,
+      Deceleration := 20000, BufferMode := mcBuffered);
+END_PROGRAM
+)ST");
+    std::optional<double> started;
+    std::optional<double> done;
+    std::optional<double> first_done;
+    for (int ms = 1; ms <= 5000 && !done; ++ms) {
+        device.loop().run_for(1ms);
+        if (!started && value(device, "First.Active") == "TRUE") {
+            started = ms / 1000.0;
+        }
+        if (!first_done && value(device, "First.Done") == "TRUE") {
+            first_done = ms / 1000.0;
+            EXPECT_EQ(value(device, "Second.Active"), "TRUE");
+        }
+        if (value(device, "Third.Done") == "TRUE") {
+            done = ms / 1000.0;
+        }
+    }
+    ASSERT_TRUE(started && first_done && done);
+    EXPECT_EQ(value(device, "First.CommandAborted"), "FALSE");
+    EXPECT_EQ(value(device, "Second.Done"), "TRUE");
+    const double profiles = profile_time(6000, 3000, 10000) + profile_time(4000, 1500, 10000) +
+                            profile_time(7000, 3000, 20000);
+    EXPECT_GE(*done - *started, profiles);
+    EXPECT_LE(*done - *started, profiles + 0.010) << "the profiles take " << profiles << " s";
+    EXPECT_NEAR(device.simulated_slaves()[0]->objects().get_as<std::int32_t>(0x6064, 0), 9000,
+                10); // within the drive's position window
+}
+
 TEST(MotionOnNetworkLimits, ALimitSwitchStopsTheAxisInErrorStopWithItsErrorCode) {
     write_source("machine.yaml", "switches:\n  positive_limit: 15000\n");
     const auto network = load_network_file(write_source(

@@ -12,6 +12,8 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -25,6 +27,10 @@ struct FakeDrive {
     std::int32_t position = 0;
     std::int32_t target = 0;       ///< set by the link, taken on a new set-point
     std::int32_t taken_target = 0; ///< the set-point the drive moves to
+    std::int32_t step = 0;         ///< its quadcounts per SYNC: 0x6081 when it was taken
+    /// A set-point taken with "change set immediately" clear during a move (target, step): the
+    /// drive's one-deep buffer, started when the move ends.
+    std::optional<std::pair<std::int32_t, std::int32_t>> buffered;
     std::uint16_t error_code = 0;  ///< 0x1003 sub 1; non-zero: Fault
     int homing_cycles = -1;        ///< cycles left of a running homing
     std::map<std::pair<std::uint16_t, std::uint8_t>, std::uint32_t> objects;
@@ -157,6 +163,7 @@ private:
         if ((cw & 0x8F) == 0x0F && (state == 0x21 || state == 0x23 || enabled)) {
             if (!enabled) {
                 drive.taken_target = drive.position; // enabled, it holds where it is
+                drive.buffered.reset();
             }
             drive.statusword = 0x0027;
         } else if ((cw & 0x87) == 0x06) {
@@ -177,17 +184,27 @@ private:
         std::uint16_t bits = 0;
         if (mode == 1) {
             if (rising_new_setpoint) {
-                drive.taken_target = drive.target;
+                const std::pair next{drive.target, static_cast<std::int32_t>(drive.object(0x6081))};
+                const bool at_rest = drive.position == drive.taken_target;
+                if ((cw & 0x20) != 0 || at_rest) { // change set immediately, or nothing to finish
+                    std::tie(drive.taken_target, drive.step) = next;
+                    drive.buffered.reset();
+                } else {
+                    drive.buffered = next;
+                }
             }
-            if ((cw & 0x10) != 0) {
-                bits |= 0x1000; // set-point acknowledge while the new set-point bit is high
+            if ((cw & 0x10) != 0 || drive.buffered) {
+                bits |= 0x1000; // acknowledged while the bit is high, or while the buffer is full
             }
-            const auto step = static_cast<std::int32_t>(drive.object(0x6081));
             if (!halt && drive.position != drive.taken_target) {
                 const std::int32_t rest = drive.taken_target - drive.position;
-                drive.position += rest > 0 ? std::min(rest, step) : std::max(rest, -step);
+                drive.position +=
+                    rest > 0 ? std::min(rest, drive.step) : std::max(rest, -drive.step);
             }
-            if (halt || drive.position == drive.taken_target) {
+            if (!halt && drive.position == drive.taken_target && drive.buffered) {
+                std::tie(drive.taken_target, drive.step) = *drive.buffered; // on at once
+                drive.buffered.reset();
+            } else if (halt || drive.position == drive.taken_target) {
                 bits |= 0x0400;
             }
         } else if (mode == 3) {

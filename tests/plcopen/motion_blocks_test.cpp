@@ -191,7 +191,10 @@ TEST_P(MotionBlocks, AnAbortingMoveTakesOverAndTheFirstReportsCommandAborted) {
     EXPECT_FALSE(h.flag("Move.Done"));
 }
 
-TEST_P(MotionBlocks, ABufferedMoveWaitsForTheOneBefore) {
+// A Buffered move after a position move waits in the drive's set-point buffer (EPOS2 firmware
+// specification 5.3.2.3, "change set immediately" clear): the drive goes on to it the moment the
+// first move ends, without a cycle at rest on the first target.
+TEST_P(MotionBlocks, ABufferedMoveGoesOnFromTheDrivesBufferWithoutStopping) {
     power_on();
     h.set<std::int16_t>("Mode2", static_cast<std::int16_t>(BufferMode::Buffered));
     h.set_flag("Go", true);
@@ -201,14 +204,52 @@ TEST_P(MotionBlocks, ABufferedMoveWaitsForTheOneBefore) {
     EXPECT_TRUE(h.flag("Move2.Busy"));
     EXPECT_FALSE(h.flag("Move2.Active"));
     EXPECT_TRUE(h.flag("Move.Active"));
-    ASSERT_TRUE(cycle_until("Move.Done"));
-    EXPECT_EQ(drive().position, 1000);
+    h.cycle(6);
+    ASSERT_TRUE(drive().buffered.has_value()) << "the second move should wait in the drive";
+    EXPECT_EQ(drive().buffered->first, 2000);
+    EXPECT_FALSE(h.flag("Move2.Active"));
+
+    std::int32_t last = drive().position;
+    bool first_done = false;
+    for (int i = 0; i < 40 && drive().position < 2000; ++i) {
+        h.cycle();
+        ASSERT_GT(drive().position, last) << "the axis stood still at cycle " << i;
+        last = drive().position;
+        if (h.flag("Move.Done") && !first_done) {
+            first_done = true;
+            EXPECT_TRUE(h.flag("Move2.Active")); // in the same cycle
+            EXPECT_GT(drive().position, 1000);
+            EXPECT_EQ(state(), AxisState::DiscreteMotion);
+        }
+    }
+    EXPECT_TRUE(first_done);
     EXPECT_FALSE(h.flag("Move.CommandAborted"));
-    h.cycle(2);
-    EXPECT_TRUE(h.flag("Move2.Active"));
-    EXPECT_EQ(state(), AxisState::DiscreteMotion);
     ASSERT_TRUE(cycle_until("Move2.Done"));
     EXPECT_EQ(drive().position, 2000);
+    EXPECT_EQ(state(), AxisState::Standstill);
+}
+
+// A move that is already in the drive's buffer is aborted like any other: the aborting move's
+// set-point ("change set immediately") empties the buffer, so the axis never goes there.
+TEST_P(MotionBlocks, AnAbortingMoveAlsoEmptiesTheDrivesBuffer) {
+    power_on();
+    h.set<std::int32_t>("Speed", 20); // 50 cycles to the first target
+    h.set<std::int16_t>("Mode2", static_cast<std::int16_t>(BufferMode::Buffered));
+    h.set_flag("Go", true);
+    h.cycle(3);
+    h.set_flag("Go2", true);
+    h.cycle(7);
+    ASSERT_TRUE(drive().buffered.has_value());
+    h.set_flag("GoRelative", true);
+    h.cycle(2);
+    EXPECT_TRUE(h.flag("Move.CommandAborted"));
+    EXPECT_TRUE(h.flag("Move2.CommandAborted"));
+    ASSERT_TRUE(cycle_until("Relative.Done"));
+    EXPECT_FALSE(drive().buffered.has_value());
+    const std::int32_t stopped_at = drive().position;
+    EXPECT_LT(stopped_at, 500);
+    h.cycle(20);
+    EXPECT_EQ(drive().position, stopped_at);
 }
 
 TEST_P(MotionBlocks, RelativeMovesFromTheActualPositionAdditiveFromTheLastTarget) {

@@ -27,8 +27,10 @@ namespace eposp::plcopen {
 ///   state; the commands it ran fail. Only reset() leaves ErrorStop: a fault reset
 ///   (controlword bit 7), then Disabled, from where a standing power request enables again.
 /// - Commands run one at a time. Aborting ones replace what runs and what waits; Buffered
-///   ones wait until the command before is done. Stop cannot be aborted: while it runs and
-///   until release_stop(), everything else is refused.
+///   ones wait until the command before is done. A Buffered position move after a position
+///   move waits in the drive's set-point buffer, so the drive starts it the moment the one
+///   before ends. Stop cannot be aborted: while it runs and until release_stop(), everything
+///   else is refused.
 class AxisDriver {
 public:
     AxisDriver(AxisLink& link, AxisNumber axis);
@@ -70,9 +72,16 @@ private:
     void follow_power(std::uint16_t statusword);
     void enter_error_stop(ErrorId error);
     void start(CommandId id, const MotionCommand& command);
+    /// The command with the SDO steps it needs before its set-point.
+    std::unique_ptr<Running> prepare(CommandId id, const MotionCommand& command) const;
+    Running* find(CommandId id) const;
     void advance(std::uint16_t statusword);
+    void hand_on(std::uint16_t statusword);
     void advance_reset(std::uint16_t statusword);
-    void issue(const Step& step);
+    void issue(const Running& owner, const Step& step);
+    bool steps_done(Running& running);
+    /// A position move's target; `start` is where a relative one counts from.
+    std::int32_t target_of(const MotionCommand& command, std::int32_t start) const;
     void finish(CommandStatus status, ErrorId error = ErrorId::None);
     void abort_all(CommandStatus status, ErrorId error);
     void record(CommandId id, CommandReport report);
@@ -94,6 +103,7 @@ private:
     std::int8_t mode_ = 0; ///< the mode of operation the drive confirmed, 0 unknown
     std::optional<std::int32_t> last_target_;
     std::unique_ptr<Running> running_;
+    std::unique_ptr<Running> next_; ///< the Buffered move handed on to the drive's buffer
     std::deque<std::pair<CommandId, MotionCommand>> waiting_;
     std::deque<std::pair<CommandId, CommandReport>> finished_;
     CommandId stop_ = 0;         ///< the stop that holds the axis in Stopping

@@ -6,9 +6,10 @@
 
 namespace eposp::plcopen {
 
-/// PLCopen MC_BUFFER_MODE. Aborting and Buffered are exact; the blending modes run as Buffered
-/// (the next move starts when this one is done), since a CiA 402 drive in profile position
-/// mode cannot blend two moves into one profile.
+/// PLCopen MC_BUFFER_MODE. Aborting and Buffered are exact (a buffered position move waits in
+/// the drive's set-point buffer); the blending modes run as Buffered (the next move starts when
+/// this one is done), since a CiA 402 drive in profile position mode cannot blend two moves
+/// into one profile.
 enum class BufferMode : std::int16_t {
     Aborting = 0,
     Buffered = 1,
