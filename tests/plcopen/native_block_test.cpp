@@ -41,12 +41,22 @@ VAR
   h : ST_HELPER;
   x : DINT := 20;
   y, z : DINT;
-  fail : BOOL;
+  fail, fail_inside : BOOL;
+  w : Wrapper;
 END_VAR
 d(In := x, Fail := fail, Out => y);
 h(a := y, b => z);
 x := x + 1;
+w(go := fail_inside);
 END_PROGRAM
+
+FUNCTION_BLOCK Wrapper
+VAR_INPUT go : BOOL; END_VAR
+VAR inner : DOUBLER; END_VAR
+IF go THEN
+  inner(In := 1, Fail := TRUE);
+END_IF;
+END_FUNCTION_BLOCK
 )ST";
 
 std::optional<vm::Image> compile(std::string_view program, std::string_view library,
@@ -120,7 +130,21 @@ TEST_P(NativeBlocks, AFailureIsARunTimeErrorOfTheCallingPou) {
     loop.run_for(std::chrono::milliseconds(10));
     ASSERT_EQ(errors.size(), 1U);
     EXPECT_NE(errors[0].find("the doubler was told to fail"), std::string::npos) << errors[0];
-    EXPECT_NE(errors[0].find("DOUBLER"), std::string::npos) << errors[0];
+    // At the call in the program's own source, naming the block: its body has no source.
+    EXPECT_NE(errors[0].find("DOUBLER: the doubler was told to fail in Main at line 11"),
+              std::string::npos)
+        << errors[0];
+}
+
+TEST_P(NativeBlocks, AFailureInsideAnotherBlockIsAtThatBlocksCall) {
+    load();
+    ASSERT_EQ(load_error, "");
+    ASSERT_FALSE(runtime->write_value<std::uint8_t>("Main.fail_inside", 1));
+    loop.run_for(std::chrono::milliseconds(10));
+    ASSERT_EQ(errors.size(), 1U);
+    EXPECT_NE(errors[0].find("DOUBLER: the doubler was told to fail in Wrapper at line 21"),
+              std::string::npos)
+        << errors[0];
 }
 
 TEST_P(NativeBlocks, ABodyForAnotherLayoutIsRefusedAtLoad) {

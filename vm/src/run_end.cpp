@@ -1,6 +1,7 @@
 #include "run_end.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace eposp::vm::detail {
 namespace {
@@ -14,6 +15,24 @@ std::uint32_t line_at(const Pou& pou, std::uint32_t instruction) {
         line = entry.line;
     }
     return line;
+}
+
+// In a body copied in place of a call, an instruction is the callee's, at its own line. A
+// callee without source (a native block's body) has none: its call site stands, and the callee
+// is returned.
+std::optional<std::uint32_t> locate(const Image& image, std::uint32_t& pou,
+                                    std::uint32_t& instruction) {
+    for (const InlinedCall& call : image.pous[pou].inlined) {
+        if (instruction >= call.begin && instruction < call.end) {
+            if (image.pous[call.callee].lines.empty()) {
+                return call.callee;
+            }
+            instruction = image.pous[call.callee].code_begin + (instruction - call.begin);
+            pou = call.callee;
+            break;
+        }
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -52,13 +71,18 @@ RunState end_suspended(TaskState& task, const Image& image, std::uint64_t execut
 RunState end_faulted(TaskState& task, const Image& image, std::uint64_t executed, Trap trap,
                      std::uint32_t pou, std::uint32_t instruction) {
     task.executed += executed;
-    // In a body copied in place of a call, the error is the callee's, at its own line.
-    for (const InlinedCall& call : image.pous[pou].inlined) {
-        if (instruction >= call.begin && instruction < call.end) {
-            instruction = image.pous[call.callee].code_begin + (instruction - call.begin);
-            pou = call.callee;
-            break;
-        }
+    // A native function block's body has no source: its failure is at its call, copied in
+    // place or called, and the reason names the block.
+    std::optional<std::uint32_t> native = locate(image, pou, instruction);
+    if (trap == Trap::NativeError && !native && image.pous[pou].lines.empty() && task.depth > 0) {
+        native = pou;
+        const Activation& caller = task.calls[task.depth - 1];
+        pou = caller.pou;
+        instruction = caller.pc - 1;
+        locate(image, pou, instruction);
+    }
+    if (trap == Trap::NativeError && native) {
+        task.fault.native_reason = image.pous[*native].name + ": " + task.fault.native_reason;
     }
     task.fault.trap = trap;
     task.fault.pou = pou;

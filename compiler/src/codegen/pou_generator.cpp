@@ -20,11 +20,14 @@ PouGenerator::PouGenerator(ProgramGenerator& program, const sema::SemanticModel&
 
 std::uint32_t PouGenerator::generate() {
     builder_.begin_body(index_);
-    builder_.line(pou_.range.begin.line);
+    const bool native = program_.is_native_block(pou_);
+    if (!native) { // a native body has no source: its errors are at its call (vm run_end.cpp)
+        builder_.line(pou_.range.begin.line);
+    }
     declare_locals();
     end_ = builder_.label();
     initialise_frame();
-    if (program_.is_native_block(pou_)) {
+    if (native) {
         call_native_block();
     } else {
         statements(pou_.body);
