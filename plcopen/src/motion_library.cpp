@@ -19,14 +19,18 @@ TYPE
 END_TYPE
 )ST";
 
-std::vector<blocks::BlockDefinition> all_blocks() {
-    auto definitions = blocks::axis_blocks();
-    for (auto* more : {&blocks::motion_blocks, &blocks::parameter_blocks, &blocks::maxon_blocks,
-                       &blocks::can_blocks}) {
-        for (auto& definition : more()) {
-            definitions.push_back(std::move(definition));
+/// Every block of the library, built once: its declaration and its body.
+const std::vector<blocks::BlockDefinition>& all_blocks() {
+    static const std::vector<blocks::BlockDefinition> definitions = [] {
+        auto all = blocks::axis_blocks();
+        for (auto* more : {&blocks::motion_blocks, &blocks::parameter_blocks, &blocks::maxon_blocks,
+                           &blocks::can_blocks}) {
+            for (auto& definition : more()) {
+                all.push_back(std::move(definition));
+            }
         }
-    }
+        return all;
+    }();
     return definitions;
 }
 
@@ -49,11 +53,10 @@ std::string MotionLibrary::source() {
 }
 
 void MotionLibrary::register_blocks(vm::NativeRegistry& registry) {
-    for (auto& definition : all_blocks()) {
-        registry.add_block(std::string(definition.interface.name), definition.interface.fields(),
-                           [this, body = std::move(definition.body)](vm::NativeBlock& block) {
-                               body(block, *this);
-                           });
+    for (const auto& definition : all_blocks()) {
+        registry.add_block(
+            std::string(definition.interface.name), definition.interface.fields(),
+            [this, &body = definition.body](vm::NativeBlock& block) { body(block, *this); });
     }
 }
 

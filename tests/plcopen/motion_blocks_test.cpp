@@ -388,17 +388,33 @@ VAR
   Free : AXIS_REF := (AxisNo := 7);
   PowerFar, PowerFree : MC_Power;
   Move : MC_MoveAbsolute;
+  ResetFree : MC_Reset;
+  StateFar, StateFree : MC_ReadAxisState;
+  StatusFree : MC_ReadStatus;
 END_VAR
 PowerFar(Axis := Far, Enable := TRUE);
 PowerFree(Axis := Free, Enable := TRUE);
 Move(Axis := Free, Execute := TRUE, Position := 1, Velocity := 1, Acceleration := 1,
      Deceleration := 1);
+ResetFree(Axis := Free, Execute := TRUE);
+StateFar(Axis := Far, Enable := TRUE);
+StateFree(Axis := Free, Enable := TRUE);
+StatusFree(Axis := Free, Enable := TRUE);
 END_PROGRAM
 )ST");
     h.cycle(3);
     EXPECT_EQ(h.get<std::uint16_t>("PowerFar.ErrorID"), 0x1001);
     EXPECT_FALSE(h.flag("PowerFar.Status"));
+    EXPECT_EQ(h.get<std::uint16_t>("PowerFree.ErrorID"), 0x1001);
     EXPECT_EQ(h.get<std::uint16_t>("Move.ErrorID"), 0x1001);
+    // Every block says the same of an axis the axis table has no slave for.
+    for (const char* block : {"ResetFree", "StateFar", "StateFree", "StatusFree"}) {
+        EXPECT_TRUE(h.flag(std::string(block) + ".Error")) << block;
+        EXPECT_EQ(h.get<std::uint16_t>(std::string(block) + ".ErrorID"), 0x1001) << block;
+    }
+    EXPECT_FALSE(h.flag("ResetFree.Done"));
+    EXPECT_FALSE(h.flag("StateFree.Valid"));
+    EXPECT_FALSE(h.flag("StatusFree.Disabled"));
 }
 
 } // namespace

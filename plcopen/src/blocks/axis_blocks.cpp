@@ -18,9 +18,8 @@ BlockDefinition power() {
                 const bool enable = flag(block, kEnable);
                 AxisDriver* axis = referenced_axis(block, library);
                 ErrorId error = ErrorId::None;
-                if (axis == nullptr || axis->presence() == AxisPresence::Unassigned) {
+                if (axis == nullptr) {
                     error = enable ? ErrorId::UnknownAxis : ErrorId::None;
-                    axis = nullptr;
                 } else {
                     axis->request_power(enable);
                     if (enable && axis->state() == AxisState::ErrorStop) {
@@ -45,9 +44,10 @@ BlockDefinition reset() {
             }};
 }
 
-/// An Enable block reading something of its axis: `Valid`, `Error`, `ErrorID` and its values.
-BlockDefinition reader(std::string_view name, std::vector<BlockVariable> values,
-                       std::function<void(vm::NativeBlock&, AxisDriver&)> read) {
+/// An Enable block reading the axis' state or actual values from its driver: `Valid`, `Error`,
+/// `ErrorID` and its values.
+BlockDefinition axis_reader(std::string_view name, std::vector<BlockVariable> values,
+                            std::function<void(vm::NativeBlock&, AxisDriver&)> read) {
     std::vector<BlockVariable> variables{axis_ref(), input("Enable", "BOOL"),
                                          output("Valid", "BOOL"), output("Error", "BOOL"),
                                          output("ErrorID", "WORD")};
@@ -84,36 +84,37 @@ BlockDefinition read_status() {
     for (const std::string_view state_name : kStates) {
         values.push_back(output(state_name, "BOOL"));
     }
-    return reader("MC_ReadStatus", std::move(values), [](vm::NativeBlock& block, AxisDriver& axis) {
-        for (std::uint8_t state = 0; state < 7; ++state) {
-            set_flag(block, 5 + state, static_cast<AxisState>(state) == axis.state());
-        }
-    });
+    return axis_reader(
+        "MC_ReadStatus", std::move(values), [](vm::NativeBlock& block, AxisDriver& axis) {
+            for (std::uint8_t state = 0; state < 7; ++state) {
+                set_flag(block, 5 + state, static_cast<AxisState>(state) == axis.state());
+            }
+        });
 }
 
 } // namespace
 
 std::vector<BlockDefinition> axis_blocks() {
     std::vector<BlockDefinition> definitions{power(), reset(), read_status()};
-    definitions.push_back(reader("MC_ReadAxisState", {output("State", "USINT")},
-                                 [](vm::NativeBlock& block, AxisDriver& axis) {
-                                     block.set<std::uint8_t>(
-                                         5, static_cast<std::uint8_t>(axis.state()));
-                                 }));
+    definitions.push_back(axis_reader("MC_ReadAxisState", {output("State", "USINT")},
+                                      [](vm::NativeBlock& block, AxisDriver& axis) {
+                                          block.set<std::uint8_t>(
+                                              5, static_cast<std::uint8_t>(axis.state()));
+                                      }));
     // The drive's error code (its error history 0x1003 sub 1) when it faulted, else the ErrorID
     // that stopped the axis.
-    definitions.push_back(reader("MC_ReadAxisError", {output("AxisErrorID", "WORD")},
-                                 [](vm::NativeBlock& block, AxisDriver& axis) {
-                                     const auto code =
-                                         axis.axis_error() == ErrorId::DriveFault
-                                             ? axis.drive_error_code()
-                                             : static_cast<std::uint16_t>(axis.axis_error());
-                                     block.set<std::uint16_t>(5, code);
-                                 }));
-    definitions.push_back(reader("MC_ReadActualPosition", {output("Position", "DINT")},
-                                 [](vm::NativeBlock& block, AxisDriver& axis) {
-                                     block.set<std::int32_t>(5, axis.actual_position());
-                                 }));
+    definitions.push_back(axis_reader("MC_ReadAxisError", {output("AxisErrorID", "WORD")},
+                                      [](vm::NativeBlock& block, AxisDriver& axis) {
+                                          const auto code =
+                                              axis.axis_error() == ErrorId::DriveFault
+                                                  ? axis.drive_error_code()
+                                                  : static_cast<std::uint16_t>(axis.axis_error());
+                                          block.set<std::uint16_t>(5, code);
+                                      }));
+    definitions.push_back(axis_reader("MC_ReadActualPosition", {output("Position", "DINT")},
+                                      [](vm::NativeBlock& block, AxisDriver& axis) {
+                                          block.set<std::int32_t>(5, axis.actual_position());
+                                      }));
     return definitions;
 }
 

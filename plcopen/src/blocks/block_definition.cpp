@@ -30,7 +30,8 @@ AxisDriver* referenced_axis(vm::NativeBlock& block, MotionLibrary& library) {
     if (axis_ref.empty() || axis_ref[0] >= kAxisCount) {
         return nullptr;
     }
-    return &library.axis(axis_ref[0]);
+    AxisDriver& axis = library.axis(axis_ref[0]);
+    return axis.presence() == AxisPresence::Unassigned ? nullptr : &axis;
 }
 
 std::optional<std::size_t> find_field(const BlockInterface& interface, std::string_view name) {

@@ -53,7 +53,8 @@ inline void set_flag(vm::NativeBlock& block, std::size_t field, bool value) {
     block.set<std::uint8_t>(field, value ? 1 : 0);
 }
 
-/// The driver of the axis the block's AXIS_REF names; null when AxisNo is above 31.
+/// The driver of the axis the block's AXIS_REF names; null when AxisNo is above 31 or the axis
+/// table assigns no slave to it (every block answers that with ErrorID 16#1001).
 AxisDriver* referenced_axis(vm::NativeBlock& block, MotionLibrary& library);
 
 /// The index of the variable `name` in `interface`, if it has one.

@@ -18,7 +18,7 @@ std::optional<Target> target_of(vm::NativeBlock& block, MotionLibrary& library,
         return Target{NodeAddress{}};
     }
     AxisDriver* axis = referenced_axis(block, library);
-    if (axis == nullptr || axis->presence() == AxisPresence::Unassigned) {
+    if (axis == nullptr) {
         return std::nullopt;
     }
     return Target{axis->number()};
