@@ -67,52 +67,37 @@ std::uint16_t axis_index(std::uint8_t axis) {
 
 } // namespace
 
-std::optional<AxisChannels> AxisChannels::of(std::uint8_t axis) {
-    if (axis >= vm::kEntriesPerObject) {
-        return std::nullopt;
+AxisChannels AxisChannels::of(std::uint8_t axis) {
+    if (axis < vm::kEntriesPerObject) {
+        const auto sub = static_cast<std::uint8_t>(axis + 1);
+        return {{0xA100, sub}, {0xA1C0, sub}, {0xA580, sub}, {0xA640, sub}};
     }
-    // vm/process_image.hpp: 0xA100 is %IW32.., 0xA1C0 %ID24.., 0xA580 %QW32.., 0xA640 %QD24...
-    return AxisChannels{.sub_index = static_cast<std::uint8_t>(axis + 1),
-                        .statusword_word = 32U + axis,
-                        .actual_position_dword = 24U + axis,
-                        .controlword_word = 32U + axis,
-                        .target_position_dword = 24U + axis};
+    const auto sub = static_cast<std::uint8_t>(axis - vm::kEntriesPerObject + 1);
+    return {{0xA0C0, sub}, {0xA200, sub}, {0xA540, sub}, {0xA680, sub}};
 }
 
-std::vector<manager::ConfigurationWrite> axis_slave_configuration(canopen::NodeId node,
-                                                                  std::uint8_t axis) {
+std::vector<manager::ConfigurationWrite> axis_slave_configuration(canopen::NodeId node) {
     std::vector<manager::ConfigurationWrite> writes;
-    const bool channels = AxisChannels::of(axis).has_value();
-    std::vector<MappingEntry> sent = {{kStatusword, 0, 16}};
-    if (channels) {
-        sent.push_back({kStatusword, 0, 16});
-        sent.push_back({kPositionActualValue, 0, 32});
-    }
-    add_pdo(writes, PdoDirection::Transmit, 1, PdoCobId::kNoRtr | (kTpdo1Base + node), 1, sent);
-    if (channels) {
-        add_pdo(writes, PdoDirection::Receive, 1, kRpdo1Base + node,
-                canopen::kEventDrivenProfile, {{kControlword, 0, 16}, {kTargetPosition, 0, 32}});
-        writes.push_back({kModesOfOperation, 0, canopen::encode(kProfilePositionMode)});
-    }
+    add_pdo(writes, PdoDirection::Transmit, 1, PdoCobId::kNoRtr | (kTpdo1Base + node), 1,
+            {{kStatusword, 0, 16}, {kStatusword, 0, 16}, {kPositionActualValue, 0, 32}});
+    add_pdo(writes, PdoDirection::Receive, 1, kRpdo1Base + node, canopen::kEventDrivenProfile,
+            {{kControlword, 0, 16}, {kTargetPosition, 0, 32}});
+    writes.push_back({kModesOfOperation, 0, canopen::encode(kProfilePositionMode)});
     return writes;
 }
 
 void configure_axis_pdos(canopen::ObjectDictionary& od, std::size_t pdo_number,
                          canopen::NodeId node, std::uint8_t axis) {
     std::vector<manager::ConfigurationWrite> writes;
-    const std::optional<AxisChannels> channels = AxisChannels::of(axis);
-    std::vector<MappingEntry> received = {{axis_index(axis), kAxisStatuswordSub, 16}};
-    if (channels) {
-        received.push_back({kStatuswordInputs, channels->sub_index, 16});
-        received.push_back({kActualPositionInputs, channels->sub_index, 32});
-    }
+    const AxisChannels channels = AxisChannels::of(axis);
     add_pdo(writes, PdoDirection::Receive, pdo_number, kTpdo1Base + node,
-            canopen::kEventDrivenProfile, received);
-    if (channels) {
-        add_pdo(writes, PdoDirection::Transmit, pdo_number, kRpdo1Base + node, 1,
-                {{kControlwordOutputs, channels->sub_index, 16},
-                 {kTargetPositionOutputs, channels->sub_index, 32}});
-    }
+            canopen::kEventDrivenProfile,
+            {{axis_index(axis), kAxisStatuswordSub, 16},
+             {channels.statusword.index, channels.statusword.sub_index, 16},
+             {channels.actual_position.index, channels.actual_position.sub_index, 32}});
+    add_pdo(writes, PdoDirection::Transmit, pdo_number, kRpdo1Base + node, 1,
+            {{channels.controlword.index, channels.controlword.sub_index, 16},
+             {channels.target_position.index, channels.target_position.sub_index, 32}});
     write_all(od, writes);
 }
 

@@ -86,18 +86,16 @@ plcopen::AxisPresence DeviceAxisLink::presence(plcopen::AxisNumber axis) const {
                : plcopen::AxisPresence::Lost;
 }
 
-bool DeviceAxisLink::has_process_data(plcopen::AxisNumber axis) const {
-    return AxisChannels::of(axis).has_value();
-}
-
 std::uint16_t DeviceAxisLink::statusword(plcopen::AxisNumber axis) const {
     return axis < plcopen::kAxisCount ? od_.get_as<std::uint16_t>(kAxisTable + axis, 2) : 0;
 }
 
 std::int32_t DeviceAxisLink::actual_position(plcopen::AxisNumber axis) const {
-    const auto channels = AxisChannels::of(axis);
-    return channels ? entry_value<std::int32_t>(image_, kActualPositionInputs, channels->sub_index)
-                    : 0;
+    if (axis >= plcopen::kAxisCount) {
+        return 0;
+    }
+    const ImageEntry entry = AxisChannels::of(axis).actual_position;
+    return entry_value<std::int32_t>(image_, entry.index, entry.sub_index);
 }
 
 std::uint32_t DeviceAxisLink::samples(plcopen::AxisNumber axis) const {
@@ -106,14 +104,16 @@ std::uint32_t DeviceAxisLink::samples(plcopen::AxisNumber axis) const {
 }
 
 void DeviceAxisLink::set_controlword(plcopen::AxisNumber axis, std::uint16_t controlword) {
-    if (const auto channels = AxisChannels::of(axis)) {
-        set_entry(image_, kControlwordOutputs, channels->sub_index, controlword);
+    if (axis < plcopen::kAxisCount) {
+        const ImageEntry entry = AxisChannels::of(axis).controlword;
+        set_entry(image_, entry.index, entry.sub_index, controlword);
     }
 }
 
 void DeviceAxisLink::set_target_position(plcopen::AxisNumber axis, std::int32_t position) {
-    if (const auto channels = AxisChannels::of(axis)) {
-        set_entry(image_, kTargetPositionOutputs, channels->sub_index, position);
+    if (axis < plcopen::kAxisCount) {
+        const ImageEntry entry = AxisChannels::of(axis).target_position;
+        set_entry(image_, entry.index, entry.sub_index, position);
     }
 }
 

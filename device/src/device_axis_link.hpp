@@ -15,9 +15,9 @@ namespace eposp::device {
 
 /// plcopen's axis link on the EPOS P's manager (DESIGN.md, "Seams"): axis n is the slave that
 /// 0x5280 + n sub 1 assigns (0: the internal EPOS2 on port 1, 1..127: that node on port 2). Its
-/// statusword is 0x5280 + n sub 2 and, for axes 0..15, its position actual value, controlword
-/// and target position are the axis' process image channels (AxisChannels), which the axis PDOs
-/// of the network file carry. SDO transfers go through the port's SDO client; samples() counts
+/// statusword is 0x5280 + n sub 2; its position actual value, controlword and target position
+/// are the axis' process image channels (AxisChannels), which the axis PDOs of the network file
+/// carry. SDO transfers go through the port's SDO client; samples() counts
 /// the port's SYNCs, after which the PLC task of the cycle runs with the TPDOs in. An axis is
 /// lost when its slave is not booted (a failed boot, a lost heartbeat) or, once its statusword
 /// has come by PDO, when none came for 10 SYNCs.
@@ -31,7 +31,6 @@ public:
     DeviceAxisLink& operator=(const DeviceAxisLink&) = delete;
 
     plcopen::AxisPresence presence(plcopen::AxisNumber axis) const override;
-    bool has_process_data(plcopen::AxisNumber axis) const override;
     std::uint16_t statusword(plcopen::AxisNumber axis) const override;
     std::int32_t actual_position(plcopen::AxisNumber axis) const override;
     std::uint32_t samples(plcopen::AxisNumber axis) const override;

@@ -142,8 +142,7 @@ void EposP::add_network(const NetworkFile& network) {
             network_port(slave.port).set_slave_configuration(slave.node_id, *slave.concise_dcf);
         } else if (slave.axis) {
             network_port(slave.port)
-                .set_slave_configuration(slave.node_id,
-                                         axis_slave_configuration(slave.node_id, *slave.axis));
+                .set_slave_configuration(slave.node_id, axis_slave_configuration(slave.node_id));
         }
         if (slave.port != kExternalPort || slave.kind != NetworkSlave::Kind::Epos2) {
             continue;

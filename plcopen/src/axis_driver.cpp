@@ -182,9 +182,6 @@ Submitted AxisDriver::submit(const MotionCommand& command, BufferMode mode) {
     if (link_.presence(axis_) == AxisPresence::Unassigned) {
         return {.error = ErrorId::UnknownAxis};
     }
-    if (!link_.has_process_data(axis_)) {
-        return {.error = ErrorId::NoProcessData};
-    }
     if (state_ == AxisState::ErrorStop) {
         return {.error = ErrorId::AxisInErrorStop};
     }
@@ -401,8 +398,8 @@ void AxisDriver::advance(std::uint16_t statusword) {
         }
         last_target_.reset();
         mode_bits_ = kind == K::MoveVelocity ? 0
-                     : kind == K::Home      ? cia402::kNewSetpoint
-                                            : cia402::kHalt;
+                     : kind == K::Home       ? cia402::kNewSetpoint
+                                             : cia402::kHalt;
         running.phase = Phase::Moving;
         return;
     case Phase::Acknowledge:

@@ -1,9 +1,9 @@
 // The axes of a network file: the PDOs the boot sets up on the slaves and on the EPOS P, the PLC
 // task in step with the SYNC, and examples/two-axis moving both axes through raw process data.
+#include "compile_program.hpp"
 #include "eposp/canopen/pdo_mapping.hpp"
 #include "eposp/canopen/pdo_objects.hpp"
 #include "eposp/device/axis_process_data.hpp"
-#include "compile_program.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/network_file.hpp"
 
@@ -86,19 +86,23 @@ TEST(AxisProcessData, TheEposPTakesEachAxisIntoTheAxisTableAndItsChannels) {
     EXPECT_EQ(mapping(od, PdoDirection::Receive, 1),
               (std::vector<std::uint32_t>{0x5281'0210, 0xA100'0210, 0xA1C0'0220}));
     EXPECT_EQ(od.get_as<std::uint32_t>(0x1800, 1), 0x205u);
-    EXPECT_EQ(canopen::read_pdo_communication(od, PdoDirection::Transmit, 1).transmission_type,
-              1);
+    EXPECT_EQ(canopen::read_pdo_communication(od, PdoDirection::Transmit, 1).transmission_type, 1);
     EXPECT_EQ(od.get_as<std::uint8_t>(0x5281, 1), 5u);
 }
 
-TEST(AxisProcessData, AxesAbove15HaveOnlyTheirStatuswordInTheAxisTable) {
-    EXPECT_FALSE(AxisChannels::of(16));
+// The image has 16 entries per object: axes 16..31 use the objects of the other signedness,
+// entry n - 15.
+TEST(AxisProcessData, AxesAbove15UseTheOtherHalfOfTheProcessImage) {
     EposP device;
     device.add_network(network("slaves:\n  - {node: 9, axis: 20}\n"));
     EXPECT_EQ(mapping(device.objects(), PdoDirection::Receive, 1),
-              (std::vector<std::uint32_t>{0x5294'0210}));
-    EXPECT_EQ(canopen::read_pdo_mapping(device.objects(), PdoDirection::Transmit, 1).size(), 0u);
-    EXPECT_EQ(axis_slave_configuration(9, 20).back().index, 0x1800); // TPDO 1 made valid last
+              (std::vector<std::uint32_t>{0x5294'0210, 0xA0C0'0510, 0xA200'0520}));
+    EXPECT_EQ(mapping(device.objects(), PdoDirection::Transmit, 1),
+              (std::vector<std::uint32_t>{0xA540'0510, 0xA680'0520}));
+    EXPECT_EQ(device.objects().get_as<std::uint32_t>(0x1800, 1), 0x209u);
+    const AxisChannels last = AxisChannels::of(31);
+    EXPECT_EQ(last.statusword.index, 0xA0C0);
+    EXPECT_EQ(last.target_position.sub_index, 16);
 }
 
 TEST(AxisProcessData, ThePlcTaskRunsHalfASyncPeriodAfterEachSync) {
@@ -128,9 +132,9 @@ TEST(AxisProcessData, ThePlcTaskRunsHalfASyncPeriodAfterEachSync) {
         counts.push_back(*device.plc().value_of("P.scans"));
     }
     const long before = std::stol(counts[0]);
-    EXPECT_EQ(counts, (std::vector<std::string>{std::to_string(before), std::to_string(before + 1),
-                                                std::to_string(before + 1),
-                                                std::to_string(before + 2)}));
+    EXPECT_EQ(counts,
+              (std::vector<std::string>{std::to_string(before), std::to_string(before + 1),
+                                        std::to_string(before + 1), std::to_string(before + 2)}));
 }
 
 TEST(AxisProcessData, TheTwoAxisExampleMovesBothAxesToTheirTargets) {

@@ -244,6 +244,36 @@ END_PROGRAM
                 10); // within the drive's position window
 }
 
+// Axes 16..31 have their process data in the other half of the process image; the blocks move
+// them like any other, and a program sees the same values at %IW(n) and %ID(24+n).
+TEST(MotionOnNetworkHighAxes, Axis31IsPoweredAndMoved) {
+    const auto network =
+        parse_network_file("sync_period: 1ms\nslaves:\n  - {node: 4, axis: 31}\n", "net.yaml");
+    EposP device;
+    start(device, network, R"ST(
+PROGRAM Main
+VAR
+  Far : AXIS_REF := (AxisNo := 31);
+  Power : MC_Power;
+  Move : MC_MoveAbsolute;
+  Status AT %IW31 : WORD;
+  Position AT %ID55 : DINT;
+END_VAR
+Power(Axis := Far, Enable := TRUE);
+Move(Axis := Far, Execute := Power.Status, Position := -7000, Velocity := 3000,
+     Acceleration := 10000, Deceleration := 10000);
+END_PROGRAM
+)ST");
+    device.loop().run_for(3s);
+    EXPECT_EQ(value(device, "Move.Done"), "TRUE") << value(device, "Move.ErrorID");
+    const std::int32_t actual =
+        device.simulated_slaves()[0]->objects().get_as<std::int32_t>(0x6064, 0);
+    EXPECT_NEAR(actual, -7000, 10);
+    EXPECT_EQ(value(device, "Position"), std::to_string(actual));
+    EXPECT_EQ(std::stoi(value(device, "Status")) & 0x6F, 0x27) // Operation enabled
+        << value(device, "Status");
+}
+
 TEST(MotionOnNetworkLimits, ALimitSwitchStopsTheAxisInErrorStopWithItsErrorCode) {
     write_source("machine.yaml", "switches:\n  positive_limit: 15000\n");
     const auto network = load_network_file(write_source(

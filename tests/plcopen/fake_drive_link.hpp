@@ -21,7 +21,6 @@ namespace eposp::plcopen::test {
 
 struct FakeDrive {
     AxisPresence presence = AxisPresence::Unassigned;
-    bool process_data = true;
     std::uint16_t statusword = 0x0040; ///< Switch on disabled
     std::uint16_t controlword = 0;
     std::int32_t position = 0;
@@ -31,8 +30,8 @@ struct FakeDrive {
     /// A set-point taken with "change set immediately" clear during a move (target, step): the
     /// drive's one-deep buffer, started when the move ends.
     std::optional<std::pair<std::int32_t, std::int32_t>> buffered;
-    std::uint16_t error_code = 0;  ///< 0x1003 sub 1; non-zero: Fault
-    int homing_cycles = -1;        ///< cycles left of a running homing
+    std::uint16_t error_code = 0; ///< 0x1003 sub 1; non-zero: Fault
+    int homing_cycles = -1;       ///< cycles left of a running homing
     std::map<std::pair<std::uint16_t, std::uint8_t>, std::uint32_t> objects;
     /// What an upload reports as the object's size; 4 bytes unless set here.
     std::map<std::pair<std::uint16_t, std::uint8_t>, std::uint8_t> sizes;
@@ -64,7 +63,6 @@ public:
     }
 
     AxisPresence presence(AxisNumber axis) const override { return drives[axis].presence; }
-    bool has_process_data(AxisNumber axis) const override { return drives[axis].process_data; }
     std::uint16_t statusword(AxisNumber axis) const override { return drives[axis].statusword; }
     std::int32_t actual_position(AxisNumber axis) const override { return drives[axis].position; }
     std::uint32_t samples(AxisNumber) const override { return samples_; }

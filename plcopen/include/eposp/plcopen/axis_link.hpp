@@ -41,8 +41,6 @@ public:
     virtual ~AxisLink() = default;
 
     virtual AxisPresence presence(AxisNumber axis) const = 0;
-    /// Whether the axis has cyclic process data (the EPOS P gives them to axes 0..15).
-    virtual bool has_process_data(AxisNumber axis) const = 0;
     /// The statusword 0x6041 and position actual value 0x6064 of the last SYNC cycle.
     virtual std::uint16_t statusword(AxisNumber axis) const = 0;
     virtual std::int32_t actual_position(AxisNumber axis) const = 0;

@@ -8,7 +8,6 @@ namespace eposp::plcopen {
 enum class ErrorId : std::uint16_t {
     None = 0x0000,
     UnknownAxis = 0x1001,       ///< AxisNo above 31, or no slave assigned to the axis
-    NoProcessData = 0x1002,     ///< the axis has no cyclic process data (axes 16..31)
     CommunicationLost = 0x1003, ///< the axis' slave is not operational or stopped answering
     DriveFault = 0x1004,        ///< the drive is in its Fault state (MC_ReadAxisError tells why)
     InvalidInput = 0x1010,      ///< an input out of its range (a negative velocity …)
