@@ -40,22 +40,25 @@ VAR
   d : DOUBLER;
   h : ST_HELPER;
   x : DINT := 20;
-  y, z : DINT;
+  y, z, times : DINT;
   fail, fail_inside : BOOL;
   w : Wrapper;
 END_VAR
 d(In := x, Fail := fail, Out => y);
 h(a := y, b => z);
 x := x + 1;
-w(go := fail_inside);
+w(go := fail_inside, times := times);
 END_PROGRAM
 
 FUNCTION_BLOCK Wrapper
-VAR_INPUT go : BOOL; END_VAR
-VAR inner : DOUBLER; END_VAR
+VAR_INPUT go : BOOL; times : DINT; END_VAR
+VAR inner : DOUBLER; i : DINT; END_VAR
 IF go THEN
   inner(In := 1, Fail := TRUE);
 END_IF;
+FOR i := 1 TO times DO
+  inner(In := i);
+END_FOR;
 END_FUNCTION_BLOCK
 )ST";
 
@@ -81,16 +84,16 @@ void register_doubler(vm::NativeRegistry& registry, std::vector<vm::Scalar> fiel
     });
 }
 
-class NativeBlocks : public testing::TestWithParam<vm::Engine> {
-protected:
-    void load(std::vector<vm::Scalar> fields = kDoubler.fields()) {
+/// The program with DOUBLER's C++ body on a PLC runtime in virtual time.
+struct DoublerRuntime {
+    void load(vm::Engine engine, std::vector<vm::Scalar> fields = kDoubler.fields()) {
         std::string diagnostics;
         auto image =
             compile(kProgram, kDoubler.declaration() + std::string(kLibraryExtra), diagnostics);
         ASSERT_TRUE(image) << diagnostics;
         register_doubler(natives, std::move(fields));
         vm::RuntimeConfig config;
-        config.engine = GetParam();
+        config.engine = engine;
         runtime = std::make_unique<vm::PlcRuntime>(
             loop, natives, std::move(config),
             [this](std::uint16_t, std::string text) { errors.push_back(std::move(text)); });
@@ -110,6 +113,13 @@ protected:
     std::unique_ptr<vm::PlcRuntime> runtime;
     std::vector<std::string> errors;
     std::string load_error;
+};
+
+class NativeBlocks : public testing::TestWithParam<vm::Engine>, protected DoublerRuntime {
+protected:
+    void load(std::vector<vm::Scalar> fields = kDoubler.fields()) {
+        DoublerRuntime::load(GetParam(), std::move(fields));
+    }
 };
 
 TEST_P(NativeBlocks, RunItsCppBodyOnItsInstance) {
@@ -151,6 +161,39 @@ TEST_P(NativeBlocks, ABodyForAnotherLayoutIsRefusedAtLoad) {
     load({vm::Scalar::I32, vm::Scalar::Bool, vm::Scalar::I16, vm::Scalar::U32});
     EXPECT_NE(load_error.find("DOUBLER has a different signature"), std::string::npos)
         << load_error;
+}
+
+// Native calls count as instructions like any other: the watchdog stops a loop of them.
+TEST_P(NativeBlocks, TheWatchdogStopsALoopOfCalls) {
+    load();
+    ASSERT_EQ(load_error, "");
+    loop.run_for(std::chrono::milliseconds(5));
+    const std::uint64_t per_cycle = runtime->statistics(0).instructions_last;
+    runtime->set_watchdog(0, per_cycle + 1000);
+    ASSERT_FALSE(runtime->write_value<std::int32_t>("Main.times", 10));
+    loop.run_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(errors.empty()) << errors[0];
+    ASSERT_FALSE(runtime->write_value<std::int32_t>("Main.times", 1000));
+    loop.run_for(std::chrono::milliseconds(10));
+    ASSERT_EQ(errors.size(), 1U);
+    EXPECT_NE(errors[0].find("in Wrapper"), std::string::npos) << errors[0];
+}
+
+TEST(NativeBlockEngines, BothEnginesExecuteTheSameInstructions) {
+    DoublerRuntime interpreter;
+    DoublerRuntime compiled;
+    interpreter.load(vm::Engine::Interpreter);
+    compiled.load(vm::Engine::Compiled);
+    for (DoublerRuntime* run : {&interpreter, &compiled}) {
+        ASSERT_EQ(run->load_error, "");
+        ASSERT_FALSE(run->runtime->write_value<std::int32_t>("Main.times", 7));
+        run->loop.run_for(std::chrono::milliseconds(35));
+    }
+    EXPECT_EQ(interpreter.runtime->statistics(0).instructions_last,
+              compiled.runtime->statistics(0).instructions_last);
+    // 7 calls in each cycle after `times` was set: at 10, 20 and 30 ms.
+    EXPECT_EQ(interpreter.value("w.inner.Calls"), "21");
+    EXPECT_EQ(compiled.value("w.inner.Calls"), "21");
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, NativeBlocks,
