@@ -274,6 +274,42 @@ END_PROGRAM
         << value(device, "Status");
 }
 
+// A following error window far too tight for the move (MC_WriteParameter 7, MaxPositionLag
+// 0x6065): the drive faults with 0x8611 and the axis goes to ErrorStop; MC_Reset clears it.
+TEST(MotionOnNetworkLimits, AFollowingErrorIsErrorStopWithItsCodeAndResetClearsIt) {
+    const auto network = parse_network_file(kNetwork, "net.yaml");
+    EposP device;
+    start(device, network, R"ST(
+PROGRAM Main
+VAR
+  Axis1 : AXIS_REF := (AxisNo := 1);
+  Power : MC_Power;
+  TightLag : MC_WriteParameter;
+  Move : MC_MoveAbsolute;
+  AxisError : MC_ReadAxisError;
+  State : MC_ReadAxisState;
+  Reset : MC_Reset;
+  DoReset : BOOL;
+END_VAR
+Power(Axis := Axis1, Enable := TRUE);
+TightLag(Axis := Axis1, Execute := Power.Status, ParameterNumber := 7, Value := 2);
+Move(Axis := Axis1, Execute := TightLag.Done AND NOT DoReset, Position := 50000, Velocity := 8000,
+     Acceleration := 100000, Deceleration := 100000);
+AxisError(Axis := Axis1, Enable := TRUE);
+State(Axis := Axis1, Enable := TRUE);
+Reset(Axis := Axis1, Execute := DoReset);
+END_PROGRAM
+)ST");
+    device.loop().run_for(2s);
+    EXPECT_EQ(value(device, "State.State"), "6"); // ErrorStop
+    EXPECT_EQ(value(device, "AxisError.AxisErrorID"), std::to_string(0x8611));
+    ASSERT_FALSE(device.plc().runtime().write_value<std::uint8_t>("Main.DoReset", 1));
+    device.loop().run_for(200ms);
+    EXPECT_EQ(value(device, "Reset.Done"), "TRUE");
+    EXPECT_EQ(value(device, "State.State"), "1"); // Standstill: powered again, no move
+    EXPECT_EQ(value(device, "AxisError.AxisErrorID"), "0");
+}
+
 TEST(MotionOnNetworkLimits, ALimitSwitchStopsTheAxisInErrorStopWithItsErrorCode) {
     write_source("machine.yaml", "switches:\n  positive_limit: 15000\n");
     const auto network = load_network_file(write_source(
