@@ -10,6 +10,7 @@ namespace {
 
 constexpr std::uint16_t kProducerHeartbeatIndex = 0x1017;
 constexpr std::uint16_t kRequestNmtIndex = 0x1F82;
+constexpr std::uint16_t kSdoClientIndex = 0x1280;
 constexpr canopen::NodeId kInternalEposNodeId = 1;
 
 /// The time 0x1016 gives the producer `node` of `port`, or 0.
@@ -161,6 +162,32 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
     });
     port_.on_error_state([this](can::ErrorState state) { report_controller_state(state); });
     bind_request_nmt();
+    bind_sdo_clients();
+}
+
+// 10.15: the client parameter 0x1280 is the internal EPOS2's, 0x1280 + n node n's of port 2.
+// Its COB-IDs hold from the start and from every write on (an invalid one, bit 31, makes the
+// transfers to that slave fail).
+void NetworkPort::bind_sdo_clients() {
+    const auto bind = [this](std::uint16_t index, canopen::NodeId node) {
+        const auto apply = [this, index, node] {
+            sdo_.set_cob_ids(node, od_.get_as<std::uint32_t>(index, 1),
+                             od_.get_as<std::uint32_t>(index, 2));
+        };
+        apply();
+        listeners_.push_back(od_.on_change(index, [apply](std::uint16_t, std::uint8_t sub_index) {
+            if (sub_index == 1 || sub_index == 2) {
+                apply();
+            }
+        }));
+    };
+    if (port_code_ == kInternalPort) {
+        bind(kSdoClientIndex, kInternalEposNodeId);
+        return;
+    }
+    for (std::uint8_t node = 1; node <= 127; ++node) {
+        bind(static_cast<std::uint16_t>(kSdoClientIndex + node), node);
+    }
 }
 
 // 10.24: sub-index n is node n of port 2, sub-index 128 the internal EPOS2 (node 1 of port 1).
@@ -221,6 +248,9 @@ void NetworkPort::report_lost_frame() {
 NetworkPort::~NetworkPort() {
     port_.on_receive({});
     port_.on_error_state({});
+    for (const auto id : listeners_) {
+        od_.remove_listener(id);
+    }
 }
 
 void NetworkPort::boot(std::function<void(const manager::BootReport& report)> done) {

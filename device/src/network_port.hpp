@@ -90,6 +90,8 @@ private:
     void report_controller_state(can::ErrorState state);
     /// 0x1F82 Request NMT for this port's slaves (table 27).
     void bind_request_nmt();
+    /// 0x1280 - 0x12FF: the SDO client's COB-IDs for each of this port's slaves.
+    void bind_sdo_clients();
     /// An error of the port itself (node-ID 0) in the history.
     void record_port_error(std::uint16_t code);
     /// The state of the controller's own services on this port.
@@ -112,6 +114,7 @@ private:
     std::unique_ptr<canopen::HeartbeatProducer> heartbeat_producer_;
     SlaveConfigurations configurations_;
     std::vector<std::function<void()>> sync_listeners_;
+    std::vector<canopen::ObjectDictionary::ListenerId> listeners_;
 };
 
 } // namespace eposp::device

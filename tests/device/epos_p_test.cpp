@@ -1,12 +1,12 @@
 // The EPOS P as a library: its two ports, the internal EPOS2 and the PLC on one virtual loop.
+#include "compile_program.hpp"
 #include "eposp/canopen/nmt_protocol.hpp"
 #include "eposp/canopen/sdo_client.hpp"
-#include "eposp/manager/network_list.hpp"
 #include "eposp/canopen/store_restore_objects.hpp"
 #include "eposp/canopen/value_codec.hpp"
-#include "compile_program.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/error_entry.hpp"
+#include "eposp/manager/network_list.hpp"
 
 #include <gtest/gtest.h>
 #include <vector>
@@ -212,6 +212,49 @@ TEST(EposP, AnEpos2OnPortTwoBootsAndStarts) {
     EXPECT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::PreOperational);
 }
 
+// 10.15: the manager reaches node n of port 2 on the COB-IDs of its client parameter 0x1280 + n,
+// as written, and not at all while they are marked invalid (CAN_SdoRead uses the manager's
+// client).
+TEST(EposP, TheSdoClientParametersGiveTheManagersCobIds) {
+    EposP device;
+    auto monitor = device.external_bus().connect("monitor");
+    std::vector<std::uint32_t> requests;
+    monitor->on_receive([&](const can::Frame& frame) {
+        if (frame.dlc == 8) {
+            requests.push_back(frame.id);
+        }
+    });
+    canopen::ObjectDictionary& od = device.objects();
+    ASSERT_EQ(od.write(0x1285, 1, canopen::encode(std::uint32_t{0x655})), canopen::AbortCode::None);
+    ASSERT_EQ(od.write(0x1285, 2, canopen::encode(std::uint32_t{0x5D5})), canopen::AbortCode::None);
+    ASSERT_FALSE(device.plc().load(compile_program(R"(
+PROGRAM Main
+VAR
+  Read : CAN_SdoRead;
+  Go : BOOL;
+END_VAR
+Read(Execute := Go, Port := 2, NodeId := 5, Index := 16#1000, SubIndex := 0);
+END_PROGRAM
+)")));
+    ASSERT_FALSE(device.start_program(vm::StartMode::Cold));
+    const auto read_device_type = [&] {
+        ASSERT_FALSE(device.plc().runtime().write_value<std::uint8_t>("Main.Go", 1));
+        device.loop().run_for(2s);
+        ASSERT_FALSE(device.plc().runtime().write_value<std::uint8_t>("Main.Go", 0));
+        device.loop().run_for(100ms);
+    };
+    read_device_type();
+    // Nobody answers: the request, and at its timeout the abort, on the COB-ID written.
+    EXPECT_EQ(requests, (std::vector<std::uint32_t>{0x655, 0x655}));
+    EXPECT_EQ(*device.plc().value_of("Main.Read.AbortCode"), "84148224"); // 16#05040000
+
+    ASSERT_EQ(od.write(0x1285, 1, canopen::encode(std::uint32_t{0x8000'0655})),
+              canopen::AbortCode::None);
+    read_device_type();
+    EXPECT_EQ(requests.size(), 2U);                                        // nothing sent
+    EXPECT_EQ(*device.plc().value_of("Main.Read.AbortCode"), "101318691"); // 16#060A0023
+}
+
 TEST(EposP, BusOffAndErrorPassiveOfPortTwoAreInTheHistory) {
     EposP device;
     // Port 2 is a virtual port here: its faults can be injected.
@@ -343,7 +386,8 @@ TEST(EposP, TheManufacturerStatusRegisterGathersSlavesErrorRegistersAndMasterWar
     EXPECT_EQ(status(), 0u);
     // Port 2 is pre-operational from power-up: its EMCY consumer listens.
     auto nodes = device.external_bus().connect("nodes");
-    nodes->send(can::Frame::data_frame(0x085, {0x10, 0x32, 0x05, 0, 0, 0, 0, 0})); // generic+voltage
+    nodes->send(
+        can::Frame::data_frame(0x085, {0x10, 0x32, 0x05, 0, 0, 0, 0, 0})); // generic+voltage
     nodes->send(can::Frame::data_frame(0x086, {0x10, 0x81, 0x11, 0, 0, 0, 0, 0})); // generic+comm
     device.loop().run_for(10ms);
     EXPECT_EQ(status(), 0x15u); // bits 0, 2, 4 of table 3
@@ -359,7 +403,8 @@ TEST(EposP, TheManufacturerStatusRegisterGathersSlavesErrorRegistersAndMasterWar
     ASSERT_EQ(history(device, 1), 0x8209'8182u);
     EXPECT_EQ(status(), 0x0011'0011u);
     // A CAN error of the port sets the error register, copied into bits 8..15.
-    static_cast<can::VirtualPort&>(device.external_port()).force_error_state(can::ErrorState::Passive);
+    static_cast<can::VirtualPort&>(device.external_port())
+        .force_error_state(can::ErrorState::Passive);
     device.loop().run_for(10ms);
     EXPECT_EQ(status(), 0x0011'1011u); // 0x1001: the communication bit
     // Clearing the history clears the warnings.
