@@ -4,6 +4,7 @@
 #include "eposp/device/error_entry.hpp"
 
 #include <chrono>
+#include <utility>
 
 namespace eposp::device {
 namespace {
@@ -217,7 +218,11 @@ void NetworkPort::bind_request_nmt() {
 
 // Table 1: the controller's state changes, node-ID 0 (the master's own port).
 void NetworkPort::report_controller_state(can::ErrorState state) {
-    if (state == can::ErrorState::Passive) {
+    const can::ErrorState before = std::exchange(controller_state_, state);
+    if (state == can::ErrorState::Warning && before == can::ErrorState::Active) {
+        // A warning entry: the controller still takes part (table 4's warning bit).
+        record_error(od_, {.code = kCanWarning, .port = port_code_, .node = 0, .warning = true});
+    } else if (state == can::ErrorState::Passive) {
         record_port_error(kCanPassiveError);
     } else if (state == can::ErrorState::BusOff) {
         record_port_error(kCanBusOffError);

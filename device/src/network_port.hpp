@@ -34,6 +34,7 @@ manager::NetworkList network_list(const canopen::ObjectDictionary& od, std::uint
 /// Table 1: the CAN errors of a port.
 inline constexpr std::uint16_t kCanOverrunError = 0x8110;
 inline constexpr std::uint16_t kCanPassiveError = 0x8120;
+inline constexpr std::uint16_t kCanWarning = 0x81FC;
 inline constexpr std::uint16_t kCanBusOffError = 0x81FD;
 
 /// The EPOS P as the CANopen manager of one of its ports: an SDO client, an NMT master and a
@@ -115,6 +116,7 @@ private:
     SlaveConfigurations configurations_;
     std::vector<std::function<void()>> sync_listeners_;
     std::vector<canopen::ObjectDictionary::ListenerId> listeners_;
+    can::ErrorState controller_state_ = can::ErrorState::Active;
 };
 
 } // namespace eposp::device

@@ -266,6 +266,22 @@ TEST(EposP, BusOffAndErrorPassiveOfPortTwoAreInTheHistory) {
     EXPECT_EQ(history(device, 1), 0x0200'81FDu); // port 2, the master, CAN Bus Off Error
 }
 
+// Table 1: 0x81FC, the frame error warning level, as a warning entry (table 4, bit 31) once the
+// controller reaches it from error-active, not again on its way back down from passive.
+TEST(EposP, TheWarningLevelOfPortTwoIsAWarningInTheHistory) {
+    EposP device;
+    auto& port = static_cast<can::VirtualPort&>(device.external_port());
+    port.force_error_state(can::ErrorState::Warning);
+    port.force_error_state(can::ErrorState::Passive);
+    port.force_error_state(can::ErrorState::Warning);
+    device.loop().run_for(10ms);
+    EXPECT_EQ(device.objects().get_as<std::uint8_t>(0x1003, 0), 2u);
+    EXPECT_EQ(history(device, 2), 0x8200'81FCu); // warning, port 2, the master, CAN Warning
+    EXPECT_EQ(history(device, 1), 0x0200'8120u);
+    // A master communication warning in the manufacturer status register (table 3, bit 20).
+    EXPECT_NE(device.objects().get_as<std::uint32_t>(0x1002, 0) & (1U << 20), 0u);
+}
+
 TEST(EposP, AColdStartOfTheProgramBootsTheNetworks) {
     EposP device;
     ASSERT_FALSE(device.plc().load(compile_program(kDoubler)));

@@ -15,6 +15,9 @@ ErrorState ErrorCounters::state() const {
     if (transmit_ > kErrorPassiveAbove || receive_ > kErrorPassiveAbove) {
         return ErrorState::Passive;
     }
+    if (transmit_ >= kErrorWarningFrom || receive_ >= kErrorWarningFrom) {
+        return ErrorState::Warning;
+    }
     return ErrorState::Active;
 }
 
@@ -53,6 +56,9 @@ void ErrorCounters::force(ErrorState state) {
     switch (state) {
     case ErrorState::Active:
         transmit_ = 0;
+        break;
+    case ErrorState::Warning:
+        transmit_ = kErrorWarningFrom;
         break;
     case ErrorState::Passive:
         transmit_ = kErrorPassiveAbove + 1;

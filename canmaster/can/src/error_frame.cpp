@@ -28,6 +28,11 @@ Frame bus_error_frame(std::uint32_t classes, std::uint8_t type, ErrorLocation lo
         frame.data[err::kControllerByte] = static_cast<std::uint8_t>(
             (counters.transmit() > kErrorPassiveAbove ? err::kTxPassive : 0) |
             (counters.receive() > kErrorPassiveAbove ? err::kRxPassive : 0));
+    } else if (state_changed && counters.state() == ErrorState::Warning) {
+        frame.id |= err::kController;
+        frame.data[err::kControllerByte] = static_cast<std::uint8_t>(
+            (counters.transmit() >= kErrorWarningFrom ? err::kTxWarning : 0) |
+            (counters.receive() >= kErrorWarningFrom ? err::kRxWarning : 0));
     }
     return frame;
 }

@@ -10,6 +10,8 @@ std::string_view to_string(ErrorState state) {
     switch (state) {
     case ErrorState::Active:
         return "error-active";
+    case ErrorState::Warning:
+        return "error-warning";
     case ErrorState::Passive:
         return "error-passive";
     case ErrorState::BusOff:

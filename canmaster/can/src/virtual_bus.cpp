@@ -202,7 +202,7 @@ Outcome VirtualBus::Impl::outcome_of(const VirtualPort::Impl& sender, const Fram
 
 bool VirtualBus::Impl::dominant_error_flag(const VirtualPort::Impl& sender, Outcome outcome) const {
     const auto active = [](const VirtualPort::Impl& controller) {
-        return controller.counters.state() == ErrorState::Active;
+        return error_active(controller.counters.state());
     };
     if (outcome == Outcome::NotAcknowledged) {
         return active(sender);

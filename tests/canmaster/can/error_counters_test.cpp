@@ -24,7 +24,8 @@ struct StateCase {
 
 class ErrorCountersStateTest : public ::testing::TestWithParam<StateCase> {};
 
-// ISO 11898-1:2015, 12.1.4: passive above 127, bus-off above 255; 8 per transmit error.
+// ISO 11898-1:2015, 12.1.4: passive above 127, bus-off above 255; 8 per transmit error. The
+// warning level from 96.
 TEST_P(ErrorCountersStateTest, TransmitErrorsSetTheState) {
     const ErrorCounters counters = after_transmit_errors(GetParam().transmit_errors);
     EXPECT_EQ(counters.transmit(), 8U * static_cast<unsigned>(GetParam().transmit_errors));
@@ -33,17 +34,25 @@ TEST_P(ErrorCountersStateTest, TransmitErrorsSetTheState) {
 
 INSTANTIATE_TEST_SUITE_P(ErrorCounters, ErrorCountersStateTest,
                          ::testing::Values(StateCase{0, ErrorState::Active},
-                                           StateCase{15, ErrorState::Active},
+                                           StateCase{11, ErrorState::Active},
+                                           StateCase{12, ErrorState::Warning},
+                                           StateCase{15, ErrorState::Warning},
                                            StateCase{16, ErrorState::Passive},
                                            StateCase{31, ErrorState::Passive},
                                            StateCase{32, ErrorState::BusOff}));
 
-TEST(ErrorCounters, ReceiveErrorsAbove127MakePassive) {
+TEST(ErrorCounters, ReceiveErrorsFrom96AreTheWarningLevelAbove127Passive) {
     ErrorCounters counters;
-    for (int i = 0; i < 127; ++i) {
+    for (int i = 0; i < 95; ++i) {
         counters.receive_error();
     }
     EXPECT_EQ(counters.state(), ErrorState::Active);
+    counters.receive_error();
+    EXPECT_EQ(counters.state(), ErrorState::Warning);
+    for (int i = 96; i < 127; ++i) {
+        counters.receive_error();
+    }
+    EXPECT_EQ(counters.state(), ErrorState::Warning);
     counters.receive_error();
     EXPECT_EQ(counters.receive(), 128U);
     EXPECT_EQ(counters.state(), ErrorState::Passive);
@@ -67,7 +76,7 @@ TEST(ErrorCounters, ReceptionBringsAPassiveReceiveCounterBackTo119) {
     }
     counters.receive_success();
     EXPECT_EQ(counters.receive(), 119U);
-    EXPECT_EQ(counters.state(), ErrorState::Active);
+    EXPECT_EQ(counters.state(), ErrorState::Warning); // error-active again, at the warning level
 }
 
 TEST(ErrorCounters, PassiveTransmitterIgnoresAckErrors) {

@@ -148,14 +148,19 @@ TEST_F(VirtualBusFaultsTest, ErrorCountsTransmitterEightReceiversOneSuccessMinus
     EXPECT_EQ(a->statistics().tx_frames, 1U);
 }
 
+// Twelve errors reach the warning level (TEC 96), sixteen error-passive (128); the success
+// after them counts down to 127, the warning level again: error-active.
 TEST_F(VirtualBusFaultsTest, SixteenErrorsMakeTheTransmitterPassiveAndASuccessActiveAgain) {
     StateLog states(*a, loop);
     bus.corrupt_frames({}, 16);
     a->send(kZeroFrame);
     loop.run();
-    EXPECT_EQ(states.states(), (std::vector{ErrorState::Passive, ErrorState::Active}));
+    EXPECT_EQ(states.states(),
+              (std::vector{ErrorState::Warning, ErrorState::Passive, ErrorState::Warning}));
     const auto errors = error_frames(wire);
     ASSERT_EQ(errors.size(), 16U);
+    EXPECT_EQ(errors[11].frame.id & err::kController, err::kController);
+    EXPECT_EQ(errors[11].frame.data[err::kControllerByte], err::kTxWarning);
     EXPECT_EQ(errors.back().frame.id & err::kController, err::kController);
     EXPECT_EQ(errors.back().frame.data[err::kControllerByte], err::kTxPassive);
     EXPECT_EQ(errors.back().frame.data[err::kTransmitCounterByte], 128);
@@ -194,8 +199,10 @@ TEST_F(VirtualBusFaultsTest, ThirtyTwoErrorsMakeTheTransmitterBusOff) {
     bus.corrupt_frames({}, 32);
     a->send(kZeroFrame);
     loop.run_for(milliseconds(2));
-    ASSERT_GE(states.changes.size(), 2U);
-    EXPECT_EQ(states.changes[1].second, ErrorState::BusOff);
+    ASSERT_GE(states.changes.size(), 3U);
+    EXPECT_EQ(states.changes[0].second, ErrorState::Warning);
+    EXPECT_EQ(states.changes[1].second, ErrorState::Passive);
+    EXPECT_EQ(states.changes[2].second, ErrorState::BusOff);
     const auto errors = error_frames(wire);
     ASSERT_EQ(errors.size(), 32U);
     EXPECT_EQ(errors.back().frame.id & err::kBusOff, err::kBusOff);
@@ -204,7 +211,7 @@ TEST_F(VirtualBusFaultsTest, ThirtyTwoErrorsMakeTheTransmitterBusOff) {
 
     // Attempts start 57 bits apart while active and 65 while passive (suspend transmission);
     // the 32nd error frame ends 54 bits after its attempt started.
-    const core::TimePoint bus_off = states.changes[1].first;
+    const core::TimePoint bus_off = states.changes[2].first;
     EXPECT_EQ(bus_off, at_us(15 * 57 + 16 * 65 + 54));
     EXPECT_EQ(a->send(kZeroFrame), SendStatus::BusOff);
 }
@@ -261,7 +268,7 @@ TEST(VirtualBusFaults, LoneNodeEndsErrorPassiveNotBusOff) {
     StateLog states(*a, loop);
     a->send(kZeroFrame);
     loop.run_for(milliseconds(100));
-    EXPECT_EQ(states.states(), std::vector{ErrorState::Passive});
+    EXPECT_EQ(states.states(), (std::vector{ErrorState::Warning, ErrorState::Passive}));
     EXPECT_EQ(a->statistics().transmit_error_counter, 128U);
     EXPECT_EQ(a->statistics().tx_frames, 0U);
 

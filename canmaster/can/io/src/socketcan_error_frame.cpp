@@ -19,10 +19,11 @@ std::optional<ErrorState> error_state_reported_by(const Frame& error_frame) {
         if (controller & (CAN_ERR_CRTL_RX_PASSIVE | CAN_ERR_CRTL_TX_PASSIVE)) {
             return ErrorState::Passive;
         }
-        // The kernel reports a controller that recovers with the level it fell back to; the
-        // warning level (counters 96..127) is still error-active in ISO 11898-1's terms.
-        if (controller &
-            (CAN_ERR_CRTL_ACTIVE | CAN_ERR_CRTL_RX_WARNING | CAN_ERR_CRTL_TX_WARNING)) {
+        // The kernel reports a controller that recovers with the level it fell back to.
+        if (controller & (CAN_ERR_CRTL_RX_WARNING | CAN_ERR_CRTL_TX_WARNING)) {
+            return ErrorState::Warning;
+        }
+        if (controller & CAN_ERR_CRTL_ACTIVE) {
             return ErrorState::Active;
         }
     }

@@ -158,7 +158,7 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorFrameCase{error_frame(CAN_ERR_CRTL | CAN_ERR_CNT, CAN_ERR_CRTL_TX_PASSIVE),
                        ErrorState::Passive},
         ErrorFrameCase{error_frame(CAN_ERR_CRTL, CAN_ERR_CRTL_ACTIVE), ErrorState::Active},
-        ErrorFrameCase{error_frame(CAN_ERR_CRTL, CAN_ERR_CRTL_TX_WARNING), ErrorState::Active},
+        ErrorFrameCase{error_frame(CAN_ERR_CRTL, CAN_ERR_CRTL_TX_WARNING), ErrorState::Warning},
         ErrorFrameCase{error_frame(CAN_ERR_RESTARTED), ErrorState::Active},
         ErrorFrameCase{error_frame(CAN_ERR_CRTL, CAN_ERR_CRTL_RX_OVERFLOW), std::nullopt},
         ErrorFrameCase{error_frame(CAN_ERR_PROT | CAN_ERR_ACK), std::nullopt},

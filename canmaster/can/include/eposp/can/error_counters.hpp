@@ -4,14 +4,17 @@
 
 namespace eposp::can {
 
+/// A counter at this or above is the error warning level (ISO 11898-1 leaves it to the
+/// implementation; 96 is what CAN controllers and SocketCAN use).
+inline constexpr unsigned kErrorWarningFrom = 96;
 /// A counter above this makes a controller error-passive.
 inline constexpr unsigned kErrorPassiveAbove = 127;
 /// A transmit error counter above this makes it bus-off.
 inline constexpr unsigned kBusOffAbove = 255;
 
 /// A controller's transmit and receive error counters and the fault confinement state they
-/// imply (ISO 11898-1:2015, 12.1.4): error-passive when a counter is above 127, bus-off when
-/// the transmit error counter is above 255. The bus applies the rules; this class does the
+/// imply (ISO 11898-1:2015, 12.1.4): the warning level from 96, error-passive when a counter is
+/// above 127, bus-off when the transmit error counter is above 255. The bus applies the rules; this class does the
 /// arithmetic.
 class ErrorCounters {
 public:

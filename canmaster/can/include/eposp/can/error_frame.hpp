@@ -31,6 +31,8 @@ inline constexpr std::size_t kTransmitCounterByte = 6;
 inline constexpr std::size_t kReceiveCounterByte = 7;
 
 // data[1]: controller state.
+inline constexpr std::uint8_t kRxWarning = 0x04; ///< CAN_ERR_CRTL_RX_WARNING
+inline constexpr std::uint8_t kTxWarning = 0x08; ///< CAN_ERR_CRTL_TX_WARNING
 inline constexpr std::uint8_t kRxPassive = 0x10; ///< CAN_ERR_CRTL_RX_PASSIVE
 inline constexpr std::uint8_t kTxPassive = 0x20; ///< CAN_ERR_CRTL_TX_PASSIVE
 

@@ -9,12 +9,18 @@
 
 namespace eposp::can {
 
-/// The fault confinement state of a CAN controller (ISO 11898-1, 12.1.4).
+/// The fault confinement state of a CAN controller (ISO 11898-1, 12.1.4), with the error
+/// warning level controllers report besides (SocketCAN's CAN_STATE_ERROR_WARNING).
 enum class ErrorState {
-    Active,  ///< counters below 128: takes part normally, signals active error flags
+    Active,  ///< counters below 96: takes part normally, signals active error flags
+    Warning, ///< a counter at 96..127: still error-active, but errors pile up
     Passive, ///< a counter above 127: still sends, waits 8 extra bits after transmitting
     BusOff,  ///< transmit counter above 255: takes no part in bus traffic until recovered
 };
+/// Active or Warning: the controller signals active error flags.
+inline bool error_active(ErrorState state) {
+    return state == ErrorState::Active || state == ErrorState::Warning;
+}
 std::string_view to_string(ErrorState state);
 
 /// What became of a frame handed to Port::send().
