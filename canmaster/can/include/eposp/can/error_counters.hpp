@@ -14,8 +14,8 @@ inline constexpr unsigned kBusOffAbove = 255;
 
 /// A controller's transmit and receive error counters and the fault confinement state they
 /// imply (ISO 11898-1:2015, 12.1.4): the warning level from 96, error-passive when a counter is
-/// above 127, bus-off when the transmit error counter is above 255. The bus applies the rules; this class does the
-/// arithmetic.
+/// above 127, bus-off when the transmit error counter is above 255. The bus applies the rules;
+/// this class does the arithmetic.
 class ErrorCounters {
 public:
     unsigned transmit() const { return transmit_; }
