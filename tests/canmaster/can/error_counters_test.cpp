@@ -32,14 +32,12 @@ TEST_P(ErrorCountersStateTest, TransmitErrorsSetTheState) {
     EXPECT_EQ(counters.state(), GetParam().expected);
 }
 
-INSTANTIATE_TEST_SUITE_P(ErrorCounters, ErrorCountersStateTest,
-                         ::testing::Values(StateCase{0, ErrorState::Active},
-                                           StateCase{11, ErrorState::Active},
-                                           StateCase{12, ErrorState::Warning},
-                                           StateCase{15, ErrorState::Warning},
-                                           StateCase{16, ErrorState::Passive},
-                                           StateCase{31, ErrorState::Passive},
-                                           StateCase{32, ErrorState::BusOff}));
+INSTANTIATE_TEST_SUITE_P(
+    ErrorCounters, ErrorCountersStateTest,
+    ::testing::Values(StateCase{0, ErrorState::Active}, StateCase{11, ErrorState::Active},
+                      StateCase{12, ErrorState::Warning}, StateCase{15, ErrorState::Warning},
+                      StateCase{16, ErrorState::Passive}, StateCase{31, ErrorState::Passive},
+                      StateCase{32, ErrorState::BusOff}));
 
 TEST(ErrorCounters, ReceiveErrorsFrom96AreTheWarningLevelAbove127Passive) {
     ErrorCounters counters;
