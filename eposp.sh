@@ -4,6 +4,7 @@
 #   ./eposp.sh demo       set up, build and run the demo
 #   ./eposp.sh test       set up, build and run every test
 #   ./eposp.sh sanitize   set up, build with AddressSanitizer + UBSan and run every test
+#   ./eposp.sh flakes [N] build, run two copies of the suite at once, N times in random order (3)
 #   ./eposp.sh fuzz [S]   set up clang, build the libFuzzer targets, run each for S seconds (60)
 #   ./eposp.sh difftest [M]  build st_difftest, run generated programs on every executor M minutes (10)
 #   ./eposp.sh build      set up and build only
@@ -52,10 +53,28 @@ build() {
     cmake --build "$dir"
 }
 
+# Random order, so that a test that depends on another's leftovers fails here and not by chance.
 run_tests() {
     local dir=$1
     log "running the tests in $dir"
-    ctest --test-dir "$dir" --output-on-failure -j "$(nproc)"
+    ctest --test-dir "$dir" --output-on-failure -j "$(nproc)" --schedule-random
+}
+
+# flakes N: two copies of the suite at once, each repeated N times in random order; a test that
+# shares a file, a port or a timing assumption with another fails here.
+flakes() {
+    local repeats=$1 first second
+    log "running two copies of the suite at once, $repeats times each"
+    ctest --test-dir build -j "$(nproc)" --schedule-random --repeat until-fail:"$repeats" \
+        --output-on-failure --output-log build/flakes-1.log >/dev/null &
+    first=$!
+    ctest --test-dir build -j "$(nproc)" --schedule-random --repeat until-fail:"$repeats" \
+        --output-on-failure --output-log build/flakes-2.log >/dev/null &
+    second=$!
+    local status=0
+    wait "$first" || { status=1; log "the first copy failed: build/flakes-1.log"; }
+    wait "$second" || { status=1; log "the second copy failed: build/flakes-2.log"; }
+    return "$status"
 }
 
 # fuzz SECONDS: each target in turn, one process, from its seed corpus; what it finds new goes to
@@ -83,6 +102,7 @@ demo)
     examples/plc-basics/run.sh build/device/eposp
     ;;
 test) setup && build build && run_tests build ;;
+flakes) setup && build build && flakes "${2:-3}" ;;
 sanitize)
     setup
     # Debug keeps assertions; -O1 keeps the suite fast. Only our own code is instrumented.
@@ -110,7 +130,7 @@ fuzz)
     fuzz "${2:-60}"
     ;;
 *)
-    sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'
     exit 1
     ;;
 esac

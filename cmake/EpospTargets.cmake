@@ -59,7 +59,7 @@ function(eposp_add_test_suite folder)
     cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
     set(target eposp_${folder}_tests)
     eposp_add_executable(${target} SOURCES ${ARG_SOURCES}
-        DEPENDS ${ARG_DEPENDS} GTest::gtest_main GTest::gmock)
+        DEPENDS ${ARG_DEPENDS} eposp::test_directory GTest::gtest_main GTest::gmock)
     target_compile_definitions(${target} PRIVATE
         EPOSP_SOURCE_DIR="${PROJECT_SOURCE_DIR}" EPOSP_BINARY_DIR="${PROJECT_BINARY_DIR}")
     gtest_discover_tests(${target} PROPERTIES LABELS ${folder} DISCOVERY_TIMEOUT 60)

@@ -3,6 +3,7 @@
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/test/same_dictionary.hpp"
+#include "eposp/test/test_directory.hpp"
 
 #include <filesystem>
 #include <fmt/format.h>
@@ -10,7 +11,6 @@
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace eposp::device {
@@ -80,17 +80,9 @@ const std::vector<ListedObject> kTable32 = {
     {0xA680, 0xA680, ObjectCode::Array, DataType::Unsigned32, Access::ReadWrite},
 };
 
-/// A dictionary in its own directory, so that a save never touches another test's file.
+/// A dictionary in the test's own directory, so that a save never touches another test's file.
 class EposPDictionaryTest : public ::testing::Test {
 protected:
-    EposPDictionaryTest() {
-        directory_ = std::filesystem::temp_directory_path() /
-                     fmt::format("eposp-dictionary-{}-{}", ::getpid(),
-                                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        std::filesystem::create_directories(directory_);
-    }
-    ~EposPDictionaryTest() override { std::filesystem::remove_all(directory_); }
-
     EposPDictionaryConfig config() const {
         EposPDictionaryConfig config;
         config.node_id = 3;
@@ -99,7 +91,7 @@ protected:
         return config;
     }
 
-    std::filesystem::path directory_;
+    std::filesystem::path directory_ = test::test_directory();
 };
 
 std::uint32_t u32(const canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub) {
@@ -142,7 +134,7 @@ TEST_F(EposPDictionaryTest, DefaultsAreTheSpecifications) {
     EXPECT_EQ(od.get_as<std::uint8_t>(0x1003, 0), 0u); // 10.4: no errors; room for 16
     EXPECT_NE(od.find(0x1003, 16), nullptr);
     EXPECT_EQ(od.find(0x1003, 17), nullptr);
-    EXPECT_EQ(od.get_as<std::uint8_t>(0x1011, 0), 2u);  // 10.10: two entries
+    EXPECT_EQ(od.get_as<std::uint8_t>(0x1011, 0), 2u); // 10.10: two entries
     EXPECT_EQ(od.get_as<std::uint8_t>(0x1016, 0), 0x80u);
     EXPECT_EQ(od.get_as<std::uint16_t>(0x1017, 0), 0u);
     EXPECT_EQ(u32(od, 0x1018, 1), 0xFBu);

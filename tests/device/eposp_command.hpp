@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/test/run_command.hpp"
+#include "eposp/test/test_directory.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -19,10 +20,7 @@ inline test::CommandResult eposp(const std::string& arguments) {
 
 /// A path for file `name` in a directory of the running test's own.
 inline std::filesystem::path scratch(const std::string& name) {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    const auto dir = std::filesystem::path(EPOSP_BINARY_DIR) / "test-output" / info->name();
-    std::filesystem::create_directories(dir);
-    return dir / name;
+    return test::test_file(name);
 }
 
 /// Writes `text` to file `name` of the test's own directory; returns its path.

@@ -7,12 +7,12 @@
 #include "eposp/canopen/sdo_client.hpp"
 #include "eposp/canopen/store_restore_objects.hpp"
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
+#include "eposp/test/test_directory.hpp"
 
 #include <filesystem>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <optional>
-#include <unistd.h>
 #include <vector>
 
 namespace eposp::drives::epos2 {
@@ -33,7 +33,6 @@ struct Upload {
 class Epos2DictionaryOnBus : public ::testing::Test {
 protected:
     Epos2DictionaryOnBus() {
-        std::filesystem::remove(parameter_file);
         master->on_receive([this](const can::Frame& frame) {
             received.push_back(frame);
             client.on_frame(frame);
@@ -41,7 +40,6 @@ protected:
         node.start();
         loop.run_for(10ms);
     }
-    ~Epos2DictionaryOnBus() override { std::filesystem::remove(parameter_file); }
 
     static Epos2DictionaryConfig config(const std::filesystem::path& file) {
         Epos2DictionaryConfig config;
@@ -76,9 +74,7 @@ protected:
     }
     void reset_node() { nmt(canopen::NmtCommand::ResetNode); }
 
-    const std::filesystem::path parameter_file =
-        std::filesystem::temp_directory_path() /
-        fmt::format("eposp_epos2_dictionary_test_{}.bin", ::getpid());
+    const std::filesystem::path parameter_file = test::test_file("parameters.bin");
     core::EventLoop loop;
     can::VirtualBus bus{loop};
     std::unique_ptr<can::VirtualPort> device = bus.connect("epos2");

@@ -1,6 +1,7 @@
 // Program Control 0x5F51 as the device uses it: loading with its refusals, cold, warm and hot
 // start against a retain file, periodic and final saves of the RETAIN variables, stop.
 
+#include "eposp/test/test_directory.hpp"
 #include "runtime_harness.hpp"
 
 #include <filesystem>
@@ -23,14 +24,7 @@ END_PROGRAM
 
 class ProgramControl : public ::testing::Test {
 protected:
-    ProgramControl() {
-        dir_ = std::filesystem::temp_directory_path() /
-               ("eposp_program_control_" +
-                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        std::filesystem::remove_all(dir_);
-        std::filesystem::create_directories(dir_);
-    }
-    ~ProgramControl() override { std::filesystem::remove_all(dir_); }
+    ProgramControl() : dir_(eposp::test::test_directory()) {}
 
     RuntimeConfig with_retain(core::Duration save_interval = {}) const {
         RuntimeConfig config;

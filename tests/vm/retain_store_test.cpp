@@ -1,6 +1,7 @@
 // Retain variables across power loss: the values come back only from an intact store of the
 // same variable layout, and a write cut off at any instant leaves the old or the new values.
 
+#include "eposp/test/test_directory.hpp"
 #include "eposp/vm/retain_store.hpp"
 
 #include <csignal>
@@ -27,11 +28,7 @@ Image retain_image() {
 }
 
 std::filesystem::path store_path(const std::string& name) {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    const auto dir = std::filesystem::path(EPOSP_BINARY_DIR) / "test-output" / info->name();
-    std::filesystem::create_directories(dir);
-    std::filesystem::remove(dir / name);
-    return dir / name;
+    return test::test_file(name);
 }
 
 std::vector<std::uint8_t> memory_filled_with(std::uint8_t value) {

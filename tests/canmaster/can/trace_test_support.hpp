@@ -1,5 +1,7 @@
 #pragma once
 
+#include "eposp/test/test_directory.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -14,21 +16,11 @@ std::string row_name(const testing::TestParamInfo<Row>& row) {
     return std::string(row.param.name);
 }
 
-/// A file path for the running test, in the temporary directory, removed afterwards.
+/// A file path for the running test, in the test's own directory.
 class TempFile {
 public:
-    explicit TempFile(std::string_view extension) {
-        const auto* test = testing::UnitTest::GetInstance()->current_test_info();
-        path_ = std::filesystem::temp_directory_path() /
-                (std::string("eposp-") + test->test_suite_name() + "-" + test->name() +
-                 std::string(extension));
-    }
-    ~TempFile() {
-        std::error_code ignored;
-        std::filesystem::remove(path_, ignored);
-    }
-    TempFile(const TempFile&) = delete;
-    TempFile& operator=(const TempFile&) = delete;
+    explicit TempFile(std::string_view extension)
+        : path_(test::test_file("trace" + std::string(extension))) {}
 
     const std::filesystem::path& path() const { return path_; }
 

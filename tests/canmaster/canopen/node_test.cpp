@@ -1,9 +1,10 @@
-#include "lss_test_support.hpp"
-#include "service_bench.hpp"
 #include "eposp/canopen/eds_export.hpp"
 #include "eposp/canopen/eds_import.hpp"
 #include "eposp/canopen/node.hpp"
 #include "eposp/canopen/predefined_connection_set.hpp"
+#include "eposp/test/test_directory.hpp"
+#include "lss_test_support.hpp"
+#include "service_bench.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -12,7 +13,6 @@
 #include <optional>
 #include <string>
 #include <tuple>
-#include <unistd.h>
 #include <vector>
 
 namespace eposp::canopen {
@@ -299,17 +299,10 @@ TEST_F(NodeTest, HeartbeatTimeoutRaisesACommunicationEmergency) {
               "585#4F01100010000000");
 }
 
-/// A node with a parameter file in a directory of its own (per process: parallel ctest runs).
+/// A node with a parameter file in the test's own directory.
 class NodeWithParameterFileTest : public NodeTest {
 protected:
-    static std::filesystem::path directory() {
-        return std::filesystem::temp_directory_path() /
-               ("eposp_node_test_" + std::to_string(::getpid()));
-    }
-    NodeWithParameterFileTest() { std::filesystem::create_directories(directory()); }
-    ~NodeWithParameterFileTest() override { std::filesystem::remove_all(directory()); }
-
-    static std::filesystem::path parameter_file() { return directory() / "parameters.bin"; }
+    static std::filesystem::path parameter_file() { return test::test_file("parameters.bin"); }
     static NodeConfig config_with_file() {
         NodeConfig config = test_config();
         config.parameter_file = parameter_file();

@@ -1,13 +1,12 @@
 #include "eposp/canopen/parameter_store.hpp"
 #include "eposp/canopen/store_restore_objects.hpp"
+#include "eposp/test/test_directory.hpp"
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <iterator>
 #include <string>
-#include <unistd.h>
 
 namespace eposp::canopen {
 namespace {
@@ -29,24 +28,12 @@ void write_file(const fs::path& path, const Bytes& content) {
 // directory of its own.
 class StoreRestore : public testing::Test {
 protected:
-    // Per test and process, so that parallel ctest runs do not share files.
-    static fs::path unique_directory() {
-        const auto* test = testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = std::string("eposp_store_") + test->test_suite_name() + "_" +
-                           test->name() + "_" + std::to_string(::getpid());
-        std::replace(name.begin(), name.end(), '/', '_');
-        return fs::temp_directory_path() / name;
-    }
-
     void SetUp() override {
-        fs::remove_all(directory_);
-        fs::create_directories(directory_);
         build(od_);
         add_store_restore_objects(od_, store_, {.restore_permitted = [this] {
                                       return restore_refusal_;
                                   }});
     }
-    void TearDown() override { fs::remove_all(directory_); }
 
     static void build(ObjectDictionary& od) {
         od.add_variable(0x1017, "Producer heartbeat time", DataType::Unsigned16, Access::ReadWrite,
@@ -79,7 +66,7 @@ protected:
 
     fs::path path() const { return directory_ / "parameters.bin"; }
 
-    fs::path directory_ = unique_directory();
+    fs::path directory_ = test::test_directory();
     ObjectDictionary od_;
     ParameterStore store_{od_, directory_ / "parameters.bin"};
     AbortCode restore_refusal_ = AbortCode::None;
