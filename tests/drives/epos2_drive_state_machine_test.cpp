@@ -82,3 +82,26 @@ INSTANTIATE_TEST_SUITE_P(Table3_5OnTheBus, Epos2DriveStateMachine, ::testing::Va
 
 } // namespace
 } // namespace eposp::drives::epos2
+
+namespace eposp::drives::epos2 {
+namespace {
+
+using namespace test;
+
+// EPOS2 FW spec 7.3, figure 7-54 remark *3 and table 7-65: statusword bit 9 (Remote) is TRUE in
+// NMT Operational only, read by SDO (which answers in every state but Stopped).
+TEST_F(Epos2DriveOnBus, RemoteBitIsSetInNmtOperationalOnly) {
+    constexpr std::uint16_t kRemoteBit = 1U << 9;
+    EXPECT_EQ(read<std::uint16_t>(0x6041, 0) & kRemoteBit, 0) << "pre-operational after boot";
+    nmt(canopen::NmtCommand::Start);
+    // Switch On Disabled (0x0140), target reached (bit 10) and Remote.
+    EXPECT_EQ(read<std::uint16_t>(0x6041, 0), 0x0540 | kRemoteBit) << "operational";
+    nmt(canopen::NmtCommand::EnterPreOperational);
+    EXPECT_EQ(read<std::uint16_t>(0x6041, 0) & kRemoteBit, 0) << "pre-operational again";
+    nmt(canopen::NmtCommand::Start);
+    nmt(canopen::NmtCommand::ResetCommunication);
+    EXPECT_EQ(read<std::uint16_t>(0x6041, 0) & kRemoteBit, 0) << "after reset communication";
+}
+
+} // namespace
+} // namespace eposp::drives::epos2

@@ -27,6 +27,9 @@ constexpr std::uint16_t kRelativeBit = 1U << 6;
 constexpr std::uint16_t kHaltBit = 1U << 8;
 constexpr std::uint16_t kEndlessMovementBit = 1U << 15;
 
+// 7.3, figure 7-54 remark *3 and table 7-65: statusword bit 9 is TRUE in NMT Operational only.
+constexpr std::uint16_t kRemoteBit = 1U << 9;
+
 // Table 8-115 (0x2071 sub 1): the functionalities the simulated switches drive.
 constexpr std::uint16_t kNegativeLimitInput = 1U << 0;
 constexpr std::uint16_t kPositiveLimitInput = 1U << 1;
@@ -61,6 +64,14 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     watch_dictionary();
     compute_measured_values();
     node_.on_reset_application([this] { reset_application(); });
+    // The remote bit changes with the NMT state, between two control periods: stored at once, so
+    // that the first TPDO in Operational carries it.
+    node_.nmt().on_state_change([this](canopen::NmtState) {
+        if (published_) {
+            published_->statusword = statusword();
+            dictionary_.objects().set_as(0x6041, 0, published_->statusword);
+        }
+    });
     // 4.2.18: the CAN controller going bus-off is an "a" error.
     node_.on_controller_state([this](can::ErrorState state) {
         if (state == can::ErrorState::BusOff) {
@@ -572,6 +583,13 @@ std::uint16_t Epos2Drive::mode_statusword_bits(double now) const {
     return bits;
 }
 
+// 8.2.86: the state bits (table 3-4), the mode's bits (table 8-114) and Remote.
+std::uint16_t Epos2Drive::statusword() const {
+    const bool remote = node_.nmt_state() == canopen::NmtState::Operational;
+    return static_cast<std::uint16_t>(device_control_.statusword() |
+                                      mode_statusword_bits(seconds()) | (remote ? kRemoteBit : 0));
+}
+
 std::uint16_t Epos2Drive::digital_input_states() const {
     const plant::SwitchStates switches = axis_.switches();
     std::uint16_t states = 0;
@@ -591,8 +609,7 @@ void Epos2Drive::publish(const MotionState& demand) {
         return static_cast<std::int32_t>(std::lround(value));
     };
     const PublishedValues now{
-        .statusword = static_cast<std::uint16_t>(device_control_.statusword() |
-                                                 mode_statusword_bits(seconds())),
+        .statusword = statusword(),
         .position_demand = to_i32(demand.position),
         .position_actual = static_cast<std::int32_t>(position_actual()),
         .velocity_demand = to_i32(counts_to_rpm(demand.velocity)),

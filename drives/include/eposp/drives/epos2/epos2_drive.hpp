@@ -93,6 +93,7 @@ private:
     void raise_device_error(std::uint16_t code);
     void publish(const motion::MotionState& demand);
     std::uint16_t mode_statusword_bits(double now) const;
+    std::uint16_t statusword() const;
     std::uint16_t digital_input_states() const;
 
     bool new_position_setpoint(double now, std::uint16_t controlword);
