@@ -86,13 +86,17 @@ AbortCode check_mapping_entry_write(const ObjectDictionary& od, const Limits& li
     return check_mapping_entry(od, MappingEntry::from_raw(raw), limits.direction);
 }
 
-// Installs `check` as the write hook of `sub`. Every hook accepts the value the object already
-// holds: a configuration tool may write a whole configuration again, unchanged, while the PDO
-// is valid.
+// Installs `check` as the write hook of `sub`, unless it has one (a device's own rule, or the
+// rules installed before) or a type of another size (an EDS's own idea of the entry). Every hook
+// accepts the value the object already holds: a configuration tool may write a whole
+// configuration again, unchanged, while the PDO is valid.
 template <typename T, typename Check>
-void guard(const ObjectDictionary& od, std::uint16_t index, SubObject& sub, Check check) {
-    sub.on_write = [&od, index, sub_index = sub.sub_index,
-                    check](std::span<const std::uint8_t> data) {
+void guard(const ObjectDictionary& od, std::uint16_t index, SubObject* sub, Check check) {
+    if (sub == nullptr || sub->on_write || fixed_size(sub->type) != sizeof(T)) {
+        return;
+    }
+    sub->on_write = [&od, index, sub_index = sub->sub_index,
+                     check](std::span<const std::uint8_t> data) {
         const T value = decode<T>(data);
         if (value == od.get_as<T>(index, sub_index)) {
             return AbortCode::None;
@@ -112,54 +116,71 @@ std::string pdo_name(const Limits& limits) {
                        limits.number);
 }
 
-SubObject& add_persistent(ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index,
-                          std::string name, DataType type, Bytes value) {
-    SubObject& sub =
-        od.add_sub(index, sub_index, std::move(name), type, Access::ReadWrite, std::move(value));
-    sub.persistent = true;
-    return sub;
+void add_persistent(ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index,
+                    std::string name, DataType type, Bytes value) {
+    od.add_sub(index, sub_index, std::move(name), type, Access::ReadWrite, std::move(value))
+        .persistent = true;
+}
+
+// CiA 301 7.5.2.35 / 7.5.2.37: the rules of the communication parameters that exist.
+void guard_communication(ObjectDictionary& od, const Limits& limits) {
+    const auto index = pdo_communication_index(limits.direction, limits.number);
+    guard<std::uint32_t>(od, index, od.find(index, kPdoCobIdSub), [&od, limits](std::uint32_t raw) {
+        return check_cob_id(od, limits, PdoCobId{raw});
+    });
+    guard<std::uint8_t>(
+        od, index, od.find(index, kPdoTransmissionTypeSub), [limits](std::uint8_t value) {
+            return accepted_transmission_type(limits, value) ? AbortCode::None
+                                                             : AbortCode::InvalidValue;
+        });
+    if (limits.direction == PdoDirection::Receive) {
+        return; // sub-indices 3 and 6 are not used by RPDOs
+    }
+    guard<std::uint16_t>(od, index, od.find(index, kPdoInhibitTimeSub),
+                         [&od, limits](std::uint16_t) { return only_while_invalid(od, limits); });
+    guard<std::uint8_t>(od, index, od.find(index, kPdoSyncStartSub),
+                        [&od, limits](std::uint8_t value) {
+                            return value > kSyncCyclicMax ? AbortCode::InvalidValue
+                                                          : only_while_invalid(od, limits);
+                        });
+}
+
+// CiA 301 7.5.2.36 / 7.5.2.38: the mapping procedure, on the entries that exist.
+void guard_mapping(ObjectDictionary& od, const Limits& limits) {
+    const auto index = pdo_mapping_index(limits.direction, limits.number);
+    for (std::uint8_t sub = 1; sub <= limits.mapping_entries; ++sub) {
+        guard<std::uint32_t>(od, index, od.find(index, sub), [&od, limits](std::uint32_t value) {
+            return check_mapping_entry_write(od, limits, value);
+        });
+    }
+    guard<std::uint8_t>(
+        od, index, od.find(index, kMappingCountSub),
+        [&od, limits](std::uint8_t value) { return check_mapping_count(od, limits, value); });
 }
 
 void add_communication(ObjectDictionary& od, const Limits& limits, const PdoDefaults& defaults,
                        const PdoObjectsConfig& config) {
     const auto index = pdo_communication_index(limits.direction, limits.number);
     od.add_object(index, pdo_name(limits) + " Parameter", ObjectCode::Record);
-    SubObject& cob_id = add_persistent(od, index, kPdoCobIdSub, "COB-ID", DataType::Unsigned32,
-                                       encode(defaults.cob_id));
-    guard<std::uint32_t>(od, index, cob_id, [&od, limits](std::uint32_t raw) {
-        return check_cob_id(od, limits, PdoCobId{raw});
-    });
-    SubObject& type = add_persistent(od, index, kPdoTransmissionTypeSub, "Transmission type",
-                                     DataType::Unsigned8, encode(defaults.transmission_type));
-    guard<std::uint8_t>(od, index, type, [limits](std::uint8_t value) {
-        return accepted_transmission_type(limits, value) ? AbortCode::None
-                                                         : AbortCode::InvalidValue;
-    });
-    if (limits.direction == PdoDirection::Receive) {
-        // CiA 301 7.5.2.35: an RPDO's event timer is its deadline; sub-indices 3 and 6 are
-        // not used by RPDOs.
-        if (config.rpdo_event_timer) {
-            add_persistent(od, index, kPdoEventTimerSub, "Event timer", DataType::Unsigned16,
-                           encode(defaults.event_timer));
-        }
-        return;
+    add_persistent(od, index, kPdoCobIdSub, "COB-ID", DataType::Unsigned32,
+                   encode(defaults.cob_id));
+    add_persistent(od, index, kPdoTransmissionTypeSub, "Transmission type", DataType::Unsigned8,
+                   encode(defaults.transmission_type));
+    const bool receive = limits.direction == PdoDirection::Receive;
+    if (!receive) {
+        add_persistent(od, index, kPdoInhibitTimeSub, "Inhibit time", DataType::Unsigned16,
+                       encode(defaults.inhibit_time));
     }
-    SubObject& inhibit = add_persistent(od, index, kPdoInhibitTimeSub, "Inhibit time",
-                                        DataType::Unsigned16, encode(defaults.inhibit_time));
-    guard<std::uint16_t>(od, index, inhibit,
-                         [&od, limits](std::uint16_t) { return only_while_invalid(od, limits); });
-    if (config.tpdo_event_timer) {
+    // CiA 301 7.5.2.35: an RPDO's event timer is its deadline.
+    if (receive ? config.rpdo_event_timer : config.tpdo_event_timer) {
         add_persistent(od, index, kPdoEventTimerSub, "Event timer", DataType::Unsigned16,
                        encode(defaults.event_timer));
     }
-    if (config.tpdo_sync_start) {
-        SubObject& start = add_persistent(od, index, kPdoSyncStartSub, "SYNC start value",
-                                          DataType::Unsigned8, encode(defaults.sync_start));
-        guard<std::uint8_t>(od, index, start, [&od, limits](std::uint8_t value) {
-            return value > kSyncCyclicMax ? AbortCode::InvalidValue
-                                          : only_while_invalid(od, limits);
-        });
+    if (!receive && config.tpdo_sync_start) {
+        add_persistent(od, index, kPdoSyncStartSub, "SYNC start value", DataType::Unsigned8,
+                       encode(defaults.sync_start));
     }
+    guard_communication(od, limits);
 }
 
 void add_mapping(ObjectDictionary& od, const Limits& limits, const PdoDefaults& defaults) {
@@ -172,11 +193,8 @@ void add_mapping(ObjectDictionary& od, const Limits& limits, const PdoDefaults& 
     od.add_object(index, pdo_name(limits) + " Mapping", ObjectCode::Record);
     for (std::uint8_t sub = 1; sub <= limits.mapping_entries; ++sub) {
         const std::uint32_t raw = sub <= defaults.mapping.size() ? defaults.mapping[sub - 1] : 0;
-        SubObject& entry = add_persistent(od, index, sub, fmt::format("Mapped object {}", sub),
-                                          DataType::Unsigned32, encode(raw));
-        guard<std::uint32_t>(od, index, entry, [&od, limits](std::uint32_t value) {
-            return check_mapping_entry_write(od, limits, value);
-        });
+        add_persistent(od, index, sub, fmt::format("Mapped object {}", sub), DataType::Unsigned32,
+                       encode(raw));
     }
     // Sub-index 0 is the number of mapped objects here, not the highest sub-index: a writable
     // value that add_sub() no longer touches once the entries are in.
@@ -186,9 +204,7 @@ void add_mapping(ObjectDictionary& od, const Limits& limits, const PdoDefaults& 
     count.persistent = true;
     count.default_value = encode(static_cast<std::uint8_t>(defaults.mapping.size()));
     count.value = count.default_value;
-    guard<std::uint8_t>(od, index, count, [&od, limits](std::uint8_t value) {
-        return check_mapping_count(od, limits, value);
-    });
+    guard_mapping(od, limits);
 }
 
 void add_pdos(ObjectDictionary& od, PdoDirection direction, const std::vector<PdoDefaults>& pdos,
@@ -313,6 +329,23 @@ void add_pdo_objects(ObjectDictionary& od, const PdoObjectsConfig& config) {
 void add_pdo_objects(ObjectDictionary& od, NodeId node, std::size_t rpdo_count,
                      std::size_t tpdo_count) {
     add_pdo_objects(od, cia301_pdo_defaults(node, rpdo_count, tpdo_count));
+}
+
+void enforce_pdo_rules(ObjectDictionary& od, std::size_t first_number) {
+    for (const auto direction : {PdoDirection::Receive, PdoDirection::Transmit}) {
+        const std::size_t count = count_pdos(od, direction, first_number);
+        for (std::size_t number = first_number; number < first_number + count; ++number) {
+            const Object* mapping = od.find(pdo_mapping_index(direction, number));
+            const std::uint8_t entries =
+                mapping == nullptr || mapping->subs.empty() ? 0 : mapping->subs.rbegin()->first;
+            Limits limits;
+            limits.direction = direction;
+            limits.number = number;
+            limits.mapping_entries = entries;
+            guard_communication(od, limits);
+            guard_mapping(od, limits);
+        }
+    }
 }
 
 std::size_t count_pdos(const ObjectDictionary& od, PdoDirection direction,

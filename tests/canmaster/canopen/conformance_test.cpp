@@ -3,8 +3,9 @@
 // for byte. The per-service suites test each service alone; this one tests what the node puts
 // on the wire, services combined. (canopen_node_test.cpp has the node's boot-up, its SDO reads
 // of 0x1000/0x1018, its stopped-state silence and its heartbeat-consumer EMCY.)
-#include "sdo_test_support.hpp"
 #include "eposp/canopen/node.hpp"
+#include "node_tester.hpp"
+#include "sdo_test_support.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -15,8 +16,10 @@ namespace eposp::canopen {
 namespace {
 
 using namespace std::chrono_literals;
+using testing::conversation_name;
+using testing::SdoConversation;
+using testing::SdoStep;
 using testing::Sent;
-using testing::ServiceBench;
 
 constexpr NodeId kNode = 5;
 /// "EPOS P conformance": 18 bytes, three segments or one block of three.
@@ -49,55 +52,14 @@ NodeConfig conformance_config() {
     return config; // CiA 301 default PDOs: 4 RPDOs and 4 TPDOs, all invalid and unmapped
 }
 
-/// The tester's side of the bus: it sends frames (candump form) and reads what the node sent.
-class Conformance : public ::testing::Test {
+/// The tester's side of the bus, with the conformance node on it.
+class Conformance : public testing::NodeTester {
 protected:
     Conformance() {
         node.start();
         bench.run_for(1ms);
     }
 
-    /// Sends `request` and returns what the node put on the wire in the next `window`.
-    std::vector<std::string> exchange(std::string_view request, core::Duration window = 2ms) {
-        const core::TimePoint from = bench.loop.now();
-        bench.send(request);
-        bench.run_for(window);
-        return frames_since(from);
-    }
-    /// An exchange that must be answered by exactly `reply`.
-    void expect_reply(std::string_view request, std::string_view reply) {
-        EXPECT_EQ(exchange(request), std::vector<std::string>{std::string(reply)}) << request;
-    }
-    /// An expedited SDO download of the `size` low bytes of `value` that must succeed.
-    void sdo_write(std::uint16_t index, std::uint8_t sub_index, std::uint32_t value,
-                   std::size_t size) {
-        const auto lo = static_cast<std::uint8_t>(index & 0xFF);
-        const auto hi = static_cast<std::uint8_t>(index >> 8);
-        Bytes request{static_cast<std::uint8_t>(0x23 | ((4 - size) << 2)), lo, hi, sub_index};
-        const Bytes data = encode(value);
-        request.insert(request.end(), data.begin(), data.end());
-        expect_reply("605#" + testing::hex(request),
-                     "585#" + testing::hex(Bytes{0x60, lo, hi, sub_index, 0, 0, 0, 0}));
-    }
-    std::vector<std::string> frames_since(core::TimePoint from, std::uint32_t only_id = 0) const {
-        std::vector<std::string> out;
-        for (const Sent& sent : sent_since(from, only_id)) {
-            out.push_back(sent.frame);
-        }
-        return out;
-    }
-    std::vector<Sent> sent_since(core::TimePoint from, std::uint32_t only_id = 0) const {
-        std::vector<Sent> out;
-        for (const Sent& sent : bench.device_frames()) {
-            if (sent.at >= from &&
-                (only_id == 0 || can::parse_candump_frame(sent.frame)->id == only_id)) {
-                out.push_back(sent);
-            }
-        }
-        return out;
-    }
-
-    ServiceBench bench;
     ObjectDictionary od = [] {
         ObjectDictionary dictionary;
         add_device_objects(dictionary);
@@ -108,21 +70,10 @@ protected:
 
 // --- SDO (CiA 301 7.2.4.3): whole conversations, request and reply frames byte for byte. ---
 
-struct SdoStep {
-    std::string request;
-    std::vector<std::string> replies; ///< every frame the node sends before the next request
-};
-struct SdoConversation {
-    std::string name;
-    std::vector<SdoStep> steps;
-};
-
 class SdoConformance : public Conformance, public ::testing::WithParamInterface<SdoConversation> {};
 
 TEST_P(SdoConformance, EveryReplyIsTheSpecifiedFrame) {
-    for (const SdoStep& step : GetParam().steps) {
-        EXPECT_EQ(exchange(step.request), step.replies) << step.request;
-    }
+    expect_conversation(GetParam().steps);
 }
 
 std::vector<SdoConversation> sdo_transfers() {
@@ -219,10 +170,6 @@ std::vector<SdoConversation> sdo_aborts() {
           {"605#8001200000000405", {}},
           {"605#4000200000000000", {"585#4300200044332211"}}}},
     };
-}
-
-std::string conversation_name(const ::testing::TestParamInfo<SdoConversation>& info) {
-    return info.param.name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Transfers, SdoConformance, ::testing::ValuesIn(sdo_transfers()),
@@ -577,9 +524,9 @@ TEST_F(LssConformance, SwitchStateSelectiveOfAnotherDeviceIsNotConfirmed) {
 }
 
 TEST_F(LssConformance, IdentifyRemoteSlaveAnswersWhenTheIdentityIsInTheRanges) {
-    for (const char* request : {"7E5#46FB000000000000", "7E5#4701000000000000",
-                                "7E5#4800000000000000", "7E5#4910000000000000",
-                                "7E5#4A00000000000000"}) {
+    for (const char* request :
+         {"7E5#46FB000000000000", "7E5#4701000000000000", "7E5#4800000000000000",
+          "7E5#4910000000000000", "7E5#4A00000000000000"}) {
         EXPECT_EQ(exchange(request), std::vector<std::string>{}) << request;
     }
     expect_reply("7E5#4B03000000000000", "7E4#4F00000000000000");

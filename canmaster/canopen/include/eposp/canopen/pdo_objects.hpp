@@ -125,6 +125,13 @@ void add_pdo_objects(ObjectDictionary& od, const PdoObjectsConfig& config);
 void add_pdo_objects(ObjectDictionary& od, NodeId node, std::size_t rpdo_count,
                      std::size_t tpdo_count);
 
+/// The rules of add_pdo_objects() on the PDO objects `od` already has (e.g. imported from an
+/// EDS), PDOs first_number, first_number + 1, ...: each sub-object without a write hook of its
+/// own and of the expected size gets the rule's hook. The limits come from the dictionary: as
+/// many mapping entries as the mapping object has sub-indices, 29-bit CAN-IDs allowed, every
+/// transmission type CiA 301 allows. Objects add_pdo_objects() made keep their hooks.
+void enforce_pdo_rules(ObjectDictionary& od, std::size_t first_number = 1);
+
 /// The number of PDOs of `direction` in `od`: its communication objects n = first_number,
 /// first_number + 1, ... present.
 std::size_t count_pdos(const ObjectDictionary& od, PdoDirection direction,
