@@ -291,6 +291,15 @@ Command parse_command(std::string_view message) {
     return Unknown{std::string(name)};
 }
 
+Frame frame_for_bus(const Frame& sent) {
+    // CiA 301 7.2.8.3.2.1: node guarding on 0x700 + node-ID, node-IDs 1..127.
+    constexpr std::uint32_t kFirstGuardId = 0x701;
+    constexpr std::uint32_t kLastGuardId = 0x77F;
+    const bool guard_request = !sent.remote && !sent.extended && !sent.error && sent.dlc == 0 &&
+                               sent.id >= kFirstGuardId && sent.id <= kLastGuardId;
+    return guard_request ? Frame::remote_frame(sent.id, 1) : sent;
+}
+
 std::string format_send(const Frame& frame) {
     if (frame.remote) {
         return fmt::format("< sendrtr {} {} >", format_id(frame), frame.dlc);

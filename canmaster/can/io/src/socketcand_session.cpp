@@ -141,11 +141,11 @@ void SocketcandSession::handle(const sc::SwitchMode& mode) {
     state_ = State::Raw;
     enqueue(sc::kOk);
     settle_ = core::ScopedTimer(bus_.loop(), bus_.loop().after(kRawModeSettle, [this] {
-                                    if (!held_frames_.empty()) {
-                                        enqueue(held_frames_);
-                                        held_frames_.clear();
-                                    }
-                                }));
+        if (!held_frames_.empty()) {
+            enqueue(held_frames_);
+            held_frames_.clear();
+        }
+    }));
 }
 
 void SocketcandSession::handle(const sc::Echo&) {
@@ -157,7 +157,7 @@ void SocketcandSession::handle(const sc::SendFrame& send) {
         reply_error("open a bus first");
         return;
     }
-    const SendStatus status = port_->send(send.frame);
+    const SendStatus status = port_->send(sc::frame_for_bus(send.frame));
     if (status != SendStatus::Queued) {
         reply_error(fmt::format("frame not sent: {}", to_string(status)));
     }

@@ -49,12 +49,44 @@ INSTANTIATE_TEST_SUITE_P(
         SendCase{"< send 1234567 4 de ad b e >", extended_frame(0x1234567, {0xDE, 0xAD, 0xB, 0xE})},
         SendCase{"< send 12 0  >", Frame::data_frame(0x12, {})},
         SendCase{"< send 800 2 0 a >", extended_frame(0x800, {0x00, 0x0A})},
+        // fewer than 8 digits: standard up to 7FF however many leading zeros, extended beyond
+        SendCase{"< send 00007FF 0 >", Frame::data_frame(0x7FF, {})},
+        SendCase{"< send 0800 0 >", extended_frame(0x800, {})},
         // extra whitespace and newlines are tolerated
         SendCase{"<send 100 1 5>", Frame::data_frame(0x100, {0x05})},
         SendCase{"<  send\t100  2 5 6\r\n>", Frame::data_frame(0x100, {0x05, 0x06})},
         // remote frames
         SendCase{"< sendrtr 123 0 >", Frame::remote_frame(0x123, 0)},
         SendCase{"< sendrtr 1AAAAAAA 2 >", Frame::remote_frame(0x1AAAAAAA, 2, true)}));
+
+// ---- frame_for_bus ----------------------------------------------------------------------------
+
+struct BusFrameCase {
+    Frame sent;
+    Frame on_bus;
+    friend void PrintTo(const BusFrameCase& c, std::ostream* os) { *os << format_send(c.sent); }
+};
+
+class FrameForBus : public testing::TestWithParam<BusFrameCase> {};
+
+TEST_P(FrameForBus, TakesOnlyAnEmptyFrameOnAGuardingIdentifierForTheGuardRequest) {
+    EXPECT_EQ(frame_for_bus(GetParam().sent), GetParam().on_bus);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, FrameForBus,
+    testing::Values(
+        // python-can 4.1's node guard request for nodes 1, 5 and 127 (CiA 301 7.2.8.3.2.1)
+        BusFrameCase{Frame::data_frame(0x701, {}), Frame::remote_frame(0x701, 1)},
+        BusFrameCase{Frame::data_frame(0x705, {}), Frame::remote_frame(0x705, 1)},
+        BusFrameCase{Frame::data_frame(0x77F, {}), Frame::remote_frame(0x77F, 1)},
+        // boot-up and heartbeat carry a byte; 0x700 and 0x780 are no node's; extended frames
+        // and remote frames are as sent
+        BusFrameCase{Frame::data_frame(0x705, {0x00}), Frame::data_frame(0x705, {0x00})},
+        BusFrameCase{Frame::data_frame(0x700, {}), Frame::data_frame(0x700, {})},
+        BusFrameCase{Frame::data_frame(0x780, {}), Frame::data_frame(0x780, {})},
+        BusFrameCase{extended_frame(0x705, {}), extended_frame(0x705, {})},
+        BusFrameCase{Frame::remote_frame(0x705, 0), Frame::remote_frame(0x705, 0)}));
 
 class ParseMalformed : public testing::TestWithParam<std::string_view> {};
 

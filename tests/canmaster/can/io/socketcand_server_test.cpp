@@ -3,6 +3,7 @@
 // it waits for has happened.
 #include "eposp/can/io/socketcand_protocol.hpp"
 #include "eposp/can/io/socketcand_server.hpp"
+#include "eposp/canopen/node.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,6 +13,7 @@
 #include <deque>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <optional>
 
 namespace eposp::can::io {
@@ -312,9 +314,8 @@ TEST_F(SocketcandServerTest, ABurstOfFramesInOneWriteReachesTheBusInFull) {
 // python-can 4.1 wants each handshake reply alone in one recv(): on a busy bus the reply to
 // `< rawmode >` must not share a read with the first frames (they follow it a moment later).
 TEST_F(SocketcandServerTest, OnABusyBusTheRawModeReplyArrivesAloneAndTheFramesFollow) {
-    const core::TimerId traffic = loop.every(std::chrono::microseconds(200), [this] {
-        node->send(Frame::data_frame(0x181, {0x01}));
-    });
+    const core::TimerId traffic = loop.every(
+        std::chrono::microseconds(200), [this] { node->send(Frame::data_frame(0x181, {0x01})); });
     auto client = connect();
     ASSERT_TRUE(run_until([&] { return client->messages().size() >= 1; }));
     // A slow client: the read in progress takes the reply to `open`, and it reads again only
@@ -357,6 +358,34 @@ TEST_F(SocketcandServerTest, TwoClientsExchangeFramesThroughTheBus) {
         EXPECT_EQ(std::ranges::count(b->frames(), frame), 1) << text;
     }
     EXPECT_EQ(a->frames()[0], Frame::data_frame(0x321, {0xC0, 0xFF, 0xEE}));
+}
+
+// python-canopen guards a node through python-can 4.1's socketcand interface, which writes the
+// guard request (a remote frame) as a frame without data: the node on the bus answers it, with
+// the toggle bit alternating (CiA 301 7.2.8.3.2.1).
+TEST_F(SocketcandServerTest, AnEmptyFrameOnAGuardingIdentifierGuardsTheNode) {
+    const auto slave_port = bus.connect("node 5");
+    canopen::ObjectDictionary dictionary;
+    canopen::NodeConfig config;
+    config.node_id = 5;
+    canopen::Node slave(loop, *slave_port, dictionary, config);
+    slave.start(); // pre-operational
+    auto client = join();
+    const auto guard_replies = [&] {
+        std::vector<Frame> replies;
+        std::ranges::copy_if(client->frames(), std::back_inserter(replies), [](const Frame& f) {
+            return f != Frame::data_frame(0x705, {0x00}); // all but the boot-up
+        });
+        return replies;
+    };
+    client->send("< send 705 0  >"); // exactly as python-can 4.1 writes it
+    ASSERT_TRUE(run_until([&] { return guard_replies().size() == 1; }));
+    client->send("< send 705 0  >");
+    ASSERT_TRUE(run_until([&] { return guard_replies().size() == 2; }));
+    EXPECT_EQ(guard_replies(), (std::vector<Frame>{Frame::data_frame(0x705, {0x7F}),
+                                                   Frame::data_frame(0x705, {0xFF})}));
+    // The bus carried the guard requests as remote frames.
+    EXPECT_EQ(std::ranges::count(node_received, Frame::remote_frame(0x705, 1)), 2);
 }
 
 TEST_F(SocketcandServerTest, AnswersEveryOtherCommandAndKeepsTheSession) {

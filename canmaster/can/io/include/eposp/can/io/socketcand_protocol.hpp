@@ -61,8 +61,9 @@ struct SwitchMode {
 /// `< echo >`: the server answers with the same message.
 struct Echo {};
 /// `< send ID DLC BYTE... >` or `< sendrtr ID DLC >`. The identifier is extended when written
-/// with 8 digits (socketcand's rule) or when it does not fit 11 bits (python-can 4.1 writes
-/// extended identifiers without leading zeros).
+/// with 8 hex digits (socketcand's rule, state_raw.c), standard when written with fewer and at
+/// most 7FF, and extended beyond 7FF, which no standard identifier is: python-can 4.1 writes
+/// extended identifiers without leading zeros. Beyond 1FFFFFFF it is malformed.
 struct SendFrame {
     Frame frame;
 };
@@ -85,6 +86,14 @@ using Command =
 
 /// Parses one message as scan_message() delimits it, brackets included.
 Command parse_command(std::string_view message);
+
+/// What the server puts on the bus for a frame a client sends. socketcand's `send` has no RTR
+/// flag, so python-can 4.1 sends a remote frame, e.g. python-canopen's node guard request, as
+/// a data frame without data. A standard data frame without data on 0x701..0x77F is no other
+/// CiA 301 message (boot-up and heartbeat carry one byte), so it is taken for the guard request
+/// (CiA 301 7.2.8.3.2.1): a remote frame with DLC 1, the length of the answer. Any other frame
+/// is put on the bus as sent.
+Frame frame_for_bus(const Frame& sent);
 
 /// The command a client sends to put `frame` on the bus (a data or a remote frame).
 std::string format_send(const Frame& frame);
