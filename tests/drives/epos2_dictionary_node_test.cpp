@@ -149,7 +149,7 @@ TEST_F(Epos2DictionaryOnBus, RefusedWritesAbortWithTheSpecifiedCodes) {
         {"node-ID 0", 0x2000, 0, encode(std::uint8_t{0}), 0x0609'0032},
         {"reserved CAN bit rate code 5", 0x2001, 0, encode(std::uint16_t{5}), 0x0609'0030},
         {"mode of operation 2", 0x6060, 0, encode(std::int8_t{2}), 0x0609'0030},
-        {"motor type 65535 on a 24/5", 0x6402, 0, encode(std::uint16_t{0xFFFF}), 0x0609'0031},
+        {"motor type 65535 on a 24/5", 0x6402, 0, encode(std::uint16_t{0xFFFF}), 0x0609'0030},
         {"position window between the range and the disable value", 0x6067, 0,
          encode(std::uint32_t{0x8000'0000}), 0x0609'0031},
         {"16 bits to a 32-bit object", 0x6065, 0, encode(std::uint16_t{1}), 0x0607'0013},

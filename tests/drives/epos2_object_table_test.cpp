@@ -5,6 +5,7 @@
 // itself, the row says which reading it takes.
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <optional>
@@ -464,6 +465,24 @@ const std::vector<BoundedRange> kBoundedRanges = {
     {0x60FF, 0, 0x607F, 0, true},  // 8.2.128
 };
 
+/// Value ranges given as a list of codes (a table of chapter 8).
+struct ValueList {
+    std::uint16_t index;
+    std::uint8_t sub;
+    std::vector<std::int64_t> values;
+};
+const std::vector<ValueList> kValueLists = {
+    {0x2001, 0, {0, 1, 2, 3, 4, 6, 7, 9}},                // table 8-81
+    {0x207B, 1, {0, 1, 2, 8, 9, 10, 11, 12, 13, 14, 15}}, // table 8-97
+    {0x207B, 2, {0, 1, 2, 8, 9, 10, 11, 12, 13, 14, 15}},
+    {0x2211, 4, {0, 1}},                                                       // table 8-106
+    {0x2220, 0, {0, 1}},                                                       // table 8-108
+    {0x6060, 0, {7, 6, 3, 1, -1, -2, -3, -4, -5, -6}},                         // table 8-118
+    {0x6086, 0, {0, 1}},                                                       // table 8-120
+    {0x6098, 0, {35, 34, 33, 27, 23, 18, 17, 11, 7, 2, 1, 0, -1, -2, -3, -4}}, // table 8-121
+    {0x6402, 0, {1, 10, 11}}, // table 8-125 for an EPOS2 24/5
+};
+
 constexpr canopen::NodeId kNode = 5;
 
 std::int64_t as_integer(DataType type, const canopen::Bytes& bytes) {
@@ -610,6 +629,26 @@ TEST_F(Epos2ObjectTable, WritesBeyondTheBoundingObjectAreRefused) {
         if (range.symmetric) {
             EXPECT_EQ(write(-kBound), canopen::AbortCode::None);
             EXPECT_EQ(write(-kBound - 1), canopen::AbortCode::ValueTooLow);
+        }
+    }
+}
+
+// Table 4-12: a value that is not in the list is "value range of parameter exceeded"
+// (0x06090030), also beyond the list's ends, where a min ... max range says "too high / low".
+TEST_F(Epos2ObjectTable, WritesOutsideAValueListAreRefusedAsValueRangeExceeded) {
+    for (const ValueList& list : kValueLists) {
+        SCOPED_TRACE(entry_name(list.index, list.sub));
+        const DataType type = od.find(list.index, list.sub)->type;
+        const auto [low, high] = std::ranges::minmax(list.values);
+        for (std::int64_t value = low - 2; value <= high + 100; ++value) {
+            const auto bytes = bytes_of(type, value);
+            if (!bytes) {
+                continue;
+            }
+            const bool listed = std::ranges::find(list.values, value) != list.values.end();
+            EXPECT_EQ(od.write(list.index, list.sub, *bytes),
+                      listed ? canopen::AbortCode::None : canopen::AbortCode::InvalidValue)
+                << value;
         }
     }
 }
