@@ -19,5 +19,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     eposp::fuzz::require(validate(axis->plant).ok(), "a parsed machine is one the model runs");
     eposp::fuzz::require(axis->encoder_pulses >= 16, "the encoder has at least 16 pulses");
+    const auto current = to_parameter_set(axis->gains.current);
+    eposp::fuzz::require(current.p_gain >= 0 && current.i_gain >= 0,
+                         "the current gains are in 0x60F6's range");
+    const SwitchLayout& switches = axis->switches;
+    eposp::fuzz::require(!switches.negative_limit || !switches.positive_limit ||
+                             *switches.negative_limit < *switches.positive_limit,
+                         "the limit switches leave travel between them");
     return 0;
 }

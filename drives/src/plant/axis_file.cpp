@@ -1,55 +1,108 @@
 #include "eposp/drives/plant/axis_file.hpp"
 
+#include "axis_file_limits.hpp"
 #include "eposp/drives/plant/reference_axis.hpp"
 #include "eposp/yaml/reader.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
+#include <set>
 #include <string>
 
 namespace eposp::drives::plant {
 namespace {
+
+namespace limits = axis_file_limits;
 
 // Data-sheet units to SI.
 constexpr double kMilli = 1e-3;
 constexpr double kGramSquareCentimetre = 1e-7; ///< kg·m²
 
 using yaml::Reader;
+using Readers = std::map<std::string, std::function<void(const YAML::Node&)>>;
+
+/// Reader::each_key, refusing a key given twice (YAML 1.2 7.2: keys are unique; yaml-cpp keeps
+/// both, and the second would silently win).
+void each_key(Reader& in, const YAML::Node& node, std::string_view section,
+              const Readers& readers) {
+    if (node.IsMap()) {
+        std::set<std::string> seen;
+        for (const auto& entry : node) {
+            const auto& key = entry.first.Scalar();
+            if (entry.first.IsScalar() && !seen.insert(key).second) {
+                in.fail(entry.first, fmt::format("duplicate key '{}' in '{}'", key, section));
+            }
+        }
+    }
+    in.each_key(node, section, readers);
+}
+
+/// A physical quantity in the file's unit, times `unit` for SI.
+auto quantity(Reader& in, double& field, std::string what, limits::Quantity range,
+              double unit = 1.0) {
+    return [&in, &field, what = std::move(what), range, unit](const YAML::Node& value) {
+        double number = 0;
+        if (!value.IsScalar() || !YAML::convert<double>::decode(value, number) ||
+            !std::isfinite(number) || number < range.low || number > range.high) {
+            in.fail(value, fmt::format("{} must be a number in {} … {}{}{}", what, range.low,
+                                       range.high, range.unit.empty() ? "" : " ", range.unit));
+        }
+        field = number * unit;
+    };
+}
+
+/// An integer that becomes a dictionary default: what an SDO write of the entry takes.
+template <typename T>
+auto dictionary_value(Reader& in, T& field, std::string what, limits::DictionaryValue entry) {
+    return [&in, &field, what = std::move(what), entry](const YAML::Node& value) {
+        std::int64_t number = 0;
+        if (!value.IsScalar() || !YAML::convert<std::int64_t>::decode(value, number) ||
+            number < entry.low || number > entry.high) {
+            in.fail(value, fmt::format("{} must be an integer in {} … {} (0x{:04X} sub {})", what,
+                                       entry.low, entry.high, entry.index, entry.sub));
+        }
+        field = static_cast<T>(number);
+    };
+}
+
+/// A switch position in quadcounts.
+auto position(Reader& in, std::optional<std::int64_t>& field, std::string what,
+              std::int64_t low = limits::kPositionLow) {
+    return [&in, &field, what = std::move(what), low](const YAML::Node& value) {
+        std::int64_t number = 0;
+        if (!value.IsScalar() || !YAML::convert<std::int64_t>::decode(value, number) ||
+            number < low || number > limits::kPositionHigh) {
+            in.fail(value, fmt::format("{} must be an integer in {} … {} (quadcounts)", what, low,
+                                       limits::kPositionHigh));
+        }
+        field = number;
+    };
+}
 
 void read_motor(Reader& in, const YAML::Node& node, MotorParameters& motor) {
-    in.each_key(node, "motor",
-                {{"type",
-                  [&](const YAML::Node& value) {
-                      const auto type = in.scalar<std::string>(value, "motor.type");
-                      if (type != "dc" && type != "ec") {
-                          in.fail(value, "motor.type must be 'dc' or 'ec'");
-                      }
-                      motor.kind = type == "dc" ? MotorKind::BrushedDc : MotorKind::Ec;
-                  }},
-                 {"terminal_resistance", // Ω
-                  [&](const YAML::Node& value) {
-                      motor.terminal_resistance = in.scalar<double>(value, "terminal_resistance");
-                  }},
-                 {"terminal_inductance", // mH
-                  [&](const YAML::Node& value) {
-                      motor.terminal_inductance =
-                          in.scalar<double>(value, "terminal_inductance") * kMilli;
-                  }},
-                 {"torque_constant", // mN·m/A
-                  [&](const YAML::Node& value) {
-                      motor.torque_constant = in.scalar<double>(value, "torque_constant") * kMilli;
-                  }},
-                 {"speed_constant", // rpm/V
-                  [&](const YAML::Node& value) {
-                      motor.speed_constant = in.scalar<double>(value, "speed_constant");
-                  }},
-                 {"rotor_inertia", // g·cm²
-                  [&](const YAML::Node& value) {
-                      motor.rotor_inertia =
-                          in.scalar<double>(value, "rotor_inertia") * kGramSquareCentimetre;
-                  }},
-                 {"pole_pairs", [&](const YAML::Node& value) {
-                      motor.pole_pairs = in.scalar<int>(value, "pole_pairs");
-                  }}});
+    each_key(in, node, "motor",
+             {{"type",
+               [&](const YAML::Node& value) {
+                   const auto type = in.scalar<std::string>(value, "motor.type");
+                   if (type != "dc" && type != "ec") {
+                       in.fail(value, "motor.type must be 'dc' or 'ec'");
+                   }
+                   motor.kind = type == "dc" ? MotorKind::BrushedDc : MotorKind::Ec;
+               }},
+              {"terminal_resistance",
+               quantity(in, motor.terminal_resistance, "motor.terminal_resistance",
+                        limits::kTerminalResistance)},
+              {"terminal_inductance",
+               quantity(in, motor.terminal_inductance, "motor.terminal_inductance",
+                        limits::kTerminalInductance, kMilli)},
+              {"torque_constant", quantity(in, motor.torque_constant, "motor.torque_constant",
+                                           limits::kTorqueConstant, kMilli)},
+              {"speed_constant",
+               quantity(in, motor.speed_constant, "motor.speed_constant", limits::kSpeedConstant)},
+              {"rotor_inertia", quantity(in, motor.rotor_inertia, "motor.rotor_inertia",
+                                         limits::kRotorInertia, kGramSquareCentimetre)},
+              {"pole_pairs",
+               dictionary_value(in, motor.pole_pairs, "motor.pole_pairs", limits::kPolePairs)}});
 }
 
 void read_gains(Reader& in, const YAML::Node& node, ServoGains& gains) {
@@ -57,62 +110,77 @@ void read_gains(Reader& in, const YAML::Node& node, ServoGains& gains) {
     CurrentControlParameterSet current = to_parameter_set(gains.current);
     VelocityControlParameterSet velocity = to_parameter_set(gains.velocity);
     PositionControlParameterSet position = to_parameter_set(gains.position);
-    const auto set = [&in](auto& field, std::string_view what) {
-        return [&in, &field, what](const YAML::Node& value) {
-            field = in.scalar<std::remove_reference_t<decltype(field)>>(value, what);
-        };
-    };
-    in.each_key(
-        node, "gains",
-        {{"current",
-          [&](const YAML::Node& sub) {
-              in.each_key(sub, "gains.current",
-                          {{"p", set(current.p_gain, "current p")},
-                           {"i", set(current.i_gain, "current i")}});
-          }},
-         {"velocity",
-          [&](const YAML::Node& sub) {
-              in.each_key(sub, "gains.velocity",
-                          {{"p", set(velocity.p_gain, "velocity p")},
-                           {"i", set(velocity.i_gain, "velocity i")},
-                           {"velocity_feed_forward",
-                            set(velocity.velocity_feed_forward, "velocity_feed_forward")},
-                           {"acceleration_feed_forward",
-                            set(velocity.acceleration_feed_forward, "acceleration_feed_forward")}});
-          }},
-         {"position",
-          [&](const YAML::Node& sub) {
-              in.each_key(sub, "gains.position",
-                          {{"p", set(position.p_gain, "position p")},
-                           {"i", set(position.i_gain, "position i")},
-                           {"d", set(position.d_gain, "position d")},
-                           {"velocity_feed_forward",
-                            set(position.velocity_feed_forward, "velocity_feed_forward")},
-                           {"acceleration_feed_forward",
-                            set(position.acceleration_feed_forward, "acceleration_feed_forward")}});
-          }},
-         {"output_current_limit", [&](const YAML::Node& value) { // mA
-              gains.current_limit = in.scalar<double>(value, "output_current_limit") * kMilli;
-          }}});
+    int current_limit_ma = static_cast<int>(std::lround(gains.current_limit / kMilli));
+    each_key(in, node, "gains",
+             {{"current",
+               [&](const YAML::Node& sub) {
+                   each_key(in, sub, "gains.current",
+                            {{"p", dictionary_value(in, current.p_gain, "gains.current.p",
+                                                    limits::kCurrentP)},
+                             {"i", dictionary_value(in, current.i_gain, "gains.current.i",
+                                                    limits::kCurrentI)}});
+               }},
+              {"velocity",
+               [&](const YAML::Node& sub) {
+                   each_key(in, sub, "gains.velocity",
+                            {{"p", dictionary_value(in, velocity.p_gain, "gains.velocity.p",
+                                                    limits::kVelocityP)},
+                             {"i", dictionary_value(in, velocity.i_gain, "gains.velocity.i",
+                                                    limits::kVelocityI)},
+                             {"velocity_feed_forward",
+                              dictionary_value(in, velocity.velocity_feed_forward,
+                                               "gains.velocity.velocity_feed_forward",
+                                               limits::kVelocityFeedForward)},
+                             {"acceleration_feed_forward",
+                              dictionary_value(in, velocity.acceleration_feed_forward,
+                                               "gains.velocity.acceleration_feed_forward",
+                                               limits::kVelocityAccelerationFeedForward)}});
+               }},
+              {"position",
+               [&](const YAML::Node& sub) {
+                   each_key(in, sub, "gains.position",
+                            {{"p", dictionary_value(in, position.p_gain, "gains.position.p",
+                                                    limits::kPositionP)},
+                             {"i", dictionary_value(in, position.i_gain, "gains.position.i",
+                                                    limits::kPositionI)},
+                             {"d", dictionary_value(in, position.d_gain, "gains.position.d",
+                                                    limits::kPositionD)},
+                             {"velocity_feed_forward",
+                              dictionary_value(in, position.velocity_feed_forward,
+                                               "gains.position.velocity_feed_forward",
+                                               limits::kPositionFeedForward)},
+                             {"acceleration_feed_forward",
+                              dictionary_value(in, position.acceleration_feed_forward,
+                                               "gains.position.acceleration_feed_forward",
+                                               limits::kPositionAccelerationFeedForward)}});
+               }},
+              {"output_current_limit", // mA
+               dictionary_value(in, current_limit_ma, "gains.output_current_limit",
+                                limits::kOutputCurrentLimit)}});
     gains.current = to_si(current);
     gains.velocity = to_si(velocity);
     gains.position = to_si(position);
+    gains.current_limit = current_limit_ma * kMilli;
 }
 
 void read_switches(Reader& in, const YAML::Node& node, SwitchLayout& switches) {
-    const auto position = [&in](std::optional<std::int64_t>& field, std::string_view what) {
-        return [&in, &field, what](const YAML::Node& value) {
-            field = in.scalar<std::int64_t>(value, what);
-        };
-    };
-    in.each_key(node, "switches",
-                {{"negative_limit", position(switches.negative_limit, "negative_limit")},
-                 {"positive_limit", position(switches.positive_limit, "positive_limit")},
-                 {"home", position(switches.home, "home")},
-                 {"home_length", position(switches.home_length, "home_length")},
-                 {"home_active_above", [&](const YAML::Node& value) {
-                      switches.home_active_above = in.scalar<bool>(value, "home_active_above");
-                  }}});
+    each_key(in, node, "switches",
+             {{"negative_limit", position(in, switches.negative_limit, "switches.negative_limit")},
+              {"positive_limit", position(in, switches.positive_limit, "switches.positive_limit")},
+              {"home", position(in, switches.home, "switches.home")},
+              {"home_length", position(in, switches.home_length, "switches.home_length", 1)},
+              {"home_active_above", [&](const YAML::Node& value) {
+                   switches.home_active_above =
+                       in.scalar<bool>(value, "switches.home_active_above");
+               }}});
+    // "Pressed at and beyond": limits the wrong way round (or on one position) leave no travel.
+    if (switches.negative_limit && switches.positive_limit &&
+        *switches.negative_limit >= *switches.positive_limit) {
+        in.fail(node["negative_limit"],
+                fmt::format("switches.negative_limit ({}) must lie below switches.positive_limit "
+                            "({})",
+                            *switches.negative_limit, *switches.positive_limit));
+    }
 }
 
 AxisParameters read_axis(Reader& in, const YAML::Node& root) {
@@ -120,53 +188,56 @@ AxisParameters read_axis(Reader& in, const YAML::Node& root) {
     if (root.IsNull()) {
         return axis; // an empty file: the reference axis
     }
-    const auto number = [&in](double& field, std::string_view what, double unit = 1.0) {
-        return [&in, &field, what, unit](const YAML::Node& value) {
-            field = in.scalar<double>(value, what) * unit;
-        };
-    };
-    in.each_key(
-        root, "the file",
+    each_key(
+        in, root, "the file",
         {{"motor",
           [&](const YAML::Node& node) {
               read_motor(in, node, axis.plant.motor);
           }},
          {"gearhead",
           [&](const YAML::Node& node) {
-              in.each_key(node, "gearhead",
-                          {{"ratio", number(axis.plant.gearhead.ratio, "ratio")},
-                           {"efficiency", number(axis.plant.gearhead.efficiency, "efficiency")}});
+              GearheadParameters& gearhead = axis.plant.gearhead;
+              each_key(
+                  in, node, "gearhead",
+                  {{"ratio", quantity(in, gearhead.ratio, "gearhead.ratio", limits::kGearRatio)},
+                   {"efficiency", quantity(in, gearhead.efficiency, "gearhead.efficiency",
+                                           limits::kGearEfficiency)}});
           }},
          {"encoder",
           [&](const YAML::Node& node) {
-              in.each_key(node, "encoder", {{"pulses", [&](const YAML::Node& value) {
-                                                 axis.encoder_pulses =
-                                                     in.scalar<int>(value, "encoder.pulses");
-                                                 if (axis.encoder_pulses < 16) {
-                                                     in.fail(value, "encoder.pulses must be at "
-                                                                    "least 16 (8.2.74)");
-                                                 }
-                                             }}});
+              each_key(in, node, "encoder",
+                       {{"pulses", dictionary_value(in, axis.encoder_pulses, "encoder.pulses",
+                                                    limits::kEncoderPulses)}});
           }},
          {"load",
           [&](const YAML::Node& node) {
               LoadParameters& load = axis.plant.load;
-              in.each_key(node, "load",
-                          {{"inertia", number(load.inertia, "inertia", kGramSquareCentimetre)},
-                           {"viscous_friction", number(load.viscous_friction, "viscous_friction")},
-                           {"coulomb_friction",
-                            number(load.coulomb_friction, "coulomb_friction", kMilli)}});
+              each_key(
+                  in, node, "load",
+                  {{"inertia", quantity(in, load.inertia, "load.inertia", limits::kLoadInertia,
+                                        kGramSquareCentimetre)},
+                   {"viscous_friction", quantity(in, load.viscous_friction, "load.viscous_friction",
+                                                 limits::kViscousFriction)},
+                   {"coulomb_friction", quantity(in, load.coulomb_friction, "load.coulomb_friction",
+                                                 limits::kCoulombFriction, kMilli)}});
           }},
          {"power_stage",
           [&](const YAML::Node& node) {
               PowerStageParameters& stage = axis.plant.power_stage;
-              in.each_key(
-                  node, "power_stage",
-                  {{"supply_voltage", number(stage.supply_voltage, "supply_voltage")},
-                   {"max_duty", number(stage.max_duty, "max_duty")},
-                   {"min_supply_voltage", number(stage.min_supply_voltage, "min_supply_voltage")},
-                   {"max_supply_voltage", number(stage.max_supply_voltage, "max_supply_voltage")},
-                   {"overcurrent", number(stage.overcurrent, "overcurrent")}});
+              each_key(in, node, "power_stage",
+                       {{"supply_voltage",
+                         quantity(in, stage.supply_voltage, "power_stage.supply_voltage",
+                                  limits::kSupplyVoltage)},
+                        {"max_duty",
+                         quantity(in, stage.max_duty, "power_stage.max_duty", limits::kMaxDuty)},
+                        {"min_supply_voltage",
+                         quantity(in, stage.min_supply_voltage, "power_stage.min_supply_voltage",
+                                  limits::kSupplyLimit)},
+                        {"max_supply_voltage",
+                         quantity(in, stage.max_supply_voltage, "power_stage.max_supply_voltage",
+                                  limits::kSupplyLimit)},
+                        {"overcurrent", quantity(in, stage.overcurrent, "power_stage.overcurrent",
+                                                 limits::kOvercurrent)}});
           }},
          {"gains",
           [&](const YAML::Node& node) {
@@ -181,10 +252,21 @@ AxisParameters read_axis(Reader& in, const YAML::Node& root) {
     return axis;
 }
 
+/// One machine per file: a second document ("---") would be ignored by YAML::Load.
+void refuse_second_document(Reader& in, std::string_view text) {
+    const std::vector<YAML::Node> documents = YAML::LoadAll(std::string(text));
+    if (documents.size() > 1) {
+        in.fail(documents[1], "a second YAML document: the file describes one machine");
+    }
+}
+
 } // namespace
 
 core::Result<AxisParameters> parse_axis_file(std::string_view text, std::string_view source) {
-    return yaml::parse<AxisParameters>(text, source, read_axis);
+    return yaml::parse<AxisParameters>(text, source, [text](Reader& in, const YAML::Node& root) {
+        refuse_second_document(in, text);
+        return read_axis(in, root);
+    });
 }
 
 core::Result<AxisParameters> load_axis_file(const std::filesystem::path& path) {
