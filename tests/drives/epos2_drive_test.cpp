@@ -214,8 +214,9 @@ TEST_F(Epos2DriveOnBus, MissingHeartbeatOfTheMasterRaises8130AndFaults) {
     EXPECT_TRUE(emcys.empty()) << "the heartbeat came within its time";
     run_with_sync(100ms);
     ASSERT_FALSE(emcys.empty());
-    EXPECT_EQ(emcys.front(), (std::vector<std::uint8_t>{0x30, 0x81, 0x10, 0, 0, 0, 0, 0}));
-    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0x10);
+    // Communication (table 4-11) and generic (CiA 301 7.5.2.2).
+    EXPECT_EQ(emcys.front(), (std::vector<std::uint8_t>{0x30, 0x81, 0x11, 0, 0, 0, 0, 0}));
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0x11);
     EXPECT_EQ(read<std::uint32_t>(0x1003, 1) & 0xFFFF, 0x8130U);
     EXPECT_EQ(drive.state(), motion::DriveState::Fault);
 }
@@ -298,7 +299,8 @@ TEST_F(Epos2DriveWithLimitSwitch, LimitSwitchNotInTheExecutionMaskIsOnlyDisplaye
 
 TEST(Epos2Network, EveryDriveBootsWithItsOwnNodeId) {
     core::EventLoop loop;
-    eposp::test::Epos2Network network = eposp::test::make_epos2_network(loop, 3, drive_config(plant::test::tuned_axis()), 5);
+    eposp::test::Epos2Network network =
+        eposp::test::make_epos2_network(loop, 3, drive_config(plant::test::tuned_axis()), 5);
     std::vector<std::uint32_t> boot_ups;
     auto master = network.bus->connect("master");
     master->on_receive([&boot_ups](const can::Frame& frame) { boot_ups.push_back(frame.id); });

@@ -82,6 +82,10 @@ void EmcyProducer::set_nmt_state(NmtState state) {
     } else if (previous == NmtState::Initialising) {
         update_register(); // a reset restored 0x1001; the errors still active stay in it
     }
+    if (sends_emcy(state) && reset_unsent_) {
+        reset_unsent_ = false;
+        emit(kEmcyNoError, update_register(), {});
+    }
 }
 
 std::uint8_t EmcyProducer::update_register() {
@@ -89,12 +93,20 @@ std::uint8_t EmcyProducer::update_register() {
     for (const auto& [code, error_bits] : active_) {
         bits = static_cast<std::uint8_t>(bits | error_bits);
     }
+    // CiA 301 7.5.2.2: the generic error bit is set with every error.
+    if (!active_.empty()) {
+        bits = static_cast<std::uint8_t>(bits | error_register::kGeneric);
+    }
     history_.set_error_register(bits);
     return bits;
 }
 
 void EmcyProducer::emit(std::uint16_t error_code, std::uint8_t error_register,
                         const ManufacturerData& data) {
+    if (!sends_emcy(state_) && error_code == kEmcyNoError) {
+        reset_unsent_ = true; // sent once the node may send again
+        return;
+    }
     const auto cob_id = od_.get_as<std::uint32_t>(kCobIdEmcyIndex, 0);
     if (!sends_emcy(state_) || (cob_id & kCobIdInvalid) != 0 || pending_.size() >= kMaxPending) {
         return;

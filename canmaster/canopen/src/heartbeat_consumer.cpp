@@ -90,6 +90,7 @@ void HeartbeatConsumer::on_frame(const can::Frame& frame) {
     Monitor& monitor = found->second;
     monitor.timer =
         core::ScopedTimer(loop_, loop_.after(monitor.time, [this, node] { expire(node); }));
+    monitor.lost.set(false, emergency_, resolved_);
     if (monitor.state != reported) {
         monitor.state = reported;
         for (std::size_t i = 0; i < state_listeners_.size(); ++i) {
@@ -119,8 +120,19 @@ void HeartbeatConsumer::on_timeout(TimeoutListener listener) {
     timeout_listeners_.push_back(std::move(listener));
 }
 
+void HeartbeatConsumer::forget(const std::function<bool(const Monitor&)>& which) {
+    for (auto it = monitors_.begin(); it != monitors_.end();) {
+        if (which(it->second)) {
+            it->second.lost.set(false, emergency_, resolved_);
+            it = monitors_.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
 void HeartbeatConsumer::reload() {
-    monitors_.clear();
+    forget([](const Monitor&) { return true; });
     if (state_ == NmtState::Initialising) {
         return;
     }
@@ -135,25 +147,25 @@ void HeartbeatConsumer::reload_entry(std::uint8_t sub_index) {
     if (state_ == NmtState::Initialising || sub_index == 0) {
         return;
     }
-    std::erase_if(monitors_,
-                  [sub_index](const auto& item) { return item.second.sub_index == sub_index; });
+    forget([sub_index](const Monitor& monitor) { return monitor.sub_index == sub_index; });
     const auto entry = ConsumerHeartbeatEntry::decode(
         od_.get_as<std::uint32_t>(kConsumerHeartbeatTimeIndex, sub_index));
     if (entry.used() && entry.port_code == port_code_) {
         // try_emplace: an entry stored without the write check may repeat a producer; the
         // first one wins.
-        monitors_.try_emplace(entry.node, Monitor{.sub_index = sub_index,
-                                                  .time = std::chrono::milliseconds(entry.time_ms),
-                                                  .state = std::nullopt,
-                                                  .timer = {}});
+        monitors_.try_emplace(entry.node,
+                              Monitor{.sub_index = sub_index,
+                                      .time = std::chrono::milliseconds(entry.time_ms),
+                                      .state = std::nullopt,
+                                      .timer = {},
+                                      .lost = ErrorCondition{kEmcyLifeGuardOrHeartbeat}});
     }
 }
 
 void HeartbeatConsumer::expire(NodeId node) {
-    monitors_.at(node).state.reset();
-    if (emergency_) {
-        emergency_(kEmcyLifeGuardOrHeartbeat);
-    }
+    Monitor& monitor = monitors_.at(node);
+    monitor.state.reset();
+    monitor.lost.set(true, emergency_, resolved_);
     for (std::size_t i = 0; i < timeout_listeners_.size(); ++i) {
         timeout_listeners_[i](node);
     }

@@ -141,6 +141,13 @@ Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary,
             }
         }
     }
+    const auto resolve = [this](std::uint16_t code) {
+        resolve_emergency(code);
+    };
+    pdo_.on_error_resolved(resolve);
+    sync_consumer_.on_error_resolved(resolve);
+    heartbeat_consumer_.on_error_resolved(resolve);
+    guarding_.on_error_resolved(resolve);
     nmt_.on_state_change([this](NmtState state) { set_nmt_state(state); });
     // A node does not receive its own frames: its own SYNCs reach its PDOs this way.
     sync_producer_.on_sent([this](const can::Frame& frame) { sync_consumer_.on_frame(frame); });
@@ -238,6 +245,9 @@ void Node::set_nmt_state(NmtState state) {
     sync_consumer_.set_nmt_state(state);
     pdo_.set_nmt_state(state);
     lss_.set_nmt_state(state);
+    if (state == NmtState::Initialising) {
+        end_service_errors();
+    }
     // The boot-up after the load: the first moment an EMCY may go out (EPOS2 FW spec 7.3.5).
     if (state == NmtState::PreOperational && refused_store_to_report_) {
         refused_store_to_report_ = false;
@@ -246,7 +256,26 @@ void Node::set_nmt_state(NmtState state) {
 }
 
 void Node::raise_emergency(std::uint16_t error_code) {
-    emcy_.raise(error_code, error_register_bits(error_code));
+    if (service_errors_[error_code]++ == 0) {
+        emcy_.raise(error_code, error_register_bits(error_code));
+    }
+}
+
+void Node::resolve_emergency(std::uint16_t error_code) {
+    const auto found = service_errors_.find(error_code);
+    if (found != service_errors_.end() && --found->second == 0) {
+        service_errors_.erase(found);
+        emcy_.clear(error_code);
+    }
+}
+
+// CiA 301 7.3.2.2.1: a reset brings the communication back to its power-on state, and with it
+// 0x1001; what a service raised without an end of its own (0x8150, 0x6320) ends here too.
+void Node::end_service_errors() {
+    for (const auto& [code, causes] : service_errors_) {
+        emcy_.clear(code);
+    }
+    service_errors_.clear();
 }
 
 void Node::restore_stored_values(bool communication_area_only) {
@@ -274,6 +303,7 @@ void Node::restore_stored_values(bool communication_area_only) {
 
 // CiA 301 7.3.2.2.1: reset application, the manufacturer-specific and profile areas.
 void Node::reset_application() {
+    emcy_.clear_all(); // the device starts afresh: none of its errors is active
     restore_stored_values(false);
     if (application_reset_handler_) {
         application_reset_handler_();

@@ -51,8 +51,8 @@ void NodeGuarding::on_frame(const can::Frame& frame) {
     port_.send(can::Frame::data_frame(error_control_can_id(node_id_), {reply}));
     toggle_ = !toggle_;
     guarded_ = true;
-    if (event_) {
-        event_ = false;
+    if (life_guarding_event_.present()) {
+        life_guarding_event_.set(false, emergency_, resolved_);
         tell(false);
     }
     rearm();
@@ -64,7 +64,7 @@ void NodeGuarding::set_nmt_state(NmtState state) {
         // CiA 301 7.2.8.3.2.1: a reset starts the toggle at 0 and life guarding anew.
         toggle_ = false;
         guarded_ = false;
-        event_ = false;
+        life_guarding_event_.set(false, emergency_, resolved_);
         life_timer_.cancel();
     }
 }
@@ -86,7 +86,8 @@ core::Duration NodeGuarding::life_time() const {
 
 void NodeGuarding::rearm() {
     life_timer_.cancel();
-    if (!guarded_ || event_ || state_ == NmtState::Initialising || heartbeat_in_use()) {
+    if (!guarded_ || life_guarding_event_.present() || state_ == NmtState::Initialising ||
+        heartbeat_in_use()) {
         return;
     }
     const core::Duration life = life_time();
@@ -97,10 +98,7 @@ void NodeGuarding::rearm() {
 }
 
 void NodeGuarding::expire() {
-    event_ = true;
-    if (emergency_) {
-        emergency_(kEmcyLifeGuardOrHeartbeat);
-    }
+    life_guarding_event_.set(true, emergency_, resolved_);
     tell(true);
 }
 

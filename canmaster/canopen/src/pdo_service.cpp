@@ -78,6 +78,12 @@ void PdoService::reload() {
     }
 }
 
+void PdoService::on_error_resolved(const ErrorResolvedCallback& resolved) {
+    for (auto& rpdo : rpdos_) {
+        rpdo->on_error_resolved(resolved);
+    }
+}
+
 Rpdo& PdoService::rpdo(std::size_t number) {
     if (number == 0 || number > rpdos_.size()) {
         throw std::out_of_range(fmt::format("no RPDO {}", number));

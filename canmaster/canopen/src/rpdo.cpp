@@ -31,6 +31,13 @@ void Rpdo::reload() {
     active_ = comm_.cob_id.valid() && resolution.error == AbortCode::None && !mapping_.empty();
     pending_.reset();
     deadline_.cancel(); // a new event timer counts from the next RPDO
+    report_frame_errors(false, false, false);
+}
+
+void Rpdo::report_frame_errors(bool too_short, bool too_long, bool deadline_missed) {
+    too_short_.set(too_short, emergency_, resolved_);
+    too_long_.set(too_long, emergency_, resolved_);
+    deadline_missed_.set(deadline_missed, emergency_, resolved_);
 }
 
 bool Rpdo::accepts(const can::Frame& frame) const {
@@ -42,14 +49,12 @@ void Rpdo::on_frame(const can::Frame& frame) {
         return;
     }
     const auto payload = frame.payload();
-    if (payload.size() < mapping_.size()) {
-        if (emergency_) {
-            emergency_(kEmcyPdoLengthError);
-        }
+    const bool too_short = payload.size() < mapping_.size();
+    // A frame that is not processed does not meet the deadline.
+    report_frame_errors(too_short, payload.size() > mapping_.size(),
+                        too_short && deadline_missed_.present());
+    if (too_short) {
         return;
-    }
-    if (payload.size() > mapping_.size() && emergency_) {
-        emergency_(kEmcyPdoLengthExceeded);
     }
     restart_deadline();
     const auto data = payload.first(mapping_.size());
@@ -98,9 +103,7 @@ void Rpdo::restart_deadline() {
         return;
     }
     deadline_ = core::ScopedTimer(loop_, loop_.after(comm_.event_timer, [this] {
-        if (emergency_) {
-            emergency_(kEmcyRpdoTimeout);
-        }
+        deadline_missed_.set(true, emergency_, resolved_);
     }));
 }
 

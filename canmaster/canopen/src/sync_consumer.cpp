@@ -35,10 +35,9 @@ void SyncConsumer::on_frame(const can::Frame& frame) {
         return;
     }
     const std::optional<std::size_t> expected = expected_length_;
-    if (expected ? frame.dlc != *expected : frame.dlc > 1) {
-        if (expected && emergency_) {
-            emergency_(kEmcySyncDataLength);
-        }
+    const bool wrong_length = expected ? frame.dlc != *expected : frame.dlc > 1;
+    wrong_length_.set(wrong_length && expected.has_value(), emergency_, resolved_);
+    if (wrong_length) {
         return;
     }
     SyncEvent event{.counter = std::nullopt, .window = window_length_};
@@ -62,6 +61,9 @@ void SyncConsumer::set_nmt_state(NmtState state) {
     if (state == NmtState::Initialising || state == NmtState::Stopped) {
         window_timer_.cancel();
         window_open_ = false;
+    }
+    if (state == NmtState::Initialising) {
+        wrong_length_.set(false, emergency_, resolved_);
     }
 }
 

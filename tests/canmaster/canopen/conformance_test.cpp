@@ -328,10 +328,10 @@ TEST_F(Conformance, LifeGuardingEventSendsAnEmcyAfterGuardTimeTimesLifeTimeFacto
     const core::TimePoint guarded = bench.loop.now();
     expect_reply("705#R", "705#7F");
     bench.run_for(40ms);
-    // EMCY 0x8130 (life guard error), error register 0x10 (communication).
+    // EMCY 0x8130 (life guard error), error register 0x11 (communication, generic).
     const auto emcys = sent_since(guarded, 0x085);
     ASSERT_EQ(emcys.size(), 1u);
-    EXPECT_EQ(emcys[0].frame, "085#3081100000000000");
+    EXPECT_EQ(emcys[0].frame, "085#3081110000000000");
     EXPECT_GE(emcys[0].at - guarded, 30ms);
     EXPECT_LT(emcys[0].at - guarded, 31ms);
 }
@@ -341,7 +341,8 @@ TEST_F(Conformance, LifeGuardingRequestAfterTheEventIsAnsweredWithTheNextToggle)
     sdo_write(0x100D, 0, 3, 1);
     expect_reply("705#R", "705#7F");
     bench.run_for(40ms);
-    EXPECT_EQ(exchange("705#R"), (std::vector<std::string>{"705#FF"}));
+    // The request also ends the life guarding event: the error reset EMCY follows.
+    EXPECT_EQ(exchange("705#R"), (std::vector<std::string>{"705#FF", "085#0000000000000000"}));
 }
 
 // --- Heartbeat consumer (CiA 301 7.2.8.3.2.2, 0x1016). ---
@@ -358,7 +359,7 @@ TEST_F(Conformance, HeartbeatConsumerTimeoutSendsAnEmcyOneConsumerTimeAfterTheLa
     bench.run_for(30ms);
     const auto emcys = sent_since(last_beat, 0x085);
     ASSERT_EQ(emcys.size(), 1u);
-    EXPECT_EQ(emcys[0].frame, "085#3081100000000000");
+    EXPECT_EQ(emcys[0].frame, "085#3081110000000000");
     // Monitoring runs from the reception of the heartbeat (the end of its frame).
     const core::TimePoint received = testing::end_of(last_beat, "710#05");
     EXPECT_EQ(emcys[0].at, received + 20ms);
@@ -472,16 +473,96 @@ protected:
 
 TEST_F(EmcyConformance, TooShortRpdoRaisesPdoLengthErrorIntoTheErrorHistory) {
     start_with_rpdo();
-    // 0x8210: PDO not processed due to length error; error register 0x10 (communication).
-    EXPECT_EQ(exchange("205#0102"), std::vector<std::string>{"085#1082100000000000"});
+    // 0x8210: PDO not processed due to length error; error register 0x11 (communication and,
+    // with every error, generic: CiA 301 7.5.2.2).
+    EXPECT_EQ(exchange("205#0102"), std::vector<std::string>{"085#1082110000000000"});
     EXPECT_EQ(od.get_as<std::uint32_t>(0x2000, 0), 0x1122'3344u);
-    expect_reply("605#4001100000000000", "585#4F01100010000000");
+    expect_reply("605#4001100000000000", "585#4F01100011000000");
     expect_reply("605#4003100000000000", "585#4F03100001000000");
     expect_reply("605#4003100100000000", "585#4303100110820000");
     // Only 0 may be written to sub-index 0, and it empties the history (CiA 301 7.5.2.6).
     expect_reply("605#2F03100001000000", "585#8003100030000906");
     expect_reply("605#2F03100000000000", "585#6003100000000000");
     expect_reply("605#4003100000000000", "585#4F03100000000000");
+}
+
+// --- Error lifetime (CiA 301 7.2.7.1): an error ends with its cause, with the error reset
+// EMCY 0x0000 and the register bits it held cleared. ---
+
+TEST_F(EmcyConformance, RpdoOfTheRightLengthEndsTheLengthError) {
+    start_with_rpdo();
+    EXPECT_EQ(exchange("205#0102"), std::vector<std::string>{"085#1082110000000000"});
+    EXPECT_EQ(exchange("205#0102"), std::vector<std::string>{}) << "one EMCY per error event";
+    EXPECT_EQ(exchange("205#05060708"), std::vector<std::string>{"085#0000000000000000"});
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x2000, 0), 0x0807'0605u);
+    expect_reply("605#4001100000000000", "585#4F01100000000000");
+    // The next short RPDO is a new error event.
+    EXPECT_EQ(exchange("205#0102"), std::vector<std::string>{"085#1082110000000000"});
+}
+
+TEST_F(EmcyConformance, TooLongRpdoErrorEndsWithTheNextRpdoOfTheRightLength) {
+    start_with_rpdo();
+    EXPECT_EQ(exchange("205#0102030405"), std::vector<std::string>{"085#2082110000000000"});
+    EXPECT_EQ(exchange("205#01020304"), std::vector<std::string>{"085#0000000000000000"});
+}
+
+TEST_F(EmcyConformance, ShortRpdoAfterALongOneEndsTheOneAndRaisesTheOther) {
+    start_with_rpdo();
+    EXPECT_EQ(exchange("205#0102030405"), std::vector<std::string>{"085#2082110000000000"});
+    EXPECT_EQ(exchange("205#01"),
+              (std::vector<std::string>{"085#1082110000000000", "085#0000110000000000"}));
+}
+
+struct ResetCase {
+    std::string name;
+    std::string command;
+};
+
+class EmcyReset : public EmcyConformance, public ::testing::WithParamInterface<ResetCase> {};
+
+// CiA 301 7.3.2.2.1: the reset brings 0x1001 back to its power-on value; the error reset EMCY
+// follows the boot-up, and a short RPDO after the restart is a new error event.
+TEST_P(EmcyReset, ResetEndsTheErrorAndTheNextOneIsSignalledAgain) {
+    start_with_rpdo();
+    EXPECT_EQ(exchange("205#0102"), std::vector<std::string>{"085#1082110000000000"});
+    EXPECT_EQ(exchange(GetParam().command),
+              (std::vector<std::string>{"705#00", "085#0000000000000000"}));
+    expect_reply("605#4001100000000000", "585#4F01100000000000");
+    start_with_rpdo();
+    EXPECT_EQ(exchange("205#0102"), std::vector<std::string>{"085#1082110000000000"});
+}
+
+INSTANTIATE_TEST_SUITE_P(NmtResets, EmcyReset,
+                         ::testing::Values(ResetCase{"ResetNode", "000#8105"},
+                                           ResetCase{"ResetCommunication", "000#8205"}),
+                         [](const ::testing::TestParamInfo<ResetCase>& reset) {
+                             return reset.param.name;
+                         });
+
+// CiA 301 7.5.2.6 empties the history; the register shows the errors still active.
+TEST_F(EmcyConformance, EmptyingTheHistoryKeepsTheRegisterOfTheActiveError) {
+    start_with_rpdo();
+    bench.send("205#0102");
+    bench.run_for(1ms);
+    expect_reply("605#2F03100000000000", "585#6003100000000000");
+    expect_reply("605#4001100000000000", "585#4F01100011000000");
+}
+
+TEST_F(EmcyConformance, NextHeartbeatEndsTheHeartbeatEvent) {
+    sdo_write(0x1016, 1, 0x0010'0014, 4); // node 0x10 within 20 ms
+    bench.send("710#05");
+    bench.run_for(30ms);
+    EXPECT_EQ(frames_since(core::TimePoint{}, 0x085),
+              std::vector<std::string>{"085#3081110000000000"});
+    EXPECT_EQ(exchange("710#05"), std::vector<std::string>{"085#0000000000000000"});
+    expect_reply("605#4001100000000000", "585#4F01100000000000");
+}
+
+TEST_F(EmcyConformance, SyncOfTheRightLengthEndsTheSyncLengthError) {
+    sdo_write(0x1019, 0, 10, 1); // SYNCs carry a counter
+    EXPECT_EQ(exchange("080#"), std::vector<std::string>{"085#4082110000000000"});
+    EXPECT_EQ(exchange("080#"), std::vector<std::string>{});
+    EXPECT_EQ(exchange("080#01"), std::vector<std::string>{"085#0000000000000000"});
 }
 
 TEST_F(EmcyConformance, InvalidEmcyCobIdSendsNothing) {

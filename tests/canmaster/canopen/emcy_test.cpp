@@ -1,7 +1,7 @@
-#include "service_bench.hpp"
 #include "eposp/canopen/emcy_consumer.hpp"
 #include "eposp/canopen/emcy_producer.hpp"
 #include "eposp/canopen/error_history.hpp"
+#include "service_bench.hpp"
 
 #include <functional>
 #include <gtest/gtest.h>
@@ -43,9 +43,10 @@ protected:
 TEST_F(EmcyProducerTest, ErrorEventSendsCodeRegisterAndManufacturerBytes) {
     emcy.raise(0x8130, error_register::kCommunication, {1, 2, 3, 4, 5});
     bench.run_for(1ms);
-    // CiA 301 7.2.7.3.1, EPOS2 FW spec table 4-10: code little-endian, register, 5 bytes.
-    EXPECT_EQ(bench.device_frames(), (std::vector<Sent>{{at_ms(0), "085#3081100102030405"}}));
-    EXPECT_EQ(error_register(), 0x10);
+    // CiA 301 7.2.7.3.1, EPOS2 FW spec table 4-10: code little-endian, register, 5 bytes. The
+    // register has the generic bit with every error (CiA 301 7.5.2.2).
+    EXPECT_EQ(bench.device_frames(), (std::vector<Sent>{{at_ms(0), "085#3081110102030405"}}));
+    EXPECT_EQ(error_register(), 0x11);
     EXPECT_EQ(history(), std::vector<std::uint32_t>{0x8130});
     EXPECT_TRUE(emcy.active(0x8130));
 }
@@ -61,9 +62,9 @@ TEST_F(EmcyProducerTest, ActiveErrorRaisedAgainSendsNothing) {
 TEST_F(EmcyProducerTest, ErrorThatGoesAwaySendsErrorResetWithTheRemainingRegister) {
     emcy.raise(0x2310, error_register::kCurrent);
     emcy.raise(0x8130, error_register::kCommunication);
-    EXPECT_EQ(error_register(), 0x12);
+    EXPECT_EQ(error_register(), 0x13);
     emcy.clear(0x2310);
-    EXPECT_EQ(error_register(), 0x10);
+    EXPECT_EQ(error_register(), 0x11);
     emcy.clear(0x2310); // no longer active: nothing
     emcy.clear(0x8130, {0xAA, 0, 0, 0, 0xBB});
     EXPECT_EQ(error_register(), 0x00);
@@ -72,8 +73,8 @@ TEST_F(EmcyProducerTest, ErrorThatGoesAwaySendsErrorResetWithTheRemainingRegiste
     for (const Sent& sent : bench.device_frames()) {
         frames.push_back(sent.frame);
     }
-    EXPECT_EQ(frames, (std::vector<std::string>{"085#1023020000000000", "085#3081120000000000",
-                                                "085#0000100000000000", "085#000000AA000000BB"}));
+    EXPECT_EQ(frames, (std::vector<std::string>{"085#1023030000000000", "085#3081130000000000",
+                                                "085#0000110000000000", "085#000000AA000000BB"}));
     EXPECT_EQ(history(), (std::vector<std::uint32_t>{0x8130, 0x2310}));
 }
 
@@ -96,10 +97,10 @@ TEST_F(EmcyProducerTest, InhibitTimeSpacesEmcysAndKeepsTheirOrder) {
     at(at_ms(30), [this] { emcy.raise(0x4210, error_register::kTemperature); });
     bench.run_until(at_ms(30) + kFrameTime);
     // 0x1015 counts in 100 µs: 5 ms between EMCYs; one after a quiet spell goes at once.
-    EXPECT_EQ(bench.device_frames(), (std::vector<Sent>{{at_ms(0), "085#1023020000000000"},
-                                                        {at_ms(5), "085#1032060000000000"},
-                                                        {at_ms(10), "085#0000040000000000"},
-                                                        {at_ms(30), "085#10420C0000000000"}}));
+    EXPECT_EQ(bench.device_frames(), (std::vector<Sent>{{at_ms(0), "085#1023030000000000"},
+                                                        {at_ms(5), "085#1032070000000000"},
+                                                        {at_ms(10), "085#0000050000000000"},
+                                                        {at_ms(30), "085#10420D0000000000"}}));
 }
 
 TEST_F(EmcyProducerTest, PendingEmcysBeyondTheQueueAreLostButRecorded) {
@@ -117,11 +118,24 @@ TEST_F(EmcyProducerTest, StoppedSendsNoEmcyButRecordsTheError) {
     emcy.raise(0x8130, error_register::kCommunication);
     bench.run_for(1ms);
     EXPECT_TRUE(bench.device_frames().empty()); // EPOS2 FW spec 7.3.5
-    EXPECT_EQ(error_register(), 0x10);
+    EXPECT_EQ(error_register(), 0x11);
     EXPECT_EQ(history(), std::vector<std::uint32_t>{0x8130});
     emcy.set_nmt_state(NmtState::Operational);
     bench.run_for(1ms);
     EXPECT_TRUE(bench.device_frames().empty());
+}
+
+TEST_F(EmcyProducerTest, ErrorThatEndsWhileNoEmcyMaySendItsResetOnceOneMay) {
+    emcy.raise(0x8130, error_register::kCommunication);
+    emcy.set_nmt_state(NmtState::Initialising);
+    emcy.clear(0x8130);
+    EXPECT_EQ(error_register(), 0x00);
+    emcy.set_nmt_state(NmtState::PreOperational);
+    bench.run_for(1ms);
+    const std::vector<Sent> sent = bench.device_frames();
+    ASSERT_EQ(sent.size(), 2U);
+    EXPECT_EQ(sent[0].frame, "085#3081110000000000");
+    EXPECT_EQ(sent[1].frame, "085#0000000000000000");
 }
 
 TEST_F(EmcyProducerTest, InvalidCobIdSendsNothingAndANewOneIsUsed) {
@@ -136,7 +150,7 @@ TEST_F(EmcyProducerTest, InvalidCobIdSendsNothingAndANewOneIsUsed) {
     bench.run_for(1ms);
     // Both are queued at 0: the second follows the first on the wire.
     const core::TimePoint second = testing::after_intermission(bench.wire.events.at(0).end);
-    EXPECT_EQ(bench.device_frames(), (std::vector<Sent>{{at_ms(0), "090#1032060000000000"},
+    EXPECT_EQ(bench.device_frames(), (std::vector<Sent>{{at_ms(0), "090#1032070000000000"},
                                                         {second, "00000090#0000000000000000"}}));
 }
 
@@ -149,7 +163,7 @@ TEST_F(EmcyProducerTest, ResetDropsPendingEmcysAndKeepsActiveErrorsInTheRegister
     emcy.set_nmt_state(NmtState::PreOperational);
     bench.run_for(1s);
     EXPECT_EQ(bench.device_frames().size(), 1U);
-    EXPECT_EQ(error_register(), 0x06);
+    EXPECT_EQ(error_register(), 0x07);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -364,7 +378,7 @@ TEST(EmcyEndToEnd, ConsumerSeesTheProducersErrorAndItsReset) {
     producer.raise(0x8611, error_register::kDeviceProfile);
     producer.clear(0x8611);
     bench.run_for(1ms);
-    EXPECT_EQ(seen, (std::vector<Emergency>{{kNode, 0x8611, 0x20, {}}, {kNode, 0x0000, 0x00, {}}}));
+    EXPECT_EQ(seen, (std::vector<Emergency>{{kNode, 0x8611, 0x21, {}}, {kNode, 0x0000, 0x00, {}}}));
 }
 
 } // namespace

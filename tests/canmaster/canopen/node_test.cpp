@@ -291,12 +291,13 @@ TEST_F(NodeTest, HeartbeatTimeoutRaisesACommunicationEmergency) {
     ASSERT_TRUE(sdo_request({0x23, 0x16, 0x10, 0x01, 100, 0, 0x10, 0}));
     bench.send("710#7F");
     bench.run_for(150ms);
-    // CiA 301 7.2.7.3.1: code 0x8130, error register 0x10 (EPOS2 FW spec table 4-11).
+    // CiA 301 7.2.7.3.1: code 0x8130, error register 0x11 (communication, EPOS2 FW spec table
+    // 4-11, and generic, CiA 301 7.5.2.2).
     const auto emcys = device_frames(0x085);
     ASSERT_EQ(emcys.size(), 1u);
-    EXPECT_EQ(emcys[0].frame, "085#3081100000000000");
+    EXPECT_EQ(emcys[0].frame, "085#3081110000000000");
     EXPECT_EQ(testing::candump(*sdo_request({0x40, 0x01, 0x10, 0x00, 0, 0, 0, 0})),
-              "585#4F01100010000000");
+              "585#4F01100011000000");
 }
 
 /// A node with a parameter file in the test's own directory.
@@ -410,7 +411,7 @@ TEST_F(NodeWithParameterFileTest, UnconfiguredNodeBootsWithTheNodeIdLssConfigure
     exchange("000#010A");
     EXPECT_EQ(exchange("080#"), Frames{"18A#04030201"});
     // EMCY on 0x8A (a SYNC with a counter is too long: 0x8240); heartbeat on 0x70A.
-    EXPECT_EQ(exchange("080#01"), Frames{"08A#4082100000000000"});
+    EXPECT_EQ(exchange("080#01"), Frames{"08A#4082110000000000"});
     EXPECT_EQ(sdo_write<std::uint16_t>(0x1017, 0, 10, 10), "58A#6017100000000000");
     bench.run_for(6ms);
     EXPECT_EQ(device_frames(0x70A).back().frame, "70A#05");
@@ -469,7 +470,7 @@ TEST_F(NodeWithParameterFileTest, DamagedLssConfigurationRaisesEmcy6320AndKeepsT
     }
     const core::TimePoint power_on = bench.loop.now();
     power_up(config_with_file());
-    EXPECT_EQ(device_frames_since(power_on), (Frames{"705#00", "085#2063200000000000"}));
+    EXPECT_EQ(device_frames_since(power_on), (Frames{"705#00", "085#2063210000000000"}));
 }
 
 TEST_F(NodeTest, LssStoreWithoutParameterFileIsNotSupported) {
@@ -592,7 +593,7 @@ TEST_F(NodeTest, RpdoMissingItsDeadlineRaisesEmcy8250) {
     bench.run_for(20ms);
     const auto emcys = device_frames(0x085);
     ASSERT_EQ(emcys.size(), 1u);
-    EXPECT_EQ(emcys[0].frame, "085#5082100000000000");
+    EXPECT_EQ(emcys[0].frame, "085#5082110000000000");
     EXPECT_GE(emcys[0].at, last + 100ms);
 }
 
@@ -604,8 +605,9 @@ TEST_F(NodeWithParameterFileTest, CorruptParameterFileRaisesEmcy6320AndRunsOnDef
     stored_node.start();
     bench.run_for(1ms);
     EXPECT_EQ(stored_node.stored_values().status, StoredValuesStatus::Corrupt);
-    // EPOS2 FW spec table 4-11: 0x6320 Software Parameter Error, error register 0010 0000b.
-    EXPECT_EQ(device_frames_since({}), (Frames{"705#00", "085#2063200000000000"}));
+    // EPOS2 FW spec table 4-11: 0x6320 Software Parameter Error, error register 0010 0000b,
+    // with the generic bit (CiA 301 7.5.2.2).
+    EXPECT_EQ(device_frames_since({}), (Frames{"705#00", "085#2063210000000000"}));
     EXPECT_EQ(testing::candump(*sdo_request({0x40, 0x17, 0x10, 0x00, 0, 0, 0, 0})),
               "585#4B17100000000000");
 }

@@ -1,7 +1,7 @@
-#include "service_bench.hpp"
 #include "eposp/canopen/sync_consumer.hpp"
 #include "eposp/canopen/sync_objects.hpp"
 #include "eposp/canopen/sync_producer.hpp"
+#include "service_bench.hpp"
 
 #include <functional>
 #include <gtest/gtest.h>
@@ -334,14 +334,14 @@ TEST_F(SyncConsumerTest, SyncOfTheWrongLengthRaisesAnEmergency) {
     build({});
     ASSERT_EQ(write_as(od, kSyncCounterOverflowIndex, 0, std::uint8_t{10}), AbortCode::None);
     send("080#");
-    send("080#0102");
+    send("080#0102"); // the same error, still present: no second emergency
     const core::TimePoint good = send("080#03");
     EXPECT_EQ(syncs, (std::vector<Seen>{{3, 0ns, good}}));
-    EXPECT_EQ(emergencies, (std::vector<std::uint16_t>{0x8240, 0x8240}));
+    EXPECT_EQ(emergencies, (std::vector<std::uint16_t>{0x8240}));
 
     ASSERT_EQ(write_as(od, kSyncCounterOverflowIndex, 0, std::uint8_t{0}), AbortCode::None);
     send("080#03");
-    EXPECT_EQ(emergencies.size(), 3U);
+    EXPECT_EQ(emergencies.size(), 2U) << "a new error after the SYNC of the right length";
 }
 
 TEST_F(SyncConsumerTest, WindowOpensWithEachSyncAndClosesAfterItsLength) {

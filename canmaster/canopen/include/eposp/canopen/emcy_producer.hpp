@@ -27,12 +27,14 @@ void add_emcy_objects(ObjectDictionary& od, NodeId node_id, bool inhibit_time = 
 /// and add_error_objects().
 ///
 /// raise() is an error event: the error becomes active, its code goes to the error history
-/// 0x1003, the error register 0x1001 becomes the OR of the active errors' bits, and one EMCY is
-/// sent: error code (little-endian), error register, five manufacturer-specific bytes. Raising
-/// an active error again does nothing (one EMCY per error event). clear() ends an error: the
-/// register is updated and an EMCY with code 0x0000 and the remaining register is sent. EMCYs
-/// are sent in pre-operational and operational only (EPOS2 FW spec 7.3.5), not while 0x1014 is
-/// invalid, and at least the inhibit time 0x1015 apart: those due sooner wait in order (up to
+/// 0x1003, the error register 0x1001 becomes the OR of the active errors' bits and, while any
+/// error is active, the generic error bit (CiA 301 7.5.2.2), and one EMCY is sent: error code
+/// (little-endian), error register, five manufacturer-specific bytes. Raising an active error
+/// again does nothing (one EMCY per error event). clear() ends an error: the register is updated
+/// and an EMCY with code 0x0000 and the remaining register is sent; one that ends while the node
+/// may not send (a reset, stopped) goes out when it enters pre-operational or operational.
+/// EMCYs are sent in pre-operational and operational only (EPOS2 FW spec 7.3.5), not while 0x1014
+/// is invalid, and at least the inhibit time 0x1015 apart: those due sooner wait in order (up to
 /// kMaxPending; later ones are lost, the history and register keep them all). A controller that
 /// is bus-off sends nothing: the EMCYs it refuses wait until controller_recovered().
 class EmcyProducer {
@@ -67,6 +69,7 @@ private:
     NmtState state_ = NmtState::Initialising;
     std::map<std::uint16_t, std::uint8_t> active_; ///< error code -> its register bits
     std::deque<can::Frame> pending_;
+    bool reset_unsent_ = false; ///< an error ended while no EMCY could be sent
     core::ScopedTimer inhibit_timer_;
 };
 

@@ -39,9 +39,10 @@ void add_heartbeat_consumer_objects(ObjectDictionary& od, std::uint8_t entries);
 /// is this consumer's (0 on a CiA 301 device). Monitoring of a node starts with its first
 /// heartbeat (EPOS2 FW spec 8.2.13); each one restarts its time. A node that stays silent for
 /// its time is a heartbeat event: the listeners are told, an EMCY 0x8130 is raised, its state
-/// becomes unknown, and monitoring waits for its next heartbeat. A received boot-up message is
-/// the heartbeat of state Initialising. Active in pre-operational, operational and stopped; a
-/// changed entry starts again from waiting for the first heartbeat.
+/// becomes unknown, and monitoring waits for its next heartbeat, which ends the event (error
+/// resolved). A received boot-up message is the heartbeat of state Initialising. Active in
+/// pre-operational, operational and stopped; a changed entry starts again from waiting for the
+/// first heartbeat, and a changed entry or an NMT reset ends its heartbeat event.
 class HeartbeatConsumer {
 public:
     using StateListener = std::function<void(NodeId node, NmtState state)>;
@@ -64,6 +65,8 @@ public:
     /// Told when a monitored node's state changes, its first heartbeat included.
     void on_state_change(StateListener listener);
     void on_timeout(TimeoutListener listener);
+    /// Told when a heartbeat event has ended: the producer's heartbeat came again.
+    void on_error_resolved(ErrorResolvedCallback resolved) { resolved_ = std::move(resolved); }
 
 private:
     struct Monitor {
@@ -71,15 +74,19 @@ private:
         core::Duration time{};
         std::optional<NmtState> state;
         core::ScopedTimer timer;
+        ErrorCondition lost{kEmcyLifeGuardOrHeartbeat};
     };
 
     void reload();
     void reload_entry(std::uint8_t sub_index);
+    /// Stops monitoring the nodes `which` selects; their heartbeat events end.
+    void forget(const std::function<bool(const Monitor&)>& which);
     void expire(NodeId node);
 
     core::EventLoop& loop_;
     ObjectDictionary& od_;
     EmergencyCallback emergency_;
+    ErrorResolvedCallback resolved_;
     std::uint8_t port_code_;
     NmtState state_ = NmtState::Initialising;
     std::map<NodeId, Monitor> monitors_;

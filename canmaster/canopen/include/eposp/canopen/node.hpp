@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 
 namespace eposp::canopen {
@@ -88,6 +89,12 @@ std::uint8_t error_register_bits(std::uint16_t emcy_error_code);
 /// node and not move. Stored values that are refused (a damaged file) leave the defaults in
 /// place and raise EMCY 0x6320 once the node is pre-operational.
 ///
+/// Errors have a lifetime: a service's error ends when its cause does (the next RPDO or SYNC of
+/// the right length, the next heartbeat or guarding request), with the error reset EMCY 0x0000
+/// once no other cause holds the code; an NMT reset ends every error the services raised (reset
+/// node also the device's), so that 0x1001 is back at its power-on value 0, and the error reset
+/// EMCY follows the boot-up.
+///
 /// LSS (CiA 305): the node's LSS slave, addressed by NodeConfig::identity, gets every frame. A
 /// node-ID it configures becomes active at the next reset communication (right away for a
 /// node that had none, when it leaves LSS configuration), and everything that depends on the
@@ -133,7 +140,11 @@ private:
     /// Each service receives the frames of its identifiers; the table follows their changes.
     void route_frames();
     void set_nmt_state(NmtState state);
+    /// A service's error started or ended: the EMCY producer hears of its first cause and the
+    /// end of its last.
     void raise_emergency(std::uint16_t error_code);
+    void resolve_emergency(std::uint16_t error_code);
+    void end_service_errors();
     /// Stored values (or defaults) back in the communication area only, or in all of it.
     void restore_stored_values(bool communication_area_only);
     void reset_application();
@@ -155,6 +166,7 @@ private:
     std::function<void(can::ErrorState)> controller_state_handler_;
     FrameRouter router_;
     std::vector<ObjectDictionary::ListenerId> cob_id_listeners_;
+    std::map<std::uint16_t, unsigned> service_errors_; ///< error code -> causes still present
 
     NmtSlave nmt_;
     EmcyProducer emcy_;

@@ -27,9 +27,10 @@ void add_node_guarding_objects(ObjectDictionary& od);
 /// reset brings it back to 0. Life guarding starts with the first guarding request when guard
 /// time and life time factor are both non-zero: a life time (their product) without a request
 /// is a life guarding event, told to the listeners (occurred), with an EMCY 0x8130; the next
-/// request resolves it (listeners told again). A node must not use guarding and heartbeat at
-/// once: while 0x1017 is non-zero it answers no guarding request and life guarding is off
-/// (EPOS2 FW spec 8.2.6). Active in pre-operational, operational and stopped.
+/// request resolves it (listeners told again, error resolved), and so does an NMT reset. A node
+/// must not use guarding and heartbeat at once: while 0x1017 is non-zero it answers no guarding
+/// request and life guarding is off (EPOS2 FW spec 8.2.6). Active in pre-operational, operational
+/// and stopped.
 class NodeGuarding {
 public:
     /// `occurred` true: the life time elapsed without a request; false: requests came again.
@@ -48,6 +49,8 @@ public:
     /// A node-ID LSS configured, at the node's reset communication (CiA 305).
     void set_node_id(NodeId node_id) { node_id_ = node_id; }
     void on_life_guarding_event(LifeGuardingListener listener);
+    /// Told when a life guarding event has ended.
+    void on_error_resolved(ErrorResolvedCallback resolved) { resolved_ = std::move(resolved); }
 
 private:
     bool heartbeat_in_use() const;
@@ -61,10 +64,12 @@ private:
     ObjectDictionary& od_;
     NodeId node_id_;
     EmergencyCallback emergency_;
+    ErrorResolvedCallback resolved_;
+    /// A life guarding event occurred and is not resolved.
+    ErrorCondition life_guarding_event_{kEmcyLifeGuardOrHeartbeat};
     NmtState state_ = NmtState::Initialising;
     bool toggle_ = false;
     bool guarded_ = false; ///< a request came since the boot-up: life guarding runs
-    bool event_ = false;   ///< a life guarding event occurred and is not resolved
     core::ScopedTimer life_timer_;
     std::vector<LifeGuardingListener> listeners_;
     std::vector<ObjectDictionary::ListenerId> od_listeners_;

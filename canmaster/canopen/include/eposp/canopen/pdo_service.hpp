@@ -41,6 +41,8 @@ public:
     void set_nmt_state(NmtState state);
     /// Re-reads every PDO's parameters (after ObjectDictionary::reset_to_defaults).
     void reload();
+    /// Told when an error an RPDO raised has ended (Rpdo::on_error_resolved).
+    void on_error_resolved(const ErrorResolvedCallback& resolved);
 
     std::size_t rpdo_count() const { return rpdos_.size(); }
     std::size_t tpdo_count() const { return tpdos_.size(); }

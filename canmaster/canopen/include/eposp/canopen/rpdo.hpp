@@ -29,11 +29,15 @@ inline constexpr std::uint16_t kEmcyRpdoTimeout = 0x8250;       ///< deadline mi
 /// as they change.
 ///
 /// A frame shorter than the mapping is not processed and raises EMCY 0x8210; a longer one is
-/// processed with its first bytes and raises EMCY 0x8220 (CiA 301 7.2.2).
+/// processed with its first bytes and raises EMCY 0x8220 (CiA 301 7.2.2). Each error lasts
+/// until the next frame of the right length.
 ///
 /// Deadline monitoring (CiA 301 7.5.2.35, sub-index 5): with a non-zero event timer, each RPDO
-/// received starts it again; when it runs out before the next one, EMCY 0x8250 is raised. It
-/// runs from the first RPDO received in Operational.
+/// received starts it again; when it runs out before the next one, EMCY 0x8250 is raised, and
+/// the next RPDO of the right length ends it. It runs from the first RPDO received in
+/// Operational.
+///
+/// A change of the RPDO's parameters and an NMT reset (reload()) end its errors.
 ///
 /// Synchronous window (CiA 301 7.5.2.8, 0x1007): synchronous RPDOs received after the window
 /// of a SYNC closed are discarded until the next SYNC.
@@ -57,6 +61,9 @@ public:
     /// (ObjectDictionary::reset_to_defaults tells no listener).
     void reload();
 
+    /// Told when an error this RPDO raised has ended.
+    void on_error_resolved(ErrorResolvedCallback resolved) { resolved_ = std::move(resolved); }
+
     /// Told each time received data has been stored into the mapped objects (at once, or at
     /// the SYNC for a synchronous RPDO).
     void on_applied(std::function<void()> listener) { applied_.push_back(std::move(listener)); }
@@ -71,12 +78,18 @@ private:
     bool accepts(const can::Frame& frame) const;
     bool synchronous() const { return comm_.transmission_type <= kSyncCyclicMax; }
     void restart_deadline();
+    /// The errors of the last frame received, or none.
+    void report_frame_errors(bool too_short, bool too_long, bool deadline_missed);
     void apply(std::span<const std::uint8_t> data);
 
     core::EventLoop& loop_;
     ObjectDictionary& od_;
     std::size_t number_;
     EmergencyCallback emergency_;
+    ErrorResolvedCallback resolved_;
+    ErrorCondition too_short_{kEmcyPdoLengthError};
+    ErrorCondition too_long_{kEmcyPdoLengthExceeded};
+    ErrorCondition deadline_missed_{kEmcyRpdoTimeout};
     std::vector<ObjectDictionary::ListenerId> listeners_;
     std::vector<std::function<void()>> applied_;
     PdoCommunication comm_;

@@ -28,7 +28,8 @@ struct SyncEvent {
 /// has it and it is non-zero) opens with every SYNC and closes after its length: the window
 /// listeners are told then, and window_open() says whether synchronous PDOs may still be sent.
 /// When the device has 0x1019, a SYNC whose length does not match it (one byte with a counter,
-/// none without) is ignored and raises EMCY 0x8240 (CiA 301 7.2.7.1).
+/// none without) is ignored and raises EMCY 0x8240 (CiA 301 7.2.7.1), which the next SYNC of
+/// the right length or an NMT reset ends.
 class SyncConsumer {
 public:
     using SyncListener = std::function<void(const SyncEvent&)>;
@@ -47,6 +48,8 @@ public:
 
     void on_sync(SyncListener listener);
     void on_window_closed(WindowListener listener);
+    /// Told when the SYNC length error has ended.
+    void on_error_resolved(ErrorResolvedCallback resolved) { resolved_ = std::move(resolved); }
     /// True from a SYNC until its window closes; always true without a window.
     bool window_open() const;
 
@@ -57,6 +60,8 @@ private:
     core::EventLoop& loop_;
     ObjectDictionary& od_;
     EmergencyCallback emergency_;
+    ErrorResolvedCallback resolved_;
+    ErrorCondition wrong_length_{kEmcySyncDataLength};
     /// 0x1005, 0x1007 and 0x1019 as last read: every frame on the bus passes on_frame(), so
     /// they are read when written and when the NMT state changes (a reset restores them
     /// without telling listeners), not per frame.
