@@ -77,5 +77,32 @@ TEST(CheckCommand, HelpDescribesTheCommand) {
     EXPECT_THAT(result.output, HasSubstr("files"));
 }
 
+TEST(CheckCommand, AProgramImageIsSaidToBeNoSource) {
+    const std::string source = write_source("main.st", "PROGRAM Main\nEND_PROGRAM\n");
+    const std::string image = scratch("main.epx").string();
+    ASSERT_EQ(eposp("build " + source + " -o " + image).exit_code, 0);
+    // Under another name too: the magic, not the name, says it is an image.
+    const auto renamed = scratch("renamed.st");
+    std::filesystem::copy_file(image, renamed, std::filesystem::copy_options::overwrite_existing);
+    for (const std::string& path : {image, renamed.string()}) {
+        const auto result = eposp("check " + path);
+        EXPECT_EQ(result.exit_code, 1) << result.output;
+        EXPECT_THAT(result.output,
+                    HasSubstr(path + " is a program image, not Structured Text source"));
+    }
+}
+
+// An escape sequence in a source must not reach the terminal raw (it could clear the screen or
+// hide the rest of the diagnostic); it is shown as \x1b.
+TEST(CheckCommand, ControlCharactersOfTheSourceAreEscaped) {
+    const std::string main = write_source(
+        "main.st", "PROGRAM Main\n  VAR x : INT; END_VAR\n  x := \x1b[2J\r1;\nEND_PROGRAM\n");
+    const auto result = eposp("check " + main);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("\\x1b[2J\\x0d1;"));
+    EXPECT_THAT(result.output, Not(HasSubstr("\x1b")));
+    EXPECT_THAT(result.output, Not(HasSubstr("\r")));
+}
+
 } // namespace
 } // namespace eposp::device

@@ -3,7 +3,6 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
 #include <ostream>
 
 namespace eposp::device {
@@ -40,6 +39,7 @@ TEST_P(UserError, ExitsWithOneAndSaysWhy) {
     const auto result = eposp(GetParam().arguments);
     EXPECT_EQ(result.exit_code, 1) << result.output;
     EXPECT_THAT(result.output, HasSubstr(GetParam().message));
+    EXPECT_THAT(result.output, testing::Not(HasSubstr("0000000000000000000000")));
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -58,7 +58,21 @@ INSTANTIATE_TEST_SUITE_P(
                       "/no/such/file.log"},
         UserErrorCase{"UnwritableTrace", "bus --virtual --log /no/such/dir/bus.log",
                       "/no/such/dir/bus.log"},
-        UserErrorCase{"MissingCanInterface", "bus --socketcan nosuchcan7 --for 1s", "nosuchcan7"}),
+        UserErrorCase{"MissingCanInterface", "bus --socketcan nosuchcan7 --for 1s", "nosuchcan7"},
+        UserErrorCase{"UnknownSubcommand", "bogus", "'bogus' is not an eposp command"},
+        UserErrorCase{"ReplayOfAFileThatIsNoCandumpLog",
+                      "bus --virtual --for 1s --replay " EPOSP_SOURCE_DIR
+                      "/examples/two-axis/network.yaml",
+                      "network.yaml: not a candump -L log"},
+        // Ranges in digits: CLI11's own range of doubles printed 309 of them.
+        UserErrorCase{"WatchdogOutOfRange", "run main.st --watchdog 0",
+                      "'0' is not a whole number in 1..1000000000000"},
+        UserErrorCase{"NsPerInstructionThatOverflows",
+                      "run main.st --ns-per-instruction 18446744073709551615",
+                      "'18446744073709551615' is not a whole number in 0..1000000000"},
+        UserErrorCase{"CycleCostThatOverflowsTheClock",
+                      "run main.st --ns-per-instruction 1000000000 --watchdog 1000000000000",
+                      "a cycle could last longer than the virtual clock counts"}),
     [](const testing::TestParamInfo<UserErrorCase>& row) { return row.param.name; });
 
 } // namespace

@@ -37,6 +37,20 @@ inline std::string read_file(const std::filesystem::path& path) {
     return text.str();
 }
 
+/// Runs `eposp ARGUMENTS` in the background, sends it SIGINT (as Ctrl-C does) once it catches
+/// the signal (the SigCgt mask of /proc/PID/status: its run has begun; up to 30 s on a loaded
+/// machine), and returns its exit code and output.
+inline test::CommandResult eposp_interrupted(const std::string& arguments,
+                                             const std::filesystem::path& out) {
+    return test::run_command(
+        kEposp + " " + arguments + " > " + out.string() +
+        " 2>&1 & pid=$!; for i in $(seq 600); do mask=$(sed -n 's/^SigCgt:\t*//p' "
+        "/proc/$pid/status); "
+        "[ -n \"$mask\" ] && [ $(( 0x$mask & 2 )) -ne 0 ] && break; sleep 0.05; done; "
+        "kill -INT $pid; wait $pid; code=$?; cat " +
+        out.string() + "; exit $code");
+}
+
 /// A shell-script prefix that starts `eposp ARGUMENTS` (which must serve socketcand, e.g.
 /// `bus --socketcand 127.0.0.1:0`) in the background with its output in `out`, waits until it
 /// listens (up to 30 s: a loaded CI machine starts it slowly), and leaves its address in

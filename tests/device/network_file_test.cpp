@@ -264,7 +264,7 @@ TEST(RunCommand, ADirectoryAsTheNetworkFileIsAUserError) {
     std::filesystem::create_directories(directory);
     const auto result = eposp("run " + program + " --network " + directory.string());
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_THAT(result.output, HasSubstr("cannot read the file"));
+    EXPECT_THAT(result.output, HasSubstr(directory.string() + " is a directory"));
 }
 
 } // namespace

@@ -76,7 +76,7 @@ TEST(PlotCommand, RefusesWhatItCannotDrawOrMustNotOverwrite) {
     const std::string renamed = write_source("axes.svg", std::string(kTrace));
     result = eposp("plot " + renamed + " -o " + renamed);
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_NE(result.output.find("names the trace itself"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("would overwrite the input"), std::string::npos) << result.output;
     EXPECT_EQ(read_file(renamed), kTrace);
 
     result = eposp("plot " + scratch("").string() + " -o " + scratch("d.svg").string());

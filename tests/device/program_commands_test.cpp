@@ -1,5 +1,7 @@
 // `eposp build`, `dump`, `run` and `bench` as a user meets them: ST files to an image and back
 // to text, a program's tasks run in virtual time, the benchmark programs scanned.
+#include "compile_program.hpp"
+#include "eposp/vm/image_format.hpp"
 #include "eposp_command.hpp"
 
 #include <fstream>
@@ -69,6 +71,25 @@ TEST(DumpCommand, CorruptImageIsRefusedWithTheReason) {
     EXPECT_THAT(dumped.output, HasSubstr("eposp dump: error: " + image + ": image size mismatch"));
 }
 
+// An image is outside input: its names reach the terminal, so the verifier refuses one that is
+// not printable, and the error names the file.
+TEST(DumpCommand, ImageWithAnEscapeSequenceInANameIsRefusedNamingTheFile) {
+    vm::Image image = compile_program(kCounter);
+    ASSERT_FALSE(image.pous.empty());
+    image.pous.front().name = "Main\x1b[2J";
+    const auto path = scratch("escape.epx");
+    const auto bytes = vm::write_image(image);
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size()));
+    for (const char* command : {"dump ", "run "}) {
+        const auto result = eposp(command + path.string());
+        EXPECT_EQ(result.exit_code, 1) << result.output;
+        EXPECT_THAT(result.output, HasSubstr(path.string() + ": POU 0: name is not printable"));
+        EXPECT_THAT(result.output, Not(HasSubstr("\x1b")));
+    }
+}
+
 TEST(RunCommand, RunsTheTaskAtItsIntervalForTheDuration) {
     const std::string source = write_source("counter.st", kCounter);
     const auto result =
@@ -94,7 +115,7 @@ TEST(RunCommand, RunTimeErrorStopsTheTaskNamingThePouAndLine) {
         "failing.st", std::string(kCounter).replace(std::string(kCounter).find("fail : BOOL"), 11,
                                                     "fail : BOOL := TRUE"));
     const auto result = eposp("run " + source + " --for 10ms");
-    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_EQ(result.exit_code, 3) << "the program ran into an error";
     EXPECT_THAT(result.output, HasSubstr("Fast: stopped after 0 cycles: division by zero in Main "
                                          "at line 7"));
     const auto interpreted = eposp("run " + source + " --for 10ms --engine interpreter");
@@ -127,7 +148,7 @@ TEST(RunCommand, WithoutACostModelSaysTimeIsNotModelledInsteadOfZero) {
 TEST(RunCommand, OverrunsAreReportedAsTimerTaskErrors) {
     const std::string source = write_source("counter.st", kCounter);
     const auto result = eposp("run " + source + " --for 3ms --ns-per-instruction 300000");
-    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(result.exit_code, 3) << "overruns are errors of the run: " << result.output;
     // 1.2 ms per cycle in a 1 ms task: the release at 1 ms finds the first cycle running.
     EXPECT_THAT(result.output, HasSubstr("error 0x6183 at 1ms: task Fast still running when its "
                                          "next cycle was due; cycle skipped"));
@@ -143,6 +164,48 @@ TEST(RunCommand, WarmStartContinuesTheRetainVariablesOfTheLastRun) {
     EXPECT_THAT(eposp(run).output, HasSubstr("Main.n = 3"));
     EXPECT_THAT(eposp(run + " --start warm").output, HasSubstr("Main.n = 6"));
     EXPECT_THAT(eposp(run + " --start cold").output, HasSubstr("Main.n = 3"));
+}
+
+// EPOS P firmware specification: 0x6310 Retain Variable Error, a run a script must not take for
+// a good one.
+TEST(RunCommand, RetainStoreOfAnotherProgramIsARetainErrorAndExitsWithThree) {
+    const std::string first = write_source(
+        "first.st", "PROGRAM Main\n  VAR RETAIN n : DINT; END_VAR\n  n := n + 1;\nEND_PROGRAM\n");
+    const std::string second = write_source(
+        "second.st", "PROGRAM Main\n  VAR RETAIN n : LINT; END_VAR\n  n := n + 1;\nEND_PROGRAM\n");
+    const std::string retain = scratch("retain.bin").string();
+    std::filesystem::remove(retain);
+    ASSERT_EQ(eposp("run " + first + " --for 5ms --retain " + retain).exit_code, 0);
+    const auto result = eposp("run " + second + " --for 5ms --start warm --retain " + retain);
+    EXPECT_EQ(result.exit_code, 3) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("error 0x6310"));
+}
+
+TEST(RunCommand, CtrlCPrintsTheStatisticsSoFarAndExitsWith130) {
+    const std::string source = write_source("counter.st", kCounter);
+    const auto result =
+        eposp_interrupted("run " + source + " --for 1000000s --watch Inst0.count", scratch("out"));
+    EXPECT_EQ(result.exit_code, 130) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("interrupted after "));
+    EXPECT_THAT(result.output, HasSubstr("Fast: "));
+    EXPECT_THAT(result.output, HasSubstr("Inst0.count = "));
+}
+
+TEST(RunCommand, WatchMayComeBeforeTheFiles) {
+    const std::string source = write_source("counter.st", kCounter);
+    const auto result = eposp("run --watch Inst0.count " + source + " --for 10ms");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("Inst0.count = 11"));
+}
+
+TEST(RunCommand, AnImageWithoutTasksSaysThatNothingRan) {
+    const std::string source =
+        write_source("function.st", "FUNCTION Twice : INT\n  VAR_INPUT x : INT; END_VAR\n"
+                                    "  Twice := 2 * x;\nEND_FUNCTION\n");
+    const std::string image = scratch("function.epx").string();
+    ASSERT_EQ(eposp("build " + source + " -o " + image).exit_code, 0);
+    const auto result = eposp("run " + image + " --for 10ms");
+    EXPECT_THAT(result.output, HasSubstr("the program has no task: nothing ran"));
 }
 
 TEST(RunCommand, WatchShowsCharactersAsLiteralsLikeStrings) {
@@ -252,6 +315,15 @@ TEST(BenchCommand, BothEnginesGiveTheTableResults) {
         EXPECT_EQ(result.exit_code, 0) << engine << ": " << result.output;
         EXPECT_THAT(result.output, HasSubstr("cycles=100 ")) << engine;
     }
+}
+
+TEST(BenchCommand, CtrlCPrintsTheFiguresOfTheScansDoneAndExitsWith130) {
+    const auto result = eposp_interrupted("bench " + std::string(EPOSP_SOURCE_DIR) +
+                                              "/tests/compiler/inputs/sieve.st --scans 1000000000",
+                                          scratch("out"));
+    EXPECT_EQ(result.exit_code, 130) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("us_per_scan="));
+    EXPECT_THAT(result.output, HasSubstr(" of 1000000000 scans"));
 }
 
 TEST(BenchCommand, UnknownEngineIsRefused) {

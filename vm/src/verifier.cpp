@@ -344,10 +344,52 @@ Defect verify_types_and_symbols(const Image& image) {
     return {};
 }
 
+// Names reach terminals (dump, run summaries, watch): printable ASCII only, so that an image
+// cannot carry escape sequences. The defect does not quote the name, for the same reason.
+bool printable(const std::string& name) {
+    return std::ranges::all_of(name, [](char c) { return c >= 0x20 && c <= 0x7E; });
+}
+
+Defect verify_names(const Image& image) {
+    for (std::size_t i = 0; i < image.pous.size(); ++i) {
+        if (!printable(image.pous[i].name)) {
+            return defect("POU " + std::to_string(i) + ": name is not printable ASCII");
+        }
+    }
+    for (std::size_t i = 0; i < image.tasks.size(); ++i) {
+        if (!printable(image.tasks[i].name)) {
+            return defect("task " + std::to_string(i) + ": name is not printable ASCII");
+        }
+    }
+    for (std::size_t i = 0; i < image.types.size(); ++i) {
+        const TypeDescriptor& type = image.types[i];
+        const bool fields = std::ranges::all_of(
+            type.fields, [](const TypeField& field) { return printable(field.name); });
+        const bool enumerators = std::ranges::all_of(
+            type.enumerators, [](const Enumerator& value) { return printable(value.name); });
+        if (!printable(type.name) || !fields || !enumerators) {
+            return defect("type " + std::to_string(i) +
+                          ": a name (type, field or enumerator) is not printable ASCII");
+        }
+    }
+    for (std::size_t i = 0; i < image.symbols.size(); ++i) {
+        if (!printable(image.symbols[i].path)) {
+            return defect("symbol " + std::to_string(i) + ": path is not printable ASCII");
+        }
+    }
+    for (std::size_t i = 0; i < image.imports.size(); ++i) {
+        if (!printable(image.imports[i].name)) {
+            return defect("native import " + std::to_string(i) + ": name is not printable ASCII");
+        }
+    }
+    return {};
+}
+
 } // namespace
 
 std::optional<core::Error> verify(const Image& image) {
-    for (auto* step : {verify_static, verify_pous, verify_tasks, verify_types_and_symbols}) {
+    for (auto* step :
+         {verify_names, verify_static, verify_pous, verify_tasks, verify_types_and_symbols}) {
         if (auto d = step(image)) {
             return d;
         }

@@ -1,8 +1,13 @@
 #include "cli.hpp"
 #include "commands.hpp"
+#include "terminal_text.hpp"
 #include "version.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <fmt/format.h>
+#include <string_view>
 
 namespace eposp::device {
 
@@ -26,6 +31,21 @@ int run_cli(int argc, char** argv) {
     cli::add_bench_command(app, exit_code);
     cli::add_plot_command(app, exit_code);
 
+    // CLI11 would only say that a subcommand is required; the user wants to know which word
+    // was not one.
+    if (argc > 1 && argv[1][0] != '-') {
+        const std::string_view name = argv[1];
+        const CLI::App& commands = app;
+        const auto known = commands.get_subcommands([](const CLI::App*) { return true; });
+        if (std::ranges::none_of(known,
+                                 [name](const CLI::App* sub) { return sub->get_name() == name; })) {
+            fmt::print(stderr,
+                       "eposp: error: '{}' is not an eposp command (eposp --help lists "
+                       "them)\n",
+                       cli::terminal_text(name));
+            return 1;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {

@@ -2,8 +2,10 @@
 // virtual clock (so TON sees each task interval pass per scan), timed on the wall clock; prints the
 // program's global variables and the microseconds per scan, the figure the VM is judged by.
 #include "commands.hpp"
-#include "options.hpp"
 #include "eposp/device/plc.hpp"
+#include "exit_codes.hpp"
+#include "interruptible_run.hpp"
+#include "options.hpp"
 #include "program_input.hpp"
 
 #include <algorithm>
@@ -16,6 +18,8 @@ namespace eposp::device::cli {
 namespace {
 
 constexpr std::string_view kCommand = "bench";
+// Scans between two looks for Ctrl-C.
+constexpr std::int64_t kScansPerInterruptCheck = 10'000;
 
 struct BenchOptions {
     std::vector<std::string> paths;
@@ -92,9 +96,12 @@ int run_bench(const BenchOptions& options) {
     if (const auto error = plc.runtime().start(vm::StartMode::Cold)) {
         return report_user_error(kCommand, error->message);
     }
-    loop.run_until(last_scan);
+    // Ctrl-C ends a long benchmark early; the figures are those of the scans done by then.
+    const bool interrupted =
+        run_until_interrupted(loop, last_scan, interval * kScansPerInterruptCheck);
     const std::chrono::duration<double, std::micro> wall =
         std::chrono::steady_clock::now() - wall_start;
+    const std::uint64_t scans = plc.runtime().statistics(*pacing).cycles;
 
     if (plc.runtime().task_faulted(*pacing)) {
         return report_user_error(kCommand, plc.runtime().fault_text(*pacing));
@@ -105,8 +112,13 @@ int run_bench(const BenchOptions& options) {
                        bench_value(plc, symbol));
         }
     }
-    fmt::print("us_per_scan={:.3f}\n", wall.count() / static_cast<double>(options.scans));
-    return 0;
+    const std::uint64_t timed = interrupted ? std::max<std::uint64_t>(scans, 1) : options.scans;
+    fmt::print("us_per_scan={:.3f}\n", wall.count() / static_cast<double>(timed));
+    if (interrupted) {
+        fmt::print("interrupted after {} of {} scans\n", scans, options.scans);
+        return kExitInterrupted;
+    }
+    return kExitSuccess;
 }
 
 } // namespace

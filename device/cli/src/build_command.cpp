@@ -1,13 +1,14 @@
 // `eposp build FILES… [-o app.epx]`: compiles the Structured Text files of one program into a
 // program image, the file `eposp run`, `eposp dump` and a download take.
 #include "commands.hpp"
+#include "eposp/core/durable_file.hpp"
 #include "eposp/vm/image_format.hpp"
+#include "file_checks.hpp"
 #include "options.hpp"
 #include "program_input.hpp"
 
 #include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
 #include <memory>
 
 namespace eposp::device::cli {
@@ -18,6 +19,7 @@ constexpr std::string_view kCommand = "build";
 struct BuildOptions {
     std::vector<std::string> paths;
     std::string output; // empty: the first file's name with .epx
+    bool force = false;
 };
 
 int run_build(const BuildOptions& options) {
@@ -29,12 +31,13 @@ int run_build(const BuildOptions& options) {
         options.output.empty()
             ? std::filesystem::path(options.paths.front()).replace_extension(".epx").string()
             : options.output;
+    if (auto problem = output_file_problem({"-o", output, OutputKind::ProgramImage}, options.paths,
+                                           options.force)) {
+        return report_user_error(kCommand, *problem);
+    }
     const auto bytes = vm::write_image(*image);
-    std::ofstream out(output, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()),
-              static_cast<std::streamsize>(bytes.size()));
-    if (!out.flush()) {
-        return report_user_error(kCommand, "cannot write " + output);
+    if (auto error = core::write_file_durably(output, bytes)) {
+        return report_user_error(kCommand, error->message);
     }
     const auto count = [](std::size_t n, std::string_view what) {
         return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
@@ -53,6 +56,7 @@ void add_build_command(CLI::App& app, int& exit_code) {
     command->add_option("files", options->paths, "The .st files of the program")->required();
     command->add_option("-o,--output", options->output,
                         "The image file to write (default: the first file with .epx)");
+    add_force_option(*command, options->force);
     command->callback([options, &exit_code] { exit_code = run_build(*options); });
 }
 

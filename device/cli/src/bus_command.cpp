@@ -6,9 +6,12 @@
 #include "eposp/device/hosted_bus.hpp"
 #include "options.hpp"
 
+#include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace eposp::device::cli {
 namespace {
@@ -21,6 +24,13 @@ struct BusOptions {
 };
 
 int run_bus(const BusOptions& options) {
+    std::vector<std::string> inputs;
+    if (options.replay) {
+        inputs.push_back(*options.replay);
+    }
+    if (auto problem = hosted_bus_outputs_problem(options.hosting, inputs)) {
+        return report_user_error(kCommand, *problem);
+    }
     auto hosted = HostedBus::open(options.hosting);
     if (!hosted) {
         return report_user_error(kCommand, hosted.error());
@@ -32,6 +42,15 @@ int run_bus(const BusOptions& options) {
         auto records = can::read_candump_log_file(*options.replay);
         if (!records) {
             return report_user_error(kCommand, records.error());
+        }
+        // The reader skips lines that are not frames, as canplayer does; a file with no frame
+        // at all is another kind of file given by mistake.
+        std::error_code error;
+        if (records->empty() && std::filesystem::file_size(*options.replay, error) > 0) {
+            return report_user_error(kCommand,
+                                     fmt::format("--replay {}: not a candump -L log (no line like "
+                                                 "\"(1.000000) can0 123#DEADBEEF\")",
+                                                 *options.replay));
         }
         replay = std::make_unique<can::CandumpReplay>(host.loop(), host.attach("replay"),
                                                       std::move(*records));

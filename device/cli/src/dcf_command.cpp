@@ -7,12 +7,13 @@
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/network_file.hpp"
 #include "eposp/manager/concise_dcf.hpp"
+#include "file_checks.hpp"
 #include "options.hpp"
 
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
-#include <span>
+#include <vector>
 
 namespace eposp::device::cli {
 namespace {
@@ -22,18 +23,38 @@ constexpr std::string_view kCommand = "dcf";
 struct DcfOptions {
     std::string network;
     std::string directory = ".";
+    bool force = false;
 };
 
-std::optional<core::Error> write_bytes(const std::filesystem::path& path,
-                                       std::span<const std::uint8_t> bytes) {
-    if (auto error = core::write_file_durably(path, bytes)) {
-        return error;
+struct DcfFile {
+    OutputFile file;
+    std::vector<std::uint8_t> bytes;
+};
+
+// All are checked before the first is written: a refusal leaves none half replaced.
+std::optional<std::string> write_files(const std::vector<DcfFile>& files,
+                                       const DcfOptions& options) {
+    std::vector<OutputFile> outputs;
+    for (const DcfFile& dcf : files) {
+        outputs.push_back(dcf.file);
     }
-    fmt::print("wrote {}\n", path.string());
+    const std::string inputs[] = {options.network};
+    if (auto problem = output_files_problem(outputs, inputs, options.force)) {
+        return problem;
+    }
+    for (const DcfFile& dcf : files) {
+        if (auto error = core::write_file_durably(dcf.file.path, dcf.bytes)) {
+            return error->message;
+        }
+        fmt::print("wrote {}\n", dcf.file.path);
+    }
     return std::nullopt;
 }
 
 int write_dcfs(const DcfOptions& options) {
+    if (auto problem = input_file_problem(options.network, "a network file")) {
+        return report_user_error(kCommand, "--network " + *problem);
+    }
     auto network = load_network_file(options.network);
     if (!network) {
         return report_user_error(kCommand, network.error());
@@ -43,7 +64,8 @@ int write_dcfs(const DcfOptions& options) {
     std::filesystem::create_directories(directory, error);
     if (error || !std::filesystem::is_directory(directory)) {
         return report_user_error(
-            kCommand, fmt::format("-o {}: not a directory the files can go into", options.directory));
+            kCommand,
+            fmt::format("-o {}: not a directory the files can go into", options.directory));
     }
     EposPConfig config;
     config.node_id = network->node_id;
@@ -57,21 +79,21 @@ int write_dcfs(const DcfOptions& options) {
         .baudrate_kbit = network->bit_rate / 1000,
         .network_name = std::filesystem::path(options.network).stem().string(),
         .canopen_manager = true};
-    const std::string dcf = canopen::export_dcf(device.objects(), epos_p_device_info(), commissioning);
-    const auto text = std::as_bytes(std::span(dcf));
-    if (auto failed = write_bytes(directory / "epos-p.dcf",
-                                  {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()})) {
-        return report_user_error(kCommand, failed->message);
-    }
+    const std::string dcf =
+        canopen::export_dcf(device.objects(), epos_p_device_info(), commissioning);
+    std::vector<DcfFile> files{
+        {{"-o", (directory / "epos-p.dcf").string(), OutputKind::DeviceDescription},
+         {dcf.begin(), dcf.end()}}};
     for (const std::uint8_t port : {kInternalPort, kExternalPort}) {
         for (const manager::SlaveEntry& slave : device.network_list(port).slaves) {
-            const auto name = fmt::format("{}-node{}.cdcf", port == kInternalPort ? "internal" : "can",
-                                          slave.node_id);
-            if (auto failed = write_bytes(directory / name,
-                                          manager::encode_concise_dcf(slave.configuration))) {
-                return report_user_error(kCommand, failed->message);
-            }
+            const auto name = fmt::format(
+                "{}-node{}.cdcf", port == kInternalPort ? "internal" : "can", slave.node_id);
+            files.push_back({{"-o", (directory / name).string(), OutputKind::ConciseDcf},
+                             manager::encode_concise_dcf(slave.configuration)});
         }
+    }
+    if (auto problem = write_files(files, options)) {
+        return report_user_error(kCommand, *problem);
     }
     return 0;
 }
@@ -86,6 +108,7 @@ void add_dcf_command(CLI::App& app, int& exit_code) {
         ->required();
     command->add_option("-o,--output", options->directory, "The directory to write them into")
         ->capture_default_str();
+    add_force_option(*command, options->force);
     command->callback([options, &exit_code] { exit_code = write_dcfs(*options); });
 }
 

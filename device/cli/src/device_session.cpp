@@ -5,53 +5,49 @@
 #include "eposp/device/axis_trace.hpp"
 #include "eposp/device/trace_files.hpp"
 #include "eposp/manager/boot_error.hpp"
+#include "exit_codes.hpp"
+#include "file_checks.hpp"
 #include "options.hpp"
 #include "program_input.hpp"
+#include "terminal_text.hpp"
 
 #include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
+#include <tuple>
 
 namespace eposp::device::cli {
 namespace {
 
 constexpr core::Duration kTracePeriodWithoutSync = std::chrono::milliseconds(1);
+// A second per instruction is slower than any controller; the bounds keep the cost of a cycle
+// (instructions times cost) within the virtual clock's 64-bit nanoseconds.
+constexpr std::uint64_t kMaxNsPerInstruction = 1'000'000'000;
+constexpr std::uint64_t kMaxWatchdog = 1'000'000'000'000;
 
 bool network_has_events(const std::optional<NetworkFile>& network) {
     return network && !network->events.empty();
 }
 
-// A file the run writes must not be one it reads: a typo would destroy the program or the network.
-std::optional<std::string> overwrites_an_input(const SessionOptions& options) {
+// A file the run writes must not be one it reads (a typo would destroy the program or the
+// network), nor an existing file of another kind.
+std::optional<std::string> output_problem(const SessionOptions& options) {
     std::vector<std::string> inputs = options.paths;
     if (options.network) {
         inputs.push_back(*options.network);
     }
-    if (options.retain_file) {
-        inputs.push_back(*options.retain_file);
+    std::vector<OutputFile> outputs;
+    const std::tuple<const char*, const std::optional<std::string>*, OutputKind> written[] = {
+        {"--retain", &options.retain_file, OutputKind::RetainStore},
+        {"--trace", &options.trace, OutputKind::AxisTrace},
+        {"--can-log", &options.can_log, OutputKind::CandumpLog},
+        {"--pcap", &options.pcap, OutputKind::Pcap}};
+    for (const auto& [option, path, kind] : written) {
+        if (*path) {
+            outputs.push_back({option, **path, kind});
+        }
     }
-    const std::pair<const char*, const std::optional<std::string>*> outputs[] = {
-        {"--trace", &options.trace}, {"--can-log", &options.can_log}, {"--pcap", &options.pcap}};
-    std::vector<std::string> written;
-    for (const auto& [option, path] : outputs) {
-        if (!*path) {
-            continue;
-        }
-        for (const std::string& input : inputs) {
-            std::error_code error;
-            if (std::filesystem::equivalent(**path, input, error)) {
-                return fmt::format("{} {} would overwrite the input {}", option, **path, input);
-            }
-        }
-        for (const std::string& other : written) {
-            std::error_code error;
-            if (other == **path || std::filesystem::equivalent(**path, other, error)) {
-                return fmt::format("{} {}: that file is written twice", option, **path);
-            }
-        }
-        written.push_back(**path);
-    }
-    return std::nullopt;
+    return output_files_problem(outputs, inputs, options.force);
 }
 
 std::string statistics_line(const vm::TaskStatistics& s, std::uint64_t ns_per_instruction) {
@@ -73,6 +69,11 @@ std::string statistics_line(const vm::TaskStatistics& s, std::uint64_t ns_per_in
 
 void print_task_summary(Plc& plc, std::uint64_t ns_per_instruction) {
     const auto& tasks = plc.image().tasks;
+    if (tasks.empty()) {
+        fmt::print("  the program has no task: nothing ran (a CONFIGURATION's TASK runs a "
+                   "PROGRAM)\n");
+        return;
+    }
     vm::PlcRuntime& runtime = plc.runtime();
     for (std::size_t task = 0; task < tasks.size(); ++task) {
         const vm::Task& spec = tasks[task];
@@ -83,7 +84,7 @@ void print_task_summary(Plc& plc, std::uint64_t ns_per_instruction) {
                 : std::string("on its event");
         if (runtime.task_faulted(task)) {
             fmt::print("  {}: stopped after {} cycles: {}\n", spec.name, statistics.cycles,
-                       runtime.fault_text(task));
+                       terminal_text(runtime.fault_text(task)));
         } else {
             fmt::print("  {}: {} cycles, {} (priority {})\n", spec.name, statistics.cycles, when,
                        spec.priority);
@@ -95,7 +96,7 @@ void print_task_summary(Plc& plc, std::uint64_t ns_per_instruction) {
 void print_errors(const Plc& plc) {
     for (const RaisedError& error : plc.errors()) {
         fmt::print("  error 0x{:04X} at {}: {}\n", error.code,
-                   core::format_duration(error.when.time_since_epoch()), error.text);
+                   core::format_duration(error.when.time_since_epoch()), terminal_text(error.text));
     }
 }
 
@@ -141,8 +142,8 @@ void print_boot_report(const EposP& device, const NetworkFile& network) {
                                           : "held back: a mandatory slave did not boot");
         for (const manager::SlaveBootResult& slave : report.slaves) {
             // Microseconds: a real-time run's times are not round.
-            const std::string when = core::format_duration(
-                std::chrono::duration_cast<std::chrono::microseconds>(
+            const std::string when =
+                core::format_duration(std::chrono::duration_cast<std::chrono::microseconds>(
                     slave.finished.time_since_epoch()));
             if (slave.error) {
                 fmt::print("  node {}: failed at {}: 0x{:04X} {}\n", slave.node, when,
@@ -182,9 +183,8 @@ DeviceSession::open_traces(const SessionOptions& options, EposP& device,
         if (!output) {
             return core::Error{fmt::format("--trace: {}", output.error())};
         }
-        const core::Duration period = network && network->sync_period
-                                          ? *network->sync_period
-                                          : kTracePeriodWithoutSync;
+        const core::Duration period =
+            network && network->sync_period ? *network->sync_period : kTracePeriodWithoutSync;
         traces->axes = std::make_unique<AxisTrace>(device.loop(), std::move(*output),
                                                    device.simulated_axes(), period);
     }
@@ -199,17 +199,21 @@ void add_session_options(CLI::App& command, SessionOptions& options, bool progra
     }
     command.add_option("--network", options.network,
                        "The CANopen network (YAML, docs/network.md): slaves, checks, axes");
-    command.add_option("--watch", options.watch,
-                       "Print this variable at the end (e.g. Inst0.counter); repeatable");
+    // One variable per --watch, so that FILES may follow it.
+    command
+        .add_option("--watch", options.watch,
+                    "Print this variable at the end (e.g. Inst0.counter); repeatable")
+        ->allow_extra_args(false);
     command
         .add_option("--ns-per-instruction", options.ns_per_instruction,
                     "Virtual time one VM instruction takes (0: cycles take no time and "
                     "their execution time is not modelled)")
+        ->check(whole_number_in(0, kMaxNsPerInstruction))
         ->capture_default_str();
     command
         .add_option("--watchdog", options.watchdog,
                     "Instructions one task cycle may execute before it is stopped")
-        ->check(CLI::PositiveNumber)
+        ->check(whole_number_in(1, kMaxWatchdog))
         ->capture_default_str();
     command.add_option("--retain", options.retain_file,
                        "File the RETAIN variables are kept in between runs");
@@ -223,12 +227,25 @@ void add_session_options(CLI::App& command, SessionOptions& options, bool progra
     command.add_option("--pcap", options.pcap,
                        "Record the CAN bus of port 2 as a pcap (LINKTYPE_CAN_SOCKETCAN) to FILE");
     add_engine_option(command, options.engine);
+    add_force_option(command, options.force);
 }
 
 core::Result<std::unique_ptr<DeviceSession>> DeviceSession::open(const SessionOptions& options,
                                                                  core::Pace pace) {
-    if (auto problem = overwrites_an_input(options)) {
+    if (auto problem = output_problem(options)) {
         return core::Error{*problem};
+    }
+    if (options.ns_per_instruction >
+        static_cast<std::uint64_t>(core::Duration::max().count()) / options.watchdog) {
+        return core::Error{fmt::format(
+            "--ns-per-instruction {} with --watchdog {}: a cycle could last longer than the "
+            "virtual clock counts",
+            options.ns_per_instruction, options.watchdog)};
+    }
+    if (options.network) {
+        if (auto problem = input_file_problem(*options.network, "a network file")) {
+            return core::Error{"--network " + *problem};
+        }
     }
     std::optional<vm::Image> image;
     if (!options.paths.empty()) {
@@ -322,8 +339,11 @@ int DeviceSession::finish(std::string_view command) {
         print_task_summary(plc, options_.ns_per_instruction);
         print_errors(plc);
         for (const std::string& path : options_.watch) {
-            fmt::print("{} = {}\n", path, *plc.value_of(path));
+            fmt::print("{} = {}\n", path, terminal_text(*plc.value_of(path)));
         }
+        // Every fault stops its task and raises an error too: overruns, retain failures and
+        // faults all end here.
+        failed = !plc.errors().empty();
         for (std::size_t task = 0; task < plc.image().tasks.size(); ++task) {
             failed = failed || plc.runtime().task_faulted(task);
         }
@@ -332,7 +352,7 @@ int DeviceSession::finish(std::string_view command) {
         report_user_error(command, fmt::format("--trace {}: write failed", *options_.trace));
         failed = true;
     }
-    return failed ? 1 : 0;
+    return failed ? kExitDeviceErrors : kExitSuccess;
 }
 
 } // namespace eposp::device::cli

@@ -30,6 +30,7 @@ struct SessionOptions {
     std::optional<std::string> trace;
     std::optional<std::string> can_log;
     std::optional<std::string> pcap;
+    bool force = false; ///< replace existing output files of another kind
 };
 
 /// Adds FILES (required or not) and the options of SessionOptions to `command`.
@@ -50,8 +51,9 @@ public:
     /// them alone.
     std::optional<core::Error> start();
     /// Stops the program (saving its RETAIN variables) and prints the boot report, each task's
-    /// statistics, the errors raised and the watched variables; the exit code: 1 when a task
-    /// faulted or a trace could not be written.
+    /// statistics, the errors raised and the watched variables; the exit code: kExitDeviceErrors
+    /// when the program raised an error (a task fault, an overrun, a retain failure) or a trace
+    /// could not be written.
     int finish(std::string_view command);
 
 private:

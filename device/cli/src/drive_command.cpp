@@ -1,14 +1,17 @@
 // `eposp drive epos2`: one simulated maxon EPOS2 on a simulated CAN bus, hosted like `eposp bus`
 // (socketcand, SocketCAN bridge, traces), so that outside CANopen masters can drive it.
 #include "commands.hpp"
+#include "eposp/device/hosted_bus.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
 #include "eposp/drives/plant/axis_file.hpp"
-#include "eposp/device/hosted_bus.hpp"
+#include "file_checks.hpp"
 #include "options.hpp"
 
 #include <cstdio>
 #include <fmt/format.h>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace eposp::device::cli {
 namespace {
@@ -25,6 +28,16 @@ int run_drive(const DriveOptions& options) {
     if (options.hosting.virtual_time && !options.hosting.duration) {
         // The drive's control loop never idles: a virtual run needs an end.
         return report_user_error(kCommand, "--virtual needs --for DURATION");
+    }
+    std::vector<std::string> inputs;
+    if (!options.config.empty()) {
+        if (auto problem = input_file_problem(options.config, "a machine's YAML file")) {
+            return report_user_error(kCommand, "--config " + *problem);
+        }
+        inputs.push_back(options.config);
+    }
+    if (auto problem = hosted_bus_outputs_problem(options.hosting, inputs)) {
+        return report_user_error(kCommand, *problem);
     }
     drives::epos2::Epos2DriveConfig config;
     config.dictionary.node_id = static_cast<canopen::NodeId>(options.node_id);

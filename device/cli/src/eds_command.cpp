@@ -5,6 +5,7 @@
 #include "eposp/core/durable_file.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/drives/epos2/epos2_eds.hpp"
+#include "file_checks.hpp"
 #include "options.hpp"
 
 #include <fmt/format.h>
@@ -19,6 +20,7 @@ namespace {
 struct EdsOptions {
     std::string device;
     std::optional<std::string> output;
+    bool force = false;
 };
 
 int write_eds(const EdsOptions& options) {
@@ -26,6 +28,10 @@ int write_eds(const EdsOptions& options) {
     if (!options.output) {
         fmt::print("{}", text);
         return 0;
+    }
+    if (auto problem = output_file_problem({"-o", *options.output, OutputKind::DeviceDescription},
+                                           {}, options.force)) {
+        return report_user_error("eds", *problem);
     }
     const auto bytes = std::as_bytes(std::span(text));
     if (const auto error = core::write_file_durably(
@@ -45,6 +51,7 @@ void add_eds_command(CLI::App& app, int& exit_code) {
         ->required()
         ->check(CLI::IsMember({"epos-p", "epos2"}));
     command->add_option("-o,--output", options->output, "Write to FILE instead of stdout");
+    add_force_option(*command, options->force);
     command->callback([options, &exit_code] { exit_code = write_eds(*options); });
 }
 

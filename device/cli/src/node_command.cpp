@@ -6,6 +6,7 @@
 #include "eposp/canopen/nmt_protocol.hpp"
 #include "eposp/canopen/node.hpp"
 #include "eposp/device/hosted_bus.hpp"
+#include "file_checks.hpp"
 #include "options.hpp"
 
 #include <cerrno>
@@ -15,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 namespace eposp::device::cli {
 namespace {
@@ -80,7 +82,28 @@ canopen::NodeConfig node_config(const NodeOptions& options, const canopen::Impor
     return config;
 }
 
+// The EDS is read and the parameter file both read and written: neither may be a trace, and the
+// parameter file is replaced only when it is one (file_checks.hpp).
+std::optional<std::string> files_problem(const NodeOptions& options) {
+    if (auto problem = input_file_problem(options.eds, "an EDS file")) {
+        return "--eds " + *problem;
+    }
+    std::vector<std::string> inputs{options.eds};
+    if (options.parameter_file) {
+        if (auto problem = output_file_problem(
+                {"--parameter-file", *options.parameter_file, OutputKind::ParameterFile}, inputs,
+                options.hosting.force)) {
+            return problem;
+        }
+        inputs.push_back(*options.parameter_file);
+    }
+    return hosted_bus_outputs_problem(options.hosting, inputs);
+}
+
 int run_node(const NodeOptions& options) {
+    if (auto problem = files_problem(options)) {
+        return report_user_error(kCommand, *problem);
+    }
     const auto text = read_text_file(options.eds);
     if (!text) {
         return report_user_error(kCommand, text.error());

@@ -1,13 +1,33 @@
 #include "options.hpp"
 
+#include "file_checks.hpp"
+#include "terminal_text.hpp"
+
+#include <charconv>
 #include <cstdio>
 #include <fmt/format.h>
+#include <vector>
 
 namespace eposp::device::cli {
 
 int report_user_error(std::string_view command, std::string_view message) {
-    fmt::print(stderr, "eposp {}: error: {}\n", command, message);
+    fmt::print(stderr, "eposp {}: error: {}\n", command, terminal_text(message));
     return 1;
+}
+
+CLI::Validator whole_number_in(std::uint64_t lowest, std::uint64_t highest) {
+    const std::string range = fmt::format("{}..{}", lowest, highest);
+    return CLI::Validator(
+        [lowest, highest, range](std::string& input) -> std::string {
+            std::uint64_t value = 0;
+            const char* end = input.data() + input.size();
+            const auto [stop, error] = std::from_chars(input.data(), end, value);
+            if (error != std::errc{} || stop != end || value < lowest || value > highest) {
+                return fmt::format("'{}' is not a whole number in {}", input, range);
+            }
+            return {};
+        },
+        range);
 }
 
 CLI::Option* add_duration_option(CLI::App& command, const std::string& name,
@@ -60,6 +80,19 @@ void add_hosted_bus_options(CLI::App& command, HostedBusOptions& options) {
                         "run has nothing left to do)");
     command.add_flag("--virtual", options.virtual_time,
                      "Run in virtual time, as fast as the CPU allows (no outside clients)");
+    add_force_option(command, options.force);
+}
+
+std::optional<std::string> hosted_bus_outputs_problem(const HostedBusOptions& options,
+                                                      std::span<const std::string> inputs) {
+    std::vector<OutputFile> outputs;
+    if (options.log) {
+        outputs.push_back({"--log", *options.log, OutputKind::CandumpLog});
+    }
+    if (options.pcap) {
+        outputs.push_back({"--pcap", *options.pcap, OutputKind::Pcap});
+    }
+    return output_files_problem(outputs, inputs, options.force);
 }
 
 } // namespace eposp::device::cli

@@ -3,6 +3,7 @@
 // position.
 #include "commands.hpp"
 #include "eposp/device/axis_plot.hpp"
+#include "file_checks.hpp"
 #include "options.hpp"
 
 #include <filesystem>
@@ -17,19 +18,22 @@ namespace {
 struct PlotOptions {
     std::string trace;
     std::string output;
+    bool force = false;
 };
 
 core::Result<std::string> plot(const PlotOptions& options) {
     if (!options.output.ends_with(".svg")) {
         return core::Error{"-o: the plot is an SVG picture: name it .svg (" + options.output + ")"};
     }
+    if (auto problem = input_file_problem(options.trace, "an axis trace")) {
+        return core::Error{*problem};
+    }
+    const std::string inputs[] = {options.trace};
+    if (auto problem = output_file_problem({"-o", options.output, OutputKind::SvgPicture}, inputs,
+                                           options.force)) {
+        return core::Error{*problem};
+    }
     std::error_code error;
-    if (std::filesystem::equivalent(options.trace, options.output, error)) {
-        return core::Error{"-o names the trace itself: " + options.output};
-    }
-    if (std::filesystem::is_directory(options.trace)) {
-        return core::Error{options.trace + " is a directory, not an axis trace"};
-    }
     std::ifstream in(options.trace);
     if (!in) {
         return core::Error{"cannot open " + options.trace};
@@ -64,6 +68,7 @@ void add_plot_command(CLI::App& app, int& exit_code) {
         app.add_subcommand("plot", "Draw an axis trace (eposp run --trace) as an SVG picture");
     command->add_option("trace", options->trace, "The axis trace, a CSV file")->required();
     command->add_option("-o,--output", options->output, "The picture to write (.svg)")->required();
+    add_force_option(*command, options->force);
     command->callback([options, &exit_code] {
         const auto result = plot(*options);
         if (!result) {

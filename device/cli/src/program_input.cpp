@@ -2,6 +2,9 @@
 
 #include "eposp/device/program_compiler.hpp"
 #include "eposp/vm/image_format.hpp"
+#include "eposp/vm/verifier.hpp"
+#include "file_checks.hpp"
+#include "terminal_text.hpp"
 
 #include <fmt/format.h>
 #include <fstream>
@@ -14,7 +17,17 @@ bool is_image_file(const std::string& path) {
     return path.ends_with(".epx");
 }
 
+// An image under another name is still no source: its magic says what it is.
+bool starts_like_an_image(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    return in.read(magic, sizeof magic) && std::string_view(magic, sizeof magic) == "EPXI";
+}
+
 core::Result<vm::Image> read_image_file(const std::string& path) {
+    if (auto problem = input_file_problem(path, "a program image")) {
+        return core::Error{*problem};
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         return core::Error{"cannot open " + path};
@@ -24,6 +37,11 @@ core::Result<vm::Image> read_image_file(const std::string& path) {
     auto image = vm::read_image(bytes);
     if (!image) {
         return core::Error{path + ": " + image.error()};
+    }
+    // Verified here, not only when loaded, so that no command (dump too) shows a malformed
+    // image, and the error names the file.
+    if (auto defect = vm::verify(*image)) {
+        return core::Error{path + ": " + defect->message};
     }
     return image;
 }
@@ -35,6 +53,13 @@ core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths) {
     compiler::Diagnostics diagnostics;
     std::vector<compiler::FileId> files;
     for (const std::string& path : paths) {
+        if (auto problem = input_file_problem(path, "a Structured Text source")) {
+            return core::Error{*problem};
+        }
+        if (is_image_file(path) || starts_like_an_image(path)) {
+            return core::Error{path + " is a program image, not Structured Text source (eposp "
+                                      "dump shows what it holds)"};
+        }
         auto file = sources.load(path);
         if (!file) {
             return core::Error{file.error()};
@@ -42,7 +67,7 @@ core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths) {
         files.push_back(*file);
     }
     auto image = compile_program(sources, files, diagnostics);
-    fmt::print(stderr, "{}", compiler::render(diagnostics, sources));
+    fmt::print(stderr, "{}", terminal_text(compiler::render(diagnostics, sources)));
     if (!image) {
         return core::Error{
             fmt::format("{} has errors", paths.size() == 1 ? paths.front() : "the program")};

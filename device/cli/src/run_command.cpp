@@ -5,6 +5,8 @@
 // each task's statistics, the errors raised and the watched variables.
 #include "commands.hpp"
 #include "device_session.hpp"
+#include "exit_codes.hpp"
+#include "interruptible_run.hpp"
 #include "options.hpp"
 
 #include <fmt/format.h>
@@ -15,6 +17,8 @@ namespace {
 
 constexpr std::string_view kCommand = "run";
 constexpr core::Duration kDefaultDuration = std::chrono::seconds(10);
+// How often a run looks for Ctrl-C: a few milliseconds of wall time for a networked device.
+constexpr core::Duration kInterruptCheck = std::chrono::milliseconds(100);
 
 struct RunOptions {
     SessionOptions session;
@@ -30,10 +34,19 @@ int run_program(const RunOptions& options) {
     if (const auto error = (*session)->start()) {
         return report_user_error(kCommand, error->message);
     }
+    const core::TimePoint started = device.loop().now();
     const core::Duration duration = options.duration.value_or(kDefaultDuration);
-    device.loop().run_until(device.loop().now() + duration);
-    fmt::print("ran {} of virtual time\n", core::format_duration(duration));
-    return (*session)->finish(kCommand);
+    // Ctrl-C ends a long run early; the summary shows what happened up to then.
+    const bool interrupted =
+        run_until_interrupted(device.loop(), started + duration, kInterruptCheck);
+    if (interrupted) {
+        fmt::print("interrupted after {} of virtual time\n",
+                   core::format_duration(device.loop().now() - started));
+    } else {
+        fmt::print("ran {} of virtual time\n", core::format_duration(duration));
+    }
+    const int exit_code = (*session)->finish(kCommand);
+    return interrupted ? kExitInterrupted : exit_code;
 }
 
 } // namespace

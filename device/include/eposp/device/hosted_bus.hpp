@@ -33,6 +33,7 @@ struct HostedBusOptions {
     std::optional<std::string> pcap;
     std::optional<core::Duration> duration;
     bool virtual_time = false;
+    bool force = false; ///< --force: the traces may replace existing files of another kind
 };
 
 /// A simulated CAN bus on its own event loop, as a long-running command hosts it: outside tools
