@@ -255,10 +255,19 @@ void LssSlave::configure_node_id(NodeId id) {
     respond(LssCommand::ConfigureNodeId, {kLssSuccess, 0});
 }
 
+bool LssSlave::switches_bit_rate() const {
+    return hooks_.switch_bit_rate || !config_.bit_rates.empty();
+}
+
+bool LssSlave::supports(std::uint32_t bit_rate) const {
+    return config_.bit_rates.empty() ? static_cast<bool>(hooks_.switch_bit_rate)
+                                     : config_.bit_rates.contains(bit_rate);
+}
+
 // 7.4.2.4: the rate is pending until activate bit timing.
 void LssSlave::configure_bit_timing(std::uint8_t table_selector, std::uint8_t table_index) {
     const std::optional<std::uint32_t> bit_rate = lss_bit_rate(table_selector, table_index);
-    if (!bit_rate || !hooks_.switch_bit_rate) {
+    if (!bit_rate || !supports(*bit_rate)) {
         respond(LssCommand::ConfigureBitTiming, {kLssBitTimingNotSupported, 0});
         return;
     }
@@ -268,7 +277,7 @@ void LssSlave::configure_bit_timing(std::uint8_t table_selector, std::uint8_t ta
 
 // 7.4.2.5, figure 7-65: deaf and silent for one switch delay, switch, silent for another.
 void LssSlave::activate_bit_timing(std::uint16_t switch_delay_ms) {
-    if (!hooks_.switch_bit_rate) {
+    if (!switches_bit_rate()) {
         return;
     }
     const core::Duration switch_delay = std::chrono::milliseconds(switch_delay_ms);
@@ -284,7 +293,9 @@ void LssSlave::activate_bit_timing(std::uint16_t switch_delay_ms) {
 void LssSlave::end_first_switch_delay(core::Duration switch_delay) {
     switch_phase_ = SwitchPhase::Settling;
     active_.bit_rate = pending_.bit_rate;
-    hooks_.switch_bit_rate(active_.bit_rate);
+    if (hooks_.switch_bit_rate) {
+        hooks_.switch_bit_rate(active_.bit_rate);
+    }
     switch_timer_ = core::ScopedTimer(loop_, loop_.after(switch_delay, [this] { end_silence(); }));
 }
 

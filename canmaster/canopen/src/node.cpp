@@ -129,7 +129,8 @@ Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary,
       pdo_(loop, services_port_, od_, [this](std::uint16_t code) { raise_emergency(code); }),
       lss_(loop, port, config_.identity,
            {.initial = {config_.node_id, config_.bit_rate},
-            .only_when_nmt_stopped = config_.lss_only_when_stopped},
+            .only_when_nmt_stopped = config_.lss_only_when_stopped,
+            .bit_rates = config_.bit_rates},
            lss_hooks()) {
     if (config_.parameter_file) {
         store_.emplace(od_, *config_.parameter_file);

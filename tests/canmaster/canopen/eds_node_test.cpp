@@ -80,9 +80,11 @@ protected:
         bench.run_for(1ms);
     }
 
-    static NodeConfig config() {
+    /// As `eposp node` configures it: the bit rates of the EDS.
+    NodeConfig config() const {
         NodeConfig config;
         config.node_id = kNode;
+        config.bit_rates = eds.device.bit_rates();
         return config;
     }
 
@@ -147,6 +149,29 @@ INSTANTIATE_TEST_SUITE_P(Rules, EdsNodePdoMapping, ::testing::ValuesIn(eds_mappi
 TEST_F(EdsNode, ValidPdoKeepsItsCobId) {
     expect_reply("605#2300180186010000", "585#8000180130000906"); // 0x06090030
     expect_reply("605#2300140106020000", "585#8000140130000906");
+}
+
+// --- LSS (CiA 305): the node takes the bit rates its EDS declares. ---
+
+TEST_F(EdsNode, ConfigureBitTimingTakesTheRatesTheEdsDeclaresAndActivateAppliesIt) {
+    bench.send("7E5#0401000000000000"); // switch state global: configuration
+    bench.run_for(1ms);
+    // Table 0 index 3 is 250 kbit/s (BaudRate_250=1): success; index 2, 500 kbit/s
+    // (BaudRate_500=0), and index 4, 125 kbit/s (not listed): bit timing not supported (1).
+    expect_reply("7E5#1300030000000000", "7E4#1300000000000000");
+    expect_reply("7E5#1300020000000000", "7E4#1301000000000000");
+    expect_reply("7E5#1300040000000000", "7E4#1301000000000000");
+    EXPECT_EQ(node.bit_rate(), 1'000'000u) << "pending until activate bit timing";
+    // Activate bit timing with a switch delay of 10 ms: silent for two delays, then the node
+    // runs at the new rate.
+    EXPECT_EQ(exchange("7E5#150A000000000000", 25ms), std::vector<std::string>{});
+    EXPECT_EQ(node.bit_rate(), 250'000u);
+}
+
+TEST_F(EdsNode, WithoutNonVolatileMemoryStoreConfigurationIsNotSupported) {
+    bench.send("7E5#0401000000000000");
+    bench.run_for(1ms);
+    expect_reply("7E5#1700000000000000", "7E4#1701000000000000");
 }
 
 } // namespace

@@ -44,6 +44,8 @@ struct DeviceInfo {
     std::string order_code;
     /// Of the rates CiA 306 lists: 10, 20, 50, 125, 250, 500, 800, 1000 kbit/s.
     std::set<std::uint16_t> baud_rates_kbit;
+    /// The same in bit/s, as NodeConfig::bit_rates takes them.
+    std::set<std::uint32_t> bit_rates() const;
     bool simple_boot_up_master = false;
     bool simple_boot_up_slave = false;
     std::uint8_t granularity = 8; ///< the mapping granularity in bits (0: no mapping)

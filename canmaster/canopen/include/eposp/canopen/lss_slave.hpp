@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <set>
 #include <vector>
 
 namespace eposp::canopen {
@@ -37,6 +38,10 @@ struct LssSlaveConfig {
     /// EPOS2 FW spec 7.4: LSS is only accessible in NMT state Stopped. A device that has no
     /// node-ID cannot be stopped and takes LSS commands in any state.
     bool only_when_nmt_stopped = false;
+    /// The bit rates (bit/s) the device supports, e.g. the BaudRate_ entries of its EDS (CiA 306
+    /// 4.4): configure bit timing accepts these. Empty: every rate of the standard table when the
+    /// device has a switch_bit_rate hook, none without.
+    std::set<std::uint32_t> bit_rates;
 };
 
 /// How the slave reaches the device it belongs to. Every hook is optional; what a missing hook
@@ -45,7 +50,8 @@ struct LssSlaveHooks {
     /// Writes the configuration to non-volatile memory. Missing: store is "not supported".
     std::function<LssStoreResult(const LssConfiguration&)> store_configuration;
     /// Switches the device's CAN controller to `bit_rate` (bit/s), at the end of the first
-    /// switch delay of activate bit timing. Missing: the device cannot change its bit rate, so
+    /// switch delay of activate bit timing. Missing: the active bit rate changes in the slave
+    /// only; without LssSlaveConfig::bit_rates either, the device cannot change its bit rate, so
     /// configure bit timing answers "not supported" and activate bit timing is ignored.
     std::function<void(std::uint32_t bit_rate)> switch_bit_rate;
     /// Told when the device must stop sending (true) and may send again (false): the two switch
@@ -92,6 +98,8 @@ public:
 
 private:
     bool accessible() const;
+    bool supports(std::uint32_t bit_rate) const;
+    bool switches_bit_rate() const;
     bool non_configured() const;
     void enter(LssState state);
     bool on_command_of_any_state(LssCommand cs, const can::Frame& frame);

@@ -29,6 +29,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 
 namespace eposp::canopen {
 
@@ -64,9 +65,13 @@ struct NodeConfig {
     /// LSS (CiA 305). The bit rate (bit/s) of the bus the node starts on; one that LSS stored
     /// replaces it.
     std::uint32_t bit_rate = 1'000'000;
+    /// The bit rates (bit/s) the device supports, e.g. its EDS's BaudRate_ entries (CiA 306
+    /// 4.4): LSS configure bit timing accepts these (CiA 305). Empty: every rate of the CiA
+    /// table when switch_bit_rate is set, none otherwise.
+    std::set<std::uint32_t> bit_rates;
     /// Switches the node's CAN controller to another bit rate (LSS activate bit timing): the
     /// node cannot do it itself; start() calls it with the rate the node starts at. Missing:
-    /// configure bit timing answers "not supported".
+    /// activate bit timing changes bit_rate() only.
     std::function<void(std::uint32_t bit_rate)> switch_bit_rate;
     /// EPOS2 FW spec 7.4: LSS only in NMT stopped (a node without node-ID takes it always).
     bool lss_only_when_stopped = false;
