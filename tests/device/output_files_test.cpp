@@ -114,6 +114,23 @@ TEST(OutputFiles, AnExistingFileOfTheKindWrittenIsReplaced) {
     EXPECT_EQ(again.exit_code, 0) << again.output;
 }
 
+// `eposp dcf` writes several files: none is written when one of them may not be replaced.
+TEST(OutputFiles, DcfExportKeepsAFileOfAnotherKindUnderItsNameAndWritesNone) {
+    const auto notes = write_source("epos-p.dcf", kNotes);
+    const auto directory = scratch("").parent_path().string();
+    const std::string command =
+        "dcf --network " + kSourceDir + "/examples/two-axis/network.yaml -o " + directory;
+    std::filesystem::remove(scratch("can-node2.cdcf"));
+    const auto refused = eposp(command);
+    EXPECT_EQ(refused.exit_code, 1) << refused.output;
+    EXPECT_THAT(refused.output, HasSubstr("the existing file is not an EDS or DCF file"));
+    EXPECT_EQ(read_file(notes), kNotes);
+    EXPECT_FALSE(std::filesystem::exists(scratch("can-node2.cdcf")));
+    const auto forced = eposp(command + " --force");
+    EXPECT_EQ(forced.exit_code, 0) << forced.output;
+    EXPECT_THAT(read_file(notes), HasSubstr("[DeviceInfo]"));
+}
+
 TEST(OutputFiles, NodeParameterFileOfAnotherKindIsKept) {
     const auto notes = write_source("notes.txt", kNotes);
     const auto result = eposp("node --eds " + kSourceDir + "/device/epos-p.eds --node-id 3 " +
