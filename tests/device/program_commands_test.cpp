@@ -326,6 +326,15 @@ TEST(BenchCommand, CtrlCPrintsTheFiguresOfTheScansDoneAndExitsWith130) {
     EXPECT_THAT(result.output, HasSubstr(" of 1000000000 scans"));
 }
 
+TEST(BenchCommand, AFaultOfTheProgramExitsWithThree) {
+    const std::string source = write_source(
+        "failing.st", std::string(kCounter).replace(std::string(kCounter).find("fail : BOOL"), 11,
+                                                    "fail : BOOL := TRUE"));
+    const auto result = eposp("bench " + source + " --scans 10");
+    EXPECT_EQ(result.exit_code, 3) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("division by zero in Main at line 7"));
+}
+
 TEST(BenchCommand, UnknownEngineIsRefused) {
     const auto result = eposp("bench " + std::string(EPOSP_SOURCE_DIR) +
                               "/tests/compiler/inputs/sieve.st --engine jit");

@@ -104,7 +104,8 @@ int run_bench(const BenchOptions& options) {
     const std::uint64_t scans = plc.runtime().statistics(*pacing).cycles;
 
     if (plc.runtime().task_faulted(*pacing)) {
-        return report_user_error(kCommand, plc.runtime().fault_text(*pacing));
+        report_user_error(kCommand, plc.runtime().fault_text(*pacing));
+        return kExitDeviceErrors; // the program ran into the fault: no figure to give
     }
     for (const vm::Symbol& symbol : plc.image().symbols) {
         if (is_configuration_global(plc.image(), symbol)) {
