@@ -40,11 +40,11 @@ TEST(RunNetwork, TheTwoAxisExampleBootsBothPortsAndTracesBothAxesToTheirTargets)
     EXPECT_EQ(rows[0] + "\n", "time_s,axis,statusword,mode,target_position,position_demand,"
                               "actual_position,velocity_demand,actual_velocity,current_mA,"
                               "plcopen_state\n");
-    // At the end both are at their targets, Operation Enabled with Target Reached (0x0537 =
-    // 1335), in profile position mode (1), standing still.
-    EXPECT_TRUE(rows[rows.size() - 2].starts_with("5.000000000,0,1335,1,20000,20000,20000,0,0,"))
+    // At the end both are at their targets, Operation Enabled with Target Reached and Remote
+    // (0x0737 = 1847), in profile position mode (1), standing still.
+    EXPECT_TRUE(rows[rows.size() - 2].starts_with("5.000000000,0,1847,1,20000,20000,20000,0,0,"))
         << rows[rows.size() - 2];
-    EXPECT_TRUE(rows.back().starts_with("5.000000000,1,1335,1,-12000,-12000,-12000,0,0,"))
+    EXPECT_TRUE(rows.back().starts_with("5.000000000,1,1847,1,-12000,-12000,-12000,0,0,"))
         << rows.back();
 }
 
