@@ -53,8 +53,9 @@ constexpr std::chrono::microseconds kControlPeriod{1000};
 Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig config)
     : loop_(loop), dictionary_(with_restore_rule(std::move(config.dictionary), *this)),
       node_(loop, port, dictionary_.objects(), dictionary_.node_config()), machine_(config.axis),
-      axis_(config.axis),
-      control_timer_(loop, loop.every(kControlPeriod, [this] { control_period(); })) {
+      axis_(config.axis), control_time_(loop.now() + kControlPeriod),
+      control_timer_(loop,
+                     loop.every(kControlPeriod, control_time_, [this] { control_period(); })) {
     // The machine's encoder, gains and motor data are the device's defaults (8.2.74,
     // 8.2.125 - 8.2.130); from then on the dictionary configures the plant.
     write_axis_defaults(dictionary_.objects(), machine_);
@@ -371,7 +372,10 @@ void Epos2Drive::watch_power_stage(bool overcurrent) {
 }
 
 // One millisecond: the device control's pending transitions, the mode's demand, ten steps of
-// the current loop and the plant, the monitors, the computed objects.
+// the current loop and the plant, the monitors, the computed objects. It runs at control_time_,
+// the timer's scheduled time, and never at the loop's now(): a real-time loop running late
+// calls it in a burst while now() shows the wall clock, and the physics would follow the host's
+// load (the timer fires once per period, in order, so counting the periods is its schedule).
 void Epos2Drive::control_period() {
     const double now = seconds();
     finish_device_control_transitions();
@@ -404,6 +408,7 @@ void Epos2Drive::control_period() {
     last_demand_ = demand;
     watch_motion(now, demand);
     publish(demand);
+    control_time_ += kControlPeriod;
 }
 
 // Refresh (20) and Measure Init (21) take one control period here, and so does a fault reaction
@@ -668,7 +673,7 @@ motion::HomingParameters Epos2Drive::homing_parameters() const {
 }
 
 double Epos2Drive::seconds() const {
-    return std::chrono::duration<double>(loop_.now().time_since_epoch()).count();
+    return std::chrono::duration<double>(control_time_.time_since_epoch()).count();
 }
 
 // 8.2.84, 8.2.87 - 8.2.89.

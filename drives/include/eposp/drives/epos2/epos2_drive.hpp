@@ -99,6 +99,7 @@ private:
     bool new_position_setpoint(double now, std::uint16_t controlword);
     motion::ProfileParameters profile_parameters() const;
     motion::HomingParameters homing_parameters() const;
+    /// The drive's clock in seconds: control_time_.
     double seconds() const;
     void read_counts_per_turn();
     void read_option_codes();
@@ -152,6 +153,11 @@ private:
         std::uint16_t digital_inputs;
     };
     std::optional<PublishedValues> published_;
+    /// The drive's clock: the scheduled time of the control period running, else of the next
+    /// one, where an input written between two periods takes effect. Physics and profiles run
+    /// on it alone, so a loop that runs late (real-time pace on a loaded host) gives the same
+    /// samples as one on time.
+    core::TimePoint control_time_;
     std::deque<std::uint16_t> pending_controlwords_; ///< written, not yet handled
     core::ScopedTimer controlword_timer_;
     core::ScopedTimer control_timer_;
