@@ -19,7 +19,7 @@ namespace {
 
 constexpr std::string_view kCommand = "bench";
 // Scans between two looks for Ctrl-C.
-constexpr std::int64_t kScansPerInterruptCheck = 10'000;
+constexpr std::int64_t kScansPerInterruptCheck = 1'000;
 
 struct BenchOptions {
     std::vector<std::string> paths;
