@@ -1,9 +1,8 @@
 #include "eposp/device/hosted_bus.hpp"
 
-#include "eposp/device/socketcand_hosting.hpp"
-
 #include "eposp/can/candump_log_writer.hpp"
 #include "eposp/can/pcap_writer.hpp"
+#include "eposp/device/socketcand_hosting.hpp"
 
 #include <algorithm>
 #include <array>
@@ -39,10 +38,30 @@ can::TraceClock trace_clock(const core::EventLoop& loop, bool virtual_time) {
         loop.now(), std::chrono::time_point_cast<core::Duration>(std::chrono::system_clock::now()));
 }
 
-void print_port(const std::string_view name, const can::PortStatistics& port) {
+void print_port_line(std::string_view name, const can::PortStatistics& port,
+                     std::string_view note) {
     fmt::print("  {:<16} tx {:>8}  rx {:>8}  tx-overflows {:>4}  rx-overflows {:>4}  {}\n", name,
-               port.tx_frames, port.rx_frames, port.tx_overflows, port.rx_overflows,
-               can::to_string(port.state));
+               port.tx_frames, port.rx_frames, port.tx_overflows, port.rx_overflows, note);
+}
+
+void print_port(std::string_view name, const can::PortStatistics& port) {
+    print_port_line(name, port, can::to_string(port.state));
+}
+
+void print_socketcand_history(const can::io::SocketcandServerStatistics& stats) {
+    if (stats.left > 0) {
+        const can::PortStatistics left{.tx_frames = stats.left_tx_frames,
+                                       .rx_frames = stats.left_rx_frames,
+                                       .tx_overflows = stats.left_tx_overflows,
+                                       .rx_overflows = stats.left_rx_overflows};
+        print_port_line(fmt::format("{} left", stats.left), left,
+                        "socketcand clients that left, summed");
+    }
+    if (stats.dropped > 0) {
+        fmt::print("  socketcand: {} connections dropped without opening the bus, {} of them "
+                   "beyond --socketcand-clients\n",
+                   stats.dropped, stats.turned_away);
+    }
 }
 
 } // namespace
@@ -80,7 +99,8 @@ std::optional<std::string> HostedBus::open_outside_world() {
     attach("monitor");
 
     if (options_.socketcand) {
-        auto opened = serve_socketcand(bus_, *options_.socketcand, clock_.epoch_offset());
+        auto opened = serve_socketcand(bus_, *options_.socketcand, clock_.epoch_offset(),
+                                       options_.socketcand_limits);
         if (!opened) {
             return opened.error();
         }
@@ -93,8 +113,8 @@ std::optional<std::string> HostedBus::open_outside_world() {
             return fmt::format("--socketcan {}: {}", *options_.socketcan, opened.error());
         }
         socketcan_ = std::move(*opened);
-        bridge_ = std::make_unique<can::PortBridge>(attach_gateway("socketcan:" + *options_.socketcan),
-                                                    *socketcan_);
+        bridge_ = std::make_unique<can::PortBridge>(
+            attach_gateway("socketcan:" + *options_.socketcan), *socketcan_);
         fmt::print("socketcan: {} bridged to bus {}\n", *options_.socketcan, options_.name);
     }
 
@@ -191,6 +211,7 @@ void HostedBus::print_summary() const {
                 print_port(client.client, *client.port);
             }
         }
+        print_socketcand_history(server_->statistics());
     }
 }
 

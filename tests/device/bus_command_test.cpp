@@ -10,6 +10,7 @@ namespace eposp::device {
 namespace {
 
 using test::run_command;
+using testing::ContainsRegex;
 using testing::HasSubstr;
 
 const std::string kNetworkLog =
@@ -95,6 +96,44 @@ TEST(BusCommand, PythonCanClientsExchangeFramesAndThePcapHoldsThem) {
     EXPECT_THAT(result.output, HasSubstr("ok: 20 frames a -> b and 20 frames b -> a"));
     // 24-byte pcap header, then 16 + 16 bytes per frame.
     EXPECT_EQ(std::filesystem::file_size(pcap), 24U + 40U * 32U);
+}
+
+// A socketcand client that sends a burst beyond its transmit queue (--socketcand-queue 4) and
+// leaves: the frames it lost are in the summary, though its port is gone.
+TEST(BusCommand, FramesAClientLostToItsFullQueueStayInTheSummaryAfterItLeft) {
+    const auto out = scratch("bus.out");
+    const auto client = scratch("client.py");
+    std::ofstream(client) << R"(import socket, sys
+s = socket.create_connection((sys.argv[1], int(sys.argv[2])), timeout=10)
+def expect(text):
+    got = b""
+    while not got.endswith(text):
+        chunk = s.recv(256)
+        if not chunk:
+            sys.exit("closed while waiting for " + text.decode())
+        got += chunk
+expect(b"< hi >")
+s.sendall(b"< open can0 >")
+expect(b"< ok >")
+s.sendall(b"< rawmode >")
+expect(b"< ok >")
+s.sendall(b"".join(b"< send %03X 0 >" % (0x100 + i) for i in range(20)))
+s.shutdown(socket.SHUT_WR)
+while s.recv(4096):
+    pass
+)";
+    const auto result = run_command("sh -c '" + start_real_time_bus(out, "--socketcand-queue 4") +
+                                    "/usr/bin/python3 " + client.string() +
+                                    " ${address%:*} ${address##*:} 2>&1; code=$?; " +
+                                    "kill -INT $pid; wait $pid; exit $code'");
+    const std::string printed = read_file(out);
+    ASSERT_EQ(result.exit_code, 0) << result.output << printed;
+    EXPECT_THAT(printed, HasSubstr("socketcand: socketcand-1 joined from 127.0.0.1:"));
+    EXPECT_THAT(printed, HasSubstr("socketcand: socketcand-1 left (the client disconnected)"));
+    // 4 or 5 of the 20 frames reach the bus (one may be on the wire already); the rest are lost.
+    EXPECT_THAT(printed,
+                ContainsRegex("1 left +tx +[45]  rx +0  tx-overflows +1[56]  rx-overflows +0"))
+        << printed;
 }
 
 TEST(BusCommand, TheDemoRunsToTheEnd) {

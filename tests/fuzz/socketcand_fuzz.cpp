@@ -1,6 +1,7 @@
 // What a socketcand client may send, as arbitrary bytes arriving in arbitrary TCP segments:
 // the server's framing and command parser (socketcand_protocol.hpp) never crash, find the same
-// messages however the bytes are segmented, and the errors it answers stay one message.
+// messages however the bytes are segmented, the errors it answers stay one message, and what
+// goes on the bus is the frame sent or, for an empty one, the guard request it stands for.
 
 #include "eposp/can/io/socketcand_protocol.hpp"
 #include "fuzz_check.hpp"
@@ -38,6 +39,12 @@ void check_command(const sc::Command& command) {
                 const auto* send = std::get_if<sc::SendFrame>(&again);
                 require(send != nullptr && send->frame == parsed.frame,
                         "a frame to send formats as a send that reads back to it");
+                const eposp::can::Frame on_bus = sc::frame_for_bus(parsed.frame);
+                require(on_bus.valid() &&
+                            (on_bus == parsed.frame ||
+                             (on_bus.remote && !parsed.frame.remote && parsed.frame.dlc == 0 &&
+                              on_bus.id == parsed.frame.id && !on_bus.extended)),
+                        "the bus gets the frame as sent, or an empty one as the guard request");
             } else if constexpr (std::is_same_v<T, sc::OpenBus>) {
                 require(parsed.bus.size() <= sc::kMaxBusNameLength, "a bus name is short");
                 check_error_reply(parsed.bus); // the server names the bus in its refusal

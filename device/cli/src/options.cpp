@@ -60,8 +60,21 @@ CLI::Option* add_engine_option(CLI::App& command, vm::Engine& target) {
 }
 
 void add_hosted_bus_options(CLI::App& command, HostedBusOptions& options) {
-    command.add_option("--socketcand", options.socketcand,
-                       "Serve the socketcand protocol on HOST:PORT (e.g. 127.0.0.1:29536)");
+    CLI::Option* socketcand =
+        command.add_option("--socketcand", options.socketcand,
+                           "Serve the socketcand protocol on HOST:PORT (e.g. 127.0.0.1:29536)");
+    command
+        .add_option("--socketcand-queue", options.socketcand_limits.tx_queue_capacity,
+                    "Frames a socketcand client may have waiting for the bus; more are dropped")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1 << 20))
+        ->needs(socketcand);
+    command
+        .add_option("--socketcand-clients", options.socketcand_limits.max_clients,
+                    "Connections the socketcand server takes at once")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1 << 16))
+        ->needs(socketcand);
     command.add_option("--socketcan", options.socketcan,
                        "Bridge a Linux CAN interface (e.g. can0, vcan0) onto the bus");
     CLI::Option* join = command.add_option(

@@ -1,5 +1,6 @@
 #include "eposp/can/io/socketcand_server.hpp"
 
+#include "eposp/can/io/socketcand_protocol.hpp"
 #include "socketcand_session.hpp"
 #include "tcp_address.hpp"
 
@@ -27,13 +28,15 @@ public:
     const tcp::endpoint& local() const { return local_; }
     std::size_t client_count() const { return sessions_.size(); }
     std::vector<SocketcandClientInfo> clients() const;
+    const SocketcandServerStatistics& statistics() const { return statistics_; }
     void on_client_event(EventHandler handler) { event_handler_ = std::move(handler); }
 
 private:
     void on_accepted(boost::system::error_code error, tcp::socket socket);
+    void turn_away(tcp::socket socket);
+    void on_session_joined(const SocketcandSession& session);
     void on_session_closed(SocketcandSession& session, const std::string& reason);
-    void report(SocketcandClientEvent::Kind kind, const SocketcandSession& session,
-                std::string reason = {});
+    void report(SocketcandClientEvent event);
 
     VirtualBus& bus_;
     SocketcandServerConfig config_;
@@ -41,6 +44,7 @@ private:
     tcp::endpoint local_;
     std::vector<std::shared_ptr<SocketcandSession>> sessions_;
     std::uint64_t clients_accepted_ = 0;
+    SocketcandServerStatistics statistics_;
     EventHandler event_handler_;
     core::ScopedTimer retry_timer_;
     bool stopped_ = false;
@@ -65,15 +69,42 @@ void SocketcandServer::Impl::on_accepted(boost::system::error_code error, tcp::s
             core::ScopedTimer(bus_.loop(), bus_.loop().after(kRetryDelay, [this] { accept(); }));
         return;
     }
+    if (sessions_.size() >= config_.limits.max_clients) {
+        turn_away(std::move(socket));
+        accept();
+        return;
+    }
     auto session = std::make_shared<SocketcandSession>(
         std::move(socket), fmt::format("socketcand-{}", ++clients_accepted_), bus_, config_,
+        [this](const SocketcandSession& joined) { on_session_joined(joined); },
         [this](SocketcandSession& closed, const std::string& reason) {
             on_session_closed(closed, reason);
         });
     sessions_.push_back(session);
-    report(SocketcandClientEvent::Kind::Connected, *session);
     session->start();
     accept();
+}
+
+void SocketcandServer::Impl::turn_away(tcp::socket socket) {
+    boost::system::error_code error;
+    const auto endpoint = socket.remote_endpoint(error);
+    const std::string remote = error ? std::string("unknown address") : format_endpoint(endpoint);
+    // The reply fits an empty send buffer; a non-blocking write never holds up the loop.
+    socket.non_blocking(true, error);
+    const std::string reply = socketcand::format_error("too many clients");
+    socket.write_some(boost::asio::buffer(reply), error);
+    socket.close(error);
+    ++statistics_.dropped;
+    ++statistics_.turned_away;
+    report({SocketcandClientEvent::Kind::Dropped,
+            {},
+            remote,
+            fmt::format("{} clients are connected already", config_.limits.max_clients)});
+}
+
+void SocketcandServer::Impl::on_session_joined(const SocketcandSession& session) {
+    ++statistics_.joined;
+    report({SocketcandClientEvent::Kind::Joined, session.name(), session.remote(), {}});
 }
 
 void SocketcandServer::Impl::on_session_closed(SocketcandSession& session,
@@ -85,14 +116,23 @@ void SocketcandServer::Impl::on_session_closed(SocketcandSession& session,
     }
     const std::shared_ptr<SocketcandSession> keep = *it; // the report still reads it
     sessions_.erase(it);
-    report(SocketcandClientEvent::Kind::Disconnected, session, reason);
+    if (!session.joined()) {
+        ++statistics_.dropped;
+        report({SocketcandClientEvent::Kind::Dropped, {}, session.remote(), reason});
+        return;
+    }
+    const PortStatistics port = *session.info().port;
+    ++statistics_.left;
+    statistics_.left_tx_frames += port.tx_frames;
+    statistics_.left_rx_frames += port.rx_frames;
+    statistics_.left_tx_overflows += port.tx_overflows;
+    statistics_.left_rx_overflows += port.rx_overflows;
+    report({SocketcandClientEvent::Kind::Left, session.name(), session.remote(), reason});
 }
 
-void SocketcandServer::Impl::report(SocketcandClientEvent::Kind kind,
-                                    const SocketcandSession& session, std::string reason) {
+void SocketcandServer::Impl::report(SocketcandClientEvent event) {
     if (event_handler_) {
-        event_handler_(
-            SocketcandClientEvent{kind, session.name(), session.remote(), std::move(reason)});
+        event_handler_(event);
     }
 }
 
@@ -116,6 +156,12 @@ void SocketcandServer::Impl::stop() {
 
 core::Result<std::unique_ptr<SocketcandServer>>
 SocketcandServer::open(VirtualBus& bus, SocketcandServerConfig config) {
+    const SocketcandLimits& limits = config.limits;
+    if (limits.tx_queue_capacity == 0 || limits.max_clients == 0 ||
+        limits.open_timeout <= core::Duration::zero()) {
+        return core::Error{"a socketcand server needs a transmit queue, room for a client and "
+                           "time for it to open the bus"};
+    }
     const auto address = parse_listen_address(config.listen);
     if (!address) {
         return core::Error{
@@ -173,6 +219,10 @@ std::size_t SocketcandServer::client_count() const {
 
 std::vector<SocketcandClientInfo> SocketcandServer::clients() const {
     return impl_->clients();
+}
+
+SocketcandServerStatistics SocketcandServer::statistics() const {
+    return impl_->statistics();
 }
 
 void SocketcandServer::on_client_event(EventHandler handler) {

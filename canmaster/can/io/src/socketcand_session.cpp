@@ -25,13 +25,19 @@ constexpr std::string_view kFrameSeparator = " ";
 /// its handshake. Frames of this first moment of raw mode wait and follow it.
 constexpr core::Duration kRawModeSettle = std::chrono::milliseconds(20);
 
+/// How long the port of a client that has hung up may take to send what it had queued (1024
+/// frames take 13 s at 10 kbit/s, 0.13 s at 1 Mbit/s).
+constexpr core::Duration kLongestDrain = std::chrono::seconds(15);
+
+constexpr std::string_view kClientDisconnected = "the client disconnected";
+
 } // namespace
 
 SocketcandSession::SocketcandSession(boost::asio::ip::tcp::socket socket, std::string name,
                                      VirtualBus& bus, const SocketcandServerConfig& config,
-                                     ClosedHandler on_closed)
+                                     JoinedHandler on_joined, ClosedHandler on_closed)
     : socket_(std::move(socket)), name_(std::move(name)), bus_(bus), config_(config),
-      on_closed_(std::move(on_closed)) {
+      on_joined_(std::move(on_joined)), on_closed_(std::move(on_closed)) {
     boost::system::error_code error;
     const auto endpoint = socket_.remote_endpoint(error);
     remote_ = error ? std::string("unknown address") : format_endpoint(endpoint);
@@ -46,6 +52,13 @@ SocketcandSession::SocketcandSession(boost::asio::ip::tcp::socket socket, std::s
 void SocketcandSession::start() {
     enqueue(sc::kHi);
     read();
+    // An idle connection holds a file descriptor: one that does not open the bus is let go.
+    const core::Duration timeout = config_.limits.open_timeout;
+    open_deadline_ = core::ScopedTimer(bus_.loop(), bus_.loop().after(timeout, [this, timeout] {
+        const std::string limit = core::format_duration(timeout);
+        close_after_reply(sc::format_error(fmt::format("no bus opened within {}", limit)),
+                          fmt::format("it did not open a bus within {}", limit));
+    }));
 }
 
 void SocketcandSession::abort() {
@@ -54,7 +67,7 @@ void SocketcandSession::abort() {
 }
 
 SocketcandClientInfo SocketcandSession::info() const {
-    return {name_, remote_, port_ ? std::optional(port_->statistics()) : std::nullopt};
+    return {name_, remote_, port_ ? std::optional(port_->statistics()) : last_port_statistics_};
 }
 
 // ---- Reading ----------------------------------------------------------------------------------
@@ -71,9 +84,12 @@ void SocketcandSession::on_read(boost::system::error_code error, std::size_t siz
     if (state_ == State::Closed || state_ == State::Closing) {
         return;
     }
+    if (error == boost::asio::error::eof) {
+        close_when_sent();
+        return;
+    }
     if (error) {
-        close(error == boost::asio::error::eof ? "the client disconnected"
-                                               : fmt::format("read failed: {}", error.message()));
+        close(fmt::format("read failed: {}", error.message()));
         return;
     }
     input_.append(read_buffer_.data(), size);
@@ -123,10 +139,15 @@ void SocketcandSession::handle(const sc::OpenBus& open) {
                           fmt::format("it asked for bus '{}', not '{}'", open.bus, served));
         return;
     }
-    port_ = bus_.connect(name_, kGatewayTxQueueCapacity);
+    open_deadline_.cancel();
+    port_ = bus_.connect(name_, config_.limits.tx_queue_capacity);
+    last_port_statistics_ = port_->statistics();
     port_->on_receive([this](const Frame& frame) { on_bus_frame(frame); });
     state_ = State::Bcm;
     enqueue(sc::kOk);
+    if (on_joined_) {
+        on_joined_(*this);
+    }
 }
 
 void SocketcandSession::handle(const sc::SwitchMode& mode) {
@@ -158,8 +179,18 @@ void SocketcandSession::handle(const sc::SendFrame& send) {
         return;
     }
     const SendStatus status = port_->send(sc::frame_for_bus(send.frame));
-    if (status != SendStatus::Queued) {
-        reply_error(fmt::format("frame not sent: {}", to_string(status)));
+    if (status == SendStatus::Queued) {
+        ++frames_queued_;
+        refusing_.reset();
+        return;
+    }
+    // A client that floods a full queue would get as many replies as it sent frames; the
+    // port's tx-overflows count each.
+    if (refusing_ != status) {
+        refusing_ = status;
+        reply_error(fmt::format("frame not sent: {}; the following ones are dropped without a "
+                                "reply until one is sent",
+                                to_string(status)));
     }
 }
 
@@ -196,6 +227,39 @@ void SocketcandSession::on_bus_frame(const Frame& frame) {
     if (!receive_paused_ && unsent_bytes() > config_.pause_above_bytes) {
         receive_paused_ = true;
         port_->pause_receive(true);
+    }
+}
+
+void SocketcandSession::close_when_sent() {
+    // A script that sends a frame and hangs up at once still has it put on the bus, as
+    // socketcand's own write to the kernel would.
+    if (frames_waiting() == 0 || port_->error_state() == ErrorState::BusOff) {
+        close(std::string(kClientDisconnected));
+        return;
+    }
+    auto& loop = bus_.loop();
+    // Checked after the wire event, once the bus has counted the frame as sent.
+    drain_observer_ = bus_.add_observer([weak = weak_from_this(), &loop](const WireEvent&) {
+        loop.post([weak] {
+            if (const auto self = weak.lock(); self && self->frames_waiting() == 0) {
+                self->close_soon(std::string(kClientDisconnected));
+            }
+        });
+    });
+    drain_deadline_ = core::ScopedTimer(loop, loop.after(kLongestDrain, [this] {
+        close_soon(fmt::format("{}; {} frames it sent were still waiting for the bus",
+                               kClientDisconnected, frames_waiting()));
+    }));
+}
+
+std::uint64_t SocketcandSession::frames_waiting() const {
+    return port_ ? frames_queued_ - port_->statistics().tx_frames : 0;
+}
+
+void SocketcandSession::release_port() {
+    if (port_) {
+        last_port_statistics_ = port_->statistics();
+        port_.reset();
     }
 }
 
@@ -255,7 +319,7 @@ void SocketcandSession::close_after_reply(std::string_view reply, std::string re
     }
     state_ = State::Closing;
     close_reason_ = std::move(reason);
-    port_.reset(); // no more bus traffic for a client that is being sent away
+    release_port(); // no more bus traffic for a client that is being sent away
     if (!outgoing_.writing()) {
         close(close_reason_);
     }
@@ -276,7 +340,12 @@ void SocketcandSession::close(const std::string& reason) {
         return;
     }
     state_ = State::Closed;
-    port_.reset();
+    open_deadline_.cancel();
+    drain_deadline_.cancel();
+    if (drain_observer_) {
+        bus_.remove_observer(*drain_observer_);
+    }
+    release_port();
     boost::system::error_code ignored; // the peer may already be gone; nothing to do about it
     socket_.shutdown(boost::asio::ip::tcp::socket::shutdown_both, ignored);
     socket_.close(ignored);

@@ -12,6 +12,7 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -23,18 +24,24 @@ namespace eposp::can::io {
 /// server dropped the session finds it closed rather than destroyed.
 class SocketcandSession : public std::enable_shared_from_this<SocketcandSession> {
 public:
+    using JoinedHandler = std::function<void(SocketcandSession&)>;
     using ClosedHandler = std::function<void(SocketcandSession&, const std::string& reason)>;
 
     SocketcandSession(boost::asio::ip::tcp::socket socket, std::string name, VirtualBus& bus,
-                      const SocketcandServerConfig& config, ClosedHandler on_closed);
+                      const SocketcandServerConfig& config, JoinedHandler on_joined,
+                      ClosedHandler on_closed);
 
-    /// Greets the client and starts reading.
+    /// Greets the client, starts reading and gives it SocketcandLimits::open_timeout to open
+    /// the bus.
     void start();
     /// Closes at once without reporting back: the server is going away.
     void abort();
 
     const std::string& name() const { return name_; }
     const std::string& remote() const { return remote_; }
+    /// Whether it has opened the bus (and so had a port on it).
+    bool joined() const { return last_port_statistics_.has_value(); }
+    /// Its port's counters, the last ones once the port is gone.
     SocketcandClientInfo info() const;
 
 private:
@@ -53,6 +60,12 @@ private:
     void handle(const socketcand::Malformed& command);
 
     void on_bus_frame(const Frame& frame);
+    /// The client has hung up: closes once the frames it sent have left its port's queue.
+    void close_when_sent();
+    /// Frames the client sent that its port still holds.
+    std::uint64_t frames_waiting() const;
+    /// Detaches the port from the bus, keeping its last counters.
+    void release_port();
     void reply_error(std::string_view reason);
     void enqueue(std::string_view message);
     void flush();
@@ -72,10 +85,19 @@ private:
     std::string remote_;
     VirtualBus& bus_;
     SocketcandServerConfig config_;
+    JoinedHandler on_joined_;
     ClosedHandler on_closed_;
 
     State state_ = State::NoBus;
+    core::ScopedTimer open_deadline_;
     std::unique_ptr<VirtualPort> port_;
+    std::optional<PortStatistics> last_port_statistics_;
+    /// Why the last frame the client sent was refused, until one is queued again: the client
+    /// is told once per burst of refusals, not once per frame.
+    std::optional<SendStatus> refusing_;
+    std::uint64_t frames_queued_ = 0;
+    std::optional<VirtualBus::ObserverId> drain_observer_;
+    core::ScopedTimer drain_deadline_;
     bool receive_paused_ = false;
     /// Frames of the first moments of raw mode, sent once the client has read its `< ok >`.
     std::string held_frames_;

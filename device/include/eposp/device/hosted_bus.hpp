@@ -24,6 +24,8 @@ struct HostedBusOptions {
     std::string name = "can0";
     std::uint32_t bitrate = 1'000'000;
     std::optional<std::string> socketcand;
+    /// --socketcand-queue, --socketcand-clients
+    can::io::SocketcandLimits socketcand_limits = {};
     std::optional<std::string> socketcan;
     /// A socketcand server (HOST:PORT) whose bus `join_bus` this bus is bridged onto, so that
     /// the host's nodes sit on a bus another process serves.
@@ -64,7 +66,8 @@ public:
     /// Runs until --for elapses, a signal comes, (virtual time) nothing is left to do, or the
     /// server of --join goes away (RunEnd::Lost); prints "interrupted" when a signal ended it.
     RunEnd run();
-    /// The bus statistics and those of every port, the host's and the socketcand clients'.
+    /// The bus statistics and those of every port, the host's and the socketcand clients'
+    /// (those that have left summed in one line, so that what they lost stays visible).
     void print_summary() const;
 
 private:

@@ -238,11 +238,17 @@ protected:
         return client;
     }
 
-    bool disconnected(std::string_view reason) const {
+    /// Whether a client left, or a connection was dropped, for `reason`.
+    bool ended(SocketcandClientEvent::Kind kind, std::string_view reason) const {
         return std::ranges::any_of(events, [&](const SocketcandClientEvent& event) {
-            return event.kind == SocketcandClientEvent::Kind::Disconnected &&
-                   event.reason == reason;
+            return event.kind == kind && event.reason == reason;
         });
+    }
+    bool left(std::string_view reason) const {
+        return ended(SocketcandClientEvent::Kind::Left, reason);
+    }
+    bool dropped(std::string_view reason) const {
+        return ended(SocketcandClientEvent::Kind::Dropped, reason);
     }
 
     core::EventLoop loop{core::Pace::RealTime};
@@ -277,7 +283,7 @@ TEST_F(SocketcandServerTest, FullSessionCarriesFramesBothWays) {
     auto client = join();
     EXPECT_EQ(server->client_count(), 1U);
     ASSERT_EQ(events.size(), 1U);
-    EXPECT_EQ(events[0].kind, SocketcandClientEvent::Kind::Connected);
+    EXPECT_EQ(events[0].kind, SocketcandClientEvent::Kind::Joined);
     EXPECT_EQ(events[0].client, "socketcand-1");
 
     ASSERT_EQ(node->send(Frame::data_frame(0x181, {0x01, 0x02})), SendStatus::Queued);
@@ -429,7 +435,7 @@ TEST_F(SocketcandServerTest, WrongBusNameIsRefusedAndTheConnectionClosed) {
               (std::vector<std::string>{
                   "< hi >", "< error could not open bus can1: this server has can0 >"}));
     ASSERT_TRUE(run_until([&] { return server->client_count() == 0; }));
-    EXPECT_TRUE(disconnected("it asked for bus 'can1', not 'can0'"));
+    EXPECT_TRUE(dropped("it asked for bus 'can1', not 'can0'"));
 }
 
 TEST_F(SocketcandServerTest, GarbageClosesThatSessionAndTheServerServesOthers) {
@@ -442,8 +448,8 @@ TEST_F(SocketcandServerTest, GarbageClosesThatSessionAndTheServerServesOthers) {
     EXPECT_EQ(garbage->messages().back(), "< error garbage outside a message >");
     EXPECT_EQ(oversize->messages().back(), "< error message too long >");
     ASSERT_TRUE(run_until([&] { return server->client_count() == 1; }));
-    EXPECT_TRUE(disconnected("it sent bytes outside a < > message"));
-    EXPECT_TRUE(disconnected("it sent a message longer than 128 bytes"));
+    EXPECT_TRUE(left("it sent bytes outside a < > message"));
+    EXPECT_TRUE(left("it sent a message longer than 128 bytes"));
 
     ASSERT_EQ(node->send(Frame::data_frame(0x222, {0x22})), SendStatus::Queued);
     ASSERT_TRUE(run_until([&] { return good->frames().size() == 1; }));
@@ -456,13 +462,113 @@ TEST_F(SocketcandServerTest, DisconnectDetachesThePort) {
     ASSERT_EQ(server->clients().size(), 2U);
     leaving->disconnect();
     ASSERT_TRUE(run_until([&] { return server->client_count() == 1; }));
-    EXPECT_TRUE(disconnected("the client disconnected"));
+    EXPECT_TRUE(left("the client disconnected"));
     const auto clients = server->clients();
     ASSERT_EQ(clients.size(), 1U);
     EXPECT_EQ(clients[0].client, "socketcand-2");
 
     staying->send("< send 010 1 01 >");
     ASSERT_TRUE(run_until([&] { return node_received.size() == 1; }));
+}
+
+// A client that sends faster than its transmit queue drains loses frames: it is told once per
+// burst, not once per frame, and what it lost is still counted after it has left.
+TEST_F(SocketcandServerTest, AFullTransmitQueueIsAnsweredOncePerBurstAndCountedAfterLeaving) {
+    start_server({.limits = {.tx_queue_capacity = 4}});
+    auto client = join();
+    constexpr std::size_t kBurst = 20;
+    std::string burst;
+    for (std::size_t i = 0; i < kBurst; ++i) {
+        burst += fmt::format("< send {:03X} 0 >", 0x100 + i);
+    }
+    const auto refused = [&] {
+        const auto clients = server->clients();
+        return clients.size() == 1 && clients[0].port ? clients[0].port->tx_overflows : 0U;
+    };
+    for (std::size_t sent = kBurst; sent <= 2 * kBurst; sent += kBurst) {
+        client->send(burst); // one TCP write, parsed at once: the bus cannot drain meanwhile
+        ASSERT_TRUE(run_until([&] { return node_received.size() + refused() == sent; }));
+    }
+    const std::vector<std::string> replies(client->messages().begin() + 3,
+                                           client->messages().end());
+    EXPECT_EQ(replies, std::vector<std::string>(
+                           2, "< error frame not sent: transmit queue full; the following ones "
+                              "are dropped without a reply until one is sent >"));
+    const std::uint64_t lost = refused();
+    EXPECT_GT(lost, 0U);
+
+    client->disconnect();
+    ASSERT_TRUE(run_until([&] { return server->client_count() == 0; }));
+    const SocketcandServerStatistics statistics = server->statistics();
+    EXPECT_EQ(statistics.left, 1U);
+    EXPECT_EQ(statistics.left_tx_overflows, lost);
+    EXPECT_EQ(statistics.left_tx_frames, node_received.size());
+}
+
+// A script that sends and hangs up at once: what it sent still goes on the bus, and its port
+// leaves once it has.
+TEST_F(SocketcandServerTest, FramesOfAClientThatHangsUpAreSentBeforeItsPortLeaves) {
+    auto client = join();
+    constexpr std::size_t kBurst = 100; // 5 ms of bus time at 1 Mbit/s
+    std::string burst;
+    for (std::size_t i = 0; i < kBurst; ++i) {
+        burst += fmt::format("< send {:03X} 1 {:02X} >", 0x100 + i, i);
+    }
+    client->send(burst);
+    ASSERT_TRUE(run_until([&] { return !node_received.empty(); }));
+    client->disconnect(); // with most of the burst still queued
+    ASSERT_TRUE(run_until([&] { return server->client_count() == 0; }));
+    EXPECT_EQ(node_received.size(), kBurst);
+    EXPECT_TRUE(left("the client disconnected"));
+    EXPECT_EQ(server->statistics().left_tx_frames, kBurst);
+}
+
+// "joined" means a port on the bus: a connection that has only been greeted is not a client yet.
+TEST_F(SocketcandServerTest, AClientJoinsWhenItOpensTheBusNotWhenItConnects) {
+    auto client = connect();
+    ASSERT_TRUE(run_until([&] { return client->messages().size() == 1; }));
+    EXPECT_TRUE(events.empty());
+    EXPECT_EQ(server->client_count(), 1U);
+    client->send("< open can0 >");
+    ASSERT_TRUE(run_until([&] { return !events.empty(); }));
+    EXPECT_EQ(events[0].kind, SocketcandClientEvent::Kind::Joined);
+    EXPECT_EQ(server->statistics().joined, 1U);
+}
+
+// An idle connection holds a file descriptor: one that does not open the bus in time is let go,
+// one that did stays however quiet it is.
+TEST_F(SocketcandServerTest, AConnectionThatDoesNotOpenTheBusInTimeIsDropped) {
+    start_server({.limits = {.open_timeout = std::chrono::milliseconds(100)}});
+    auto member = join();
+    auto idle = connect();
+    ASSERT_TRUE(run_until([&] { return idle->closed(); }));
+    EXPECT_EQ(idle->messages(),
+              (std::vector<std::string>{"< hi >", "< error no bus opened within 100ms >"}));
+    EXPECT_TRUE(dropped("it did not open a bus within 100ms"));
+    EXPECT_EQ(server->statistics().dropped, 1U);
+
+    ASSERT_EQ(node->send(Frame::data_frame(0x123, {})), SendStatus::Queued);
+    ASSERT_TRUE(run_until([&] { return member->frames().size() == 1; }));
+    EXPECT_FALSE(member->closed());
+    EXPECT_EQ(server->client_count(), 1U);
+}
+
+TEST_F(SocketcandServerTest, ConnectionsBeyondTheLimitAreTurnedAway) {
+    start_server({.limits = {.max_clients = 2}});
+    auto first = join();
+    auto second = connect(); // counts before it has opened the bus
+    ASSERT_TRUE(run_until([&] { return second->messages().size() == 1; }));
+    auto third = connect();
+    ASSERT_TRUE(run_until([&] { return third->closed(); }));
+    EXPECT_EQ(third->messages(), (std::vector<std::string>{"< error too many clients >"}));
+    EXPECT_TRUE(dropped("2 clients are connected already"));
+    EXPECT_EQ(server->statistics().turned_away, 1U);
+
+    first->disconnect();
+    ASSERT_TRUE(run_until([&] { return server->client_count() == 1; }));
+    auto fourth = connect();
+    ASSERT_TRUE(run_until([&] { return fourth->messages().size() == 1; }));
+    EXPECT_EQ(fourth->messages()[0], "< hi >");
 }
 
 TEST_F(SocketcandServerTest, ASlowClientIsPausedAndCountsOverflowsInsteadOfGrowing) {
