@@ -1,6 +1,7 @@
 // `eposp drive epos2` run as a user runs it.
 #include "eposp_command.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -54,6 +55,29 @@ TEST(DriveCommand, BadConfigFileIsAUserErrorWithItsPlace) {
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_THAT(result.output, HasSubstr("motor.yaml:2:3: error: unknown key 'resistence'"));
     EXPECT_EQ(eposp("drive epos2 --config /nonexistent.yaml --virtual --for 1ms").exit_code, 1);
+}
+
+// The drive's non-volatile memory (0x1010 / 0x1011, EPOS2 FW spec 8.2.8 / 8.2.9) lives in its
+// state directory: by default $XDG_STATE_HOME/eposp/epos2-<node-ID> (the tests point
+// XDG_STATE_HOME at their own directory), else --state-dir.
+TEST(DriveCommand, NonVolatileMemoryIsInTheDrivesStateDirectoryByDefault) {
+    const auto result = eposp("drive epos2 --node-id 5 --virtual --for 10ms");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_TRUE(std::filesystem::is_directory(scratch("xdg-state") / "eposp" / "epos2-5"));
+}
+
+TEST(DriveCommand, StateDirOptionNamesWhereTheParametersAreKept) {
+    const auto state = scratch("state");
+    std::filesystem::create_directories(state);
+    std::ofstream(state / "parameters.bin") << "not a parameter file\n";
+    const auto refused =
+        eposp("drive epos2 --state-dir " + state.string() + " --virtual --for 10ms");
+    EXPECT_EQ(refused.exit_code, 1);
+    EXPECT_THAT(refused.output, HasSubstr((state / "parameters.bin").string()));
+    std::filesystem::remove(state / "parameters.bin");
+    EXPECT_EQ(
+        eposp("drive epos2 --state-dir " + state.string() + " --virtual --for 10ms").exit_code, 0);
+    EXPECT_EQ(eposp("drive epos2 --state-dir /dev/null --virtual --for 10ms").exit_code, 1);
 }
 
 } // namespace

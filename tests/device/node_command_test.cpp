@@ -85,46 +85,97 @@ TEST(NodeCommand, PythonSdoBrowseReportsAValueThatDiffersFromTheEds) {
     EXPECT_THAT(result.output, HasSubstr(", 1 mismatches"));
 }
 
-// CiA 301 7.5.2.13: "save" to 0x1010 sub 1 stores the parameters in --parameter-file; the
-// next run of the node starts with them.
-TEST(NodeCommand, SavedParametersComeBackAtTheNextRun) {
-    const auto parameters = scratch("parameters.bin");
-    std::filesystem::remove(parameters);
-    const auto client = scratch("heartbeat_time.py");
+/// A socketcand client of node 5: with `save`, it writes the heartbeat time, saves (0x1010 sub 1
+/// "save"), configures 250 kbit/s by LSS and stores the LSS configuration, printing each answer;
+/// then it reads the heartbeat time back.
+std::filesystem::path storing_client() {
+    const auto client = scratch("storing_client.py");
     std::ofstream(client) << "import sys\n"
                              "sys.path.insert(0, sys.argv[1])\n"
                              "import can, sdo_browse\n"
                              "bus = can.Bus(interface='socketcand', channel='can0', "
                              "host=sys.argv[2], port=int(sys.argv[3]))\n"
                              "sdo = sdo_browse.SdoClient(bus, 5)\n"
+                             "def lss(cs, *data):\n"
+                             "    bus.send(can.Message(arbitration_id=0x7E5, is_extended_id=False,"
+                             " data=bytes([cs, *data]) + bytes(7 - len(data))))\n"
+                             "    while cs != 0x04:\n"
+                             "        reply = bus.recv(2.0)\n"
+                             "        if reply is None:\n"
+                             "            return 'no answer'\n"
+                             "        if reply.arbitration_id == 0x7E4 and reply.data[0] == cs:\n"
+                             "            return reply.data[1]\n"
                              "if sys.argv[4] == 'save':\n"
                              "    sdo.download(0x1017, 0, (250).to_bytes(2, 'little'))\n"
                              "    sdo.download(0x1010, 1, b'save')\n"
+                             "    lss(0x04, 0x01)\n"
+                             "    print('lss bit timing', lss(0x13, 0, 3))\n"
+                             "    print('lss store', lss(0x17))\n"
+                             "    lss(0x04, 0x00)\n"
                              "print('heartbeat time', int.from_bytes(sdo.upload(0x1017, 0), "
                              "'little'))\n"
                              "bus.shutdown()\n";
-    const auto run = [&](const std::string& action) {
-        return run_command(
-            "sh -c '" +
-            start_in_background(scratch(action + ".out"),
-                                "node --eds " + kSampleEds +
-                                    " --node-id 5 --socketcand 127.0.0.1:0 --for 60s "
-                                    "--parameter-file " +
-                                    parameters.string()) +
-            "/usr/bin/python3 " + client.string() + " " + kExampleDir +
-            " ${address%:*} ${address##*:} " + action +
-            " 2>&1; code=$?; kill -INT $pid; wait $pid; exit $code'");
+    return client;
+}
+
+/// Runs `eposp node` on the sample EDS with `storage` options and storing_client() `action`
+/// against it.
+test::CommandResult run_storing_client(const std::string& storage, const std::string& action) {
+    return run_command("sh -c '" +
+                       start_in_background(scratch(action + ".out"),
+                                           "node --eds " + kSampleEds +
+                                               " --node-id 5 --socketcand 127.0.0.1:0 --for 60s " +
+                                               storage) +
+                       "/usr/bin/python3 " + storing_client().string() + " " + kExampleDir +
+                       " ${address%:*} ${address##*:} " + action +
+                       " 2>&1; code=$?; kill -INT $pid; wait $pid; exit $code'");
+}
+
+struct StorageCase {
+    std::string name;
+    std::string options;        ///< {dir}: the test's own directory
+    std::string parameter_file; ///< where the parameters must be, under {dir}
+    friend void PrintTo(const StorageCase& c, std::ostream* os) { *os << c.name; }
+};
+
+class NodeStorage : public testing::TestWithParam<StorageCase> {};
+
+// CiA 301 7.5.2.13 and CiA 305 store configuration: "save" to 0x1010 sub 1 stores the
+// parameters, LSS stores the configuration beside them, and the next run of the node starts
+// with them: by default in the node's state directory ($XDG_STATE_HOME/eposp/node-5, which the
+// tests point at their own directory), or where --state-dir or --parameter-file say.
+TEST_P(NodeStorage, SavedParametersAndLssConfigurationComeBackAtTheNextRun) {
+    const std::string dir = test::test_directory().string();
+    const auto expand = [&dir](std::string text) {
+        for (auto at = text.find("{dir}"); at != std::string::npos; at = text.find("{dir}")) {
+            text.replace(at, 5, dir);
+        }
+        return text;
     };
-    const auto saved = run("save");
+    const std::string options = expand(GetParam().options);
+    const auto saved = run_storing_client(options, "save");
     if (saved.exit_code != 0 && saved.output.find("No module named 'can'") != std::string::npos) {
         GTEST_SKIP() << "python-can is not installed (Debian: python3-can)";
     }
     ASSERT_EQ(saved.exit_code, 0) << saved.output;
+    EXPECT_THAT(saved.output, HasSubstr("lss bit timing 0\n")); // BaudRate_250=1
+    EXPECT_THAT(saved.output, HasSubstr("lss store 0\n"));
     EXPECT_THAT(saved.output, HasSubstr("heartbeat time 250"));
-    const auto read = run("read");
+    const std::filesystem::path parameters = expand(GetParam().parameter_file);
+    EXPECT_TRUE(std::filesystem::is_regular_file(parameters)) << parameters;
+    EXPECT_TRUE(std::filesystem::is_regular_file(parameters.string() + ".lss")) << parameters;
+    const auto read = run_storing_client(options, "read");
     ASSERT_EQ(read.exit_code, 0) << read.output;
     EXPECT_THAT(read.output, HasSubstr("heartbeat time 250"));
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    Places, NodeStorage,
+    testing::Values(
+        StorageCase{"StateDirectoryByDefault", "", "{dir}/xdg-state/eposp/node-5/parameters.bin"},
+        StorageCase{"StateDirOption", "--state-dir {dir}/state", "{dir}/state/parameters.bin"},
+        StorageCase{"ParameterFileOption", "--parameter-file {dir}/node.par", "{dir}/node.par"}),
+    [](const testing::TestParamInfo<StorageCase>& storage) { return storage.param.name; });
 
 struct UserError {
     std::string arguments;
@@ -153,6 +204,8 @@ INSTANTIATE_TEST_SUITE_P(
         UserError{"--eds " + kSampleEds + " --node-id 0", "--node-id: Value 0 not in range"},
         UserError{"--eds " + kSampleEds + " --node-id 128", "--node-id: Value 128 not in range"},
         UserError{"--node-id 5", "--eds is required"},
+        UserError{"--eds " + kSampleEds + " --node-id 5 --state-dir /dev/null",
+                  "state directory /dev/null"},
         UserError{"--eds " + kSampleEds + " --node-id 5 --bitrate 300000",
                   "--bitrate 300000 is not a CANopen bit rate"}));
 

@@ -6,10 +6,12 @@
 #include "eposp/drives/plant/axis_file.hpp"
 #include "file_checks.hpp"
 #include "options.hpp"
+#include "state_directory.hpp"
 
 #include <cstdio>
 #include <fmt/format.h>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,7 @@ struct DriveOptions {
     HostedBusOptions hosting;
     int node_id = 1;
     std::string config; ///< the machine's YAML file; the reference axis without one
+    std::optional<std::string> state_dir;
 };
 
 int run_drive(const DriveOptions& options) {
@@ -36,11 +39,24 @@ int run_drive(const DriveOptions& options) {
         }
         inputs.push_back(options.config);
     }
+    // The non-volatile memory of 0x1010 / 0x1011 (8.2.8, 8.2.9), kept across runs.
+    const auto state = state_directory(options.state_dir, fmt::format("epos2-{}", options.node_id));
+    if (!state) {
+        return report_user_error(kCommand, state.error());
+    }
+    const std::string parameter_file = (*state / kParameterFileName).string();
+    if (auto problem =
+            output_file_problem({"--state-dir", parameter_file, OutputKind::ParameterFile}, inputs,
+                                options.hosting.force)) {
+        return report_user_error(kCommand, *problem);
+    }
+    inputs.push_back(parameter_file);
     if (auto problem = hosted_bus_outputs_problem(options.hosting, inputs)) {
         return report_user_error(kCommand, *problem);
     }
     drives::epos2::Epos2DriveConfig config;
     config.dictionary.node_id = static_cast<canopen::NodeId>(options.node_id);
+    config.dictionary.parameter_file = parameter_file;
     if (!options.config.empty()) {
         auto axis = drives::plant::load_axis_file(options.config);
         if (!axis) {
@@ -84,6 +100,7 @@ void add_drive_command(CLI::App& app, int& exit_code) {
     epos2->add_option("--config", options->config,
                       "YAML file of the simulated machine: motor, gearhead, encoder, load, power "
                       "stage, gains, switch positions (docs/epos2.md)");
+    add_state_dir_option(*epos2, options->state_dir, "epos2-<node-ID>");
     add_hosted_bus_options(*epos2, options->hosting);
     epos2->callback([options, &exit_code] { exit_code = run_drive(*options); });
 }

@@ -8,6 +8,7 @@
 #include "eposp/device/hosted_bus.hpp"
 #include "file_checks.hpp"
 #include "options.hpp"
+#include "state_directory.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -28,6 +29,7 @@ struct NodeOptions {
     std::string eds;
     unsigned node_id = 0;
     std::optional<std::string> parameter_file;
+    std::optional<std::string> state_dir;
 };
 
 core::Result<std::string> read_text_file(const std::string& path) {
@@ -65,7 +67,8 @@ void make_parameters_persistent(canopen::ObjectDictionary& od) {
 
 /// The node's configuration beyond the EDS: 0x1000 and 0x1018 come from the EDS where it has
 /// them (the node adds only what the dictionary lacks), else from its [DeviceInfo].
-canopen::NodeConfig node_config(const NodeOptions& options, const canopen::ImportedEds& eds) {
+canopen::NodeConfig node_config(const NodeOptions& options, const canopen::ImportedEds& eds,
+                                const std::string& parameter_file) {
     const canopen::ObjectDictionary& od = eds.dictionary;
     canopen::NodeConfig config;
     config.node_id = static_cast<canopen::NodeId>(options.node_id);
@@ -76,32 +79,56 @@ canopen::NodeConfig node_config(const NodeOptions& options, const canopen::Impor
         .revision_number = u32_or(od, canopen::kIdentityIndex, 3, eds.device.revision_number),
         .serial_number = u32_or(od, canopen::kIdentityIndex, 4, 0),
     };
-    if (options.parameter_file) {
-        config.parameter_file = *options.parameter_file;
-    }
+    config.parameter_file = parameter_file;
+    // CiA 305: LSS takes the bit rates the EDS declares. The simulated bus keeps the rate it
+    // was opened with (a port has none of its own): a switch to another one is only told.
+    config.bit_rates = eds.device.bit_rates();
+    config.bit_rate = options.hosting.bitrate;
+    config.switch_bit_rate = [node = options.node_id,
+                              bus = options.hosting.bitrate](std::uint32_t bit_rate) {
+        if (bit_rate != bus) {
+            fmt::print("node {}: LSS activated {} bit/s (the simulated bus runs at {} bit/s)\n",
+                       node, bit_rate, bus);
+        }
+    };
     return config;
+}
+
+/// --parameter-file, else the parameter file of the node's state directory.
+core::Result<std::string> parameter_file(const NodeOptions& options) {
+    if (options.parameter_file) {
+        return *options.parameter_file;
+    }
+    auto directory = state_directory(options.state_dir, fmt::format("node-{}", options.node_id));
+    if (!directory) {
+        return core::Error{directory.error()};
+    }
+    return (*directory / kParameterFileName).string();
 }
 
 // The EDS is read and the parameter file both read and written: neither may be a trace, and the
 // parameter file is replaced only when it is one (file_checks.hpp).
-std::optional<std::string> files_problem(const NodeOptions& options) {
+std::optional<std::string> files_problem(const NodeOptions& options,
+                                         const std::string& parameter_file) {
     if (auto problem = input_file_problem(options.eds, "an EDS file")) {
         return "--eds " + *problem;
     }
     std::vector<std::string> inputs{options.eds};
-    if (options.parameter_file) {
-        if (auto problem = output_file_problem(
-                {"--parameter-file", *options.parameter_file, OutputKind::ParameterFile}, inputs,
-                options.hosting.force)) {
-            return problem;
-        }
-        inputs.push_back(*options.parameter_file);
+    const std::string option = options.parameter_file ? "--parameter-file" : "--state-dir";
+    if (auto problem = output_file_problem({option, parameter_file, OutputKind::ParameterFile},
+                                           inputs, options.hosting.force)) {
+        return problem;
     }
+    inputs.push_back(parameter_file);
     return hosted_bus_outputs_problem(options.hosting, inputs);
 }
 
 int run_node(const NodeOptions& options) {
-    if (auto problem = files_problem(options)) {
+    const auto parameters = parameter_file(options);
+    if (!parameters) {
+        return report_user_error(kCommand, parameters.error());
+    }
+    if (auto problem = files_problem(options, *parameters)) {
         return report_user_error(kCommand, *problem);
     }
     const auto text = read_text_file(options.eds);
@@ -130,7 +157,7 @@ int run_node(const NodeOptions& options) {
 
     const std::string port_name = fmt::format("node {}", options.node_id);
     canopen::Node node(host.loop(), host.attach(port_name), eds->dictionary,
-                       node_config(options, *eds));
+                       node_config(options, *eds, *parameters));
     const std::string& name =
         eds->device.product_name.empty() ? options.eds : eds->device.product_name;
     fmt::print("node {} ({}) on bus {}{}\n", options.node_id, name, options.hosting.name,
@@ -159,7 +186,9 @@ void add_node_command(CLI::App& app, int& exit_code) {
         ->required()
         ->check(CLI::Range(1U, unsigned{canopen::kMaxNodeId}));
     command->add_option("--parameter-file", options->parameter_file,
-                        "Non-volatile memory of 0x1010 store / 0x1011 restore");
+                        "Non-volatile memory of 0x1010 store / 0x1011 restore (LSS store "
+                        "configuration beside it, FILE.lss); default: in --state-dir");
+    add_state_dir_option(*command, options->state_dir, "node-<node-ID>");
     add_hosted_bus_options(*command, options->hosting);
     command->callback([options, &exit_code] { exit_code = run_node(*options); });
 }

@@ -1,5 +1,7 @@
 #include "eposp/test/run_command.hpp"
 
+#include "eposp/test/test_directory.hpp"
+
 #include <array>
 #include <cstdio>
 #include <sstream>
@@ -18,7 +20,11 @@ std::vector<std::string> CommandResult::lines() const {
 }
 
 CommandResult run_command(const std::string& command) {
-    FILE* pipe = popen(command.c_str(), "r");
+    // The simulated devices keep their non-volatile memory under $XDG_STATE_HOME: a test's own
+    // directory, never the user's (for every command of the script: export).
+    const std::string script =
+        "export XDG_STATE_HOME='" + test_file("xdg-state").string() + "'; " + command;
+    FILE* pipe = popen(script.c_str(), "r");
     if (pipe == nullptr) {
         throw std::runtime_error("cannot start: " + command);
     }

@@ -12,7 +12,9 @@ struct CommandResult {
     std::vector<std::string> lines() const;
 };
 
-/// Runs `command` through /bin/sh, the way a user types it, and waits for it.
+/// Runs `command` through /bin/sh, the way a user types it, and waits for it; XDG_STATE_HOME
+/// is a directory of the test's own (test_directory.hpp), so that no command writes to the
+/// user's state directory.
 CommandResult run_command(const std::string& command);
 
 } // namespace eposp::test
