@@ -422,7 +422,7 @@ TEST(EposP, TheManufacturerStatusRegisterGathersSlavesErrorRegistersAndMasterWar
     static_cast<can::VirtualPort&>(device.external_port())
         .force_error_state(can::ErrorState::Passive);
     device.loop().run_for(10ms);
-    EXPECT_EQ(status(), 0x0011'1011u); // 0x1001: the communication bit
+    EXPECT_EQ(status(), 0x0011'1111u); // 0x1001: the communication and generic bits
     // Clearing the history clears the warnings.
     ASSERT_EQ(device.objects().write(0x1003, 0, canopen::encode(std::uint8_t{0})),
               canopen::AbortCode::None);

@@ -93,12 +93,8 @@ std::uint8_t EmcyProducer::update_register() {
     for (const auto& [code, error_bits] : active_) {
         bits = static_cast<std::uint8_t>(bits | error_bits);
     }
-    // CiA 301 7.5.2.2: the generic error bit is set with every error.
-    if (!active_.empty()) {
-        bits = static_cast<std::uint8_t>(bits | error_register::kGeneric);
-    }
-    history_.set_error_register(bits);
-    return bits;
+    history_.set_error_register(bits); // with the generic bit (CiA 301 7.5.2.2)
+    return history_.error_register();
 }
 
 void EmcyProducer::emit(std::uint16_t error_code, std::uint8_t error_register,

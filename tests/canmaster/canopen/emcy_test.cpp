@@ -275,6 +275,15 @@ TEST_F(EmcyErrorHistory, DeviceMayClearItAndSetTheRegister) {
     EXPECT_EQ(od.get_as<std::uint32_t>(0x1003, 1), 0U);
 }
 
+// CiA 301 7.5.2.2: whoever sets the register (the EMCY producer, a device's own error list),
+// any error bit comes with the generic one; no error, no bit.
+TEST_F(EmcyErrorHistory, RegisterHasTheGenericBitWithEveryError) {
+    history.set_error_register(error_register::kCommunication);
+    EXPECT_EQ(history.error_register(), 0x11);
+    history.set_error_register(0);
+    EXPECT_EQ(history.error_register(), 0x00);
+}
+
 struct HistoryWriteCase {
     const char* what;
     std::uint16_t index;

@@ -46,6 +46,7 @@ public:
     std::vector<std::uint32_t> entries() const;
 
     std::uint8_t error_register() const;
+    /// `bits`, with the generic error bit whenever any bit is set (CiA 301 7.5.2.2).
     void set_error_register(std::uint8_t bits);
 
 private:
