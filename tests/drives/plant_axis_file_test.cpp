@@ -196,7 +196,7 @@ TEST(AxisFile, DuplicateKeysAndASecondDocumentAreRefused) {
          "m.yaml:2:1: error: duplicate key 'encoder' in 'the file'"},
         {"gains:\n  current: {p: 1, p: 2}\n", "duplicate key 'p' in 'gains.current'"},
         {"encoder: {pulses: 500}\n---\nencoder: {pulses: 512}\n",
-         "m.yaml:3:1: error: a second YAML document: the file describes one machine"},
+         "m.yaml:2:1: error: a second YAML document: a file holds one"},
         {"encoder: {pulses: 500}\n---\n- [1\n", "m.yaml:"},
     };
     for (const auto& bad : cases) {

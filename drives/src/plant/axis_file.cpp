@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <fmt/format.h>
-#include <set>
 #include <string>
 
 namespace eposp::drives::plant {
@@ -19,23 +18,6 @@ constexpr double kMilli = 1e-3;
 constexpr double kGramSquareCentimetre = 1e-7; ///< kg·m²
 
 using yaml::Reader;
-using Readers = std::map<std::string, std::function<void(const YAML::Node&)>>;
-
-/// Reader::each_key, refusing a key given twice (YAML 1.2 7.2: keys are unique; yaml-cpp keeps
-/// both, and the second would silently win).
-void each_key(Reader& in, const YAML::Node& node, std::string_view section,
-              const Readers& readers) {
-    if (node.IsMap()) {
-        std::set<std::string> seen;
-        for (const auto& entry : node) {
-            const auto& key = entry.first.Scalar();
-            if (entry.first.IsScalar() && !seen.insert(key).second) {
-                in.fail(entry.first, fmt::format("duplicate key '{}' in '{}'", key, section));
-            }
-        }
-    }
-    in.each_key(node, section, readers);
-}
 
 /// A physical quantity in the file's unit, times `unit` for SI.
 auto quantity(Reader& in, double& field, std::string what, limits::Quantity range,
@@ -80,29 +62,29 @@ auto position(Reader& in, std::optional<std::int64_t>& field, std::string what,
 }
 
 void read_motor(Reader& in, const YAML::Node& node, MotorParameters& motor) {
-    each_key(in, node, "motor",
-             {{"type",
-               [&](const YAML::Node& value) {
-                   const auto type = in.scalar<std::string>(value, "motor.type");
-                   if (type != "dc" && type != "ec") {
-                       in.fail(value, "motor.type must be 'dc' or 'ec'");
-                   }
-                   motor.kind = type == "dc" ? MotorKind::BrushedDc : MotorKind::Ec;
-               }},
-              {"terminal_resistance",
-               quantity(in, motor.terminal_resistance, "motor.terminal_resistance",
-                        limits::kTerminalResistance)},
-              {"terminal_inductance",
-               quantity(in, motor.terminal_inductance, "motor.terminal_inductance",
-                        limits::kTerminalInductance, kMilli)},
-              {"torque_constant", quantity(in, motor.torque_constant, "motor.torque_constant",
-                                           limits::kTorqueConstant, kMilli)},
-              {"speed_constant",
-               quantity(in, motor.speed_constant, "motor.speed_constant", limits::kSpeedConstant)},
-              {"rotor_inertia", quantity(in, motor.rotor_inertia, "motor.rotor_inertia",
-                                         limits::kRotorInertia, kGramSquareCentimetre)},
-              {"pole_pairs",
-               dictionary_value(in, motor.pole_pairs, "motor.pole_pairs", limits::kPolePairs)}});
+    in.each_key(node, "motor",
+                {{"type",
+                  [&](const YAML::Node& value) {
+                      const auto type = in.scalar<std::string>(value, "motor.type");
+                      if (type != "dc" && type != "ec") {
+                          in.fail(value, "motor.type must be 'dc' or 'ec'");
+                      }
+                      motor.kind = type == "dc" ? MotorKind::BrushedDc : MotorKind::Ec;
+                  }},
+                 {"terminal_resistance",
+                  quantity(in, motor.terminal_resistance, "motor.terminal_resistance",
+                           limits::kTerminalResistance)},
+                 {"terminal_inductance",
+                  quantity(in, motor.terminal_inductance, "motor.terminal_inductance",
+                           limits::kTerminalInductance, kMilli)},
+                 {"torque_constant", quantity(in, motor.torque_constant, "motor.torque_constant",
+                                              limits::kTorqueConstant, kMilli)},
+                 {"speed_constant", quantity(in, motor.speed_constant, "motor.speed_constant",
+                                             limits::kSpeedConstant)},
+                 {"rotor_inertia", quantity(in, motor.rotor_inertia, "motor.rotor_inertia",
+                                            limits::kRotorInertia, kGramSquareCentimetre)},
+                 {"pole_pairs",
+                  dictionary_value(in, motor.pole_pairs, "motor.pole_pairs", limits::kPolePairs)}});
 }
 
 void read_gains(Reader& in, const YAML::Node& node, ServoGains& gains) {
@@ -111,52 +93,52 @@ void read_gains(Reader& in, const YAML::Node& node, ServoGains& gains) {
     VelocityControlParameterSet velocity = to_parameter_set(gains.velocity);
     PositionControlParameterSet position = to_parameter_set(gains.position);
     int current_limit_ma = static_cast<int>(std::lround(gains.current_limit / kMilli));
-    each_key(in, node, "gains",
-             {{"current",
-               [&](const YAML::Node& sub) {
-                   each_key(in, sub, "gains.current",
-                            {{"p", dictionary_value(in, current.p_gain, "gains.current.p",
-                                                    limits::kCurrentP)},
-                             {"i", dictionary_value(in, current.i_gain, "gains.current.i",
-                                                    limits::kCurrentI)}});
-               }},
-              {"velocity",
-               [&](const YAML::Node& sub) {
-                   each_key(in, sub, "gains.velocity",
-                            {{"p", dictionary_value(in, velocity.p_gain, "gains.velocity.p",
-                                                    limits::kVelocityP)},
-                             {"i", dictionary_value(in, velocity.i_gain, "gains.velocity.i",
-                                                    limits::kVelocityI)},
-                             {"velocity_feed_forward",
-                              dictionary_value(in, velocity.velocity_feed_forward,
-                                               "gains.velocity.velocity_feed_forward",
-                                               limits::kVelocityFeedForward)},
-                             {"acceleration_feed_forward",
-                              dictionary_value(in, velocity.acceleration_feed_forward,
-                                               "gains.velocity.acceleration_feed_forward",
-                                               limits::kVelocityAccelerationFeedForward)}});
-               }},
-              {"position",
-               [&](const YAML::Node& sub) {
-                   each_key(in, sub, "gains.position",
-                            {{"p", dictionary_value(in, position.p_gain, "gains.position.p",
-                                                    limits::kPositionP)},
-                             {"i", dictionary_value(in, position.i_gain, "gains.position.i",
-                                                    limits::kPositionI)},
-                             {"d", dictionary_value(in, position.d_gain, "gains.position.d",
-                                                    limits::kPositionD)},
-                             {"velocity_feed_forward",
-                              dictionary_value(in, position.velocity_feed_forward,
-                                               "gains.position.velocity_feed_forward",
-                                               limits::kPositionFeedForward)},
-                             {"acceleration_feed_forward",
-                              dictionary_value(in, position.acceleration_feed_forward,
-                                               "gains.position.acceleration_feed_forward",
-                                               limits::kPositionAccelerationFeedForward)}});
-               }},
-              {"output_current_limit", // mA
-               dictionary_value(in, current_limit_ma, "gains.output_current_limit",
-                                limits::kOutputCurrentLimit)}});
+    in.each_key(node, "gains",
+                {{"current",
+                  [&](const YAML::Node& sub) {
+                      in.each_key(sub, "gains.current",
+                                  {{"p", dictionary_value(in, current.p_gain, "gains.current.p",
+                                                          limits::kCurrentP)},
+                                   {"i", dictionary_value(in, current.i_gain, "gains.current.i",
+                                                          limits::kCurrentI)}});
+                  }},
+                 {"velocity",
+                  [&](const YAML::Node& sub) {
+                      in.each_key(sub, "gains.velocity",
+                                  {{"p", dictionary_value(in, velocity.p_gain, "gains.velocity.p",
+                                                          limits::kVelocityP)},
+                                   {"i", dictionary_value(in, velocity.i_gain, "gains.velocity.i",
+                                                          limits::kVelocityI)},
+                                   {"velocity_feed_forward",
+                                    dictionary_value(in, velocity.velocity_feed_forward,
+                                                     "gains.velocity.velocity_feed_forward",
+                                                     limits::kVelocityFeedForward)},
+                                   {"acceleration_feed_forward",
+                                    dictionary_value(in, velocity.acceleration_feed_forward,
+                                                     "gains.velocity.acceleration_feed_forward",
+                                                     limits::kVelocityAccelerationFeedForward)}});
+                  }},
+                 {"position",
+                  [&](const YAML::Node& sub) {
+                      in.each_key(sub, "gains.position",
+                                  {{"p", dictionary_value(in, position.p_gain, "gains.position.p",
+                                                          limits::kPositionP)},
+                                   {"i", dictionary_value(in, position.i_gain, "gains.position.i",
+                                                          limits::kPositionI)},
+                                   {"d", dictionary_value(in, position.d_gain, "gains.position.d",
+                                                          limits::kPositionD)},
+                                   {"velocity_feed_forward",
+                                    dictionary_value(in, position.velocity_feed_forward,
+                                                     "gains.position.velocity_feed_forward",
+                                                     limits::kPositionFeedForward)},
+                                   {"acceleration_feed_forward",
+                                    dictionary_value(in, position.acceleration_feed_forward,
+                                                     "gains.position.acceleration_feed_forward",
+                                                     limits::kPositionAccelerationFeedForward)}});
+                  }},
+                 {"output_current_limit", // mA
+                  dictionary_value(in, current_limit_ma, "gains.output_current_limit",
+                                   limits::kOutputCurrentLimit)}});
     gains.current = to_si(current);
     gains.velocity = to_si(velocity);
     gains.position = to_si(position);
@@ -164,15 +146,15 @@ void read_gains(Reader& in, const YAML::Node& node, ServoGains& gains) {
 }
 
 void read_switches(Reader& in, const YAML::Node& node, SwitchLayout& switches) {
-    each_key(in, node, "switches",
-             {{"negative_limit", position(in, switches.negative_limit, "switches.negative_limit")},
-              {"positive_limit", position(in, switches.positive_limit, "switches.positive_limit")},
-              {"home", position(in, switches.home, "switches.home")},
-              {"home_length", position(in, switches.home_length, "switches.home_length", 1)},
-              {"home_active_above", [&](const YAML::Node& value) {
-                   switches.home_active_above =
-                       in.scalar<bool>(value, "switches.home_active_above");
-               }}});
+    in.each_key(
+        node, "switches",
+        {{"negative_limit", position(in, switches.negative_limit, "switches.negative_limit")},
+         {"positive_limit", position(in, switches.positive_limit, "switches.positive_limit")},
+         {"home", position(in, switches.home, "switches.home")},
+         {"home_length", position(in, switches.home_length, "switches.home_length", 1)},
+         {"home_active_above", [&](const YAML::Node& value) {
+              switches.home_active_above = in.scalar<bool>(value, "switches.home_active_above");
+          }}});
     // "Pressed at and beyond": limits the wrong way round (or on one position) leave no travel.
     if (switches.negative_limit && switches.positive_limit &&
         *switches.negative_limit >= *switches.positive_limit) {
@@ -188,8 +170,8 @@ AxisParameters read_axis(Reader& in, const YAML::Node& root) {
     if (root.IsNull()) {
         return axis; // an empty file: the reference axis
     }
-    each_key(
-        in, root, "the file",
+    in.each_key(
+        root, "the file",
         {{"motor",
           [&](const YAML::Node& node) {
               read_motor(in, node, axis.plant.motor);
@@ -197,23 +179,23 @@ AxisParameters read_axis(Reader& in, const YAML::Node& root) {
          {"gearhead",
           [&](const YAML::Node& node) {
               GearheadParameters& gearhead = axis.plant.gearhead;
-              each_key(
-                  in, node, "gearhead",
+              in.each_key(
+                  node, "gearhead",
                   {{"ratio", quantity(in, gearhead.ratio, "gearhead.ratio", limits::kGearRatio)},
                    {"efficiency", quantity(in, gearhead.efficiency, "gearhead.efficiency",
                                            limits::kGearEfficiency)}});
           }},
          {"encoder",
           [&](const YAML::Node& node) {
-              each_key(in, node, "encoder",
-                       {{"pulses", dictionary_value(in, axis.encoder_pulses, "encoder.pulses",
-                                                    limits::kEncoderPulses)}});
+              in.each_key(node, "encoder",
+                          {{"pulses", dictionary_value(in, axis.encoder_pulses, "encoder.pulses",
+                                                       limits::kEncoderPulses)}});
           }},
          {"load",
           [&](const YAML::Node& node) {
               LoadParameters& load = axis.plant.load;
-              each_key(
-                  in, node, "load",
+              in.each_key(
+                  node, "load",
                   {{"inertia", quantity(in, load.inertia, "load.inertia", limits::kLoadInertia,
                                         kGramSquareCentimetre)},
                    {"viscous_friction", quantity(in, load.viscous_friction, "load.viscous_friction",
@@ -224,20 +206,21 @@ AxisParameters read_axis(Reader& in, const YAML::Node& root) {
          {"power_stage",
           [&](const YAML::Node& node) {
               PowerStageParameters& stage = axis.plant.power_stage;
-              each_key(in, node, "power_stage",
-                       {{"supply_voltage",
-                         quantity(in, stage.supply_voltage, "power_stage.supply_voltage",
-                                  limits::kSupplyVoltage)},
-                        {"max_duty",
-                         quantity(in, stage.max_duty, "power_stage.max_duty", limits::kMaxDuty)},
-                        {"min_supply_voltage",
-                         quantity(in, stage.min_supply_voltage, "power_stage.min_supply_voltage",
-                                  limits::kSupplyLimit)},
-                        {"max_supply_voltage",
-                         quantity(in, stage.max_supply_voltage, "power_stage.max_supply_voltage",
-                                  limits::kSupplyLimit)},
-                        {"overcurrent", quantity(in, stage.overcurrent, "power_stage.overcurrent",
-                                                 limits::kOvercurrent)}});
+              in.each_key(
+                  node, "power_stage",
+                  {{"supply_voltage",
+                    quantity(in, stage.supply_voltage, "power_stage.supply_voltage",
+                             limits::kSupplyVoltage)},
+                   {"max_duty",
+                    quantity(in, stage.max_duty, "power_stage.max_duty", limits::kMaxDuty)},
+                   {"min_supply_voltage",
+                    quantity(in, stage.min_supply_voltage, "power_stage.min_supply_voltage",
+                             limits::kSupplyLimit)},
+                   {"max_supply_voltage",
+                    quantity(in, stage.max_supply_voltage, "power_stage.max_supply_voltage",
+                             limits::kSupplyLimit)},
+                   {"overcurrent", quantity(in, stage.overcurrent, "power_stage.overcurrent",
+                                            limits::kOvercurrent)}});
           }},
          {"gains",
           [&](const YAML::Node& node) {
@@ -252,21 +235,10 @@ AxisParameters read_axis(Reader& in, const YAML::Node& root) {
     return axis;
 }
 
-/// One machine per file: a second document ("---") would be ignored by YAML::Load.
-void refuse_second_document(Reader& in, std::string_view text) {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(std::string(text));
-    if (documents.size() > 1) {
-        in.fail(documents[1], "a second YAML document: the file describes one machine");
-    }
-}
-
 } // namespace
 
 core::Result<AxisParameters> parse_axis_file(std::string_view text, std::string_view source) {
-    return yaml::parse<AxisParameters>(text, source, [text](Reader& in, const YAML::Node& root) {
-        refuse_second_document(in, text);
-        return read_axis(in, root);
-    });
+    return yaml::parse<AxisParameters>(text, source, read_axis);
 }
 
 core::Result<AxisParameters> load_axis_file(const std::filesystem::path& path) {

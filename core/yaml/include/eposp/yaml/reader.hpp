@@ -25,8 +25,11 @@ public:
     explicit Reader(std::string_view source) : source_(source) {}
 
     [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const;
+    [[noreturn]] void fail(const YAML::Mark& mark, const std::string& message) const;
 
-    /// Calls `read` for each key of the mapping `node`; a key without a reader is an error.
+    /// Calls `read` for each key of the mapping `node`; a key without a reader is an error, and
+    /// so is a key given twice (YAML 1.2 3.2.1.1: keys are unique; yaml-cpp keeps both, and the
+    /// second would silently win).
     void each_key(const YAML::Node& node, std::string_view section,
                   const std::map<std::string, std::function<void(const YAML::Node&)>>& readers);
 
@@ -59,6 +62,10 @@ private:
     std::string_view source_;
 };
 
+/// The one document of `text`; a second one is an error (a file describes one thing, and
+/// YAML::Load would silently ignore the rest).
+YAML::Node load_one_document(const Reader& in, std::string_view text);
+
 /// Parses `text` (named `source` in messages) and reads its root with `read`; a YAML syntax
 /// error or a mistake `read` reports is the Error.
 template <typename T>
@@ -66,7 +73,7 @@ core::Result<T> parse(std::string_view text, std::string_view source,
                       const std::function<T(Reader& in, const YAML::Node& root)>& read) {
     Reader in(source);
     try {
-        return read(in, YAML::Load(std::string(text)));
+        return read(in, load_one_document(in, text));
     } catch (const FileError& error) {
         return core::Error{error.message};
     } catch (const YAML::Exception& error) {
