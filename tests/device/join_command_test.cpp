@@ -57,6 +57,48 @@ TEST(JoinCommand, ADriveJoinsTheBusAnotherProcessServes) {
     EXPECT_THAT(read_file(bus_out), HasSubstr("socketcand: socketcand-1 joined from 127.0.0.1:"));
 }
 
+// python-canopen guards a node through python-can 4.1's socketcand interface, which writes the
+// guard request (a remote frame) as a frame without data: the node, which joined the served bus
+// from another process, gets it as a remote frame and answers with the toggle bit alternating
+// (CiA 301 7.2.8.3.2.1).
+TEST(JoinCommand, APythonCanClientGuardsANodeThatJoinedTheBus) {
+    const auto bus_out = scratch("bus.out");
+    const auto node_out = scratch("node.out");
+    const auto guard = scratch("guard.py");
+    std::ofstream(guard) << R"(import sys, time
+try:
+    import can
+except ImportError:
+    sys.exit(77)
+bus = can.Bus(interface="socketcand", host=sys.argv[1], port=int(sys.argv[2]), channel="can0")
+answers = []
+for _ in range(2):
+    # what python-canopen's NodeGuarding sends: send_message(0x700 + node_id, None, remote=True)
+    bus.send(can.Message(arbitration_id=0x705, is_extended_id=False, is_remote_frame=True))
+    deadline = time.monotonic() + 5
+    while time.monotonic() < deadline:
+        msg = bus.recv(0.1)
+        if msg is not None and msg.arbitration_id == 0x705 and list(msg.data) not in ([], [0]):
+            answers.append("%02X" % msg.data[0])
+            break
+bus.shutdown()
+print("answers", *answers)
+)";
+    const auto result = run_command(
+        "sh -c '" + start_in_background(bus_out, "bus --socketcand 127.0.0.1:0 --for 30s") +
+        kEposp + " node --eds " + EPOSP_SOURCE_DIR +
+        "/examples/canopen-node/sample-device.eds --node-id 5 --join $address --for 20s > " +
+        node_out.string() + " 2>&1 & node=$!; " + wait_for_line(node_out, "join: ") +
+        "/usr/bin/python3 " + guard.string() +
+        " ${address%:*} ${address##*:} 2>&1; code=$?; kill -INT $node; wait $node; "
+        "kill -INT $pid; wait $pid; exit $code'");
+    if (result.exit_code == 77) {
+        GTEST_SKIP() << "python-can is not installed (Debian: python3-can)";
+    }
+    ASSERT_EQ(result.exit_code, 0) << result.output << read_file(node_out);
+    EXPECT_THAT(result.output, HasSubstr("answers 7F FF\n")) << read_file(node_out);
+}
+
 TEST(JoinCommand, NothingListeningIsAUserError) {
     const auto result = eposp("drive epos2 --node-id 3 --join 127.0.0.1:1 --for 3s");
     EXPECT_EQ(result.exit_code, 1);
@@ -78,10 +120,11 @@ TEST(JoinCommand, ABusTheServerDoesNotHaveIsAUserError) {
 TEST(JoinCommand, TheRunEndsWhenTheServerGoesAway) {
     const auto bus_out = scratch("bus.out");
     const auto drive_out = scratch("drive.out");
-    const auto result = run_command(
-        "sh -c '" + start_in_background(bus_out, "bus --socketcand 127.0.0.1:0") + kEposp +
-        " drive epos2 --join $address --for 60s > " + drive_out.string() + " 2>&1 & drive=$!; " +
-        wait_for_line(drive_out, "join: ") + "kill -INT $pid; wait $pid; wait $drive; echo drive exit $?'");
+    const auto result =
+        run_command("sh -c '" + start_in_background(bus_out, "bus --socketcand 127.0.0.1:0") +
+                    kEposp + " drive epos2 --join $address --for 60s > " + drive_out.string() +
+                    " 2>&1 & drive=$!; " + wait_for_line(drive_out, "join: ") +
+                    "kill -INT $pid; wait $pid; wait $drive; echo drive exit $?'");
     const std::string drive = read_file(drive_out);
     EXPECT_THAT(result.output, HasSubstr("drive exit 1")) << result.output; // cut off: a failure
     EXPECT_THAT(drive, HasSubstr("join: bus can0 of 127.0.0.1:"));
