@@ -192,7 +192,7 @@ TEST_F(EposPDictionaryTest, WritesOutsideTheDocumentedRangesAreRefused) {
     EXPECT_EQ(write_u32(od, 0x1F89, 0, 30001), AbortCode::ValueTooHigh);
     EXPECT_EQ(od.write(0x5001, 0, canopen::encode(std::uint16_t{5})), AbortCode::InvalidValue);
     EXPECT_EQ(od.write(0x5001, 0, canopen::encode(std::uint16_t{9})), AbortCode::None);
-    EXPECT_EQ(od.write(0x5F51, 0, canopen::encode(std::uint16_t{4})), AbortCode::ValueTooHigh);
+    EXPECT_EQ(od.write(0x5F51, 0, canopen::encode(std::uint16_t{4})), AbortCode::InvalidValue);
     EXPECT_EQ(od.write(0x5000, 0, canopen::encode(std::uint8_t{0})), AbortCode::ValueTooLow);
     // Tables 15 and 20: RPDOs 1 or 255, TPDOs 1, 253 or 255.
     EXPECT_EQ(od.write(0x1400, 2, canopen::encode(std::uint8_t{2})), AbortCode::InvalidValue);

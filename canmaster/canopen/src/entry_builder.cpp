@@ -42,8 +42,8 @@ Entry& Entry::range(std::int64_t low, std::int64_t high) {
 }
 
 Entry& Entry::one_of(std::initializer_list<std::int64_t> values) {
-    const auto [low, high] = std::minmax(values);
-    range(low, high);
+    sub_.low_limit.reset();
+    sub_.high_limit.reset();
     set_write_check([type = sub_.type, allowed = std::vector<std::int64_t>(values)](
                         std::span<const std::uint8_t> value) {
         return std::ranges::find(allowed, decode_integer(type, value)) != allowed.end()

@@ -3,7 +3,6 @@
 // objects belongs to the device and attaches to them through hooks and listeners.
 #include "eposp/canopen/entry_builder.hpp"
 #include "object_areas.hpp"
-#include "value_list.hpp"
 
 #include <array>
 #include <fmt/format.h>
@@ -18,8 +17,7 @@ using canopen::Entry;
 void add_interface_objects(canopen::ObjectDictionary& od, const Epos2DictionaryConfig& config) {
     add_var(od, 0x2000, "Node ID", kU8, kRW, config.node_id).range(1, 127).persistent();
     // 8.2.35, table 8-81: 5 is reserved and 8 (10 kbit/s) not supported; 9 detects the rate.
-    value_list(add_var(od, 0x2001, "CAN Bitrate", kU16, kRW, 9), {0, 1, 2, 3, 4, 6, 7, 9})
-        .persistent();
+    add_var(od, 0x2001, "CAN Bitrate", kU16, kRW, 9).one_of({0, 1, 2, 3, 4, 6, 7, 9}).persistent();
     add_var(od, 0x2002, "RS232 Baudrate", kU16, kRW, 5).range(0, 5).persistent();
 
     od.add_object(0x2003, "Version", kRecord); // 8.2.37
@@ -126,9 +124,9 @@ void add_analog_homing_interpolation_objects(canopen::ObjectDictionary& od) {
     // Table 8-97: 3..7 are reserved.
     od.add_object(0x207B, "Configuration of Analog Inputs", kArray);
     for (std::uint8_t n = 1; n <= 2; ++n) {
-        value_list(add_entry(od, 0x207B, n, fmt::format("Configuration of Analog Input {}", n),
-                             kU16, kRW, 16 - n),
-                   {0, 1, 2, 8, 9, 10, 11, 12, 13, 14, 15})
+        add_entry(od, 0x207B, n, fmt::format("Configuration of Analog Input {}", n), kU16, kRW,
+                  16 - n)
+            .one_of({0, 1, 2, 8, 9, 10, 11, 12, 13, 14, 15})
             .persistent();
     }
     od.add_object(0x207C, "Analog Inputs", kRecord);
@@ -195,7 +193,7 @@ void add_brake_sensor_gear_objects(canopen::ObjectDictionary& od) {
     add_entry(od, 0x2211, 2, "SSI Encoder Number of Data Bits", kU16, kRW, 0x0C0D).persistent();
     add_entry(od, 0x2211, 3, "SSI Encoder Actual Position", kI32, kRO, 0);
     // Table 8-106: binary or Gray-coded.
-    value_list(add_entry(od, 0x2211, 4, "SSI Encoding Type", kU16, kRW, 0), {0, 1}).persistent();
+    add_entry(od, 0x2211, 4, "SSI Encoding Type", kU16, kRW, 0).one_of({0, 1}).persistent();
 
     od.add_object(0x2212, "Incremental Encoder 2 Configuration", kRecord);
     add_entry(od, 0x2212, 1, "Incremental Encoder 2 Pulse Number", kU32, kRW, 500)
@@ -212,7 +210,7 @@ void add_brake_sensor_gear_objects(canopen::ObjectDictionary& od) {
 
     // 8.2.78, table 8-108: the default is not given; 0 (single loop) is the only structure an
     // EPOS2 24/5 supports.
-    value_list(add_var(od, 0x2220, "Controller Structure", kU16, kRW, 0), {0, 1}).persistent();
+    add_var(od, 0x2220, "Controller Structure", kU16, kRW, 0).one_of({0, 1}).persistent();
 
     od.add_object(0x2230, "Gear Configuration", kRecord);
     add_entry(od, 0x2230, 1, "Gear Ratio Numerator", kU32, kRW, 0).range(0, kU32Max).persistent();

@@ -5,7 +5,6 @@
 // static bound until the motor model computes them.
 #include "eposp/canopen/entry_builder.hpp"
 #include "object_areas.hpp"
-#include "value_list.hpp"
 
 #include <fmt/format.h>
 
@@ -24,8 +23,8 @@ void add_device_control_objects(canopen::ObjectDictionary& od) {
     add_var(od, 0x605C, "Disable Operation Option Code", kI16, kRW, 1).range(0, 1).persistent();
     add_var(od, 0x605E, "Fault Reaction Option Code", kI16, kRW, 2).range(-1, 2).persistent();
     // Table 8-118: the modes of operation.
-    value_list(add_var(od, 0x6060, "Modes of Operation", kI8, kRW, 1),
-               {7, 6, 3, 1, -1, -2, -3, -4, -5, -6})
+    add_var(od, 0x6060, "Modes of Operation", kI8, kRW, 1)
+        .one_of({7, 6, 3, 1, -1, -2, -3, -4, -5, -6})
         .pdo_mappable();
     add_var(od, 0x6061, "Modes of Operation Display", kI8, kRO, 1).pdo_mappable();
 }
@@ -91,7 +90,8 @@ void add_profile_motion_objects(canopen::ObjectDictionary& od) {
             .pdo_mappable();
     }
     // Table 8-120: 0 linear ramp (trapezoidal), 1 sin² ramp.
-    value_list(add_var(od, 0x6086, "Motion Profile Type", kI16, kRW, 0), {0, 1})
+    add_var(od, 0x6086, "Motion Profile Type", kI16, kRW, 0)
+        .one_of({0, 1})
         .persistent()
         .pdo_mappable();
 }
@@ -112,8 +112,8 @@ void add_factor_group_objects(canopen::ObjectDictionary& od) {
 // 8.2.118 - 8.2.124
 void add_homing_interpolation_objects(canopen::ObjectDictionary& od) {
     // Table 8-121 (the "Value Range" row prints "–": the table is the range).
-    value_list(add_var(od, 0x6098, "Homing Method", kI8, kRW, 7),
-               {35, 34, 33, 27, 23, 18, 17, 11, 7, 2, 1, 0, -1, -2, -3, -4})
+    add_var(od, 0x6098, "Homing Method", kI8, kRW, 7)
+        .one_of({35, 34, 33, 27, 23, 18, 17, 11, 7, 2, 1, 0, -1, -2, -3, -4})
         .persistent()
         .pdo_mappable();
     od.add_object(0x6099, "Homing Speeds", kArray);
@@ -187,7 +187,7 @@ void add_control_parameter_objects(canopen::ObjectDictionary& od) {
 // 8.2.129 - 8.2.131
 void add_motor_objects(canopen::ObjectDictionary& od) {
     // Table 8-125: 65535 (sinus incremental encoder 2) exists on the 70/10 and 50/5 only.
-    value_list(add_var(od, 0x6402, "Motor Type", kU16, kRW, 10), {1, 10, 11}).persistent();
+    add_var(od, 0x6402, "Motor Type", kU16, kRW, 10).one_of({1, 10, 11}).persistent();
     // 8.2.130: the number of entries reads 0x06 for sub-indices 1 - 5. Currents in mA for an
     // EPOS2 24/5; the maximal speed is bounded by table 8-126.
     od.add_object(0x6410, "Motor Data", kRecord);

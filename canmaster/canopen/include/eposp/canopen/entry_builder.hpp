@@ -22,8 +22,11 @@ public:
 
     /// The "Value Range" column: remote writes outside it are refused (0x06090031/32).
     Entry& range(std::int64_t low, std::int64_t high);
-    /// A value range given as a list of codes (a table of the spec): other values are refused
-    /// with 0x06090030 "value range of parameter exceeded".
+    /// A value range given as a list of codes (a table of the spec): every other value, those
+    /// beyond the list's ends too, is refused with 0x06090030 "value range of parameter
+    /// exceeded" (EPOS2 FW spec table 4-12; "too high / too low" belong to min ... max ranges).
+    /// So the entry has no low and high limit, which the dictionary would check first, and its
+    /// EDS lists none.
     Entry& one_of(std::initializer_list<std::int64_t> values);
     /// A value range bounded by another entry's current value ("1 ... Maximal Profile Velocity"):
     /// values above it are refused with 0x06090031, and with `symmetric` ("-Maximal profile
