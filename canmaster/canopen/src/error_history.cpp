@@ -10,31 +10,17 @@ constexpr std::uint8_t kMaxCapacity = 254;
 
 // The entries of 0x1003 live in sub-indices 1..capacity; sub-index 0 counts the used ones.
 std::uint8_t capacity_of(const ObjectDictionary& od) {
-    return od.find(kPreDefinedErrorFieldIndex)->subs.rbegin()->first;
+    const Object* history = od.find(kPreDefinedErrorFieldIndex);
+    return history == nullptr || history->subs.empty() ? 0 : history->subs.rbegin()->first;
 }
 
-} // namespace
-
-void add_error_objects(ObjectDictionary& od, std::uint8_t capacity) {
-    if (capacity == 0 || capacity > kMaxCapacity) {
-        throw std::invalid_argument("add_error_objects: 0x1003 holds 1..254 entries");
+// CiA 301 7.5.2.6: writing 0 to sub-index 0 empties the history; no other value is allowed.
+void guard_error_count(ObjectDictionary& od) {
+    SubObject* count = od.find(kPreDefinedErrorFieldIndex, 0);
+    if (count == nullptr || count->on_write || count->type != DataType::Unsigned8) {
+        return;
     }
-    od.add_variable(kErrorRegisterIndex, "Error Register", DataType::Unsigned8, Access::ReadOnly,
-                    encode(std::uint8_t{0}));
-    Object& history =
-        od.add_object(kPreDefinedErrorFieldIndex, "Pre-defined Error Field", ObjectCode::Array);
-    for (unsigned sub = 1; sub <= capacity; ++sub) {
-        od.add_sub(kPreDefinedErrorFieldIndex, static_cast<std::uint8_t>(sub),
-                   fmt::format("Standard Error Field {}", sub), DataType::Unsigned32,
-                   Access::ReadOnly, encode(std::uint32_t{0}));
-    }
-    // Sub-index 0 is the number of errors here, not the highest sub-index (CiA 301 7.5.2, 1003h).
-    SubObject& count = history.subs.at(0);
-    count.name = "Number of Errors";
-    count.access = Access::ReadWrite;
-    count.default_value = encode(std::uint8_t{0});
-    count.value = count.default_value;
-    count.on_write = [&od](std::span<const std::uint8_t> data) {
+    count->on_write = [&od](std::span<const std::uint8_t> data) {
         if (decode<std::uint8_t>(data) != 0) {
             return AbortCode::InvalidValue;
         }
@@ -43,8 +29,40 @@ void add_error_objects(ObjectDictionary& od, std::uint8_t capacity) {
     };
 }
 
+} // namespace
+
+void add_error_objects(ObjectDictionary& od, std::uint8_t capacity) {
+    if (capacity == 0 || capacity > kMaxCapacity) {
+        throw std::invalid_argument("add_error_objects: 0x1003 holds 1..254 entries");
+    }
+    if (od.find(kErrorRegisterIndex) == nullptr) {
+        od.add_variable(kErrorRegisterIndex, "Error Register", DataType::Unsigned8,
+                        Access::ReadOnly, encode(std::uint8_t{0}));
+    }
+    if (od.find(kPreDefinedErrorFieldIndex) == nullptr) {
+        Object& history =
+            od.add_object(kPreDefinedErrorFieldIndex, "Pre-defined Error Field", ObjectCode::Array);
+        for (unsigned sub = 1; sub <= capacity; ++sub) {
+            od.add_sub(kPreDefinedErrorFieldIndex, static_cast<std::uint8_t>(sub),
+                       fmt::format("Standard Error Field {}", sub), DataType::Unsigned32,
+                       Access::ReadOnly, encode(std::uint32_t{0}));
+        }
+        // Sub-index 0 is the number of errors here, not the highest sub-index (CiA 301 7.5.2,
+        // 1003h).
+        SubObject& count = history.subs.at(0);
+        count.name = "Number of Errors";
+        count.access = Access::ReadWrite;
+        count.default_value = encode(std::uint8_t{0});
+        count.value = count.default_value;
+    }
+    guard_error_count(od);
+}
+
 void ErrorHistory::record(std::uint32_t entry) {
     const std::uint8_t capacity = capacity_of(od_);
+    if (capacity == 0) {
+        return; // a 0x1003 without entries (an EDS's) records nothing
+    }
     const auto count = od_.get_as<std::uint8_t>(kPreDefinedErrorFieldIndex, 0);
     const auto kept = static_cast<std::uint8_t>(count < capacity ? count : capacity - 1);
     for (std::uint8_t sub = kept; sub >= 1; --sub) {

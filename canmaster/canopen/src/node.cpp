@@ -44,9 +44,7 @@ void add_device_objects(ObjectDictionary& od, const NodeConfig& config) {
 ObjectDictionary& add_missing_communication_objects(ObjectDictionary& od,
                                                     const NodeConfig& config) {
     add_device_objects(od, config);
-    if (od.find(kErrorRegisterIndex) == nullptr) {
-        add_error_objects(od, config.error_history_capacity);
-    }
+    add_error_objects(od, config.error_history_capacity); // those an EDS lacks, its rules
     if (od.find(kCobIdSyncIndex) == nullptr) {
         add_sync_objects(od, config.sync);
     }

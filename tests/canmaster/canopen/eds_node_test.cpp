@@ -49,7 +49,8 @@ std::string pdo_mapping(std::string_view index, std::string_view first) {
 }
 
 /// A vendor's device as its EDS describes it: RPDO 1 and TPDO 1 valid, each mapping 0x2000;
-/// 0x2001 not mappable (PDOMapping=0), 0x2002 a 64-bit value; 250 kbit/s and 1 Mbit/s.
+/// 0x2001 not mappable (PDOMapping=0), 0x2002 a 64-bit value; 250 kbit/s and 1 Mbit/s; 0x1001
+/// but no 0x1003.
 std::string vendor_eds() {
     return "[DeviceInfo]\nVendorNumber=0x1234\nProductName=IO box\nBaudRate_250=1\n"
            "BaudRate_500=0\nBaudRate_1000=1\nLSS_Supported=1\n\n"
@@ -149,6 +150,25 @@ INSTANTIATE_TEST_SUITE_P(Rules, EdsNodePdoMapping, ::testing::ValuesIn(eds_mappi
 TEST_F(EdsNode, ValidPdoKeepsItsCobId) {
     expect_reply("605#2300180186010000", "585#8000180130000906"); // 0x06090030
     expect_reply("605#2300140106020000", "585#8000140130000906");
+}
+
+// --- EMCY (CiA 301 7.2.7, 7.5.2.2): the error register of the EDS's 0x1001 has the generic
+// bit with the error's own, and the error ends with its cause or a reset. ---
+
+TEST_F(EdsNode, ShortRpdoErrorEndsWithTheNextRightOneAndAtAReset) {
+    bench.send("000#0105"); // operational: RPDO 1 (0x205) maps 0x2000, 32 bits
+    bench.run_for(1ms);
+    EXPECT_EQ(exchange("205#01"), std::vector<std::string>{"085#1082110000000000"});
+    expect_reply("605#4001100000000000", "585#4F01100011000000");
+    // The RPDO is applied: TPDO 1, event-driven, sends the new value of 0x2000.
+    EXPECT_EQ(exchange("205#01020304"),
+              (std::vector<std::string>{"085#0000000000000000", "185#01020304"}));
+    EXPECT_EQ(exchange("205#01"), std::vector<std::string>{"085#1082110000000000"});
+    EXPECT_EQ(exchange("000#8205"), (std::vector<std::string>{"705#00", "085#0000000000000000"}));
+    expect_reply("605#4001100000000000", "585#4F01100000000000");
+    bench.send("000#0105");
+    bench.run_for(1ms);
+    EXPECT_EQ(exchange("205#01"), std::vector<std::string>{"085#1082110000000000"});
 }
 
 // --- LSS (CiA 305): the node takes the bit rates its EDS declares. ---

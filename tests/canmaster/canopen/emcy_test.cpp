@@ -284,6 +284,27 @@ TEST_F(EmcyErrorHistory, RegisterHasTheGenericBitWithEveryError) {
     EXPECT_EQ(history.error_register(), 0x00);
 }
 
+// An EDS's own 0x1003 (plain data, imported) is kept and gets the rule of sub-index 0.
+TEST(EmcyErrorHistoryOfAnEds, KeepsItsEntriesAndTakesTheRuleOfSubIndexZero) {
+    ObjectDictionary od;
+    od.add_object(0x1003, "Error History", ObjectCode::Array);
+    for (std::uint8_t sub = 1; sub <= 3; ++sub) {
+        od.add_sub(0x1003, sub, "Entry", DataType::Unsigned32, Access::ReadOnly,
+                   encode(std::uint32_t{0}));
+    }
+    od.find(0x1003, 0)->access = Access::ReadWrite;
+    add_error_objects(od, kEpos2ErrorHistoryEntries);
+    ASSERT_NE(od.find(0x1001), nullptr);
+    ErrorHistory history(od);
+    for (std::uint32_t code = 1; code <= 4; ++code) {
+        history.record(code);
+    }
+    EXPECT_EQ(history.entries(), (std::vector<std::uint32_t>{4, 3, 2})) << "three entries";
+    EXPECT_EQ(write_as(od, 0x1003, 0, std::uint8_t{1}), AbortCode::InvalidValue);
+    EXPECT_EQ(write_as(od, 0x1003, 0, std::uint8_t{0}), AbortCode::None);
+    EXPECT_TRUE(history.entries().empty());
+}
+
 struct HistoryWriteCase {
     const char* what;
     std::uint16_t index;

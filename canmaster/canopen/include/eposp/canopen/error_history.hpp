@@ -29,7 +29,8 @@ inline constexpr std::uint8_t kEposPErrorHistoryEntries = 16; ///< EPOS P FW spe
 /// 0x1001 Error Register (UNSIGNED8, ro) and 0x1003 Pre-defined Error Field (CiA 301 7.5.2,
 /// 1001h/1003h; EPOS2 FW spec 8.2.2/8.2.3) with `capacity` entries (1..254), UNSIGNED32 ro.
 /// Sub-index 0 of 0x1003 is the number of errors recorded: writing 0 empties the history, any other
-/// value is refused with InvalidValue (0x06090030).
+/// value is refused with InvalidValue (0x06090030). Objects `od` has already (e.g. from an EDS)
+/// are kept, and get that rule where they have no write hook of their own.
 void add_error_objects(ObjectDictionary& od, std::uint8_t capacity);
 
 /// The device's view of 0x1001 and 0x1003; the values live in the dictionary.
