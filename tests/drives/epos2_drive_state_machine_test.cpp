@@ -103,5 +103,21 @@ TEST_F(Epos2DriveOnBus, RemoteBitIsSetInNmtOperationalOnly) {
     EXPECT_EQ(read<std::uint16_t>(0x6041, 0) & kRemoteBit, 0) << "after reset communication";
 }
 
+// The remote bit changes with the NMT command, not with the next control period: a SYNC right
+// behind the Start command samples it already (TPDO 3: statusword, position).
+TEST_F(Epos2DriveOnBus, FirstTpdoInOperationalCarriesTheRemoteBit) {
+    write(0x1802, 2, encode(std::uint8_t{1}));
+    write(0x1802, 1, encode(std::uint32_t{0x4000'0000 | kTpdo3Id}));
+    loop.run_until(core::TimePoint{std::chrono::ceil<std::chrono::milliseconds>(
+                       loop.now().time_since_epoch())} +
+                   100us); // just after a control period
+    master->send(can::Frame::data_frame(
+        canopen::kNmtCanId, {static_cast<std::uint8_t>(canopen::NmtCommand::Start), kNode}));
+    master->send(can::Frame::data_frame(kSyncId, {}));
+    loop.run_for(500us);
+    ASSERT_EQ(tpdos.size(), 1U);
+    EXPECT_NE(tpdos.front().statusword & (1U << 9), 0U);
+}
+
 } // namespace
 } // namespace eposp::drives::epos2
