@@ -31,17 +31,22 @@ bool sends_emcy(NmtState state) {
 } // namespace
 
 void add_emcy_objects(ObjectDictionary& od, NodeId node_id, bool inhibit_time) {
-    SubObject& cob_id = od.add_variable(kCobIdEmcyIndex, "COB-ID EMCY", DataType::Unsigned32,
-                                        Access::ReadWrite, encode(kEmcyCanIdBase + node_id));
-    cob_id.persistent = true;
-    cob_id.on_write = [&od](std::span<const std::uint8_t> data) {
-        return check_cob_id_emcy(od, decode<std::uint32_t>(data));
-    };
+    od.add_variable(kCobIdEmcyIndex, "COB-ID EMCY", DataType::Unsigned32, Access::ReadWrite,
+                    encode(kEmcyCanIdBase + node_id))
+        .persistent = true;
+    enforce_emcy_rules(od);
     if (inhibit_time) {
         od.add_variable(kInhibitTimeEmcyIndex, "Inhibit Time EMCY", DataType::Unsigned16,
                         Access::ReadWrite, encode(std::uint16_t{0}))
             .persistent = true;
     }
+}
+
+void enforce_emcy_rules(ObjectDictionary& od) {
+    add_write_rule(od.find(kCobIdEmcyIndex, 0), DataType::Unsigned32,
+                   [&od](std::span<const std::uint8_t> data) {
+                       return check_cob_id_emcy(od, decode<std::uint32_t>(data));
+                   });
 }
 
 EmcyProducer::EmcyProducer(core::EventLoop& loop, can::Port& port, ObjectDictionary& od)

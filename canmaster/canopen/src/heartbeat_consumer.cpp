@@ -21,7 +21,7 @@ AbortCode check_unique_producer(const ObjectDictionary& od, std::uint8_t sub_ind
         return AbortCode::None;
     }
     for (const auto& [other_sub, other] : od.find(kConsumerHeartbeatTimeIndex)->subs) {
-        if (other_sub == 0 || other_sub == sub_index) {
+        if (other_sub == 0 || other_sub == sub_index || other.type != DataType::Unsigned32) {
             continue;
         }
         const auto other_value = decode<std::uint32_t>(other.value);
@@ -49,13 +49,26 @@ void add_heartbeat_consumer_objects(ObjectDictionary& od, std::uint8_t entries) 
     od.add_object(kConsumerHeartbeatTimeIndex, "Consumer Heartbeat Time", ObjectCode::Array);
     for (unsigned sub = 1; sub <= entries; ++sub) {
         const auto sub_index = static_cast<std::uint8_t>(sub);
-        SubObject& entry = od.add_sub(
-            kConsumerHeartbeatTimeIndex, sub_index, fmt::format("Consumer {} Heartbeat Time", sub),
-            DataType::Unsigned32, Access::ReadWrite, encode(std::uint32_t{0}));
-        entry.persistent = true;
-        entry.on_write = [&od, sub_index](std::span<const std::uint8_t> data) {
-            return check_unique_producer(od, sub_index, data);
-        };
+        od.add_sub(kConsumerHeartbeatTimeIndex, sub_index,
+                   fmt::format("Consumer {} Heartbeat Time", sub), DataType::Unsigned32,
+                   Access::ReadWrite, encode(std::uint32_t{0}))
+            .persistent = true;
+    }
+    enforce_heartbeat_consumer_rules(od);
+}
+
+void enforce_heartbeat_consumer_rules(ObjectDictionary& od) {
+    Object* consumer = od.find(kConsumerHeartbeatTimeIndex);
+    if (consumer == nullptr) {
+        return;
+    }
+    for (auto& [sub_index, sub] : consumer->subs) {
+        if (sub_index != 0) {
+            add_write_rule(&sub, DataType::Unsigned32,
+                           [&od, index = sub_index](std::span<const std::uint8_t> data) {
+                               return check_unique_producer(od, index, data);
+                           });
+        }
     }
 }
 

@@ -66,7 +66,11 @@ ObjectDictionary& add_missing_communication_objects(ObjectDictionary& od,
     if (count_pdos(od, PdoDirection::Receive) == 0 && count_pdos(od, PdoDirection::Transmit) == 0) {
         add_pdo_objects(od, config.pdos ? *config.pdos : cia301_pdo_defaults(config.node_id, 4, 4));
     }
-    enforce_pdo_rules(od); // PDOs of an EDS: CiA 301 7.5.2.35 - 7.5.2.38 hold for every node
+    // The objects an EDS brought: the services' rules hold for every node (CiA 301 7.5.2).
+    enforce_sync_rules(od, config.sync);
+    enforce_emcy_rules(od);
+    enforce_heartbeat_consumer_rules(od);
+    enforce_pdo_rules(od);
     return od;
 }
 

@@ -340,4 +340,12 @@ void ObjectDictionary::notify(std::uint16_t index, std::uint8_t sub_index) const
     }
 }
 
+bool add_write_rule(SubObject* sub, DataType type, SubObject::WriteHook rule) {
+    if (sub == nullptr || sub->on_write || sub->type != type) {
+        return false;
+    }
+    sub->on_write = std::move(rule);
+    return true;
+}
+
 } // namespace eposp::canopen

@@ -30,7 +30,8 @@ SubObject::WriteHook minimum_unless_zero(std::uint32_t minimum) {
 
 // CiA 301 7.5.2 (1019h).
 AbortCode check_counter_overflow(const ObjectDictionary& od, std::uint8_t value) {
-    if (od.get_as<std::uint32_t>(kCommunicationCyclePeriodIndex, 0) != 0) {
+    const SubObject* period = od.find(kCommunicationCyclePeriodIndex, 0);
+    if (period != nullptr && decode<std::uint32_t>(period->value) != 0) {
         return AbortCode::DeviceState;
     }
     return value == 1 || value > kMaxCounterOverflow ? AbortCode::InvalidValue : AbortCode::None;
@@ -39,33 +40,38 @@ AbortCode check_counter_overflow(const ObjectDictionary& od, std::uint8_t value)
 } // namespace
 
 void add_sync_objects(ObjectDictionary& od, const SyncObjectOptions& options) {
-    SubObject& cob_id = od.add_variable(kCobIdSyncIndex, "COB-ID SYNC", DataType::Unsigned32,
-                                        Access::ReadWrite, encode(kSyncCanId));
-    cob_id.persistent = true;
-    cob_id.on_write = [&od, producer = options.producer](std::span<const std::uint8_t> data) {
-        return check_cob_id_sync(od, producer, decode<std::uint32_t>(data));
-    };
+    od.add_variable(kCobIdSyncIndex, "COB-ID SYNC", DataType::Unsigned32, Access::ReadWrite,
+                    encode(kSyncCanId))
+        .persistent = true;
     if (options.producer) {
-        SubObject& period =
-            od.add_variable(kCommunicationCyclePeriodIndex, "Communication Cycle Period",
-                            DataType::Unsigned32, Access::ReadWrite, encode(std::uint32_t{0}));
-        period.persistent = true;
-        period.on_write = minimum_unless_zero(options.min_cycle_period_us);
-        SubObject& overflow =
-            od.add_variable(kSyncCounterOverflowIndex, "Synchronous Counter Overflow Value",
-                            DataType::Unsigned8, Access::ReadWrite, encode(std::uint8_t{0}));
-        overflow.persistent = true;
-        overflow.on_write = [&od](std::span<const std::uint8_t> data) {
-            return check_counter_overflow(od, decode<std::uint8_t>(data));
-        };
+        od.add_variable(kCommunicationCyclePeriodIndex, "Communication Cycle Period",
+                        DataType::Unsigned32, Access::ReadWrite, encode(std::uint32_t{0}))
+            .persistent = true;
+        od.add_variable(kSyncCounterOverflowIndex, "Synchronous Counter Overflow Value",
+                        DataType::Unsigned8, Access::ReadWrite, encode(std::uint8_t{0}))
+            .persistent = true;
     }
     if (options.window) {
-        SubObject& window =
-            od.add_variable(kSynchronousWindowLengthIndex, "Synchronous Window Length",
-                            DataType::Unsigned32, Access::ReadWrite, encode(std::uint32_t{0}));
-        window.persistent = true;
-        window.on_write = minimum_unless_zero(options.min_window_length_us);
+        od.add_variable(kSynchronousWindowLengthIndex, "Synchronous Window Length",
+                        DataType::Unsigned32, Access::ReadWrite, encode(std::uint32_t{0}))
+            .persistent = true;
     }
+    enforce_sync_rules(od, options);
+}
+
+void enforce_sync_rules(ObjectDictionary& od, const SyncObjectOptions& options) {
+    add_write_rule(od.find(kCobIdSyncIndex, 0), DataType::Unsigned32,
+                   [&od, producer = options.producer](std::span<const std::uint8_t> data) {
+                       return check_cob_id_sync(od, producer, decode<std::uint32_t>(data));
+                   });
+    add_write_rule(od.find(kCommunicationCyclePeriodIndex, 0), DataType::Unsigned32,
+                   minimum_unless_zero(options.min_cycle_period_us));
+    add_write_rule(od.find(kSyncCounterOverflowIndex, 0), DataType::Unsigned8,
+                   [&od](std::span<const std::uint8_t> data) {
+                       return check_counter_overflow(od, decode<std::uint8_t>(data));
+                   });
+    add_write_rule(od.find(kSynchronousWindowLengthIndex, 0), DataType::Unsigned32,
+                   minimum_unless_zero(options.min_window_length_us));
 }
 
 } // namespace eposp::canopen

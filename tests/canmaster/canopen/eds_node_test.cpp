@@ -50,19 +50,23 @@ std::string pdo_mapping(std::string_view index, std::string_view first) {
 
 /// A vendor's device as its EDS describes it: RPDO 1 and TPDO 1 valid, each mapping 0x2000;
 /// 0x2001 not mappable (PDOMapping=0), 0x2002 a 64-bit value; 250 kbit/s and 1 Mbit/s; 0x1001
-/// but no 0x1003.
+/// but no 0x1003; its own SYNC, EMCY and heartbeat consumer objects, as plain data.
 std::string vendor_eds() {
     return "[DeviceInfo]\nVendorNumber=0x1234\nProductName=IO box\nBaudRate_250=1\n"
            "BaudRate_500=0\nBaudRate_1000=1\nLSS_Supported=1\n\n"
            "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n"
-           "[OptionalObjects]\nSupportedObjects=4\n1=0x1400\n2=0x1600\n3=0x1800\n4=0x1A00\n\n"
+           "[OptionalObjects]\nSupportedObjects=9\n1=0x1400\n2=0x1600\n3=0x1800\n4=0x1A00\n"
+           "5=0x1005\n6=0x1006\n7=0x1014\n8=0x1016\n9=0x1019\n\n"
            "[ManufacturerObjects]\nSupportedObjects=3\n1=0x2000\n2=0x2001\n3=0x2002\n\n" +
            entry("1000", "0x0007", "ro", "0x191") + entry("1001", "0x0005", "ro", "0") +
            record("1018", 2) + entry("1018sub0", "0x0005", "ro", "1") +
-           entry("1018sub1", "0x0007", "ro", "0x1234") +
-           pdo_communication("1400", "$NODEID+0x200") + pdo_mapping("1600", "0x20000020") +
-           pdo_communication("1800", "$NODEID+0x180") + pdo_mapping("1A00", "0x20000020") +
-           entry("2000", "0x0007", "rw", "0x11223344", true) +
+           entry("1018sub1", "0x0007", "ro", "0x1234") + entry("1005", "0x0007", "rw", "0x80") +
+           entry("1006", "0x0007", "rw", "0") + entry("1014", "0x0007", "rw", "$NODEID+0x80") +
+           entry("1019", "0x0005", "rw", "0") + record("1016", 3) +
+           entry("1016sub0", "0x0005", "ro", "2") + entry("1016sub1", "0x0007", "rw", "0") +
+           entry("1016sub2", "0x0007", "rw", "0") + pdo_communication("1400", "$NODEID+0x200") +
+           pdo_mapping("1600", "0x20000020") + pdo_communication("1800", "$NODEID+0x180") +
+           pdo_mapping("1A00", "0x20000020") + entry("2000", "0x0007", "rw", "0x11223344", true) +
            entry("2001", "0x0007", "rw", "0", false) + entry("2002", "0x001B", "rw", "0", true);
 }
 
@@ -150,6 +154,19 @@ INSTANTIATE_TEST_SUITE_P(Rules, EdsNodePdoMapping, ::testing::ValuesIn(eds_mappi
 TEST_F(EdsNode, ValidPdoKeepsItsCobId) {
     expect_reply("605#2300180186010000", "585#8000180130000906"); // 0x06090030
     expect_reply("605#2300140106020000", "585#8000140130000906");
+}
+
+// --- The other communication objects of the EDS follow the services' rules (CiA 301 7.5.2). ---
+
+TEST_F(EdsNode, CommunicationObjectsOfTheEdsFollowTheServicesRules) {
+    // Reserved identifiers (CiA 301 7.3.5) for EMCY and SYNC: 0x06090030.
+    expect_reply("605#2314100001070000", "585#8014100030000906");
+    expect_reply("605#2305100001070000", "585#8005100030000906");
+    // SYNC counter overflow 1 is reserved: 0x06090030.
+    expect_reply("605#2F19100001000000", "585#8019100030000906");
+    // Two heartbeat consumer entries for one producer: 0x06040043.
+    expect_reply("605#2316100164001000", "585#6016100100000000");
+    expect_reply("605#2316100232001000", "585#8016100243000406");
 }
 
 // --- EMCY (CiA 301 7.2.7, 7.5.2.2): the error register of the EDS's 0x1001 has the generic

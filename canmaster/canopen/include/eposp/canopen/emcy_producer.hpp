@@ -22,6 +22,9 @@ inline constexpr std::uint16_t kInhibitTimeEmcyIndex = 0x1015;
 /// identifier (CiA 301 7.3.5), sets bits 11..28 of an 11-bit identifier, or changes the identifier
 /// while the EMCY is valid is refused with InvalidValue (0x06090030).
 void add_emcy_objects(ObjectDictionary& od, NodeId node_id, bool inhibit_time = true);
+/// The 0x1014 rule of add_emcy_objects() on a 0x1014 `od` already has (e.g. from an EDS), where
+/// it has no hook of its own (add_write_rule()).
+void enforce_emcy_rules(ObjectDictionary& od);
 
 /// The EMCY producer (CiA 301 7.2.7; EPOS2 FW spec 4.1), on the objects of add_emcy_objects()
 /// and add_error_objects().

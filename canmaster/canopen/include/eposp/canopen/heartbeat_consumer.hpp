@@ -34,6 +34,9 @@ struct ConsumerHeartbeatEntry {
 /// entries watch the same node (and port) is refused with ParameterIncompatibility
 /// (0x06040043), as CiA 301 says.
 void add_heartbeat_consumer_objects(ObjectDictionary& od, std::uint8_t entries);
+/// That rule on the entries of a 0x1016 `od` already has (e.g. from an EDS), where they have no
+/// hook of their own (add_write_rule()).
+void enforce_heartbeat_consumer_rules(ObjectDictionary& od);
 
 /// The heartbeat consumer (CiA 301 7.2.8.3.2.2) for the used entries of 0x1016 whose port code
 /// is this consumer's (0 on a CiA 301 device). Monitoring of a node starts with its first

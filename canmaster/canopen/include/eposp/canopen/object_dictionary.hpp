@@ -164,4 +164,9 @@ private:
     ListenerId next_listener_ = 1;
 };
 
+/// A service's write rule for an object a device brought itself (e.g. from an EDS): `sub` gets
+/// `rule` as its write hook unless it is missing, has a hook of its own, or is not of `type`
+/// (the rule decodes that type). Returns whether it did.
+bool add_write_rule(SubObject* sub, DataType type, SubObject::WriteHook rule);
+
 } // namespace eposp::canopen

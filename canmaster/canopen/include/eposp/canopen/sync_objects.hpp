@@ -34,5 +34,8 @@ struct SyncObjectOptions {
 /// - 0x1019 Synchronous Counter Overflow Value (0 = no counter, 2..240): while 0x1006 is non-zero
 ///   DeviceState (0x08000022); the reserved values 1 and 241..255: InvalidValue.
 void add_sync_objects(ObjectDictionary& od, const SyncObjectOptions& options = {});
+/// The write rules of add_sync_objects() on the SYNC objects `od` already has (e.g. from an
+/// EDS), where they have no hook of their own (add_write_rule()).
+void enforce_sync_rules(ObjectDictionary& od, const SyncObjectOptions& options = {});
 
 } // namespace eposp::canopen
