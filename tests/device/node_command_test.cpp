@@ -167,6 +167,10 @@ TEST_P(NodeStorage, SavedParametersAndLssConfigurationComeBackAtTheNextRun) {
     const auto read = run_storing_client(options, "read");
     ASSERT_EQ(read.exit_code, 0) << read.output;
     EXPECT_THAT(read.output, HasSubstr("heartbeat time 250"));
+    // The stored LSS bit rate is the node's at power-up; the simulated bus keeps its own.
+    EXPECT_THAT(read_file(scratch("read.out")),
+                HasSubstr("node 5: bit rate 250000 bit/s by LSS (the simulated bus runs at "
+                          "1000000 bit/s)"));
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -87,7 +87,7 @@ canopen::NodeConfig node_config(const NodeOptions& options, const canopen::Impor
     config.switch_bit_rate = [node = options.node_id,
                               bus = options.hosting.bitrate](std::uint32_t bit_rate) {
         if (bit_rate != bus) {
-            fmt::print("node {}: LSS activated {} bit/s (the simulated bus runs at {} bit/s)\n",
+            fmt::print("node {}: bit rate {} bit/s by LSS (the simulated bus runs at {} bit/s)\n",
                        node, bit_rate, bus);
         }
     };
