@@ -22,10 +22,8 @@ EmcyBytes bytes_of(const std::vector<std::uint8_t>& frame) {
 }
 
 // The error as table 4-11 and 4.1 give it: EMCY (code, register, five zero bytes), the register
-// in 0x1001, the newest history entry, and the drive in Fault. The register holds the error's
-// bit of table 4-11 and the generic bit that CiA 301 7.5.2.2 sets with every error.
-void expect_error(Epos2DriveOnBus& bench, std::uint16_t code, std::uint8_t table_bits) {
-    const auto error_register = static_cast<std::uint8_t>(table_bits | 0x01);
+// in 0x1001, the newest history entry, and the drive in Fault.
+void expect_error(Epos2DriveOnBus& bench, std::uint16_t code, std::uint8_t error_register) {
     ASSERT_FALSE(bench.emcys.empty());
     EXPECT_EQ(bytes_of(bench.emcys.front()),
               (EmcyBytes{static_cast<std::uint8_t>(code), static_cast<std::uint8_t>(code >> 8),

@@ -214,9 +214,9 @@ TEST_F(Epos2DriveOnBus, MissingHeartbeatOfTheMasterRaises8130AndFaults) {
     EXPECT_TRUE(emcys.empty()) << "the heartbeat came within its time";
     run_with_sync(100ms);
     ASSERT_FALSE(emcys.empty());
-    // Communication (table 4-11) and generic (CiA 301 7.5.2.2).
-    EXPECT_EQ(emcys.front(), (std::vector<std::uint8_t>{0x30, 0x81, 0x11, 0, 0, 0, 0, 0}));
-    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0x11);
+    // Communication only: table 4-11 gives 0x8130 the register value 0001 0000b.
+    EXPECT_EQ(emcys.front(), (std::vector<std::uint8_t>{0x30, 0x81, 0x10, 0, 0, 0, 0, 0}));
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0x10);
     EXPECT_EQ(read<std::uint32_t>(0x1003, 1) & 0xFFFF, 0x8130U);
     EXPECT_EQ(drive.state(), motion::DriveState::Fault);
 }

@@ -49,8 +49,9 @@ void enforce_emcy_rules(ObjectDictionary& od) {
                    });
 }
 
-EmcyProducer::EmcyProducer(core::EventLoop& loop, can::Port& port, ObjectDictionary& od)
-    : loop_(loop), port_(port), od_(od), history_(od) {}
+EmcyProducer::EmcyProducer(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
+                           GenericErrorBit generic_bit)
+    : loop_(loop), port_(port), od_(od), history_(od, generic_bit) {}
 
 void EmcyProducer::raise(std::uint16_t error_code, std::uint8_t register_bits,
                          ManufacturerData data) {
@@ -98,7 +99,7 @@ std::uint8_t EmcyProducer::update_register() {
     for (const auto& [code, error_bits] : active_) {
         bits = static_cast<std::uint8_t>(bits | error_bits);
     }
-    history_.set_error_register(bits); // with the generic bit (CiA 301 7.5.2.2)
+    history_.set_error_register(bits);
     return history_.error_register();
 }
 

@@ -96,8 +96,7 @@ std::uint8_t ErrorHistory::error_register() const {
 }
 
 void ErrorHistory::set_error_register(std::uint8_t bits) {
-    // CiA 301 7.5.2.2: the generic error bit is set with every error.
-    if (bits != 0) {
+    if (bits != 0 && generic_bit_ == GenericErrorBit::WithEveryError) {
         bits = static_cast<std::uint8_t>(bits | error_register::kGeneric);
     }
     od_.set_as(kErrorRegisterIndex, 0, bits);

@@ -120,7 +120,7 @@ Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary,
                 [this] {
                     reset_communication();
                 }}),
-      emcy_(loop, services_port_, od_),
+      emcy_(loop, services_port_, od_, config_.generic_error_bit),
       sdo_(loop, services_port_, od_, config_.node_id, config_.sdo),
       heartbeat_producer_(loop, services_port_, od_, config_.node_id),
       heartbeat_consumer_(loop, od_, [this](std::uint16_t code) { raise_emergency(code); }),

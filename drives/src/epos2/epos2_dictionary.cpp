@@ -35,6 +35,8 @@ canopen::NodeConfig Epos2Dictionary::node_config() const {
     node.device_type = kDeviceType;
     node.identity = epos2_identity(config_.serial_number);
     node.parameter_file = config_.parameter_file;
+    // Table 4-11 gives each error its register value (overcurrent 0000 0010b, not 0000 0011b).
+    node.generic_error_bit = canopen::GenericErrorBit::FromTheTable;
     return node;
 }
 

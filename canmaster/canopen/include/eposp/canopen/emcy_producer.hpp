@@ -45,7 +45,8 @@ public:
     using ManufacturerData = std::array<std::uint8_t, 5>;
     static constexpr std::size_t kMaxPending = 16;
 
-    EmcyProducer(core::EventLoop& loop, can::Port& port, ObjectDictionary& od);
+    EmcyProducer(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
+                 GenericErrorBit generic_bit = GenericErrorBit::WithEveryError);
     EmcyProducer(const EmcyProducer&) = delete;
     EmcyProducer& operator=(const EmcyProducer&) = delete;
 

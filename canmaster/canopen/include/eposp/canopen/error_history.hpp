@@ -33,10 +33,18 @@ inline constexpr std::uint8_t kEposPErrorHistoryEntries = 16; ///< EPOS P FW spe
 /// are kept, and get that rule where they have no write hook of their own.
 void add_error_objects(ObjectDictionary& od, std::uint8_t capacity);
 
+/// When 0x1001 bit 0 is set.
+enum class GenericErrorBit {
+    WithEveryError, ///< whenever any bit is set (CiA 301 7.5.2.2)
+    FromTheTable,   ///< only as the device's error table gives it (EPOS2 FW spec table 4-11)
+};
+
 /// The device's view of 0x1001 and 0x1003; the values live in the dictionary.
 class ErrorHistory {
 public:
-    explicit ErrorHistory(ObjectDictionary& od) : od_(od) {}
+    explicit ErrorHistory(ObjectDictionary& od,
+                          GenericErrorBit generic_bit = GenericErrorBit::WithEveryError)
+        : od_(od), generic_bit_(generic_bit) {}
 
     /// A new entry at sub-index 1; the older ones move down and the oldest beyond the capacity
     /// is dropped. An entry is the error code in bits 15..0 and additional information above
@@ -47,11 +55,12 @@ public:
     std::vector<std::uint32_t> entries() const;
 
     std::uint8_t error_register() const;
-    /// `bits`, with the generic error bit whenever any bit is set (CiA 301 7.5.2.2).
+    /// `bits`, with the generic error bit whenever any bit is set unless FromTheTable.
     void set_error_register(std::uint8_t bits);
 
 private:
     ObjectDictionary& od_;
+    GenericErrorBit generic_bit_;
 };
 
 } // namespace eposp::canopen

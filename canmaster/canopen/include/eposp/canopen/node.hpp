@@ -52,6 +52,9 @@ struct NodeConfig {
     std::uint8_t error_history_capacity = kEpos2ErrorHistoryEntries; ///< 0x1003
     SyncObjectOptions sync;                                          ///< 0x1005..0x1007, 0x1019
     bool emcy_inhibit_time = true;                                   ///< 0x1015
+    /// CiA 301 7.5.2.2 sets the generic bit of 0x1001 with every error; a device whose manual
+    /// gives each error its own register value (EPOS2 FW spec table 4-11) keeps to its table.
+    GenericErrorBit generic_error_bit = GenericErrorBit::WithEveryError;
     /// The PDOs when the dictionary has none; empty: CiA 301 defaults for 4 RPDOs and 4 TPDOs.
     std::optional<PdoObjectsConfig> pdos;
     /// The non-volatile memory behind 0x1010/0x1011; empty: the node has no stored values.
