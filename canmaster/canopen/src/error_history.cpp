@@ -16,17 +16,14 @@ std::uint8_t capacity_of(const ObjectDictionary& od) {
 
 // CiA 301 7.5.2.6: writing 0 to sub-index 0 empties the history; no other value is allowed.
 void guard_error_count(ObjectDictionary& od) {
-    SubObject* count = od.find(kPreDefinedErrorFieldIndex, 0);
-    if (count == nullptr || count->on_write || count->type != DataType::Unsigned8) {
-        return;
-    }
-    count->on_write = [&od](std::span<const std::uint8_t> data) {
-        if (decode<std::uint8_t>(data) != 0) {
-            return AbortCode::InvalidValue;
-        }
-        ErrorHistory(od).clear();
-        return AbortCode::None;
-    };
+    add_write_rule(od.find(kPreDefinedErrorFieldIndex, 0), DataType::Unsigned8,
+                   [&od](std::span<const std::uint8_t> data) {
+                       if (decode<std::uint8_t>(data) != 0) {
+                           return AbortCode::InvalidValue;
+                       }
+                       ErrorHistory(od).clear();
+                       return AbortCode::None;
+                   });
 }
 
 } // namespace
