@@ -40,11 +40,12 @@ int run_drive(const DriveOptions& options) {
         inputs.push_back(options.config);
     }
     // The non-volatile memory of 0x1010 / 0x1011 (8.2.8, 8.2.9), kept across runs.
-    const auto state = state_directory(options.state_dir, fmt::format("epos2-{}", options.node_id));
-    if (!state) {
-        return report_user_error(kCommand, state.error());
+    const auto stored =
+        stored_parameters_file(options.state_dir, fmt::format("epos2-{}", options.node_id));
+    if (!stored) {
+        return report_user_error(kCommand, stored.error());
     }
-    const std::string parameter_file = (*state / kParameterFileName).string();
+    const std::string& parameter_file = *stored;
     if (auto problem =
             output_file_problem({"--state-dir", parameter_file, OutputKind::ParameterFile}, inputs,
                                 options.hosting.force)) {

@@ -64,31 +64,6 @@ bool looks_like_concise_dcf(const std::filesystem::path& path) {
     return static_cast<bool>(manager::decode_concise_dcf(bytes));
 }
 
-bool is_of_kind(const std::filesystem::path& path, OutputKind kind) {
-    const std::string head = read_head(path, kHeadSize);
-    switch (kind) {
-    case OutputKind::ProgramImage:
-        return head.starts_with("EPXI");
-    case OutputKind::RetainStore:
-        return head.starts_with("EPRT");
-    case OutputKind::ParameterFile:
-        return head.starts_with("EPOSPPAR");
-    case OutputKind::AxisTrace:
-        return head.starts_with("time_s,axis,");
-    case OutputKind::CandumpLog:
-        return looks_like_candump_log(head);
-    case OutputKind::Pcap:
-        return looks_like_pcap(head);
-    case OutputKind::DeviceDescription:
-        return looks_like_ini(head);
-    case OutputKind::ConciseDcf:
-        return looks_like_concise_dcf(path);
-    case OutputKind::SvgPicture:
-        return head.starts_with("<svg") || head.starts_with("<?xml");
-    }
-    return false;
-}
-
 std::string_view kind_name(OutputKind kind) {
     switch (kind) {
     case OutputKind::ProgramImage:
@@ -119,6 +94,31 @@ bool same_file(const std::string& a, const std::string& b) {
 }
 
 } // namespace
+
+bool is_of_kind(const std::filesystem::path& path, OutputKind kind) {
+    const std::string head = read_head(path, kHeadSize);
+    switch (kind) {
+    case OutputKind::ProgramImage:
+        return head.starts_with("EPXI");
+    case OutputKind::RetainStore:
+        return head.starts_with("EPRT");
+    case OutputKind::ParameterFile:
+        return head.starts_with("EPOSPPAR");
+    case OutputKind::AxisTrace:
+        return head.starts_with("time_s,axis,");
+    case OutputKind::CandumpLog:
+        return looks_like_candump_log(head);
+    case OutputKind::Pcap:
+        return looks_like_pcap(head);
+    case OutputKind::DeviceDescription:
+        return looks_like_ini(head);
+    case OutputKind::ConciseDcf:
+        return looks_like_concise_dcf(path);
+    case OutputKind::SvgPicture:
+        return head.starts_with("<svg") || head.starts_with("<?xml");
+    }
+    return false;
+}
 
 std::optional<std::string> input_file_problem(const std::string& path, std::string_view what) {
     std::error_code error;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
@@ -28,6 +29,9 @@ struct OutputFile {
     std::string path;
     OutputKind kind;
 };
+
+/// Whether the content of the file at `path` says it is of `kind` (its magic, its header line).
+bool is_of_kind(const std::filesystem::path& path, OutputKind kind);
 
 /// Why `path` cannot be read as a file (`what` says what it should be: "an EDS file"), or
 /// nullopt: a directory is refused here rather than read as an empty file.

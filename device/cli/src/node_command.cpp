@@ -99,11 +99,7 @@ core::Result<std::string> parameter_file(const NodeOptions& options) {
     if (options.parameter_file) {
         return *options.parameter_file;
     }
-    auto directory = state_directory(options.state_dir, fmt::format("node-{}", options.node_id));
-    if (!directory) {
-        return core::Error{directory.error()};
-    }
-    return (*directory / kParameterFileName).string();
+    return stored_parameters_file(options.state_dir, fmt::format("node-{}", options.node_id));
 }
 
 // The EDS is read and the parameter file both read and written: neither may be a trace, and the

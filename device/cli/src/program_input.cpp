@@ -17,13 +17,6 @@ bool is_image_file(const std::string& path) {
     return path.ends_with(".epx");
 }
 
-// An image under another name is still no source: its magic says what it is.
-bool starts_like_an_image(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    char magic[4] = {};
-    return in.read(magic, sizeof magic) && std::string_view(magic, sizeof magic) == "EPXI";
-}
-
 core::Result<vm::Image> read_image_file(const std::string& path) {
     if (auto problem = input_file_problem(path, "a program image")) {
         return core::Error{*problem};
@@ -56,7 +49,8 @@ core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths) {
         if (auto problem = input_file_problem(path, "a Structured Text source")) {
             return core::Error{*problem};
         }
-        if (is_image_file(path) || starts_like_an_image(path)) {
+        // An image under another name is still no source: its magic says what it is.
+        if (is_image_file(path) || is_of_kind(path, OutputKind::ProgramImage)) {
             return core::Error{path + " is a program image, not Structured Text source (eposp "
                                       "dump shows what it holds)"};
         }

@@ -25,7 +25,7 @@ core::Result<std::filesystem::path> default_state_home() {
     return core::Error{"neither XDG_STATE_HOME nor HOME is set: give --state-dir DIR"};
 }
 
-} // namespace
+constexpr std::string_view kParameterFileName = "parameters.bin";
 
 core::Result<std::filesystem::path> state_directory(const std::optional<std::string>& state_dir,
                                                     std::string_view device) {
@@ -46,6 +46,17 @@ core::Result<std::filesystem::path> state_directory(const std::optional<std::str
                                        error ? error.message() : "not a directory")};
     }
     return directory;
+}
+
+} // namespace
+
+core::Result<std::string> stored_parameters_file(const std::optional<std::string>& state_dir,
+                                                 std::string_view device) {
+    auto directory = state_directory(state_dir, device);
+    if (!directory) {
+        return core::Error{directory.error()};
+    }
+    return (*directory / kParameterFileName).string();
 }
 
 void add_state_dir_option(CLI::App& command, std::optional<std::string>& state_dir,

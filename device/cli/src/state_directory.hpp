@@ -10,16 +10,13 @@
 
 namespace eposp::device::cli {
 
-/// The file in a state directory that holds a device's stored parameters (0x1010 store, 0x1011
-/// restore); LSS store configuration writes "<it>.lss" beside it.
-inline constexpr std::string_view kParameterFileName = "parameters.bin";
-
-/// Where a simulated device keeps its non-volatile memory: `state_dir` when given, else
-/// `$XDG_STATE_HOME/eposp/<device>` or, without that variable (or with a relative one, XDG Base
-/// Directory Specification 0.8), `$HOME/.local/state/eposp/<device>`. The directory is created;
-/// an error says why it cannot be.
-core::Result<std::filesystem::path> state_directory(const std::optional<std::string>& state_dir,
-                                                    std::string_view device);
+/// The file that holds a simulated device's stored parameters (0x1010 store, 0x1011 restore;
+/// LSS store configuration writes "<it>.lss" beside it): parameters.bin in its state directory,
+/// which is `state_dir` when given, else `$XDG_STATE_HOME/eposp/<device>` or, without that
+/// variable (or with a relative one, XDG Base Directory Specification 0.8),
+/// `$HOME/.local/state/eposp/<device>`. The directory is created; an error says why it cannot be.
+core::Result<std::string> stored_parameters_file(const std::optional<std::string>& state_dir,
+                                                 std::string_view device);
 
 /// Adds `--state-dir DIR`, naming the default `device` gets.
 void add_state_dir_option(CLI::App& command, std::optional<std::string>& state_dir,
