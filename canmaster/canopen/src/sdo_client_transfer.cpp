@@ -59,8 +59,9 @@ void SdoClientTransfer::start_download(std::uint32_t request_cob_id, Multiplexer
     expedited_ = !data_.empty() && data_.size() <= kExpeditedSize;
     if (expedited_) {
         begin(request_cob_id, mux, options, State::InitiateDownload);
+        const bool sized = options.size_indicated || size != kExpeditedSize;
         Message request = message(
-            initiate_command(ccs::kInitiateDownload, kExpeditedSize - size, true, true), mux);
+            initiate_command(ccs::kInitiateDownload, kExpeditedSize - size, true, sized), mux);
         std::copy(data_.begin(), data_.end(), request.begin() + 4);
         return send(request);
     }

@@ -48,6 +48,16 @@ TEST(SdoClient, DownloadsOfUpToFourBytesAreExpedited) {
     EXPECT_EQ(four.code, AbortCode::None);
 }
 
+TEST(SdoClient, FourByteDownloadWithoutSizeLeavesTheLengthToTheServer) {
+    SdoClientBench bench;
+    Outcome outcome;
+    bench.client.download(kServerNode, 0x6040, 0, encode<std::uint32_t>(0x000F), outcome.download(),
+                          {.size_indicated = false});
+    EXPECT_EQ(bench.settle(), Replies{"605#224060000F000000"});
+    EXPECT_EQ(bench.exchange("585#6040600000000000"), Replies{});
+    EXPECT_EQ(outcome.code, AbortCode::None);
+}
+
 TEST(SdoClient, SegmentedDownloadTogglesUntilTheLastSegment) {
     SdoClientBench bench;
     Outcome outcome;

@@ -48,6 +48,10 @@ struct SdoRequestOptions {
     std::uint8_t protocol_switch_threshold = sdo::kExpeditedSize;
     /// Overrides SdoClientConfig::timeout for this request (a flash write that takes long).
     std::optional<core::Duration> timeout{};
+    /// Expedited downloads of 4 bytes: false sends them without a size (CiA 301 7.2.4.3.3, e = 1,
+    /// s = 0), so that the server takes as many bytes as the object's type has. A gateway does
+    /// this for a service tool's 4-byte WriteObject, whose target's type it does not know.
+    bool size_indicated = true;
 };
 
 struct SdoRequestId {
