@@ -131,11 +131,12 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
                              .warning = error.warning});
       }) {
     if (port_code == kExternalPort) {
-        const auto own_id = od.get_as<std::uint8_t>(kNodeIdIndex, 0);
-        sdo_server_ = std::make_unique<canopen::SdoServer>(loop, port, od, own_id);
+        own_node_id_ = od.get_as<std::uint8_t>(kNodeIdIndex, 0);
+        sdo_server_ = std::make_unique<canopen::SdoServer>(loop, port, od, own_node_id_);
         // No boot-up message: the manager's first frame is its reset of the slaves, and a
         // controller alone on its bus would only collect ACK errors with it.
-        heartbeat_producer_ = std::make_unique<canopen::HeartbeatProducer>(loop, port, od, own_id);
+        heartbeat_producer_ =
+            std::make_unique<canopen::HeartbeatProducer>(loop, port, od, own_node_id_);
     }
     // The manager supervises from power-up on (it is never in NMT initialisation).
     heartbeat_.set_nmt_state(canopen::NmtState::PreOperational);
@@ -160,10 +161,23 @@ NetworkPort::NetworkPort(core::EventLoop& loop, can::Port& port, canopen::Object
         sync_consumer_.on_frame(frame);
         pdo_.on_frame(frame);
         emcy_.on_frame(frame);
+        // An observer may stop observing itself from its call.
+        for (auto it = frame_observers_.begin(); it != frame_observers_.end();) {
+            const auto next = std::next(it);
+            it->second(frame);
+            it = next;
+        }
     });
     port_.on_error_state([this](can::ErrorState state) { report_controller_state(state); });
     bind_request_nmt();
     bind_sdo_clients();
+}
+
+NetworkPort::FrameObserverId
+NetworkPort::observe_frames(std::function<void(const can::Frame& frame)> observer) {
+    const FrameObserverId id = next_frame_observer_++;
+    frame_observers_.emplace(id, std::move(observer));
+    return id;
 }
 
 // 10.15: the client parameter 0x1280 is the internal EPOS2's, 0x1280 + n node n's of port 2.

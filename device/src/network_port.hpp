@@ -86,6 +86,15 @@ public:
     }
     /// The port's controller lost a received frame (its queue was full).
     void report_lost_frame();
+    /// Tells `observer` of every frame the port receives, after the port's services handled it
+    /// (the service interface's CAN gateway); until stop_observing(), before the port dies.
+    using FrameObserverId = std::uint64_t;
+    FrameObserverId observe_frames(std::function<void(const can::Frame& frame)> observer);
+    void stop_observing(FrameObserverId id) { frame_observers_.erase(id); }
+    /// The controller's own node-ID on the port (port 2; 0 on port 1, where it has none).
+    canopen::NodeId own_node_id() const { return own_node_id_; }
+    /// Sends a frame of a service tool's (the CAN gateway) on the port.
+    can::SendStatus send(const can::Frame& frame) { return port_.send(frame); }
 
 private:
     void report_controller_state(can::ErrorState state);
@@ -102,6 +111,7 @@ private:
     can::Port& port_;
     canopen::ObjectDictionary& od_;
     std::uint8_t port_code_;
+    canopen::NodeId own_node_id_ = 0;
     canopen::SdoClient sdo_;
     canopen::NmtMaster nmt_;
     canopen::HeartbeatConsumer heartbeat_;
@@ -115,6 +125,8 @@ private:
     std::unique_ptr<canopen::HeartbeatProducer> heartbeat_producer_;
     SlaveConfigurations configurations_;
     std::vector<std::function<void()>> sync_listeners_;
+    std::map<FrameObserverId, std::function<void(const can::Frame&)>> frame_observers_;
+    FrameObserverId next_frame_observer_ = 1;
     std::vector<canopen::ObjectDictionary::ListenerId> listeners_;
     can::ErrorState controller_state_ = can::ErrorState::Active;
 };

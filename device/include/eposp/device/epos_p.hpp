@@ -100,8 +100,11 @@ public:
     can::VirtualBus& external_bus() { return external_bus_; }
     can::Port& external_port() { return *external_port_; }
 
-private:
+    /// The manager of port 1 or 2 (a type of the device's own sources: for the service
+    /// interface, which reaches the ports' nodes through it).
     NetworkPort& network_port(std::uint8_t port);
+
+private:
     /// DESIGN.md, "One communication cycle": at each SYNC, puts the PLC's cyclic tasks a
     /// fixed delay after it, when the slaves' synchronous TPDOs are in.
     void follow_sync();
