@@ -129,5 +129,40 @@ TEST(V1BackToBack, ACorruptedByteIsACrcErrorAndTheNextExchangeWorks) {
     EXPECT_EQ(wire.requests(), std::vector<Frame>{request});
 }
 
+// Without queues each link's write lands in the other's receive() at once, so every callback
+// runs inside the other link's: the links update their state before they write.
+TEST(V1BackToBack, LinksWiredDirectlyMayCallEachOtherFromTheirCallbacks) {
+    std::mt19937 random(99);
+    std::vector<V1Completion> completions;
+    std::vector<Frame> answers;
+    V1DeviceLink* device_end = nullptr;
+    V1HostLink host([&](std::span<const std::uint8_t> out) { device_end->receive(out); },
+                    [&](const V1Completion& done) { completions.push_back(done); });
+    V1DeviceLink device([&](std::span<const std::uint8_t> out) { host.receive(out); },
+                        [&](const Frame& request) {
+                            if (!answered_on_v1(request.opcode)) {
+                                device_end->skip_answer();
+                                return;
+                            }
+                            answers.push_back(Frame{kAnswerOpCode, request.data});
+                            device_end->send_answer(answers.back());
+                        });
+    device_end = &device;
+    for (int i = 0; i < 100; ++i) {
+        const Frame request = random_request(random);
+        host.request(request, answered_on_v1(request.opcode));
+        ASSERT_EQ(completions.size(), static_cast<std::size_t>(i + 1));
+        const V1Completion& done = completions.back();
+        if (answered_on_v1(request.opcode)) {
+            ASSERT_EQ(done.outcome, V1Outcome::Answered) << i;
+            ASSERT_EQ(done.answer, answers.back()) << i;
+        } else {
+            ASSERT_EQ(done.outcome, V1Outcome::Sent) << i;
+        }
+        ASSERT_FALSE(host.busy());
+        ASSERT_FALSE(device.mid_frame());
+    }
+}
+
 } // namespace
 } // namespace eposp::service
