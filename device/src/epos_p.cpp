@@ -2,9 +2,13 @@
 
 #include "device_axis_link.hpp"
 #include "eposp/device/axis_process_data.hpp"
+#include "eposp/device/error_entry.hpp"
 #include "manufacturer_status.hpp"
 #include "network_port.hpp"
 #include "plc_objects.hpp"
+#include "program_download.hpp"
+#include "program_store.hpp"
+#include "variable_access.hpp"
 
 #include <fmt/format.h>
 
@@ -18,7 +22,8 @@ drives::epos2::Epos2DriveConfig internal_drive_config(drives::epos2::Epos2DriveC
     return config;
 }
 
-EposPDictionaryConfig dictionary_config(const EposPConfig& config, const Plc& plc) {
+EposPDictionaryConfig dictionary_config(const EposPConfig& config, const Plc& plc,
+                                        std::function<canopen::AbortCode()> erase_program) {
     EposPDictionaryConfig dictionary;
     dictionary.node_id = config.node_id;
     dictionary.serial_number = config.serial_number;
@@ -26,6 +31,7 @@ EposPDictionaryConfig dictionary_config(const EposPConfig& config, const Plc& pl
     dictionary.restore.restore_permitted = [&plc] {
         return restore_permitted(plc);
     };
+    dictionary.erase_program = std::move(erase_program);
     return dictionary;
 }
 
@@ -41,9 +47,16 @@ EposP::EposP(EposPConfig config)
           loop_, *internal_drive_port_, internal_drive_config(std::move(config.internal_drive)))),
       external_bus_(loop_, can::BusConfig{.name = "external", .bitrate = config.external_bit_rate}),
       external_port_(external_bus_.connect("epos-p")), plc_(loop_, std::move(config.runtime)),
-      dictionary_(dictionary_config(config, plc_)) {
-    bind_plc(dictionary_.objects(), plc_,
-             [this](vm::StartMode mode) { return start_program(mode); });
+      dictionary_(dictionary_config(config, plc_, [this] { return program_store_->clear(); })) {
+    load_stored_parameters(config.parameter_file);
+    const auto start = [this](vm::StartMode mode) {
+        return start_program(mode);
+    };
+    bind_plc(dictionary_.objects(), plc_, start);
+    program_store_ =
+        std::make_unique<ProgramStore>(dictionary_.objects(), plc_, std::move(config.program_file));
+    bind_program_download(dictionary_.objects(), *program_store_, plc_, start);
+    bind_variable_access(dictionary_.objects(), plc_);
     internal_network_ =
         std::make_unique<NetworkPort>(loop_, *internal_port_, dictionary_.objects(), kInternalPort);
     external_network_ =
@@ -68,7 +81,18 @@ EposP::EposP(EposPConfig config)
             manufacturer_status_->on_emergency(port, emergency);
         });
     }
+    program_store_->power_up(); // after the motion blocks: a program may call them
     internal_drive_->start();
+}
+
+// At power-up, before anything reads the dictionary: the values 0x1010 "save" stored.
+void EposP::load_stored_parameters(const std::filesystem::path& file) {
+    if (!file.empty() && dictionary_.store().load_stored_values().refused()) {
+        record_error(dictionary_.objects(),
+                     {.code = kEepromError, .port = 0, .node = 0, .warning = false});
+    }
+    stored_program_control_ =
+        canopen::decode<std::uint16_t>(dictionary_.objects().find(kProgramControlIndex, 0)->value);
 }
 
 std::optional<core::Error> EposP::bind_event(const EventBinding& event) {
@@ -183,11 +207,20 @@ std::optional<core::Error> EposP::start_program(vm::StartMode mode) {
     if (auto error = plc_.runtime().start(mode)) {
         return error;
     }
+    program_store_->started();
     // 8.1: the boot-up runs at each cold or warm start of the application.
     if (mode != vm::StartMode::Hot) {
         boot_networks();
     }
     return std::nullopt;
+}
+
+std::optional<core::Error> EposP::start_stored_program() {
+    if (!program_store_->has_program() ||
+        stored_program_control_ == static_cast<std::uint16_t>(ProgramControl::Stopped)) {
+        return std::nullopt;
+    }
+    return start_program(static_cast<vm::StartMode>(stored_program_control_));
 }
 
 void EposP::boot_networks() {
@@ -203,6 +236,10 @@ const manager::NetworkBoot& EposP::network(std::uint8_t port) const {
     return (port == kInternalPort ? internal_network_ : external_network_)->network();
 }
 
-EposP::~EposP() = default;
+// A power-down: the RETAIN variables are saved as a stop saves them (10.37: a warm start finds
+// the values from before power down).
+EposP::~EposP() {
+    plc_.runtime().stop();
+}
 
 } // namespace eposp::device

@@ -13,15 +13,31 @@ vm::NativeRegistry plc_natives(core::EventLoop& loop) {
     return natives;
 }
 
+// verify()'s runtime: the same limits, no RETAIN store (a verification never touches it).
+vm::RuntimeConfig scratch_config(const vm::RuntimeConfig& config) {
+    vm::RuntimeConfig scratch;
+    scratch.cost = config.cost;
+    scratch.watchdog_instructions = config.watchdog_instructions;
+    scratch.safe_state = config.safe_state;
+    scratch.retain_capacity = config.retain_capacity;
+    scratch.engine = config.engine;
+    return scratch;
+}
+
 } // namespace
 
 Plc::Plc(core::EventLoop& loop, vm::RuntimeConfig config)
-    : loop_(loop), natives_(plc_natives(loop)),
+    : loop_(loop), natives_(plc_natives(loop)), scratch_config_(scratch_config(config)),
       runtime_(loop, natives_, std::move(config), [this](std::uint16_t code, std::string text) {
           errors_.push_back({loop_.now(), code, std::move(text)});
           if (error_handler_) {
               error_handler_(errors_.back());
           }
       }) {}
+
+std::optional<core::Error> Plc::verify(vm::Image image) const {
+    vm::PlcRuntime scratch(loop_, natives_, scratch_config_, [](std::uint16_t, std::string) {});
+    return scratch.load(std::move(image));
+}
 
 } // namespace eposp::device

@@ -28,9 +28,11 @@ void bind_program_control(canopen::ObjectDictionary& od, Plc& plc, ProgramStart 
     control.on_read = [&plc] {
         return canopen::encode(plc.runtime().program_control());
     };
-    control.on_write = [&plc, start = std::move(start)](std::span<const std::uint8_t> value) {
-        return program_control(plc, canopen::decode<std::uint16_t>(value), start);
-    };
+    control.on_write =
+        checked_write(std::move(control.on_write),
+                      [&plc, start = std::move(start)](std::span<const std::uint8_t> value) {
+                          return program_control(plc, canopen::decode<std::uint16_t>(value), start);
+                      });
 }
 
 void bind_process_image(canopen::ObjectDictionary& od, Plc& plc) {
@@ -56,6 +58,20 @@ void bind_process_image(canopen::ObjectDictionary& od, Plc& plc) {
 }
 
 } // namespace
+
+canopen::SubObject::WriteHook checked_write(canopen::SubObject::WriteHook check,
+                                            canopen::SubObject::WriteHook action) {
+    return [check = std::move(check),
+            action = std::move(action)](std::span<const std::uint8_t> value) {
+        if (check) {
+            if (const canopen::AbortCode refused = check(value);
+                refused != canopen::AbortCode::None) {
+                return refused;
+            }
+        }
+        return action(value);
+    };
+}
 
 canopen::AbortCode restore_permitted(const Plc& plc) {
     return plc.runtime().state() == vm::ProgramState::Running ? canopen::AbortCode::DeviceState

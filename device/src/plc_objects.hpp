@@ -23,6 +23,11 @@ namespace eposp::device {
 using ProgramStart = std::function<std::optional<core::Error>(vm::StartMode mode)>;
 void bind_plc(canopen::ObjectDictionary& od, Plc& plc, ProgramStart start);
 
+/// A write hook that runs the entry's own check (its value list, range rule) before `action`:
+/// a device binds its behaviour to an entry without losing the entry's rule.
+canopen::SubObject::WriteHook checked_write(canopen::SubObject::WriteHook check,
+                                            canopen::SubObject::WriteHook action);
+
 /// For 0x1011: refused while the program runs.
 canopen::AbortCode restore_permitted(const Plc& plc);
 

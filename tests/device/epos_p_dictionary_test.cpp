@@ -60,12 +60,18 @@ const std::vector<ListedObject> kTable32 = {
     {0x1F81, 0x1F82, ObjectCode::Array, DataType::Unsigned32, Access::ReadWrite},
     {0x1F84, 0x1F88, ObjectCode::Array, DataType::Unsigned32, Access::ReadWrite},
     {0x1F89, 0x1F89, ObjectCode::Var, DataType::Unsigned32, Access::ReadWrite},
+    // Beyond table 32: CiA 302-3 program download (docs/service-interface.md).
+    {0x1F50, 0x1F50, ObjectCode::Array, DataType::Domain, Access::ReadWrite},
+    {0x1F51, 0x1F51, ObjectCode::Array, DataType::Unsigned8, Access::ReadWrite},
+    {0x1F56, 0x1F57, ObjectCode::Array, DataType::Unsigned32, Access::ReadOnly},
     {0x5000, 0x5000, ObjectCode::Var, DataType::Unsigned8, Access::ReadWrite},
     {0x5001, 0x5001, ObjectCode::Var, DataType::Unsigned16, Access::ReadWrite},
     {0x5003, 0x5004, ObjectCode::Array, DataType::Unsigned16, Access::ReadOnly},
     {0x5005, 0x5005, ObjectCode::Var, DataType::Unsigned16, Access::ReadWrite},
     {0x5280, 0x529F, ObjectCode::Record, DataType::Unsigned8, Access::ReadWrite},
     {0x5F51, 0x5F51, ObjectCode::Var, DataType::Unsigned16, Access::ReadWrite},
+    // Beyond table 32: eposp's variable access (docs/service-interface.md).
+    {0x5F60, 0x5F60, ObjectCode::Record, DataType::VisibleString, Access::ReadWrite},
     {0xA000, 0xA000, ObjectCode::Array, DataType::Integer8, Access::ReadWrite},
     {0xA040, 0xA040, ObjectCode::Array, DataType::Unsigned8, Access::ReadWrite},
     {0xA0C0, 0xA0C0, ObjectCode::Array, DataType::Integer16, Access::ReadWrite},
@@ -103,7 +109,7 @@ AbortCode write_u32(canopen::ObjectDictionary& od, std::uint16_t index, std::uin
     return od.write(index, sub, canopen::encode(value));
 }
 
-TEST_F(EposPDictionaryTest, HoldsEveryObjectOfTable32AndNothingElse) {
+TEST_F(EposPDictionaryTest, HoldsEveryObjectOfTable32AndTheProgramObjectsAndNothingElse) {
     const EposPDictionary dictionary(config());
     std::size_t listed = 0;
     for (const ListedObject& row : kTable32) {

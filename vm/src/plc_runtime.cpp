@@ -120,6 +120,16 @@ void PlcRuntime::stop() {
     }
 }
 
+void PlcRuntime::unload() {
+    stop();
+    dispatcher_.reset();
+    machine_.reset();
+    program_.reset();
+    task_bindings_.clear();
+    forced_.release_all();
+    retain_saved_.reset();
+}
+
 ProgramState PlcRuntime::state() const {
     if (!program_) {
         return ProgramState::NotLoaded;

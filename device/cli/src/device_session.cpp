@@ -9,6 +9,7 @@
 #include "file_checks.hpp"
 #include "options.hpp"
 #include "program_input.hpp"
+#include "state_directory.hpp"
 #include "terminal_text.hpp"
 
 #include <algorithm>
@@ -155,6 +156,27 @@ void print_boot_report(const EposP& device, const NetworkFile& network) {
     }
 }
 
+// --state-dir: the program store and the parameter file of the EPOS P, neither of them an input.
+std::optional<core::Error> use_state_directory(const SessionOptions& options, EposPConfig& config) {
+    auto program = stored_program_file(options.state_dir, "epos-p");
+    auto parameters = stored_parameters_file(options.state_dir, "epos-p");
+    if (!program || !parameters) {
+        return core::Error{"--state-dir: " + (program ? parameters.error() : program.error())};
+    }
+    const OutputFile outputs[] = {{"--state-dir", *program, OutputKind::ProgramImage},
+                                  {"--state-dir", *parameters, OutputKind::ParameterFile}};
+    if (auto problem = output_files_problem(outputs, options.paths, options.force)) {
+        return core::Error{*problem};
+    }
+    config.program_file = *program;
+    config.parameter_file = *parameters;
+    return std::nullopt;
+}
+
+bool program_loaded(const Plc& plc) {
+    return plc.runtime().state() != vm::ProgramState::NotLoaded;
+}
+
 } // namespace
 
 struct DeviceSession::Traces {
@@ -217,6 +239,10 @@ void add_session_options(CLI::App& command, SessionOptions& options, bool progra
         ->capture_default_str();
     command.add_option("--retain", options.retain_file,
                        "File the RETAIN variables are kept in between runs");
+    command.add_option("--state-dir", options.state_dir,
+                       "Directory of the EPOS P's non-volatile memory: the program downloaded to "
+                       "0x1F50 (program.epx) and the parameters of 0x1010 \"save\" "
+                       "(parameters.bin); without it they live in memory only");
     command.add_option("--start", options.start, "Start mode: cold, warm or hot")
         ->check(CLI::IsMember({"cold", "warm", "hot"}))
         ->capture_default_str();
@@ -275,6 +301,11 @@ core::Result<std::unique_ptr<DeviceSession>> DeviceSession::open(const SessionOp
         config.external_bit_rate = network->bit_rate;
         config.node_id = network->node_id;
     }
+    if (options.state_dir) {
+        if (auto error = use_state_directory(options, config)) {
+            return *error;
+        }
+    }
     auto device = std::make_unique<EposP>(std::move(config));
     if (network) {
         device->add_network(*network);
@@ -319,27 +350,35 @@ DeviceSession::DeviceSession(const SessionOptions& options, std::optional<Networ
 DeviceSession::~DeviceSession() = default;
 
 std::optional<core::Error> DeviceSession::start() {
-    if (!has_program_) {
-        device_->boot_networks();
-        return std::nullopt;
+    if (has_program_) {
+        return device_->start_program(*start_mode(options_.start));
     }
-    return device_->start_program(*start_mode(options_.start));
+    if (auto error = device_->start_stored_program()) {
+        return error;
+    }
+    if (device_->plc().runtime().state() != vm::ProgramState::Running) {
+        device_->boot_networks();
+    }
+    return std::nullopt;
 }
 
 int DeviceSession::finish(std::string_view command) {
     Plc& plc = device_->plc();
-    if (has_program_) {
+    // The program of the command line, the stored one or one a service tool downloaded.
+    const bool loaded = program_loaded(plc);
+    if (loaded) {
         plc.runtime().stop(); // saves the RETAIN variables
     }
     if (network_) {
         print_boot_report(*device_, *network_);
     }
     bool failed = false;
-    if (has_program_) {
+    if (loaded) {
         print_task_summary(plc, options_.ns_per_instruction);
         print_errors(plc);
         for (const std::string& path : options_.watch) {
-            fmt::print("{} = {}\n", path, terminal_text(*plc.value_of(path)));
+            const auto value = plc.value_of(path); // a downloaded program may lack it
+            fmt::print("{} = {}\n", path, terminal_text(value ? *value : value.error()));
         }
         // Every fault stops its task and raises an error too: overruns, retain failures and
         // faults all end here.

@@ -31,6 +31,9 @@ struct SessionOptions {
     std::optional<std::string> can_log;
     std::optional<std::string> pcap;
     bool force = false; ///< replace existing output files of another kind
+    /// The EPOS P's non-volatile memory: the downloaded program and the saved parameters are
+    /// kept there across runs; without it they live in memory only.
+    std::optional<std::string> state_dir;
 };
 
 /// Adds FILES (required or not) and the options of SessionOptions to `command`.
@@ -47,8 +50,9 @@ public:
     DeviceSession& operator=(const DeviceSession&) = delete;
 
     EposP& device() { return *device_; }
-    /// Starts the program as --start says, which boots the networks; without a program, boots
-    /// them alone.
+    /// Starts the program as --start says, which boots the networks; without a program on the
+    /// command line, the stored program as its stored 0x5F51 says (10.37), and without one that
+    /// starts, boots the networks alone.
     std::optional<core::Error> start();
     /// Stops the program (saving its RETAIN variables) and prints the boot report, each task's
     /// statistics, the errors raised and the watched variables; the exit code: kExitDeviceErrors

@@ -26,6 +26,7 @@ core::Result<std::filesystem::path> default_state_home() {
 }
 
 constexpr std::string_view kParameterFileName = "parameters.bin";
+constexpr std::string_view kProgramFileName = "program.epx";
 
 core::Result<std::filesystem::path> state_directory(const std::optional<std::string>& state_dir,
                                                     std::string_view device) {
@@ -48,15 +49,25 @@ core::Result<std::filesystem::path> state_directory(const std::optional<std::str
     return directory;
 }
 
-} // namespace
-
-core::Result<std::string> stored_parameters_file(const std::optional<std::string>& state_dir,
-                                                 std::string_view device) {
+core::Result<std::string> state_file(const std::optional<std::string>& state_dir,
+                                     std::string_view device, std::string_view name) {
     auto directory = state_directory(state_dir, device);
     if (!directory) {
         return core::Error{directory.error()};
     }
-    return (*directory / kParameterFileName).string();
+    return (*directory / name).string();
+}
+
+} // namespace
+
+core::Result<std::string> stored_parameters_file(const std::optional<std::string>& state_dir,
+                                                 std::string_view device) {
+    return state_file(state_dir, device, kParameterFileName);
+}
+
+core::Result<std::string> stored_program_file(const std::optional<std::string>& state_dir,
+                                              std::string_view device) {
+    return state_file(state_dir, device, kProgramFileName);
 }
 
 void add_state_dir_option(CLI::App& command, std::optional<std::string>& state_dir,

@@ -18,6 +18,11 @@ namespace eposp::device::cli {
 core::Result<std::string> stored_parameters_file(const std::optional<std::string>& state_dir,
                                                  std::string_view device);
 
+/// The file that holds the EPOS P's downloaded program (0x1F50, CiA 302-3): program.epx in the
+/// state directory of `stored_parameters_file`, which is created.
+core::Result<std::string> stored_program_file(const std::optional<std::string>& state_dir,
+                                              std::string_view device);
+
 /// Adds `--state-dir DIR`, naming the default `device` gets.
 void add_state_dir_option(CLI::App& command, std::optional<std::string>& state_dir,
                           std::string_view device);

@@ -28,6 +28,7 @@ EposPDictionary::EposPDictionary(EposPDictionaryConfig config)
     dictionary::add_communication_objects(od_, store_, config_);
     dictionary::add_sdo_client_and_pdo_objects(od_);
     dictionary::add_network_list_objects(od_);
+    dictionary::add_program_objects(od_);
     dictionary::add_manufacturer_objects(od_, config_);
     dictionary::add_process_image_objects(od_);
 }

@@ -37,6 +37,20 @@ void add_axes(canopen::ObjectDictionary& od) {
     }
 }
 
+// eposp's online access to the PLC's variables by path (docs/service-interface.md, "Variable
+// access"); variable_access.cpp gives it its behaviour.
+void add_variable_access(canopen::ObjectDictionary& od) {
+    constexpr std::size_t kMaxText = 255; // a path or an IEC literal
+    od.add_object(kVariableAccessIndex, "PLC Variable Access", kRecord);
+    const std::pair<std::uint8_t, const char*> texts[] = {
+        {1, "Variable Path"}, {2, "Variable Value"}, {3, "Force Value"}};
+    for (const auto& [sub, name] : texts) {
+        od.add_sub(kVariableAccessIndex, sub, name, canopen::DataType::VisibleString, kRW, {})
+            .max_length = kMaxText;
+    }
+    add_entry(od, kVariableAccessIndex, 4, "Unforce", kU8, kWO, 0);
+}
+
 } // namespace
 
 void add_manufacturer_objects(canopen::ObjectDictionary& od, const EposPDictionaryConfig& config) {
@@ -55,6 +69,7 @@ void add_manufacturer_objects(canopen::ObjectDictionary& od, const EposPDictiona
     add_var(od, kProgramControlIndex, "Program Control", kU16, kRW, 0) // 10.37, table 31
         .one_of({0, 1, 2, 3})
         .persistent();
+    add_variable_access(od);
 }
 
 } // namespace eposp::device::dictionary

@@ -14,7 +14,9 @@ void add_communication_objects(canopen::ObjectDictionary& od, canopen::Parameter
 void add_sdo_client_and_pdo_objects(canopen::ObjectDictionary& od);
 /// 10.20 - 10.30: the network list of CiA 302, 0x1F26 - 0x1F89.
 void add_network_list_objects(canopen::ObjectDictionary& od);
-/// 10.31 - 10.37: 0x5000 - 0x5F51.
+/// CiA 302-3 program download: 0x1F50, 0x1F51, 0x1F56, 0x1F57 (beyond chapter 10).
+void add_program_objects(canopen::ObjectDictionary& od);
+/// 10.31 - 10.37: 0x5000 - 0x5F51, and eposp's variable access 0x5F60.
 void add_manufacturer_objects(canopen::ObjectDictionary& od, const EposPDictionaryConfig& config);
 /// 10.38 - 10.49: the DS-405 process image, 0xA000 - 0xA680.
 void add_process_image_objects(canopen::ObjectDictionary& od);

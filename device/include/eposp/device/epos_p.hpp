@@ -20,6 +20,7 @@ namespace eposp::device {
 class DeviceAxisLink;
 class ManufacturerStatus;
 class NetworkPort;
+class ProgramStore;
 
 struct EposPConfig {
     /// Virtual time (as fast as the CPU allows, deterministic) or the wall clock.
@@ -32,16 +33,23 @@ struct EposPConfig {
     /// The controller's node-ID on port 2 (0x5000) and serial number (0x1018 sub 4).
     canopen::NodeId node_id = 1;
     std::uint32_t serial_number = 0;
-    /// The non-volatile memory of 0x1010 / 0x1011; empty: "save" is refused.
+    /// The non-volatile memory of 0x1010 / 0x1011, applied at power-up; empty: "save" is
+    /// refused.
     std::filesystem::path parameter_file;
+    /// The program memory behind 0x1F50 (CiA 302-3 program download), loaded at power-up;
+    /// empty: a downloaded program lives in memory only.
+    std::filesystem::path program_file;
 };
 
 /// The EPOS P: the PLC, its object dictionary and two CAN ports on one event loop. Port 1 is the
 /// internal bus to the internal EPOS2 (node 1, always present); port 2 is the external CAN bus,
 /// an in-process virtual bus that simulated slaves join. The dictionary is bound to the PLC
 /// (program control 0x5F51, the process image 0xA000 - 0xA680, the PLC's errors in 0x1003; see
-/// plc_objects.hpp). Powered up by the constructor: the internal EPOS2 boots at once; a program
-/// runs once it is loaded into plc() and started (by 0x5F51 or plc().runtime().start()).
+/// plc_objects.hpp). Powered up by the constructor: the stored parameters and the stored program
+/// are loaded, the internal EPOS2 boots at once; a program runs once it is loaded (downloaded to
+/// 0x1F50, or plc().load()) and started (by 0x5F51, 0x1F51, start_stored_program() or
+/// plc().runtime().start()). Destroying it is a power-down: a running program is stopped, which
+/// saves its RETAIN variables.
 ///
 /// While the EPOS P produces SYNC, each cyclic task whose interval is a multiple of the SYNC
 /// period runs in step with it: the synchronous window 0x1007 after the SYNC (half a period
@@ -82,6 +90,10 @@ public:
     /// Starts the loaded program as 0x5F51 does (1 cold, 2 warm, 3 hot); a cold or warm start
     /// boots the networks too (8.1). The error says why it cannot start.
     std::optional<core::Error> start_program(vm::StartMode mode);
+    /// 10.37: starts the stored program as the stored 0x5F51 says (0 leaves it stopped; 1 cold,
+    /// 2 warm, 3 hot), once the device is set up (its network added). The error says why it
+    /// cannot start; without a stored program nothing happens.
+    std::optional<core::Error> start_stored_program();
     /// Boots the networks of both ports as the dictionary's network lists say (8.1): the
     /// internal EPOS2 (sub-index 128 of 0x1F81 ...) on port 1, the slaves of sub-indices 1..127
     /// on port 2. Failures go to the error history with their port and node-ID.
@@ -105,6 +117,7 @@ public:
     NetworkPort& network_port(std::uint8_t port);
 
 private:
+    void load_stored_parameters(const std::filesystem::path& file);
     /// DESIGN.md, "One communication cycle": at each SYNC, puts the PLC's cyclic tasks a
     /// fixed delay after it, when the slaves' synchronous TPDOs are in.
     void follow_sync();
@@ -124,6 +137,8 @@ private:
     std::unique_ptr<DeviceAxisLink> axis_link_;
     std::unique_ptr<plcopen::MotionLibrary> motion_; ///< its blocks are natives of plc_
     std::unique_ptr<ManufacturerStatus> manufacturer_status_;
+    std::unique_ptr<ProgramStore> program_store_;
+    std::uint16_t stored_program_control_ = 0; ///< 0x5F51 as stored: the boot-up state
     std::vector<std::unique_ptr<can::VirtualPort>> slave_ports_;
     std::vector<std::unique_ptr<drives::epos2::Epos2Drive>> slaves_;
 };

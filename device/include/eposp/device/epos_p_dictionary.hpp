@@ -38,6 +38,20 @@ enum class ProgramControl : std::uint16_t {
     Hotstart = 3
 };
 
+/// CiA 302-3 program download (docs/service-interface.md): the program image (DOMAIN), its
+/// control, its identification (the image's CRC-32) and the flash status, each at sub-index 1.
+inline constexpr std::uint16_t kProgramDataIndex = 0x1F50;
+inline constexpr std::uint16_t kCia302ProgramControlIndex = 0x1F51;
+inline constexpr std::uint16_t kProgramIdentificationIndex = 0x1F56;
+inline constexpr std::uint16_t kFlashStatusIndex = 0x1F57;
+/// CiA 302-3, 0x1F51 written: stop, start, reset (back to the initial values), clear.
+enum class ProgramControlCommand : std::uint8_t { Stop = 0, Start = 1, Reset = 2, Clear = 3 };
+/// CiA 302-3, 0x1F51 read: the program's state.
+enum class ProgramStatus : std::uint8_t { Stopped = 0, Started = 1, NoProgram = 3 };
+/// eposp's online access to the PLC's variables by path (docs/service-interface.md): sub 1 the
+/// path, sub 2 its value as an IEC literal, sub 3 force, sub 4 unforce.
+inline constexpr std::uint16_t kVariableAccessIndex = 0x5F60;
+
 /// Tables 4 and 10: the port codes of the error history and of 0x1016.
 inline constexpr std::uint8_t kInternalPort = 1;
 inline constexpr std::uint8_t kExternalPort = 2;

@@ -34,6 +34,10 @@ public:
     /// Verifies, links and loads a program image; the error says why it cannot run. The program
     /// does not start: runtime().start() starts it.
     std::optional<core::Error> load(vm::Image image) { return runtime_.load(std::move(image)); }
+    /// Whether load() would accept `image`, leaving the loaded program alone: verified and linked
+    /// on a scratch runtime of the same natives and settings (a download is checked this way
+    /// before it replaces anything).
+    std::optional<core::Error> verify(vm::Image image) const;
 
     vm::PlcRuntime& runtime() { return runtime_; }
     /// The natives programs link against; more (the motion blocks) are added before a load.
@@ -55,6 +59,7 @@ private:
     vm::NativeRegistry natives_;
     std::vector<RaisedError> errors_;
     std::function<void(const RaisedError&)> error_handler_;
+    vm::RuntimeConfig scratch_config_; ///< verify()'s runtime: the limits without a RETAIN store
     vm::PlcRuntime runtime_;
 };
 

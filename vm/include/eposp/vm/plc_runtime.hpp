@@ -73,6 +73,9 @@ public:
     std::optional<core::Error> start(StartMode mode);
     /// Stops the tasks, saves the RETAIN variables and puts the outputs in the safe state.
     void stop();
+    /// Stops the program and forgets it (CiA 302-3 "clear program", EPOS P 0x1011 "eras"): the
+    /// state is NotLoaded until the next load.
+    void unload();
     ProgramState state() const;
     /// The value of 0x5F51: 0 when stopped, else the mode the program was started in.
     std::uint16_t program_control() const;
