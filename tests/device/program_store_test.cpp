@@ -396,5 +396,65 @@ TEST(VariableAccess, ReadsWritesForcesAndUnforcesByPath) {
     EXPECT_EQ(write_text(device, 2, "1"), AbortCode::TransferOrStore);
 }
 
+// The literals 0x5F60 takes, type by type: what is written, and what is read back.
+struct Literal {
+    const char* path;
+    const char* text;
+    AbortCode code;
+    const char* read_back; ///< the value after the write
+};
+
+void PrintTo(const Literal& literal, std::ostream* out) {
+    *out << literal.path << " := " << literal.text;
+}
+
+class VariableLiteral : public ::testing::TestWithParam<Literal> {};
+
+TEST_P(VariableLiteral, IsTakenOrRefusedAsItsTypeSays) {
+    EposP device;
+    ASSERT_EQ(device.objects().write(kProgramDataIndex, 1, image_of(R"(
+        TYPE Mode : (Idle, Travel, Halt); END_TYPE
+        PROGRAM Main
+        VAR b : BOOL; s : SINT; us : USINT; w : WORD; l : LINT; ul : ULINT; r : REAL;
+            lr : LREAL; m : Mode; t : TIME; END_VAR
+        VAR CONSTANT k : INT := 3; END_VAR
+        END_PROGRAM)")),
+              AbortCode::None);
+    const Literal& literal = GetParam();
+    ASSERT_EQ(write_text(device, 1, literal.path), AbortCode::None);
+    EXPECT_EQ(write_text(device, 2, literal.text), literal.code);
+    EXPECT_EQ(read_text(device, 2), literal.read_back);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    VariableAccess, VariableLiteral,
+    ::testing::Values(
+        Literal{"Main.b", "TRUE", AbortCode::None, "TRUE"},
+        Literal{"Main.b", "true", AbortCode::None, "TRUE"},
+        Literal{"Main.b", "1", AbortCode::None, "TRUE"},
+        Literal{"Main.b", "yes", AbortCode::InvalidValue, "FALSE"},
+        Literal{"Main.s", "-128", AbortCode::None, "-128"},
+        Literal{"Main.s", "128", AbortCode::InvalidValue, "0"},
+        Literal{"Main.s", "SINT#16#7F", AbortCode::None, "127"},
+        Literal{"Main.us", "2#1111_0000", AbortCode::None, "240"},
+        Literal{"Main.us", "256", AbortCode::InvalidValue, "0"},
+        Literal{"Main.us", "-1", AbortCode::InvalidValue, "0"},
+        Literal{"Main.w", "16#FFFF", AbortCode::None, "65535"},
+        Literal{"Main.l", "-9223372036854775808", AbortCode::None, "-9223372036854775808"},
+        Literal{"Main.l", "9223372036854775808", AbortCode::InvalidValue, "0"},
+        Literal{"Main.ul", "18446744073709551615", AbortCode::None, "18446744073709551615"},
+        Literal{"Main.ul", "18446744073709551616", AbortCode::InvalidValue, "0"},
+        Literal{"Main.r", "1.5", AbortCode::None, "1.5"},
+        Literal{"Main.r", "1E39", AbortCode::InvalidValue, "0"},
+        Literal{"Main.r", "1.5x", AbortCode::InvalidValue, "0"},
+        Literal{"Main.lr", "-2.5E3", AbortCode::None, "-2500"},
+        Literal{"Main.m", "Travel", AbortCode::None, "Travel"},
+        Literal{"Main.m", "Mode#Halt", AbortCode::None, "Halt"},
+        Literal{"Main.m", "0", AbortCode::None, "Idle"},
+        Literal{"Main.m", "Fly", AbortCode::InvalidValue, "Idle"},
+        Literal{"Main.t", "T#1s", AbortCode::InvalidValue, "T#0ms"},
+        Literal{"Main.k", "4", AbortCode::ReadOnly, "3"}),
+    [](const auto& param_info) { return "Case" + std::to_string(param_info.index); });
+
 } // namespace
 } // namespace eposp::device
