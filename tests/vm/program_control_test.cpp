@@ -52,6 +52,24 @@ TEST_F(ProgramControl, StartingWithoutAProgramIsRefused) {
     EXPECT_EQ(h.runtime->start(StartMode::Cold)->message, "no program is loaded");
 }
 
+// CiA 302-3 "clear program": the program stops, saves its RETAIN variables and is gone.
+TEST_F(ProgramControl, UnloadStopsAndForgetsTheProgram) {
+    RuntimeHarness h(with_retain());
+    ASSERT_EQ(h.load(kCounters), "");
+    ASSERT_FALSE(h.runtime->start(StartMode::Cold));
+    h.loop.run_for(25ms);
+    h.runtime->unload();
+    EXPECT_EQ(h.runtime->state(), ProgramState::NotLoaded);
+    EXPECT_FALSE(h.runtime->read("Main.kept"));
+    EXPECT_TRUE(std::filesystem::exists(retain_file()));
+    h.loop.run_for(25ms); // no task runs any more
+    EXPECT_EQ(h.runtime->start(StartMode::Cold)->message, "no program is loaded");
+    ASSERT_EQ(h.load(kCounters), ""); // a program loads again
+    ASSERT_FALSE(h.runtime->start(StartMode::Warm));
+    h.loop.run_for(5ms);
+    EXPECT_EQ(*h.runtime->read("Main.kept"), "104");
+}
+
 TEST_F(ProgramControl, StateAndObjectValueFollowStartAndStop) {
     RuntimeHarness h;
     ASSERT_EQ(h.load(kCounters), "");
