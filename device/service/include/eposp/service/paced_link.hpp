@@ -1,0 +1,81 @@
+#pragma once
+
+#include "eposp/core/event_loop.hpp"
+#include "eposp/core/result.hpp"
+#include "eposp/service/link.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace eposp::service {
+
+/// The line rate an emulated link sends at (docs/service-interface.md, "Pacing").
+struct LinkPacing {
+    bool enabled = true;
+    std::uint32_t bits_per_second = 115200;
+    /// Bits on the line per byte: 10 for 8N1 (start bit, 8 data bits, stop bit).
+    std::uint32_t bits_per_byte = 10;
+    /// Bytes that are due within this much of each other are handed to the line together, as
+    /// a UART driver or a USB frame (1 ms) does, so that a real-time loop wakes up at most once
+    /// a millisecond; the last byte of a burst always leaves exactly when it is due.
+    core::Duration batch = std::chrono::milliseconds(1);
+    /// Bytes waiting for the line beyond this are dropped, the newest first.
+    std::size_t max_queued_bytes = kDefaultMaxUnsentBytes;
+
+    /// RS-232, 8N1 (issue 14: 115200 baud by default).
+    static LinkPacing rs232(std::uint32_t baud = 115200) { return {.bits_per_second = baud}; }
+    /// USB: the EPOS's USB port is a USB-to-UART bridge at 1 Mbit/s, 8N1.
+    static LinkPacing usb() { return {.bits_per_second = 1'000'000}; }
+    /// Everything is handed to the line at once (`--no-pacing`).
+    static LinkPacing off() { return {.enabled = false}; }
+
+    /// How long `bytes` take on the line.
+    core::Duration time_for(std::uint64_t bytes) const;
+};
+
+/// Paces what is sent on another link at a line rate, on the loop: a byte queue drained by loop
+/// timers, never a sleep, so that a virtual run shows the timings of the real line. Each byte is
+/// handed over when its last bit would have arrived; 1152 bytes at 115200 baud take 100 ms.
+/// Bytes received are handed on as they come. A hang-up drops what still waits for the line.
+class PacedLink final : public Link {
+public:
+    /// Takes `line` over; a rate of 0 or a byte of 0 bits is refused.
+    static core::Result<std::unique_ptr<PacedLink>>
+    wrap(core::EventLoop& loop, std::unique_ptr<Link> line, LinkPacing pacing);
+    ~PacedLink() override;
+    PacedLink(const PacedLink&) = delete;
+    PacedLink& operator=(const PacedLink&) = delete;
+
+    void send(std::span<const std::uint8_t> bytes) override;
+    std::string_view name() const override { return line_->name(); }
+    /// The line's, plus what the pacing queue dropped.
+    LinkStatistics statistics() const override;
+
+    const LinkPacing& pacing() const { return pacing_; }
+    /// Bytes waiting for the line.
+    std::size_t queued_bytes() const { return queue_.size() - head_; }
+    Link& line() { return *line_; }
+
+private:
+    PacedLink(core::EventLoop& loop, std::unique_ptr<Link> line, LinkPacing pacing);
+    /// When byte `index` of the current burst has left the line.
+    core::TimePoint end_of(std::uint64_t index) const;
+    void schedule();
+    void drain();
+    void forget_queue();
+
+    core::EventLoop& loop_;
+    std::unique_ptr<Link> line_;
+    LinkPacing pacing_;
+    std::string queue_;
+    std::size_t head_ = 0; ///< bytes of queue_ already handed over
+    core::TimePoint burst_start_{};
+    std::uint64_t burst_sent_ = 0; ///< bytes of the current burst handed over
+    core::ScopedTimer timer_;
+    std::uint64_t dropped_full_ = 0;
+    std::uint64_t dropped_no_host_ = 0;
+};
+
+} // namespace eposp::service
