@@ -1,0 +1,368 @@
+#include "eposp/service/client.hpp"
+
+#include "eposp/canopen/abort_code.hpp"
+#include "eposp/service/v1_host_link.hpp"
+#include "eposp/service/v2_decoder.hpp"
+#include "eposp/service/v2_encoder.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <stdexcept>
+#include <type_traits>
+
+namespace eposp::service {
+namespace {
+
+using Bytes = std::vector<std::uint8_t>;
+using AnswerCallback = Client::Callback<Bytes>;
+
+// The longest answer a request may bring: the error code, a segment's control byte and 63
+// bytes, framed (v2 with every byte stuffed at worst).
+constexpr std::size_t kLongestAnswerBytes = 2 * (2 + 4 + 1 + SegmentControl::kMaxLength + 2);
+
+ClientError link_error(std::string message) {
+    return ClientError{ClientError::Kind::Link, 0, std::move(message)};
+}
+
+} // namespace
+
+std::string_view to_string(Protocol protocol) {
+    return protocol == Protocol::V1 ? "v1 (RS-232)" : "v2 (USB)";
+}
+
+std::string describe_error_code(std::uint32_t code) {
+    return fmt::format("0x{:08X} {}", code,
+                       canopen::describe(static_cast<canopen::AbortCode>(code)));
+}
+
+class Client::Impl {
+public:
+    Impl(core::EventLoop& loop, Link& link, ClientSettings settings)
+        : loop_(loop), link_(link), settings_(settings) {
+        link_.on_receive([this](std::span<const std::uint8_t> bytes) { receive(bytes); });
+        link_.on_event([this](const LinkEvent& event) {
+            if (pending_) {
+                finish(link_error(fmt::format("{}: {}", link_.name(), event.text)));
+            }
+        });
+        if (settings_.protocol == Protocol::V1) {
+            v1_.emplace([this](std::span<const std::uint8_t> bytes) { link_.send(bytes); },
+                        [this](const V1Completion& completion) { completed(completion); });
+        } else {
+            v2_.emplace([this](const Frame& frame) { answered(frame); });
+        }
+    }
+
+    ~Impl() {
+        link_.on_receive({});
+        link_.on_event({});
+    }
+
+    bool busy() const { return pending_.has_value() || segmented_busy_; }
+    void require_idle() const {
+        if (busy()) {
+            throw std::logic_error("service::Client: an operation is already under way");
+        }
+    }
+    const ClientSettings& settings() const { return settings_; }
+
+    // One frame and its answer: the answer's data when its error code is 0.
+    void transact(const Request& request, AnswerCallback done) {
+        if (pending_) {
+            throw std::logic_error("service::Client: a request is already outstanding");
+        }
+        Frame frame = encode_request(request);
+        const bool expect_answer =
+            settings_.protocol == Protocol::V2 || answered_on_v1(frame.opcode);
+        pending_ = Pending{std::move(frame), expect_answer, 0, std::move(done)};
+        send_pending();
+    }
+
+    void read_object(const ObjectAddress& object, Callback<std::array<std::uint8_t, 4>> done) {
+        transact(ReadObject{object}, [done = std::move(done)](const ClientResult<Bytes>& answer) {
+            if (!answer) {
+                return done(answer.error());
+            }
+            if (answer->size() < 4) {
+                return done(link_error("the ReadObject answer holds no value"));
+            }
+            std::array<std::uint8_t, 4> value{};
+            std::copy_n(answer->begin(), 4, value.begin());
+            done(value);
+        });
+    }
+
+    void write_object(const ObjectAddress& object, std::array<std::uint8_t, 4> value,
+                      Callback<Done> done) {
+        transact(WriteObject{object, value},
+                 [done = std::move(done)](const ClientResult<Bytes>& answer) {
+                     answer ? done(Done{}) : done(answer.error());
+                 });
+    }
+
+    void read_segmented(const ObjectAddress& object, Callback<Bytes> done, Progress progress) {
+        auto transfer = std::make_shared<Transfer>(object, Bytes{}, std::move(progress));
+        begin_segmented();
+        transact(InitiateSegmentedRead{object},
+                 [this, transfer, done = std::move(done)](const ClientResult<Bytes>& answer) {
+                     if (!answer) {
+                         return end_segmented(done, answer.error());
+                     }
+                     if (answer->size() >= 4) { // the object's length, as SDO announces it
+                         transfer->total = static_cast<std::size_t>(
+                             (*answer)[0] | (*answer)[1] << 8 | (*answer)[2] << 16 |
+                             static_cast<std::uint32_t>((*answer)[3]) << 24);
+                         transfer->data.reserve(std::min<std::size_t>(transfer->total, 1 << 20));
+                     }
+                     read_next_segment(transfer, done);
+                 });
+    }
+
+    void write_segmented(const ObjectAddress& object, Bytes value, Callback<Done> done,
+                         Progress progress) {
+        const auto length = static_cast<std::uint32_t>(value.size());
+        auto transfer = std::make_shared<Transfer>(object, std::move(value), std::move(progress));
+        transfer->total = transfer->data.size();
+        begin_segmented();
+        transact(InitiateSegmentedWrite{object, length},
+                 [this, transfer, done = std::move(done)](const ClientResult<Bytes>& answer) {
+                     if (!answer) {
+                         return end_segmented(done, answer.error());
+                     }
+                     write_next_segment(transfer, done);
+                 });
+    }
+
+private:
+    struct Pending {
+        Frame frame;
+        bool expect_answer = true;
+        int retries = 0;
+        AnswerCallback done;
+    };
+
+    struct Transfer {
+        Transfer(const ObjectAddress& address, Bytes bytes, Progress on_progress)
+            : object(address), data(std::move(bytes)), progress(std::move(on_progress)) {}
+        ObjectAddress object;
+        Bytes data;
+        Progress progress;
+        std::size_t total = 0;
+        std::size_t position = 0; ///< bytes written
+        bool toggle = false;      ///< the toggle of the next segment; the first carries 0
+    };
+
+    void begin_segmented() { segmented_busy_ = true; }
+
+    template <typename T>
+    void end_segmented(const Callback<T>& done, std::type_identity_t<ClientResult<T>> result) {
+        segmented_busy_ = false;
+        done(result);
+    }
+
+    void read_next_segment(const std::shared_ptr<Transfer>& transfer, const Callback<Bytes>& done) {
+        transact(
+            SegmentRead{transfer->object.network, transfer->toggle},
+            [this, transfer, done](const ClientResult<Bytes>& answer) {
+                if (!answer) {
+                    return end_segmented(done, answer.error());
+                }
+                if (answer->empty()) {
+                    return end_segmented<Bytes>(done, link_error("a SegmentRead answer is empty"));
+                }
+                const SegmentControl control = SegmentControl::decode(answer->front());
+                if (control.toggle != transfer->toggle || control.length + 1U > answer->size()) {
+                    return end_segmented<Bytes>(
+                        done, link_error("a SegmentRead answer has a wrong toggle or length"));
+                }
+                transfer->data.insert(transfer->data.end(), answer->begin() + 1,
+                                      answer->begin() + 1 + control.length);
+                transfer->toggle = !transfer->toggle;
+                if (transfer->progress) {
+                    transfer->progress(transfer->data.size(),
+                                       std::max(transfer->total, transfer->data.size()));
+                }
+                if (!control.more) {
+                    return end_segmented<Bytes>(done, std::move(transfer->data));
+                }
+                read_next_segment(transfer, done);
+            });
+    }
+
+    void write_next_segment(const std::shared_ptr<Transfer>& transfer, const Callback<Done>& done) {
+        const std::size_t length =
+            std::min(SegmentControl::kMaxLength, transfer->data.size() - transfer->position);
+        const auto first = transfer->data.begin() + static_cast<std::ptrdiff_t>(transfer->position);
+        const bool more = transfer->position + length < transfer->data.size();
+        SegmentWrite segment{
+            transfer->object.network,
+            SegmentControl{static_cast<std::uint8_t>(length), transfer->toggle, more},
+            Bytes(first, first + static_cast<std::ptrdiff_t>(length))};
+        transact(segment, [this, transfer, done, length, more](const ClientResult<Bytes>& answer) {
+            if (!answer) {
+                return end_segmented(done, answer.error());
+            }
+            transfer->position += length;
+            transfer->toggle = !transfer->toggle;
+            if (transfer->progress) {
+                transfer->progress(transfer->position, transfer->total);
+            }
+            if (!more) {
+                return end_segmented<Done>(done, Done{});
+            }
+            write_next_segment(transfer, done);
+        });
+    }
+
+    void send_pending() {
+        if (settings_.protocol == Protocol::V1) {
+            v1_->request(pending_->frame, pending_->expect_answer);
+        } else {
+            link_.send(encode_v2(pending_->frame));
+        }
+        arm_timeout();
+    }
+
+    // The device has answer_timeout to answer, plus the time the request and the longest
+    // answer take on the line; each byte that arrives restarts it (a long answer on a slow line).
+    void arm_timeout() {
+        const std::size_t bytes = 8 + 2 * pending_->frame.data.size() + kLongestAnswerBytes;
+        const auto line_time = std::chrono::microseconds(
+            bytes * 10 * 1'000'000 / std::max<std::uint32_t>(settings_.bits_per_second, 1));
+        timeout_ = core::ScopedTimer(
+            loop_, loop_.after(settings_.answer_timeout + line_time, [this] { timed_out(); }));
+    }
+
+    void receive(std::span<const std::uint8_t> bytes) {
+        if (v1_) {
+            v1_->receive(bytes);
+        } else {
+            v2_->receive(bytes);
+        }
+        if (pending_ && !retry_timer_.pending()) {
+            arm_timeout();
+        }
+    }
+
+    void timed_out() {
+        if (!pending_) {
+            return;
+        }
+        if (v1_) {
+            v1_->on_timeout(); // completes the request with V1Outcome::Timeout
+            return;
+        }
+        if (v2_->mid_frame()) {
+            v2_->on_timeout();
+        }
+        finish(no_answer());
+    }
+
+    ClientError no_answer() const {
+        return ClientError{ClientError::Kind::NoAnswer, 0,
+                           fmt::format("no answer from {} (is a device there, speaking {}?)",
+                                       link_.name(), to_string(settings_.protocol))};
+    }
+
+    void completed(const V1Completion& completion) {
+        if (!pending_) {
+            return;
+        }
+        switch (completion.outcome) {
+        case V1Outcome::Answered:
+            return answered(*completion.answer);
+        case V1Outcome::Sent:
+            return finish(Bytes{});
+        case V1Outcome::DeviceNotReady:
+        case V1Outcome::DeviceCrcError:
+            // The device did not take the request: send it again a little later.
+            if (pending_->retries < settings_.retries) {
+                ++pending_->retries;
+                timeout_.cancel();
+                retry_timer_ = core::ScopedTimer(
+                    loop_, loop_.after(settings_.retry_delay, [this] { send_pending(); }));
+                return;
+            }
+            return finish(link_error(fmt::format(
+                "the device refused the request with 'F' {} times ({})", settings_.retries + 1,
+                completion.outcome == V1Outcome::DeviceNotReady ? "not ready" : "CRC error")));
+        case V1Outcome::AnswerCrcError:
+            return finish(link_error("the answer arrived with a wrong CRC"));
+        case V1Outcome::UnexpectedByte:
+            return finish(link_error("the device sent a byte that has no place in the exchange "
+                                     "(is it speaking v1?)"));
+        case V1Outcome::Timeout:
+            return finish(no_answer());
+        }
+    }
+
+    void answered(const Frame& frame) {
+        if (!pending_ || frame.opcode != kAnswerOpCode) {
+            return; // a late answer to a request that timed out, or a stray frame
+        }
+        const auto answer = decode_answer(frame);
+        if (!answer) {
+            return finish(link_error("an answer shorter than its error code"));
+        }
+        if (answer->error != error::kNone) {
+            return finish(ClientError{ClientError::Kind::Refused, answer->error,
+                                      describe_error_code(answer->error)});
+        }
+        finish(answer->data);
+    }
+
+    // Idle before the callback, which may send the next request.
+    void finish(ClientResult<Bytes> result) {
+        timeout_.cancel();
+        retry_timer_.cancel();
+        AnswerCallback done = std::move(pending_->done);
+        pending_.reset();
+        done(result);
+    }
+
+    core::EventLoop& loop_;
+    Link& link_;
+    ClientSettings settings_;
+    std::optional<V1HostLink> v1_;
+    std::optional<V2Decoder> v2_;
+    std::optional<Pending> pending_;
+    bool segmented_busy_ = false;
+    core::ScopedTimer timeout_;
+    core::ScopedTimer retry_timer_;
+};
+
+Client::Client(core::EventLoop& loop, Link& link, ClientSettings settings)
+    : impl_(std::make_unique<Impl>(loop, link, settings)) {}
+Client::~Client() = default;
+
+bool Client::busy() const {
+    return impl_->busy();
+}
+const ClientSettings& Client::settings() const {
+    return impl_->settings();
+}
+void Client::read_object(const ObjectAddress& object, Callback<std::array<std::uint8_t, 4>> done) {
+    impl_->require_idle();
+    impl_->read_object(object, std::move(done));
+}
+void Client::write_object(const ObjectAddress& object, std::array<std::uint8_t, 4> value,
+                          Callback<Done> done) {
+    impl_->require_idle();
+    impl_->write_object(object, value, std::move(done));
+}
+void Client::read_segmented(const ObjectAddress& object, Callback<std::vector<std::uint8_t>> done,
+                            Progress progress) {
+    impl_->require_idle();
+    impl_->read_segmented(object, std::move(done), std::move(progress));
+}
+void Client::write_segmented(const ObjectAddress& object, std::vector<std::uint8_t> value,
+                             Callback<Done> done, Progress progress) {
+    impl_->require_idle();
+    impl_->write_segmented(object, std::move(value), std::move(done), std::move(progress));
+}
+void Client::request(const Request& request, Callback<std::vector<std::uint8_t>> done) {
+    impl_->require_idle();
+    impl_->transact(request, std::move(done));
+}
+
+} // namespace eposp::service
