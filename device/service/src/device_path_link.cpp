@@ -80,21 +80,19 @@ public:
 
     void send(std::span<const std::uint8_t> bytes) {
         if (link_->closed()) {
-            dropped_no_host_ += bytes.size();
+            link_->statistics_.bytes_dropped_no_host += bytes.size();
             return;
         }
-        dropped_full_ += stream_->send(bytes);
+        link_->statistics_.bytes_dropped_full += stream_->send(bytes);
     }
 
-    void add_counts(LinkStatistics& statistics) const {
+    void add_bytes_sent(LinkStatistics& statistics) const {
         statistics.bytes_sent = stream_->bytes_written();
-        statistics.bytes_dropped_full = dropped_full_;
-        statistics.bytes_dropped_no_host = dropped_no_host_;
     }
 
 private:
     void on_end(boost::system::error_code error) {
-        dropped_no_host_ += stream_->stop();
+        link_->statistics_.bytes_dropped_no_host += stream_->stop();
         const bool gone =
             error == boost::asio::error::eof || error == boost::system::errc::io_error;
         link_->report({LinkEvent::Kind::Closed,
@@ -105,8 +103,6 @@ private:
 
     std::shared_ptr<ByteStream<Descriptor>> stream_;
     DevicePathLink* link_ = nullptr;
-    std::uint64_t dropped_full_ = 0;
-    std::uint64_t dropped_no_host_ = 0;
 };
 
 core::Result<std::unique_ptr<DevicePathLink>>
@@ -155,7 +151,7 @@ void DevicePathLink::send(std::span<const std::uint8_t> bytes) {
 
 LinkStatistics DevicePathLink::statistics() const {
     LinkStatistics statistics = statistics_;
-    impl_->add_counts(statistics);
+    impl_->add_bytes_sent(statistics);
     return statistics;
 }
 

@@ -70,16 +70,14 @@ public:
 
     void send(std::span<const std::uint8_t> bytes) {
         if (!host_present_ || link_->closed()) {
-            dropped_no_host_ += bytes.size();
+            link_->statistics_.bytes_dropped_no_host += bytes.size();
             return;
         }
-        dropped_full_ += stream_->send(bytes);
+        link_->statistics_.bytes_dropped_full += stream_->send(bytes);
     }
 
-    void add_counts(LinkStatistics& statistics) const {
+    void add_bytes_sent(LinkStatistics& statistics) const {
         statistics.bytes_sent = stream_->bytes_written();
-        statistics.bytes_dropped_full = dropped_full_;
-        statistics.bytes_dropped_no_host = dropped_no_host_;
     }
 
     const std::string& slave() const { return slave_; }
@@ -95,13 +93,13 @@ private:
 
     void on_end(boost::system::error_code error) {
         if (!is_hang_up(error)) {
-            dropped_no_host_ += stream_->stop();
+            link_->statistics_.bytes_dropped_no_host += stream_->stop();
             link_->report({LinkEvent::Kind::Closed,
                            fmt::format("reading {} failed: {}", link_->name(), error.message())});
             return;
         }
         host_present_ = false;
-        dropped_no_host_ += stream_->stop();
+        link_->statistics_.bytes_dropped_no_host += stream_->stop();
         host_check_ =
             core::ScopedTimer(loop_, loop_.every(kHostCheckPeriod, [this] { check_for_host(); }));
         link_->report({LinkEvent::Kind::HungUp, fmt::format("the host closed {}", slave_)});
@@ -123,8 +121,6 @@ private:
     PtyLink* link_ = nullptr;
     core::ScopedTimer host_check_;
     bool host_present_ = true;
-    std::uint64_t dropped_full_ = 0;
-    std::uint64_t dropped_no_host_ = 0;
 };
 
 core::Result<std::unique_ptr<PtyLink>> PtyLink::open(core::EventLoop& loop,
@@ -185,7 +181,7 @@ void PtyLink::send(std::span<const std::uint8_t> bytes) {
 
 LinkStatistics PtyLink::statistics() const {
     LinkStatistics statistics = statistics_;
-    impl_->add_counts(statistics);
+    impl_->add_bytes_sent(statistics);
     return statistics;
 }
 

@@ -37,16 +37,14 @@ public:
 
     void send(std::span<const std::uint8_t> bytes) {
         if (link_->closed()) {
-            dropped_no_host_ += bytes.size();
+            link_->statistics_.bytes_dropped_no_host += bytes.size();
             return;
         }
-        dropped_full_ += stream_->send(bytes);
+        link_->statistics_.bytes_dropped_full += stream_->send(bytes);
     }
 
-    void add_counts(LinkStatistics& statistics) const {
+    void add_bytes_sent(LinkStatistics& statistics) const {
         statistics.bytes_sent = stream_->bytes_written();
-        statistics.bytes_dropped_full = dropped_full_;
-        statistics.bytes_dropped_no_host = dropped_no_host_;
     }
 
     bool connected() const { return connected_; }
@@ -74,7 +72,7 @@ private:
 
     void end(std::string reason) {
         connected_ = false;
-        dropped_no_host_ += stream_->stop();
+        link_->statistics_.bytes_dropped_no_host += stream_->stop();
         link_->report({LinkEvent::Kind::Closed, std::move(reason)});
     }
 
@@ -82,8 +80,6 @@ private:
     std::string address_;
     TcpClientLink* link_ = nullptr;
     bool connected_ = false;
-    std::uint64_t dropped_full_ = 0;
-    std::uint64_t dropped_no_host_ = 0;
 };
 
 core::Result<std::unique_ptr<TcpClientLink>> TcpClientLink::open(core::EventLoop& loop,
@@ -118,7 +114,7 @@ void TcpClientLink::send(std::span<const std::uint8_t> bytes) {
 
 LinkStatistics TcpClientLink::statistics() const {
     LinkStatistics statistics = statistics_;
-    impl_->add_counts(statistics);
+    impl_->add_bytes_sent(statistics);
     return statistics;
 }
 

@@ -38,17 +38,14 @@ public:
 
     void send(std::span<const std::uint8_t> bytes) {
         if (!host_) {
-            dropped_no_host_ += bytes.size();
+            link_->statistics_.bytes_dropped_no_host += bytes.size();
             return;
         }
-        dropped_full_ += host_->send(bytes);
+        link_->statistics_.bytes_dropped_full += host_->send(bytes);
     }
 
-    void add_counts(LinkStatistics& statistics) const {
+    void add_bytes_sent(LinkStatistics& statistics) const {
         statistics.bytes_sent = written_by_earlier_hosts_ + (host_ ? host_->bytes_written() : 0);
-        statistics.bytes_dropped_full = dropped_full_;
-        statistics.bytes_dropped_no_host = dropped_no_host_;
-        statistics.hosts_turned_away = turned_away_;
     }
 
     const tcp::endpoint& local() const { return local_; }
@@ -76,7 +73,7 @@ private:
         if (host_) {
             boost::system::error_code ignored; // it is turned away whatever it says
             socket.close(ignored);
-            ++turned_away_;
+            ++link_->statistics_.hosts_turned_away;
         } else {
             serve(std::move(socket));
         }
@@ -97,7 +94,7 @@ private:
 
     void hang_up() {
         written_by_earlier_hosts_ += host_->bytes_written();
-        dropped_no_host_ += host_->stop();
+        link_->statistics_.bytes_dropped_no_host += host_->stop();
         host_->close();
         host_.reset();
         link_->report({LinkEvent::Kind::HungUp, fmt::format("host {} disconnected", remote_)});
@@ -112,9 +109,6 @@ private:
     std::string remote_;
     core::ScopedTimer retry_timer_;
     std::uint64_t written_by_earlier_hosts_ = 0;
-    std::uint64_t dropped_full_ = 0;
-    std::uint64_t dropped_no_host_ = 0;
-    std::uint64_t turned_away_ = 0;
 };
 
 core::Result<std::unique_ptr<TcpServerLink>> TcpServerLink::open(core::EventLoop& loop,
@@ -169,7 +163,7 @@ void TcpServerLink::send(std::span<const std::uint8_t> bytes) {
 
 LinkStatistics TcpServerLink::statistics() const {
     LinkStatistics statistics = statistics_;
-    impl_->add_counts(statistics);
+    impl_->add_bytes_sent(statistics);
     return statistics;
 }
 
