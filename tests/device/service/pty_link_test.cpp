@@ -1,5 +1,6 @@
 // The pseudo-terminal link with hosts that open its slave with plain POSIX calls. The loop runs
 // in real time, waiting on the pty; every wait ends as soon as what it waits for has happened.
+#include "eposp/service/paced_link.hpp"
 #include "eposp/service/pty_link.hpp"
 #include "eposp/test/test_directory.hpp"
 #include "link_test_support.hpp"
@@ -135,6 +136,37 @@ TEST_F(PtyLinkTest, OutputForAHostThatDoesNotReadIsBoundedAndTheNewestIsDropped)
     }));
     EXPECT_EQ(host.received(), std::string(host.received().size(), 'x'));
     EXPECT_FALSE(link->closed());
+}
+
+TEST_F(PtyLinkTest, AHostLeavingDuringAPacedAnswerLosesOnlyTheRestOfIt) {
+    open_link();
+    PtyLink* pty = link.get();
+    auto paced = PacedLink::wrap(loop, std::move(link), LinkPacing::rs232()); // 100 ms
+    ASSERT_TRUE(paced) << paced.error();
+    LinkRecorder paced_recorder(**paced);
+    {
+        PosixHost first(pty->slave_path());
+        (*paced)->send(bytes_of(std::string(1152, 'a')));
+        ASSERT_TRUE(run_until(loop, [&] {
+            first.read_available();
+            return first.received().size() >= 100;
+        }));
+        EXPECT_LT(first.received().size(), 1152u) << "paced: not all at once";
+    } // leaves in the middle of the answer
+    ASSERT_TRUE(run_until(loop, [&] { return !paced_recorder.events.empty(); }));
+    EXPECT_EQ(paced_recorder.events[0].kind, LinkEvent::Kind::HungUp);
+    EXPECT_EQ((*paced)->queued_bytes(), 0u);
+    const LinkStatistics statistics = (*paced)->statistics();
+    EXPECT_EQ(statistics.bytes_sent + statistics.bytes_dropped_no_host, 1152u);
+
+    PosixHost second(pty->slave_path());
+    ASSERT_TRUE(run_until(loop, [&] { return pty->host_present(); }));
+    (*paced)->send(bytes_of("fresh"));
+    ASSERT_TRUE(run_until(loop, [&] {
+        second.read_available();
+        return second.received().size() >= 5;
+    }));
+    EXPECT_EQ(second.received(), "fresh");
 }
 
 TEST_F(PtyLinkTest, ClosingTheLinkHangsUpTheHost) {

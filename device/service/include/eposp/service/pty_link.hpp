@@ -27,6 +27,11 @@ struct PtyLinkOptions {
 /// kHostCheckPeriod; output sent meanwhile is dropped too, and what the last host left unread
 /// is flushed before the next one is served. Closing the link closes the master: a host then
 /// reads end of file or EIO, as when a serial device is unplugged.
+///
+/// Before the first host opens the slave nothing can tell that none is there: what is sent
+/// then waits in the kernel for the first host. While waiting for a host after a hang-up, the
+/// check is a periodic loop timer, so a virtual loop's run() does not return meanwhile (use
+/// run_for / run_until).
 class PtyLink final : public Link {
 public:
     static constexpr core::Duration kHostCheckPeriod = std::chrono::milliseconds(10);
