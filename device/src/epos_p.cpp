@@ -35,6 +35,18 @@ EposPDictionaryConfig dictionary_config(const EposPConfig& config, const Plc& pl
     return dictionary;
 }
 
+// An event task by name, looked up at each event: a download (0x1F50) may have replaced the
+// program the binding was made for; a program without that event task ignores the event.
+void raise_event_task(vm::PlcRuntime& runtime, const std::string& name) {
+    if (runtime.state() != vm::ProgramState::Running) {
+        return;
+    }
+    const auto task = runtime.task_index(name);
+    if (task && runtime.image().tasks[*task].kind == vm::TaskKind::Event) {
+        runtime.raise_event(*task);
+    }
+}
+
 } // namespace
 
 EposP::EposP() : EposP(EposPConfig{}) {}
@@ -102,12 +114,12 @@ std::optional<core::Error> EposP::bind_event(const EventBinding& event) {
         return core::Error{fmt::format(
             "event task {}: the program has no such task with SINGLE (an event task)", event.task)};
     }
-    const auto raise = [&runtime, task = *task] {
-        runtime.raise_event(task);
+    const auto raise = [&runtime, name = event.task] {
+        raise_event_task(runtime, name);
     };
     switch (event.source) {
     case EventBinding::Source::Sync:
-        sync_tasks_.push_back(*task);
+        sync_tasks_.push_back(event.task);
         break;
     case EventBinding::Source::Emcy:
         network_port(event.port)
@@ -150,8 +162,8 @@ void EposP::follow_sync() {
     // What the axes run goes on when no block of theirs is called: with the TPDOs in, as the
     // tasks of the cycle see them (DESIGN.md, "One communication cycle").
     loop_.after(delay, [this] { motion_->poll(); });
-    for (const std::size_t task : sync_tasks_) {
-        plc_.runtime().raise_event(task);
+    for (const std::string& task : sync_tasks_) {
+        raise_event_task(plc_.runtime(), task);
     }
 }
 

@@ -7,6 +7,7 @@
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/error_entry.hpp"
+#include "eposp/device/network_file.hpp"
 #include "eposp/test/test_directory.hpp"
 #include "eposp/vm/image_format.hpp"
 #include "eposp_command.hpp"
@@ -295,6 +296,35 @@ TEST(ProgramDownload, TheEposPProgramControlRefusesCodesBeyondTable31) {
     EXPECT_EQ(device.objects().write(kProgramControlIndex, 0, canopen::encode(std::uint16_t{4})),
               AbortCode::InvalidValue);
     EXPECT_EQ(status(device), 0u);
+}
+
+// The network file's events are bound to tasks by name: a downloaded program without the bound
+// event task is not disturbed by the event (here each SYNC), whatever its tasks' order.
+TEST(ProgramDownload, EventsOfTheNetworkFileFollowTheDownloadedProgram) {
+    auto network =
+        parse_network_file("sync_period: 1ms\nevents:\n  - {task: OnSync, on: sync}\n", "net.yaml");
+    ASSERT_TRUE(network) << network.error();
+    EposP device;
+    device.add_network(*network);
+    ASSERT_EQ(device.objects().write(kProgramDataIndex, 1, image_of(R"(
+        VAR_GLOBAL never : BOOL; END_VAR
+        PROGRAM Count VAR n : DINT; END_VAR n := n + 1; END_PROGRAM
+        CONFIGURATION C RESOURCE R ON EPOS_P
+            TASK Cyclic (INTERVAL := T#10ms, PRIORITY := 2);
+            TASK OnSync (SINGLE := never, PRIORITY := 1);
+            PROGRAM Syncs WITH OnSync : Count;
+        END_RESOURCE END_CONFIGURATION)")),
+              AbortCode::None);
+    ASSERT_FALSE(device.bind_event(network->events.front()));
+    ASSERT_EQ(control(device, ProgramControlCommand::Start), AbortCode::None);
+    device.loop().run_for(100ms);
+    EXPECT_GT(std::stol(*device.plc().value_of("Syncs.n")), 50);
+
+    ASSERT_EQ(control(device, ProgramControlCommand::Stop), AbortCode::None);
+    ASSERT_EQ(device.objects().write(kProgramDataIndex, 1, image_of(kCounter)), AbortCode::None);
+    ASSERT_EQ(control(device, ProgramControlCommand::Start), AbortCode::None);
+    device.loop().run_for(100ms);
+    EXPECT_LE(std::stol(*device.plc().value_of("Main.counter")), 11); // its 10 ms cycles only
 }
 
 TEST(ProgramDownload, AStoredProgramWithStoppedBootUpStateStaysStopped) {

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace eposp::device {
@@ -123,7 +124,7 @@ private:
     void follow_sync();
 
     core::EventLoop loop_;
-    std::vector<std::size_t> sync_tasks_; ///< event tasks released at each SYNC
+    std::vector<std::string> sync_tasks_; ///< event tasks released at each SYNC, by name
     can::VirtualBus internal_bus_;
     std::unique_ptr<can::VirtualPort> internal_port_;
     std::unique_ptr<can::VirtualPort> internal_drive_port_;
