@@ -1,4 +1,7 @@
+#include "eposp/canopen/nmt_state.hpp"
+#include "eposp/canopen/value_codec.hpp"
 #include "eposp/device/epos_p.hpp"
+#include "eposp/device/network_file.hpp"
 #include "eposp/device/service_port.hpp"
 #include "eposp/service/commands.hpp"
 #include "eposp/service/v1_frame.hpp"
@@ -203,6 +206,32 @@ TEST(ServicePortUsb, RequestsSentBackToBackAreAnsweredInOrder) {
     EXPECT_EQ(service::decode_answer(answers[2])->data,
               (std::vector<std::uint8_t>{0xF4, 0x01, 0, 0})); // 0x5005 = 500
     EXPECT_EQ(service::decode_answer(answers[3])->error, 0x06020000u);
+}
+
+TEST(ServicePortGateway, ReadsAnExternalEpos2AndSendsItNmtThroughTheLink) {
+    EposP device;
+    auto network = parse_network_file("slaves:\n  - {node: 3, kind: epos2}\n", "net.yaml");
+    ASSERT_TRUE(network) << network.error();
+    device.add_network(*network);
+    device.boot_networks();
+    device.loop().run_for(2s);
+    auto [host, device_side] = MemoryLink::pair(device.loop());
+    ServicePort port(device, std::move(device_side), ServiceProtocol::Usb);
+    std::vector<service::Frame> answers;
+    service::V2Decoder decoder([&answers](const service::Frame& f) { answers.push_back(f); });
+    host->on_receive([&decoder](std::span<const std::uint8_t> bytes) { decoder.receive(bytes); });
+
+    host->send(service::encode_v2(
+        service::encode_request(service::ReadObject{{std::nullopt, 3, 0x1018, 1}})));
+    host->send(service::encode_v2(
+        service::encode_request(service::SendNmtService{std::nullopt, 3, 0x02})));
+    device.loop().run_for(20ms);
+    ASSERT_EQ(answers.size(), 2u);
+    const auto vendor = service::decode_answer(answers[0]);
+    EXPECT_EQ(vendor->error, 0u);
+    EXPECT_EQ(canopen::decode<std::uint32_t>(vendor->data), 0xFBu); // maxon's vendor-ID
+    EXPECT_EQ(service::decode_answer(answers[1])->error, 0u);
+    EXPECT_EQ(device.simulated_slaves()[0]->node().nmt_state(), canopen::NmtState::Stopped);
 }
 
 } // namespace
