@@ -3,19 +3,40 @@
 // Internal: one Asio stream of a link (a pseudo-terminal master, a serial device, a TCP socket):
 // a read loop that hands bytes on as they come, and a bounded queue of bytes to write.
 
+#include "eposp/core/result.hpp"
+
 #include <array>
 #include <boost/asio/buffer.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/posix/stream_descriptor.hpp>
 #include <boost/asio/write.hpp>
 #include <boost/system/error_code.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <fmt/format.h>
 #include <functional>
 #include <memory>
 #include <span>
 #include <string>
+#include <unistd.h>
 #include <utility>
 
 namespace eposp::service {
+
+using Descriptor = boost::asio::posix::stream_descriptor;
+
+/// Hands an open file descriptor to the loop's reactor, or closes it and says why the reactor
+/// cannot watch it.
+inline core::Result<Descriptor> watch_descriptor(boost::asio::io_context& io, int fd,
+                                                 const std::string& name) {
+    Descriptor descriptor(io);
+    boost::system::error_code error;
+    if (descriptor.assign(fd, error)) {
+        ::close(fd);
+        return core::Error{fmt::format("cannot wait on {}: {}", name, error.message())};
+    }
+    return descriptor;
+}
 
 /// Shared with its pending read and write, so that a completion arriving after the link is gone
 /// finds a detached stream rather than a destroyed one.

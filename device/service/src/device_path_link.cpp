@@ -19,8 +19,6 @@
 namespace eposp::service {
 namespace {
 
-using Descriptor = boost::asio::posix::stream_descriptor;
-
 constexpr std::array<std::pair<std::uint32_t, speed_t>, 30> kBaudRates{{
     {50, B50},           {75, B75},           {110, B110},         {134, B134},
     {150, B150},         {200, B200},         {300, B300},         {600, B600},
@@ -134,7 +132,11 @@ DevicePathLink::open(core::EventLoop& loop, const std::filesystem::path& path,
         return core::Error{fmt::format("cannot set {} to {} baud 8N1: {}", path.string(),
                                        options.baud, errno_message(error))};
     }
-    auto impl = std::make_unique<Impl>(Descriptor(loop.io(), fd), options.max_unsent_bytes);
+    auto descriptor = watch_descriptor(loop.io(), fd, path.string());
+    if (!descriptor) {
+        return core::Error{descriptor.error()};
+    }
+    auto impl = std::make_unique<Impl>(std::move(*descriptor), options.max_unsent_bytes);
     std::unique_ptr<DevicePathLink> link(new DevicePathLink(path.string(), std::move(impl)));
     link->impl_->start(*link);
     return link;

@@ -18,8 +18,6 @@
 namespace eposp::service {
 namespace {
 
-using Descriptor = boost::asio::posix::stream_descriptor;
-
 std::string errno_message(int error) {
     return std::error_code(error, std::generic_category()).message();
 }
@@ -163,7 +161,14 @@ core::Result<std::unique_ptr<PtyLink>> PtyLink::open(core::EventLoop& loop,
             return core::Error{made.error()};
         }
     }
-    auto impl = std::make_unique<Impl>(loop, Descriptor(loop.io(), master), std::move(slave),
+    auto descriptor = watch_descriptor(loop.io(), master, "the pseudo-terminal " + slave);
+    if (!descriptor) {
+        if (!options.symlink.empty()) {
+            remove_pty_symlink(options.symlink, slave);
+        }
+        return core::Error{descriptor.error()};
+    }
+    auto impl = std::make_unique<Impl>(loop, std::move(*descriptor), std::move(slave),
                                        std::move(options.symlink), options.max_unsent_bytes);
     std::unique_ptr<PtyLink> link(new PtyLink(std::move(impl)));
     link->impl_->start(*link);

@@ -12,12 +12,23 @@ namespace eposp::service {
 using boost::asio::ip::tcp;
 using Socket = ByteStream<tcp::socket>;
 
+namespace {
+
+/// Where a bound acceptor listens; a socket that cannot tell (it can, once bound) reports none.
+tcp::endpoint local_endpoint(const tcp::acceptor& acceptor) {
+    boost::system::error_code error;
+    const tcp::endpoint endpoint = acceptor.local_endpoint(error);
+    return error ? tcp::endpoint() : endpoint;
+}
+
+} // namespace
+
 /// The listening socket and the host's connection. Shared with the pending accept, so that an
 /// accept completing after the link is gone finds it stopped rather than destroyed.
 class TcpServerLink::Impl : public std::enable_shared_from_this<Impl> {
 public:
     Impl(core::EventLoop& loop, tcp::acceptor acceptor, std::size_t max_unsent_bytes)
-        : loop_(loop), acceptor_(std::move(acceptor)), local_(acceptor_.local_endpoint()),
+        : loop_(loop), acceptor_(std::move(acceptor)), local_(local_endpoint(acceptor_)),
           max_unsent_bytes_(max_unsent_bytes) {}
 
     void start(TcpServerLink& link) {
