@@ -26,7 +26,7 @@ struct LinkPacing {
 
     /// RS-232, 8N1 (issue 14: 115200 baud by default).
     static LinkPacing rs232(std::uint32_t baud = 115200) { return {.bits_per_second = baud}; }
-    /// USB: the EPOS's USB port is a USB-to-UART bridge at 1 Mbit/s, 8N1.
+    /// USB: 1 Mbit/s (issue 14), counted with the 10 bits a byte of a UART line like RS-232.
     static LinkPacing usb() { return {.bits_per_second = 1'000'000}; }
     /// Everything is handed to the line at once (`--no-pacing`).
     static LinkPacing off() { return {.enabled = false}; }
