@@ -19,7 +19,7 @@ readonly BUILD_PACKAGES=(g++ cmake ninja-build libboost-dev libfmt-dev libcli11-
     libgtest-dev libgmock-dev libbenchmark-dev antlr4 libantlr4-runtime-dev libyaml-cpp-dev
     libxbyak-dev)
 # Independent tools that the interoperability tests and the demo talk to.
-readonly TOOL_PACKAGES=(python3-can tshark)
+readonly TOOL_PACKAGES=(python3-can python3-serial tshark)
 # Only for `fuzz`: clang and its sanitizer and libFuzzer runtimes.
 readonly FUZZ_PACKAGES=(clang libclang-rt-14-dev)
 

@@ -30,6 +30,9 @@ int run_cli(int argc, char** argv) {
     cli::add_serve_command(app, exit_code);
     cli::add_bench_command(app, exit_code);
     cli::add_plot_command(app, exit_code);
+    cli::add_download_command(app, exit_code);
+    cli::add_od_command(app, exit_code);
+    cli::add_watch_command(app, exit_code);
 
     // CLI11 would only say that a subcommand is required; the user wants to know which word
     // was not one.

@@ -1,0 +1,255 @@
+// The service client against an EPOS P in the same process, over a pair of links in memory, in
+// virtual time: every operation on both protocols, refusals with their abort code, timeouts and
+// v1's 'F' retries.
+#include "../compile_program.hpp"
+#include "eposp/canopen/value_codec.hpp"
+#include "eposp/device/epos_p.hpp"
+#include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/device/service_port.hpp"
+#include "eposp/service/client.hpp"
+#include "eposp/vm/image_format.hpp"
+#include "memory_link_pair.hpp"
+
+#include <gtest/gtest.h>
+#include <optional>
+
+namespace eposp::service {
+namespace {
+
+using namespace std::chrono_literals;
+using test::MemoryLink;
+using Bytes = std::vector<std::uint8_t>;
+
+constexpr const char* kCounter = R"(
+    PROGRAM Main
+    VAR counter : DINT; END_VAR
+    counter := counter + 1;
+    END_PROGRAM)";
+
+ObjectAddress at(std::uint16_t index, std::uint8_t sub_index) {
+    ObjectAddress address;
+    address.index = index;
+    address.sub_index = sub_index;
+    return address;
+}
+
+ClientSettings settings_for(Protocol protocol) {
+    ClientSettings settings;
+    settings.protocol = protocol;
+    return settings;
+}
+
+// An EPOS P serving one end of a memory link pair, a client on the other.
+class ClientTest : public ::testing::TestWithParam<Protocol> {
+protected:
+    ClientTest() {
+        auto [host, device] = MemoryLink::pair(device_.loop());
+        host_ = std::move(host);
+        port_.emplace(device_, std::move(device),
+                      GetParam() == Protocol::V1 ? device::ServiceProtocol::Rs232
+                                                 : device::ServiceProtocol::Usb);
+        client_.emplace(device_.loop(), *host_, settings_for(GetParam()));
+    }
+    ~ClientTest() override {
+        client_.reset();
+        port_.reset();
+    }
+
+    // Runs the loop until the operation `start` began has completed.
+    template <typename T, typename Start>
+    ClientResult<T> wait(Start start) {
+        std::optional<ClientResult<T>> result;
+        start([&](const ClientResult<T>& done) { result.emplace(done); });
+        while (!result && device_.loop().now() < deadline()) {
+            device_.loop().run_for(1ms);
+        }
+        return result ? *result
+                      : ClientResult<T>(ClientError{ClientError::Kind::NoAnswer, 0, "test"});
+    }
+    core::TimePoint deadline() const { return started_ + 60s; }
+
+    ClientResult<std::array<std::uint8_t, 4>> read(std::uint16_t index, std::uint8_t sub) {
+        return wait<std::array<std::uint8_t, 4>>(
+            [&](auto done) { client_->read_object(at(index, sub), done); });
+    }
+    ClientResult<Done> write(std::uint16_t index, std::uint8_t sub, std::uint32_t value) {
+        return wait<Done>([&](auto done) {
+            client_->write_object(at(index, sub), canopen::encode_array(value), done);
+        });
+    }
+    ClientResult<Done> write_segmented(std::uint16_t index, std::uint8_t sub, Bytes value,
+                                       Client::Progress progress = {}) {
+        return wait<Done>(
+            [&](auto done) { client_->write_segmented(at(index, sub), value, done, progress); });
+    }
+    ClientResult<Bytes> read_segmented(std::uint16_t index, std::uint8_t sub) {
+        return wait<Bytes>([&](auto done) { client_->read_segmented(at(index, sub), done); });
+    }
+    static std::uint32_t u32(const std::array<std::uint8_t, 4>& bytes) {
+        return canopen::decode<std::uint32_t>(bytes);
+    }
+    static Bytes text(std::string_view value) { return Bytes(value.begin(), value.end()); }
+
+    device::EposP device_;
+    core::TimePoint started_ = device_.loop().now();
+    std::unique_ptr<MemoryLink> host_;
+    std::optional<device::ServicePort> port_;
+    std::optional<Client> client_;
+};
+
+TEST_P(ClientTest, ReadsAnObjectOfTheDevice) {
+    const auto value = read(0x1000, 0);
+    ASSERT_TRUE(value) << value.error().message;
+    EXPECT_EQ(u32(*value), device::kDeviceType);
+}
+
+TEST_P(ClientTest, WritesAnObjectAndReadsItBack) {
+    const auto written = write(0x5005, 0, 750); // the frame timeout, UNSIGNED16
+    ASSERT_TRUE(written) << written.error().message;
+    const auto value = read(0x5005, 0);
+    ASSERT_TRUE(value) << value.error().message;
+    EXPECT_EQ(u32(*value), 750u);
+}
+
+TEST_P(ClientTest, ARefusalCarriesTheAbortCodeAndItsText) {
+    const auto value = read(0x1234, 0);
+    ASSERT_FALSE(value);
+    EXPECT_EQ(value.error().kind, ClientError::Kind::Refused);
+    EXPECT_EQ(value.error().code, 0x06020000u);
+    EXPECT_EQ(value.error().message, "0x06020000 Object does not exist Error");
+    EXPECT_FALSE(client_->busy());
+}
+
+TEST_P(ClientTest, DownloadsAProgramInSegmentsStartsItAndWatchesAVariable) {
+    const Bytes image = vm::write_image(device::compile_program(kCounter));
+    std::vector<std::size_t> progress;
+    const auto downloaded =
+        write_segmented(0x1F50, 1, image, [&](std::size_t done, std::size_t total) {
+            EXPECT_EQ(total, image.size());
+            progress.push_back(done);
+        });
+    ASSERT_TRUE(downloaded) << downloaded.error().message;
+    EXPECT_EQ(progress.size(), (image.size() + 62) / 63); // segments of 63 bytes
+    EXPECT_EQ(progress.back(), image.size());
+
+    const auto stored = read_segmented(0x1F50, 1);
+    ASSERT_TRUE(stored) << stored.error().message;
+    EXPECT_EQ(*stored, image);
+
+    ASSERT_TRUE(write(device::kProgramControlIndex, 0, 1)); // cold start
+    device_.loop().run_for(100ms);
+    ASSERT_TRUE(write_segmented(device::kVariableAccessIndex, 1, text("Main.counter")));
+    const auto counter = read_segmented(device::kVariableAccessIndex, 2);
+    ASSERT_TRUE(counter) << counter.error().message;
+    EXPECT_GE(std::stoi(std::string(counter->begin(), counter->end())), 10);
+}
+
+TEST_P(ClientTest, ARefusedDownloadSaysWhy) {
+    const auto downloaded = write_segmented(0x1F50, 1, text("not a program image"));
+    ASSERT_FALSE(downloaded);
+    EXPECT_EQ(downloaded.error().kind, ClientError::Kind::Refused);
+    EXPECT_EQ(downloaded.error().code, 0x08000020u); // TransferOrStore
+    EXPECT_FALSE(client_->busy());
+    // The client goes on serving.
+    EXPECT_TRUE(read(0x1000, 0));
+}
+
+INSTANTIATE_TEST_SUITE_P(BothProtocols, ClientTest, ::testing::Values(Protocol::V1, Protocol::V2),
+                         [](const ::testing::TestParamInfo<Protocol>& param_info) {
+                             return std::string(param_info.param == Protocol::V1 ? "V1" : "V2");
+                         });
+
+// A client whose link leads to `device`, a stand-in that answers as a test wants.
+struct ClientWithoutDevice {
+    explicit ClientWithoutDevice(Protocol protocol) {
+        auto [h, d] = MemoryLink::pair(loop);
+        host = std::move(h);
+        device = std::move(d);
+        client.emplace(loop, *host, settings_for(protocol));
+    }
+    ClientResult<std::array<std::uint8_t, 4>> read() {
+        std::optional<ClientResult<std::array<std::uint8_t, 4>>> result;
+        client->read_object(at(0x1000, 0), [&](const auto& done) { result.emplace(done); });
+        loop.run_for(10s);
+        return result.value();
+    }
+
+    core::EventLoop loop;
+    std::unique_ptr<MemoryLink> host;
+    std::unique_ptr<MemoryLink> device;
+    std::optional<Client> client;
+};
+
+TEST(Client, NoDeviceIsATimeoutAfterTheAnswerTimeAndTheLineTime) {
+    for (const Protocol protocol : {Protocol::V1, Protocol::V2}) {
+        ClientWithoutDevice setup(protocol);
+        std::optional<core::TimePoint> failed;
+        setup.client->read_object(at(0x1000, 0), [&](const auto& done) {
+            EXPECT_EQ(done.error().kind, ClientError::Kind::NoAnswer);
+            EXPECT_NE(done.error().message.find("no answer from memory host"), std::string::npos);
+            failed = setup.loop.now();
+        });
+        setup.loop.run_for(10s);
+        ASSERT_TRUE(failed);
+        EXPECT_GE(*failed - core::TimePoint{}, 1s);
+        EXPECT_LT(*failed - core::TimePoint{}, 1100ms);
+        EXPECT_FALSE(setup.client->busy());
+    }
+}
+
+TEST(Client, V1RetriesARequestTheDeviceRefusesWithF) {
+    ClientWithoutDevice setup(Protocol::V1);
+    int opcodes = 0;
+    setup.device->on_receive([&](std::span<const std::uint8_t> bytes) {
+        for (const std::uint8_t byte : bytes) {
+            EXPECT_EQ(byte, 0x10); // ReadObject, again and again
+            ++opcodes;
+            const std::uint8_t not_ready = 'F';
+            setup.device->send(std::span(&not_ready, 1));
+        }
+    });
+    const auto result = setup.read();
+    ASSERT_FALSE(result);
+    EXPECT_EQ(result.error().kind, ClientError::Kind::Link);
+    EXPECT_EQ(opcodes, 4); // the request and 3 retries
+    EXPECT_NE(result.error().message.find("'F' 4 times"), std::string::npos);
+}
+
+TEST(Client, V1AnswersAfterARetry) {
+    ClientWithoutDevice setup(Protocol::V1);
+    int opcodes = 0;
+    std::vector<std::uint8_t> received;
+    setup.device->on_receive([&](std::span<const std::uint8_t> bytes) {
+        received.insert(received.end(), bytes.begin(), bytes.end());
+        if (received.size() == 1) {
+            ++opcodes;
+            const std::uint8_t reply = opcodes == 1 ? 'F' : 'O';
+            received.clear();
+            setup.device->send(std::span(&reply, 1));
+        }
+    });
+    const auto result = setup.read();
+    // The second opcode was taken ('O'); the stand-in never answers the frame: a timeout.
+    EXPECT_EQ(opcodes, 2);
+    ASSERT_FALSE(result);
+    EXPECT_EQ(result.error().kind, ClientError::Kind::NoAnswer);
+}
+
+TEST(Client, ALinkThatClosesEndsTheRequest) {
+    ClientWithoutDevice setup(Protocol::V2);
+    std::optional<ClientResult<std::array<std::uint8_t, 4>>> result;
+    setup.client->read_object(at(0x1000, 0), [&](const auto& done) { result.emplace(done); });
+    setup.host->close_from_peer();
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->error().kind, ClientError::Kind::Link);
+    EXPECT_NE(result->error().message.find("the device went away"), std::string::npos);
+}
+
+TEST(Client, StartingASecondOperationWhileBusyIsAProgrammingError) {
+    ClientWithoutDevice setup(Protocol::V2);
+    setup.client->read_object(at(0x1000, 0), [](const auto&) {});
+    EXPECT_THROW(setup.client->read_object(at(0x1000, 0), [](const auto&) {}), std::logic_error);
+}
+
+} // namespace
+} // namespace eposp::service

@@ -1,0 +1,218 @@
+// `eposp download`, `eposp od` and `eposp watch` as a user runs them: against `eposp serve` on
+// its RS-232 pseudo-terminal (maxon serial v1) and on its USB one (v2), in another process.
+#include "eposp_command.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <regex>
+
+namespace eposp::device {
+namespace {
+
+using test::run_command;
+using ::testing::HasSubstr;
+
+constexpr const char* kCounter = R"(PROGRAM Main
+VAR counter : DINT; END_VAR
+counter := counter + 1;
+END_PROGRAM
+)";
+
+struct ServedPort {
+    const char* serve_option; ///< the link `eposp serve` opens
+    const char* printed;      ///< how it prints the port's path
+    const char* protocol;     ///< what the clients speak
+};
+void PrintTo(const ServedPort& port, std::ostream* os) {
+    *os << port.serve_option;
+}
+constexpr ServedPort kRs232{"--serial pty", "RS-232 service port", "v1"};
+constexpr ServedPort kUsb{"--usb pty", "USB service port", "v2"};
+
+// A shell-script prefix that starts `eposp serve` with the port in the background, waits until
+// it printed the path of the pseudo-terminal (up to 30 s on a loaded machine) and leaves it in
+// $port, the pid in $pid, and $eposp the client command line up to its arguments.
+std::string start_serve(const std::filesystem::path& out, const ServedPort& port) {
+    return ": > " + out.string() + "; " + kEposp + " serve " + port.serve_option + " --for 20s > " +
+           out.string() +
+           " 2>&1 & pid=$!; for i in $(seq 600); do port=$(sed "
+           "-n \"s/^" +
+           port.printed + ": //p\" " + out.string() +
+           "); [ -n \"$port\" ] && break; sleep 0.05; done; ";
+}
+
+// Runs `clients` (shell commands using $port) against a served port, then ends the server.
+test::CommandResult with_served_port(const ServedPort& port, const std::string& clients,
+                                     const std::string& name) {
+    const auto out = scratch(name + ".serve");
+    auto result = run_command("sh -c '" + start_serve(out, port) + "{ " + clients +
+                              "; } 2>&1; code=$?; kill -INT $pid; wait $pid; exit $code'");
+    result.output += "\n--- eposp serve:\n" + read_file(out);
+    return result;
+}
+
+class ServiceClients : public ::testing::TestWithParam<ServedPort> {
+protected:
+    std::string client(const std::string& command) const {
+        return kEposp + " " + command + " --port $port --protocol " + GetParam().protocol;
+    }
+};
+
+TEST_P(ServiceClients, OdReadsAndWritesObjectsAndSaysWhyAnAccessIsRefused) {
+    const auto result = with_served_port(
+        GetParam(),
+        client("od") + " read 0x1000 0 && " + client("od") + " write 0x5005 0 600 && " +
+            client("od") + " read 0x5005 0 && " + client("od") + " read 0x1008 0 && " +
+            client("od") + " read 0x1234 0; echo refused: $?",
+        "od");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("0x1000 sub 0: 405 (0x00000195)\n"));
+    EXPECT_THAT(result.output, HasSubstr("0x5005 sub 0 := 600 (0x0258)\n"));
+    EXPECT_THAT(result.output, HasSubstr("0x5005 sub 0: 600 (0x0258)\n"));
+    EXPECT_THAT(result.output, HasSubstr("0x1008 sub 0: EPOS P\n"));
+    EXPECT_THAT(result.output,
+                HasSubstr("eposp od: error: 0x06020000 Object does not exist Error\nrefused: 1"));
+}
+
+TEST_P(ServiceClients, DownloadStartsTheProgramAndWatchSeesItRun) {
+    const auto source = write_source("counter.st", kCounter);
+    const auto result = with_served_port(
+        GetParam(),
+        client("download " + source) + " --start cold && " + client("od") + " read 0x1F51 1 && " +
+            client("watch Main.counter") + " --every 50ms --for 200ms",
+        "download");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, ::testing::ContainsRegex("downloaded [0-9]+ bytes in [0-9.]+ s "
+                                                        "\\([0-9]+ bytes/s\\)\n"));
+    EXPECT_THAT(result.output, HasSubstr("started (cold start)\n"));
+    EXPECT_THAT(result.output, HasSubstr("0x1F51 sub 1: 1 (0x01)\n")); // started
+    // Five samples, the counter growing.
+    const std::regex sample(R"(\s+[0-9.]+ s  Main\.counter=([0-9]+)\n)");
+    std::vector<int> counters;
+    for (auto it = std::sregex_iterator(result.output.begin(), result.output.end(), sample);
+         it != std::sregex_iterator(); ++it) {
+        counters.push_back(std::stoi((*it)[1]));
+    }
+    ASSERT_EQ(counters.size(), 5u) << result.output;
+    EXPECT_GT(counters.front(), 0);
+    EXPECT_GT(counters.back(), counters.front());
+}
+
+// 804 bytes of RETAIN data: a sound image, but more than the EPOS P's 512 bytes.
+TEST_P(ServiceClients, ARefusedDownloadSaysWhyByTheFlashStatus) {
+    const auto source = write_source("big.st", R"(PROGRAM Main
+VAR RETAIN big : ARRAY[0..200] OF DINT; END_VAR
+big[0] := big[0] + 1;
+END_PROGRAM
+)");
+    const auto result =
+        with_served_port(GetParam(), client("download " + source) + "; echo exit: $?", "refused");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output,
+                HasSubstr("eposp download: error: the device refused the program: 0x08000020 "
+                          "Transfer or store Error (flash status 0x1F57 = 0x80: incompatible: a "
+                          "sound image this controller cannot run)\nexit: 1"));
+}
+
+TEST_P(ServiceClients, WatchWritesAndForcesAVariable) {
+    const auto source = write_source("counter.st", kCounter);
+    const auto result =
+        with_served_port(GetParam(),
+                         client("download " + source) + " --start none && " +
+                             client("watch --write Main.counter=41 Main.counter") + " && " +
+                             client("watch --force Main.counter=7") + " && " + client("od") +
+                             " write 0x5F51 0 1 && " + client("watch Main.counter") + " && " +
+                             client("watch --unforce Main.counter") + " && " +
+                             client("watch Main.nothing") + "; echo unknown: $?",
+                         "watch");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("Main.counter := 41\n"));
+    EXPECT_THAT(result.output, ::testing::ContainsRegex("s  Main\\.counter=41\n"));
+    EXPECT_THAT(result.output, HasSubstr("Main.counter forced to 7\n"));
+    EXPECT_THAT(result.output, ::testing::ContainsRegex("s  Main\\.counter=7\n")); // running
+    EXPECT_THAT(result.output, HasSubstr("Main.counter released\n"));
+    EXPECT_THAT(result.output, HasSubstr("eposp watch: error: Main.nothing: 0x06090030"));
+    EXPECT_THAT(result.output, HasSubstr("unknown: 1"));
+}
+
+// An independent check: a client written in Python from the issue's protocol description alone
+// (pyserial on the pseudo-terminal) reads, writes and downloads by segmented transfer.
+TEST_P(ServiceClients, AnIndependentPythonClientAgrees) {
+    const std::string script =
+        std::string(EPOSP_SOURCE_DIR) + "/tests/device/service/maxon_serial_client.py";
+    const auto source = write_source("counter.st", kCounter);
+    const auto image = scratch("counter.epx");
+    const auto built = eposp("build " + source + " -o " + image.string());
+    ASSERT_EQ(built.exit_code, 0) << built.output;
+    const auto result = with_served_port(GetParam(),
+                                         "/usr/bin/python3 " + script + " $port " +
+                                             GetParam().protocol + " " + image.string(),
+                                         "python");
+    if (result.exit_code == 77) {
+        GTEST_SKIP() << "pyserial is not installed (Debian: python3-serial)";
+    }
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr(std::string(GetParam().protocol) + ": ok\n"));
+}
+
+INSTANTIATE_TEST_SUITE_P(BothLinks, ServiceClients, ::testing::Values(kRs232, kUsb),
+                         [](const ::testing::TestParamInfo<ServedPort>& param_info) {
+                             return std::string(param_info.param.protocol);
+                         });
+
+TEST(ServiceClients, ADeviceThatDoesNotAnswerIsATimeout) {
+    // The USB port does not understand v1: it never answers.
+    const auto result = with_served_port(
+        kUsb, kEposp + " od --port $port --protocol v1 read 0x1000 0; echo exit: $?", "timeout");
+    EXPECT_THAT(result.output, HasSubstr("eposp od: error: no answer from "));
+    EXPECT_THAT(result.output, HasSubstr("(is a device there, speaking v1 (RS-232)?)\nexit: 1"));
+}
+
+// Through the gateway: the internal EPOS2 (node 1 on the internal port, network 1) by the
+// network-addressed commands of v2; its device name is longer than ReadObject's 4 bytes.
+TEST(ServiceClients, OdReachesTheInternalEpos2ThroughTheGateway) {
+    const auto result = with_served_port(
+        kUsb,
+        kEposp + " od --port $port --protocol v2 read 0x1000 0 --network 1 --node 1 && " + kEposp +
+            " od --port $port --protocol v2 read 0x1008 0 --network 1 --node 1",
+        "gateway");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("0x1000 sub 0: 131474 (0x00020192)\n"));
+    EXPECT_THAT(result.output, HasSubstr("0x1008 sub 0: EPOS2\n"));
+}
+
+TEST(ServiceClients, ThePythonClientEncodesTheIssuesByteVectors) {
+    const auto result = run_command("/usr/bin/python3 " + std::string(EPOSP_SOURCE_DIR) +
+                                    "/tests/device/service/maxon_serial_client.py selftest 2>&1");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("selftest: ok"));
+}
+
+TEST(ServiceClients, BadArgumentsAreUserErrors) {
+    for (const auto& [arguments, message] : {
+             std::pair{"od --port /nonexistent/tty read 0x1000 0", "--port: "},
+             std::pair{"od --port /dev/null read 0x10000 0",
+                       "INDEX '0x10000' is not an object index"},
+             std::pair{"od --port /dev/null write 0x1000 0 70000 --type u16",
+                       "VALUE: '70000' is not a u16 value (0 to 65535)"},
+             std::pair{"od --port /dev/null read 0x1000 0 --type f32", "--type"},
+             std::pair{"watch --port /dev/null --write Main.x", "'Main.x' is not PATH=VALUE"},
+             std::pair{"download --port /dev/null missing.st", "missing.st"},
+         }) {
+        const auto result = eposp(arguments);
+        EXPECT_EQ(result.exit_code, 1) << arguments << "\n" << result.output;
+        EXPECT_THAT(result.output, HasSubstr(message)) << arguments;
+    }
+}
+
+TEST(ServiceClients, EachCommandExplainsItselfWithHelp) {
+    for (const char* command : {"download", "od", "watch"}) {
+        const auto result = eposp(std::string(command) + " --help");
+        EXPECT_EQ(result.exit_code, 0) << command;
+        EXPECT_THAT(result.output, HasSubstr("--port")) << command;
+        EXPECT_THAT(result.output, HasSubstr("--protocol")) << command;
+    }
+}
+
+} // namespace
+} // namespace eposp::device
