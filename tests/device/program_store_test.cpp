@@ -385,6 +385,12 @@ TEST(ProgramDownload, ServeStartsTheProgramStoredInItsStateDirectory) {
         eposp("serve --state-dir " + directory.string() + " --for 300ms --watch Main.counter");
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_THAT(result.output, ::testing::ContainsRegex("Main.counter = [1-9][0-9]*\n"));
+    // The network file's events are checked against the stored program.
+    const auto network = write_source("events.yaml", "events:\n  - {task: OnSync, on: sync}\n");
+    const auto refused =
+        eposp("serve --state-dir " + directory.string() + " --network " + network + " --for 1ms");
+    EXPECT_EQ(refused.exit_code, 1) << refused.output;
+    EXPECT_THAT(refused.output, ::testing::HasSubstr("event task OnSync: the program has no such"));
 }
 
 TEST(VariableAccess, ReadsWritesForcesAndUnforcesByPath) {

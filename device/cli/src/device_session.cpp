@@ -319,7 +319,8 @@ core::Result<std::unique_ptr<DeviceSession>> DeviceSession::open(const SessionOp
         }
         session->has_program_ = true;
     }
-    if (network_has_events(session->network_) && !session->has_program_) {
+    // The program of the command line or the one stored in --state-dir.
+    if (network_has_events(session->network_) && !program_loaded(plc)) {
         return core::Error{"the network file's events release tasks of a program: give one"};
     }
     if (session->network_) {
