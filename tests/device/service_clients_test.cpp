@@ -11,6 +11,7 @@ namespace {
 
 using test::run_command;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 constexpr const char* kCounter = R"(PROGRAM Main
 VAR counter : DINT; END_VAR
@@ -85,6 +86,7 @@ TEST_P(ServiceClients, DownloadStartsTheProgramAndWatchSeesItRun) {
     EXPECT_THAT(result.output, ::testing::ContainsRegex("downloaded [0-9]+ bytes in [0-9.]+ s "
                                                         "\\([0-9]+ bytes/s\\)\n"));
     EXPECT_THAT(result.output, HasSubstr("started (cold start)\n"));
+    EXPECT_THAT(result.output, Not(HasSubstr("\r"))); // no progress bar but on a terminal
     EXPECT_THAT(result.output, HasSubstr("0x1F51 sub 1: 1 (0x01)\n")); // started
     // Five samples, the counter growing.
     const std::regex sample(R"(\s+[0-9.]+ s  Main\.counter=([0-9]+)\n)");
@@ -179,6 +181,14 @@ TEST(ServiceClients, OdReachesTheInternalEpos2ThroughTheGateway) {
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_THAT(result.output, HasSubstr("0x1000 sub 0: 131474 (0x00020192)\n"));
     EXPECT_THAT(result.output, HasSubstr("0x1008 sub 0: EPOS2\n"));
+}
+
+TEST(ServiceClients, OdReachesAPortServedOverTcp) {
+    constexpr ServedPort kRs232OverTcp{"--serial tcp:127.0.0.1:0", "RS-232 service port", "v1"};
+    const auto result =
+        with_served_port(kRs232OverTcp, kEposp + " od --port tcp:$port read 0x1000 0", "tcp");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("0x1000 sub 0: 405 (0x00000195)\n"));
 }
 
 TEST(ServiceClients, ThePythonClientEncodesTheIssuesByteVectors) {
