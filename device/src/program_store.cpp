@@ -42,12 +42,10 @@ std::uint32_t ProgramStore::software_identification() const {
     return image_.empty() ? 0 : little_endian_u32(std::span(image_).subspan(kChecksumAt, 4));
 }
 
-canopen::AbortCode ProgramStore::refuse(FlashStatus status, std::string why,
-                                        canopen::AbortCode code, std::uint16_t error_code) {
+void ProgramStore::refuse(FlashStatus status, std::string why, std::uint16_t error_code) {
     status_ = status;
     refusal_ = std::move(why);
     record_error(od_, {.code = error_code, .port = 0, .node = 0, .warning = false});
-    return code;
 }
 
 void ProgramStore::power_up() {
@@ -57,8 +55,7 @@ void ProgramStore::power_up() {
     auto stored = core::read_whole_file(file_);
     if (!stored) {
         refuse(FlashStatus::Unspecified,
-               fmt::format("stored program {}: {}", file_.string(), stored.error()),
-               canopen::AbortCode::None, kEepromError);
+               fmt::format("stored program {}: {}", file_.string(), stored.error()), kEepromError);
         return;
     }
     if (!*stored) {
@@ -68,13 +65,13 @@ void ProgramStore::power_up() {
     if (!image) {
         refuse(refused_image_status(**stored),
                fmt::format("stored program {}: {}", file_.string(), image.error()),
-               canopen::AbortCode::None, kProgramDownloadError);
+               kProgramDownloadError);
         return;
     }
     if (auto error = plc_.load(std::move(*image))) {
         refuse(FlashStatus::Incompatible,
                fmt::format("stored program {}: {}", file_.string(), error->message),
-               canopen::AbortCode::None, kProgramDownloadError);
+               kProgramDownloadError);
         return;
     }
     image_ = std::move(**stored);
@@ -91,23 +88,24 @@ canopen::AbortCode ProgramStore::download(std::span<const std::uint8_t> bytes) {
     }
     auto image = vm::read_image(bytes);
     if (!image) {
-        return refuse(refused_image_status(bytes), image.error(),
-                      canopen::AbortCode::TransferOrStore, kProgramDownloadError);
+        refuse(refused_image_status(bytes), image.error(), kProgramDownloadError);
+        return canopen::AbortCode::TransferOrStore;
     }
     if (auto error = plc_.verify(*image)) {
-        return refuse(FlashStatus::Incompatible, error->message,
-                      canopen::AbortCode::TransferOrStore, kProgramDownloadError);
+        refuse(FlashStatus::Incompatible, error->message, kProgramDownloadError);
+        return canopen::AbortCode::TransferOrStore;
     }
     if (!file_.empty()) {
         if (auto error = core::write_file_durably(file_, bytes)) {
-            return refuse(FlashStatus::FlashWriteError,
-                          fmt::format("program file {}: {}", file_.string(), error->message),
-                          canopen::AbortCode::HardwareError, kEepromError);
+            refuse(FlashStatus::FlashWriteError,
+                   fmt::format("program file {}: {}", file_.string(), error->message),
+                   kEepromError);
+            return canopen::AbortCode::HardwareError;
         }
     }
     if (auto error = plc_.load(std::move(*image))) { // verified: only a bug gets here
-        return refuse(FlashStatus::Incompatible, error->message,
-                      canopen::AbortCode::TransferOrStore, kProgramDownloadError);
+        refuse(FlashStatus::Incompatible, error->message, kProgramDownloadError);
+        return canopen::AbortCode::TransferOrStore;
     }
     image_.assign(bytes.begin(), bytes.end());
     status_ = FlashStatus::Ok;
@@ -122,9 +120,10 @@ canopen::AbortCode ProgramStore::clear() {
     }
     if (!file_.empty()) {
         if (auto error = core::remove_file_durably(file_)) {
-            return refuse(FlashStatus::FlashWriteError,
-                          fmt::format("program file {}: {}", file_.string(), error->message),
-                          canopen::AbortCode::HardwareError, kEepromError);
+            refuse(FlashStatus::FlashWriteError,
+                   fmt::format("program file {}: {}", file_.string(), error->message),
+                   kEepromError);
+            return canopen::AbortCode::HardwareError;
         }
     }
     plc_.runtime().unload();

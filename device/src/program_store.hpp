@@ -75,8 +75,8 @@ public:
     void started() { cold_next_ = false; }
 
 private:
-    canopen::AbortCode refuse(FlashStatus status, std::string why, canopen::AbortCode code,
-                              std::uint16_t error_code);
+    /// Says why in 0x1F57, refusal() and the error history (`error_code`).
+    void refuse(FlashStatus status, std::string why, std::uint16_t error_code);
 
     canopen::ObjectDictionary& od_;
     Plc& plc_;

@@ -206,6 +206,19 @@ INSTANTIATE_TEST_SUITE_P(
                           64}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
+// The program memory fails (here: its directory is gone): the program in memory stays too.
+TEST(ProgramDownload, AProgramFileThatCannotBeWrittenKeepsTheOldProgram) {
+    EposPConfig config;
+    config.program_file = test::test_file("gone") / "program.epx";
+    EposP device(config);
+    EXPECT_EQ(device.objects().write(kProgramDataIndex, 1, image_of(kCounter)),
+              AbortCode::HardwareError);
+    EXPECT_EQ(flash_status(device), 5u << 1); // flash write error
+    EXPECT_EQ(newest_error(device), 0x5530u); // EEPROM error
+    EXPECT_EQ(status(device), 3u);
+    EXPECT_EQ(identification(device), 0u);
+}
+
 TEST(ProgramDownload, ARunningProgramIsNotReplaced) {
     EposP device;
     ASSERT_EQ(device.objects().write(kProgramDataIndex, 1, image_of(kCounter)), AbortCode::None);
