@@ -118,13 +118,34 @@ TEST_F(PacedLinkTest, WithoutPacingEverythingGoesAtOnce) {
     EXPECT_EQ(line->sent.back().at, core::TimePoint{});
 }
 
-TEST_F(PacedLinkTest, ReceivedBytesAreHandedOnAsTheyCome) {
+TEST_F(PacedLinkTest, ReceivedBytesAreHandedOnAtTheLineRateToo) {
     pace(LinkPacing::rs232());
     LinkRecorder recorder(*link);
     link->send(counting(100)); // a long answer on its way does not hold up what comes in
-    line->receive("request");
+    line->receive("request");  // the pseudo-terminal carried it at once
+    EXPECT_EQ(recorder.received, "");
+    loop.run_for(LinkPacing::rs232().time_for(7) - 1ns);
+    EXPECT_EQ(recorder.received, "") << "the last byte is still on the line (bytes due within "
+                                        "1 ms are handed on together)";
+    loop.run_for(1ns);
     EXPECT_EQ(recorder.received, "request");
     EXPECT_EQ(link->statistics().bytes_received, 7u);
+}
+
+TEST_F(PacedLinkTest, WithoutPacingReceivedBytesAreHandedOnAtOnce) {
+    pace(LinkPacing::off());
+    LinkRecorder recorder(*link);
+    line->receive("request");
+    EXPECT_EQ(recorder.received, "request");
+}
+
+TEST_F(PacedLinkTest, AHangUpDropsWhatTheHostSentAndTheLineHasNotCarriedYet) {
+    pace(LinkPacing::rs232());
+    LinkRecorder recorder(*link);
+    line->receive("request");
+    line->hang_up();
+    loop.run_for(1s);
+    EXPECT_EQ(recorder.received, "");
 }
 
 TEST_F(PacedLinkTest, AFullQueueDropsTheNewestBytesAndCountsThem) {

@@ -35,10 +35,14 @@ struct LinkPacing {
     core::Duration time_for(std::uint64_t bytes) const;
 };
 
-/// Paces what is sent on another link at a line rate, on the loop: a byte queue drained by loop
-/// timers, never a sleep, so that a virtual run shows the timings of the real line. Each byte is
-/// handed over when its last bit would have arrived; 1152 bytes at 115200 baud take 100 ms.
-/// Bytes received are handed on as they come. A hang-up drops what still waits for the line.
+class LineQueue;
+
+/// Paces another link at a line rate in both directions, on the loop: byte queues drained by
+/// loop timers, never a sleep, so that a virtual run shows the timings of the real line. Each
+/// byte is handed over when its last bit would have crossed the line: what is sent reaches the
+/// host so, and what the host sends reaches the device so, however fast the pseudo-terminal or
+/// socket carried it (1152 bytes at 115200 baud take 100 ms either way). A hang-up drops what
+/// still waits, both ways.
 class PacedLink final : public Link {
 public:
     /// Takes `line` over; a rate of 0 or a byte of 0 bits is refused.
@@ -50,30 +54,21 @@ public:
 
     void send(std::span<const std::uint8_t> bytes) override;
     std::string_view name() const override { return line_->name(); }
-    /// The line's, plus what the pacing queue dropped.
+    /// The line's, plus what the pacing queues dropped.
     LinkStatistics statistics() const override;
 
     const LinkPacing& pacing() const { return pacing_; }
-    /// Bytes waiting for the line.
-    std::size_t queued_bytes() const { return queue_.size() - head_; }
+    /// Bytes waiting for the line, to the host.
+    std::size_t queued_bytes() const;
     Link& line() { return *line_; }
 
 private:
     PacedLink(core::EventLoop& loop, std::unique_ptr<Link> line, LinkPacing pacing);
-    /// When byte `index` of the current burst has left the line.
-    core::TimePoint end_of(std::uint64_t index) const;
-    void schedule();
-    void drain();
-    void forget_queue();
 
-    core::EventLoop& loop_;
     std::unique_ptr<Link> line_;
     LinkPacing pacing_;
-    std::string queue_;
-    std::size_t head_ = 0; ///< bytes of queue_ already handed over
-    core::TimePoint burst_start_{};
-    std::uint64_t burst_sent_ = 0; ///< bytes of the current burst handed over
-    core::ScopedTimer timer_;
+    std::unique_ptr<LineQueue> outgoing_; ///< to the host
+    std::unique_ptr<LineQueue> incoming_; ///< from the host
     std::uint64_t dropped_full_ = 0;
     std::uint64_t dropped_no_host_ = 0;
 };
