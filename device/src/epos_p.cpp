@@ -235,6 +235,10 @@ std::optional<core::Error> EposP::start_stored_program() {
     return start_program(static_cast<vm::StartMode>(stored_program_control_));
 }
 
+const std::string& EposP::program_refusal() const {
+    return program_store_->refusal();
+}
+
 void EposP::boot_networks() {
     internal_network_->boot();
     external_network_->boot();

@@ -376,6 +376,12 @@ TEST(ProgramDownload, ADamagedProgramFileLeavesNoProgramAndIsKept) {
     EXPECT_EQ(flash_status(*device), 3u << 1);
     EXPECT_EQ(newest_error(*device), kProgramDownloadError);
     EXPECT_EQ(std::filesystem::file_size(stored.config.program_file), image.size());
+    EXPECT_THAT(device->program_refusal(), ::testing::HasSubstr("checksum"));
+    // `eposp serve` says so.
+    const auto result = eposp("serve --state-dir " +
+                              stored.config.program_file.parent_path().string() + " --for 1ms");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, ::testing::HasSubstr("no program: stored program "));
 }
 
 // `eposp serve --state-dir DIR` powers up with the program and parameters stored there.

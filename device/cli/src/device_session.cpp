@@ -354,6 +354,9 @@ std::optional<core::Error> DeviceSession::start() {
     if (has_program_) {
         return device_->start_program(*start_mode(options_.start));
     }
+    if (const std::string& refused = device_->program_refusal(); !refused.empty()) {
+        fmt::print("no program: {}\n", terminal_text(refused));
+    }
     if (auto error = device_->start_stored_program()) {
         return error;
     }

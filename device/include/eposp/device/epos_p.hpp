@@ -95,6 +95,9 @@ public:
     /// 2 warm, 3 hot), once the device is set up (its network added). The error says why it
     /// cannot start; without a stored program nothing happens.
     std::optional<core::Error> start_stored_program();
+    /// Why the last download (0x1F50) or the power-up's load of the stored program was refused
+    /// (0x1F57 says which way); empty after a success.
+    const std::string& program_refusal() const;
     /// Boots the networks of both ports as the dictionary's network lists say (8.1): the
     /// internal EPOS2 (sub-index 128 of 0x1F81 ...) on port 1, the slaves of sub-indices 1..127
     /// on port 2. Failures go to the error history with their port and node-ID.
