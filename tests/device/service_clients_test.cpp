@@ -191,6 +191,24 @@ TEST(ServiceClients, OdReachesAPortServedOverTcp) {
     EXPECT_THAT(result.output, HasSubstr("0x1000 sub 0: 405 (0x00000195)\n"));
 }
 
+// `watch --every` without --for runs until Ctrl-C, which ends it as a success.
+TEST(ServiceClients, CtrlCEndsAnEndlessWatch) {
+    const auto source = write_source("counter.st", kCounter);
+    const auto watched = scratch("watch.out");
+    const auto result = with_served_port(
+        kRs232,
+        kEposp + " download --port $port " + source + " && { " + kEposp +
+            " watch --port $port Main.counter --every 50ms > " + watched.string() +
+            " 2>&1 & watcher=$!; for i in $(seq 600); do mask=$(sed -n \"s/^SigCgt:\t*//p\" "
+            "/proc/$watcher/status); [ -n \"$mask\" ] && [ $(( 0x$mask & 2 )) -ne 0 ] && "
+            "grep -q counter " +
+            watched.string() + " && break; sleep 0.05; done; kill -INT $watcher; wait $watcher; }",
+        "interrupt");
+    const std::string output = read_file(watched);
+    EXPECT_EQ(result.exit_code, 0) << result.output << output;
+    EXPECT_THAT(output, ::testing::ContainsRegex("s  Main\\.counter=[0-9]+\n"));
+}
+
 TEST(ServiceClients, ThePythonClientEncodesTheIssuesByteVectors) {
     const auto result = run_command("/usr/bin/python3 " + std::string(EPOSP_SOURCE_DIR) +
                                     "/tests/device/service/maxon_serial_client.py selftest 2>&1");

@@ -1,11 +1,12 @@
 #include "service_connection.hpp"
 
-#include "eposp/device/run_control.hpp"
 #include "eposp/service/link_option.hpp"
 #include "eposp/service/open_link.hpp"
 #include "eposp/service/paced_link.hpp"
 #include "options.hpp"
 
+#include <boost/asio/signal_set.hpp>
+#include <csignal>
 #include <fmt/format.h>
 
 namespace eposp::device::cli {
@@ -54,6 +55,19 @@ service::ObjectAddress object_address(const ObjectTargetOptions& target, std::ui
     return address;
 }
 
+struct ServiceConnection::SignalWatch {
+    explicit SignalWatch(ServiceConnection& connection)
+        : signals(connection.loop_.io(), SIGINT, SIGTERM) {
+        signals.async_wait([&connection](const boost::system::error_code& error, int) {
+            if (!error) {
+                connection.interrupted_ = true;
+                connection.loop_.stop();
+            }
+        });
+    }
+    boost::asio::signal_set signals;
+};
+
 core::Result<std::unique_ptr<ServiceConnection>>
 ServiceConnection::open(const ServiceClientOptions& options) {
     auto option = service::parse_link_option(options.port);
@@ -80,30 +94,34 @@ ServiceConnection::open(const ServiceClientOptions& options) {
     settings.protocol = options.protocol;
     settings.bits_per_second = pacing.bits_per_second;
     connection->client_.emplace(connection->loop_, *connection->link_, settings);
+    connection->signals_ = std::make_unique<SignalWatch>(*connection);
     return connection;
 }
 
 ServiceConnection::~ServiceConnection() {
     client_.reset(); // before the link it listens to
+    if (signals_) {
+        signals_->signals.cancel();
+        loop_.io().poll(); // completes the cancelled wait while the signal set still exists
+    }
 }
 
 template <typename T>
 service::ClientResult<T>
 ServiceConnection::wait(const std::function<void(service::Client::Callback<T>)>& start) {
     std::optional<service::ClientResult<T>> result;
-    if (interrupted_) {
-        return service::ClientError{service::ClientError::Kind::Link, 0, "interrupted"};
+    if (!interrupted_) {
+        start([this, &result](const service::ClientResult<T>& done) {
+            result.emplace(done);
+            loop_.stop();
+        });
     }
-    start([this, &result](const service::ClientResult<T>& done) {
-        result.emplace(done);
-        loop_.stop();
-    });
-    while (!result) {
-        if (run_until_done(loop_, std::nullopt) == RunEnd::Interrupted && !result) {
-            interrupted_ = true;
-            // The client stays busy with the request; nothing else is sent on this connection.
-            return service::ClientError{service::ClientError::Kind::Link, 0, "interrupted"};
-        }
+    while (!result && !interrupted_) {
+        loop_.run();
+    }
+    if (!result) {
+        // The client stays busy with the request; nothing more is sent on this connection.
+        return service::ClientError{service::ClientError::Kind::Link, 0, "interrupted"};
     }
     return *result;
 }
@@ -135,8 +153,8 @@ ServiceConnection::write_segmented(const service::ObjectAddress& object, Bytes v
 }
 
 bool ServiceConnection::pause(core::Duration delay) {
-    if (!interrupted_ && run_until_done(loop_, delay) == RunEnd::Interrupted) {
-        interrupted_ = true;
+    if (!interrupted_) {
+        loop_.run_for(delay);
     }
     return !interrupted_;
 }

@@ -35,7 +35,8 @@ service::ObjectAddress object_address(const ObjectTargetOptions& target, std::ui
 
 /// A service client on its link, run in real time, one operation after the other: each call
 /// runs the loop until the operation completed (the client's own timeouts bound it) or SIGINT /
-/// SIGTERM arrived (interrupted() then, and the result is an error saying so).
+/// SIGTERM arrived (interrupted() then, and the result is an error saying so; every later call
+/// fails at once).
 class ServiceConnection {
 public:
     using Bytes = std::vector<std::uint8_t>;
@@ -65,7 +66,12 @@ private:
     template <typename T>
     service::ClientResult<T> wait(const std::function<void(service::Client::Callback<T>)>& start);
 
+    struct SignalWatch;
+
     core::EventLoop loop_{core::Pace::RealTime};
+    /// SIGINT / SIGTERM caught for the connection's whole life, so that none ends the process
+    /// between two requests.
+    std::unique_ptr<SignalWatch> signals_;
     std::unique_ptr<service::Link> link_;
     std::optional<service::Client> client_;
     bool interrupted_ = false;

@@ -174,6 +174,8 @@ int watch(const WatchOptions& options) {
     const bool repeat = options.every || options.duration;
     const core::Duration period = options.every.value_or(100ms);
     const core::TimePoint begin = (*connection)->loop().now();
+    // Ctrl-C is how an endless watch ends: a success; it cuts a watch --for short: 130.
+    const int interrupted = options.duration ? kExitInterrupted : kExitSuccess;
     for (core::TimePoint due = begin;; due += period) {
         std::string line =
             fmt::format("{:8.3f} s",
@@ -181,8 +183,11 @@ int watch(const WatchOptions& options) {
         for (const std::string& path : options.paths) {
             const auto value = watch.read_value(path);
             if (!value) {
-                return failed(
-                    fmt::format("{}: {}", terminal_text(path), Watch::explain(value.error())));
+                return (*connection)->interrupted()
+                           ? interrupted
+                           : report_user_error(kCommand,
+                                               fmt::format("{}: {}", terminal_text(path),
+                                                           Watch::explain(value.error())));
             }
             line += fmt::format("  {}={}", terminal_text(path), terminal_text(text_of(*value)));
         }
@@ -192,9 +197,8 @@ int watch(const WatchOptions& options) {
         if (!repeat || (options.duration && next - begin > *options.duration)) {
             return kExitSuccess;
         }
-        // Ctrl-C is how an endless watch ends: a success.
         if (!(*connection)->pause(std::max(next - (*connection)->loop().now(), core::Duration{}))) {
-            return options.duration ? kExitInterrupted : kExitSuccess;
+            return interrupted;
         }
     }
 }
