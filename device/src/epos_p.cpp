@@ -75,9 +75,10 @@ EposP::EposP(EposPConfig config)
         std::make_unique<NetworkPort>(loop_, *external_port_, dictionary_.objects(), kExternalPort);
     for (auto [port, network] : {std::pair{internal_port_.get(), internal_network_.get()},
                                  std::pair{external_port_.get(), external_network_.get()}}) {
-        port->on_overflow([network](can::Overflow overflow, const can::Frame&) {
+        // An init-capture: clang 14 cannot capture a structured binding.
+        port->on_overflow([lossy = network](can::Overflow overflow, const can::Frame&) {
             if (overflow == can::Overflow::Receive) {
-                network->report_lost_frame();
+                lossy->report_lost_frame();
             }
         });
     }
