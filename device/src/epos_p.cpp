@@ -233,7 +233,15 @@ std::optional<core::Error> EposP::start_stored_program() {
         stored_program_control_ == static_cast<std::uint16_t>(ProgramControl::Stopped)) {
         return std::nullopt;
     }
-    return start_program(static_cast<vm::StartMode>(stored_program_control_));
+    const auto mode = static_cast<vm::StartMode>(stored_program_control_);
+    if (auto error = start_program(mode)) {
+        return error;
+    }
+    // Firmware 0102h: the networks boot at power-up; a hot start alone would leave them (8.1).
+    if (mode == vm::StartMode::Hot) {
+        boot_networks();
+    }
+    return std::nullopt;
 }
 
 const std::string& EposP::program_refusal() const {

@@ -340,6 +340,22 @@ TEST(ProgramDownload, EventsOfTheNetworkFileFollowTheDownloadedProgram) {
     EXPECT_LE(std::stol(*device.plc().value_of("Main.counter")), 11); // its 10 ms cycles only
 }
 
+// Firmware 0102h: the CAN networks boot at power-up, also when the program starts hot (a hot
+// start through 0x5F51 later leaves them alone, 8.1).
+TEST(ProgramDownload, AHotStartAtPowerUpBootsTheNetworks) {
+    const StoredDevice stored;
+    auto device = stored.power_up();
+    ASSERT_EQ(device->objects().write(kProgramDataIndex, 1, image_of(kCounter)), AbortCode::None);
+    ASSERT_EQ(device->objects().write(kProgramControlIndex, 0, canopen::encode(std::uint16_t{3})),
+              AbortCode::None);
+    ASSERT_EQ(write_u32(*device, 0x1010, 1, canopen::kSaveSignature), AbortCode::None);
+    device = stored.power_up();
+    ASSERT_FALSE(device->start_stored_program());
+    EXPECT_EQ(device->objects().get_as<std::uint16_t>(kProgramControlIndex, 0), 3u);
+    device->loop().run_for(2s);
+    EXPECT_TRUE(device->network(kExternalPort).report().network_started);
+}
+
 TEST(ProgramDownload, AStoredProgramWithStoppedBootUpStateStaysStopped) {
     const StoredDevice stored;
     auto device = stored.power_up();

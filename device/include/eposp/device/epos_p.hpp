@@ -92,8 +92,9 @@ public:
     /// boots the networks too (8.1). The error says why it cannot start.
     std::optional<core::Error> start_program(vm::StartMode mode);
     /// 10.37: starts the stored program as the stored 0x5F51 says (0 leaves it stopped; 1 cold,
-    /// 2 warm, 3 hot), once the device is set up (its network added). The error says why it
-    /// cannot start; without a stored program nothing happens.
+    /// 2 warm, 3 hot), once the device is set up (its network added); the networks boot with
+    /// it, at a hot start too (a power-up). The error says why it cannot start; without a stored
+    /// program nothing happens (the owner boots the networks).
     std::optional<core::Error> start_stored_program();
     /// Why the last download (0x1F50) or the power-up's load of the stored program was refused
     /// (0x1F57 says which way); empty after a success.
