@@ -79,20 +79,15 @@ ServiceConnection::open(const ServiceClientOptions& options) {
     if (!link) {
         return core::Error{fmt::format("--port: {}", link.error())};
     }
-    // A host's UART sends at the line rate; on a pseudo-terminal or TCP nothing does that for
-    // the client, so it paces itself, as the device does (the USB port is a bridge at 1 Mbit/s
-    // whatever the host asks: LinkPacing::usb()). Download times are then those of the line.
-    const service::LinkPacing pacing = options.protocol == service::Protocol::V2
-                                           ? service::LinkPacing::usb()
-                                           : service::LinkPacing::rs232(options.baud);
-    auto paced = service::PacedLink::wrap(connection->loop_, std::move(*link), pacing);
-    if (!paced) {
-        return core::Error{fmt::format("--port: {}", paced.error())};
-    }
-    connection->link_ = std::move(*paced);
+    connection->link_ = std::move(*link);
+    // The line time the timeouts allow for: the USB port is a bridge at 1 Mbit/s whatever the
+    // host asks (LinkPacing::usb()). The client sends at once; the line is paced where it is:
+    // by the UART of a real port, by `eposp serve`'s PacedLink (both ways) on an emulated one.
     service::ClientSettings settings;
     settings.protocol = options.protocol;
-    settings.bits_per_second = pacing.bits_per_second;
+    settings.bits_per_second = options.protocol == service::Protocol::V2
+                                   ? service::LinkPacing::usb().bits_per_second
+                                   : options.baud;
     connection->client_.emplace(connection->loop_, *connection->link_, settings);
     connection->signals_ = std::make_unique<SignalWatch>(*connection);
     return connection;
