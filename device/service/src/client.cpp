@@ -49,7 +49,14 @@ public:
             v1_.emplace([this](std::span<const std::uint8_t> bytes) { link_.send(bytes); },
                         [this](const V1Completion& completion) { completed(completion); });
         } else {
-            v2_.emplace([this](const Frame& frame) { answered(frame); });
+            v2_.emplace([this](const Frame& frame) { answered(frame); },
+                        [this](V2Error error) {
+                            // A whole answer with a wrong CRC ends the request at once; a frame
+                            // cut short may be followed by the whole one, the timeout decides.
+                            if (pending_ && error == V2Error::CrcError) {
+                                finish(link_error("the answer arrived with a wrong CRC"));
+                            }
+                        });
         }
     }
 

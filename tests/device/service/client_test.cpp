@@ -7,6 +7,8 @@
 #include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/device/service_port.hpp"
 #include "eposp/service/client.hpp"
+#include "eposp/service/crc.hpp"
+#include "eposp/service/v2_encoder.hpp"
 #include "eposp/vm/image_format.hpp"
 #include "memory_link_pair.hpp"
 
@@ -233,6 +235,57 @@ TEST(Client, V1AnswersAfterARetry) {
     EXPECT_EQ(opcodes, 2);
     ASSERT_FALSE(result);
     EXPECT_EQ(result.error().kind, ClientError::Kind::NoAnswer);
+}
+
+TEST(Client, AV2AnswerWithAWrongCrcEndsTheRequestAtOnce) {
+    ClientWithoutDevice setup(Protocol::V2);
+    setup.device->on_receive([&](std::span<const std::uint8_t>) {
+        std::vector<std::uint8_t> answer = encode_v2(encode_answer(Answer{}));
+        answer.back() ^= 0x01;
+        setup.device->send(answer);
+    });
+    std::optional<ClientResult<std::array<std::uint8_t, 4>>> result;
+    setup.client->read_object(at(0x1000, 0), [&](const auto& done) { result.emplace(done); });
+    setup.loop.run_for(10ms);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->error().kind, ClientError::Kind::Link);
+    EXPECT_EQ(result->error().message, "the answer arrived with a wrong CRC");
+}
+
+TEST(Client, AV1AnswerWithAWrongCrcIsRefusedWithF) {
+    ClientWithoutDevice setup(Protocol::V1);
+    const Frame answer = encode_answer(Answer{});
+    int chunks = 0;
+    std::vector<std::uint8_t> to_device;
+    setup.device->on_receive([&](std::span<const std::uint8_t> bytes) {
+        to_device.insert(to_device.end(), bytes.begin(), bytes.end());
+        switch (chunks++) {
+        case 0: // the opcode
+            setup.device->send(std::vector<std::uint8_t>{'O'});
+            break;
+        case 1: // Len-1, data, CRC: taken; the answer begins
+            setup.device->send(std::vector<std::uint8_t>{'O', kAnswerOpCode});
+            break;
+        case 2: { // the host's 'O': the rest of the answer, its CRC wrong
+            std::vector<std::uint8_t> rest{static_cast<std::uint8_t>(answer.words() - 1)};
+            rest.insert(rest.end(), answer.data.begin(), answer.data.end());
+            const std::uint16_t crc = v1_crc(answer) ^ 0x0001;
+            rest.push_back(static_cast<std::uint8_t>(crc));
+            rest.push_back(static_cast<std::uint8_t>(crc >> 8));
+            setup.device->send(rest);
+            break;
+        }
+        default:
+            break;
+        }
+    });
+    std::optional<ClientResult<std::array<std::uint8_t, 4>>> result;
+    setup.client->read_object(at(0x1000, 0), [&](const auto& done) { result.emplace(done); });
+    setup.loop.run_for(10ms);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->error().kind, ClientError::Kind::Link);
+    EXPECT_EQ(result->error().message, "the answer arrived with a wrong CRC");
+    EXPECT_EQ(to_device.back(), 'F'); // the host said so
 }
 
 TEST(Client, ALinkThatClosesEndsTheRequest) {
