@@ -26,6 +26,7 @@ EposPDictionaryConfig dictionary_config(const EposPConfig& config, const Plc& pl
                                         std::function<canopen::AbortCode()> erase_program) {
     EposPDictionaryConfig dictionary;
     dictionary.node_id = config.node_id;
+    dictionary.can_bit_rate = config.external_bit_rate;
     dictionary.serial_number = config.serial_number;
     dictionary.parameter_file = config.parameter_file;
     dictionary.restore.restore_permitted = [&plc] {
@@ -61,6 +62,7 @@ EposP::EposP(EposPConfig config)
       external_port_(external_bus_.connect("epos-p")), plc_(loop_, std::move(config.runtime)),
       dictionary_(dictionary_config(config, plc_, [this] { return program_store_->clear(); })) {
     load_stored_parameters(config.parameter_file);
+    apply_can_bit_rate();
     const auto start = [this](vm::StartMode mode) {
         return start_program(mode);
     };
@@ -106,6 +108,19 @@ void EposP::load_stored_parameters(const std::filesystem::path& file) {
     }
     stored_program_control_ =
         canopen::decode<std::uint16_t>(dictionary_.objects().find(kProgramControlIndex, 0)->value);
+}
+
+void EposP::apply_can_bit_rate() {
+    const auto code = dictionary_.objects().get_as<std::uint16_t>(kCanBitRateIndex, 0);
+    // The default stands for the configured rate (which table 28 may not list); automatic
+    // detection finds the rate the bus has.
+    if (code == canopen::decode<std::uint16_t>(
+                    dictionary_.objects().find(kCanBitRateIndex, 0)->default_value)) {
+        return;
+    }
+    if (const auto rate = can_bit_rate_of(code)) {
+        external_bus_.set_bitrate(*rate);
+    }
 }
 
 std::optional<core::Error> EposP::bind_event(const EventBinding& event) {

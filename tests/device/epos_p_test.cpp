@@ -7,6 +7,7 @@
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/error_entry.hpp"
 #include "eposp/manager/network_list.hpp"
+#include "eposp/test/test_directory.hpp"
 
 #include <gtest/gtest.h>
 #include <vector>
@@ -30,6 +31,42 @@ TEST(EposP, TheInternalEpos2BootsAsNodeOneOnPortOneOnly) {
     EXPECT_EQ(internal.front().payload()[0], 0x00);
     EXPECT_EQ(device.internal_drive().node().nmt_state(), canopen::NmtState::PreOperational);
     EXPECT_TRUE(external.empty());
+}
+
+// 10.32: 0x5001 names port 2's bit rate (table 28); a new one, stored with "save", is the bus's
+// rate from the next power-up on, as the stored node-ID is.
+TEST(EposP, TheStoredCanBitRateAppliesAtTheNextPowerUp) {
+    EposPConfig config;
+    config.external_bit_rate = 500'000;
+    config.parameter_file = test::test_file("parameters.bin");
+    {
+        EposP device(config);
+        EXPECT_EQ(device.objects().get_as<std::uint16_t>(kCanBitRateIndex, 0), 2u);
+        EXPECT_EQ(device.objects().write(kCanBitRateIndex, 0, canopen::encode(std::uint16_t{5})),
+                  canopen::AbortCode::InvalidValue); // reserved
+        ASSERT_EQ(device.objects().write(kCanBitRateIndex, 0, canopen::encode(std::uint16_t{3})),
+                  canopen::AbortCode::None);
+        EXPECT_EQ(device.external_bus().config().bitrate, 500'000u) << "only after a restart";
+        ASSERT_EQ(device.objects().write(0x1010, 1, canopen::encode(canopen::kSaveSignature)),
+                  canopen::AbortCode::None);
+    }
+    EposP restarted(config);
+    EXPECT_EQ(restarted.external_bus().config().bitrate, 250'000u);
+    EXPECT_EQ(restarted.objects().get_as<std::uint16_t>(kCanBitRateIndex, 0), 3u);
+}
+
+TEST(EposP, AutomaticBitRateDetectionKeepsTheBussRate) {
+    EposPConfig config;
+    config.external_bit_rate = 125'000;
+    config.parameter_file = test::test_file("parameters.bin");
+    {
+        EposP device(config);
+        ASSERT_EQ(device.objects().write(kCanBitRateIndex, 0, canopen::encode(std::uint16_t{9})),
+                  canopen::AbortCode::None);
+        ASSERT_EQ(device.objects().write(0x1010, 1, canopen::encode(canopen::kSaveSignature)),
+                  canopen::AbortCode::None);
+    }
+    EXPECT_EQ(EposP(config).external_bus().config().bitrate, 125'000u);
 }
 
 TEST(EposP, RunsTheProgramsTasksAndTimersInTheLoopsTime) {

@@ -409,6 +409,14 @@ VirtualBus::VirtualBus(core::EventLoop& loop, BusConfig config)
     : loop_(loop), config_(std::move(config)),
       impl_(std::make_unique<Impl>(loop, validated(config_))) {}
 
+void VirtualBus::set_bitrate(std::uint32_t bitrate) {
+    BusConfig changed = config_;
+    changed.bitrate = bitrate;
+    validated(changed);
+    config_.bitrate = bitrate;
+    impl_->bit = bit_duration(bitrate);
+}
+
 VirtualBus::~VirtualBus() {
     for (VirtualPort* port : impl_->ports) {
         if (port != nullptr) {

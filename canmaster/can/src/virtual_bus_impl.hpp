@@ -97,7 +97,7 @@ public:
 
     core::EventLoop& loop;
     const BusConfig& config;
-    const core::Duration bit;
+    core::Duration bit; ///< changes with VirtualBus::set_bitrate()
     const core::TimePoint created;
 
     std::vector<VirtualPort*> ports; ///< connection order; null where a port left

@@ -41,15 +41,16 @@ Entry& Entry::range(std::int64_t low, std::int64_t high) {
     return *this;
 }
 
-Entry& Entry::one_of(std::initializer_list<std::int64_t> values) {
+Entry& Entry::one_of(std::span<const std::int64_t> values) {
     sub_.low_limit.reset();
     sub_.high_limit.reset();
-    set_write_check([type = sub_.type, allowed = std::vector<std::int64_t>(values)](
-                        std::span<const std::uint8_t> value) {
-        return std::ranges::find(allowed, decode_integer(type, value)) != allowed.end()
-                   ? AbortCode::None
-                   : AbortCode::InvalidValue;
-    });
+    set_write_check(
+        [type = sub_.type, allowed = std::vector<std::int64_t>(values.begin(), values.end())](
+            std::span<const std::uint8_t> value) {
+            return std::ranges::find(allowed, decode_integer(type, value)) != allowed.end()
+                       ? AbortCode::None
+                       : AbortCode::InvalidValue;
+        });
     return *this;
 }
 

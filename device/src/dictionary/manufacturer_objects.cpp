@@ -3,9 +3,27 @@
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
 #include "object_areas.hpp"
 
+#include <algorithm>
+#include <array>
 #include <fmt/format.h>
+#include <vector>
 
 namespace eposp::device::dictionary {
+
+// Table 28: 0x5001's codes (5 and 8 are reserved).
+struct CanBitRate {
+    std::uint16_t code;
+    std::uint32_t bit_rate;
+};
+constexpr std::array<CanBitRate, 7> kCanBitRates{{{0, 1'000'000},
+                                                  {1, 800'000},
+                                                  {2, 500'000},
+                                                  {3, 250'000},
+                                                  {4, 125'000},
+                                                  {6, 50'000},
+                                                  {7, 20'000}}};
+constexpr std::uint16_t kAutomaticBitRate = 9;
+
 namespace {
 
 using namespace canopen::od_types;
@@ -56,8 +74,16 @@ void add_variable_access(canopen::ObjectDictionary& od) {
 void add_manufacturer_objects(canopen::ObjectDictionary& od, const EposPDictionaryConfig& config) {
     // 10.31: takes effect at the next start, from the stored parameters.
     add_var(od, kNodeIdIndex, "Node Id", kU8, kRW, config.node_id).range(1, 127).persistent();
-    // 10.32, table 28: 0 = 1 Mbit/s ... 7 = 20 kbit/s, 9 = auto detection (5, 8 reserved).
-    add_var(od, 0x5001, "CAN Bitrate", kU16, kRW, 0).one_of({0, 1, 2, 3, 4, 6, 7, 9}).persistent();
+    // 10.32, table 28; like the node-ID, a new bit rate takes effect at the next start.
+    std::vector<std::int64_t> codes;
+    for (const auto& [code, rate] : kCanBitRates) {
+        codes.push_back(code);
+    }
+    codes.push_back(kAutomaticBitRate);
+    add_var(od, kCanBitRateIndex, "CAN Bitrate", kU16, kRW,
+            can_bit_rate_code(config.can_bit_rate).value_or(0))
+        .one_of(codes)
+        .persistent();
     add_versions(od, 0x5003, "EPOS P Version", "EPOS P", kSoftwareVersion, kHardwareVersion,
                  kApplicationNumber, kApplicationVersion); // 10.33
     // 10.34: the internal module is the simulated EPOS2.
@@ -73,3 +99,19 @@ void add_manufacturer_objects(canopen::ObjectDictionary& od, const EposPDictiona
 }
 
 } // namespace eposp::device::dictionary
+
+namespace eposp::device {
+
+std::optional<std::uint32_t> can_bit_rate_of(std::uint16_t code) {
+    const auto found =
+        std::ranges::find(dictionary::kCanBitRates, code, &dictionary::CanBitRate::code);
+    return found == dictionary::kCanBitRates.end() ? std::nullopt : std::optional(found->bit_rate);
+}
+
+std::optional<std::uint16_t> can_bit_rate_code(std::uint32_t bit_rate) {
+    const auto found =
+        std::ranges::find(dictionary::kCanBitRates, bit_rate, &dictionary::CanBitRate::bit_rate);
+    return found == dictionary::kCanBitRates.end() ? std::nullopt : std::optional(found->code);
+}
+
+} // namespace eposp::device

@@ -201,6 +201,23 @@ TEST(VirtualBus, FrameTimeScalesWithTheBitRate) {
     EXPECT_EQ(wire.events[1].start, at_us(53 * 100));
 }
 
+TEST(VirtualBus, ABusRestartedAtAnotherBitRateTimesItsFramesByIt) {
+    core::EventLoop loop;
+    VirtualBus bus(loop);
+    bus.set_bitrate(10'000);
+    EXPECT_EQ(bus.bit_time(), microseconds(100));
+    EXPECT_EQ(bus.config().bitrate, 10'000U);
+    WireLog wire(bus);
+    auto a = bus.connect("a");
+    auto b = bus.connect("b");
+    a->send(kZeroFrame);
+    loop.run();
+    ASSERT_EQ(wire.events.size(), 1U);
+    EXPECT_EQ(wire.events[0].end, at_us(50 * 100));
+    EXPECT_THROW(bus.set_bitrate(300'000), std::invalid_argument);
+    EXPECT_EQ(bus.config().bitrate, 10'000U);
+}
+
 TEST(VirtualBus, RejectsBitRatesOutsideTenKbitToOneMbit) {
     core::EventLoop loop;
     EXPECT_THROW(VirtualBus(loop, BusConfig{.bitrate = 5'000}), std::invalid_argument);

@@ -29,7 +29,8 @@ struct EposPConfig {
     vm::RuntimeConfig runtime;
     /// The internal EPOS2 on port 1; its node-ID is always 1 (DESIGN.md, "CAN").
     drives::epos2::Epos2DriveConfig internal_drive;
-    /// Port 2, the external CAN bus.
+    /// Port 2, the external CAN bus, and 0x5001's default; a bit rate stored with "save" takes
+    /// its place at power-up (10.32).
     std::uint32_t external_bit_rate = 1'000'000;
     /// The controller's node-ID on port 2 (0x5000) and serial number (0x1018 sub 4).
     canopen::NodeId node_id = 1;
@@ -123,6 +124,8 @@ public:
 
 private:
     void load_stored_parameters(const std::filesystem::path& file);
+    /// 10.32: port 2 restarts at the bit rate 0x5001 holds after the stored parameters.
+    void apply_can_bit_rate();
     /// DESIGN.md, "One communication cycle": at each SYNC, puts the PLC's cyclic tasks a
     /// fixed delay after it, when the slaves' synchronous TPDOs are in.
     void follow_sync();

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace eposp::device {
@@ -24,7 +25,14 @@ inline constexpr std::uint16_t kApplicationVersion = 0x0000;
 inline constexpr std::uint32_t kDeviceType = 0x0000'0195;
 
 /// 10.36: the axes 0..31 at 0x5280 + n, and table 30's slave numbers.
-inline constexpr std::uint16_t kNodeIdIndex = 0x5000; ///< 10.31: the node-ID on port 2
+inline constexpr std::uint16_t kNodeIdIndex = 0x5000;     ///< 10.31: the node-ID on port 2
+inline constexpr std::uint16_t kCanBitRateIndex = 0x5001; ///< 10.32: port 2's bit rate code
+
+/// Table 28: the bit rate of a code of 0x5001; empty for the reserved codes and 9 (automatic
+/// detection, which on a simulated bus keeps the bus's rate).
+std::optional<std::uint32_t> can_bit_rate_of(std::uint16_t code);
+/// Table 28: the code of a bit rate; empty for one the table does not list (10 kbit/s).
+std::optional<std::uint16_t> can_bit_rate_code(std::uint32_t bit_rate);
 inline constexpr std::uint16_t kAxisIndex = 0x5280;
 inline constexpr std::uint8_t kAxisCount = 32;
 inline constexpr std::uint8_t kInternalSlave = 0; ///< the internal EPOS2 (node 1 on port 1)
@@ -65,7 +73,10 @@ inline constexpr std::size_t kFirstInternalPdo = 257;
 inline constexpr std::uint8_t kInternalSlaveSubIndex = 0x80;
 
 struct EposPDictionaryConfig {
-    canopen::NodeId node_id = 1;     ///< 0x5000: the controller's node-ID on port 2
+    canopen::NodeId node_id = 1; ///< 0x5000: the controller's node-ID on port 2
+    /// 0x5001's default: the code of the bit rate port 2 starts with (1 Mbit/s, code 0, for a
+    /// rate table 28 does not list).
+    std::uint32_t can_bit_rate = 1'000'000;
     std::uint32_t serial_number = 0; ///< 0x1018 sub 4
     /// The non-volatile memory of 0x1010 / 0x1011: nothing is written before a "save".
     std::filesystem::path parameter_file;

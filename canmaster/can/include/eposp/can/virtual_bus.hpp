@@ -152,6 +152,10 @@ public:
                                          std::optional<std::size_t> tx_queue_capacity = {});
 
     const BusConfig& config() const { return config_; }
+    /// Every controller on the bus restarts at another bit rate (a device that applies its
+    /// stored bit rate at power-up); frames from then on take its bit times. A rate the bus
+    /// cannot have is a programming error (std::invalid_argument), as in BusConfig.
+    void set_bitrate(std::uint32_t bitrate);
     core::EventLoop& loop() const { return loop_; }
     core::Duration bit_time() const;
     BusStatistics statistics() const;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
+#include <span>
 #include <string>
 
 namespace eposp::canopen {
@@ -27,7 +28,10 @@ public:
     /// exceeded" (EPOS2 FW spec table 4-12; "too high / too low" belong to min ... max ranges).
     /// So the entry has no low and high limit, which the dictionary would check first, and its
     /// EDS lists none.
-    Entry& one_of(std::initializer_list<std::int64_t> values);
+    Entry& one_of(std::initializer_list<std::int64_t> values) {
+        return one_of(std::span<const std::int64_t>(values.begin(), values.size()));
+    }
+    Entry& one_of(std::span<const std::int64_t> values);
     /// A value range bounded by another entry's current value ("1 ... Maximal Profile Velocity"):
     /// values above it are refused with 0x06090031, and with `symmetric` ("-Maximal profile
     /// velocity ... Maximal profile velocity") values below its negative with 0x06090032.
