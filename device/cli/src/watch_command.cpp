@@ -145,7 +145,10 @@ int watch(const WatchOptions& options) {
                                             : report_user_error(kCommand, message);
     };
     for (const std::string& text : options.writes) {
-        const auto [path, value] = *assignment(text);
+        // Named, not a structured binding: clang 14 cannot capture those in a lambda.
+        const auto assigned = *assignment(text);
+        const std::string& path = assigned.first;
+        const std::string& value = assigned.second;
         if (auto error = watch.on_variable(path, "writing",
                                            [&] { return watch.write_literal(kValueSub, value); })) {
             return failed(*error);
@@ -153,7 +156,10 @@ int watch(const WatchOptions& options) {
         fmt::print("{} := {}\n", terminal_text(path), terminal_text(value));
     }
     for (const std::string& text : options.forces) {
-        const auto [path, value] = *assignment(text);
+        // Named, not a structured binding: clang 14 cannot capture those in a lambda.
+        const auto assigned = *assignment(text);
+        const std::string& path = assigned.first;
+        const std::string& value = assigned.second;
         if (auto error = watch.on_variable(path, "forcing",
                                            [&] { return watch.write_literal(kForceSub, value); })) {
             return failed(*error);
