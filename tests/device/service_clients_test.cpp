@@ -1,5 +1,6 @@
 // `eposp download`, `eposp od` and `eposp watch` as a user runs them: against `eposp serve` on
 // its RS-232 pseudo-terminal (maxon serial v1) and on its USB one (v2), in another process.
+#include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp_command.hpp"
 
 #include <gmock/gmock.h>
@@ -207,6 +208,29 @@ TEST(ServiceClients, CtrlCEndsAnEndlessWatch) {
     const std::string output = read_file(watched);
     EXPECT_EQ(result.exit_code, 0) << result.output << output;
     EXPECT_THAT(output, ::testing::ContainsRegex("s  Main\\.counter=[0-9]+\n"));
+}
+
+// Over USB (about 4 s; RS-232 takes 20): one row for each entry of the EPOS P's dictionary.
+TEST(ServiceClients, OdDumpShowsEveryObjectOfTheEposP) {
+    const auto result =
+        with_served_port(kUsb, kEposp + " od --port $port --protocol v2 dump", "dump");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("index   sub  name"));
+    EXPECT_THAT(result.output,
+                ::testing::ContainsRegex("0x1000 +0  Device Type +405 \\(0x00000195\\)\n"));
+    EXPECT_THAT(result.output, ::testing::ContainsRegex("0x1008 +0  Device Name +EPOS P\n"));
+    EXPECT_THAT(result.output, ::testing::ContainsRegex(
+                                   "0x5F60 +4  PLC Variable Access: Unforce +\\(write only\\)\n"));
+    const EposPDictionary dictionary(EposPDictionaryConfig{});
+    std::size_t entries = 0;
+    for (const auto& [index, object] : dictionary.objects().objects()) {
+        entries += object.subs.size();
+    }
+    const std::regex row("\n0x[0-9A-F]{4} +[0-9]+  ");
+    EXPECT_EQ(static_cast<std::size_t>(std::distance(
+                  std::sregex_iterator(result.output.begin(), result.output.end(), row),
+                  std::sregex_iterator())),
+              entries);
 }
 
 TEST(ServiceClients, ThePythonClientEncodesTheIssuesByteVectors) {
