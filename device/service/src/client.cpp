@@ -115,12 +115,15 @@ public:
                      if (!answer) {
                          return end_segmented(done, answer.error());
                      }
-                     if (answer->size() >= 4) { // the object's length, as SDO announces it
-                         transfer->total = static_cast<std::size_t>(
-                             (*answer)[0] | (*answer)[1] << 8 | (*answer)[2] << 16 |
-                             static_cast<std::uint32_t>((*answer)[3]) << 24);
-                         transfer->data.reserve(std::min<std::size_t>(transfer->total, 1 << 20));
+                     // The object's length, as the SDO initiate upload announces it: it bounds
+                     // what the segments may bring.
+                     if (answer->size() < 4) {
+                         return end_segmented<Bytes>(
+                             done, link_error("the InitiateSegmentedRead answer has no length"));
                      }
+                     transfer->total = static_cast<std::size_t>(
+                         (*answer)[0] | (*answer)[1] << 8 | (*answer)[2] << 16 |
+                         static_cast<std::uint32_t>((*answer)[3]) << 24);
                      read_next_segment(transfer, done);
                  });
     }
@@ -182,12 +185,17 @@ private:
                     return end_segmented<Bytes>(
                         done, link_error("a SegmentRead answer has a wrong toggle or length"));
                 }
+                if (transfer->data.size() + control.length > transfer->total) {
+                    return end_segmented<Bytes>(
+                        done, link_error(fmt::format("the segments bring more than the {} bytes "
+                                                     "announced",
+                                                     transfer->total)));
+                }
                 transfer->data.insert(transfer->data.end(), answer->begin() + 1,
                                       answer->begin() + 1 + control.length);
                 transfer->toggle = !transfer->toggle;
                 if (transfer->progress) {
-                    transfer->progress(transfer->data.size(),
-                                       std::max(transfer->total, transfer->data.size()));
+                    transfer->progress(transfer->data.size(), transfer->total);
                 }
                 if (!control.more) {
                     return end_segmented<Bytes>(done, std::move(transfer->data));

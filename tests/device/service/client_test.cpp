@@ -288,6 +288,30 @@ TEST(Client, AV1AnswerWithAWrongCrcIsRefusedWithF) {
     EXPECT_EQ(to_device.back(), 'F'); // the host said so
 }
 
+// A device whose segments never end: the length it announced bounds them.
+TEST(Client, ASegmentedReadTakesNoMoreThanTheAnnouncedLength) {
+    ClientWithoutDevice setup(Protocol::V2);
+    int requests = 0;
+    setup.device->on_receive([&](std::span<const std::uint8_t>) {
+        Answer answer{error::kNone, {100, 0, 0, 0}}; // 100 bytes
+        if (requests > 0) {
+            const bool toggle = (requests - 1) % 2 == 1;
+            answer.data.assign(1 + SegmentControl::kMaxLength, 0x55);
+            answer.data[0] = SegmentControl{63, toggle, true}.encode();
+        }
+        ++requests;
+        setup.device->send(encode_v2(encode_answer(answer)));
+    });
+    std::optional<ClientResult<std::vector<std::uint8_t>>> result;
+    setup.client->read_segmented(at(0x1F50, 1), [&](const auto& done) { result.emplace(done); });
+    setup.loop.run_for(100ms);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->error().kind, ClientError::Kind::Link);
+    EXPECT_EQ(result->error().message, "the segments bring more than the 100 bytes announced");
+    EXPECT_EQ(requests, 3); // the initiate and two segments
+    EXPECT_FALSE(setup.client->busy());
+}
+
 TEST(Client, ALinkThatClosesEndsTheRequest) {
     ClientWithoutDevice setup(Protocol::V2);
     std::optional<ClientResult<std::array<std::uint8_t, 4>>> result;
