@@ -61,6 +61,9 @@ void bind_program_download(canopen::ObjectDictionary& od, ProgramStore& store, P
     data.on_write = [&store](std::span<const std::uint8_t> image) {
         return store.download(image);
     };
+    data.on_write_aborted = [&store](canopen::AbortCode reason) {
+        store.interrupted(reason);
+    };
     canopen::SubObject& control = *od.find(kCia302ProgramControlIndex, 1);
     control.on_read = [&plc] {
         return canopen::encode(static_cast<std::uint8_t>(program_status(plc)));

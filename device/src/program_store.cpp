@@ -48,6 +48,13 @@ void ProgramStore::refuse(FlashStatus status, std::string why, std::uint16_t err
     record_error(od_, {.code = error_code, .port = 0, .node = 0, .warning = false});
 }
 
+void ProgramStore::interrupted(canopen::AbortCode reason) {
+    refuse(FlashStatus::DataFormatError,
+           fmt::format("the download ended before its last byte: 0x{:08X} {}",
+                       static_cast<std::uint32_t>(reason), canopen::describe(reason)),
+           kProgramDownloadError);
+}
+
 void ProgramStore::power_up() {
     if (file_.empty()) {
         return;

@@ -69,6 +69,10 @@ public:
     vm::StartMode start_mode() const {
         return cold_next_ ? vm::StartMode::Cold : vm::StartMode::Warm;
     }
+    /// A download to 0x1F50 that ended before its last byte (the host went away, the transfer
+    /// was aborted or timed out): the old program stays; 0x1F57 says "data format error" and the
+    /// error history 0x6186, as for a truncated image.
+    void interrupted(canopen::AbortCode reason);
     /// 0x1F51 "reset program": the next start through 0x1F51 is cold.
     void reset() { cold_next_ = true; }
     /// Told of every start of the program.

@@ -285,6 +285,14 @@ const SubObject& ObjectDictionary::existing(std::uint16_t index, std::uint8_t su
     return *sub;
 }
 
+void ObjectDictionary::write_aborted(std::uint16_t index, std::uint8_t sub_index,
+                                     AbortCode reason) const {
+    const SubObject* entry = find(index, sub_index);
+    if (entry && entry->on_write_aborted) {
+        entry->on_write_aborted(reason);
+    }
+}
+
 Bytes ObjectDictionary::get(std::uint16_t index, std::uint8_t sub_index) const {
     const SubObject& sub = existing(index, sub_index);
     return sub.on_read ? sub.on_read() : sub.value;

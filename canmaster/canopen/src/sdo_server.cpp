@@ -64,7 +64,7 @@ void SdoServer::on_frame(const can::Frame& frame) {
     const bool in_sub_block = state_ == State::BlockDownloadSubBlock;
     // CiA 301 7.2.4.3.17: an abort ends the transfer; it is never answered.
     if (in_sub_block ? bytes[0] == kAbortCommand : command_specifier(bytes[0]) == kAbort) {
-        finish();
+        end_transfer(static_cast<AbortCode>(value_of(bytes)));
         return;
     }
     if (in_sub_block) {
@@ -77,7 +77,8 @@ void SdoServer::on_frame(const can::Frame& frame) {
 }
 
 void SdoServer::initiate(MessageBytes bytes) {
-    finish();
+    // CiA 301 7.2.4.2: a new request ends the transfer in progress.
+    end_transfer(AbortCode::CommandSpecifier);
     mux_ = multiplexer_of(bytes);
     switch (command_specifier(bytes[0])) {
     case ccs::kInitiateDownload:
@@ -188,12 +189,13 @@ void SdoServer::download_segment(MessageBytes bytes) {
         watchdog_.kick();
         return send(response);
     }
-    // The last segment is confirmed only once the dictionary took the value.
+    // The last segment is confirmed only once the dictionary took the value; a value it
+    // refused was handed over (it says why itself), so the transfer is over first.
+    finish();
     const AbortCode code = dictionary_.write(mux_.index, mux_.sub_index, data_);
     if (code != AbortCode::None) {
         return abort(code);
     }
-    finish();
     send(response);
 }
 
@@ -291,11 +293,11 @@ void SdoServer::end_block_download(MessageBytes bytes) {
         code != AbortCode::None) {
         return abort(code);
     }
+    finish(); // the value is handed over, as above
     if (const AbortCode code = dictionary_.write(mux_.index, mux_.sub_index, data_);
         code != AbortCode::None) {
         return abort(code);
     }
-    finish();
     send(message(block_command(scs::kBlockDownload, block::kEnd), {}));
 }
 
@@ -381,8 +383,18 @@ void SdoServer::send(const Message& message) {
 }
 
 void SdoServer::abort(AbortCode code) {
-    finish();
+    end_transfer(code);
     send(abort_message(mux_, code));
+}
+
+void SdoServer::end_transfer(AbortCode reason) {
+    const bool downloading = state_ == State::DownloadSegments ||
+                             state_ == State::BlockDownloadSubBlock ||
+                             state_ == State::BlockDownloadEnd;
+    finish();
+    if (downloading) {
+        dictionary_.write_aborted(mux_.index, mux_.sub_index, reason);
+    }
 }
 
 void SdoServer::finish() {

@@ -55,8 +55,17 @@ ObjectTransfer::~ObjectTransfer() {
 }
 
 void ObjectTransfer::abandon() {
-    segmented_.reset();
+    end_segmented(canopen::AbortCode::GeneralError);
     cancel_gateway_request();
+}
+
+void ObjectTransfer::end_segmented(canopen::AbortCode reason) {
+    const auto ended = std::move(segmented_);
+    // A write to the controller's own object ends unfinished: the object is told (a download
+    // to 0x1F50 reports the interruption); a node's value was only ever in this buffer.
+    if (ended && ended->direction == Segmented::Direction::Write && !ended->target.port) {
+        parts_.objects.write_aborted(ended->index, ended->sub_index, reason);
+    }
 }
 
 void ObjectTransfer::cancel_gateway_request() {
@@ -143,7 +152,7 @@ void ObjectTransfer::write(const service::WriteObject& request, Done done) {
 }
 
 void ObjectTransfer::initiate_read(const service::InitiateSegmentedRead& request, Done done) {
-    segmented_.reset();
+    end_segmented(canopen::AbortCode::CommandSpecifier); // a new transfer ends the one before
     const auto resolved = resolve_object_target(parts_, request.object);
     if (!resolved.target) {
         return done(error_answer(resolved.error));
@@ -191,7 +200,7 @@ void ObjectTransfer::read_segment(const service::SegmentRead& request, Done done
 }
 
 void ObjectTransfer::initiate_write(const service::InitiateSegmentedWrite& request, Done done) {
-    segmented_.reset();
+    end_segmented(canopen::AbortCode::CommandSpecifier);
     const auto resolved = resolve_object_target(parts_, request.object);
     if (!resolved.target) {
         return done(error_answer(resolved.error));
@@ -222,11 +231,11 @@ void ObjectTransfer::write_segment(const service::SegmentWrite& request, Done do
     }
     Segmented& transfer = *segmented_;
     if (request.control.toggle != transfer.toggle) {
-        segmented_.reset();
+        end_segmented(canopen::AbortCode::ToggleBit);
         return done(error_answer(canopen::AbortCode::ToggleBit));
     }
     if (transfer.data.size() + request.data.size() > transfer.announced_length) {
-        segmented_.reset();
+        end_segmented(canopen::AbortCode::LengthTooHigh);
         return done(error_answer(canopen::AbortCode::LengthTooHigh));
     }
     transfer.data.insert(transfer.data.end(), request.data.begin(), request.data.end());
@@ -237,7 +246,7 @@ void ObjectTransfer::write_segment(const service::SegmentWrite& request, Done do
         return done(confirmation);
     }
     if (transfer.data.size() < transfer.announced_length) {
-        segmented_.reset();
+        end_segmented(canopen::AbortCode::LengthTooLow);
         return done(error_answer(canopen::AbortCode::LengthTooLow));
     }
     const auto finished = std::move(segmented_);

@@ -50,6 +50,9 @@ private:
     void download(const ServiceTarget& target, std::uint16_t index, std::uint8_t sub_index,
                   canopen::Bytes value, bool sized, Downloaded done);
     void cancel_gateway_request();
+    /// Ends the segmented transfer; an unfinished write to the controller's own object tells it
+    /// why (ObjectDictionary::write_aborted).
+    void end_segmented(canopen::AbortCode reason);
 
     const ServiceParts& parts_;
     std::unique_ptr<Segmented> segmented_;

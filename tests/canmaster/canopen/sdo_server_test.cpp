@@ -1,6 +1,7 @@
 #include "sdo_test_support.hpp"
 
 #include <gtest/gtest.h>
+#include <vector>
 
 // Conformance tests of the SDO server (CiA 301 7.2.4): the tester sends raw request frames to
 // node 5 and checks every reply byte for byte. Abort frames read "585#80 iiii ss cccccccc" with
@@ -88,6 +89,47 @@ TEST(SdoServer, SegmentedDownloadStoresTheValueAfterTheLastSegment) {
     EXPECT_TRUE(bench.od.get(0x2100, 0).empty()) << "stored only when complete";
     EXPECT_EQ(bench.exchange("605#1908090A00000000"), Replies{"585#3000000000000000"});
     EXPECT_EQ(bench.od.get(0x2100, 0), counting_bytes(10));
+}
+
+// A download that ends before its value is whole tells the object why (CiA 302-3: a device
+// reports an interrupted program download); one that handed its value over does not.
+class SdoServerInterruptedDownload : public ::testing::Test {
+protected:
+    SdoServerInterruptedDownload() {
+        bench.od.find(0x2100, 0)->on_write_aborted = [this](AbortCode reason) {
+            reasons.push_back(reason);
+        };
+        EXPECT_EQ(bench.exchange("605#210021000A000000"), Replies{"585#6000210000000000"});
+        EXPECT_EQ(bench.exchange("605#0001020304050607"), Replies{"585#2000000000000000"});
+    }
+    SdoServerBench bench;
+    std::vector<AbortCode> reasons;
+};
+
+TEST_F(SdoServerInterruptedDownload, TheClientsAbortIsTold) {
+    bench.exchange("605#8000210005000405"); // 0x05040005
+    EXPECT_EQ(reasons, std::vector{AbortCode::OutOfMemory});
+}
+
+TEST_F(SdoServerInterruptedDownload, ATimeoutIsTold) {
+    bench.loop.run_for(std::chrono::seconds(2));
+    EXPECT_EQ(reasons, std::vector{AbortCode::SdoTimeout});
+}
+
+TEST_F(SdoServerInterruptedDownload, ANewRequestEndsItAndIsTold) {
+    bench.exchange("605#4000100000000000");
+    EXPECT_EQ(reasons, std::vector{AbortCode::CommandSpecifier});
+}
+
+TEST_F(SdoServerInterruptedDownload, AWrongToggleIsTold) {
+    bench.exchange("605#0001020304050607"); // toggle 0 again
+    EXPECT_EQ(reasons, std::vector{AbortCode::ToggleBit});
+}
+
+TEST_F(SdoServerInterruptedDownload, AValueHandedOverIsNotAnInterruption) {
+    bench.exchange("605#1908090A00000000");
+    bench.exchange("605#4000100000000000");
+    EXPECT_TRUE(reasons.empty());
 }
 
 TEST(SdoServer, SegmentedDownloadWithoutSizeIndicator) {

@@ -55,6 +55,11 @@ struct SubObject {
     /// stored. Returning anything but AbortCode::None refuses the write with that code; this is
     /// where services enforce their rules (a PDO's COB-ID may only change while it is invalid).
     using WriteHook = std::function<AbortCode(std::span<const std::uint8_t> value)>;
+    /// Told when a transfer that was writing this value in pieces (an SDO segmented or block
+    /// download, a service tool's segmented write) ended without handing it over, with why: the
+    /// client aborted, a piece was refused, the transfer timed out, the client went away. The
+    /// value stays as it was; a device reports the interruption (CiA 302-3 0x1F57).
+    using AbortHook = std::function<void(AbortCode reason)>;
 
     std::uint8_t sub_index = 0;
     std::string name;
@@ -70,6 +75,7 @@ struct SubObject {
     Bytes value; ///< the current value
     ReadHook on_read;
     WriteHook on_write;
+    AbortHook on_write_aborted;
 };
 
 /// An object: one index with its sub-objects, in sub-index order.
@@ -123,6 +129,9 @@ public:
     /// The checks write() makes before it sees the data (existence, access, length), for a
     /// value of `size` bytes: lets an SDO server refuse a download at its initiate request.
     AbortCode check_write_size(std::uint16_t index, std::uint8_t sub_index, std::size_t size) const;
+    /// A transfer writing `index`:`sub_index` in pieces ended before the value was complete
+    /// (SubObject::on_write_aborted); nothing for a missing entry or one without the hook.
+    void write_aborted(std::uint16_t index, std::uint8_t sub_index, AbortCode reason) const;
 
     /// The device's own access: the value (through the read hook if any). Asking for a missing
     /// object is a programming error (std::out_of_range).

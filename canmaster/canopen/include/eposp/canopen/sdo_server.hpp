@@ -99,6 +99,9 @@ private:
     void begin_transfer(State state);
     void send(const sdo::Message& message);
     void abort(AbortCode code);
+    /// Ends the transfer in progress; a download that had not handed its value over tells the
+    /// dictionary (ObjectDictionary::write_aborted) with `reason`.
+    void end_transfer(AbortCode reason);
     void finish();
 
     can::Port& port_;
