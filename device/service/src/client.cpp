@@ -1,6 +1,7 @@
 #include "eposp/service/client.hpp"
 
 #include "eposp/canopen/abort_code.hpp"
+#include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/service/v1_host_link.hpp"
 #include "eposp/service/v2_decoder.hpp"
 #include "eposp/service/v2_encoder.hpp"
@@ -19,6 +20,10 @@ using AnswerCallback = Client::Callback<Bytes>;
 // The longest answer a request may bring: the error code, a segment's control byte and 63
 // bytes, framed (v2 with every byte stuffed at worst).
 constexpr std::size_t kLongestAnswerBytes = 2 * (2 + 4 + 1 + SegmentControl::kMaxLength + 2);
+
+// A segmented read whose length the device did not announce takes at most the longest DOMAIN a
+// dictionary holds.
+constexpr std::size_t kLongestUnannouncedValue = canopen::SubObject::kDefaultMaxLength;
 
 ClientError link_error(std::string message) {
     return ClientError{ClientError::Kind::Link, 0, std::move(message)};
@@ -115,15 +120,17 @@ public:
                      if (!answer) {
                          return end_segmented(done, answer.error());
                      }
-                     // The object's length, as the SDO initiate upload announces it: it bounds
-                     // what the segments may bring.
-                     if (answer->size() < 4) {
-                         return end_segmented<Bytes>(
-                             done, link_error("the InitiateSegmentedRead answer has no length"));
+                     // The object's length, as the SDO initiate upload announces it (the
+                     // EPOS P does; a device that answers with the error code alone is bounded
+                     // by the longest DOMAIN): no segment may bring more.
+                     if (answer->size() >= 4) {
+                         transfer->total = static_cast<std::size_t>(
+                             (*answer)[0] | (*answer)[1] << 8 | (*answer)[2] << 16 |
+                             static_cast<std::uint32_t>((*answer)[3]) << 24);
+                         transfer->announced = true;
+                     } else {
+                         transfer->total = kLongestUnannouncedValue;
                      }
-                     transfer->total = static_cast<std::size_t>(
-                         (*answer)[0] | (*answer)[1] << 8 | (*answer)[2] << 16 |
-                         static_cast<std::uint32_t>((*answer)[3]) << 24);
                      read_next_segment(transfer, done);
                  });
     }
@@ -158,6 +165,7 @@ private:
         Bytes data;
         Progress progress;
         std::size_t total = 0;
+        bool announced = false;   ///< a read: whether the device told `total`
         std::size_t position = 0; ///< bytes written
         bool toggle = false;      ///< the toggle of the next segment; the first carries 0
     };
@@ -187,15 +195,16 @@ private:
                 }
                 if (transfer->data.size() + control.length > transfer->total) {
                     return end_segmented<Bytes>(
-                        done, link_error(fmt::format("the segments bring more than the {} bytes "
-                                                     "announced",
-                                                     transfer->total)));
+                        done, link_error(fmt::format(
+                                  "the segments bring more than the {} bytes {}", transfer->total,
+                                  transfer->announced ? "announced" : "a value may have")));
                 }
                 transfer->data.insert(transfer->data.end(), answer->begin() + 1,
                                       answer->begin() + 1 + control.length);
                 transfer->toggle = !transfer->toggle;
                 if (transfer->progress) {
-                    transfer->progress(transfer->data.size(), transfer->total);
+                    transfer->progress(transfer->data.size(),
+                                       transfer->announced ? transfer->total : 0);
                 }
                 if (!control.more) {
                     return end_segmented<Bytes>(done, std::move(transfer->data));

@@ -288,28 +288,36 @@ TEST(Client, AV1AnswerWithAWrongCrcIsRefusedWithF) {
     EXPECT_EQ(to_device.back(), 'F'); // the host said so
 }
 
-// A device whose segments never end: the length it announced bounds them.
+// A device whose segments never end: the length it announced bounds them, or without one the
+// longest DOMAIN (1 MiB: 16644 segments of 63 bytes, the next one too many).
 TEST(Client, ASegmentedReadTakesNoMoreThanTheAnnouncedLength) {
-    ClientWithoutDevice setup(Protocol::V2);
-    int requests = 0;
-    setup.device->on_receive([&](std::span<const std::uint8_t>) {
-        Answer answer{error::kNone, {100, 0, 0, 0}}; // 100 bytes
-        if (requests > 0) {
-            const bool toggle = (requests - 1) % 2 == 1;
-            answer.data.assign(1 + SegmentControl::kMaxLength, 0x55);
-            answer.data[0] = SegmentControl{63, toggle, true}.encode();
-        }
-        ++requests;
-        setup.device->send(encode_v2(encode_answer(answer)));
-    });
-    std::optional<ClientResult<std::vector<std::uint8_t>>> result;
-    setup.client->read_segmented(at(0x1F50, 1), [&](const auto& done) { result.emplace(done); });
-    setup.loop.run_for(100ms);
-    ASSERT_TRUE(result);
-    EXPECT_EQ(result->error().kind, ClientError::Kind::Link);
-    EXPECT_EQ(result->error().message, "the segments bring more than the 100 bytes announced");
-    EXPECT_EQ(requests, 3); // the initiate and two segments
-    EXPECT_FALSE(setup.client->busy());
+    for (const bool announced : {true, false}) {
+        ClientWithoutDevice setup(Protocol::V2);
+        int requests = 0;
+        setup.device->on_receive([&](std::span<const std::uint8_t>) {
+            Answer answer{error::kNone, {}};
+            if (requests == 0 && announced) {
+                answer.data = {100, 0, 0, 0}; // 100 bytes
+            } else if (requests > 0) {
+                const bool toggle = (requests - 1) % 2 == 1;
+                answer.data.assign(1 + SegmentControl::kMaxLength, 0x55);
+                answer.data[0] = SegmentControl{63, toggle, true}.encode();
+            }
+            ++requests;
+            setup.device->send(encode_v2(encode_answer(answer)));
+        });
+        std::optional<ClientResult<std::vector<std::uint8_t>>> result;
+        setup.client->read_segmented(at(0x1F50, 1),
+                                     [&](const auto& done) { result.emplace(done); });
+        setup.loop.run_for(100ms);
+        ASSERT_TRUE(result);
+        EXPECT_EQ(result->error().kind, ClientError::Kind::Link);
+        EXPECT_EQ(result->error().message,
+                  announced ? "the segments bring more than the 100 bytes announced"
+                            : "the segments bring more than the 1048576 bytes a value may have");
+        EXPECT_EQ(requests, announced ? 3 : 1 + 16645); // the initiate and the segments
+        EXPECT_FALSE(setup.client->busy());
+    }
 }
 
 TEST(Client, ALinkThatClosesEndsTheRequest) {

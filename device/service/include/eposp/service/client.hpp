@@ -103,7 +103,9 @@ public:
     /// WriteObject: the device takes as many of the 4 bytes as its object has.
     void write_object(const ObjectAddress& object, std::array<std::uint8_t, 4> value,
                       Callback<Done> done);
-    /// InitiateSegmentedRead, then SegmentRead until the last segment.
+    /// InitiateSegmentedRead, then SegmentRead until the last segment; the segments may bring
+    /// no more than the length the initiate's answer announced (1 MiB when it announced none;
+    /// `progress` then gets a total of 0).
     void read_segmented(const ObjectAddress& object, Callback<std::vector<std::uint8_t>> done,
                         Progress progress = {});
     /// InitiateSegmentedWrite with the length, then SegmentWrite in segments of 63 bytes.
