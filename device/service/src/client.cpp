@@ -7,6 +7,7 @@
 #include "eposp/service/v2_encoder.hpp"
 
 #include <algorithm>
+#include <deque>
 #include <fmt/format.h>
 #include <stdexcept>
 #include <type_traits>
@@ -24,6 +25,9 @@ constexpr std::size_t kLongestAnswerBytes = 2 * (2 + 4 + 1 + SegmentControl::kMa
 // A segmented read whose length the device did not announce takes at most the longest DOMAIN a
 // dictionary holds.
 constexpr std::size_t kLongestUnannouncedValue = canopen::SubObject::kDefaultMaxLength;
+
+// Segments of a write in flight at once on v2: half of what the EPOS P queues (ServicePort).
+constexpr std::size_t kWriteWindow = 8;
 
 ClientError link_error(std::string message) {
     return ClientError{ClientError::Kind::Link, 0, std::move(message)};
@@ -46,9 +50,7 @@ public:
         : loop_(loop), link_(link), settings_(settings) {
         link_.on_receive([this](std::span<const std::uint8_t> bytes) { receive(bytes); });
         link_.on_event([this](const LinkEvent& event) {
-            if (pending_) {
-                finish(link_error(fmt::format("{}: {}", link_.name(), event.text)));
-            }
+            fail_in_flight(link_error(fmt::format("{}: {}", link_.name(), event.text)));
         });
         if (settings_.protocol == Protocol::V1) {
             v1_.emplace([this](std::span<const std::uint8_t> bytes) { link_.send(bytes); },
@@ -58,7 +60,7 @@ public:
                         [this](V2Error error) {
                             // A whole answer with a wrong CRC ends the request at once; a frame
                             // cut short may be followed by the whole one, the timeout decides.
-                            if (pending_ && error == V2Error::CrcError) {
+                            if (!in_flight_.empty() && error == V2Error::CrcError) {
                                 finish(link_error("the answer arrived with a wrong CRC"));
                             }
                         });
@@ -70,7 +72,7 @@ public:
         link_.on_event({});
     }
 
-    bool busy() const { return pending_.has_value() || segmented_busy_; }
+    bool busy() const { return !in_flight_.empty() || segmented_busy_; }
     void require_idle() const {
         if (busy()) {
             throw std::logic_error("service::Client: an operation is already under way");
@@ -78,16 +80,17 @@ public:
     }
     const ClientSettings& settings() const { return settings_; }
 
-    // One frame and its answer: the answer's data when its error code is 0.
+    // One frame and its answer: the answer's data when its error code is 0. On v2 several may
+    // be in flight (a segmented write's window): the device answers them in order.
     void transact(const Request& request, AnswerCallback done) {
-        if (pending_) {
+        if (!in_flight_.empty() && settings_.protocol == Protocol::V1) {
             throw std::logic_error("service::Client: a request is already outstanding");
         }
         Frame frame = encode_request(request);
         const bool expect_answer =
             settings_.protocol == Protocol::V2 || answered_on_v1(frame.opcode);
-        pending_ = Pending{std::move(frame), expect_answer, 0, std::move(done)};
-        send_pending();
+        in_flight_.push_back(Pending{std::move(frame), expect_answer, 0, std::move(done)});
+        send(in_flight_.back());
     }
 
     void read_object(const ObjectAddress& object, Callback<std::array<std::uint8_t, 4>> done) {
@@ -165,9 +168,12 @@ private:
         Bytes data;
         Progress progress;
         std::size_t total = 0;
-        bool announced = false;   ///< a read: whether the device told `total`
-        std::size_t position = 0; ///< bytes written
-        bool toggle = false;      ///< the toggle of the next segment; the first carries 0
+        bool announced = false;             ///< a read: whether the device told `total`
+        std::size_t position = 0;           ///< bytes written (answered)
+        std::size_t sent = 0;               ///< a write: bytes sent
+        std::size_t outstanding = 0;        ///< a write: segments sent and not answered yet
+        std::optional<ClientError> failure; ///< a write: the first refusal
+        bool toggle = false;                ///< the toggle of the next segment; the first carries 0
     };
 
     void begin_segmented() { segmented_busy_ = true; }
@@ -213,44 +219,78 @@ private:
             });
     }
 
+    // Sends segments while the window has room: one at a time on v1 (its handshakes allow no
+    // more), kWriteWindow on v2, so that the line carries segments while the device answers the
+    // ones before (the device queues 16). The first refusal stops the sending; the transfer
+    // ends once every segment in flight is answered, so no answer is left for the next request.
     void write_next_segment(const std::shared_ptr<Transfer>& transfer, const Callback<Done>& done) {
-        const std::size_t length =
-            std::min(SegmentControl::kMaxLength, transfer->data.size() - transfer->position);
-        const auto first = transfer->data.begin() + static_cast<std::ptrdiff_t>(transfer->position);
-        const bool more = transfer->position + length < transfer->data.size();
-        SegmentWrite segment{
-            transfer->object.network,
-            SegmentControl{static_cast<std::uint8_t>(length), transfer->toggle, more},
-            Bytes(first, first + static_cast<std::ptrdiff_t>(length))};
-        transact(segment, [this, transfer, done, length, more](const ClientResult<Bytes>& answer) {
-            if (!answer) {
-                return end_segmented(done, answer.error());
-            }
-            transfer->position += length;
-            transfer->toggle = !transfer->toggle;
-            if (transfer->progress) {
-                transfer->progress(transfer->position, transfer->total);
-            }
-            if (!more) {
-                return end_segmented<Done>(done, Done{});
-            }
-            write_next_segment(transfer, done);
-        });
+        const std::size_t window = settings_.protocol == Protocol::V2 ? kWriteWindow : 1;
+        while (!transfer->failure && transfer->outstanding < window &&
+               transfer->sent < transfer->data.size()) {
+            send_segment(transfer, done);
+        }
     }
 
-    void send_pending() {
+    void send_segment(const std::shared_ptr<Transfer>& transfer, const Callback<Done>& done) {
+        const std::size_t length =
+            std::min(SegmentControl::kMaxLength, transfer->data.size() - transfer->sent);
+        const auto first = transfer->data.begin() + static_cast<std::ptrdiff_t>(transfer->sent);
+        const bool more = transfer->sent + length < transfer->data.size();
+        const bool toggle = transfer->toggle;
+        SegmentWrite segment{transfer->object.network,
+                             SegmentControl{static_cast<std::uint8_t>(length), toggle, more},
+                             Bytes(first, first + static_cast<std::ptrdiff_t>(length))};
+        transfer->sent += length;
+        transfer->toggle = !transfer->toggle;
+        ++transfer->outstanding;
+        transact(
+            segment, [this, transfer, done, length, toggle](const ClientResult<Bytes>& answer) {
+                --transfer->outstanding;
+                if (!transfer->failure) {
+                    if (!answer) {
+                        transfer->failure = answer.error();
+                    } else if (answer->empty() ||
+                               SegmentControl::decode(answer->front()).toggle != toggle) {
+                        transfer->failure = link_error("a SegmentWrite answer has a wrong toggle");
+                    } else {
+                        transfer->position += length;
+                        if (transfer->progress) {
+                            transfer->progress(transfer->position, transfer->total);
+                        }
+                    }
+                }
+                if (transfer->failure) {
+                    if (transfer->outstanding == 0) {
+                        end_segmented<Done>(done, *transfer->failure);
+                    }
+                    return;
+                }
+                if (transfer->position == transfer->data.size()) {
+                    return end_segmented<Done>(done, Done{});
+                }
+                write_next_segment(transfer, done);
+            });
+    }
+
+    void send(const Pending& request) {
         if (settings_.protocol == Protocol::V1) {
-            v1_->request(pending_->frame, pending_->expect_answer);
+            v1_->request(request.frame, request.expect_answer);
         } else {
-            link_.send(encode_v2(pending_->frame));
+            link_.send(encode_v2(request.frame));
         }
-        arm_timeout();
+        if (&request == &in_flight_.front()) {
+            arm_timeout();
+        }
     }
 
     // The device has answer_timeout to answer, plus the time the request and the longest
     // answer take on the line; each byte that arrives restarts it (a long answer on a slow line).
     void arm_timeout() {
-        const std::size_t bytes = 8 + 2 * pending_->frame.data.size() + kLongestAnswerBytes;
+        // The oldest request's answer comes first, after the requests in flight crossed the line.
+        std::size_t bytes = kLongestAnswerBytes;
+        for (const Pending& request : in_flight_) {
+            bytes += 8 + 2 * request.frame.data.size();
+        }
         const auto line_time = std::chrono::microseconds(
             bytes * 10 * 1'000'000 / std::max<std::uint32_t>(settings_.bits_per_second, 1));
         timeout_ = core::ScopedTimer(
@@ -263,13 +303,13 @@ private:
         } else {
             v2_->receive(bytes);
         }
-        if (pending_ && !retry_timer_.pending()) {
+        if (!in_flight_.empty() && !retry_timer_.pending()) {
             arm_timeout();
         }
     }
 
     void timed_out() {
-        if (!pending_) {
+        if (in_flight_.empty()) {
             return;
         }
         if (v1_) {
@@ -279,7 +319,14 @@ private:
         if (v2_->mid_frame()) {
             v2_->on_timeout();
         }
-        finish(no_answer());
+        // Without the oldest answer the later ones cannot be told apart: all are lost.
+        fail_in_flight(no_answer());
+    }
+
+    void fail_in_flight(const ClientError& error) {
+        while (!in_flight_.empty()) {
+            finish(error);
+        }
     }
 
     ClientError no_answer() const {
@@ -289,9 +336,10 @@ private:
     }
 
     void completed(const V1Completion& completion) {
-        if (!pending_) {
+        if (in_flight_.empty()) {
             return;
         }
+        Pending& pending = in_flight_.front();
         switch (completion.outcome) {
         case V1Outcome::Answered:
             return answered(*completion.answer);
@@ -300,11 +348,12 @@ private:
         case V1Outcome::DeviceNotReady:
         case V1Outcome::DeviceCrcError:
             // The device did not take the request: send it again a little later.
-            if (pending_->retries < settings_.retries) {
-                ++pending_->retries;
+            if (pending.retries < settings_.retries) {
+                ++pending.retries;
                 timeout_.cancel();
-                retry_timer_ = core::ScopedTimer(
-                    loop_, loop_.after(settings_.retry_delay, [this] { send_pending(); }));
+                retry_timer_ = core::ScopedTimer(loop_, loop_.after(settings_.retry_delay, [this] {
+                    send(in_flight_.front());
+                }));
                 return;
             }
             return finish(link_error(fmt::format(
@@ -321,7 +370,7 @@ private:
     }
 
     void answered(const Frame& frame) {
-        if (!pending_ || frame.opcode != kAnswerOpCode) {
+        if (in_flight_.empty() || frame.opcode != kAnswerOpCode) {
             return; // a late answer to a request that timed out, or a stray frame
         }
         const auto answer = decode_answer(frame);
@@ -335,12 +384,15 @@ private:
         finish(answer->data);
     }
 
-    // Idle before the callback, which may send the next request.
+    // Ends the oldest request in flight, before its callback, which may send the next one.
     void finish(ClientResult<Bytes> result) {
         timeout_.cancel();
         retry_timer_.cancel();
-        AnswerCallback done = std::move(pending_->done);
-        pending_.reset();
+        AnswerCallback done = std::move(in_flight_.front().done);
+        in_flight_.pop_front();
+        if (!in_flight_.empty()) {
+            arm_timeout();
+        }
         done(result);
     }
 
@@ -349,7 +401,7 @@ private:
     ClientSettings settings_;
     std::optional<V1HostLink> v1_;
     std::optional<V2Decoder> v2_;
-    std::optional<Pending> pending_;
+    std::deque<Pending> in_flight_; ///< oldest first: the order the device answers in
     bool segmented_busy_ = false;
     core::ScopedTimer timeout_;
     core::ScopedTimer retry_timer_;

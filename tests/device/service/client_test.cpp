@@ -8,6 +8,7 @@
 #include "eposp/device/service_port.hpp"
 #include "eposp/service/client.hpp"
 #include "eposp/service/crc.hpp"
+#include "eposp/service/v2_decoder.hpp"
 #include "eposp/service/v2_encoder.hpp"
 #include "eposp/vm/image_format.hpp"
 #include "memory_link_pair.hpp"
@@ -318,6 +319,60 @@ TEST(Client, ASegmentedReadTakesNoMoreThanTheAnnouncedLength) {
         EXPECT_EQ(requests, announced ? 3 : 1 + 16645); // the initiate and the segments
         EXPECT_FALSE(setup.client->busy());
     }
+}
+
+// On v2 a segmented write keeps 8 segments in flight (the device answers them in order).
+// A device that stops answering after the initiate sees exactly the window, then the client
+// times out.
+TEST(Client, AV2SegmentedWriteKeepsEightSegmentsInFlight) {
+    ClientWithoutDevice setup(Protocol::V2);
+    std::vector<std::uint8_t> opcodes;
+    V2Decoder decoder([&](const Frame& request) {
+        opcodes.push_back(request.opcode);
+        if (request.opcode == 0x13) { // only the initiate is answered
+            setup.device->send(encode_v2(encode_answer(Answer{})));
+        }
+    });
+    setup.device->on_receive([&](std::span<const std::uint8_t> bytes) { decoder.receive(bytes); });
+    std::optional<ClientResult<Done>> result;
+    setup.client->write_segmented(at(0x1F50, 1), std::vector<std::uint8_t>(2000, 0x90),
+                                  [&](const auto& done) { result.emplace(done); });
+    setup.loop.run_for(100ms);
+    EXPECT_EQ(opcodes.size(), 1u + 8u);
+    setup.loop.run_for(2s);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->error().kind, ClientError::Kind::NoAnswer);
+    EXPECT_FALSE(setup.client->busy());
+}
+
+// A segment refused while later ones are in flight ends the write with that refusal once
+// their answers are in, and sends nothing more: the next request gets its own answer.
+TEST(Client, ARefusedSegmentEndsAPipelinedWriteAndTheNextAnswerIsTheNextRequests) {
+    ClientWithoutDevice setup(Protocol::V2);
+    std::size_t segments = 0;
+    V2Decoder decoder([&](const Frame& request) {
+        Answer answer;
+        if (request.opcode == 0x15) {
+            const bool toggle = segments++ % 2 == 1;
+            answer.error = segments == 3 ? 0x08000020u : error::kNone;
+            answer.data = {SegmentControl{63, toggle, false}.encode()};
+        } else if (request.opcode == 0x10) {
+            answer.data = {0x34, 0x12, 0, 0};
+        }
+        setup.device->send(encode_v2(encode_answer(answer)));
+    });
+    setup.device->on_receive([&](std::span<const std::uint8_t> bytes) { decoder.receive(bytes); });
+    std::optional<ClientResult<Done>> result;
+    setup.client->write_segmented(at(0x1F50, 1), std::vector<std::uint8_t>(63 * 20, 1),
+                                  [&](const auto& done) { result.emplace(done); });
+    setup.loop.run_for(100ms);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->error().code, 0x08000020u);
+    EXPECT_LE(segments, 3u + 8u) << "nothing is sent after the refusal came";
+    EXPECT_FALSE(setup.client->busy());
+    const auto value = setup.read();
+    ASSERT_TRUE(value) << value.error().message;
+    EXPECT_EQ((*value)[0], 0x34);
 }
 
 TEST(Client, ALinkThatClosesEndsTheRequest) {
