@@ -17,7 +17,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "bench";
+constexpr std::string_view kBenchCommand = "bench";
 // Scans between two looks for Ctrl-C.
 constexpr std::int64_t kScansPerInterruptCheck = 1'000;
 
@@ -73,11 +73,11 @@ std::string bench_value(Plc& plc, const vm::Symbol& symbol) {
 int run_bench(const BenchOptions& options) {
     auto image = program_image(options.paths);
     if (!image) {
-        return report_user_error(kCommand, image.error());
+        return report_user_error(kBenchCommand, image.error());
     }
     const auto pacing = pacing_task(*image);
     if (!pacing) {
-        return report_user_error(kCommand, "the program has no cyclic task to scan");
+        return report_user_error(kBenchCommand, "the program has no cyclic task to scan");
     }
     vm::RuntimeConfig config;
     config.engine = options.engine;
@@ -85,7 +85,7 @@ int run_bench(const BenchOptions& options) {
     core::EventLoop loop(core::Pace::Virtual);
     Plc plc(loop, std::move(config));
     if (const auto error = plc.load(std::move(*image))) {
-        return report_user_error(kCommand, error->message);
+        return report_user_error(kBenchCommand, error->message);
     }
     const core::Duration interval(plc.image().tasks[*pacing].interval_ns);
     // The first scan runs at start(), the n-th one (n - 1) intervals later.
@@ -94,7 +94,7 @@ int run_bench(const BenchOptions& options) {
 
     const auto wall_start = std::chrono::steady_clock::now();
     if (const auto error = plc.runtime().start(vm::StartMode::Cold)) {
-        return report_user_error(kCommand, error->message);
+        return report_user_error(kBenchCommand, error->message);
     }
     // Ctrl-C ends a long benchmark early; the figures are those of the scans done by then.
     const bool interrupted =
@@ -104,7 +104,7 @@ int run_bench(const BenchOptions& options) {
     const std::uint64_t scans = plc.runtime().statistics(*pacing).cycles;
 
     if (plc.runtime().task_faulted(*pacing)) {
-        report_user_error(kCommand, plc.runtime().fault_text(*pacing));
+        report_user_error(kBenchCommand, plc.runtime().fault_text(*pacing));
         return kExitDeviceErrors; // the program ran into the fault: no figure to give
     }
     for (const vm::Symbol& symbol : plc.image().symbols) {

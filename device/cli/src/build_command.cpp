@@ -14,7 +14,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "build";
+constexpr std::string_view kBuildCommand = "build";
 
 struct BuildOptions {
     std::vector<std::string> paths;
@@ -25,7 +25,7 @@ struct BuildOptions {
 int run_build(const BuildOptions& options) {
     const auto image = compile_sources(options.paths);
     if (!image) {
-        return report_user_error(kCommand, image.error());
+        return report_user_error(kBuildCommand, image.error());
     }
     const std::string output =
         options.output.empty()
@@ -33,11 +33,11 @@ int run_build(const BuildOptions& options) {
             : options.output;
     if (auto problem = output_file_problem({"-o", output, OutputKind::ProgramImage}, options.paths,
                                            options.force)) {
-        return report_user_error(kCommand, *problem);
+        return report_user_error(kBuildCommand, *problem);
     }
     const auto bytes = vm::write_image(*image);
     if (auto error = core::write_file_durably(output, bytes)) {
-        return report_user_error(kCommand, error->message);
+        return report_user_error(kBuildCommand, error->message);
     }
     const auto count = [](std::size_t n, std::string_view what) {
         return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");

@@ -16,7 +16,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "bus";
+constexpr std::string_view kBusCommand = "bus";
 
 struct BusOptions {
     HostedBusOptions hosting;
@@ -29,11 +29,11 @@ int run_bus(const BusOptions& options) {
         inputs.push_back(*options.replay);
     }
     if (auto problem = hosted_bus_outputs_problem(options.hosting, inputs)) {
-        return report_user_error(kCommand, *problem);
+        return report_user_error(kBusCommand, *problem);
     }
     auto hosted = HostedBus::open(options.hosting);
     if (!hosted) {
-        return report_user_error(kCommand, hosted.error());
+        return report_user_error(kBusCommand, hosted.error());
     }
     HostedBus& host = **hosted;
 
@@ -41,13 +41,13 @@ int run_bus(const BusOptions& options) {
     if (options.replay) {
         auto records = can::read_candump_log_file(*options.replay);
         if (!records) {
-            return report_user_error(kCommand, records.error());
+            return report_user_error(kBusCommand, records.error());
         }
         // The reader skips lines that are not frames, as canplayer does; a file with no frame
         // at all is another kind of file given by mistake.
         std::error_code error;
         if (records->empty() && std::filesystem::file_size(*options.replay, error) > 0) {
-            return report_user_error(kCommand,
+            return report_user_error(kBusCommand,
                                      fmt::format("--replay {}: not a candump -L log (no line like "
                                                  "\"(1.000000) can0 123#DEADBEEF\")",
                                                  *options.replay));

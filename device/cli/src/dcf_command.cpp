@@ -18,7 +18,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "dcf";
+constexpr std::string_view kDcfCommand = "dcf";
 
 struct DcfOptions {
     std::string network;
@@ -53,18 +53,18 @@ std::optional<std::string> write_files(const std::vector<DcfFile>& files,
 
 int write_dcfs(const DcfOptions& options) {
     if (auto problem = input_file_problem(options.network, "a network file")) {
-        return report_user_error(kCommand, "--network " + *problem);
+        return report_user_error(kDcfCommand, "--network " + *problem);
     }
     auto network = load_network_file(options.network);
     if (!network) {
-        return report_user_error(kCommand, network.error());
+        return report_user_error(kDcfCommand, network.error());
     }
     const std::filesystem::path directory(options.directory);
     std::error_code error;
     std::filesystem::create_directories(directory, error);
     if (error || !std::filesystem::is_directory(directory)) {
         return report_user_error(
-            kCommand,
+            kDcfCommand,
             fmt::format("-o {}: not a directory the files can go into", options.directory));
     }
     EposPConfig config;
@@ -93,7 +93,7 @@ int write_dcfs(const DcfOptions& options) {
         }
     }
     if (auto problem = write_files(files, options)) {
-        return report_user_error(kCommand, *problem);
+        return report_user_error(kDcfCommand, *problem);
     }
     return 0;
 }

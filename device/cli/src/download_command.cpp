@@ -21,7 +21,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "download";
+constexpr std::string_view kDownloadCommand = "download";
 
 struct DownloadOptions {
     ServiceClientOptions link;
@@ -103,7 +103,7 @@ public:
         if (connection_.interrupted()) {
             return kExitInterrupted;
         }
-        return report_user_error(kCommand, fmt::format("{}: {}", doing, error.message));
+        return report_user_error(kDownloadCommand, fmt::format("{}: {}", doing, error.message));
     }
 
     int run(const DownloadOptions& options, std::vector<std::uint8_t> image) {
@@ -165,7 +165,7 @@ private:
                 ? fmt::format("flash status 0x1F57 = 0x{:X}: {}", flash, flash_status_text(flash))
                 : fmt::format("0x1F57 unreadable: {}", status.error().message);
         return report_user_error(
-            kCommand, fmt::format("the device refused the program: {} ({})", error.message, why));
+            kDownloadCommand, fmt::format("the device refused the program: {} ({})", error.message, why));
     }
 
     service::ObjectAddress at(std::uint16_t index, std::uint8_t sub_index) const {
@@ -179,11 +179,11 @@ private:
 int download(const DownloadOptions& options) {
     const auto image = program_image(options.files);
     if (!image) {
-        return report_user_error(kCommand, image.error());
+        return report_user_error(kDownloadCommand, image.error());
     }
     auto connection = ServiceConnection::open(options.link);
     if (!connection) {
-        return report_user_error(kCommand, connection.error());
+        return report_user_error(kDownloadCommand, connection.error());
     }
     return Download(**connection, options.target).run(options, vm::write_image(*image));
 }

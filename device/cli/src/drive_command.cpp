@@ -18,7 +18,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "drive epos2";
+constexpr std::string_view kDriveCommand = "drive epos2";
 
 struct DriveOptions {
     HostedBusOptions hosting;
@@ -30,12 +30,12 @@ struct DriveOptions {
 int run_drive(const DriveOptions& options) {
     if (options.hosting.virtual_time && !options.hosting.duration) {
         // The drive's control loop never idles: a virtual run needs an end.
-        return report_user_error(kCommand, "--virtual needs --for DURATION");
+        return report_user_error(kDriveCommand, "--virtual needs --for DURATION");
     }
     std::vector<std::string> inputs;
     if (!options.config.empty()) {
         if (auto problem = input_file_problem(options.config, "a machine's YAML file")) {
-            return report_user_error(kCommand, "--config " + *problem);
+            return report_user_error(kDriveCommand, "--config " + *problem);
         }
         inputs.push_back(options.config);
     }
@@ -43,17 +43,17 @@ int run_drive(const DriveOptions& options) {
     const auto stored =
         stored_parameters_file(options.state_dir, fmt::format("epos2-{}", options.node_id));
     if (!stored) {
-        return report_user_error(kCommand, stored.error());
+        return report_user_error(kDriveCommand, stored.error());
     }
     const std::string& parameter_file = *stored;
     if (auto problem =
             output_file_problem({"--state-dir", parameter_file, OutputKind::ParameterFile}, inputs,
                                 options.hosting.force)) {
-        return report_user_error(kCommand, *problem);
+        return report_user_error(kDriveCommand, *problem);
     }
     inputs.push_back(parameter_file);
     if (auto problem = hosted_bus_outputs_problem(options.hosting, inputs)) {
-        return report_user_error(kCommand, *problem);
+        return report_user_error(kDriveCommand, *problem);
     }
     drives::epos2::Epos2DriveConfig config;
     config.dictionary.node_id = static_cast<canopen::NodeId>(options.node_id);
@@ -61,13 +61,13 @@ int run_drive(const DriveOptions& options) {
     if (!options.config.empty()) {
         auto axis = drives::plant::load_axis_file(options.config);
         if (!axis) {
-            return report_user_error(kCommand, axis.error());
+            return report_user_error(kDriveCommand, axis.error());
         }
         config.axis = std::move(*axis);
     }
     auto hosted = HostedBus::open(options.hosting);
     if (!hosted) {
-        return report_user_error(kCommand, hosted.error());
+        return report_user_error(kDriveCommand, hosted.error());
     }
     HostedBus& host = **hosted;
 

@@ -22,7 +22,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "node";
+constexpr std::string_view kNodeCommand = "node";
 
 struct NodeOptions {
     HostedBusOptions hosting;
@@ -122,32 +122,32 @@ std::optional<std::string> files_problem(const NodeOptions& options,
 int run_node(const NodeOptions& options) {
     const auto parameters = parameter_file(options);
     if (!parameters) {
-        return report_user_error(kCommand, parameters.error());
+        return report_user_error(kNodeCommand, parameters.error());
     }
     if (auto problem = files_problem(options, *parameters)) {
-        return report_user_error(kCommand, *problem);
+        return report_user_error(kNodeCommand, *problem);
     }
     const auto text = read_text_file(options.eds);
     if (!text) {
-        return report_user_error(kCommand, text.error());
+        return report_user_error(kNodeCommand, text.error());
     }
     auto eds =
         canopen::import_eds(*text, options.eds, static_cast<canopen::NodeId>(options.node_id));
     if (!eds) {
-        return report_user_error(kCommand, eds.error());
+        return report_user_error(kNodeCommand, eds.error());
     }
     // The import tolerates missing sections; a file without any object is not a device's EDS
     // (CiA 306 4.6.1: [MandatoryObjects] lists at least 0x1000, 0x1001 and 0x1018).
     if (eds->dictionary.objects().empty()) {
         return report_user_error(
-            kCommand, fmt::format("{}: lists no object ([MandatoryObjects], [OptionalObjects] and "
+            kNodeCommand, fmt::format("{}: lists no object ([MandatoryObjects], [OptionalObjects] and "
                                   "[ManufacturerObjects] are missing or empty)",
                                   options.eds));
     }
     make_parameters_persistent(eds->dictionary);
     auto hosted = HostedBus::open(options.hosting);
     if (!hosted) {
-        return report_user_error(kCommand, hosted.error());
+        return report_user_error(kNodeCommand, hosted.error());
     }
     HostedBus& host = **hosted;
 

@@ -17,7 +17,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "od";
+constexpr std::string_view kOdCommand = "od";
 /// CiA 301: the value is longer than ReadObject's 4 bytes.
 constexpr std::uint32_t kLengthTooHigh = 0x06070012;
 
@@ -81,7 +81,7 @@ int exit_code_for(const ServiceConnection& connection, const service::ClientErro
     if (connection.interrupted()) {
         return kExitInterrupted;
     }
-    return report_user_error(kCommand, error.message);
+    return report_user_error(kOdCommand, error.message);
 }
 
 core::Result<std::unique_ptr<ServiceConnection>> open(const OdOptions& options) {
@@ -96,11 +96,11 @@ bool is_printable(std::span<const std::uint8_t> bytes) {
 int read_command(const OdOptions& options) {
     const auto name = parse_object_name(options);
     if (!name) {
-        return report_user_error(kCommand, name.error());
+        return report_user_error(kOdCommand, name.error());
     }
     auto connection = open(options);
     if (!connection) {
-        return report_user_error(kCommand, connection.error());
+        return report_user_error(kOdCommand, connection.error());
     }
     ValueType type = value_type(options, *name);
     const auto address = object_address(options.target, name->index, name->sub_index);
@@ -120,16 +120,16 @@ int read_command(const OdOptions& options) {
 int write_command(const OdOptions& options) {
     const auto name = parse_object_name(options);
     if (!name) {
-        return report_user_error(kCommand, name.error());
+        return report_user_error(kOdCommand, name.error());
     }
     const ValueType type = value_type(options, *name);
     const auto bytes = encode_value(type, options.value);
     if (!bytes) {
-        return report_user_error(kCommand, fmt::format("VALUE: {}", bytes.error()));
+        return report_user_error(kOdCommand, fmt::format("VALUE: {}", bytes.error()));
     }
     auto connection = open(options);
     if (!connection) {
-        return report_user_error(kCommand, connection.error());
+        return report_user_error(kOdCommand, connection.error());
     }
     const auto address = object_address(options.target, name->index, name->sub_index);
     service::ClientResult<service::Done> written = service::Done{};
@@ -162,7 +162,7 @@ std::string table_value(ValueType type, std::span<const std::uint8_t> value) {
 int dump_command(const OdOptions& options) {
     auto connection = open(options);
     if (!connection) {
-        return report_user_error(kCommand, connection.error());
+        return report_user_error(kOdCommand, connection.error());
     }
     const EposPDictionary dictionary(EposPDictionaryConfig{});
     fmt::print("{:<6}  {:>3}  {:<40}  {}\n", "index", "sub", "name", "value");

@@ -15,7 +15,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "run";
+constexpr std::string_view kRunCommand = "run";
 constexpr core::Duration kDefaultDuration = std::chrono::seconds(10);
 // How often a run looks for Ctrl-C: a few milliseconds of wall time for a networked device.
 constexpr core::Duration kInterruptCheck = std::chrono::milliseconds(100);
@@ -28,11 +28,11 @@ struct RunOptions {
 int run_program(const RunOptions& options) {
     auto session = DeviceSession::open(options.session, core::Pace::Virtual);
     if (!session) {
-        return report_user_error(kCommand, session.error());
+        return report_user_error(kRunCommand, session.error());
     }
     EposP& device = (*session)->device();
     if (const auto error = (*session)->start()) {
-        return report_user_error(kCommand, error->message);
+        return report_user_error(kRunCommand, error->message);
     }
     const core::TimePoint started = device.loop().now();
     const core::Duration duration = options.duration.value_or(kDefaultDuration);
@@ -45,7 +45,7 @@ int run_program(const RunOptions& options) {
     } else {
         fmt::print("ran {} of virtual time\n", core::format_duration(duration));
     }
-    const int exit_code = (*session)->finish(kCommand);
+    const int exit_code = (*session)->finish(kRunCommand);
     return interrupted ? kExitInterrupted : exit_code;
 }
 

@@ -28,7 +28,7 @@
 namespace eposp::device::cli {
 namespace {
 
-constexpr std::string_view kCommand = "serve";
+constexpr std::string_view kServeCommand = "serve";
 
 struct ServeOptions {
     SessionOptions session;
@@ -120,16 +120,16 @@ core::Result<OutsideWorld> open_outside_world(const ServeOptions& options, EposP
 int serve(const ServeOptions& options) {
     auto session = DeviceSession::open(options.session, core::Pace::RealTime);
     if (!session) {
-        return report_user_error(kCommand, session.error());
+        return report_user_error(kServeCommand, session.error());
     }
     EposP& device = (*session)->device();
     auto world = open_outside_world(options, device);
     if (!world) {
-        return report_user_error(kCommand, world.error());
+        return report_user_error(kServeCommand, world.error());
     }
     std::fflush(stdout);
     if (const auto error = (*session)->start()) {
-        return report_user_error(kCommand, error->message);
+        return report_user_error(kServeCommand, error->message);
     }
     const core::TimePoint started = device.loop().now();
     if (run_until_done(device.loop(), options.duration) == RunEnd::Interrupted) {
@@ -138,7 +138,7 @@ int serve(const ServeOptions& options) {
     fmt::print("served {} in real time\n",
                core::format_duration(
                    std::chrono::round<std::chrono::milliseconds>(device.loop().now() - started)));
-    return (*session)->finish(kCommand);
+    return (*session)->finish(kServeCommand);
 }
 
 } // namespace

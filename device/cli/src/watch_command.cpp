@@ -20,7 +20,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
-constexpr std::string_view kCommand = "watch";
+constexpr std::string_view kWatchCommand = "watch";
 constexpr std::uint8_t kPathSub = 1;
 constexpr std::uint8_t kValueSub = 2;
 constexpr std::uint8_t kForceSub = 3;
@@ -126,23 +126,23 @@ int watch(const WatchOptions& options) {
         for (const std::string& text : list) {
             if (!assignment(text)) {
                 return report_user_error(
-                    kCommand, fmt::format("'{}' is not PATH=VALUE", terminal_text(text)));
+                    kWatchCommand, fmt::format("'{}' is not PATH=VALUE", terminal_text(text)));
             }
         }
     }
     if (options.paths.empty() && options.writes.empty() && options.forces.empty() &&
         options.unforces.empty()) {
-        return report_user_error(kCommand, "name a variable to watch (e.g. Main.counter), or "
+        return report_user_error(kWatchCommand, "name a variable to watch (e.g. Main.counter), or "
                                            "--write, --force or --unforce");
     }
     auto connection = ServiceConnection::open(options.link);
     if (!connection) {
-        return report_user_error(kCommand, connection.error());
+        return report_user_error(kWatchCommand, connection.error());
     }
     Watch watch(**connection, options.target);
     const auto failed = [&](const std::string& message) {
         return (*connection)->interrupted() ? kExitInterrupted
-                                            : report_user_error(kCommand, message);
+                                            : report_user_error(kWatchCommand, message);
     };
     for (const std::string& text : options.writes) {
         // Named, not a structured binding: clang 14 cannot capture those in a lambda.
@@ -191,7 +191,7 @@ int watch(const WatchOptions& options) {
             if (!value) {
                 return (*connection)->interrupted()
                            ? interrupted
-                           : report_user_error(kCommand,
+                           : report_user_error(kWatchCommand,
                                                fmt::format("{}: {}", terminal_text(path),
                                                            Watch::explain(value.error())));
             }
