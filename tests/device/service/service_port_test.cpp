@@ -234,5 +234,35 @@ TEST(ServicePortGateway, ReadsAnExternalEpos2AndSendsItNmtThroughTheLink) {
     EXPECT_EQ(device.simulated_slaves()[0]->node().nmt_state(), canopen::NmtState::Stopped);
 }
 
+// v1 sends no answer to SendNMTService: the exchange ends with the device's second 'O', and
+// the command still reaches the node.
+TEST(ServicePortGateway, AnNmtCommandOverRs232IsTakenWithoutAnAnswer) {
+    EposP device;
+    auto network = parse_network_file("slaves:\n  - {node: 3, kind: epos2}\n", "net.yaml");
+    ASSERT_TRUE(network) << network.error();
+    device.add_network(*network);
+    device.boot_networks();
+    device.loop().run_for(2s);
+    auto [host, device_side] = MemoryLink::pair(device.loop());
+    ServicePort port(device, std::move(device_side), ServiceProtocol::Rs232);
+    std::optional<service::V1Completion> completion;
+    service::V1HostLink v1([&host](std::span<const std::uint8_t> b) { host->send(b); },
+                           [&completion](const service::V1Completion& c) { completion = c; });
+    host->on_receive([&v1](std::span<const std::uint8_t> bytes) { v1.receive(bytes); });
+    v1.request(service::encode_request(service::SendNmtService{std::nullopt, 3, 0x02}),
+               /*expect_answer=*/false);
+    device.loop().run_for(20ms);
+    ASSERT_TRUE(completion);
+    EXPECT_EQ(completion->outcome, service::V1Outcome::Sent);
+    EXPECT_EQ(device.simulated_slaves()[0]->node().nmt_state(), canopen::NmtState::Stopped);
+    EXPECT_EQ(port.counters().answers, 0u);
+    // The link is free for the next request.
+    completion.reset();
+    v1.request(service::encode_request(service::ReadObject{{std::nullopt, 0, 0x1000, 0}}));
+    device.loop().run_for(20ms);
+    ASSERT_TRUE(completion);
+    EXPECT_EQ(completion->outcome, service::V1Outcome::Answered);
+}
+
 } // namespace
 } // namespace eposp::device
