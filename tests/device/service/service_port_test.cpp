@@ -208,14 +208,30 @@ TEST(ServicePortUsb, RequestsSentBackToBackAreAnsweredInOrder) {
     EXPECT_EQ(service::decode_answer(answers[3])->error, 0x06020000u);
 }
 
-TEST(ServicePortGateway, ReadsAnExternalEpos2AndSendsItNmtThroughTheLink) {
+// An EPOS P with a simulated EPOS2 (node 3) on its CAN bus, booted, and a service port on a
+// memory link.
+class ServicePortGateway : public testing::Test {
+protected:
+    void SetUp() override {
+        auto network = parse_network_file("slaves:\n  - {node: 3, kind: epos2}\n", "net.yaml");
+        ASSERT_TRUE(network) << network.error();
+        device.add_network(*network);
+        device.boot_networks();
+        device.loop().run_for(2s);
+        auto [host_end, device_end] = MemoryLink::pair(device.loop());
+        host = std::move(host_end);
+        device_side = std::move(device_end);
+    }
+    canopen::NmtState slave_state() const {
+        return device.simulated_slaves()[0]->node().nmt_state();
+    }
+
     EposP device;
-    auto network = parse_network_file("slaves:\n  - {node: 3, kind: epos2}\n", "net.yaml");
-    ASSERT_TRUE(network) << network.error();
-    device.add_network(*network);
-    device.boot_networks();
-    device.loop().run_for(2s);
-    auto [host, device_side] = MemoryLink::pair(device.loop());
+    std::unique_ptr<MemoryLink> host;
+    std::unique_ptr<MemoryLink> device_side; ///< for the port a test opens
+};
+
+TEST_F(ServicePortGateway, ReadsAnExternalEpos2AndSendsItNmtThroughTheLink) {
     ServicePort port(device, std::move(device_side), ServiceProtocol::Usb);
     std::vector<service::Frame> answers;
     service::V2Decoder decoder([&answers](const service::Frame& f) { answers.push_back(f); });
@@ -231,22 +247,15 @@ TEST(ServicePortGateway, ReadsAnExternalEpos2AndSendsItNmtThroughTheLink) {
     EXPECT_EQ(vendor->error, 0u);
     EXPECT_EQ(canopen::decode<std::uint32_t>(vendor->data), 0xFBu); // maxon's vendor-ID
     EXPECT_EQ(service::decode_answer(answers[1])->error, 0u);
-    EXPECT_EQ(device.simulated_slaves()[0]->node().nmt_state(), canopen::NmtState::Stopped);
+    EXPECT_EQ(slave_state(), canopen::NmtState::Stopped);
 }
 
 // v1 sends no answer to SendNMTService: the exchange ends with the device's second 'O', and
 // the command still reaches the node.
-TEST(ServicePortGateway, AnNmtCommandOverRs232IsTakenWithoutAnAnswer) {
-    EposP device;
-    auto network = parse_network_file("slaves:\n  - {node: 3, kind: epos2}\n", "net.yaml");
-    ASSERT_TRUE(network) << network.error();
-    device.add_network(*network);
-    device.boot_networks();
-    device.loop().run_for(2s);
-    auto [host, device_side] = MemoryLink::pair(device.loop());
+TEST_F(ServicePortGateway, AnNmtCommandOverRs232IsTakenWithoutAnAnswer) {
     ServicePort port(device, std::move(device_side), ServiceProtocol::Rs232);
     std::optional<service::V1Completion> completion;
-    service::V1HostLink v1([&host](std::span<const std::uint8_t> b) { host->send(b); },
+    service::V1HostLink v1([this](std::span<const std::uint8_t> b) { host->send(b); },
                            [&completion](const service::V1Completion& c) { completion = c; });
     host->on_receive([&v1](std::span<const std::uint8_t> bytes) { v1.receive(bytes); });
     v1.request(service::encode_request(service::SendNmtService{std::nullopt, 3, 0x02}),
@@ -254,7 +263,7 @@ TEST(ServicePortGateway, AnNmtCommandOverRs232IsTakenWithoutAnAnswer) {
     device.loop().run_for(20ms);
     ASSERT_TRUE(completion);
     EXPECT_EQ(completion->outcome, service::V1Outcome::Sent);
-    EXPECT_EQ(device.simulated_slaves()[0]->node().nmt_state(), canopen::NmtState::Stopped);
+    EXPECT_EQ(slave_state(), canopen::NmtState::Stopped);
     EXPECT_EQ(port.counters().answers, 0u);
     // The link is free for the next request.
     completion.reset();
