@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <iterator>
 #include <memory>
+#include <regex>
 
 namespace eposp::device {
 namespace {
@@ -426,6 +427,38 @@ TEST(ProgramDownload, ServeStartsTheProgramStoredInItsStateDirectory) {
         eposp("serve --state-dir " + directory.string() + " --network " + network + " --for 1ms");
     EXPECT_EQ(refused.exit_code, 1) << refused.output;
     EXPECT_THAT(refused.output, ::testing::HasSubstr("event task OnSync: the program has no such"));
+}
+
+// `eposp serve` keeps the EPOS P's memory without --state-dir too, as a device does: in
+// $XDG_STATE_HOME/eposp/epos-p (run_command points it at the test's directory), with the RETAIN
+// variables, so that a warm start after a restart goes on counting.
+TEST(ProgramDownload, ServeKeepsProgramAndRetainInTheDefaultStateDirectory) {
+    const std::filesystem::path directory = test::test_file("xdg-state") / "eposp" / "epos-p";
+    std::filesystem::create_directories(directory);
+    {
+        EposPConfig config;
+        config.program_file = directory / "program.epx";
+        config.parameter_file = directory / "parameters.bin";
+        EposP device(config);
+        ASSERT_EQ(device.objects().write(kProgramDataIndex, 1, image_of(kCounter)),
+                  AbortCode::None);
+        ASSERT_EQ(
+            device.objects().write(kProgramControlIndex, 0, canopen::encode(std::uint16_t{2})),
+            AbortCode::None); // warm
+        ASSERT_EQ(write_u32(device, 0x1010, 1, canopen::kSaveSignature), AbortCode::None);
+    }
+    const auto kept_after = [](const std::string& output) {
+        std::smatch match;
+        EXPECT_TRUE(std::regex_search(output, match, std::regex("Main.kept = ([0-9]+)"))) << output;
+        return match.empty() ? 0L : std::stol(match[1]);
+    };
+    const auto first = eposp("serve --for 300ms --watch Main.kept");
+    ASSERT_EQ(first.exit_code, 0) << first.output;
+    const auto second = eposp("serve --for 300ms --watch Main.kept");
+    ASSERT_EQ(second.exit_code, 0) << second.output;
+    EXPECT_GT(kept_after(first.output), 0);
+    EXPECT_GT(kept_after(second.output), kept_after(first.output));
+    EXPECT_TRUE(std::filesystem::exists(directory / "retain.bin"));
 }
 
 TEST(VariableAccess, ReadsWritesForcesAndUnforcesByPath) {

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <tuple>
+#include <vector>
 
 namespace eposp::device::cli {
 namespace {
@@ -156,15 +157,23 @@ void print_boot_report(const EposP& device, const NetworkFile& network) {
     }
 }
 
-// --state-dir: the program store and the parameter file of the EPOS P, neither of them an input.
+// --state-dir: the EPOS P's non-volatile memory (the program store, the parameter file and,
+// unless --retain names another, the retain store), none of them an input.
 std::optional<core::Error> use_state_directory(const SessionOptions& options, EposPConfig& config) {
     auto program = stored_program_file(options.state_dir, "epos-p");
     auto parameters = stored_parameters_file(options.state_dir, "epos-p");
-    if (!program || !parameters) {
-        return core::Error{"--state-dir: " + (program ? parameters.error() : program.error())};
+    auto retain = stored_retain_file(options.state_dir, "epos-p");
+    for (const auto* file : {&program, &parameters, &retain}) {
+        if (!*file) {
+            return core::Error{"--state-dir: " + file->error()};
+        }
     }
-    const OutputFile outputs[] = {{"--state-dir", *program, OutputKind::ProgramImage},
-                                  {"--state-dir", *parameters, OutputKind::ParameterFile}};
+    std::vector<OutputFile> outputs{{"--state-dir", *program, OutputKind::ProgramImage},
+                                    {"--state-dir", *parameters, OutputKind::ParameterFile}};
+    if (!options.retain_file) {
+        outputs.push_back({"--state-dir", *retain, OutputKind::RetainStore});
+        config.runtime.retain_file = *retain;
+    }
     if (auto problem = output_files_problem(outputs, options.paths, options.force)) {
         return core::Error{*problem};
     }
@@ -240,9 +249,13 @@ void add_session_options(CLI::App& command, SessionOptions& options, bool progra
     command.add_option("--retain", options.retain_file,
                        "File the RETAIN variables are kept in between runs");
     command.add_option("--state-dir", options.state_dir,
-                       "Directory of the EPOS P's non-volatile memory: the program downloaded to "
-                       "0x1F50 (program.epx) and the parameters of 0x1010 \"save\" "
-                       "(parameters.bin); without it they live in memory only");
+                       std::string("Directory of the EPOS P's non-volatile memory: the program "
+                                   "downloaded to 0x1F50 (program.epx), the parameters of 0x1010 "
+                                   "\"save\" (parameters.bin) and the RETAIN variables "
+                                   "(retain.bin, unless --retain); ") +
+                           (options.state_by_default ? "default $XDG_STATE_HOME/eposp/epos-p or "
+                                                       "~/.local/state/eposp/epos-p"
+                                                     : "without it they live in memory only"));
     command.add_option("--start", options.start, "Start mode: cold, warm or hot")
         ->check(CLI::IsMember({"cold", "warm", "hot"}))
         ->capture_default_str();
@@ -301,7 +314,7 @@ core::Result<std::unique_ptr<DeviceSession>> DeviceSession::open(const SessionOp
         config.external_bit_rate = network->bit_rate;
         config.node_id = network->node_id;
     }
-    if (options.state_dir) {
+    if (options.state_dir || options.state_by_default) {
         if (auto error = use_state_directory(options, config)) {
             return *error;
         }

@@ -34,6 +34,9 @@ struct SessionOptions {
     /// The EPOS P's non-volatile memory: the downloaded program and the saved parameters are
     /// kept there across runs; without it they live in memory only.
     std::optional<std::string> state_dir;
+    /// `eposp serve`: without --state-dir the EPOS P keeps its memory in its default state
+    /// directory, as a device keeps its program over a power cycle; `eposp run` keeps none.
+    bool state_by_default = false;
 };
 
 /// Adds FILES (required or not) and the options of SessionOptions to `command`.

@@ -147,6 +147,7 @@ void add_serve_command(CLI::App& app, int& exit_code) {
     auto options = std::make_shared<ServeOptions>();
     CLI::App* command = app.add_subcommand(
         "serve", "Run the EPOS P in real time with its CAN bus open to outside tools and drives");
+    options->session.state_by_default = true;
     add_session_options(*command, options->session, false);
     command->add_option("--socketcand", options->socketcand,
                         "Serve port 2 by the socketcand protocol on HOST:PORT "

@@ -27,6 +27,7 @@ core::Result<std::filesystem::path> default_state_home() {
 
 constexpr std::string_view kParameterFileName = "parameters.bin";
 constexpr std::string_view kProgramFileName = "program.epx";
+constexpr std::string_view kRetainFileName = "retain.bin";
 
 core::Result<std::filesystem::path> state_directory(const std::optional<std::string>& state_dir,
                                                     std::string_view device) {
@@ -68,6 +69,11 @@ core::Result<std::string> stored_parameters_file(const std::optional<std::string
 core::Result<std::string> stored_program_file(const std::optional<std::string>& state_dir,
                                               std::string_view device) {
     return state_file(state_dir, device, kProgramFileName);
+}
+
+core::Result<std::string> stored_retain_file(const std::optional<std::string>& state_dir,
+                                             std::string_view device) {
+    return state_file(state_dir, device, kRetainFileName);
 }
 
 void add_state_dir_option(CLI::App& command, std::optional<std::string>& state_dir,

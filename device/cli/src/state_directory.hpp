@@ -23,6 +23,11 @@ core::Result<std::string> stored_parameters_file(const std::optional<std::string
 core::Result<std::string> stored_program_file(const std::optional<std::string>& state_dir,
                                               std::string_view device);
 
+/// The file that holds the EPOS P's RETAIN variables between power cycles (the retain store):
+/// retain.bin in the state directory of `stored_parameters_file`, which is created.
+core::Result<std::string> stored_retain_file(const std::optional<std::string>& state_dir,
+                                             std::string_view device);
+
 /// Adds `--state-dir DIR`, naming the default `device` gets.
 void add_state_dir_option(CLI::App& command, std::optional<std::string>& state_dir,
                           std::string_view device);
