@@ -1,6 +1,7 @@
 // `eposp download`, `eposp od` and `eposp watch` as a user runs them: against `eposp serve` on
 // its RS-232 pseudo-terminal (maxon serial v1) and on its USB one (v2), in another process.
 #include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/test/test_directory.hpp"
 #include "eposp_command.hpp"
 
 #include <gmock/gmock.h>
@@ -74,6 +75,17 @@ TEST_P(ServiceClients, OdReadsAndWritesObjectsAndSaysWhyAnAccessIsRefused) {
     EXPECT_THAT(result.output, HasSubstr("0x1008 sub 0: EPOS P\n"));
     EXPECT_THAT(result.output,
                 HasSubstr("eposp od: error: 0x06020000 Object does not exist Error\nrefused: 1"));
+}
+
+// The store signature is written as a tool writes it: "save" (CiA 301 0x1010); the served
+// EPOS P keeps the parameters in its state directory (the test's $XDG_STATE_HOME).
+TEST_P(ServiceClients, OdSavesTheParametersWithTheSignatureAsText) {
+    const auto result = with_served_port(GetParam(), client("od") + " write 0x1010 1 save",
+                                         std::string("save-") + GetParam().protocol);
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("0x1010 sub 1 := 1702257011 (0x65766173)\n"));
+    EXPECT_TRUE(std::filesystem::exists(test::test_file("xdg-state") / "eposp" / "epos-p" /
+                                        "parameters.bin"));
 }
 
 TEST_P(ServiceClients, DownloadStartsTheProgramAndWatchSeesItRun) {

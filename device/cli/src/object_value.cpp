@@ -2,7 +2,9 @@
 
 #include "terminal_text.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <fmt/format.h>
 #include <limits>
@@ -154,6 +156,13 @@ core::Result<std::vector<std::uint8_t>> encode_value(ValueType type, std::string
         return bytes;
     }
     const auto value = parse_integer(text);
+    // CiA 301's signatures of 0x1010 / 0x1011 ("save", "load") and the EPOS P's "eras" are four
+    // letters stored as a 32-bit value, first letter in the low byte.
+    if (!value && type == ValueType::U32 && text.size() == 4 &&
+        std::ranges::all_of(text,
+                            [](char c) { return std::isalpha(static_cast<unsigned char>(c)); })) {
+        return std::vector<std::uint8_t>(text.begin(), text.end());
+    }
     const unsigned bits = static_cast<unsigned>(8 * entry.size);
     const std::int64_t lowest = entry.is_signed ? -(std::int64_t{1} << (bits - 1)) : 0;
     const std::int64_t highest =

@@ -27,7 +27,8 @@ bool fits_one_request(ValueType type);
 /// `405 (0x00000195)`, `-3`, the text, or `01 02 ff`.
 std::string format_value(ValueType type, std::span<const std::uint8_t> bytes);
 /// The bytes of VALUE as `type`: an integer in decimal or 0x hexadecimal within the type's
-/// range, the text itself, or hexadecimal bytes (`01 02 ff` or `0102ff`).
+/// range (a 32-bit one also as four letters, the store / restore signatures `save`, `load`,
+/// `eras`), the text itself, or hexadecimal bytes (`01 02 ff` or `0102ff`).
 core::Result<std::vector<std::uint8_t>> encode_value(ValueType type, std::string_view text);
 
 /// A number in decimal or with 0x in `[0, highest]` ("0x1F50", "8016").
