@@ -12,6 +12,7 @@
 #include "eposp/vm/image_format.hpp"
 #include "eposp_command.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -181,7 +182,7 @@ INSTANTIATE_TEST_SUITE_P(
                                    3},
                       RefusedImage{"Truncated",
                                    [](canopen::Bytes image) {
-                                       image.resize(image.size() - 7);
+                                       image.resize(std::max<std::size_t>(image.size(), 7) - 7);
                                        return image;
                                    },
                                    3},
