@@ -11,7 +11,6 @@ namespace {
 
 using service::Answer;
 
-constexpr std::uint16_t kHighestNodeId = 127;
 constexpr std::uint16_t kHighestBaseId = 0x7FF;
 
 Answer answer(canopen::AbortCode abort) {
@@ -77,7 +76,7 @@ void CanGateway::end_wait() {
 
 void CanGateway::send_nmt(const service::SendNmtService& request, Done done) {
     NetworkPort* port = resolve_port(parts_, request.network);
-    if (!port || request.node > kHighestNodeId) {
+    if (!port || request.node > canopen::kMaxNodeId) {
         return done(answer(service::error::kWrongNodeId));
     }
     if (!valid_nmt_command(request.command)) {

@@ -1,16 +1,15 @@
 #include "service_target.hpp"
 
 #include "../network_port.hpp"
+#include "eposp/canopen/nmt_protocol.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
 
 namespace eposp::device {
 namespace {
 
-constexpr canopen::NodeId kHighestNodeId = 127;
-
 ResolvedTarget node_on(NetworkPort& port, std::uint8_t node) {
-    if (node == 0 || node > kHighestNodeId) {
+    if (node == 0 || node > canopen::kMaxNodeId) {
         return {std::nullopt, service::error::kWrongNodeId};
     }
     return {ServiceTarget{&port, node}, service::error::kNone};

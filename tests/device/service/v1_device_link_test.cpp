@@ -3,6 +3,7 @@
 
 #include "eposp/service/v1_device_link.hpp"
 #include "random_frame.hpp"
+#include "v1_vectors.hpp"
 
 #include <gtest/gtest.h>
 #include <stdexcept>
@@ -13,10 +14,10 @@ namespace {
 using test::Bytes;
 using test::bytes;
 
-const Frame kReadStatusword{0x10, bytes({0x41, 0x60, 0x00, 0x00})};
-const Bytes kReadStatuswordRest = bytes({0x01, 0x41, 0x60, 0x00, 0x00, 0x9A, 0xC3});
-const Frame kAnswer{0x00, bytes({0, 0, 0, 0, 0x37, 0x06, 0, 0})};
-const Bytes kAnswerRest = bytes({0x03, 0x00, 0x00, 0x00, 0x00, 0x37, 0x06, 0x00, 0x00, 0xE8, 0x4A});
+using test::kAnswer;
+using test::kAnswerRest;
+using test::kReadStatusword;
+using test::kReadStatuswordRest;
 
 // A device link whose output and requests are recorded; the test plays the host.
 struct Device {
