@@ -62,5 +62,35 @@ function(eposp_add_test_suite folder)
         DEPENDS ${ARG_DEPENDS} eposp::test_directory GTest::gtest_main GTest::gmock)
     target_compile_definitions(${target} PRIVATE
         EPOSP_SOURCE_DIR="${PROJECT_SOURCE_DIR}" EPOSP_BINARY_DIR="${PROJECT_BINARY_DIR}")
-    gtest_discover_tests(${target} PROPERTIES LABELS ${folder} DISCOVERY_TIMEOUT 60)
+    eposp_register_gtest(${target} ${folder})
+endfunction()
+
+# Under the sanitizers, starting an instrumented test process and its leak check at exit cost
+# more than most tests themselves (one process per test made the sanitizer suite ten times
+# slower than the same tests in a few processes), so a binary runs in this many shards there.
+set(EPOSP_SANITIZER_SHARDS 8)
+
+# eposp_register_gtest(<target> <label> [NAME <name>] [ENVIRONMENT <VAR=value>...]): registers a
+# GoogleTest binary with CTest. Each test is its own CTest test (`ctest -R Suite.Name` runs one),
+# or, with NAME, the whole binary is one test of that name; under the sanitizers either becomes
+# <name or target>.shard<i> for i below EPOSP_SANITIZER_SHARDS (GoogleTest's own sharding).
+function(eposp_register_gtest target label)
+    cmake_parse_arguments(ARG "" "NAME" "ENVIRONMENT" ${ARGN})
+    if(EPOSP_SANITIZE)
+        set(name ${target})
+        if(ARG_NAME)
+            set(name ${ARG_NAME})
+        endif()
+        math(EXPR last "${EPOSP_SANITIZER_SHARDS} - 1")
+        foreach(shard RANGE ${last})
+            add_test(NAME ${name}.shard${shard} COMMAND ${target})
+            set_tests_properties(${name}.shard${shard} PROPERTIES LABELS ${label} ENVIRONMENT
+                "${ARG_ENVIRONMENT};GTEST_TOTAL_SHARDS=${EPOSP_SANITIZER_SHARDS};GTEST_SHARD_INDEX=${shard}")
+        endforeach()
+    elseif(ARG_NAME)
+        add_test(NAME ${ARG_NAME} COMMAND ${target})
+        set_tests_properties(${ARG_NAME} PROPERTIES LABELS ${label} ENVIRONMENT "${ARG_ENVIRONMENT}")
+    else()
+        gtest_discover_tests(${target} PROPERTIES LABELS ${label} DISCOVERY_TIMEOUT 60)
+    endif()
 endfunction()
