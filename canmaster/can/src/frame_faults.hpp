@@ -9,7 +9,7 @@
 
 namespace eposp::can {
 
-enum class FrameFault { Drop, Corrupt };
+enum class FrameFault { Drop, Corrupt, Shorten };
 
 /// The frame faults injected into a virtual bus, each with the frames it still has to take.
 class FrameFaults {

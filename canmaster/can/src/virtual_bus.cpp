@@ -183,7 +183,7 @@ void VirtualBus::Impl::arbitrate() {
     }
 }
 
-Outcome VirtualBus::Impl::outcome_of(const VirtualPort::Impl& sender, const Frame& frame) {
+Outcome VirtualBus::Impl::outcome_of(const VirtualPort::Impl& sender, Frame& frame) {
     // ISO 11898-1:2015, 10.4.2.7: some other controller that takes part in traffic sends the
     // dominant ACK; without one the transmitter detects an ACK error.
     const bool acknowledged = std::ranges::any_of(ports, [&sender](const VirtualPort* port) {
@@ -197,7 +197,19 @@ Outcome VirtualBus::Impl::outcome_of(const VirtualPort::Impl& sender, const Fram
     if (!fault) {
         return Outcome::Delivered;
     }
-    return *fault == FrameFault::Drop ? Outcome::Dropped : Outcome::Corrupted;
+    switch (*fault) {
+    case FrameFault::Drop:
+        return Outcome::Dropped;
+    case FrameFault::Corrupt:
+        return Outcome::Corrupted;
+    case FrameFault::Shorten:
+        if (!frame.remote && frame.dlc > 0) {
+            --frame.dlc;
+            frame.data[frame.dlc] = 0;
+        }
+        break;
+    }
+    return Outcome::Delivered;
 }
 
 bool VirtualBus::Impl::dominant_error_flag(const VirtualPort::Impl& sender, Outcome outcome) const {
@@ -213,7 +225,7 @@ bool VirtualBus::Impl::dominant_error_flag(const VirtualPort::Impl& sender, Outc
 }
 
 void VirtualBus::Impl::start(VirtualPort::Impl& sender, const Frame& next) {
-    const Frame frame = next;
+    Frame frame = next;
     const Outcome outcome = outcome_of(sender, frame);
     const FrameLength length = frame_length(frame);
     const Timeline timeline = timeline_of(outcome, length, dominant_error_flag(sender, outcome));
@@ -475,6 +487,10 @@ VirtualBus::FaultId VirtualBus::drop_frames(FrameFilter filter, std::uint64_t co
 
 VirtualBus::FaultId VirtualBus::corrupt_frames(FrameFilter filter, std::uint64_t count) {
     return impl_->faults.add(FrameFault::Corrupt, std::move(filter), count);
+}
+
+VirtualBus::FaultId VirtualBus::shorten_frames(FrameFilter filter, std::uint64_t count) {
+    return impl_->faults.add(FrameFault::Shorten, std::move(filter), count);
 }
 
 bool VirtualBus::cancel_fault(FaultId id) {

@@ -120,7 +120,8 @@ public:
 private:
     void arbitrate();
     void start(VirtualPort::Impl& sender, const Frame& frame);
-    Outcome outcome_of(const VirtualPort::Impl& sender, const Frame& frame);
+    /// A fault that shortens the frame shortens `frame` itself, which then goes on the wire.
+    Outcome outcome_of(const VirtualPort::Impl& sender, Frame& frame);
     bool dominant_error_flag(const VirtualPort::Impl& sender, Outcome outcome) const;
     void conclude();
     void conclude_with_error(Transmission& transmission);

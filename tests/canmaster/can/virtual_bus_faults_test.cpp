@@ -95,6 +95,21 @@ TEST_F(VirtualBusFaultsTest, DroppedFrameStillOccupiesTheWire) {
     EXPECT_EQ(bus.statistics().bits, 106U);
 }
 
+TEST_F(VirtualBusFaultsTest, ShortenedFramesReachReceiversAndTheWireOneByteShort) {
+    bus.shorten_frames(with_id(0x181), 2);
+    a->send(Frame::data_frame(0x181, {1, 2, 3}));
+    a->send(Frame::data_frame(0x181, {})); // nothing to take away: counts all the same
+    a->send(Frame::data_frame(0x181, {4, 5, 6}));
+    loop.run();
+    ASSERT_EQ(at_b.frames.size(), 3U);
+    EXPECT_EQ(at_b.frames[0], Frame::data_frame(0x181, {1, 2}));
+    EXPECT_EQ(at_b.frames[1], Frame::data_frame(0x181, {}));
+    EXPECT_EQ(at_b.frames[2], Frame::data_frame(0x181, {4, 5, 6}));
+    ASSERT_EQ(wire.events.size(), 3U);
+    EXPECT_EQ(wire.events[0].frame, Frame::data_frame(0x181, {1, 2}));
+    EXPECT_EQ(bus.statistics().error_frames, 0U);
+}
+
 TEST_F(VirtualBusFaultsTest, CancelledFaultTakesNoMoreFrames) {
     const auto fault = bus.drop_frames({}, 100);
     a->send(kZeroFrame);

@@ -174,6 +174,10 @@ public:
     /// bit error, an error frame follows, the error counters move, and the controller sends the
     /// frame again.
     FaultId corrupt_frames(FrameFilter filter = {}, std::uint64_t count = 1);
+    /// The frames go on the wire one data byte short (DLC - 1; a remote frame or one without
+    /// data passes unchanged and counts), as from a sender with a wrong PDO mapping: every receiver
+    /// gets the short frame (a CANopen RPDO then reports 0x8210, PDO length error).
+    FaultId shorten_frames(FrameFilter filter = {}, std::uint64_t count = 1);
     /// Removes a fault before it has taken all its frames; false when it is already gone.
     bool cancel_fault(FaultId id);
 
