@@ -487,11 +487,11 @@ MotionState Epos2Drive::mode_demand(double now) {
 }
 
 MotionState Epos2Drive::homing_demand(double now) {
-    const plant::SwitchStates switches = axis_.switches();
+    const plant::SwitchStates pressed = switches();
     const motion::HomingStep step = homing_.update(now, {.position = position_actual(),
-                                                         .negative_limit = switches.negative_limit,
-                                                         .positive_limit = switches.positive_limit,
-                                                         .home_switch = switches.home,
+                                                         .negative_limit = pressed.negative_limit,
+                                                         .positive_limit = pressed.positive_limit,
+                                                         .home_switch = pressed.home,
                                                          .index_position = index_latch_,
                                                          .current = axis_.current_actual()});
     index_latch_.reset();
@@ -596,15 +596,28 @@ std::uint16_t Epos2Drive::statusword() const {
 }
 
 std::uint16_t Epos2Drive::digital_input_states() const {
-    const plant::SwitchStates switches = axis_.switches();
+    const plant::SwitchStates pressed = switches();
     std::uint16_t states = 0;
-    if (switches.negative_limit)
+    if (pressed.negative_limit)
         states |= kNegativeLimitInput;
-    if (switches.positive_limit)
+    if (pressed.positive_limit)
         states |= kPositiveLimitInput;
-    if (switches.home)
+    if (pressed.home)
         states |= kHomeSwitchInput;
     return states & input_mask_;
+}
+
+plant::SwitchStates Epos2Drive::switches() const {
+    plant::SwitchStates pressed = axis_.switches();
+    pressed.negative_limit = pressed.negative_limit || held_switches_.negative_limit;
+    pressed.positive_limit = pressed.positive_limit || held_switches_.positive_limit;
+    return pressed;
+}
+
+// A switch held from outside acts from the next control period on, like one the axis reaches.
+void Epos2Drive::hold_limit_switch(LimitSwitch which, bool pressed) {
+    (which == LimitSwitch::Negative ? held_switches_.negative_limit
+                                    : held_switches_.positive_limit) = pressed;
 }
 
 // The computed objects (8.2.86, 8.2.92 - 8.2.97, 8.2.57), stored when they change so that the

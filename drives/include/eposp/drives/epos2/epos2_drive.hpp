@@ -31,6 +31,9 @@ namespace eposp::drives::epos2 {
 /// are refused with "not yet" (see docs/epos2.md).
 enum class OperatingMode : std::int8_t { ProfilePosition = 1, ProfileVelocity = 3, Homing = 6 };
 
+/// EPOS2 FW spec table 8-86: the two limit switch functionalities of the digital inputs.
+enum class LimitSwitch { Negative, Positive };
+
 struct Epos2DriveConfig {
     Epos2DictionaryConfig dictionary;
     /// Motor, load, power stage, encoder pulses, switches and the controller gains. The pulses,
@@ -71,6 +74,21 @@ public:
     /// (undervoltage 0x3220, overvoltage 0x3210) every control period.
     void set_supply_voltage(double volts);
 
+    // Fault injection (docs/epos2.md, "Fault injection").
+
+    /// Holds a limit switch pressed whatever the axis' position, or lets it go again (then only
+    /// the machine's switch layout presses it). Its functionality shows in 0x2071 sub 1 under the
+    /// mask (sub 2), homing sees it, and its rising edge in a control period with the power
+    /// stage on raises 0xFF06 / 0xFF07 when the execution mask (sub 4) has its bit (8.2.57,
+    /// 4.2.27, 4.2.28). Pressing a pressed switch changes nothing.
+    void hold_limit_switch(LimitSwitch which, bool pressed);
+    /// Raises an error of table 4-11 as if its cause had occurred (4.1): its EMCY, its bits in
+    /// 0x1001, a new entry in 0x1003, and the reaction of its class ("d" disables at once, "f"
+    /// as 0x605E says, "a" as 0x6007 says); a fault reset clears it. An error still active is
+    /// not raised again (one EMCY per error event, CiA 301 7.2.7). A code the table does not
+    /// list is a programming error (std::invalid_argument; device_errors() lists them).
+    void raise_device_error(std::uint16_t code);
+
 private:
     static Epos2DictionaryConfig with_restore_rule(Epos2DictionaryConfig config, Epos2Drive& drive);
     void configure_axis();
@@ -90,7 +108,8 @@ private:
     motion::MotionState homing_demand(double now);
     void watch_motion(double now, const motion::MotionState& demand);
     void watch_limit_switches();
-    void raise_device_error(std::uint16_t code);
+    /// The machine's switches at the present position, and those held by hold_limit_switch().
+    plant::SwitchStates switches() const;
     void publish(const motion::MotionState& demand);
     std::uint16_t mode_statusword_bits(double now) const;
     std::uint16_t statusword() const;
@@ -137,6 +156,7 @@ private:
     double counts_per_turn_ = 0;              ///< 4 × 0x2210 sub 1
     std::uint16_t limit_inputs_before_ = 0;   ///< 0x2071 sub 1 in the last control period
     std::uint16_t input_mask_ = 0;            ///< 0x2071 sub 2
+    plant::SwitchStates held_switches_;       ///< limit switches held by fault injection
     std::int64_t counter_at_index_ = 0;       ///< 0x2021: the raw encoder counter
     /// 8.2.47: the current filtered at 50 Hz every 0.1 ms; 8.2.48: the velocity at 5 Hz every ms.
     plant::LowPassFilter current_averaged_{50, plant::ServoAxis::kCurrentLoopPeriod};
