@@ -8,10 +8,11 @@
 namespace eposp::compiler {
 
 std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId> files,
-                                 Diagnostics& diagnostics, std::span<const FileId> libraries) {
+                                 Diagnostics& diagnostics, std::span<const FileId> libraries,
+                                 const CompileOptions& options) {
     std::vector<FileId> all(files.begin(), files.end());
     all.insert(all.end(), libraries.begin(), libraries.end());
-    const auto front_end = types::resolve_names(sources, all, diagnostics);
+    const auto front_end = types::resolve_names(sources, all, diagnostics, options);
     if (diagnostics.has_errors()) {
         return std::nullopt;
     }

@@ -1,5 +1,6 @@
 #include "eposp/compiler/types/front_end.hpp"
 
+#include "../options/compile_option_passes.hpp"
 #include "../stdlib/standard_library_source.hpp"
 #include "eposp/compiler/parser.hpp"
 #include "eposp/compiler/sema/resolver.hpp"
@@ -10,7 +11,7 @@
 namespace eposp::compiler::types {
 
 std::unique_ptr<FrontEnd> resolve_names(SourceManager& sources, std::span<const FileId> files,
-                                        Diagnostics& diagnostics) {
+                                        Diagnostics& diagnostics, const CompileOptions& options) {
     auto result = std::make_unique<FrontEnd>();
     for (const FileId file : files) {
         result->units.push_back(parse(sources, file, diagnostics));
@@ -20,18 +21,23 @@ std::unique_ptr<FrontEnd> resolve_names(SourceManager& sources, std::span<const 
     if (diagnostics.has_errors()) {
         return result;
     }
-    result->model.emplace(sema::resolve(result->units, diagnostics));
     // The built-in library is parsed like a user file, so its errors would point into it.
     const FileId library_file =
         sources.add("<standard library>", std::string(stdlib::standard_library_source()));
     result->library_units.push_back(parse(sources, library_file, diagnostics));
+    options::ignore_configurations(result->units, options, sources, diagnostics);
+    options::substitute_function_blocks(result->units, result->library_units, options, diagnostics);
+    if (diagnostics.has_errors()) {
+        return result;
+    }
+    result->model.emplace(sema::resolve(result->units, diagnostics));
     result->library_model.emplace(sema::resolve_library(result->library_units, diagnostics));
     return result;
 }
 
 std::unique_ptr<FrontEnd> analyse(SourceManager& sources, std::span<const FileId> files,
-                                  Diagnostics& diagnostics) {
-    auto result = resolve_names(sources, files, diagnostics);
+                                  Diagnostics& diagnostics, const CompileOptions& options) {
+    auto result = resolve_names(sources, files, diagnostics, options);
     if (diagnostics.has_errors()) {
         return result;
     }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "eposp/compiler/compile_options.hpp"
 #include "eposp/compiler/diagnostics.hpp"
 #include "eposp/compiler/source_manager.hpp"
 #include "eposp/vm/image.hpp"
@@ -23,7 +24,11 @@ namespace eposp::compiler {
 /// blocks): their types and POUs are visible like the program's own, their POUs are generated
 /// only when called, and a FUNCTION_BLOCK without statements in them is a native block whose
 /// body the host registers in C++ (docs/runtime.md, "Native function blocks").
+///
+/// `options` depart from the files as written (ignored CONFIGURATIONs, FB test doubles:
+/// compile_options.hpp); an option that names no file or FUNCTION_BLOCK is an error.
 std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId> files,
-                                 Diagnostics& diagnostics, std::span<const FileId> libraries = {});
+                                 Diagnostics& diagnostics, std::span<const FileId> libraries = {},
+                                 const CompileOptions& options = {});
 
 } // namespace eposp::compiler

@@ -4,6 +4,7 @@
 // oracles (the reference evaluator) start from here.
 
 #include "eposp/compiler/ast/compilation_unit.hpp"
+#include "eposp/compiler/compile_options.hpp"
 #include "eposp/compiler/diagnostics.hpp"
 #include "eposp/compiler/sema/semantic_model.hpp"
 #include "eposp/compiler/source_manager.hpp"
@@ -27,12 +28,14 @@ struct FrontEnd {
 };
 
 /// Parses and resolves `files` and the built-in library, without typing: what code generation
-/// starts from. Diagnostics tell whether it succeeded.
+/// starts from. Diagnostics tell whether it succeeded. `options` apply to `units` before names
+/// are resolved (compile_options.hpp).
 std::unique_ptr<FrontEnd> resolve_names(SourceManager& sources, std::span<const FileId> files,
-                                        Diagnostics& diagnostics);
+                                        Diagnostics& diagnostics,
+                                        const CompileOptions& options = {});
 
 /// resolve_names(), then types the program; null `program` when an error was reported.
 std::unique_ptr<FrontEnd> analyse(SourceManager& sources, std::span<const FileId> files,
-                                  Diagnostics& diagnostics);
+                                  Diagnostics& diagnostics, const CompileOptions& options = {});
 
 } // namespace eposp::compiler::types

@@ -1,0 +1,26 @@
+#pragma once
+
+#include "eposp/compiler/source_location.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace eposp::compiler {
+
+/// How one compilation departs from the program as written: what `eposp test` needs to build a
+/// test harness around the user's files (docs/testing-plc-code.md).
+struct CompileOptions {
+    /// Files whose CONFIGURATION declarations are dropped before name resolution, with their
+    /// globals, access paths, tasks and program instances (the harness brings its own). Their
+    /// POUs, types and global variable lists stay. A file not compiled is an error.
+    std::vector<FileId> ignored_configurations{};
+    /// FUNCTION_BLOCK name → the FUNCTION_BLOCK that stands in for it (a test double): every
+    /// use of the first as a type (variable declarations anywhere, ARRAY OF, REF_TO, structure
+    /// members, EXTENDS) names the second instead, and the first is not generated. Either may
+    /// be a standard FB (TON) or a native block of a linked library. Names compare
+    /// case-insensitively; a name that is not a FUNCTION_BLOCK is an error.
+    std::map<std::string, std::string> substitutions{};
+};
+
+} // namespace eposp::compiler
