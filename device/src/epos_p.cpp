@@ -8,6 +8,7 @@
 #include "plc_objects.hpp"
 #include "program_download.hpp"
 #include "program_store.hpp"
+#include "severable_port.hpp"
 #include "variable_access.hpp"
 
 #include <fmt/format.h>
@@ -56,8 +57,9 @@ EposP::EposP(EposPConfig config)
     : loop_(config.pace), internal_bus_(loop_, can::BusConfig{.name = "internal"}),
       internal_port_(internal_bus_.connect("epos-p")),
       internal_drive_port_(internal_bus_.connect("internal-epos2")),
+      internal_drive_link_(std::make_unique<SeverablePort>(*internal_drive_port_)),
       internal_drive_(std::make_unique<drives::epos2::Epos2Drive>(
-          loop_, *internal_drive_port_, internal_drive_config(std::move(config.internal_drive)))),
+          loop_, *internal_drive_link_, internal_drive_config(std::move(config.internal_drive)))),
       external_bus_(loop_, can::BusConfig{.name = "external", .bitrate = config.external_bit_rate}),
       external_port_(external_bus_.connect("epos-p")), plc_(loop_, std::move(config.runtime)),
       dictionary_(dictionary_config(config, plc_, [this] { return program_store_->clear(); })) {
@@ -97,6 +99,7 @@ EposP::EposP(EposPConfig config)
         });
     }
     program_store_->power_up(); // after the motion blocks: a program may call them
+    faults_ = std::make_unique<FaultInjector>(*this);
     internal_drive_->start();
 }
 
@@ -206,7 +209,8 @@ void EposP::add_network(const NetworkFile& network) {
             config.axis = *slave.plant;
         }
         slave_ports_.push_back(external_bus_.connect(fmt::format("epos2-{}", slave.node_id)));
-        slaves_.push_back(std::make_unique<drives::epos2::Epos2Drive>(loop_, *slave_ports_.back(),
+        slave_links_.push_back(std::make_unique<SeverablePort>(*slave_ports_.back()));
+        slaves_.push_back(std::make_unique<drives::epos2::Epos2Drive>(loop_, *slave_links_.back(),
                                                                       std::move(config)));
         slaves_.back()->start();
     }

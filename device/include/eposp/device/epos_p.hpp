@@ -4,6 +4,7 @@
 #include "eposp/core/event_loop.hpp"
 #include "eposp/device/axis_trace.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/device/fault_injector.hpp"
 #include "eposp/device/network_file.hpp"
 #include "eposp/device/plc.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
@@ -22,6 +23,7 @@ class DeviceAxisLink;
 class ManufacturerStatus;
 class NetworkPort;
 class ProgramStore;
+class SeverablePort;
 
 struct EposPConfig {
     /// Virtual time (as fast as the CPU allows, deterministic) or the wall clock.
@@ -118,11 +120,17 @@ public:
     can::VirtualBus& external_bus() { return external_bus_; }
     can::Port& external_port() { return *external_port_; }
 
+    /// Faults injected into the simulated network: a silent slave, a limit switch, a drive
+    /// error, damaged PDOs (docs/eposp.md, "Fault injection").
+    FaultInjector& faults() { return *faults_; }
+
     /// The manager of port 1 or 2 (a type of the device's own sources: for the service
     /// interface, which reaches the ports' nodes through it).
     NetworkPort& network_port(std::uint8_t port);
 
 private:
+    friend class FaultInjector; // reaches the simulated EPOS2s and their cables
+
     void load_stored_parameters(const std::filesystem::path& file);
     /// 10.32: port 2 restarts at the bit rate 0x5001 holds after the stored parameters.
     void apply_can_bit_rate();
@@ -135,6 +143,7 @@ private:
     can::VirtualBus internal_bus_;
     std::unique_ptr<can::VirtualPort> internal_port_;
     std::unique_ptr<can::VirtualPort> internal_drive_port_;
+    std::unique_ptr<SeverablePort> internal_drive_link_; ///< the drive's cable to its bus
     std::unique_ptr<drives::epos2::Epos2Drive> internal_drive_;
     can::VirtualBus external_bus_;
     std::unique_ptr<can::VirtualPort> external_port_;
@@ -148,7 +157,9 @@ private:
     std::unique_ptr<ProgramStore> program_store_;
     std::uint16_t stored_program_control_ = 0; ///< 0x5F51 as stored: the boot-up state
     std::vector<std::unique_ptr<can::VirtualPort>> slave_ports_;
+    std::vector<std::unique_ptr<SeverablePort>> slave_links_; ///< each slave's cable to the bus
     std::vector<std::unique_ptr<drives::epos2::Epos2Drive>> slaves_;
+    std::unique_ptr<FaultInjector> faults_;
 };
 
 } // namespace eposp::device
