@@ -19,10 +19,12 @@ std::uint64_t executed_in_run(std::uint64_t limit, std::int64_t remaining) {
     return static_cast<std::uint64_t>(static_cast<std::int64_t>(limit) - remaining);
 }
 
-} // namespace
-
-RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskState& task,
-                 std::uint64_t slice) {
+// kCoverage: the loop also counts every instruction it dispatches and every outcome of a
+// branch point (coverage_counters.hpp). A separate instantiation, so the loop without it has
+// no test per instruction.
+template <bool kCoverage>
+RunState run(const Program& program, std::span<std::uint8_t> memory, TaskState& task,
+             std::uint64_t slice, CoverageCounters* coverage) {
     const Image& image = program.image();
     const Instruction* const code = image.code.data();
     const Pou* const pous = image.pous.data();
@@ -44,7 +46,23 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     std::int64_t remaining = static_cast<std::int64_t>(limit);
     const Instruction* segment = ip;
     Trap trap = Trap::DivisionByZero;
+    std::uint64_t* const executed = kCoverage ? coverage->executed.data() : nullptr;
+    const std::uint32_t* const first_outcome = kCoverage ? coverage->first_outcome.data() : nullptr;
+    std::uint64_t* const outcomes = kCoverage ? coverage->outcomes.data() : nullptr;
 
+// Outcome `n` of the branch point at ip.
+#define VM_COUNT_OUTCOME(n)                                                                        \
+    do {                                                                                           \
+        if constexpr (kCoverage) {                                                                 \
+            ++outcomes[first_outcome[ip - code] + (n)];                                            \
+        }                                                                                          \
+    } while (false)
+#define VM_COUNT_DISPATCH()                                                                        \
+    do {                                                                                           \
+        if constexpr (kCoverage) {                                                                 \
+            ++executed[ip - code];                                                                 \
+        }                                                                                          \
+    } while (false)
 #define VM_CHARGE() (remaining -= (ip - segment) + 1)
 #define VM_TRAP(kind)                                                                              \
     do {                                                                                           \
@@ -65,15 +83,17 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
 #define VM_BRANCH_IF(condition, target)                                                            \
     do {                                                                                           \
         if (condition) {                                                                           \
+            VM_COUNT_OUTCOME(0);                                                                   \
             VM_JUMP(target);                                                                       \
         }                                                                                          \
+        VM_COUNT_OUTCOME(1);                                                                       \
         VM_NEXT();                                                                                 \
     } while (false)
 #define VM_ENTER(callee_index, self_pointer)                                                       \
     do {                                                                                           \
         const Pou& callee = pous[callee_index];                                                    \
         const auto frame = static_cast<std::uint32_t>(base[3] - mem);                              \
-        if (task.depth == kMaxCallDepth ||                                              \
+        if (task.depth == kMaxCallDepth ||                                                         \
             std::uint64_t{frame} + callee.frame_size + callee.out_size > task.stack_end) {         \
             VM_TRAP(Trap::StackOverflow);                                                          \
         }                                                                                          \
@@ -94,7 +114,9 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
         const JumpTable& table = jump_tables[ip->b];                                               \
         const auto entry = static_cast<std::uint32_t>(static_cast<std::int64_t>(load<T1>(A))) -    \
                            static_cast<std::uint32_t>(table.low);                                  \
-        VM_JUMP(entry < table.targets.size() ? table.targets[entry] : ip->c);                      \
+        const bool in_table = entry < table.targets.size();                                        \
+        VM_COUNT_OUTCOME(in_table ? entry : table.targets.size());                                 \
+        VM_JUMP(in_table ? table.targets[entry] : ip->c);                                          \
     }
 #define VM_EXEC_Call(T1, T2) VM_ENTER(ip->a, base[2]);
 #define VM_EXEC_CallFb(T1, T2) VM_ENTER(ip->b, A);
@@ -146,7 +168,11 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
     static constexpr void* kHandlers[] = {EPOSP_VM_OPCODES(VM_LABEL_ADDRESS)};
 #undef VM_LABEL_ADDRESS
 #define VM_CASE(name) handle_##name:
-#define VM_DISPATCH() goto* kHandlers[static_cast<std::uint16_t>(ip->opcode)]
+#define VM_DISPATCH()                                                                              \
+    do {                                                                                           \
+        VM_COUNT_DISPATCH();                                                                       \
+        goto* kHandlers[static_cast<std::uint16_t>(ip->opcode)];                                   \
+    } while (false)
 #define VM_NEXT()                                                                                  \
     do {                                                                                           \
         ++ip;                                                                                      \
@@ -166,6 +192,7 @@ RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskSta
         goto dispatch;                                                                             \
     } while (false)
 dispatch:
+    VM_COUNT_DISPATCH();
     switch (ip->opcode) { EPOSP_VM_OPCODES(VM_HANDLER) }
 #endif
 
@@ -182,6 +209,14 @@ slice_used:
 
 finished:
     return end_finished(task, executed_in_run(limit, remaining));
+}
+
+} // namespace
+
+RunState execute(const Program& program, std::span<std::uint8_t> memory, TaskState& task,
+                 std::uint64_t slice, CoverageCounters* coverage) {
+    return coverage != nullptr ? run<true>(program, memory, task, slice, coverage)
+                               : run<false>(program, memory, task, slice, nullptr);
 }
 
 } // namespace eposp::vm::detail

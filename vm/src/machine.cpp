@@ -29,7 +29,10 @@ std::string_view trap_name(Trap trap) {
     return "?";
 }
 
-Machine::Machine(const Program& program) : program_(program) {
+Machine::Machine(const Program& program, Coverage coverage) : program_(program) {
+    if (coverage == Coverage::Record) {
+        coverage_ = std::make_unique<detail::CoverageCounters>(program.image());
+    }
     const auto& image = program.image();
     std::uint32_t end = image.static_size;
     for (const auto& task : image.tasks) {
@@ -41,6 +44,13 @@ Machine::Machine(const Program& program) : program_(program) {
     }
     memory_.resize(end);
     cold_start();
+}
+
+Machine::~Machine() = default;
+Machine::Machine(Machine&&) noexcept = default;
+
+CoverageReport Machine::coverage() const {
+    return coverage_ ? detail::coverage_report(program_.image(), *coverage_) : CoverageReport{};
 }
 
 void Machine::cold_start() {
@@ -67,6 +77,9 @@ RunState Machine::run(std::size_t task, std::uint64_t slice) {
     auto& state = tasks_.at(task);
     if (state.state != RunState::Suspended) {
         return state.state;
+    }
+    if (coverage_) {
+        return detail::execute(program_, memory_, state, slice, coverage_.get());
     }
     if (const auto* compiled = program_.compiled()) {
         return compiled->run(program_, memory_, state, slice);

@@ -66,14 +66,16 @@ std::optional<core::Error> PlcRuntime::load(Image image) {
     if (const auto error = MarkerArea::check_bindings(image)) {
         return error;
     }
-    auto program = link(std::move(image), natives_, config_.engine);
+    auto program =
+        link(std::move(image), natives_,
+             config_.coverage == Coverage::Record ? Engine::Interpreter : config_.engine);
     if (!program) {
         return core::Error{program.error()};
     }
     dispatcher_.reset();
     machine_.reset();
     program_ = std::make_unique<Program>(std::move(*program));
-    machine_ = std::make_unique<Machine>(*program_);
+    machine_ = std::make_unique<Machine>(*program_, config_.coverage);
     dispatcher_ = std::make_unique<TaskDispatcher>(loop_, *machine_, hooks(), config_.cost);
     for (std::size_t task = 0; task < program_->image().tasks.size(); ++task) {
         dispatcher_->set_watchdog(task, config_.watchdog_instructions);
@@ -135,6 +137,10 @@ ProgramState PlcRuntime::state() const {
         return ProgramState::NotLoaded;
     }
     return running_mode_ ? ProgramState::Running : ProgramState::Stopped;
+}
+
+CoverageReport PlcRuntime::coverage() const {
+    return machine_ ? machine_->coverage() : CoverageReport{};
 }
 
 std::uint16_t PlcRuntime::program_control() const {

@@ -50,6 +50,9 @@ struct RuntimeConfig {
     core::Duration retain_save_interval{};
     /// What runs the loaded programs (the results are the same; the speed is not).
     Engine engine = default_engine();
+    /// Record which lines and branches run (PlcRuntime::coverage). Forces the interpreter,
+    /// whatever `engine` says: compiled code counts nothing.
+    Coverage coverage = Coverage::Off;
 };
 
 /// The PLC: a loaded program, its tasks on the event loop, RETAIN variables, the DS-405 process
@@ -101,6 +104,11 @@ public:
     ProcessImage& process_image() { return process_image_; }
     const MarkerArea& markers() const { return markers_; }
     std::span<const std::uint8_t> memory() const { return machine_->memory(); }
+
+    /// The lines and branches of the loaded program run since its load, by POU name (starts
+    /// and stops do not reset them; the next load does). Empty unless RuntimeConfig::coverage
+    /// is Coverage::Record or when no program is loaded.
+    CoverageReport coverage() const;
 
     // Online access by variable path (`Inst0.counter`, `Inst0.axis[2].pos`), also while running.
     /// The value as an IEC literal.
