@@ -18,8 +18,9 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 readonly BUILD_PACKAGES=(g++ cmake ninja-build libboost-dev libfmt-dev libcli11-dev
     libgtest-dev libgmock-dev libbenchmark-dev antlr4 libantlr4-runtime-dev libyaml-cpp-dev
     libxbyak-dev)
-# Independent tools that the interoperability tests and the demo talk to.
-readonly TOOL_PACKAGES=(python3-can python3-serial tshark)
+# Independent tools that the interoperability tests and the demo talk to (lcov: reads back the
+# coverage tracefile of eposp test).
+readonly TOOL_PACKAGES=(python3-can python3-serial tshark lcov)
 # Only for `fuzz`: clang and its sanitizer and libFuzzer runtimes.
 readonly FUZZ_PACKAGES=(clang libclang-rt-14-dev)
 
