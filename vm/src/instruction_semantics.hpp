@@ -3,6 +3,7 @@
 #include "eposp/vm/image.hpp"
 #include "eposp/vm/instruction.hpp"
 #include "eposp/vm/program.hpp"
+#include "eposp/vm/task_state.hpp"
 #include "value_semantics.hpp"
 
 #include <cmath>
@@ -39,12 +40,15 @@ inline std::uint32_t array_index(const ArrayDescriptor& descriptor, const std::u
 
 // A native call's arguments object lives here, not in a handler: no object with a destructor
 // may be in scope where an interpreter handler leaves by computed goto.
+// `task` and `instruction` say where the call is, read only if the host asks for its call site.
 inline bool call_native(const Program& program, std::uint32_t import, std::uint8_t* block,
-                        std::span<std::uint8_t> memory, std::string& failure) {
-    NativeArgs args(block, program.image().imports[import].signature, memory);
+                        std::span<std::uint8_t> memory, TaskState& task,
+                        std::uint32_t instruction) {
+    const NativeCallContext context{&program.image(), task.calls.data(), task.depth, instruction};
+    NativeArgs args(block, program.image().imports[import].signature, memory, &context);
     program.native(import)(args);
     if (args.failed()) {
-        failure = args.failure();
+        task.fault.native_reason = args.failure();
         return false;
     }
     return true;

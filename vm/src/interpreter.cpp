@@ -128,7 +128,8 @@ RunState run(const Program& program, std::span<std::uint8_t> memory, TaskState& 
     }
 #define VM_EXEC_CallNative(T1, T2)                                                                 \
     {                                                                                              \
-        if (!call_native(program, ip->a, B, memory, task.fault.native_reason)) {                   \
+        if (!call_native(program, ip->a, B, memory, task,                                          \
+                         static_cast<std::uint32_t>(ip - code))) {                                 \
             VM_TRAP(Trap::NativeError);                                                            \
         }                                                                                          \
         VM_CHARGE();                                                                               \

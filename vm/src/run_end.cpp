@@ -1,41 +1,11 @@
 #include "run_end.hpp"
 
+#include "source_location.hpp"
+
 #include <algorithm>
 #include <optional>
 
 namespace eposp::vm::detail {
-namespace {
-
-std::uint32_t line_at(const Pou& pou, std::uint32_t instruction) {
-    std::uint32_t line = 0;
-    for (const auto& entry : pou.lines) {
-        if (entry.instruction > instruction) {
-            break;
-        }
-        line = entry.line;
-    }
-    return line;
-}
-
-// In a body copied in place of a call, an instruction is the callee's, at its own line. A
-// callee without source (a native block's body) has none: its call site stands, and the callee
-// is returned.
-std::optional<std::uint32_t> locate(const Image& image, std::uint32_t& pou,
-                                    std::uint32_t& instruction) {
-    for (const InlinedCall& call : image.pous[pou].inlined) {
-        if (instruction >= call.begin && instruction < call.end) {
-            if (image.pous[call.callee].lines.empty()) {
-                return call.callee;
-            }
-            instruction = image.pous[call.callee].code_begin + (instruction - call.begin);
-            pou = call.callee;
-            break;
-        }
-    }
-    return std::nullopt;
-}
-
-} // namespace
 
 std::uint64_t begin_run(TaskState& task, std::uint64_t slice) {
     task.fault.native_reason.clear();

@@ -62,9 +62,6 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
     return Value{};
 }
 
-namespace {
-
-/// The field an argument names, or the next positional input.
 const sema::Field* formal(const sema::Type& frame, const ast::Argument& argument,
                           std::size_t& positional) {
     if (argument.name) {
@@ -84,6 +81,8 @@ const sema::Field* formal(const sema::Type& frame, const ast::Argument& argument
     return nullptr;
 }
 
+namespace {
+
 bool is_parameter(ast::VarSectionKind section) {
     return section == ast::VarSectionKind::Input || section == ast::VarSectionKind::InOut ||
            section == ast::VarSectionKind::Output;
@@ -98,6 +97,9 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     const sema::Type& frame = *types_.frame(function);
     if (program_.is_host_function(function)) {
         return call_host(function, frame, node, dest);
+    }
+    if (program_.is_native_function(function)) {
+        return call_native_function(function, node, dest, range);
     }
     const std::uint32_t index = program_.pou_index(function);
     program_.calls(pou_, function);

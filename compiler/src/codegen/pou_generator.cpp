@@ -25,6 +25,16 @@ std::uint32_t PouGenerator::generate() {
         builder_.line(pou_.range.begin.line);
     }
     declare_locals();
+    if (pou_.kind == ast::PouKind::Function) {
+        for (const sema::Field& field : types_.frame(pou_)->fields) {
+            if (field.type->generic) {
+                error(field.declaration->type.range,
+                      fmt::format("'{}' is ANY, which only a native function takes: a FUNCTION "
+                                  "without statements in a linked library",
+                                  field.name));
+            }
+        }
+    }
     end_ = builder_.label();
     initialise_frame();
     if (native) {

@@ -33,6 +33,11 @@ bool is_time_function(std::string_view name);
 /// (pou_enable.cpp).
 bool is_enable_argument(const ast::Argument& argument);
 
+/// The parameter of `frame` (a function's) that `argument` names, or the next positional input
+/// or in-out after the `positional` ones already bound; null if there is none (pou_calls.cpp).
+const sema::Field* formal(const sema::Type& frame, const ast::Argument& argument,
+                          std::size_t& positional);
+
 /// The arguments of a standard function call as written, without EN and ENO.
 using Arguments = std::vector<const ast::Argument*>;
 
@@ -325,6 +330,15 @@ private:
     std::optional<Value> call_host(const ast::Pou& function, const sema::Type& frame,
                                    const ast::CallExpression& node, const Destination* dest);
     void call_instance(const Place& instance, const ast::CallExpression& node);
+    // native_function.cpp
+    /// A call of a native function: one CallNative here, with its arguments in its block.
+    std::optional<Value> call_native_function(const ast::Pou& function,
+                                              const ast::CallExpression& node,
+                                              const Destination* dest, const SourceRange& range);
+    /// The value given to an ANY input: elementary or a string, of its own type.
+    std::optional<Value> any_argument(const ast::Expression& expression);
+    /// The U32 constant describing a value of `type` (vm::native_descriptor).
+    Value native_descriptor(const sema::Type& type);
     /// Calls native `name`; `arguments` already evaluated, strings passed by address.
     void call_native(const std::string& name, const vm::NativeSignature& signature,
                      const std::vector<Value>& arguments);

@@ -171,6 +171,15 @@ std::optional<vm::Image> ProgramGenerator::generate() {
             pou_index(pou);
         }
     }
+    // A native function's declaration is checked whether it is called or not: a library's
+    // author learns that the C++ side cannot be written for it.
+    for (const ast::CompilationUnit& unit : program_.units.last(program_.linked)) {
+        for (const ast::Pou& pou : unit.pous) {
+            if (is_native_function(pou)) {
+                native_function(pou);
+            }
+        }
+    }
     if (has_configuration) {
         for (const ast::CompilationUnit& unit : program_.units) {
             for (const ast::Configuration& configuration : unit.configurations) {

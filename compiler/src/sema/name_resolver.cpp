@@ -57,6 +57,9 @@ private:
     }
     void resolve_type_node(const ast::NamedTypeRef& node, const Scope&) {
         const Symbol* symbol = global_.find_member(node.name.name);
+        if (symbol == nullptr && fold_case(node.name.name) == "ANY") {
+            return; // the generic type of native functions' inputs (TypeTable::any)
+        }
         if (symbol == nullptr) {
             error(node.name.range, fmt::format("unknown type '{}'", node.name.name));
             return;

@@ -113,6 +113,14 @@ const Type& TypeTable::null() {
     return *null_;
 }
 
+const Type& TypeTable::any() {
+    if (any_ == nullptr) {
+        any_ = &add(
+            {.kind = TypeKind::Struct, .name = "ANY", .size = 16, .align = 8, .generic = true});
+    }
+    return *any_;
+}
+
 const Type& TypeTable::unranged(const Type& type) {
     return type.range ? elementary(type.elementary) : type;
 }
@@ -159,6 +167,9 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
     }
     if (const auto* node = std::get_if<ast::NamedTypeRef>(&spec.node)) {
         const Symbol* symbol = model_.resolved(node->name);
+        if (symbol == nullptr && fold_case(node->name.name) == "ANY") {
+            return &any(); // the name resolver leaves it to the layout (lay_out)
+        }
         return symbol != nullptr ? named(*symbol) : nullptr; // unresolved: already reported
     }
     if (const auto* node = std::get_if<ast::ArrayType>(&spec.node)) {
@@ -266,6 +277,15 @@ void TypeTable::lay_out(Type& type,
         through_reference_ = sections[i] == ast::VarSectionKind::InOut;
         const Type* member = resolve(declaration.type);
         if (member == nullptr) {
+            continue;
+        }
+        if (member->generic &&
+            !(type.kind == TypeKind::Struct && type.pou != nullptr &&
+              type.pou->kind == ast::PouKind::Function && type.pou->body.empty() &&
+              sections[i] == ast::VarSectionKind::Input)) {
+            diagnostics_.error(declaration.type.range,
+                               "ANY is only allowed for a VAR_INPUT of a native function (a "
+                               "FUNCTION without statements in a linked library)");
             continue;
         }
         // VAR_IN_OUT is passed by reference (6.5.1.2), an ARRAY[*] with its bounds (6.5.3).

@@ -22,7 +22,8 @@ RunState CompiledCode::run(const Program& program, std::span<std::uint8_t> memor
     step.mem_size = memory.size();
     step.arrays = image.arrays.data();
     step.program = &program;
-    step.native_failure = &task.fault.native_reason;
+    step.task = &task;
+    step.code = code_.data();
     context.calls = task.calls.data();
     context.depth = &task.depth;
     context.stack_end = task.stack_end;

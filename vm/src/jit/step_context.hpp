@@ -19,7 +19,8 @@ struct StepContext {
     std::uint64_t mem_size = 0;
     const ArrayDescriptor* arrays = nullptr;
     const Program* program = nullptr;
-    std::string* native_failure = nullptr;
+    TaskState* task = nullptr;         ///< the running task (native calls: failure, call site)
+    const Instruction* code = nullptr; ///< the instructions step functions are handed
 };
 
 /// A step function's outcome: go on, take the instruction's branch, or stop with trap

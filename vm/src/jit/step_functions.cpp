@@ -19,7 +19,8 @@ using namespace detail; // load, store, the value semantics (add, convert, divid
 #define VM_EXEC_Ret(T1, T2)
 #define VM_EXEC_Nop(T1, T2) VM_NEXT();
 #define VM_EXEC_CallNative(T1, T2)                                                                 \
-    if (!call_native(*context.program, ip->a, B, {mem, mem_size}, *context.native_failure)) {      \
+    if (!call_native(*context.program, ip->a, B, {mem, mem_size}, *context.task,                   \
+                     static_cast<std::uint32_t>(ip - context.code))) {                             \
         VM_TRAP(Trap::NativeError);                                                                \
     }                                                                                              \
     VM_NEXT();

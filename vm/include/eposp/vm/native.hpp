@@ -1,6 +1,8 @@
 #pragma once
 
 #include "eposp/vm/image.hpp"
+#include "eposp/vm/native_values.hpp"
+#include "eposp/vm/task_state.hpp"
 
 #include <cstdint>
 #include <cstring>
@@ -12,13 +14,25 @@
 
 namespace eposp::vm {
 
+/// Where a native call runs, for NativeArgs::call_site(): filled by both engines at every call
+/// (a few stores), read only when a host asks.
+struct NativeCallContext {
+    const Image* image = nullptr;
+    const Activation* calls = nullptr; ///< the task's callers, calls[0] the outermost
+    std::uint32_t depth = 0;           ///< how many of them
+    std::uint32_t instruction = 0;     ///< the CallNative being executed
+};
+
 /// What a native function sees of one call: its argument block (laid out as NativeSignature
 /// says) and checked access to VM memory for pointer arguments (strings, FB instances).
+/// The accessors of pointer arguments (text, any, array) fail() the call and return an empty
+/// value when the pointer does not point to what the signature says (only a corrupt image does
+/// that): the task stops with a run-time error when the function returns.
 class NativeArgs {
 public:
     NativeArgs(std::uint8_t* block, const NativeSignature& signature,
-               std::span<std::uint8_t> memory)
-        : block_(block), signature_(signature), memory_(memory) {}
+               std::span<std::uint8_t> memory, const NativeCallContext* context = nullptr)
+        : block_(block), signature_(signature), memory_(memory), context_(context) {}
 
     template <typename T>
     T get(std::size_t index) const {
@@ -33,6 +47,25 @@ public:
     /// `size` bytes of VM memory at `address`; empty if that is NULL or outside the memory.
     std::span<std::uint8_t> memory(std::uint64_t address, std::uint32_t size) const;
 
+    /// The text of the STRING parameter `index` (a Ptr).
+    std::string text(std::size_t index);
+    /// The text of the WSTRING parameter `index` (a Ptr), as UTF-8.
+    std::string wide_text(std::size_t index);
+    /// The value of the ANY input whose pointer is parameter `index` (its descriptor, a U32,
+    /// is parameter `index + 1`).
+    NativeValue any(std::size_t index);
+    /// The ARRAY[*] whose reference is parameter `index` (its element descriptor, a U32, is
+    /// parameter `index + 1`).
+    NativeArray array(std::size_t index);
+
+    /// The POU and line of this call, as a run-time error there would name them; empty when
+    /// the engine gave no context (a NativeArgs made by hand). Computed when asked: call it on
+    /// the failure path, not at every call.
+    NativeCallSite call_site() const;
+    /// The call sites of the POUs that called the one making this call, the innermost first
+    /// and the task's program last (a call copied in place counts as a call).
+    std::vector<NativeCallSite> callers() const;
+
     /// Stops the calling task with this reason (allocates: only on the error path).
     void fail(std::string reason) { failure_ = std::move(reason); }
     bool failed() const { return !failure_.empty(); }
@@ -42,6 +75,7 @@ private:
     std::uint8_t* block_;
     const NativeSignature& signature_;
     std::span<std::uint8_t> memory_;
+    const NativeCallContext* context_;
     std::string failure_;
 };
 

@@ -76,6 +76,9 @@ struct Type {
     /// Array: ARRAY[*, ...], whose bounds are known only when running (6.5.3); `dimensions`
     /// then only counts them. Struct: the reference a VAR_IN_OUT of it is passed by.
     bool conformant = false;
+    /// Struct: ANY, the generic input of a native function (a FUNCTION without statements in a
+    /// linked library), passed as the value's address and a descriptor of its type.
+    bool generic = false;
 
     /// The field `name` (case-insensitive), searching the base part too.
     const Field* field(std::string_view field_name) const;

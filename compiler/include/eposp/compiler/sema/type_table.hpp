@@ -31,6 +31,8 @@ public:
     /// What a VAR_IN_OUT of the ARRAY[*] `array` is passed by (kConformantBoundsOffset).
     const Type& conformant_reference(const Type& array);
     const Type& null();
+    /// ANY (Type::generic): a pointer and a descriptor, 16 bytes.
+    const Type& any();
     /// The type without its subrange: a subrange's base type, else `type` itself.
     const Type& unranged(const Type& type);
 
@@ -82,6 +84,7 @@ private:
     std::map<const Type*, const Type*> references_;
     std::map<const Type*, const Type*> conformant_references_;
     const Type* null_ = nullptr;
+    const Type* any_ = nullptr;
     std::unordered_map<const ast::TypeSpec*, const Type*> specs_;
     std::unordered_map<const ast::Pou*, const Type*> instances_;
     std::unordered_map<const ast::TypeDeclaration*, const Type*> renamed_with_default_;

@@ -1,0 +1,236 @@
+// Native functions (docs/runtime.md "Native functions"): a FUNCTION without statements in a
+// linked library has no body in the image; every call of it is one CallNative of the host
+// function of its name, its arguments in the call's argument block. Elementary inputs go by
+// value, strings by address, ANY as the value's address and a descriptor of its type, and a
+// VAR_IN_OUT ARRAY[*] as the address of its reference (address and bounds) and a descriptor of
+// its element type (vm/native_values.hpp).
+
+#include "eposp/compiler/sema/type.hpp"
+#include "eposp/vm/native_values.hpp"
+#include "pou_generator.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace eposp::compiler::codegen {
+
+using vm::Operand;
+
+namespace {
+
+// vm::NativeType lists the elementary types in ast::ElementaryType's order.
+static_assert(static_cast<int>(vm::NativeType::Bool) ==
+              static_cast<int>(ast::ElementaryType::Bool));
+static_assert(static_cast<int>(vm::NativeType::Ldt) == static_cast<int>(ast::ElementaryType::Ldt));
+static_assert(static_cast<int>(vm::NativeType::String) ==
+              static_cast<int>(ast::ElementaryType::String));
+static_assert(static_cast<int>(vm::NativeType::Wchar) ==
+              static_cast<int>(ast::ElementaryType::Wchar));
+
+/// An elementary value (an enumeration, a subrange), passed by value.
+bool is_elementary_value(const sema::Type& type) {
+    return type.kind == sema::TypeKind::Elementary || type.kind == sema::TypeKind::Enum;
+}
+
+/// What an ANY input and an ARRAY[*]'s element may be.
+bool is_any_value(const sema::Type& type) {
+    return is_elementary_value(type) || type.kind == sema::TypeKind::String;
+}
+
+vm::NativeType native_type(const sema::Type& type) {
+    if (type.kind == sema::TypeKind::String) {
+        return type.wide ? vm::NativeType::Wstring : vm::NativeType::String;
+    }
+    return static_cast<vm::NativeType>(type.elementary); // an enumeration's is its base
+}
+
+constexpr std::string_view kSupported =
+    "a native function takes VAR_INPUTs of elementary types, STRING, WSTRING or ANY, and "
+    "VAR_IN_OUTs of ARRAY[*] OF an elementary type or a string";
+
+} // namespace
+
+bool ProgramGenerator::is_native_function(const ast::Pou& pou) const {
+    return linked_pous_.contains(&pou) && pou.kind == ast::PouKind::Function && pou.body.empty();
+}
+
+const NativeFunctionInterface* ProgramGenerator::native_function(const ast::Pou& pou) {
+    if (const auto it = native_functions_.find(&pou); it != native_functions_.end()) {
+        return it->second ? &*it->second : nullptr;
+    }
+    auto& entry = native_functions_[&pou];
+    const std::size_t errors = diagnostics_.error_count();
+    NativeFunctionInterface native;
+    const sema::Type& frame = *types_.frame(pou);
+    for (const sema::Field& field : frame.fields) {
+        if (field.declaration == nullptr) { // the result
+            if (!sema::is_scalar(*field.type) || field.type->kind == sema::TypeKind::Reference) {
+                diagnostics_.error(pou.return_type->range,
+                                   fmt::format("the native function '{}' returns a {}: a native "
+                                               "function returns an elementary value or nothing",
+                                               pou.name.name, field.type->name));
+                continue;
+            }
+            native.result = field.type;
+            native.signature.has_result = true;
+            native.signature.result = sema::scalar_of(*field.type);
+            continue;
+        }
+        NativeParameter parameter{&field, NativeParameter::Kind::Value,
+                                  native.signature.parameters.size()};
+        const sema::Type& type = *field.type;
+        if (field.section == ast::VarSectionKind::Input && is_elementary_value(type)) {
+            native.signature.parameters.push_back(sema::scalar_of(type));
+        } else if (field.section == ast::VarSectionKind::Input &&
+                   type.kind == sema::TypeKind::String) {
+            parameter.kind = NativeParameter::Kind::String;
+            native.signature.parameters.push_back(vm::Scalar::Ptr);
+        } else if (field.section == ast::VarSectionKind::Input && type.generic) {
+            parameter.kind = NativeParameter::Kind::Any;
+            native.signature.parameters.push_back(vm::Scalar::Ptr);
+            native.signature.parameters.push_back(vm::Scalar::U32);
+        } else if (field.section == ast::VarSectionKind::InOut && type.conformant &&
+                   type.element->dimensions.size() == 1 && is_any_value(*type.element->element)) {
+            parameter.kind = NativeParameter::Kind::Array;
+            native.signature.parameters.push_back(vm::Scalar::Ptr);
+            native.signature.parameters.push_back(vm::Scalar::U32);
+        } else {
+            const bool in_out = field.section == ast::VarSectionKind::InOut;
+            diagnostics_.error(field.declaration->range,
+                               fmt::format("'{}' of the native function '{}' is {}{}: {}",
+                                           field.name, pou.name.name,
+                                           field.section == ast::VarSectionKind::Input || in_out
+                                               ? (in_out ? "a VAR_IN_OUT of " : "a ")
+                                               : "not a VAR_INPUT: ",
+                                           in_out ? type.element->name : type.name, kSupported));
+            continue;
+        }
+        native.parameters.push_back(parameter);
+    }
+    if (diagnostics_.error_count() != errors) {
+        return nullptr;
+    }
+    entry = std::move(native);
+    return &*entry;
+}
+
+std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function,
+                                                        const ast::CallExpression& node,
+                                                        const Destination* dest,
+                                                        const SourceRange& range) {
+    const NativeFunctionInterface* native = program_.native_function(function);
+    if (native == nullptr) {
+        return std::nullopt; // reported at its declaration
+    }
+    const sema::Type& frame = *types_.frame(function);
+    const auto& parameters = native->parameters;
+    std::vector<const ast::Argument*> given(parameters.size(), nullptr);
+    std::size_t positional = 0;
+    bool ok = true;
+    for (const ast::Argument& argument : node.arguments) {
+        if (is_enable_argument(argument)) {
+            continue;
+        }
+        const sema::Field* field = formal(frame, argument, positional);
+        const auto it = std::find_if(parameters.begin(), parameters.end(),
+                                     [&](const NativeParameter& p) { return p.field == field; });
+        if (field == nullptr || it == parameters.end() ||
+            argument.kind == ast::Argument::Kind::Output) {
+            error(argument.range,
+                  argument.name ? fmt::format("'{}' has no input '{}'", function.name.name,
+                                              argument.name->name)
+                                : fmt::format("too many arguments for '{}'", function.name.name));
+            ok = false;
+            continue;
+        }
+        const auto& slot = given[static_cast<std::size_t>(it - parameters.begin())];
+        if (slot != nullptr) {
+            error(argument.range, fmt::format("'{}' is given twice", field->name));
+            ok = false;
+            continue;
+        }
+        given[static_cast<std::size_t>(it - parameters.begin())] = &argument;
+    }
+    if (!ok) {
+        return std::nullopt;
+    }
+    // Every argument is evaluated before any is placed: evaluating one may call.
+    std::vector<Value> arguments(native->signature.parameters.size());
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        const NativeParameter& parameter = parameters[i];
+        const sema::Type& type = *parameter.field->type;
+        const ast::Argument* argument = given[i];
+        if (argument == nullptr && (parameter.kind == NativeParameter::Kind::Value ||
+                                    parameter.kind == NativeParameter::Kind::String)) {
+            // 6.6.1.7: an input left out takes its initial value.
+            std::vector<std::uint8_t> bytes(type.size);
+            program_.initial_value(type, parameter.field->declaration->initial_value.get(), bytes);
+            arguments[parameter.slot] = Value{program_.constant(bytes, 8), &type};
+            continue;
+        }
+        if (argument == nullptr) {
+            error(range,
+                  fmt::format("{} '{}' of '{}' must be given",
+                              parameter.kind == NativeParameter::Kind::Any ? "the ANY input"
+                                                                           : "the VAR_IN_OUT",
+                              parameter.field->name, function.name.name));
+            return std::nullopt;
+        }
+        std::optional<Value> value;
+        switch (parameter.kind) {
+        case NativeParameter::Kind::Value:
+            program_.warn_if_cut(*argument->value, type);
+            value = value_as(*argument->value, type);
+            break;
+        case NativeParameter::Kind::String:
+            // Any STRING goes by its own address, whatever its capacity: nothing is cut.
+            value = eval(*argument->value, &type);
+            if (value &&
+                !(value->type->kind == sema::TypeKind::String && value->type->wide == type.wide)) {
+                value = value_as(*value, argument->value->range, type);
+            }
+            break;
+        case NativeParameter::Kind::Any:
+            value = any_argument(*argument->value);
+            if (value) {
+                arguments[parameter.slot + 1] = native_descriptor(*value->type);
+            }
+            break;
+        case NativeParameter::Kind::Array: {
+            const auto target = place(*argument->value);
+            value =
+                target ? in_out_argument(*target, *parameter.field, argument->range) : std::nullopt;
+            arguments[parameter.slot + 1] = native_descriptor(*type.element->element);
+            break;
+        }
+        }
+        if (!value) {
+            return std::nullopt;
+        }
+        arguments[parameter.slot] = *value;
+    }
+    call_native(function.name.name, native->signature, arguments);
+    return native->result != nullptr ? native_result(native->signature, *native->result, dest)
+                                     : std::optional(Value{});
+}
+
+std::optional<Value> PouGenerator::any_argument(const ast::Expression& expression) {
+    auto value = eval(expression, nullptr);
+    if (value && value->iec != nullptr) {
+        value = value_as(*value, expression.range, *value->iec);
+    }
+    if (value && !is_any_value(*value->type)) {
+        error(expression.range, fmt::format("ANY takes an elementary value or a string, not a {}",
+                                            value->type->name));
+        return std::nullopt;
+    }
+    return value;
+}
+
+Value PouGenerator::native_descriptor(const sema::Type& type) {
+    const std::uint32_t descriptor = vm::native_descriptor(native_type(type), type.size);
+    return Value{program_.constant(integer_bytes(descriptor, 4), 4),
+                 &types_.elementary(ast::ElementaryType::Udint)};
+}
+
+} // namespace eposp::compiler::codegen
