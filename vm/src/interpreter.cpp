@@ -114,9 +114,8 @@ RunState run(const Program& program, std::span<std::uint8_t> memory, TaskState& 
         const JumpTable& table = jump_tables[ip->b];                                               \
         const auto entry = static_cast<std::uint32_t>(static_cast<std::int64_t>(load<T1>(A))) -    \
                            static_cast<std::uint32_t>(table.low);                                  \
-        const bool in_table = entry < table.targets.size();                                        \
-        VM_COUNT_OUTCOME(in_table ? entry : table.targets.size());                                 \
-        VM_JUMP(in_table ? table.targets[entry] : ip->c);                                          \
+        VM_COUNT_OUTCOME(std::min<std::size_t>(entry, table.targets.size()));                      \
+        VM_JUMP(entry < table.targets.size() ? table.targets[entry] : ip->c);                      \
     }
 #define VM_EXEC_Call(T1, T2) VM_ENTER(ip->a, base[2]);
 #define VM_EXEC_CallFb(T1, T2) VM_ENTER(ip->b, A);
