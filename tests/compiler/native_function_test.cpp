@@ -257,21 +257,23 @@ e3 := N_EQUALS(c, Green, 'enums');
 e4 := N_EQUALS(d, 0.25, 'reals');
 e5 := N_EQUALS(T#1s, t, 'times');
 e6 := N_EQUALS("w", w, 'wide');
+e1 := e1 AND N_EQUALS(5, TRUE, 'literals');
 END_PROGRAM
 )ST"));
-    EXPECT_TRUE(get<bool>("Main.e1"));
+    EXPECT_FALSE(get<bool>("Main.e1"));
     EXPECT_TRUE(get<bool>("Main.e2"));
     EXPECT_TRUE(get<bool>("Main.e3"));
     EXPECT_FALSE(get<bool>("Main.e4"));
     EXPECT_TRUE(get<bool>("Main.e5"));
     EXPECT_TRUE(get<bool>("Main.e6"));
-    ASSERT_EQ(log_.size(), 6U);
+    ASSERT_EQ(log_.size(), 7U);
     EXPECT_EQ(log_[0], "INT:2 INT:2 ints");
     EXPECT_EQ(log_[1], "STRING:8 STRING:85 strings");
     EXPECT_EQ(log_[2], "INT:2 INT:2 enums");
     EXPECT_EQ(log_[3], "LREAL:8 LREAL:8 reals");
     EXPECT_EQ(log_[4], "TIME:8 TIME:8 times");
     EXPECT_EQ(log_[5], "WSTRING:8 WSTRING:166 wide");
+    EXPECT_EQ(log_[6], "DINT:4 BOOL:1 literals");
 }
 
 TEST_P(NativeFunctions, ConformantArraysArriveWithElementTypeAndBounds) {
