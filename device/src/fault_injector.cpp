@@ -1,5 +1,6 @@
 #include "eposp/device/fault_injector.hpp"
 
+#include "eposp/canopen/nmt_protocol.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/drives/epos2/device_errors.hpp"
 #include "severable_port.hpp"
@@ -38,8 +39,9 @@ core::Result<NodeTarget> FaultInjector::resolve(const FaultTarget& target) const
         if (const auto error = wrong_port(node->port)) {
             return core::Error{*error};
         }
-        if (node->node < 1 || node->node > 127) {
-            return core::Error{fmt::format("node {}: a node-ID is 1..127", node->node)};
+        if (node->node < 1 || node->node > canopen::kMaxNodeId) {
+            return core::Error{
+                fmt::format("node {}: a node-ID is 1..{}", node->node, canopen::kMaxNodeId)};
         }
         return *node;
     }
@@ -52,9 +54,9 @@ core::Result<NodeTarget> FaultInjector::resolve(const FaultTarget& target) const
     const auto slave =
         device_.objects().get_as<std::uint8_t>(static_cast<std::uint16_t>(kAxisIndex + axis), 1);
     if (slave == kInternalSlave) {
-        return NodeTarget{kInternalPort, 1};
+        return NodeTarget{kInternalPort, 1}; // the internal EPOS2 is node 1 (DESIGN.md, "CAN")
     }
-    if (slave > 127) {
+    if (slave > canopen::kMaxNodeId) {
         return core::Error{
             fmt::format("axis {} has no slave (0x{:04X} sub 1 = {}{})", axis, kAxisIndex + axis,
                         slave, slave == kUnassigned ? ", unassigned" : ", not a slave number")};

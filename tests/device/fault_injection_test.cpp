@@ -35,7 +35,8 @@ VAR
   Move0, Move1 : MC_MoveAbsolute;
   State0, State1 : MC_ReadAxisState;
   Error1 : MC_ReadAxisError;
-  Go : BOOL;
+  Reset1 : MC_Reset;
+  Go, DoReset : BOOL;
 END_VAR
 Power0(Axis := Axis0, Enable := TRUE);
 Power1(Axis := Axis1, Enable := TRUE);
@@ -46,6 +47,7 @@ Move1(Axis := Axis1, Execute := Go, Position := -120000, Velocity := 3000,
 State0(Axis := Axis0, Enable := TRUE);
 State1(Axis := Axis1, Enable := TRUE);
 Error1(Axis := Axis1, Enable := TRUE);
+Reset1(Axis := Axis1, Execute := DoReset);
 END_PROGRAM
 CONFIGURATION Cell
   RESOURCE EposP ON EPOS_P
@@ -122,6 +124,10 @@ TEST_F(FaultInjection, ADroppedHeartbeatIsALifeguardErrorAndErrorStopUntilTheNod
     EXPECT_GT(*heartbeats, 10);
     EXPECT_EQ(slave().state(), drives::motion::DriveState::SwitchOnDisabled) << "powered up";
     EXPECT_EQ(value("State1.State"), kErrorStop) << "until MC_Reset";
+    ASSERT_FALSE(device.plc().runtime().write_value<std::uint8_t>("Main.DoReset", 1));
+    device.loop().run_for(300ms);
+    EXPECT_EQ(value("Reset1.Done"), "TRUE");
+    EXPECT_EQ(value("State1.State"), kStandstill) << "MC_Power still enables it";
 }
 
 TEST_F(FaultInjection, TheInternalEpos2FallsSilentByItsNodeOnPort1) {

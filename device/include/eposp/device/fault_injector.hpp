@@ -59,8 +59,9 @@ public:
     /// ErrorStop. The drive itself goes on with what it last received. Again on a silent slave:
     /// nothing more happens.
     std::optional<core::Error> drop_heartbeat(const FaultTarget& target);
-    /// The silent slave's cable is back and it powers up again (its NMT boot: boot-up message,
-    /// pre-operational, defaults and stored parameters, Switch On Disabled), so the manager
+    /// The silent slave's cable is back and it starts again as at power-up (its NMT boot:
+    /// boot-up message, pre-operational, defaults and stored parameters, Switch On Disabled;
+    /// the motor keeps its position), so the manager
     /// boots it again (8.1) and its axis is present once booted (MC_Reset takes the blocks out
     /// of ErrorStop). On a slave that is not silent: nothing happens.
     std::optional<core::Error> restore_heartbeat(const FaultTarget& target);
