@@ -129,25 +129,28 @@ std::string format_enumerated(const TypeDescriptor& type, std::span<const std::u
 
 } // namespace
 
-std::string format_value(const Image& image, std::span<const std::uint8_t> memory,
-                         VariableLocation location) {
-    const TypeDescriptor& type = image.types.at(location.type);
+std::string format_value(const TypeDescriptor& type, std::span<const std::uint8_t> bytes) {
     switch (type.kind) {
     case TypeKind::Elementary:
         if (type.name == "CHAR" || type.name == "WCHAR") {
-            return format_character(type, memory, location.offset);
+            return format_character(type, bytes, 0);
         }
         if (!type.enumerators.empty()) {
-            return format_enumerated(type, memory, location.offset);
+            return format_enumerated(type, bytes, 0);
         }
-        return format_scalar(type, memory, location.offset);
+        return format_scalar(type, bytes, 0);
     case TypeKind::String:
-        return format_string(type, memory, location.offset);
+        return format_string(type, bytes, 0);
     case TypeKind::Array:
     case TypeKind::Struct:
         break;
     }
     return "<" + type.name + ">";
+}
+
+std::string format_value(const Image& image, std::span<const std::uint8_t> memory,
+                         VariableLocation location) {
+    return format_value(image.types.at(location.type), memory.subspan(location.offset));
 }
 
 } // namespace eposp::vm

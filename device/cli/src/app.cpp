@@ -33,6 +33,7 @@ int run_cli(int argc, char** argv) {
     cli::add_download_command(app, exit_code);
     cli::add_od_command(app, exit_code);
     cli::add_watch_command(app, exit_code);
+    cli::add_test_command(app, exit_code);
 
     // CLI11 would only say that a subcommand is required; the user wants to know which word
     // was not one.

@@ -21,5 +21,6 @@ void add_plot_command(CLI::App& app, int& exit_code);
 void add_download_command(CLI::App& app, int& exit_code);
 void add_od_command(CLI::App& app, int& exit_code);
 void add_watch_command(CLI::App& app, int& exit_code);
+void add_test_command(CLI::App& app, int& exit_code);
 
 } // namespace eposp::device::cli

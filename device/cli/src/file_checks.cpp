@@ -84,6 +84,10 @@ std::string_view kind_name(OutputKind kind) {
         return "a concise DCF";
     case OutputKind::SvgPicture:
         return "an SVG picture";
+    case OutputKind::JunitReport:
+        return "a JUnit report";
+    case OutputKind::LcovTracefile:
+        return "an lcov tracefile";
     }
     return "a file of this kind";
 }
@@ -116,6 +120,10 @@ bool is_of_kind(const std::filesystem::path& path, OutputKind kind) {
         return looks_like_concise_dcf(path);
     case OutputKind::SvgPicture:
         return head.starts_with("<svg") || head.starts_with("<?xml");
+    case OutputKind::JunitReport:
+        return head.starts_with("<?xml") && head.find("<testsuites") != std::string::npos;
+    case OutputKind::LcovTracefile:
+        return head.starts_with("TN:") || head.starts_with("SF:");
     }
     return false;
 }

@@ -21,6 +21,8 @@ enum class OutputKind {
     DeviceDescription, ///< EDS or DCF (CiA 306: an INI file)
     ConciseDcf,        ///< CiA 302-3 concise DCF (a well-formed entry list)
     SvgPicture,        ///< `eposp plot`
+    JunitReport,       ///< `eposp test --junit` (XML with <testsuites>)
+    LcovTracefile,     ///< `eposp test --coverage` (lcov records: `TN:` / `SF:` lines)
 };
 
 /// A file a command is about to write, and the option that named it.

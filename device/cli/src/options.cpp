@@ -36,11 +36,11 @@ CLI::Option* add_duration_option(CLI::App& command, const std::string& name,
     return command
         .add_option_function<std::string>(
             name,
-            [&target](const std::string& text) {
+            [&target, name](const std::string& text) {
                 target = core::parse_duration(text);
                 if (!target) {
                     throw CLI::ValidationError(
-                        "--for", "'" + text + "' is not a duration (examples: 10s, 250ms, 2m)");
+                        name, "'" + text + "' is not a duration (examples: 10s, 250ms, 2m)");
                 }
             },
             description)

@@ -33,7 +33,9 @@ std::string console_report(const std::vector<SuiteResult>& suites) {
         if (suite.error) {
             report += fmt::format("{}{}: {}\n", place_prefix(suite.error->place), suite.name,
                                   suite.error->text);
-            continue;
+            if (suite.tests.empty()) {
+                continue;
+            }
         }
         const Totals counts = totals({suite});
         report += fmt::format("{}: {} ({} s machine time, {:.3f} s wall time)\n", suite.name,

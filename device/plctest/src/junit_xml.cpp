@@ -105,8 +105,8 @@ void write_suite(std::string& xml, const SuiteResult& suite) {
     const Totals counts = totals({suite});
     xml += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" "
                        "skipped=\"{}\" time=\"{:.6f}\"",
-                       escaped(suite.name), suite.error ? 1 : suite.tests.size(),
-                       suite.error ? 0 : counts.failed, suite.error ? 1 : 0, counts.skipped,
+                       escaped(suite.name), suite.tests.size() + (suite.error ? 1 : 0),
+                       counts.failed - (suite.error ? 1 : 0), suite.error ? 1 : 0, counts.skipped,
                        suite.wall_seconds);
     if (!suite.place.file.empty()) {
         xml += fmt::format(" file=\"{}\"", escaped(suite.place.file));
@@ -141,7 +141,7 @@ std::string junit_xml(const std::vector<SuiteResult>& suites) {
     std::size_t errors = 0;
     double wall = 0;
     for (const SuiteResult& suite : suites) {
-        tests += suite.error ? 1 : suite.tests.size();
+        tests += suite.tests.size() + (suite.error ? 1 : 0);
         errors += suite.error ? 1 : 0;
         wall += suite.wall_seconds;
     }

@@ -99,6 +99,8 @@ public:
     bool task_faulted(std::size_t task) const;
     /// "division by zero in Main at line 3" for a faulted task.
     std::string fault_text(std::size_t task) const { return machine_->describe_fault(task); }
+    /// Where a faulted task stopped (its POU and line), for reports that name the file.
+    const Fault& fault(std::size_t task) const { return machine_->task(task).fault; }
 
     // The device's side of the I/O.
     ProcessImage& process_image() { return process_image_; }

@@ -15,4 +15,8 @@ namespace eposp::vm {
 std::string format_value(const Image& image, std::span<const std::uint8_t> memory,
                          VariableLocation location);
 
+/// The same for a value of the elementary or string `type` that `bytes` begins with (its name
+/// tells TIME from LINT, STRING's header gives its length).
+std::string format_value(const TypeDescriptor& type, std::span<const std::uint8_t> bytes);
+
 } // namespace eposp::vm

@@ -1,0 +1,44 @@
+#pragma once
+
+#include "eposp/compiler/ast/compilation_unit.hpp"
+#include "eposp/compiler/source_manager.hpp"
+#include "eposp/core/result.hpp"
+#include "eposp/plctest/test_results.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace eposp::plctest {
+
+/// A test suite: a FUNCTION_BLOCK or PROGRAM whose body calls TEST().
+struct Suite {
+    std::string name;
+    compiler::ast::PouKind kind = compiler::ast::PouKind::FunctionBlock;
+    SourcePlace place;
+    /// Its test doubles: the FUNCTION_BLOCK each named FB is replaced by while this suite runs,
+    /// from `{attribute 'mock' := 'FB_Valve => FB_ValveDouble'}` just above its declaration.
+    std::map<std::string, std::string> mocks;
+};
+
+/// What the test files hold: their suites and where each POU is declared.
+struct TestSources {
+    std::vector<std::string> paths;
+    std::vector<Suite> suites; ///< in file and source order
+    /// Each POU's file by its name in upper case (IEC names are case-insensitive), for reports.
+    std::map<std::string, std::string> pou_files;
+
+    /// The file of `pou` (any case); empty for a library's.
+    std::string file_of(std::string_view pou) const;
+};
+
+/// The suites of the files, or why the files do not parse or hold a malformed mock attribute
+/// (`file:line: error: …`).
+core::Result<TestSources> discover_suites(const std::vector<std::string>& paths);
+
+/// The mocks of the attributes on the lines just above `line` (1-based) of `text`: pragma lines
+/// `{attribute 'mock' := 'A => B'}`, blank lines and comment lines between them.
+core::Result<std::map<std::string, std::string>> mock_attributes(std::string_view text,
+                                                                 std::uint32_t line);
+
+} // namespace eposp::plctest

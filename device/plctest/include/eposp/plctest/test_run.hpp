@@ -1,0 +1,48 @@
+#pragma once
+
+#include "eposp/core/result.hpp"
+#include "eposp/plctest/suite_runner.hpp"
+#include "eposp/plctest/suites.hpp"
+#include "eposp/vm/coverage_report.hpp"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace eposp::plctest {
+
+/// `--filter`: GoogleTest's form, `POSITIVE[-NEGATIVE]`, each a `:`-separated list of globs
+/// (`*`, `?`, `[…]`) matched against `Suite.Test`; a test runs when it matches a positive one
+/// (all do when there is none) and no negative one.
+class TestFilter {
+public:
+    explicit TestFilter(std::string_view filter = "");
+    bool selects(std::string_view suite, std::string_view test) const;
+    /// Whether some test of `suite` may be selected (a suite that cannot is not run).
+    bool may_select(std::string_view suite) const;
+
+private:
+    std::vector<std::string> positive_;
+    std::vector<std::string> negative_;
+};
+
+struct TestRunOptions {
+    std::vector<std::string> paths; ///< the program under test and its test files
+    RunSettings settings;
+    TestFilter filter;
+    /// Suites run at once, each in its own EPOS P on its own thread; the results do not depend
+    /// on it.
+    unsigned jobs = 1;
+};
+
+struct TestRun {
+    TestSources sources;
+    std::vector<SuiteResult> suites; ///< in file and source order
+    vm::CoverageReport coverage;     ///< merged over the suites when asked for
+};
+
+/// Discovers the suites of the files, compiles each with its harness and runs it; the error
+/// says why the files could not be read or parsed.
+core::Result<TestRun> run_tests(const TestRunOptions& options);
+
+} // namespace eposp::plctest

@@ -1,0 +1,117 @@
+#include "eposp/compiler/ast/calling_pous.hpp"
+#include "eposp/compiler/diagnostics.hpp"
+#include "eposp/compiler/parser.hpp"
+#include "eposp/plctest/suites.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <vector>
+
+namespace eposp::plctest {
+namespace {
+
+constexpr std::string_view kMockAttribute = "{attribute 'mock' := '";
+
+std::string_view trimmed(std::string_view text) {
+    const auto first = text.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos) {
+        return {};
+    }
+    return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
+std::vector<std::string_view> lines_of(std::string_view text) {
+    std::vector<std::string_view> lines;
+    for (std::size_t begin = 0; begin <= text.size();) {
+        const std::size_t end = std::min(text.find('\n', begin), text.size());
+        lines.push_back(text.substr(begin, end - begin));
+        begin = end + 1;
+    }
+    return lines;
+}
+
+bool is_identifier(std::string_view name) {
+    return !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+           std::ranges::all_of(name, [](char c) {
+               return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+           });
+}
+
+std::string upper_case(std::string_view name) {
+    std::string upper(name);
+    std::ranges::transform(upper, upper.begin(),
+                           [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return upper;
+}
+
+} // namespace
+
+core::Result<std::map<std::string, std::string>> mock_attributes(std::string_view text,
+                                                                 std::uint32_t line) {
+    const std::vector<std::string_view> lines = lines_of(text);
+    std::map<std::string, std::string> mocks;
+    for (std::uint32_t number = line - 1; number >= 1 && number <= lines.size(); --number) {
+        const std::string_view content = trimmed(lines[number - 1]);
+        if (content.empty() || content.starts_with("//") ||
+            (content.starts_with("(*") && content.ends_with("*)"))) {
+            continue;
+        }
+        if (!content.starts_with("{")) {
+            break; // the end of what precedes the declaration
+        }
+        if (!content.starts_with(kMockAttribute)) {
+            continue; // another pragma
+        }
+        const std::string_view value = content.substr(kMockAttribute.size());
+        const auto end = value.find("'}");
+        const auto arrow = value.find("=>");
+        const std::string_view original = trimmed(value.substr(0, std::min(arrow, end)));
+        const std::string_view replacement =
+            arrow < end ? trimmed(value.substr(arrow + 2, end - arrow - 2)) : std::string_view();
+        if (end == std::string_view::npos || !is_identifier(original) ||
+            !is_identifier(replacement)) {
+            return core::Error{
+                fmt::format("{}: error: a mock attribute reads {{attribute 'mock' := 'FB_Name => "
+                            "FB_Double'}}",
+                            number)};
+        }
+        mocks.emplace(original, replacement);
+    }
+    return mocks;
+}
+
+std::string TestSources::file_of(std::string_view pou) const {
+    const auto found = pou_files.find(upper_case(pou));
+    return found == pou_files.end() ? std::string() : found->second;
+}
+
+core::Result<TestSources> discover_suites(const std::vector<std::string>& paths) {
+    compiler::SourceManager sources;
+    compiler::Diagnostics diagnostics;
+    TestSources found{.paths = paths, .suites = {}, .pou_files = {}};
+    std::vector<Suite>& suites = found.suites;
+    for (const std::string& path : paths) {
+        auto file = sources.load(path);
+        if (!file) {
+            return core::Error{file.error()};
+        }
+        const compiler::ast::CompilationUnit unit = compiler::parse(sources, *file, diagnostics);
+        for (const compiler::ast::Pou& pou : unit.pous) {
+            found.pou_files.emplace(upper_case(pou.name.name), path);
+        }
+        for (const compiler::ast::CallingPou& pou : compiler::ast::pous_calling(unit, "TEST")) {
+            const std::uint32_t line = pou.range.begin.line;
+            auto mocks = mock_attributes(sources.text(*file), line);
+            if (!mocks) {
+                return core::Error{path + ":" + mocks.error()};
+            }
+            suites.push_back({pou.name, pou.kind, {path, line}, std::move(*mocks)});
+        }
+    }
+    if (diagnostics.has_errors()) {
+        return core::Error{compiler::render(diagnostics, sources)};
+    }
+    return found;
+}
+
+} // namespace eposp::plctest
