@@ -51,6 +51,10 @@ FUNCTION N_WHERE
 VAR_INPUT tag : STRING; END_VAR
 END_FUNCTION
 
+FUNCTION_BLOCK N_BLOCK
+VAR_INPUT tag : INT; END_VAR
+END_FUNCTION_BLOCK
+
 FUNCTION N_UNUSED : BOOL
 VAR_INPUT x : BOOL; END_VAR
 END_FUNCTION
@@ -147,6 +151,11 @@ protected:
             if (args.text(0) == "fail") {
                 args.fail("told to fail");
             }
+        });
+        natives_.add_block("N_BLOCK", {Scalar::I16}, [this](vm::NativeBlock& block) {
+            const vm::NativeCallSite site = block.args().call_site();
+            log_.push_back("block " + std::to_string(block.get<std::int16_t>(0)) + " at " +
+                           site.pou + ":" + std::to_string(site.line));
         });
     }
 
@@ -322,6 +331,29 @@ END_FUNCTION_BLOCK
                                    [](const vm::Pou& pou) { return pou.name == "Main"; });
     ASSERT_NE(main, image_.pous.end());
     EXPECT_EQ(main->inlined.size(), 1U);
+}
+
+TEST_P(NativeFunctions, ANativeBlocksCallSiteIsItsCallInTheCaller) {
+    ASSERT_TRUE(run(R"ST(
+PROGRAM Main
+VAR b : N_BLOCK; END_VAR
+b(tag := 1);
+END_PROGRAM
+)ST"));
+    EXPECT_EQ(log_, (std::vector<std::string>{"block 1 at Main:4"}));
+}
+
+TEST_P(NativeFunctions, EnSkipsTheCall) {
+    ASSERT_TRUE(run(R"ST(
+PROGRAM Main
+VAR r1, r2 : DINT := -1; go : BOOL; END_VAR
+r1 := N_ADD(EN := go, a := 1);
+go := TRUE;
+r2 := N_ADD(EN := go, a := 1);
+END_PROGRAM
+)ST"));
+    EXPECT_EQ(get<std::int32_t>("Main.r2"), 11);
+    EXPECT_NE(get<std::int32_t>("Main.r1"), 11);
 }
 
 TEST_P(NativeFunctions, AFailureStopsTheTaskAtTheCall) {
