@@ -30,6 +30,7 @@ struct TestOptions {
     bool coverage = false;
     unsigned jobs = std::max(1U, std::thread::hardware_concurrency());
     std::optional<core::Duration> timeout;
+    std::optional<std::uint64_t> seed;
     vm::Engine engine = vm::default_engine();
     bool force = false;
 };
@@ -73,6 +74,7 @@ int run_test_command(const TestOptions& options) {
     run_options.paths = options.paths;
     run_options.filter = plctest::TestFilter(options.filter);
     run_options.jobs = options.jobs;
+    run_options.seed = options.seed;
     run_options.settings.engine = options.engine;
     run_options.settings.coverage = options.coverage || options.lcov;
     if (options.timeout) {
@@ -139,6 +141,9 @@ void add_test_command(CLI::App& app, int& exit_code) {
                         "Write the coverage as an lcov tracefile to FILE (implies --coverage)");
     command->add_option("--jobs,-j", options->jobs, "Suites run at once (default: the cores)")
         ->check(whole_number_in(1, 256));
+    command->add_option("--seed", options->seed,
+                        "Start the suites in an order shuffled by N (each has a device of its "
+                        "own: the results must not change)");
     add_duration_option(*command, "--timeout", options->timeout,
                         "Machine time one test may take (default 10s)");
     add_engine_option(*command, options->engine);

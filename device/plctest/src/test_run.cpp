@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <atomic>
 #include <fnmatch.h>
+#include <numeric>
 #include <optional>
+#include <random>
 #include <thread>
 
 namespace eposp::plctest {
@@ -74,10 +76,17 @@ core::Result<TestRun> run_tests(const TestRunOptions& options) {
     for (const Suite* suite : suites) {
         images.emplace_back(build_suite(run.sources, *suite, cycle));
     }
+    std::vector<std::size_t> order(suites.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    if (options.seed) {
+        std::mt19937_64 random(*options.seed);
+        std::ranges::shuffle(order, random);
+    }
     std::vector<std::optional<SuiteRun>> runs(suites.size());
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
-        for (std::size_t i = next++; i < suites.size(); i = next++) {
+        for (std::size_t n = next++; n < suites.size(); n = next++) {
+            const std::size_t i = order[n];
             runs[i] = run_suite(run.sources, *suites[i], std::move(*images[i]), settings);
         }
     };

@@ -5,6 +5,8 @@
 #include "eposp/plctest/suites.hpp"
 #include "eposp/vm/coverage_report.hpp"
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +35,9 @@ struct TestRunOptions {
     /// Suites run at once, each in its own EPOS P on its own thread; the results do not depend
     /// on it.
     unsigned jobs = 1;
+    /// The suites start in an order shuffled by this seed (the report keeps the files' order):
+    /// each suite has a device of its own, so the results must not change with it.
+    std::optional<std::uint64_t> seed;
 };
 
 struct TestRun {
