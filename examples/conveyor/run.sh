@@ -6,6 +6,9 @@
 # stops it with MC_Halt, for 8 s of virtual time. It prints the count of parts and both axes
 # every 250 ms, and leaves the trace and its plot in build/demo/.
 #
+# Its unit tests (tests/*_test.st, in virtual time):
+#   eposp test examples/conveyor/conveyor.st examples/conveyor/tests/*.st --network examples/conveyor/network.yaml
+#
 # Usage: examples/conveyor/run.sh [path/to/eposp]
 . "$(dirname "${BASH_SOURCE[0]}")/../demo-common.sh"
 

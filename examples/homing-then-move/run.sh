@@ -6,6 +6,9 @@
 # program's end state and the axis every 250 ms, and leaves the trace and its plot in
 # build/demo/.
 #
+# Its unit tests (tests/*_test.st, in virtual time):
+#   eposp test examples/homing-then-move/homing-then-move.st examples/homing-then-move/tests/*.st --network examples/homing-then-move/network.yaml
+#
 # Usage: examples/homing-then-move/run.sh [path/to/eposp]
 . "$(dirname "${BASH_SOURCE[0]}")/../demo-common.sh"
 

@@ -5,6 +5,9 @@
 # moves with MC_MoveAbsolute, for 10 s of virtual time. It prints the cell's step and cycle
 # count, the axes every 250 ms from the trace, and leaves the trace and its plot in build/demo/.
 #
+# Its unit tests (tests/*_test.st, in virtual time):
+#   eposp test examples/pick-and-place/pick-and-place.st examples/pick-and-place/tests/*.st --network examples/two-axis/network.yaml
+#
 # Usage: examples/pick-and-place/run.sh [path/to/eposp]
 . "$(dirname "${BASH_SOURCE[0]}")/../demo-common.sh"
 

@@ -2,6 +2,9 @@
 # The PLC part of the demo: a Structured Text program compiled to a program image, the image
 # disassembled, and its task run for two seconds of virtual time with two variables watched.
 #
+# Its unit tests (tests/*_test.st, in virtual time):
+#   eposp test examples/plc-basics/blinker.st examples/plc-basics/tests/*.st
+#
 # Usage: examples/plc-basics/run.sh [path/to/eposp]
 set -euo pipefail
 eposp=$(realpath "${1:-build/device/eposp}")

@@ -5,6 +5,9 @@
 # the boot report and the axes' positions from the trace, and leaves the trace (axes.csv), a
 # candump log of both buses and a pcap of the CAN bus in build/demo/.
 #
+# Its unit tests (tests/*_test.st, in virtual time):
+#   eposp test examples/two-axis/two-axis.st examples/two-axis/tests/*.st --network examples/two-axis/network.yaml
+#
 # Usage: examples/two-axis/run.sh [path/to/eposp]
 . "$(dirname "${BASH_SOURCE[0]}")/../demo-common.sh"
 
