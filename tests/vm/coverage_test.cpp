@@ -139,6 +139,32 @@ TEST(Coverage, CountsAnInlinedFunctionsLinesForTheFunction) {
     EXPECT_EQ(report.pous.at("Main").lines.at(line_of("a := Twice(n)")), 3u);
 }
 
+// A REPEAT at the very top of a body jumps back to its first instruction: those runs are not
+// entries of the POU (nor of its inlined copies).
+TEST(Coverage, CountsEntriesNotLoopRoundsAtTheTopOfABody) {
+    NativeRegistry natives;
+    stdlib::register_standard_library(natives);
+    auto image = RuntimeHarness::compile_st(R"(FUNCTION_BLOCK Spin
+  VAR_INPUT k : DINT; END_VAR
+  REPEAT k := k + 1; UNTIL k >= 3 END_REPEAT;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR s : Spin; END_VAR
+  s(k := 0);
+  s(k := 1);
+END_PROGRAM
+)");
+    ASSERT_TRUE(image);
+    auto program = link(std::move(*image), natives, Engine::Interpreter);
+    ASSERT_TRUE(program) << program.error();
+    Machine machine(*program, Coverage::Record);
+    EXPECT_EQ(machine.run_cycle(0), RunState::Finished);
+    const CoverageReport report = machine.coverage();
+    EXPECT_EQ(report.pous.at("Spin").calls, 2u);
+    EXPECT_EQ(report.pous.at("Spin").lines.at(3), 3u + 2u); // rounds from k = 0, then 1
+    EXPECT_EQ(report.pous.at("Main").lines.at(7), 1u);      // the call, its copy entered once
+}
+
 TEST(Coverage, RecordsOnTheInterpreterWhateverTheEngine) {
     const CoverageRun run(2, Coverage::Record, Engine::Compiled);
     EXPECT_EQ(run.report().pous.at("Main").lines.at(line_of("n := n + 1")), 2u);
