@@ -3,6 +3,7 @@
 #include "eposp/vm/value_format.hpp"
 
 #include <cmath>
+#include <fmt/format.h>
 
 namespace eposp::plctest {
 namespace {
@@ -144,6 +145,11 @@ bool integers_equal(const vm::NativeValue& a, Kind a_kind, const vm::NativeValue
 } // namespace
 
 std::string literal(const vm::NativeValue& value) {
+    // Bit strings read best as the hexadecimal literals they are usually written as.
+    if (value.type == NativeType::Byte || value.type == NativeType::Word ||
+        value.type == NativeType::Dword || value.type == NativeType::Lword) {
+        return fmt::format("16#{:0{}X}", unsigned_value(value), value.bytes.size() * 2);
+    }
     vm::TypeDescriptor type;
     type.name = std::string(vm::native_type_name(value.type));
     if (value.is_string()) {

@@ -9,7 +9,7 @@
 
 namespace eposp::plctest {
 
-/// The value as an ST literal: `TRUE`, `-5`, `255`, `1.5`, `T#1s500ms`,
+/// The value as an ST literal: `TRUE`, `-5`, `255`, `16#00FF` (a bit string), `1.5`, `T#1s500ms`,
 /// `D#2024-01-31`, `'text'`.
 std::string literal(const vm::NativeValue& value);
 

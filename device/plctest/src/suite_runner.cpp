@@ -70,7 +70,7 @@ SuiteRun run_suite(const TestSources& sources, const Suite& suite, core::Result<
 
     TestLibrary::register_natives(
         device.plc().natives(), recorder, device.loop(),
-        [&sources](std::string_view pou) { return sources.file_of(pou); });
+        [&sources](std::string_view pou) { return sources.file_of(pou); }, device.faults());
     if (auto error = device.plc().load(std::move(*image))) {
         return finish(Failure{suite.place, "cannot be loaded: " + error->message});
     }

@@ -2,7 +2,7 @@
 
 #include "eposp/plctest/test_library.hpp"
 
-#include "function_interface.hpp"
+#include "library_call.hpp"
 #include "native_value_text.hpp"
 
 #include <array>
@@ -73,83 +73,6 @@ FunctionParameter duration(std::string name) {
     return value(std::move(name), {"TIME", NativeType::Time, Scalar::I64});
 }
 
-/// One call of a library function: its arguments by parameter number.
-class Call {
-public:
-    Call(vm::NativeArgs& args, const FunctionInterface& function)
-        : args_(args), function_(function) {}
-
-    /// A Value or Any parameter's value; a Value's bytes are copied into `storage`.
-    vm::NativeValue value(std::size_t parameter, NativeType type,
-                          std::array<std::uint8_t, 8>& storage) {
-        const std::size_t at = function_.position(parameter);
-        if (function_.parameters[parameter].passed == Passed::Any) {
-            return args_.any(at);
-        }
-        const Scalar scalar = function_.parameters[parameter].scalar;
-        const std::uint32_t size = vm::scalar_size(scalar);
-        switch (size) {
-        case 1:
-            copy(storage, args_.get<std::uint8_t>(at));
-            break;
-        case 2:
-            copy(storage, args_.get<std::uint16_t>(at));
-            break;
-        case 4:
-            copy(storage, args_.get<std::uint32_t>(at));
-            break;
-        default:
-            copy(storage, args_.get<std::uint64_t>(at));
-            break;
-        }
-        return {type, std::span<const std::uint8_t>(storage.data(), size)};
-    }
-    bool flag(std::size_t parameter) {
-        return args_.get<std::uint8_t>(function_.position(parameter)) != 0;
-    }
-    core::Duration duration(std::size_t parameter) {
-        return core::Duration(args_.get<std::int64_t>(function_.position(parameter)));
-    }
-    double real(std::size_t parameter) {
-        const std::size_t at = function_.position(parameter);
-        return function_.parameters[parameter].scalar == Scalar::F32 ? args_.get<float>(at)
-                                                                     : args_.get<double>(at);
-    }
-    std::string text(std::size_t parameter) { return args_.text(function_.position(parameter)); }
-    vm::NativeArray array(std::size_t parameter) {
-        return args_.array(function_.position(parameter));
-    }
-    vm::NativeArgs& args() { return args_; }
-
-private:
-    template <typename T>
-    static void copy(std::array<std::uint8_t, 8>& storage, T value) {
-        std::memcpy(storage.data(), &value, sizeof(T));
-    }
-
-    vm::NativeArgs& args_;
-    const FunctionInterface& function_;
-};
-
-/// What the bodies share: the suite's recorder, the clock, the files of the POUs.
-struct Binding {
-    TestRecorder& recorder;
-    const core::EventLoop& loop;
-    PouFiles files;
-
-    CallSite site(const vm::NativeArgs& args, std::string_view function) const {
-        const vm::NativeCallSite at = args.call_site();
-        const std::size_t key =
-            std::hash<std::string>{}(fmt::format("{}:{}:{}", function, at.pou, at.line));
-        return {key, {files ? files(at.pou) : std::string(), at.line}};
-    }
-    /// An assertion's outcome; the call site is looked up only when it failed.
-    bool check(vm::NativeArgs& args, std::string_view function, bool passed,
-               const std::function<std::string()>& describe) const {
-        return passed || recorder.check(false, site(args, function), describe);
-    }
-};
-
 std::string with_message(std::string text, const std::string& message) {
     return message.empty() ? text : text + ": " + message;
 }
@@ -164,13 +87,6 @@ std::string mismatch(const vm::NativeValue& expected, const vm::NativeValue& act
     return fmt::format("expected {}, got {}", literal(expected), literal(actual));
 }
 
-using Body = std::function<bool(Call&, const Binding&, std::string_view name)>;
-
-struct LibraryFunction {
-    FunctionInterface interface;
-    Body body;
-};
-
 Body equals_body(NativeType type) {
     return [type](Call& call, const Binding& binding, std::string_view name) {
         std::array<std::uint8_t, 8> expected_storage{};
@@ -184,13 +100,16 @@ Body equals_body(NativeType type) {
     };
 }
 
-Body string_equals_body() {
-    return [](Call& call, const Binding& binding, std::string_view name) {
-        const std::string expected = call.text(0);
-        const std::string actual = call.text(1);
+// A WSTRING's characters are compared and shown as UTF-8, between its literal's double quotes.
+Body string_equals_body(bool wide) {
+    return [wide](Call& call, const Binding& binding, std::string_view name) {
+        const std::string expected = wide ? call.wide_text(0) : call.text(0);
+        const std::string actual = wide ? call.wide_text(1) : call.text(1);
+        const char quote = wide ? '"' : '\'';
         return binding.check(call.args(), name, expected == actual, [&] {
-            return with_message(fmt::format("expected '{}', got '{}'", expected, actual),
-                                call.text(2));
+            return with_message(
+                fmt::format("expected {1}{0}{1}, got {1}{2}{1}", expected, quote, actual),
+                call.text(2));
         });
     };
 }
@@ -302,7 +221,7 @@ std::vector<LibraryFunction> library_functions() {
             {{"Expected", std::string(type) + "(255)", Passed::String},
              {"Actual", std::string(type) + "(255)", Passed::String},
              text("Message")},
-            string_equals_body());
+            string_equals_body(type == "WSTRING"));
     }
     add("AssertTrue", {flag("Condition"), text("Message")}, condition_body(true));
     add("AssertFalse", {flag("Condition"), text("Message")}, condition_body(false));
@@ -317,6 +236,7 @@ std::vector<LibraryFunction> library_functions() {
              text("Message")},
             array_equals_body(2));
     }
+    std::ranges::move(fault_functions(), std::back_inserter(functions));
     return functions;
 }
 
@@ -340,16 +260,11 @@ std::string_view TestLibrary::source() {
 }
 
 void TestLibrary::register_natives(vm::NativeRegistry& natives, TestRecorder& recorder,
-                                   const core::EventLoop& loop, PouFiles files) {
-    auto binding = std::make_shared<const Binding>(Binding{recorder, loop, std::move(files)});
-    for (const LibraryFunction& function : functions()) {
-        natives.add(function.interface.name, function.interface.signature(),
-                    [binding, &function](vm::NativeArgs& args) {
-                        Call call(args, function.interface);
-                        const bool result = function.body(call, *binding, function.interface.name);
-                        args.set_result<std::uint8_t>(result ? 1 : 0);
-                    });
-    }
+                                   const core::EventLoop& loop, PouFiles files,
+                                   device::FaultInjector& faults) {
+    register_functions(
+        natives, functions(),
+        std::make_shared<const Binding>(Binding{recorder, loop, std::move(files), faults}));
 }
 
 } // namespace eposp::plctest

@@ -41,7 +41,7 @@ bool TestRecorder::begin_test(std::string_view name, const CallSite& site, core:
         tests_, name, [](const Test& t) { return std::string_view(t.result.name); });
     if (known != tests_.end()) {
         current_ = static_cast<std::size_t>(known - tests_.begin());
-        if (known->last_cycle == cycle_ && known->running) {
+        if (known->last_cycle == cycle_) {
             report_misuse(site.place, fmt::format("TEST('{}') is called twice in one cycle: the "
                                                   "tests of a suite need names of their own",
                                                   name));
@@ -129,6 +129,21 @@ bool TestRecorder::advance_time(core::Duration duration, const CallSite& site,
     }
     const auto [wait, first] = test->waits.try_emplace(site.key, now);
     return now - wait->second >= duration;
+}
+
+bool TestRecorder::first_call(const CallSite& site) {
+    Test* test = running_test();
+    if (!test || std::ranges::find(test->called_sites, site.key) != test->called_sites.end()) {
+        return false;
+    }
+    test->called_sites.push_back(site.key);
+    return true;
+}
+
+void TestRecorder::fail_running(const CallSite& site, std::string text) {
+    if (Test* test = running_test()) {
+        fail(*test, {site.place, std::move(text)});
+    }
 }
 
 void TestRecorder::end_cycle(core::TimePoint now) {

@@ -54,6 +54,11 @@ public:
     /// ADVANCE_TIME(duration): TRUE once `duration` of machine time has passed since the first
     /// call.
     bool advance_time(core::Duration duration, const CallSite& site, core::TimePoint now);
+    /// Whether the running test calls from `site` for the first time: an action that must
+    /// happen once in a test (a fault injected) although the test's body runs every cycle.
+    bool first_call(const CallSite& site);
+    /// Fails the running test (a fault the library could not inject: its reason).
+    void fail_running(const CallSite& site, std::string text);
     /// Ends a cycle of the suite's task: a test past its timeout fails and ends.
     void end_cycle(core::TimePoint now);
     /// The suite's task stopped (a run-time error): every running test fails with `failure`.
@@ -76,6 +81,7 @@ private:
         std::uint64_t last_cycle = 0;
         std::map<std::uint64_t, core::TimePoint> waits; ///< call site → first call
         std::vector<std::uint64_t> failed_sites;
+        std::vector<std::uint64_t> called_sites; ///< first_call()
     };
 
     Test* running_test();
