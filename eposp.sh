@@ -19,8 +19,8 @@ readonly BUILD_PACKAGES=(g++ cmake ninja-build libboost-dev libfmt-dev libcli11-
     libgtest-dev libgmock-dev libbenchmark-dev antlr4 libantlr4-runtime-dev libyaml-cpp-dev
     libxbyak-dev)
 # Independent tools that the interoperability tests and the demo talk to (lcov: reads back the
-# coverage tracefile of eposp test).
-readonly TOOL_PACKAGES=(python3-can python3-serial tshark lcov)
+# coverage tracefile of eposp test; xmllint: checks its JUnit report against a schema).
+readonly TOOL_PACKAGES=(python3-can python3-serial tshark lcov libxml2-utils)
 # Only for `fuzz`: clang and its sanitizer and libFuzzer runtimes.
 readonly FUZZ_PACKAGES=(clang libclang-rt-14-dev)
 
