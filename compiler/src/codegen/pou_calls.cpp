@@ -29,10 +29,11 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
             if (symbol->pou->kind == ast::PouKind::Function) {
                 return call_function(*symbol->pou, node, dest, range);
             }
-            error(range,
-                  fmt::format("'{}' is a {} type: call an instance of it", symbol->name,
-                              symbol->pou->kind == ast::PouKind::Program ? "PROGRAM"
-                                                                         : "FUNCTION_BLOCK"));
+            if (symbol->pou->kind == ast::PouKind::Program) {
+                break; // its single instance is called, as CODESYS does
+            }
+            error(range, fmt::format("'{}' is a FUNCTION_BLOCK type: call an instance of it",
+                                     symbol->name));
             return std::nullopt;
         case sema::SymbolKind::StandardFunction:
             if (const ast::Pou* pou = program_.library_pou(symbol->name);

@@ -1,5 +1,6 @@
 // Expressions of IEC 61131-3 ed. 3, 7.3.2 (table 71): variables, literals, operators.
 
+#include "constant_declarations.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_generator.hpp"
 
@@ -59,6 +60,13 @@ bool PouGenerator::contains_call(const ast::Expression& expression) {
         expression.node);
 }
 
+bool PouGenerator::names_program(const ast::Expression& expression) const {
+    const auto* name = std::get_if<ast::NameExpression>(&expression.node);
+    const sema::Symbol* symbol = name != nullptr ? model_.resolved(name->name) : nullptr;
+    return symbol != nullptr && symbol->kind == sema::SymbolKind::Pou &&
+           symbol->pou->kind == ast::PouKind::Program;
+}
+
 Operand PouGenerator::result_operand(const sema::Type& type, const Destination* dest) {
     return dest != nullptr && dest->type == &type ? dest->operand : temp(type);
 }
@@ -87,6 +95,19 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
             error(node->member.range,
                   fmt::format("'{}' has no member '{}'", type.name, node->member.name));
             return std::nullopt;
+        }
+        // A PROGRAM reached by its name shows all its variables (CODESYS); VAR CONSTANT are
+        // read only.
+        if (names_program(*node->object)) {
+            if (field->section == ast::VarSectionKind::InOut ||
+                field->section == ast::VarSectionKind::Temp || field->declaration == nullptr) {
+                error(node->member.range,
+                      fmt::format("'{}' is internal to '{}'", field->name, type.name));
+                return std::nullopt;
+            }
+            Place result = member(*object, field->offset, *field->type);
+            result.writable = !is_constant(*type.pou, field->declaration);
+            return result;
         }
         if (type.kind == sema::TypeKind::Instance &&
             (field->section == ast::VarSectionKind::Var ||

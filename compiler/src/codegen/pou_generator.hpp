@@ -224,6 +224,8 @@ private:
                                         const ast::Expression& bytes, const Destination* dest);
     static bool is_untyped_literal(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
+    /// `P` of `P.x`: a PROGRAM named as its single instance (CODESYS).
+    bool names_program(const ast::Expression& expression) const;
 
     // --- pou_conformant_arrays.cpp ------------------------------------------------------------
     /// What VAR_IN_OUT `field` is passed for `target`: its address, for an ARRAY[*] with the

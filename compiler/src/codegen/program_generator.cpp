@@ -9,6 +9,7 @@
 #include "pou_generator.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <functional>
 
 namespace eposp::compiler::codegen {
@@ -315,6 +316,32 @@ void ProgramGenerator::lay_out_global_section(
     }
 }
 
+std::optional<Place> ProgramGenerator::instance_of_program(const ast::Pou& program,
+                                                           const SourceRange& range) {
+    const auto it = instance_paths_.find(&program);
+    if (it == instance_paths_.end()) {
+        // Not instantiated by the configuration (or the configuration is ignored, as under
+        // `eposp test`): one instance for the calls, watched by the program's name.
+        if (instances_.contains(sema::fold_case(program.name.name))) {
+            diagnostics_.error(range, fmt::format("'{}' cannot have an instance of its own name: "
+                                                  "the configuration has a program instance "
+                                                  "'{}' of another type",
+                                                  program.name.name, program.name.name));
+            return std::nullopt;
+        }
+        program_instance(program, program.name.name, false);
+        return instances_.at(sema::fold_case(program.name.name));
+    }
+    if (it->second.size() > 1) {
+        diagnostics_.error(range, fmt::format("'{}' has several instances in the configuration "
+                                              "({}): a call by the program's name needs exactly "
+                                              "one",
+                                              program.name.name, fmt::join(it->second, ", ")));
+        return std::nullopt;
+    }
+    return instances_.at(sema::fold_case(it->second.front()));
+}
+
 std::uint32_t ProgramGenerator::program_instance(const ast::Pou& program, const std::string& path,
                                                  bool retain) {
     const sema::Type* type = types_.instance(program);
@@ -324,6 +351,7 @@ std::uint32_t ProgramGenerator::program_instance(const ast::Pou& program, const 
     builder_.initialise(offset, bytes);
     add_symbol(path, *type, offset);
     instances_[sema::fold_case(path)] = Place::direct(*type, vm::Operand::global(offset));
+    instance_paths_[&program].push_back(path);
     // RETAIN variables of the program (6.5.6), or all of it for a RETAIN instance.
     if (retain) {
         builder_.retain(offset, type->size);

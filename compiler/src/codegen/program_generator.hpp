@@ -74,6 +74,11 @@ public:
     std::optional<Place> global(std::string_view name) const;
     /// A program instance of the configuration by name (`Inst1` of `Inst1.out`, 6.8.2).
     std::optional<Place> program_instance_variable(std::string_view name) const;
+    /// The single instance of `program` that a call `P()` or an access `P.x` by the program's
+    /// name reaches (CODESYS): the configuration's instance of it, or one created for the
+    /// calls, named after the program, when the configuration has none. Several instances are
+    /// an error at `range`.
+    std::optional<Place> instance_of_program(const ast::Pou& program, const SourceRange& range);
     /// The variable behind an address used directly in code (`%IW4`): one hidden static
     /// variable per address, bound to it like a located variable (ed. 3, 6.5.5).
     std::optional<Place> direct_variable(const ast::DirectAddress& address);
@@ -171,6 +176,8 @@ private:
     std::unordered_map<std::string, Place> globals_;   // by folded name
     std::unordered_map<std::string, Place> instances_; // program instances, by folded name
     std::unordered_set<std::string> access_names_;     // folded
+    /// The paths of each PROGRAM's instances, for calls by the program's name.
+    std::unordered_map<const ast::Pou*, std::vector<std::string>> instance_paths_;
     std::unordered_map<const ast::Pou*, std::uint32_t> pou_indices_;
     std::unordered_map<const ast::Pou*, const sema::SemanticModel*> pou_models_;
     std::unordered_set<const ast::Pou*> linked_pous_; ///< the POUs of linked libraries

@@ -177,6 +177,10 @@ private:
             if (symbol.pou->return_type) {
                 return shape_of(*symbol.pou->return_type);
             }
+            // `P.Step`: a PROGRAM's name stands for its single instance (CODESYS).
+            if (symbol.pou->kind == ast::PouKind::Program) {
+                return {.known = true, .type_name = symbol.name, .members = symbol.members};
+            }
             return {};
         default:
             return {};
