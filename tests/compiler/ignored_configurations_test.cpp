@@ -70,11 +70,11 @@ TEST(IgnoredConfigurations, WithoutTheOptionBothConfigurationsAreCompiled) {
     EXPECT_EQ(compilation.image().tasks.size(), 2u);
 }
 
-TEST(IgnoredConfigurations, AGlobalOfAnIgnoredConfigurationIsAnUndeclaredName) {
+TEST(IgnoredConfigurations, TheirGlobalsStayAsAGlobalVariableList) {
     const std::string uses = R"(
 FUNCTION_BLOCK Reader
 VAR_OUTPUT v : DINT; END_VAR
-v := cfg_limit;
+v := cfg_limit + res_offset;
 END_FUNCTION_BLOCK
 PROGRAM External
 VAR_EXTERNAL cfg_limit : DINT; END_VAR
@@ -84,16 +84,27 @@ END_PROGRAM
 )";
     OptionsCompilation compilation;
     const FileId user = compilation.add(
-        "user.st",
-        uses + "CONFIGURATION Machine\nVAR_GLOBAL cfg_limit : DINT; END_VAR\n"
-               "RESOURCE R ON PLC\nPROGRAM P : External;\nEND_RESOURCE\nEND_CONFIGURATION\n");
-    compilation.add("harness.st", kHarness);
-    ASSERT_FALSE(compilation.compile({.ignored_configurations = {user}}));
-    EXPECT_THAT(compilation.errors(),
-                HasSubstr("user.st:4:6: error: undeclared identifier 'cfg_limit'"));
-    EXPECT_THAT(compilation.errors(),
-                HasSubstr("user.st:7:14: error: VAR_EXTERNAL 'cfg_limit' has no matching "
-                          "VAR_GLOBAL"));
+        "user.st", uses + "CONFIGURATION Machine\nVAR_GLOBAL cfg_limit : DINT := 40; END_VAR\n"
+                          "RESOURCE R ON PLC\nVAR_GLOBAL res_offset : DINT := 2; END_VAR\n"
+                          "PROGRAM P : External;\nEND_RESOURCE\nEND_CONFIGURATION\n");
+    compilation.add("harness.st", R"(
+PROGRAM Probe
+VAR r : Reader; END_VAR
+r();
+END_PROGRAM
+CONFIGURATION Harness
+  RESOURCE R ON PLC
+    TASK Suite(INTERVAL := T#1ms, PRIORITY := 0);
+    PROGRAM Under WITH Suite : Probe;
+  END_RESOURCE
+END_CONFIGURATION
+)");
+    ASSERT_TRUE(compilation.compile({.ignored_configurations = {user}})) << compilation.errors();
+    // Their tasks and program instances are gone; the variables are globals of the program.
+    EXPECT_THAT(compilation.symbols(), Not(Contains(HasSubstr("Machine"))));
+    EXPECT_THAT(compilation.symbols(), Contains("cfg_limit"));
+    ASSERT_TRUE(compilation.run(1)) << compilation.errors();
+    EXPECT_EQ(compilation.get("Under.r.v"), 42);
 }
 
 TEST(IgnoredConfigurations, AFileThatIsNotCompiledIsAnError) {

@@ -12,8 +12,9 @@ namespace eposp::compiler {
 /// test harness around the user's files (docs/testing-plc-code.md).
 struct CompileOptions {
     /// Files whose CONFIGURATION declarations are dropped before name resolution, with their
-    /// globals, access paths, tasks and program instances (the harness brings its own). Their
-    /// POUs, types and global variable lists stay. A file not compiled is an error.
+    /// access paths, tasks and program instances (the harness brings its own); their VAR_GLOBALs
+    /// stay as global variable lists (the POUs refer to them). Their POUs, types and global
+    /// variable lists stay. A file not compiled is an error.
     std::vector<FileId> ignored_configurations{};
     /// FUNCTION_BLOCK name → the FUNCTION_BLOCK that stands in for it (a test double): every
     /// use of the first as a type (variable declarations anywhere, ARRAY OF, REF_TO, structure
