@@ -36,6 +36,10 @@ struct TestOptions {
 };
 
 std::optional<std::string> options_problem(const TestOptions& options) {
+    if (options.timeout && *options.timeout <= core::Duration::zero()) {
+        return "--timeout " + core::format_duration(*options.timeout) +
+               ": a test needs some machine time to run (e.g. 10s)";
+    }
     for (const std::string& path : options.paths) {
         if (auto problem = input_file_problem(path, "an ST file")) {
             return problem;

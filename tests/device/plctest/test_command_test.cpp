@@ -648,5 +648,13 @@ TEST(EpospTestBadInput, BadTimeoutIsNamedInTheMessage) {
     EXPECT_THAT(result.output, HasSubstr("--timeout: 'soon' is not a duration"));
 }
 
+TEST(EpospTestBadInput, ZeroTimeoutIsRefused) {
+    const auto result = eposp("test " + two_suites() + " --timeout 0s");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("eposp test: error: --timeout 0s: a test needs some "
+                                         "machine time to run"));
+    EXPECT_THAT(result.output, Not(HasSubstr("passed")));
+}
+
 } // namespace
 } // namespace eposp::device
