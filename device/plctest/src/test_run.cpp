@@ -104,6 +104,9 @@ core::Result<TestRun> run_tests(const TestRunOptions& options) {
         }
         run.coverage.merge(suite_run->coverage);
     }
+    // Coverage of the user's POUs only: not of the harness, nor of the standard FBs.
+    std::erase_if(run.coverage.pous,
+                  [&run](const auto& pou) { return run.sources.file_of(pou.first).empty(); });
     return run;
 }
 

@@ -43,7 +43,7 @@ struct TestRunOptions {
 struct TestRun {
     TestSources sources;
     std::vector<SuiteResult> suites; ///< in file and source order
-    vm::CoverageReport coverage;     ///< merged over the suites when asked for
+    vm::CoverageReport coverage;     ///< of the files' POUs, merged over the suites, if asked for
 };
 
 /// Discovers the suites of the files, compiles each with its harness and runs it; the error
