@@ -100,6 +100,10 @@ int run_test_command(const TestOptions& options) {
                                  "no test suite in the files: a suite is a FUNCTION_BLOCK or "
                                  "PROGRAM whose body calls TEST('name')");
     }
+    if (run->suites.empty() && !options.filter.empty()) {
+        // A mistyped filter must not pass a CI job that ran nothing.
+        return report_user_error(kTestCommand, "--filter '" + options.filter + "' selects no test");
+    }
     fmt::print("{}", terminal_text(plctest::console_report(run->suites)));
     if (run_options.settings.coverage) {
         fmt::print("coverage:\n{}", vm::coverage_summary(run->coverage));

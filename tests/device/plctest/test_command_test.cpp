@@ -575,6 +575,12 @@ TEST(EpospTestCoverage, CoveragePrintsASummaryPerPou) {
     EXPECT_THAT(lines_of(result), Contains("Counts: lines 4/4 (100.0%), branches 0/0"));
 }
 
+TEST(EpospTestBadInput, FilterThatSelectsNoTestFails) {
+    const auto result = eposp("test " + two_suites() + " --filter 'C.*'");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("eposp test: error: --filter 'C.*' selects no test"));
+}
+
 TEST(EpospTestBadInput, NoFilesIsRefused) {
     const auto result = eposp("test");
     EXPECT_NE(result.exit_code, 0);
