@@ -154,7 +154,7 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values("tests/compiler/inputs/bubble_sort.st", "tests/compiler/inputs/sieve.st",
                     "tests/compiler/inputs/crc32.st", "tests/compiler/inputs/pid_plant.st",
                     "tests/compiler/inputs/conveyor_fsm.st", "tests/compiler/inputs/fb_channels.st",
-                    "tests/compiler/inputs/strings.st",
+                    "tests/compiler/inputs/strings.st", "tests/compiler/inputs/program_calls.st",
                     "tests/fuzz/corpus/st_compiler/codesys_style.st",
                     "tests/fuzz/corpus/st_compiler/types_and_calls.st",
                     "tests/fuzz/corpus/st_compiler/type_defaults.st",

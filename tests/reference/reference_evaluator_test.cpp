@@ -400,3 +400,47 @@ TEST(ReferenceEvaluator, ReportsFrontEndErrors) {
 
 } // namespace
 } // namespace eposp::reference
+
+namespace eposp::reference {
+namespace {
+
+// docs/st-language.md "Calling a PROGRAM": the program's single instance runs at each call
+// by its name, from an FB or another program, and `P.x` reaches its variables.
+TEST(ReferenceEvaluator, AProgramCalledByItsNameKeepsItsStateAcrossCalls) {
+    ReferenceProgram program(R"(
+PROGRAM Counter
+VAR_INPUT Step : DINT := 1; END_VAR
+VAR_OUTPUT Count : DINT; END_VAR
+VAR calls : DINT; END_VAR
+calls := calls + 1;
+Count := Count + Step;
+END_PROGRAM
+FUNCTION_BLOCK Driver
+VAR_OUTPUT seen : DINT; END_VAR
+Counter(Step := 10);
+seen := Counter.Count;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR d : Driver; a : DINT; b : DINT; c : DINT; END_VAR
+Counter.calls := Counter.calls + 100;
+Counter(Step := 1);
+a := Counter.Count;
+d();
+b := d.seen;
+c := Counter.calls;
+END_PROGRAM
+CONFIGURATION Cell RESOURCE R ON PLC
+  TASK T(INTERVAL := T#10ms, PRIORITY := 1);
+  PROGRAM Inst WITH T : Main;
+END_RESOURCE END_CONFIGURATION
+)");
+    ASSERT_TRUE(program.ok()) << program.errors();
+    ASSERT_TRUE(program.scans(3)) << program.fault();
+    EXPECT_EQ(program.bits("Inst.a"), 23u);
+    EXPECT_EQ(program.bits("Inst.b"), 33u);
+    EXPECT_EQ(program.bits("Inst.c"), 306u);
+    EXPECT_EQ(program.bits("Counter.Count"), 33u);
+}
+
+} // namespace
+} // namespace eposp::reference

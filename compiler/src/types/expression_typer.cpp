@@ -338,6 +338,10 @@ const sema::Type* ExpressionTyper::name(const ast::Expression& expression,
         symbol->pou->kind == ast::PouKind::Function && symbol->pou->return_type) {
         return program_.types().resolve(*symbol->pou->return_type);
     }
+    // A PROGRAM's name stands for its single instance: `P()`, `P.x` (CODESYS).
+    if (symbol->kind == sema::SymbolKind::Pou && symbol->pou->kind == ast::PouKind::Program) {
+        return program_.types().instance(*symbol->pou);
+    }
     return nullptr; // a type, POU or program instance named on its own
 }
 

@@ -60,6 +60,7 @@ Evaluator::Evaluator(std::unique_ptr<types::FrontEnd> front_end)
                 Value& instance = instances_[fold_case(pou.name.name)] =
                     make(*program_.types().instance(pou), nullptr);
                 roots_[fold_case(pou.name.name)] = &instance;
+                instances_of_[&pou].push_back(&instance);
                 if (task_.empty()) {
                     task_.emplace_back(&pou, &instance);
                 }
@@ -107,6 +108,7 @@ Evaluator::Evaluator(std::unique_ptr<types::FrontEnd> front_end)
             Value& instance = instances_[fold_case(declared.name.name)] =
                 make(*program_.types().instance(*pou), nullptr);
             roots_[fold_case(declared.name.name)] = &instance;
+            instances_of_[pou].push_back(&instance);
             const auto task =
                 declared.task ? task_of.find(fold_case(declared.task->name)) : task_of.end();
             if (task != task_of.end()) {
@@ -119,6 +121,23 @@ Evaluator::Evaluator(std::unique_ptr<types::FrontEnd> front_end)
     if (!tasks.empty()) {
         task_ = tasks.front();
     }
+}
+
+Value& Evaluator::instance_of(const ast::Pou& program) {
+    std::vector<Value*>& found = instances_of_[&program];
+    if (found.size() > 1) {
+        throw Unsupported("a call of a PROGRAM with several instances");
+    }
+    if (found.empty()) {
+        const std::string key = fold_case(program.name.name);
+        if (instances_.contains(key)) {
+            throw Unsupported("a PROGRAM named like another program's instance");
+        }
+        Value& instance = instances_[key] = make(*program_.types().instance(program), nullptr);
+        roots_[key] = &instance;
+        found.push_back(&instance);
+    }
+    return *found.front();
 }
 
 bool Evaluator::is_library(const ast::Pou* pou) const {

@@ -46,6 +46,9 @@ private:
     void initialise(Value& value, const ast::Initializer& initializer);
     /// A FUNCTION's variables, or an FB's or PROGRAM's VAR_TEMP, fresh for one call.
     void locals(const ast::Pou& pou, Frame& frame, bool temporaries_only);
+    /// The instance a PROGRAM's name reaches (`P()`, `P.x`, docs/st-language.md "Calling a
+    /// PROGRAM"): the configuration's only one, or one made for the calls, named after it.
+    Value& instance_of(const ast::Pou& program);
 
     // Statements (statements.cpp).
     Flow statements(const ast::StatementList& list);
@@ -100,6 +103,8 @@ private:
     std::unordered_map<std::string, Value> globals_;
     /// Program instances by folded name.
     std::unordered_map<std::string, Value> instances_;
+    /// Each PROGRAM's instances (values in instances_, which never moves them).
+    std::unordered_map<const ast::Pou*, std::vector<Value*>> instances_of_;
     /// Symbol paths (folded) to the variable: `CONFIG0.G`, `G`, `MAIN`.
     std::unordered_map<std::string, Value*> roots_;
     /// What the first task runs: each program instance with its PROGRAM, in order.

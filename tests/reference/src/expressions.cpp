@@ -127,6 +127,11 @@ Value* Evaluator::variable(const ast::Identifier& name) {
     if (const auto found = globals_.find(key); found != globals_.end()) {
         return &found->second;
     }
+    if (const sema::Symbol* symbol = program_.model().resolved(name);
+        symbol != nullptr && symbol->kind == sema::SymbolKind::Pou &&
+        symbol->pou->kind == ast::PouKind::Program) {
+        return &instance_of(*symbol->pou);
+    }
     throw Unsupported("the name " + name.name + " here");
 }
 
