@@ -648,6 +648,22 @@ TEST(EpospTestBadInput, MalformedMockAttributeIsShownAtItsLine) {
                                                  "'mock' := 'FB_Name => FB_Double'}"));
 }
 
+TEST(EpospTestBadInput, MockOfAnUnknownBlockFailsItsSuite) {
+    const auto suite =
+        write_source("unknown_mock_test.st", "FUNCTION_BLOCK FB_Double\n"
+                                             "END_FUNCTION_BLOCK\n"
+                                             "{attribute 'mock' := 'FB_Nowhere => FB_Double'}\n"
+                                             "FUNCTION_BLOCK Mocked\n"
+                                             "    TEST('T');\n"
+                                             "    TEST_FINISHED();\n"
+                                             "END_FUNCTION_BLOCK\n");
+    const auto result = eposp("test " + suite);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr(suite + ":4: Mocked: does not compile:"));
+    EXPECT_THAT(result.output, HasSubstr("no FUNCTION_BLOCK named 'FB_Nowhere'"));
+    EXPECT_EQ(last_line(result), "0 passed, 1 failed");
+}
+
 TEST(EpospTestBadInput, BadTimeoutIsNamedInTheMessage) {
     const auto result = eposp("test " + two_suites() + " --timeout soon");
     EXPECT_NE(result.exit_code, 0);
