@@ -3,6 +3,7 @@
 // mistakes a user makes (docs/testing-plc-code.md).
 #include "../eposp_command.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <regex>
@@ -241,6 +242,38 @@ TEST(EpospTestCommand, RunTimeErrorFailsTheTestAtItsLine) {
     EXPECT_NE(result.exit_code, 0);
     EXPECT_THAT(lines_of(result), Contains(suite + ":4: Divides.ByZero: run-time error: division "
                                                    "by zero in Divides at line 4"))
+        << result.output;
+    EXPECT_EQ(last_line(result), "0 passed, 1 failed");
+}
+
+TEST(EpospTestCommand, EndlessLoopFailsTheTestInsteadOfHanging) {
+    const auto suite = write_source("loop_test.st", "FUNCTION_BLOCK Loops\n"
+                                                    "VAR i : DINT; END_VAR\n"
+                                                    "    TEST('Forever');\n"
+                                                    "    WHILE TRUE DO i := i + 1; END_WHILE\n"
+                                                    "    TEST_FINISHED();\n"
+                                                    "END_FUNCTION_BLOCK\n");
+    const auto result = eposp("test " + suite);
+    EXPECT_NE(result.exit_code, 0);
+    EXPECT_THAT(lines_of(result),
+                Contains(suite + ":4: Loops.Forever: run-time error: "
+                                 "instruction budget exceeded in Loops at line 4"))
+        << result.output;
+}
+
+TEST(EpospTestCommand, AssertionThatFailsInEveryCycleIsReportedOnce) {
+    const auto suite = write_source("repeat_test.st", "FUNCTION_BLOCK Repeats\n"
+                                                      "    TEST('TenCycles');\n"
+                                                      "    AssertTrue(FALSE, 'each cycle');\n"
+                                                      "    IF ADVANCE_TIME(T#10ms) THEN\n"
+                                                      "        TEST_FINISHED();\n"
+                                                      "    END_IF\n"
+                                                      "END_FUNCTION_BLOCK\n");
+    const auto result = eposp("test " + suite);
+    const auto lines = lines_of(result);
+    EXPECT_EQ(std::ranges::count(lines, suite + ":3: Repeats.TenCycles: expected TRUE, got FALSE: "
+                                                "each cycle"),
+              1)
         << result.output;
     EXPECT_EQ(last_line(result), "0 passed, 1 failed");
 }
