@@ -112,7 +112,7 @@ INSTANTIATE_TEST_SUITE_P(
                     "tests/compiler/inputs/bubble_sort.st", "tests/compiler/inputs/conveyor_fsm.st",
                     "tests/compiler/inputs/crc32.st", "tests/compiler/inputs/fb_channels.st",
                     "tests/compiler/inputs/pid_plant.st", "tests/compiler/inputs/sieve.st",
-                    "tests/compiler/inputs/strings.st"),
+                    "tests/compiler/inputs/strings.st", "tests/compiler/inputs/program_calls.st"),
     [](const testing::TestParamInfo<std::string>& param) {
         std::string name = param.param.substr(param.param.find_last_of('/') + 1);
         name = name.substr(0, name.find('.'));
