@@ -4,6 +4,7 @@
 #include "eposp/plctest/suites.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fmt/format.h>
 #include <vector>
 
@@ -11,6 +12,7 @@ namespace eposp::plctest {
 namespace {
 
 constexpr std::string_view kMockAttribute = "{attribute 'mock' := '";
+constexpr std::string_view kNetworkAttribute = "{attribute 'network' := '";
 
 std::string_view trimmed(std::string_view text) {
     const auto first = text.find_first_not_of(" \t\r");
@@ -46,10 +48,9 @@ std::string upper_case(std::string_view name) {
 
 } // namespace
 
-core::Result<std::map<std::string, std::string>> mock_attributes(std::string_view text,
-                                                                 std::uint32_t line) {
+core::Result<SuiteAttributes> suite_attributes(std::string_view text, std::uint32_t line) {
     const std::vector<std::string_view> lines = lines_of(text);
-    std::map<std::string, std::string> mocks;
+    SuiteAttributes attributes;
     for (std::uint32_t number = line - 1; number >= 1 && number <= lines.size(); --number) {
         const std::string_view content = trimmed(lines[number - 1]);
         if (content.empty() || content.starts_with("//") ||
@@ -59,11 +60,23 @@ core::Result<std::map<std::string, std::string>> mock_attributes(std::string_vie
         if (!content.starts_with("{")) {
             break; // the end of what precedes the declaration
         }
-        if (!content.starts_with(kMockAttribute)) {
+        const bool mock = content.starts_with(kMockAttribute);
+        const bool network = content.starts_with(kNetworkAttribute);
+        if (!mock && !network) {
             continue; // another pragma
         }
-        const std::string_view value = content.substr(kMockAttribute.size());
+        const std::string_view value =
+            content.substr(mock ? kMockAttribute.size() : kNetworkAttribute.size());
         const auto end = value.find("'}");
+        if (network) {
+            if (end == std::string_view::npos || end == 0) {
+                return core::Error{fmt::format("{}: error: a network attribute reads {{attribute "
+                                               "'network' := 'machine.yaml'}}",
+                                               number)};
+            }
+            attributes.network = std::string(value.substr(0, end));
+            continue;
+        }
         const auto arrow = value.find("=>");
         const std::string_view original = trimmed(value.substr(0, std::min(arrow, end)));
         const std::string_view replacement =
@@ -75,9 +88,9 @@ core::Result<std::map<std::string, std::string>> mock_attributes(std::string_vie
                             "FB_Double'}}",
                             number)};
         }
-        mocks.emplace(original, replacement);
+        attributes.mocks.emplace(original, replacement);
     }
-    return mocks;
+    return attributes;
 }
 
 std::string TestSources::file_of(std::string_view pou) const {
@@ -101,11 +114,18 @@ core::Result<TestSources> discover_suites(const std::vector<std::string>& paths)
         }
         for (const compiler::ast::CallingPou& pou : compiler::ast::pous_calling(unit, "TEST")) {
             const std::uint32_t line = pou.range.begin.line;
-            auto mocks = mock_attributes(sources.text(*file), line);
-            if (!mocks) {
-                return core::Error{path + ":" + mocks.error()};
+            auto attributes = suite_attributes(sources.text(*file), line);
+            if (!attributes) {
+                return core::Error{path + ":" + attributes.error()};
             }
-            suites.push_back({pou.name, pou.kind, {path, line}, std::move(*mocks)});
+            std::optional<std::string> network;
+            if (attributes->network) {
+                network = (std::filesystem::path(path).parent_path() / *attributes->network)
+                              .lexically_normal()
+                              .string();
+            }
+            suites.push_back(
+                {pou.name, pou.kind, {path, line}, std::move(attributes->mocks), network});
         }
     }
     if (diagnostics.has_errors()) {

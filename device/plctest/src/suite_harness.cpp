@@ -69,7 +69,7 @@ core::Result<vm::Image> build_suite(const TestSources& sources, const Suite& sui
     compiler::Diagnostics diagnostics;
     auto image = compiler::compile(files, program, diagnostics, libraries, options);
     if (!image) {
-        return core::Error{compiler::render(diagnostics, files)};
+        return core::Error{"does not compile:\n" + compiler::render(diagnostics, files)};
     }
     return std::move(*image);
 }

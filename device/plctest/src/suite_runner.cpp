@@ -49,7 +49,7 @@ SuiteRun run_suite(const TestSources& sources, const Suite& suite, core::Result<
         return std::move(run);
     };
     if (!image) {
-        return finish(Failure{suite.place, "does not compile:\n" + image.error()});
+        return finish(Failure{suite.place, image.error()});
     }
     const device::NetworkFile network = settings.network.value_or(default_network());
     const core::Duration cycle = test_cycle(network);

@@ -70,11 +70,22 @@ core::Result<TestRun> run_tests(const TestRunOptions& options) {
     settings.selected = [&options](std::string_view suite, std::string_view test) {
         return options.filter.selects(suite, test);
     };
-    const core::Duration cycle = test_cycle(settings.network.value_or(default_network()));
-    // Compiled one after the other: the parser's caches are shared between its instances.
+    // Each suite's machine: its network attribute's, else --network's, else the one-axis
+    // device; compiled one after the other (the parser's caches are shared between instances).
+    std::vector<RunSettings> suite_settings(suites.size(), settings);
     std::vector<std::optional<core::Result<vm::Image>>> images;
-    for (const Suite* suite : suites) {
-        images.emplace_back(build_suite(run.sources, *suite, cycle));
+    for (std::size_t i = 0; i < suites.size(); ++i) {
+        if (const auto& path = suites[i]->network) {
+            auto network = device::load_network_file(*path);
+            if (!network) {
+                images.emplace_back(core::Error{"its network attribute: " + network.error()});
+                continue;
+            }
+            suite_settings[i].network = std::move(*network);
+        }
+        const auto& network = suite_settings[i].network;
+        images.emplace_back(
+            build_suite(run.sources, *suites[i], test_cycle(network.value_or(default_network()))));
     }
     std::vector<std::size_t> order(suites.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
@@ -87,11 +98,12 @@ core::Result<TestRun> run_tests(const TestRunOptions& options) {
     const auto work = [&] {
         for (std::size_t n = next++; n < suites.size(); n = next++) {
             const std::size_t i = order[n];
-            runs[i] = run_suite(run.sources, *suites[i], std::move(*images[i]), settings);
+            runs[i] = run_suite(run.sources, *suites[i], std::move(*images[i]), suite_settings[i]);
         }
     };
     std::vector<std::jthread> workers;
-    const std::size_t threads = std::clamp<std::size_t>(options.jobs, 1, suites.size());
+    const std::size_t threads =
+        std::max<std::size_t>(1, std::min<std::size_t>(options.jobs, suites.size()));
     for (std::size_t t = 1; t < threads; ++t) {
         workers.emplace_back(work);
     }

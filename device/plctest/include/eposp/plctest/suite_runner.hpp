@@ -40,7 +40,8 @@ core::Duration test_cycle(const device::NetworkFile& network);
 std::string harness_source(const Suite& suite, core::Duration cycle);
 
 /// The image of `suite`: the test files without their CONFIGURATIONs, its harness, the motion
-/// and test libraries, its mocks substituted; the error is the compiler's diagnostics.
+/// and test libraries, its mocks substituted; the error is `does not compile:` and the
+/// compiler's diagnostics.
 core::Result<vm::Image> build_suite(const TestSources& sources, const Suite& suite,
                                     core::Duration cycle);
 
@@ -50,7 +51,8 @@ struct SuiteRun {
 };
 
 /// Runs the image of `suite` in a fresh EPOS P in virtual time until every test it began has
-/// finished (or failed: an assertion, a timeout, a run-time error of its task).
+/// finished (or failed: an assertion, a timeout, a run-time error of its task). Without an
+/// image, the suite fails with the error that says why.
 SuiteRun run_suite(const TestSources& sources, const Suite& suite, core::Result<vm::Image> image,
                    const RunSettings& settings);
 

@@ -6,6 +6,7 @@
 #include "eposp/plctest/test_results.hpp"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,16 @@ struct Suite {
     SourcePlace place;
     /// Its test doubles: the FUNCTION_BLOCK each named FB is replaced by while this suite runs,
     /// from `{attribute 'mock' := 'FB_Valve => FB_ValveDouble'}` just above its declaration.
+    std::map<std::string, std::string> mocks{};
+    /// The machine it runs on, from `{attribute 'network' := 'machine.yaml'}` just above its
+    /// declaration (relative to its file's folder); else the command's --network.
+    std::optional<std::string> network{};
+};
+
+/// The attributes on the lines just above a suite's declaration.
+struct SuiteAttributes {
     std::map<std::string, std::string> mocks;
+    std::optional<std::string> network; ///< as written
 };
 
 /// What the test files hold: their suites and where each POU is declared.
@@ -32,13 +42,13 @@ struct TestSources {
     std::string file_of(std::string_view pou) const;
 };
 
-/// The suites of the files, or why the files do not parse or hold a malformed mock attribute
+/// The suites of the files, or why the files do not parse or hold a malformed attribute
 /// (`file:line: error: …`).
 core::Result<TestSources> discover_suites(const std::vector<std::string>& paths);
 
-/// The mocks of the attributes on the lines just above `line` (1-based) of `text`: pragma lines
-/// `{attribute 'mock' := 'A => B'}`, blank lines and comment lines between them.
-core::Result<std::map<std::string, std::string>> mock_attributes(std::string_view text,
-                                                                 std::uint32_t line);
+/// The attributes on the lines just above `line` (1-based) of `text`: pragma lines
+/// `{attribute 'mock' := 'A => B'}` and `{attribute 'network' := 'file.yaml'}`, with blank and
+/// comment lines between them; other pragmas are left alone. The error names the line.
+core::Result<SuiteAttributes> suite_attributes(std::string_view text, std::uint32_t line);
 
 } // namespace eposp::plctest
