@@ -12,6 +12,7 @@
 #include "options.hpp"
 #include "terminal_text.hpp"
 
+#include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 #include <thread>
@@ -40,9 +41,16 @@ std::optional<std::string> options_problem(const TestOptions& options) {
         return "--timeout " + core::format_duration(*options.timeout) +
                ": a test needs some machine time to run (e.g. 10s)";
     }
-    for (const std::string& path : options.paths) {
-        if (auto problem = input_file_problem(path, "an ST file")) {
+    for (auto path = options.paths.begin(); path != options.paths.end(); ++path) {
+        if (auto problem = input_file_problem(*path, "an ST file")) {
             return problem;
+        }
+        // Twice in one program, its POUs would be declared twice (here or by another name).
+        std::error_code error;
+        for (auto earlier = options.paths.begin(); earlier != path; ++earlier) {
+            if (std::filesystem::equivalent(*earlier, *path, error)) {
+                return *path + " is given twice (also as " + *earlier + ")";
+            }
         }
     }
     std::vector<std::string> inputs = options.paths;

@@ -635,6 +635,15 @@ TEST(EpospTestBadInput, DirectoryIsNotAnStFile) {
     EXPECT_THAT(result.output, HasSubstr(directory.string() + " is a directory, not an ST file"));
 }
 
+TEST(EpospTestBadInput, FileGivenTwiceIsRefused) {
+    const auto suite = two_suites();
+    const auto other_name = (scratch(".") / "filter_test.st").string();
+    const auto result = eposp("test " + suite + " " + other_name);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("eposp test: error: " + other_name +
+                                         " is given twice (also as " + suite + ")"));
+}
+
 TEST(EpospTestBadInput, FilesWithoutASuiteSayWhatASuiteIs) {
     const auto result = eposp("test " + write_source("counter.st", std::string(kCounter)));
     EXPECT_EQ(result.exit_code, 1);
