@@ -96,11 +96,11 @@ END_PROGRAM
 TEST(CallingProgramsByName, ItsVariablesAreReadAndWrittenByName) {
     StProgram program(with_counter(R"(
 PROGRAM Main
-VAR before : DINT; after : DINT; limit : DINT; step : DINT; END_VAR
+VAR before : DINT; after : DINT; limit : DINT; step : DINT; out : DINT; END_VAR
 Counter.calls := 100;
 Counter.Count := 5;
 before := Counter.calls;
-Counter();
+Counter(Count => out);
 after := Counter.Count * 1000 + Counter.calls;
 limit := Counter.Limit;
 step := Counter.Step;
@@ -116,6 +116,29 @@ END_RESOURCE END_CONFIGURATION
     EXPECT_EQ(program.get<std::int32_t>("Inst.after"), 6101);
     EXPECT_EQ(program.get<std::int32_t>("Inst.limit"), 1000);
     EXPECT_EQ(program.get<std::int32_t>("Inst.step"), 1);
+    EXPECT_EQ(program.get<std::int32_t>("Inst.out"), 6);
+}
+
+TEST(CallingProgramsByName, AFunctionCallsAProgramToo) {
+    StProgram program(with_counter(R"(
+FUNCTION Twice : DINT
+VAR_INPUT step : DINT; END_VAR
+Counter(Step := step);
+Counter(Step := step);
+Twice := Counter.Count;
+END_FUNCTION
+PROGRAM Main
+VAR a : DINT; END_VAR
+a := Twice(3);
+END_PROGRAM
+CONFIGURATION Cell RESOURCE R ON PLC
+  TASK T(INTERVAL := T#10ms, PRIORITY := 1);
+  PROGRAM Inst WITH T : Main;
+END_RESOURCE END_CONFIGURATION
+)"));
+    ASSERT_TRUE(program.ok()) << program.errors();
+    ASSERT_TRUE(program.scans(2));
+    EXPECT_EQ(program.get<std::int32_t>("Inst.a"), 12);
 }
 
 TEST(CallingProgramsByName, TwoConfigurationInstancesAreAnErrorNamingThem) {
