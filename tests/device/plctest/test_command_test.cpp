@@ -618,6 +618,7 @@ TEST(EpospTestCoverage, CoveragePrintsASummaryPerPou) {
                     R"(Counter: lines [0-9]+/[0-9]+ \([0-9.]+%\), branches [0-9]+/[0-9]+)")))
         << result.output;
     EXPECT_THAT(lines_of(result), Contains("Counts: lines 4/4 (100.0%), branches 0/0"));
+    EXPECT_THAT(result.output, Not(HasSubstr("EPOSP_TEST"))); // the harness is not the user's
 }
 
 TEST(EpospTestBadInput, FilterThatSelectsNoTestFails) {
