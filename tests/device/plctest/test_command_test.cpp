@@ -4,9 +4,9 @@
 #include "../eposp_command.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fmt/format.h>
 #include <gmock/gmock.h>
-#include <cctype>
 #include <string_view>
 #include <vector>
 
@@ -360,6 +360,29 @@ TEST(EpospTestCommand, ProgramAndFunctionBlockSuitesInSeveralFilesRunTheProgramU
     EXPECT_THAT(result.output, HasSubstr("BlockSuite: 1 passed, 0 failed ("));
     EXPECT_THAT(result.output, HasSubstr("OtherSuite: 1 passed, 0 failed ("));
     EXPECT_EQ(last_line(result), "3 passed, 0 failed");
+}
+
+TEST(EpospTestCommand, GlobalsOfTheIgnoredConfigurationStay) {
+    const auto program = write_source("globals.st", "FUNCTION_BLOCK UsesGlobal\n"
+                                                    "VAR_EXTERNAL MaxSpeed : DINT; END_VAR\n"
+                                                    "VAR_OUTPUT v : DINT; END_VAR\n"
+                                                    "    v := MaxSpeed;\n"
+                                                    "END_FUNCTION_BLOCK\n"
+                                                    "CONFIGURATION Cell\n"
+                                                    "    VAR_GLOBAL MaxSpeed : DINT := 7; END_VAR\n"
+                                                    "    RESOURCE EposP ON EPOS_P\n"
+                                                    "    END_RESOURCE\n"
+                                                    "END_CONFIGURATION\n");
+    const auto suite = write_source("globals_test.st", "FUNCTION_BLOCK Globals\n"
+                                                       "VAR u : UsesGlobal; END_VAR\n"
+                                                       "    TEST('ReadsTheGlobal');\n"
+                                                       "    u();\n"
+                                                       "    AssertEquals_DINT(7, u.v, 'global');\n"
+                                                       "    TEST_FINISHED();\n"
+                                                       "END_FUNCTION_BLOCK\n");
+    const auto result = eposp("test " + program + " " + suite);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(last_line(result), "1 passed, 0 failed");
 }
 
 /// A suite that powers axis `axis`, moves it to 10000 qc and asserts where it stands and its
