@@ -13,27 +13,13 @@ bool is_jump_table(Opcode op) {
     return op == Opcode::JTabI16 || op == Opcode::JTabU16 || op == Opcode::JTab32;
 }
 
-std::optional<std::uint32_t> target_of(const Instruction& ins) {
-    const OpcodeInfo& info = opcode_info(ins.opcode);
-    if (info.a.field == Field::Target) {
-        return ins.a;
-    }
-    if (info.b.field == Field::Target) {
-        return ins.b;
-    }
-    if (info.c.field == Field::Target) {
-        return ins.c;
-    }
-    return std::nullopt;
-}
-
 // A branch point: a jump table (one outcome per entry and one past its end), or a conditional
 // jump, i.e. any jump but Jmp (jumped, fell through).
 std::size_t outcome_count(const Image& image, const Instruction& ins) {
     if (is_jump_table(ins.opcode)) {
         return image.jump_tables[ins.b].targets.size() + 1;
     }
-    return ins.opcode != Opcode::Jmp && target_of(ins) ? 2 : 0;
+    return ins.opcode != Opcode::Jmp && branch_target(ins) ? 2 : 0;
 }
 
 std::uint32_t outcome_target(const Image& image, std::uint32_t at, std::size_t outcome) {
@@ -42,7 +28,7 @@ std::uint32_t outcome_target(const Image& image, std::uint32_t at, std::size_t o
         const auto& targets = image.jump_tables[ins.b].targets;
         return outcome < targets.size() ? targets[outcome] : ins.c;
     }
-    return outcome == 0 ? *target_of(ins) : at + 1;
+    return outcome == 0 ? *branch_target(ins) : at + 1;
 }
 
 // The instruction whose counts instruction `at` of POU `pou` adds to: itself, or in a body

@@ -247,29 +247,11 @@ constexpr int kExitPou = offsetof(JitContext, exit_pou);
 constexpr int kExitTrap = offsetof(JitContext, exit_trap);
 static_assert(sizeof(Activation) == 16);
 
-/// The branch target of an instruction with one (Field::Target), else nullopt.
-std::optional<std::uint32_t> target_of(const Instruction& ins);
-
 // A block ends where control may go elsewhere: a branch, a jump table, a call or return (the
 // families without a step function), and a native call, which is a safe point.
 bool ends_block(const Instruction& ins) {
-    return target_of(ins) || step_function(ins.opcode) == nullptr ||
+    return branch_target(ins) || step_function(ins.opcode) == nullptr ||
            ins.opcode == Opcode::CallNative;
-}
-
-/// The branch target of an instruction with one (Field::Target), else nullopt.
-std::optional<std::uint32_t> target_of(const Instruction& ins) {
-    const auto& info = opcode_info(ins.opcode);
-    if (info.a.field == Field::Target) {
-        return ins.a;
-    }
-    if (info.b.field == Field::Target) {
-        return ins.b;
-    }
-    if (info.c.field == Field::Target) {
-        return ins.c;
-    }
-    return std::nullopt;
 }
 
 /// Where basic blocks start: POU entries, jump targets and what follows a block's end.
@@ -279,7 +261,7 @@ std::vector<bool> block_starts(const Image& image) {
         starts[pou.code_begin] = true;
     }
     for (std::size_t i = 0; i < image.code.size(); ++i) {
-        if (auto target = target_of(image.code[i])) {
+        if (auto target = branch_target(image.code[i])) {
             starts[*target] = true;
         }
         if (ends_block(image.code[i])) {
@@ -682,7 +664,7 @@ void Translator::emit_instruction(const Instruction& ins) {
         return;
     }
     call_step(ins);
-    if (auto target = target_of(ins)) {
+    if (auto target = branch_target(ins)) {
         charge_block();
         branch(*target, [&](Xbyak::Label& skip) {
             cmp(eax, kStepTaken);

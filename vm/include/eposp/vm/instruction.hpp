@@ -3,6 +3,7 @@
 #include "eposp/vm/opcodes.hpp"
 
 #include <cstdint>
+#include <optional>
 
 namespace eposp::vm {
 
@@ -50,5 +51,8 @@ struct Instruction {
 static_assert(sizeof(Instruction) == 16);
 
 inline constexpr std::uint32_t kInstructionSize = 16;
+
+/// The branch target of an instruction that has one (a field of kind Target), else nullopt.
+std::optional<std::uint32_t> branch_target(const Instruction& ins);
 
 } // namespace eposp::vm
