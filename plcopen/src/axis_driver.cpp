@@ -400,6 +400,10 @@ void AxisDriver::advance(std::uint16_t statusword) {
         mode_bits_ = kind == K::MoveVelocity ? 0
                      : kind == K::Home       ? cia402::kNewSetpoint
                                              : cia402::kHalt;
+        // These set-points went by SDO (0x60FF, 0x6084), and the controlword may not change
+        // (MoveVelocity, Halt after Halt): only a statusword two samples on speaks of them, e.g.
+        // bit 10 "target velocity reached" of the new velocity (FW spec table 5-54).
+        changed_at_ = link_.samples(axis_);
         running.phase = Phase::Moving;
         return;
     case Phase::Acknowledge:

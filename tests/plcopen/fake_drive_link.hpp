@@ -32,6 +32,8 @@ struct FakeDrive {
     std::optional<std::pair<std::int32_t, std::int32_t>> buffered;
     std::uint16_t error_code = 0; ///< 0x1003 sub 1; non-zero: Fault
     int homing_cycles = -1;       ///< cycles left of a running homing
+    std::int32_t velocity = 0;    ///< profile velocity mode: quadcounts per SYNC now
+    std::int32_t ramp = 0;        ///< its change per SYNC toward 0x60FF; 0: at once
     std::map<std::pair<std::uint16_t, std::uint8_t>, std::uint32_t> objects;
     /// What an upload reports as the object's size; 4 bytes unless set here.
     std::map<std::pair<std::uint16_t, std::uint8_t>, std::uint8_t> sizes;
@@ -47,17 +49,26 @@ class FakeDriveLink : public AxisLink {
 public:
     std::array<FakeDrive, kAxisCount> drives{};
     std::uint32_t sdo_transfers = 0;
+    /// An SDO download acts only after the process data of the SYNC that follows its answer,
+    /// as a controlword does (AxisLink::samples): that SYNC's statusword still predates it.
+    bool downloads_act_late = false;
     std::uint8_t last_write_size = 0;
 
-    /// One SYNC: SDO replies arrive, each drive takes its controlword and answers.
+    /// One SYNC: SDO replies arrive, each drive takes its controlword and answers, then the
+    /// downloads answered at the SYNC before act if they act late.
     void sync() {
         auto replies = std::move(replies_);
         replies_.clear();
+        auto late = std::move(late_downloads_);
+        late_downloads_.clear();
         for (auto& reply : replies) {
             reply();
         }
         for (FakeDrive& drive : drives) {
             step(drive);
+        }
+        for (auto& download : late) {
+            download();
         }
         ++samples_;
     }
@@ -96,7 +107,14 @@ public:
                 done({.abort_code = 0x06020000});
                 return;
             }
-            drives[axis].objects[{index, sub_index}] = value;
+            auto download = [this, axis, index, sub_index, value] {
+                drives[axis].objects[{index, sub_index}] = value;
+            };
+            if (downloads_act_late) {
+                late_downloads_.push_back(std::move(download));
+            } else {
+                download();
+            }
             done({});
         });
     }
@@ -206,9 +224,15 @@ private:
                 bits |= 0x0400;
             }
         } else if (mode == 3) {
-            const auto velocity = static_cast<std::int32_t>(drive.object(0x60FF));
-            drive.position += halt ? 0 : velocity;
-            bits |= 0x0400;
+            const std::int32_t goal = halt ? 0 : static_cast<std::int32_t>(drive.object(0x60FF));
+            const std::int32_t rest = goal - drive.velocity;
+            drive.velocity = drive.ramp == 0 ? goal
+                             : rest > 0      ? drive.velocity + std::min(rest, drive.ramp)
+                                             : drive.velocity + std::max(rest, -drive.ramp);
+            drive.position += drive.velocity;
+            if (drive.velocity == goal) {
+                bits |= 0x0400; // target velocity reached (FW spec table 5-54)
+            }
         } else if (mode == 6) {
             if (rising_new_setpoint) {
                 drive.homing_cycles = 3;
@@ -225,6 +249,7 @@ private:
 
     std::uint32_t samples_ = 0;
     std::deque<std::function<void()>> replies_;
+    std::vector<std::function<void()>> late_downloads_;
 };
 
 } // namespace eposp::plcopen::test

@@ -18,7 +18,7 @@ VAR
   Move2 : MC_MoveAbsolute;
   Relative : MC_MoveRelative;
   Additive : MC_MoveAdditive;
-  Velocity : MC_MoveVelocity;
+  Velocity, Velocity2 : MC_MoveVelocity;
   HaltIt : MC_Halt;
   StopIt : MC_Stop;
   ResetIt : MC_Reset;
@@ -27,7 +27,8 @@ VAR
   State : MC_ReadAxisState;
   AxisError : MC_ReadAxisError;
   Actual : MC_ReadActualPosition;
-  Enable, Go, Go2, GoRelative, GoAdditive, GoVelocity, GoHalt, GoStop, GoReset, GoHome : BOOL;
+  Enable, Go, Go2, GoRelative, GoAdditive, GoVelocity, GoVelocity2, GoHalt, GoStop, GoReset,
+  GoHome : BOOL;
   Target : DINT := 1000;
   Target2 : DINT := 2000;
   Speed : DINT := 100;
@@ -44,6 +45,8 @@ Additive(Axis := Axis1, Execute := GoAdditive, Distance := 50, Velocity := 100,
          Acceleration := 1000, Deceleration := 1000);
 Velocity(Axis := Axis1, Execute := GoVelocity, Velocity := 10, Acceleration := 1000,
          Deceleration := 1000, Direction := mcNegativeDirection);
+Velocity2(Axis := Axis1, Execute := GoVelocity2, Velocity := 20, Acceleration := 1000,
+          Deceleration := 1000);
 HaltIt(Axis := Axis1, Execute := GoHalt, Deceleration := 1000);
 StopIt(Axis := Axis1, Execute := GoStop, Deceleration := 1000);
 ResetIt(Axis := Axis1, Execute := GoReset);
@@ -284,6 +287,22 @@ TEST_P(MotionBlocks, VelocityThenHalt) {
     const std::int32_t stopped_at = drive().position;
     h.cycle(3);
     EXPECT_EQ(drive().position, stopped_at);
+}
+
+// InVelocity is bit 10 "target velocity reached" (FW spec table 5-54) of the new velocity, not
+// of a statusword sampled before the drive took 0x60FF: from one velocity to another the
+// controlword does not change, so nothing else marks when the drive answers.
+TEST_P(MotionBlocks, InVelocityOnlyOnceTheDriveRampedToTheNewVelocity) {
+    power_on();
+    h.link.downloads_act_late = true;
+    drive().ramp = 2; // quadcounts per SYNC, each SYNC
+    h.set_flag("GoVelocity", true);
+    ASSERT_TRUE(cycle_until("Velocity.InVelocity"));
+    EXPECT_EQ(drive().velocity, -10);
+    h.set_flag("GoVelocity2", true);
+    ASSERT_TRUE(cycle_until("Velocity2.InVelocity"));
+    EXPECT_TRUE(h.flag("Velocity.CommandAborted"));
+    EXPECT_EQ(drive().velocity, 20);
 }
 
 TEST_P(MotionBlocks, StopHoldsTheAxisInStoppingUntilExecuteFalls) {
