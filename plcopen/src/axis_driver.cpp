@@ -548,6 +548,11 @@ void AxisDriver::advance_reset(std::uint16_t statusword) {
                {.status = CommandStatus::Failed, .error = ErrorId::CommunicationLost});
         return;
     }
+    if (cia402::is_fault_reaction_active(statusword)) {
+        // FW spec 3.2.2, table 3-5: the reaction ends in Fault (14, 18), and only there does a
+        // fault reset act (15); an edge given now would be lost.
+        return;
+    }
     if (!reset_pulsed_ && cia402::is_fault(statusword)) {
         device_bits_ = cia402::kFaultReset; // a rising edge of bit 7
         reset_pulsed_ = true;

@@ -33,6 +33,10 @@ inline constexpr std::int8_t kHoming = 6;
 constexpr bool is_fault(std::uint16_t statusword) {
     return (statusword & 0x4F) == 0x08 || (statusword & 0x4F) == 0x0F;
 }
+/// Fault reaction active: the drive still runs its quick stop (table 3-4, x0xx 1111).
+constexpr bool is_fault_reaction_active(std::uint16_t statusword) {
+    return (statusword & 0x4F) == 0x0F;
+}
 constexpr bool is_switch_on_disabled(std::uint16_t statusword) {
     return (statusword & 0x4F) == 0x40;
 }

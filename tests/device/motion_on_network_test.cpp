@@ -310,6 +310,40 @@ END_PROGRAM
     EXPECT_EQ(value(device, "AxisError.AxisErrorID"), "0");
 }
 
+// MC_Reset given the cycle the axis enters ErrorStop, while the drive still runs its fault
+// reaction (statusword x0xx 1111, FW spec table 3-4): a fault reset acts only from Fault (table
+// 3-5, transition 15), so the block waits for Fault, then resets, and does not fail.
+TEST(MotionOnNetworkLimits, AResetDuringTheFaultReactionWaitsForFaultThenClearsIt) {
+    const auto network = parse_network_file(kNetwork, "net.yaml");
+    EposP device;
+    start(device, network, R"ST(
+PROGRAM Main
+VAR
+  Axis1 : AXIS_REF := (AxisNo := 1);
+  Power : MC_Power;
+  TightLag : MC_WriteParameter;
+  Move : MC_MoveAbsolute;
+  Status : MC_ReadStatus;
+  Reset : MC_Reset;
+  Faulted, ResetFailed : BOOL;
+END_VAR
+Power(Axis := Axis1, Enable := TRUE);
+TightLag(Axis := Axis1, Execute := Power.Status, ParameterNumber := 7, Value := 2);
+Move(Axis := Axis1, Execute := TightLag.Done AND NOT Faulted, Position := 50000, Velocity := 8000,
+     Acceleration := 100000, Deceleration := 100000);
+Status(Axis := Axis1, Enable := TRUE);
+Faulted := Faulted OR Status.ErrorStop;
+Reset(Axis := Axis1, Execute := Status.ErrorStop OR Reset.Busy OR Reset.Done);
+ResetFailed := ResetFailed OR Reset.Error;
+END_PROGRAM
+)ST");
+    device.loop().run_for(2s);
+    EXPECT_EQ(value(device, "Faulted"), "TRUE");
+    EXPECT_EQ(value(device, "ResetFailed"), "FALSE");
+    EXPECT_EQ(value(device, "Reset.Done"), "TRUE");
+    EXPECT_EQ(value(device, "Status.Standstill"), "TRUE"); // powered again
+}
+
 TEST(MotionOnNetworkLimits, ALimitSwitchStopsTheAxisInErrorStopWithItsErrorCode) {
     write_source("machine.yaml", "switches:\n  positive_limit: 15000\n");
     const auto network = load_network_file(write_source(
