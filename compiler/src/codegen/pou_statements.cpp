@@ -230,6 +230,9 @@ bool PouGenerator::is_for_variable(const Place& place) const {
 }
 
 bool PouGenerator::select_statement(const ast::IfStatement& node) {
+    if (!program_.if_conversion()) {
+        return false;
+    }
     const auto form = select_form(node);
     if (!form) {
         return false;

@@ -35,8 +35,10 @@ vm::PouKind vm_kind(ast::PouKind kind) {
 
 } // namespace
 
-ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnostics& diagnostics)
+ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnostics& diagnostics,
+                                   bool if_conversion)
     : program_(program), library_(library), diagnostics_(diagnostics),
+      if_conversion_(if_conversion),
       types_(
           program.model, diagnostics, [this](std::string_view name) { return library_pou(name); },
           [this](const ast::VariableDeclaration& declaration) {

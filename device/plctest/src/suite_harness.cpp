@@ -48,7 +48,7 @@ std::string harness_source(const Suite& suite, core::Duration cycle) {
 }
 
 core::Result<vm::Image> build_suite(const TestSources& sources, const Suite& suite,
-                                    core::Duration cycle) {
+                                    core::Duration cycle, bool coverage) {
     compiler::SourceManager files;
     compiler::CompileOptions options;
     std::vector<compiler::FileId> program;
@@ -66,6 +66,7 @@ core::Result<vm::Image> build_suite(const TestSources& sources, const Suite& sui
         files.add("<motion library>", std::string(plcopen::MotionLibrary::source())),
         files.add("<test library>", std::string(TestLibrary::source()))};
     options.substitutions.insert(suite.mocks.begin(), suite.mocks.end());
+    options.if_conversion = !coverage;
     compiler::Diagnostics diagnostics;
     auto image = compiler::compile(files, program, diagnostics, libraries, options);
     if (!image) {

@@ -84,8 +84,9 @@ core::Result<TestRun> run_tests(const TestRunOptions& options) {
             suite_settings[i].network = std::move(*network);
         }
         const auto& network = suite_settings[i].network;
-        images.emplace_back(
-            build_suite(run.sources, *suites[i], test_cycle(network.value_or(default_network()))));
+        images.emplace_back(build_suite(run.sources, *suites[i],
+                                        test_cycle(network.value_or(default_network())),
+                                        settings.coverage));
     }
     std::vector<std::size_t> order(suites.size());
     std::iota(order.begin(), order.end(), std::size_t{0});

@@ -22,6 +22,10 @@ struct CompileOptions {
     /// be a standard FB (TON) or a native block of a linked library. Names compare
     /// case-insensitively; a name that is not a FUNCTION_BLOCK is an error.
     std::map<std::string, std::string> substitutions{};
+    /// Simple IFs (one assignment to one variable in each branch) become branch-free selects.
+    /// Coverage compiles turn it off, so that every IF has a branch whose outcomes are counted;
+    /// the program's results are the same either way.
+    bool if_conversion = true;
 };
 
 } // namespace eposp::compiler

@@ -42,8 +42,10 @@ std::string harness_source(const Suite& suite, core::Duration cycle);
 /// The image of `suite`: the test files without their CONFIGURATIONs, its harness, the motion
 /// and test libraries, its mocks substituted; the error is `does not compile:` and the
 /// compiler's diagnostics.
+/// With `coverage`, simple IFs keep their branches (CompileOptions::if_conversion) so that
+/// both outcomes are counted.
 core::Result<vm::Image> build_suite(const TestSources& sources, const Suite& suite,
-                                    core::Duration cycle);
+                                    core::Duration cycle, bool coverage);
 
 struct SuiteRun {
     SuiteResult result;
