@@ -67,6 +67,48 @@ END_FUNCTION_BLOCK
     EXPECT_THAT(result.output, HasSubstr("1 passed, 0 failed"));
 }
 
+TEST(EpospTestFaults, ATrippedLimitSwitchInTheExecutionMaskPutsTheAxisInErrorStop) {
+    const std::string suite = write_source("limit_switch_test.st", std::string(R"(
+FUNCTION_BLOCK LimitSwitchSuite
+)") + kAxisBlocks + R"(
+    (* 0x2071 sub 4, the execution mask: both limit switches stop the drive (8.2.57). *)
+    Mask(Axis := Axis, Execute := TRUE, ParameterNumber := 16#207104, Value := 3);
+    TEST('PositiveLimitSwitch');
+    IF WAIT_UNTIL(Power.Status AND Mask.Done, T#2s) THEN
+        InjectLimitSwitch(Axis := 0, Positive := TRUE, Pressed := TRUE);
+        IF WAIT_UNTIL(Status.ErrorStop AND AxisError.AxisErrorID <> 0, T#1s) THEN
+            AssertEquals_WORD(16#FF07, AxisError.AxisErrorID, 'the positive limit error');
+            TEST_FINISHED();
+        END_IF
+    END_IF
+END_FUNCTION_BLOCK
+)");
+    std::string text = read_file(suite);
+    text.replace(text.find("END_VAR"), 7, "    Mask : MC_WriteParameter;\nEND_VAR");
+    std::ofstream(suite, std::ios::binary | std::ios::trunc) << text;
+    const auto result = eposp("test " + suite);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("1 passed, 0 failed"));
+}
+
+TEST(EpospTestFaults, DroppedStatuswordFramesLoseTheAxis) {
+    const std::string suite = write_source("pdo_fault_test.st", std::string(R"(
+FUNCTION_BLOCK PdoFaultSuite
+)") + kAxisBlocks + R"(
+    TEST('TwentyTpdosDropped');
+    IF WAIT_UNTIL(Power.Status, T#2s) THEN
+        InjectPdoFault(Axis := 0, Pdo := 1, FromDrive := TRUE, Frames := 20, Drop := TRUE);
+        IF WAIT_UNTIL(Status.ErrorStop, T#1s) THEN
+            TEST_FINISHED();
+        END_IF
+    END_IF
+END_FUNCTION_BLOCK
+)");
+    const auto result = eposp("test " + suite);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("1 passed, 0 failed"));
+}
+
 TEST(EpospTestFaults, AFaultTheDeviceRefusesFailsTheTestWithTheReason) {
     const std::string suite = write_source("refused_test.st", R"(
 FUNCTION_BLOCK RefusedSuite
