@@ -101,7 +101,10 @@ int run_test_command(const TestOptions& options) {
     }
     auto run = plctest::run_tests(run_options);
     if (!run) {
-        return report_user_error(kTestCommand, run.error());
+        // The files' own mistakes, already `file:line: error: …` as the compiler writes them.
+        const std::string text = terminal_text(run.error());
+        fmt::print(stderr, "{}{}", text, text.ends_with('\n') ? "" : "\n");
+        return kExitUserError;
     }
     if (run->sources.suites.empty()) {
         return report_user_error(kTestCommand,

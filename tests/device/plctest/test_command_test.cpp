@@ -722,6 +722,7 @@ TEST(EpospTestBadInput, MalformedMockAttributeIsShownAtItsLine) {
                                      "END_FUNCTION_BLOCK\n");
     const auto result = eposp("test " + suite);
     EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, Not(HasSubstr("error: " + suite))); // one "error:", the file's
     EXPECT_THAT(result.output, HasSubstr(suite + ":3: error: a mock attribute reads {attribute "
                                                  "'mock' := 'FB_Name => FB_Double'}"));
 }
