@@ -12,10 +12,6 @@ using vm::Scalar;
 FunctionParameter axis() {
     return {"Axis", "USINT", Passed::Value, Scalar::U8};
 }
-FunctionParameter flag(std::string name) {
-    return {std::move(name), "BOOL", Passed::Value, Scalar::Bool};
-}
-
 /// Runs `inject` at the first call from this site in the running test; TRUE once injected.
 Body once(std::function<std::optional<core::Error>(Call&, device::FaultInjector&)> inject) {
     return [inject](Call& call, const Binding& binding, std::string_view name) {
@@ -49,7 +45,7 @@ std::vector<LibraryFunction> fault_functions() {
     add("RestoreHeartbeat", {axis()}, once([](Call& call, device::FaultInjector& faults) {
             return faults.restore_heartbeat(axis_of(call));
         }));
-    add("InjectLimitSwitch", {axis(), flag("Positive"), flag("Pressed")},
+    add("InjectLimitSwitch", {axis(), bool_parameter("Positive"), bool_parameter("Pressed")},
         once([](Call& call, device::FaultInjector& faults) {
             const auto which = call.flag(1) ? drives::epos2::LimitSwitch::Positive
                                             : drives::epos2::LimitSwitch::Negative;
@@ -62,9 +58,9 @@ std::vector<LibraryFunction> fault_functions() {
     add("InjectPdoFault",
         {axis(),
          {"Pdo", "USINT", Passed::Value, Scalar::U8},
-         flag("FromDrive"),
+         bool_parameter("FromDrive"),
          {"Frames", "UDINT", Passed::Value, Scalar::U32},
-         flag("Drop")},
+         bool_parameter("Drop")},
         once([](Call& call, device::FaultInjector& faults) {
             return faults.corrupt_pdo(
                 axis_of(call),

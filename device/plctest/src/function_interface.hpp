@@ -27,6 +27,11 @@ struct FunctionParameter {
     vm::Scalar scalar = vm::Scalar::Bool; ///< Value only
 };
 
+/// A BOOL VAR_INPUT.
+inline FunctionParameter bool_parameter(std::string name) {
+    return {std::move(name), "BOOL", Passed::Value, vm::Scalar::Bool};
+}
+
 /// `FUNCTION name : BOOL` with these parameters, in this order.
 struct FunctionInterface {
     std::string name;

@@ -66,9 +66,6 @@ FunctionParameter any(std::string name) {
 FunctionParameter array(std::string name, std::string_view element) {
     return {std::move(name), fmt::format("ARRAY[*] OF {}", element), Passed::Array};
 }
-FunctionParameter flag(std::string name) {
-    return value(std::move(name), {"BOOL", NativeType::Bool, Scalar::Bool});
-}
 FunctionParameter duration(std::string name) {
     return value(std::move(name), {"TIME", NativeType::Time, Scalar::I64});
 }
@@ -194,7 +191,7 @@ std::vector<LibraryFunction> library_functions() {
         binding.recorder.end_cycle(binding.loop.now());
         return true;
     });
-    add("WAIT_UNTIL", {flag("Condition"), duration("Timeout")},
+    add("WAIT_UNTIL", {bool_parameter("Condition"), duration("Timeout")},
         [](Call& call, const Binding& binding, std::string_view name) {
             return binding.recorder.wait_until(call.flag(0), call.duration(1),
                                                binding.site(call.args(), name), binding.loop.now());
@@ -223,8 +220,8 @@ std::vector<LibraryFunction> library_functions() {
              text("Message")},
             string_equals_body(type == "WSTRING"));
     }
-    add("AssertTrue", {flag("Condition"), text("Message")}, condition_body(true));
-    add("AssertFalse", {flag("Condition"), text("Message")}, condition_body(false));
+    add("AssertTrue", {bool_parameter("Condition"), text("Message")}, condition_body(true));
+    add("AssertFalse", {bool_parameter("Condition"), text("Message")}, condition_body(false));
     for (const std::string_view type : kArrayTypes) {
         add(fmt::format("AssertArrayEquals_{}", type),
             {array("Expecteds", type), array("Actuals", type), text("Message")},

@@ -9,22 +9,29 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// Axis 0 (the internal EPOS2 of the default device) powered, its state and error read.
-constexpr const char* kAxisBlocks = R"(VAR
+// Runs a suite on axis 0 (the internal EPOS2 of the default device), which it powers and whose
+// state and error it reads, with `variables` declared besides and `body` as its tests; expects
+// its one test to pass.
+void expect_axis_suite_passes(const std::string& name, const std::string& variables,
+                              const std::string& body) {
+    const std::string suite = write_source(name + ".st", "FUNCTION_BLOCK " + name + R"(
+VAR
     Axis : AXIS_REF := (AxisNo := 0);
     Power : MC_Power;
     Status : MC_ReadStatus;
     AxisError : MC_ReadAxisError;
-END_VAR
+)" + variables + R"(END_VAR
     Power(Axis := Axis, Enable := TRUE);
     Status(Axis := Axis, Enable := TRUE);
     AxisError(Axis := Axis, Enable := TRUE);
-)";
+)" + body + "END_FUNCTION_BLOCK\n");
+    const auto result = eposp("test " + suite);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("1 passed, 0 failed"));
+}
 
 TEST(EpospTestFaults, AnInjectedDriveErrorPutsTheAxisInErrorStopWithItsCode) {
-    const std::string suite = write_source("drive_error_test.st", std::string(R"(
-FUNCTION_BLOCK DriveErrorSuite
-)") + kAxisBlocks + R"(
+    expect_axis_suite_passes("DriveErrorSuite", "", R"(
     TEST('OverCurrentStopsTheAxis');
     IF WAIT_UNTIL(Power.Status, T#2s) THEN
         InjectDriveError(Axis := 0, ErrorCode := 16#2310);
@@ -33,17 +40,11 @@ FUNCTION_BLOCK DriveErrorSuite
             TEST_FINISHED();
         END_IF
     END_IF
-END_FUNCTION_BLOCK
 )");
-    const auto result = eposp("test " + suite);
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_THAT(result.output, HasSubstr("1 passed, 0 failed"));
 }
 
 TEST(EpospTestFaults, AnInjectedHeartbeatLossLosesTheAxisAndARestoreBringsItBack) {
-    const std::string suite = write_source("heartbeat_test.st", std::string(R"(
-FUNCTION_BLOCK HeartbeatSuite
-)") + kAxisBlocks + R"(
+    expect_axis_suite_passes("HeartbeatSuite", "    Reset : MC_Reset;\n    Restored : BOOL;\n", R"(
     Reset(Axis := Axis, Execute := Restored);
     TEST('LostThenBack');
     IF WAIT_UNTIL(Power.Status, T#2s) THEN
@@ -56,21 +57,11 @@ FUNCTION_BLOCK HeartbeatSuite
             END_IF
         END_IF
     END_IF
-END_FUNCTION_BLOCK
 )");
-    // MC_Reset and a flag beside the axis blocks.
-    std::string text = read_file(suite);
-    text.replace(text.find("END_VAR"), 7, "    Reset : MC_Reset;\n    Restored : BOOL;\nEND_VAR");
-    std::ofstream(suite, std::ios::binary | std::ios::trunc) << text;
-    const auto result = eposp("test " + suite);
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_THAT(result.output, HasSubstr("1 passed, 0 failed"));
 }
 
 TEST(EpospTestFaults, ATrippedLimitSwitchInTheExecutionMaskPutsTheAxisInErrorStop) {
-    const std::string suite = write_source("limit_switch_test.st", std::string(R"(
-FUNCTION_BLOCK LimitSwitchSuite
-)") + kAxisBlocks + R"(
+    expect_axis_suite_passes("LimitSwitchSuite", "    Mask : MC_WriteParameter;\n", R"(
     (* 0x2071 sub 4, the execution mask: both limit switches stop the drive (8.2.57). *)
     Mask(Axis := Axis, Execute := TRUE, ParameterNumber := 16#207104, Value := 3);
     TEST('PositiveLimitSwitch');
@@ -81,20 +72,11 @@ FUNCTION_BLOCK LimitSwitchSuite
             TEST_FINISHED();
         END_IF
     END_IF
-END_FUNCTION_BLOCK
 )");
-    std::string text = read_file(suite);
-    text.replace(text.find("END_VAR"), 7, "    Mask : MC_WriteParameter;\nEND_VAR");
-    std::ofstream(suite, std::ios::binary | std::ios::trunc) << text;
-    const auto result = eposp("test " + suite);
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_THAT(result.output, HasSubstr("1 passed, 0 failed"));
 }
 
 TEST(EpospTestFaults, DroppedStatuswordFramesLoseTheAxis) {
-    const std::string suite = write_source("pdo_fault_test.st", std::string(R"(
-FUNCTION_BLOCK PdoFaultSuite
-)") + kAxisBlocks + R"(
+    expect_axis_suite_passes("PdoFaultSuite", "", R"(
     TEST('TwentyTpdosDropped');
     IF WAIT_UNTIL(Power.Status, T#2s) THEN
         InjectPdoFault(Axis := 0, Pdo := 1, FromDrive := TRUE, Frames := 20, Drop := TRUE);
@@ -102,11 +84,7 @@ FUNCTION_BLOCK PdoFaultSuite
             TEST_FINISHED();
         END_IF
     END_IF
-END_FUNCTION_BLOCK
 )");
-    const auto result = eposp("test " + suite);
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_THAT(result.output, HasSubstr("1 passed, 0 failed"));
 }
 
 TEST(EpospTestFaults, AFaultTheDeviceRefusesFailsTheTestWithTheReason) {
