@@ -6,6 +6,8 @@
 #include "eposp/drives/motion/profile_planner.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/statusword_bits.hpp"
+#include "modes/mode_behaviour.hpp"
+#include "modes/mode_table.hpp"
 
 #include <algorithm>
 #include <array>
@@ -18,14 +20,6 @@ namespace {
 
 using motion::DriveState;
 using motion::MotionState;
-
-// EPOS2 FW spec 8.2.85, tables 8-112 / 8-113 and 5.3.2.3 / 5.4.2.3 / 5.10.2.3: the controlword
-// bits the operating modes own.
-constexpr std::uint16_t kNewSetpointBit = 1U << 4; ///< PPM; homing operation start in HMM
-constexpr std::uint16_t kChangeImmediatelyBit = 1U << 5;
-constexpr std::uint16_t kRelativeBit = 1U << 6;
-constexpr std::uint16_t kHaltBit = 1U << 8;
-constexpr std::uint16_t kEndlessMovementBit = 1U << 15;
 
 // 7.3, figure 7-54 remark *3 and table 7-65: statusword bit 9 is TRUE in NMT Operational only.
 constexpr std::uint16_t kRemoteBit = 1U << 9;
@@ -53,7 +47,15 @@ constexpr std::chrono::microseconds kControlPeriod{1000};
 Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig config)
     : loop_(loop), dictionary_(with_restore_rule(std::move(config.dictionary), *this)),
       node_(loop, port, dictionary_.objects(), dictionary_.node_config()), machine_(config.axis),
-      axis_(config.axis), control_time_(loop.now() + kControlPeriod),
+      axis_(config.axis),
+      mode_services_(std::make_unique<ModeServices>(ModeServices{
+          .objects = dictionary_.objects(),
+          .counts_per_turn = counts_per_turn_,
+          .raise_device_error = [this](std::uint16_t code) { raise_device_error(code); },
+          .homing = homing_,
+          .standstill = standstill_})),
+      mode_behaviour_(make_mode_behaviour(OperatingMode::ProfilePosition, *mode_services_)),
+      control_time_(loop.now() + kControlPeriod),
       control_timer_(loop,
                      loop.every(kControlPeriod, control_time_, [this] { control_period(); })) {
     // The machine's encoder, gains and motor data are the device's defaults (8.2.74,
@@ -196,13 +198,11 @@ void Epos2Drive::watch_dictionary() {
          std::array<std::uint16_t, 4>{0x6007, 0x605B, 0x605C, 0x605E}) {
         od.on_change(option_code, [this](std::uint16_t, std::uint8_t) { read_option_codes(); });
     }
-    od.on_change(0x60FF, [this](std::uint16_t, std::uint8_t) {
-        if (mode_ == OperatingMode::ProfileVelocity) {
-            velocity_profile_.set_target(
-                seconds(), rpm_to_counts(dictionary_.objects().get_as<std::int32_t>(0x60FF, 0)),
-                profile_parameters());
-        }
-    });
+    for (const std::uint16_t set_value : kSetValueObjects) {
+        od.on_change(set_value, [this](std::uint16_t index, std::uint8_t) {
+            mode_behaviour_->on_set_value_written(seconds(), index);
+        });
+    }
     od.on_change(0x1003, [this](std::uint16_t, std::uint8_t sub) {
         if (sub == 1) {
             on_error_recorded();
@@ -216,14 +216,9 @@ void Epos2Drive::watch_dictionary() {
                 return code;
             }
         }
-        switch (canopen::decode<std::int8_t>(value)) {
-        case static_cast<std::int8_t>(OperatingMode::ProfilePosition):
-        case static_cast<std::int8_t>(OperatingMode::ProfileVelocity):
-        case static_cast<std::int8_t>(OperatingMode::Homing):
-            return canopen::AbortCode::None;
-        default:
-            return canopen::AbortCode::InvalidValue;
-        }
+        return simulated_mode(canopen::decode<std::int8_t>(value)).has_value()
+                   ? canopen::AbortCode::None
+                   : canopen::AbortCode::InvalidValue;
     };
 }
 
@@ -243,31 +238,19 @@ void Epos2Drive::reset_application() {
     publish(MotionState{static_cast<double>(position_actual()), 0, 0});
 }
 
+// The mode starts over at rest on the actual position, also when the power stage comes on.
 void Epos2Drive::on_mode_written() {
     const auto written = dictionary_.objects().get_as<std::int8_t>(0x6060, 0);
-    const double now = seconds();
-    mode_ = static_cast<OperatingMode>(written);
-    const auto here = static_cast<double>(position_actual());
-    position_profile_.reset(here);
-    velocity_profile_.reset(here);
-    homing_.reset(here);
-    setpoint_acknowledged_ = false;
+    mode_ = simulated_mode(written).value_or(OperatingMode::ProfilePosition);
+    const std::int64_t here = position_actual();
+    hold_position_ = static_cast<double>(here);
+    mode_behaviour_ = make_mode_behaviour(mode_, *mode_services_);
+    mode_behaviour_->start(seconds(), here, power_stage_on_);
     following_error_ =
         motion::FollowingErrorMonitor(dictionary_.objects().get_as<std::uint32_t>(0x6065, 0));
     position_limit_ = motion::SoftwarePositionLimitMonitor(
         {dictionary_.objects().get_as<std::int32_t>(0x607D, 1),
          dictionary_.objects().get_as<std::int32_t>(0x607D, 2)});
-    if (mode_ == OperatingMode::ProfileVelocity && power_stage_on_) {
-        velocity_profile_.set_target(
-            now, rpm_to_counts(dictionary_.objects().get_as<std::int32_t>(0x60FF, 0)),
-            profile_parameters());
-    }
-    target_reached_ = motion::TargetReachedMonitor(
-        mode_ == OperatingMode::ProfileVelocity
-            ? motion::TargetWindow{dictionary_.objects().get_as<std::uint32_t>(0x606D, 0),
-                                   dictionary_.objects().get_as<std::uint16_t>(0x606E, 0)}
-            : motion::TargetWindow{dictionary_.objects().get_as<std::uint32_t>(0x6067, 0),
-                                   dictionary_.objects().get_as<std::uint16_t>(0x6068, 0)});
     // 8.2.91: the display follows the mode once it is active.
     dictionary_.objects().set_as(0x6061, 0, written);
 }
@@ -284,60 +267,12 @@ void Epos2Drive::on_controlword(std::uint16_t controlword) {
         following_error_ =
             motion::FollowingErrorMonitor(dictionary_.objects().get_as<std::uint32_t>(0x6065, 0));
     }
-    const bool enabled = device_control_.outputs().drive_function_enabled;
-    const double now = seconds();
-    switch (mode_) {
-    case OperatingMode::ProfilePosition:
-        if ((rising & kNewSetpointBit) != 0 && enabled) {
-            setpoint_acknowledged_ = new_position_setpoint(now, controlword);
-        }
-        if ((falling & kNewSetpointBit) != 0) {
-            setpoint_acknowledged_ = position_profile_.buffer_full();
-        }
-        if (((rising | falling) & kHaltBit) != 0) {
-            position_profile_.set_halt(now, (controlword & kHaltBit) != 0);
-        }
-        break;
-    case OperatingMode::ProfileVelocity:
-        if (((rising | falling) & kHaltBit) != 0) {
-            velocity_profile_.set_halt(now, (controlword & kHaltBit) != 0);
-        }
-        break;
-    case OperatingMode::Homing:
-        if ((rising & kNewSetpointBit) != 0 && enabled) {
-            homing_.start(now, homing_parameters(), last_demand_);
-        }
-        if ((falling & kNewSetpointBit) != 0) {
-            homing_.interrupt(now);
-        }
-        if (((rising | falling) & kHaltBit) != 0) {
-            homing_.set_halt(now, (controlword & kHaltBit) != 0);
-        }
-        break;
-    }
-}
-
-// 5.3.2.3: a new setpoint, unless the buffer is full or its end lies outside 0x607D (5.3.2.1).
-bool Epos2Drive::new_position_setpoint(double now, std::uint16_t controlword) {
-    const auto& od = dictionary_.objects();
-    motion::PositionSetpoint setpoint;
-    setpoint.target = od.get_as<std::int32_t>(0x607A, 0);
-    setpoint.relative = (controlword & kRelativeBit) != 0;
-    setpoint.endless = (controlword & kEndlessMovementBit) != 0;
-    setpoint.parameters = profile_parameters();
-    const motion::SoftwarePositionLimit limit{od.get_as<std::int32_t>(0x607D, 1),
-                                              od.get_as<std::int32_t>(0x607D, 2)};
-    const double end =
-        setpoint.relative ? position_profile_.demand_target() + setpoint.target : setpoint.target;
-    if (!setpoint.endless) {
-        if (const auto error = limit.check_target(end)) {
-            raise_device_error(*error);
-            return false;
-        }
-    }
-    target_reached_.reset();
-    return position_profile_.new_setpoint(now, setpoint,
-                                          (controlword & kChangeImmediatelyBit) != 0);
+    mode_behaviour_->on_controlword({.now = seconds(),
+                                     .controlword = controlword,
+                                     .rising = rising,
+                                     .falling = falling,
+                                     .enabled = device_control_.outputs().drive_function_enabled,
+                                     .last_demand = last_demand_});
 }
 
 // 4.2: an error recorded in 0x1003 that the node's services raised (heartbeat, guarding, PDO
@@ -385,10 +320,15 @@ void Epos2Drive::control_period() {
     if (outputs.ramp != motion::StopRamp::None) {
         demand = stop_ramp(now);
     } else if (outputs.drive_function_enabled) {
-        demand = mode_demand(now);
+        const ModeDemand commanded = mode_behaviour_->demand(mode_inputs());
+        if (commanded.position_offset) {
+            position_offset_ += *commanded.position_offset;
+        }
+        demand = commanded.motion;
     } else if (power_stage_on_) {
-        demand = position_profile_.update(now); // hold where the drive stands
+        demand = MotionState{hold_position_, 0, 0}; // hold where the power stage came on
     }
+    index_latch_.reset();
     axis_.set_demand({.position = demand.position - static_cast<double>(position_offset_),
                       .velocity = demand.velocity,
                       .acceleration = demand.acceleration});
@@ -406,7 +346,7 @@ void Epos2Drive::control_period() {
     watch_power_stage(overcurrent_seen);
     velocity_averaged_.update(counts_to_rpm(axis_.velocity_actual()));
     last_demand_ = demand;
-    watch_motion(now, demand);
+    watch_motion(demand);
     publish(demand);
     control_time_ += kControlPeriod;
 }
@@ -438,8 +378,8 @@ void Epos2Drive::follow_power_stage() {
     stopping_ = false;
     if (on) {
         on_mode_written();
-    } else if (homing_.in_progress()) {
-        homing_.drive_disabled(seconds());
+    } else {
+        mode_behaviour_->drive_disabled(seconds());
     }
 }
 
@@ -456,9 +396,7 @@ MotionState Epos2Drive::stop_ramp(double now) {
             static_cast<motion::RampShape>(od.get_as<std::int16_t>(0x6086, 0)));
         stop_start_ = now;
         standstill_.stop_started(now);
-        if (homing_.in_progress()) {
-            homing_.drive_disabled(now);
-        }
+        mode_behaviour_->drive_disabled(now);
     }
     const MotionState demand = stop_.sample(now - stop_start_);
     standstill_.update(now, counts_to_rpm(axis_.velocity_actual()),
@@ -466,47 +404,27 @@ MotionState Epos2Drive::stop_ramp(double now) {
     if (standstill_.stop_completed(now)) {
         stopping_ = false;
         // The mode starts over at rest where the stop ended, its setpoints dropped.
-        position_profile_.reset(demand.position);
-        velocity_profile_.reset(demand.position);
-        homing_.reset(demand.position);
+        mode_behaviour_->stop_completed(demand.position);
         device_control_.stop_completed();
     }
     return demand;
 }
 
-MotionState Epos2Drive::mode_demand(double now) {
-    switch (mode_) {
-    case OperatingMode::ProfilePosition:
-        return position_profile_.update(now);
-    case OperatingMode::ProfileVelocity:
-        return velocity_profile_.update(now);
-    case OperatingMode::Homing:
-        return homing_demand(now);
-    }
-    return {};
-}
-
-MotionState Epos2Drive::homing_demand(double now) {
-    const plant::SwitchStates pressed = switches();
-    const motion::HomingStep step = homing_.update(now, {.position = position_actual(),
-                                                         .negative_limit = pressed.negative_limit,
-                                                         .positive_limit = pressed.positive_limit,
-                                                         .home_switch = pressed.home,
-                                                         .index_position = index_latch_,
-                                                         .current = axis_.current_actual()});
-    index_latch_.reset();
-    if (step.position_offset) {
-        position_offset_ += *step.position_offset;
-    }
-    return step.demand;
+ModeInputs Epos2Drive::mode_inputs() const {
+    return {.now = seconds(),
+            .controlword = controlword_,
+            .position = position_actual(),
+            .velocity = axis_.velocity_actual(),
+            .current = axis_.current_actual(),
+            .switches = switches(),
+            .index_position = index_latch_};
 }
 
 // Following error (5.9.1.2) in the position-controlled modes; target reached and speed zero.
-void Epos2Drive::watch_motion(double now, const MotionState& demand) {
+void Epos2Drive::watch_motion(const MotionState& demand) {
     const auto actual = static_cast<double>(position_actual());
-    const bool position_controlled = mode_ != OperatingMode::ProfileVelocity;
     if (power_stage_on_ && device_control_.state() != DriveState::Fault) {
-        if (position_controlled) {
+        if (mode_behaviour_->position_controlled()) {
             if (const auto error = following_error_.update(demand.position, actual)) {
                 raise_device_error(*error);
             }
@@ -514,33 +432,13 @@ void Epos2Drive::watch_motion(double now, const MotionState& demand) {
         watch_limit_switches();
         // 8.2.105: the actual position leaving the limits; homing runs before the limits mean
         // anything (they are relative to the home position).
-        if (mode_ != OperatingMode::Homing) {
+        if (mode_behaviour_->supervises_limits()) {
             if (const auto error = position_limit_.update(actual)) {
                 raise_device_error(*error);
             }
         }
     }
-    const double velocity_rpm = counts_to_rpm(axis_.velocity_actual());
-    switch (mode_) {
-    case OperatingMode::ProfilePosition:
-        if ((controlword_ & kNewSetpointBit) == 0) {
-            setpoint_acknowledged_ = position_profile_.buffer_full();
-        }
-        target_reached_now_ = target_reached_.update(now, position_profile_.finished(now), actual,
-                                                     position_profile_.demand_target());
-        break;
-    case OperatingMode::ProfileVelocity: {
-        const double target = (controlword_ & kHaltBit) != 0
-                                  ? 0.0
-                                  : dictionary_.objects().get_as<std::int32_t>(0x60FF, 0);
-        target_reached_now_ =
-            target_reached_.update(now, velocity_profile_.ramp_finished(now), velocity_rpm, target);
-        standstill_now_ = standstill_.update(now, velocity_rpm, demand.velocity == 0);
-        break;
-    }
-    case OperatingMode::Homing:
-        break;
-    }
+    mode_behaviour_->watch(mode_inputs(), demand);
 }
 
 // 8.2.57, table 8-89: a limit switch functionality that goes high while its bit of the execution
@@ -551,7 +449,7 @@ void Epos2Drive::watch_limit_switches() {
     const std::uint16_t states = digital_input_states();
     const std::uint16_t rising = states & ~limit_inputs_before_;
     limit_inputs_before_ = states;
-    if (rising == 0 || mode_ == OperatingMode::Homing) {
+    if (rising == 0 || !mode_behaviour_->supervises_limits()) {
         return;
     }
     const auto executed = dictionary_.objects().get_as<std::uint16_t>(0x2071, 4);
@@ -563,36 +461,15 @@ void Epos2Drive::watch_limit_switches() {
     }
 }
 
-// Table 8-114 and 5.3.2.3 / 5.4.2.3 / 5.10.2.3: the bits the present mode owns.
-std::uint16_t Epos2Drive::mode_statusword_bits(double now) const {
-    std::uint16_t bits = homing_.referenced() ? motion::kPositionReferencedBit : 0;
-    switch (mode_) {
-    case OperatingMode::ProfilePosition:
-        if (target_reached_now_)
-            bits |= motion::kTargetReachedBit;
-        if (setpoint_acknowledged_)
-            bits |= motion::kSetpointAcknowledgeBit;
-        if (following_error_.active())
-            bits |= motion::kFollowingErrorBit;
-        break;
-    case OperatingMode::ProfileVelocity:
-        if (target_reached_now_)
-            bits |= motion::kTargetReachedBit;
-        if (standstill_now_)
-            bits |= motion::kSpeedZeroBit;
-        break;
-    case OperatingMode::Homing:
-        bits |= homing_.statusword_bits(now);
-        break;
-    }
-    return bits;
-}
-
 // 8.2.86: the state bits (table 3-4), the mode's bits (table 8-114) and Remote.
 std::uint16_t Epos2Drive::statusword() const {
     const bool remote = node_.nmt_state() == canopen::NmtState::Operational;
-    return static_cast<std::uint16_t>(device_control_.statusword() |
-                                      mode_statusword_bits(seconds()) | (remote ? kRemoteBit : 0));
+    // Table 8-114: bit 15 in every mode, bits 10, 12, 13 the present mode's.
+    const std::uint16_t mode_bits = static_cast<std::uint16_t>(
+        (homing_.referenced() ? motion::kPositionReferencedBit : 0) |
+        mode_behaviour_->statusword_bits(seconds(), following_error_.active()));
+    return static_cast<std::uint16_t>(device_control_.statusword() | mode_bits |
+                                      (remote ? kRemoteBit : 0));
 }
 
 std::uint16_t Epos2Drive::digital_input_states() const {
@@ -652,37 +529,6 @@ void Epos2Drive::publish(const MotionState& demand) {
     store(0x6078, 0, now.current_actual, last.current_actual);
     store(0x2071, 1, now.digital_inputs, last.digital_inputs);
     published_ = now;
-}
-
-// 5.3.2.1 / 5.10.2.1: the profile clamped to Maximal Profile Velocity 0x607F and Max
-// Acceleration 0x60C5 (all of them at least 1 by their value ranges, so the clamp cannot fail).
-motion::ProfileParameters Epos2Drive::profile_parameters() const {
-    const auto& od = dictionary_.objects();
-    const motion::ProfileParameters written{
-        .velocity = rpm_to_counts(od.get_as<std::uint32_t>(0x6081, 0)),
-        .acceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x6083, 0)),
-        .deceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x6084, 0)),
-        .shape = static_cast<motion::RampShape>(od.get_as<std::int16_t>(0x6086, 0))};
-    const motion::ProfileLimits limits{
-        .max_velocity = rpm_to_counts(od.get_as<std::uint32_t>(0x607F, 0)),
-        .max_acceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x60C5, 0))};
-    return *motion::clamp_to_limits(written, limits);
-}
-
-motion::HomingParameters Epos2Drive::homing_parameters() const {
-    const auto& od = dictionary_.objects();
-    motion::HomingParameters parameters;
-    parameters.method = motion::to_homing_method(od.get_as<std::int8_t>(0x6098, 0))
-                            .value_or(motion::HomingMethod::ActualPosition);
-    parameters.switch_search_speed = rpm_to_counts(od.get_as<std::uint32_t>(0x6099, 1));
-    parameters.zero_search_speed = rpm_to_counts(od.get_as<std::uint32_t>(0x6099, 2));
-    parameters.acceleration = rpm_to_counts(od.get_as<std::uint32_t>(0x609A, 0));
-    parameters.shape = static_cast<motion::RampShape>(od.get_as<std::int16_t>(0x6086, 0));
-    parameters.home_offset = od.get_as<std::int32_t>(0x607C, 0);
-    parameters.home_position = od.get_as<std::int32_t>(0x2081, 0);
-    parameters.current_threshold = od.get_as<std::uint16_t>(0x2080, 0) / 1000.0;
-    parameters.counts_per_turn = static_cast<std::int64_t>(counts_per_turn_);
-    return parameters;
 }
 
 double Epos2Drive::seconds() const {

@@ -8,11 +8,8 @@
 #include "eposp/drives/motion/device_control.hpp"
 #include "eposp/drives/motion/following_error_monitor.hpp"
 #include "eposp/drives/motion/homing_procedure.hpp"
-#include "eposp/drives/motion/profile_position_generator.hpp"
-#include "eposp/drives/motion/profile_velocity_generator.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/standstill_monitor.hpp"
-#include "eposp/drives/motion/target_reached_monitor.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
 #include "eposp/drives/plant/low_pass_filter.hpp"
 #include "eposp/drives/plant/reference_axis.hpp"
@@ -25,6 +22,10 @@
 #include <vector>
 
 namespace eposp::drives::epos2 {
+
+class ModeBehaviour;
+struct ModeInputs;
+struct ModeServices;
 
 /// EPOS2 FW spec 8.2.90, table 8-118: the modes of operation this simulation runs. The others of
 /// the table (7 IPM, -1 position, -2 velocity, -3 current, -5 master encoder, -6 step/direction)
@@ -104,20 +105,15 @@ private:
     void follow_power_stage();
     void finish_device_control_transitions();
     motion::MotionState stop_ramp(double now);
-    motion::MotionState mode_demand(double now);
-    motion::MotionState homing_demand(double now);
-    void watch_motion(double now, const motion::MotionState& demand);
+    ModeInputs mode_inputs() const;
+    void watch_motion(const motion::MotionState& demand);
     void watch_limit_switches();
     /// The machine's switches at the present position, and those held by hold_limit_switch().
     plant::SwitchStates switches() const;
     void publish(const motion::MotionState& demand);
-    std::uint16_t mode_statusword_bits(double now) const;
     std::uint16_t statusword() const;
     std::uint16_t digital_input_states() const;
 
-    bool new_position_setpoint(double now, std::uint16_t controlword);
-    motion::ProfileParameters profile_parameters() const;
-    motion::HomingParameters homing_parameters() const;
     /// The drive's clock in seconds: control_time_.
     double seconds() const;
     void read_counts_per_turn();
@@ -133,23 +129,20 @@ private:
     plant::AxisParameters machine_; ///< what the dictionary does not configure (see configure_axis)
     plant::ServoAxis axis_;
     motion::DeviceControl device_control_;
-    motion::ProfilePositionGenerator position_profile_;
-    motion::ProfileVelocityGenerator velocity_profile_;
     motion::HomingProcedure homing_;
     motion::FollowingErrorMonitor following_error_;
     motion::SoftwarePositionLimitMonitor position_limit_;
-    motion::TargetReachedMonitor target_reached_{{}};
     motion::StandstillMonitor standstill_;
+    std::unique_ptr<ModeServices> mode_services_;
+    std::unique_ptr<ModeBehaviour> mode_behaviour_; ///< of mode_ (modes/)
 
     OperatingMode mode_ = OperatingMode::ProfilePosition;
     std::uint16_t controlword_ = 0;
     bool power_stage_on_ = false;
-    bool stopping_ = false;              ///< a stop ramp of the device control has begun
-    bool setpoint_acknowledged_ = false; ///< PPM statusword bit 12
-    bool target_reached_now_ = false;    ///< PPM / PVM statusword bit 10, this period
-    bool standstill_now_ = false;        ///< PVM statusword bit 12
-    motion::MotionState last_demand_;    ///< of the last control period
-    motion::Trajectory stop_;            ///< the stop ramp in progress
+    bool stopping_ = false;           ///< a stop ramp of the device control has begun
+    double hold_position_ = 0;        ///< where the power stage came on (Measure Init holds it)
+    motion::MotionState last_demand_; ///< of the last control period
+    motion::Trajectory stop_;         ///< the stop ramp in progress
     double stop_start_ = 0;
     std::int64_t position_offset_ = 0;        ///< what homing added to the axis' counter
     std::optional<std::int64_t> index_latch_; ///< an index pulse since the last control period

@@ -1,0 +1,31 @@
+#include "mode_table.hpp"
+
+#include "homing_mode.hpp"
+#include "profile_position_mode.hpp"
+#include "profile_velocity_mode.hpp"
+
+namespace eposp::drives::epos2 {
+
+std::optional<OperatingMode> simulated_mode(std::int8_t modes_of_operation) {
+    switch (static_cast<OperatingMode>(modes_of_operation)) {
+    case OperatingMode::ProfilePosition:
+    case OperatingMode::ProfileVelocity:
+    case OperatingMode::Homing:
+        return static_cast<OperatingMode>(modes_of_operation);
+    }
+    return std::nullopt;
+}
+
+std::unique_ptr<ModeBehaviour> make_mode_behaviour(OperatingMode mode, ModeServices& services) {
+    switch (mode) {
+    case OperatingMode::ProfilePosition:
+        return std::make_unique<ProfilePositionMode>(services);
+    case OperatingMode::ProfileVelocity:
+        return std::make_unique<ProfileVelocityMode>(services);
+    case OperatingMode::Homing:
+        return std::make_unique<HomingMode>(services);
+    }
+    return std::make_unique<ProfilePositionMode>(services);
+}
+
+} // namespace eposp::drives::epos2
