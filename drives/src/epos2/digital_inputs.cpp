@@ -1,0 +1,71 @@
+#include "eposp/drives/epos2/digital_inputs.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace eposp::drives::epos2 {
+namespace {
+
+// Table 8-85, column EPOS2 24/5: where the machine's switches are wired (bit n-1 = input n).
+constexpr std::uint8_t kHomeSwitchPin = 1U << 3;
+constexpr std::uint8_t kPositiveLimitPin = 1U << 4;
+constexpr std::uint8_t kNegativeLimitPin = 1U << 5;
+
+} // namespace
+
+InputEdges EdgeDetector::update(std::uint16_t states) {
+    const InputEdges edges{.rising = static_cast<std::uint16_t>(states & ~before_),
+                           .falling = static_cast<std::uint16_t>(before_ & ~states)};
+    before_ = states;
+    return edges;
+}
+
+void DigitalInputs::set_level(unsigned input, bool high) {
+    if (input < 1 || input > kDigitalInputCount) {
+        throw std::invalid_argument("EPOS2 24/5 digital input " + std::to_string(input) +
+                                    " does not exist (1 … 6)");
+    }
+    const auto pin = static_cast<std::uint8_t>(1U << (input - 1));
+    outside_ = static_cast<std::uint8_t>(high ? outside_ | pin : outside_ & ~pin);
+}
+
+void DigitalInputs::hold_limit_switch(InputFunction which, bool pressed) {
+    (which == InputFunction::NegativeLimitSwitch ? held_.negative_limit : held_.positive_limit) =
+        pressed;
+}
+
+std::uint8_t DigitalInputs::levels(const plant::SwitchStates& machine) const {
+    std::uint8_t levels = outside_;
+    if (machine.home) {
+        levels |= kHomeSwitchPin;
+    }
+    if (machine.positive_limit || held_.positive_limit) {
+        levels |= kPositiveLimitPin;
+    }
+    if (machine.negative_limit || held_.negative_limit) {
+        levels |= kNegativeLimitPin;
+    }
+    return levels;
+}
+
+// 8.2.57, table 8-88: polarity 0 is high active, 1 low active. A functionality no input carries
+// stays inactive whatever its polarity.
+std::uint16_t DigitalInputs::states(const plant::SwitchStates& machine) const {
+    const std::uint8_t pins = levels(machine);
+    std::uint16_t states = 0;
+    for (unsigned n = 0; n < kDigitalInputCount; ++n) {
+        const std::uint16_t function = config_.functions[n];
+        if (function > 15) {
+            continue; // refused by the value range; kept out for safety
+        }
+        const auto bit = static_cast<std::uint16_t>(1U << function);
+        const bool high = (pins & (1U << n)) != 0;
+        const bool low_active = (config_.polarity & bit) != 0;
+        if (high != low_active) {
+            states |= bit;
+        }
+    }
+    return states;
+}
+
+} // namespace eposp::drives::epos2
