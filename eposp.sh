@@ -17,7 +17,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 
 readonly BUILD_PACKAGES=(g++ cmake ninja-build libboost-dev libfmt-dev libcli11-dev
     libgtest-dev libgmock-dev libbenchmark-dev antlr4 libantlr4-runtime-dev libyaml-cpp-dev
-    libxbyak-dev)
+    libxbyak-dev nlohmann-json3-dev)
 # Independent tools that the interoperability tests and the demo talk to (lcov: reads back the
 # coverage tracefile of eposp test; xmllint: checks its JUnit report against a schema).
 readonly TOOL_PACKAGES=(python3-can python3-serial tshark lcov libxml2-utils)

@@ -177,9 +177,10 @@ ast::ExpressionPtr AstBuilder::postfix(P::PostfixExpressionContext& context) {
             const auto index = decode_literal(LiteralForm::Integer, bit->INTEGER()->getText());
             const auto* value = index ? std::get_if<ast::IntegerLiteral>(&*index) : nullptr;
             if (value == nullptr || value->magnitude > 63) {
-                error(range(*bit), "bit number " + bit->INTEGER()->getText() +
-                                       " is out of range; the widest bit string (LWORD) has "
-                                       "bits 0 to 63");
+                error(DiagnosticCode::E0105, range(*bit),
+                      "bit number " + bit->INTEGER()->getText() +
+                          " is out of range; the widest bit string (LWORD) has "
+                          "bits 0 to 63");
             }
             const auto number = static_cast<std::uint32_t>(value != nullptr ? value->magnitude : 0);
             result = make(whole, ast::BitAccessExpression{std::move(result), number});
@@ -248,7 +249,7 @@ ast::ExpressionPtr AstBuilder::literal_expression(antlr4::Token& token) {
     core::Result<ast::Literal> decoded =
         decode_literal(*literal_form(token.getType()), token.getText());
     if (!decoded) {
-        error(where, decoded.error());
+        error(DiagnosticCode::E0104, where, decoded.error());
         return literal(ast::IntegerLiteral{}); // placeholder; the unit has errors anyway
     }
     // `1E37` and `REAL#1E37` (not `REAL#1`, which needs no point); the number follows any `#`.
@@ -259,9 +260,10 @@ ast::ExpressionPtr AstBuilder::literal_expression(antlr4::Token& token) {
     if (std::holds_alternative<ast::RealLiteral>(*decoded) &&
         number.find('.') == std::string_view::npos &&
         number.find_first_of("eE") != std::string_view::npos) {
-        warning(where, "real literal '" + text +
-                           "' has no decimal point, which IEC 61131-3 (6.3.2) requires; "
-                           "accepted as CODESYS does");
+        warning(DiagnosticCode::W0102, where,
+                "real literal '" + text +
+                    "' has no decimal point, which IEC 61131-3 (6.3.2) requires; "
+                    "accepted as CODESYS does");
     }
     if (auto* enum_value = std::get_if<ast::EnumValueLiteral>(&*decoded)) {
         // Names are ASCII, so their lengths in bytes are lengths in columns.
@@ -303,9 +305,10 @@ std::vector<ast::Argument> AstBuilder::arguments(P::ArgumentListContext* context
 ast::Identifier AstBuilder::identifier(P::IdentifierContext& context) {
     if (context.ON() != nullptr && !warned_about_on_) {
         warned_about_on_ = true; // once per file: the point is the form, not each use
-        warning(range(context), "'" + context.getText() +
-                                    "' is a keyword of IEC 61131-3 (RESOURCE ... ON); accepted "
-                                    "as a name, as CODESYS does");
+        warning(DiagnosticCode::W0103, range(context),
+                "'" + context.getText() +
+                    "' is a keyword of IEC 61131-3 (RESOURCE ... ON); accepted "
+                    "as a name, as CODESYS does");
     }
     return {context.getText(), range(context)};
 }
@@ -321,6 +324,14 @@ SourceRange AstBuilder::range(antlr4::ParserRuleContext& context) const {
 
 SourceRange AstBuilder::range(antlr4::Token& token) const {
     return token_range(file_, token);
+}
+
+void AstBuilder::error(DiagnosticCode code, const SourceRange& where, std::string message) {
+    diagnostics_.error(code, where, std::move(message));
+}
+
+void AstBuilder::warning(DiagnosticCode code, const SourceRange& where, std::string message) {
+    diagnostics_.warning(code, where, std::move(message));
 }
 
 void AstBuilder::error(const SourceRange& where, std::string message) {

@@ -15,6 +15,23 @@ bool is_assignable(const ast::Expression& target) {
            std::holds_alternative<ast::DereferenceExpression>(target.node);
 }
 
+// `x = 1;` meant `x := 1;`: the '=' between the operands (with a blank on each side, or none),
+// when nothing else stands there, becomes ':='.
+std::optional<FixIt> assignment_instead_of(const ast::BinaryExpression& comparison) {
+    const SourceRange& left = comparison.left->range;
+    const SourceRange& right = comparison.right->range;
+    if (left.end.line != right.begin.line || right.begin.column <= left.end.column + 1) {
+        return std::nullopt;
+    }
+    const std::uint32_t gap = right.begin.column - left.end.column - 1;
+    if (gap != 1 && gap != 3) {
+        return std::nullopt;
+    }
+    return FixIt{
+        {left.file, {left.end.line, left.end.column + 1}, {left.end.line, right.begin.column - 1}},
+        gap == 1 ? ":=" : " := "};
+}
+
 } // namespace
 
 ast::StatementList AstBuilder::statements(P::StatementListContext* context) {
@@ -34,17 +51,23 @@ ast::Statement AstBuilder::statement(P::StatementContext& context) {
         ast::ExpressionPtr target = expression(*simple->expression(0));
         if (simple->ASSIGN() != nullptr) {
             if (!is_assignable(*target)) {
-                error(target->range, "the left side of ':=' must be a variable");
+                error(DiagnosticCode::E0106, target->range,
+                      "the left side of ':=' must be a variable");
             }
             return {where, ast::AssignmentStatement{std::move(target),
                                                     expression(*simple->expression(1))}};
         }
         if (!std::holds_alternative<ast::CallExpression>(target->node)) {
             const auto* binary = std::get_if<ast::BinaryExpression>(&target->node);
-            error(target->range,
-                  binary != nullptr && binary->op == ast::BinaryOperator::Equal
-                      ? "this statement does nothing; did you mean ':=' instead of '='?"
-                      : "this statement does nothing; expected an assignment ':=' or a call");
+            const bool comparison = binary != nullptr && binary->op == ast::BinaryOperator::Equal;
+            Diagnostic diagnostic(
+                DiagnosticCode::E0107, target->range,
+                comparison ? "this statement does nothing; did you mean ':=' instead of '='?"
+                           : "this statement does nothing; expected an assignment ':=' or a call");
+            if (comparison) {
+                diagnostic.fix_it = assignment_instead_of(*binary);
+            }
+            diagnostics_.report(std::move(diagnostic));
         }
         return {where, ast::CallStatement{std::move(target)}};
     }

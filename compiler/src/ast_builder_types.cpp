@@ -105,7 +105,8 @@ ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
                     ast::EnumType{std::make_unique<ast::TypeSpec>(named_type(std::move(base))),
                                   std::move(values)}};
         }
-        error(base.range, "only STRING and WSTRING take a length; '" + base.name + "' does not");
+        error(DiagnosticCode::E0108, base.range,
+              "only STRING and WSTRING take a length; '" + base.name + "' does not");
         return named_type(std::move(base));
     }
     return named_type(identifier(*dynamic_cast<P::NamedTypeContext&>(context).identifier()));

@@ -73,7 +73,7 @@ bool check_nesting(const std::vector<antlr4::Token*>& tokens, FileId file, Diagn
     std::size_t type_prefixes = 0;
     std::size_t operators = 0;
     const auto fail = [&](const antlr4::Token& token, std::string message) {
-        diagnostics.error(token_range(file, token), std::move(message));
+        diagnostics.error(DiagnosticCode::E0501, token_range(file, token), std::move(message));
         return false;
     };
     for (const antlr4::Token* token : tokens) {

@@ -32,7 +32,7 @@ std::string utf8_text(const SourceManager& sources, FileId file, Diagnostics& di
     for (std::size_t position = 0; position < text.size();) {
         const std::optional<char32_t> code_point = utf8::decode(text, position);
         if (!code_point) {
-            diagnostics.warning({file, {line, column}, {line, column}},
+            diagnostics.warning(DiagnosticCode::W0104, {file, {line, column}, {line, column}},
                                 "the file is not valid UTF-8 text here; it is read as "
                                 "Windows-1252, as CODESYS exports it");
             return utf8::from_windows_1252(text);
@@ -56,15 +56,15 @@ bool report_lexical_errors(antlr4::CommonTokenStream& tokens, FileId file,
     for (std::size_t i = 0; i < all.size(); ++i) {
         const std::size_t type = all[i]->getType();
         if (type == StructuredTextLexer::UNTERMINATED_STRING) {
-            diagnostics.error(token_range(file, *all[i]), std::string("missing closing ") +
-                                                              all[i]->getText().front() +
-                                                              " at the end of this string");
+            diagnostics.error(DiagnosticCode::E0102, token_range(file, *all[i]),
+                              std::string("missing closing ") + all[i]->getText().front() +
+                                  " at the end of this string");
             continue;
         }
         if ((type == StructuredTextLexer::LEFT_PAREN || type == StructuredTextLexer::SLASH) &&
             i + 1 < all.size() && all[i + 1]->getType() == StructuredTextLexer::STAR &&
             all[i + 1]->getStartIndex() == all[i]->getStartIndex() + 1) {
-            diagnostics.error(token_range(file, *all[i], *all[i + 1]),
+            diagnostics.error(DiagnosticCode::E0103, token_range(file, *all[i], *all[i + 1]),
                               "comment opened with '" + all[i]->getText() + "*' is never closed");
             return false;
         }

@@ -214,7 +214,7 @@ void SyntaxErrorStrategy::report_unexpected(antlr4::Parser* parser, antlr4::Toke
     } else {
         message = "expected " + description + ", found " + found_name(*token);
     }
-    diagnostics_.error(token_range(file_, *token), std::move(message));
+    diagnostics_.error(DiagnosticCode::E0101, token_range(file_, *token), std::move(message));
 }
 
 void SyntaxErrorStrategy::reportNoViableAlternative(antlr4::Parser* parser,
@@ -246,7 +246,7 @@ void SyntaxErrorStrategy::reportUnwantedToken(antlr4::Parser* parser) {
                                     : "unexpected " + found_name(*token);
     const std::string description =
         describe_expected(parser->getVocabulary(), getExpectedTokens(parser));
-    diagnostics_.error(token_range(file_, *token),
+    diagnostics_.error(DiagnosticCode::E0101, token_range(file_, *token),
                        description.empty() ? message : message + "; expected " + description);
 }
 
@@ -282,7 +282,7 @@ void SyntaxErrorStrategy::reportMissingToken(antlr4::Parser* parser) {
     antlr4::Token* previous = parser->getTokenStream()->LT(-1);
     const SourceRange range = previous != nullptr ? range_after(file_, *previous)
                                                   : token_range(file_, *parser->getCurrentToken());
-    diagnostics_.error(range, std::move(message));
+    diagnostics_.error(DiagnosticCode::E0101, range, std::move(message));
 }
 
 } // namespace eposp::compiler

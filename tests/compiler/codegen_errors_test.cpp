@@ -44,7 +44,8 @@ INSTANTIATE_TEST_SUITE_P(
         Rejected{
             "TypedReferenceToAnotherArray",
             main_with("a : ARRAY[0..3] OF INT; p : REF_TO ARRAY[0..9] OF INT;", "p := REF(a);"),
-            "a REF_TO ARRAY[0..3] OF INT value cannot be used as REF_TO ARRAY[0..9] OF INT\n"},
+            "a REF_TO ARRAY[0..3] OF INT value cannot be used as REF_TO ARRAY[0..9] OF INT "
+            "[E0301]\n"},
         Rejected{"SizeofIsNoSint",
                  main_with("a : ARRAY[0..3] OF INT; s : SINT;", "s := SIZEOF(a);"),
                  "a USINT value cannot be used as SINT (convert it with USINT_TO_SINT)"},

@@ -76,7 +76,7 @@ TEST(TypeDeclaration, SemicolonAfterADeclarationIsOptional) {
 
 TEST(TypeDeclaration, StructMembersStillEndWithASemicolon) {
     EXPECT_EQ(parse_text("TYPE Axis :\nSTRUCT\n  pos : LREAL\nEND_STRUCT\nEND_TYPE\n").rendered(),
-              "test.st:4:1: error: expected ':=' or ';', found 'END_STRUCT'\n"
+              "test.st:4:1: error: expected ':=' or ';', found 'END_STRUCT' [E0101]\n"
               "END_STRUCT\n"
               "^~~~~~~~~~\n");
 }

@@ -15,7 +15,7 @@ using test::parse_text;
 TEST(DiagnosticRendering, ShowsLocationSourceLineAndCaret) {
     const test::Parsed parsed =
         parse_text("PROGRAM Main\n  x := 1\n  y := 2;\nEND_PROGRAM\n", "main.st");
-    EXPECT_EQ(parsed.rendered(), "main.st:2:9: error: expected ';' after statement\n"
+    EXPECT_EQ(parsed.rendered(), "main.st:2:9: error: expected ';' after statement [E0101]\n"
                                  "  x := 1\n"
                                  "        ^\n");
 }
@@ -24,8 +24,8 @@ TEST(DiagnosticRendering, UnderlinesTheWholeRangeOnItsLine) {
     SourceManager sources;
     const FileId file = sources.add("a.st", "x := INT#70000;\n");
     Diagnostics diagnostics;
-    diagnostics.error({file, {1, 6}, {1, 14}}, "out of range");
-    EXPECT_EQ(render(diagnostics, sources), "a.st:1:6: error: out of range\n"
+    diagnostics.error(DiagnosticCode::E0104, {file, {1, 6}, {1, 14}}, "out of range");
+    EXPECT_EQ(render(diagnostics, sources), "a.st:1:6: error: out of range [E0104]\n"
                                             "x := INT#70000;\n"
                                             "     ^~~~~~~~~\n");
 }
@@ -34,8 +34,8 @@ TEST(DiagnosticRendering, CaretCountsCharactersNotBytesAndKeepsTabs) {
     SourceManager sources;
     const FileId file = sources.add("u.st", "\ts := 'äöü' + ;\n");
     Diagnostics diagnostics;
-    diagnostics.error({file, {1, 15}, {1, 15}}, "expected an expression");
-    EXPECT_EQ(render(diagnostics, sources), "u.st:1:15: error: expected an expression\n"
+    diagnostics.error(DiagnosticCode::E0101, {file, {1, 15}, {1, 15}}, "expected an expression");
+    EXPECT_EQ(render(diagnostics, sources), "u.st:1:15: error: expected an expression [E0101]\n"
                                             "\ts := 'äöü' + ;\n"
                                             "\t             ^\n");
 }
@@ -44,18 +44,17 @@ TEST(DiagnosticRendering, NotesAndWarningsFollowTheSameFormat) {
     SourceManager sources;
     const FileId file = sources.add("n.st", "a\nb\n");
     Diagnostics diagnostics;
-    diagnostics.report({Severity::Warning,
-                        {file, {2, 1}, {2, 1}},
-                        "unused",
-                        {{{file, {1, 1}, {1, 1}}, "declared here"}}});
-    EXPECT_EQ(render(diagnostics, sources), "n.st:2:1: warning: unused\nb\n^\n"
+    Diagnostic unused(DiagnosticCode::W0401, {file, {2, 1}, {2, 1}}, "unused");
+    unused.notes.push_back({{file, {1, 1}, {1, 1}}, "declared here"});
+    diagnostics.report(std::move(unused));
+    EXPECT_EQ(render(diagnostics, sources), "n.st:2:1: warning: unused [W0401]\nb\n^\n"
                                             "n.st:1:1: note: declared here\na\n^\n");
     EXPECT_FALSE(diagnostics.has_errors());
 }
 
 TEST(DiagnosticRendering, CrLfLineEndingsAreNotQuoted) {
     const test::Parsed parsed = parse_text("PROGRAM P\r\nx := ;\r\nEND_PROGRAM\r\n");
-    EXPECT_EQ(parsed.rendered(), "test.st:2:6: error: expected an expression, found ';'\n"
+    EXPECT_EQ(parsed.rendered(), "test.st:2:6: error: expected an expression, found ';' [E0101]\n"
                                  "x := ;\n"
                                  "     ^\n");
 }

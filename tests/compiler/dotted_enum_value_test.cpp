@@ -27,7 +27,7 @@ TEST(DottedEnumValue, AnUnknownValueNamesTheType) {
         resolve_text(std::string(kStates) + "PROGRAM P\nVAR s : State; END_VAR\ns := State.Stop;\n"
                                             "END_PROGRAM\n");
     EXPECT_EQ(resolved->rendered(), "test.st:4:12: error: enumerated type 'State' has no value "
-                                    "'Stop'\n"
+                                    "'Stop' [E0205]\n"
                                     "s := State.Stop;\n"
                                     "           ^~~~\n");
 }

@@ -86,7 +86,7 @@ TEST(GlobalVariableList, AProgramInstanceCannotTakeTheNameOfAGlobal) {
                      "CONFIGURATION C\nTASK T(INTERVAL := T#1ms, PRIORITY := 1);\n"
                      "PROGRAM Inst0 WITH T : Main;\nEND_CONFIGURATION\n");
     EXPECT_EQ(resolved->rendered(), "test.st:6:9: error: 'Inst0' is already the name of a global "
-                                    "variable\n"
+                                    "variable [E0202]\n"
                                     "PROGRAM Inst0 WITH T : Main;\n"
                                     "        ^~~~~\n"
                                     "test.st:1:12: note: 'Inst0' was declared here\n"

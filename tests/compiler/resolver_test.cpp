@@ -38,7 +38,7 @@ TEST(Resolver, NamesIgnoreCase) {
 TEST(Resolver, UndeclaredIdentifierIsReportedAtItsUse) {
     const auto resolved =
         resolve_text("PROGRAM P\nVAR x : INT; END_VAR\nx := speed + 1;\nEND_PROGRAM\n");
-    EXPECT_EQ(resolved->rendered(), "test.st:3:6: error: undeclared identifier 'speed'\n"
+    EXPECT_EQ(resolved->rendered(), "test.st:3:6: error: undeclared identifier 'speed' [E0201]\n"
                                     "x := speed + 1;\n"
                                     "     ^~~~~\n");
 }
@@ -61,12 +61,13 @@ TEST(Resolver, VariableUsedAsTypeIsReported) {
 TEST(Resolver, DuplicateVariableNotesTheFirstDeclaration) {
     const auto resolved =
         resolve_text("PROGRAM P\nVAR x : INT; END_VAR\nVAR_INPUT x : BOOL; END_VAR\nEND_PROGRAM\n");
-    EXPECT_EQ(resolved->rendered(), "test.st:3:11: error: 'x' is already declared in this scope\n"
-                                    "VAR_INPUT x : BOOL; END_VAR\n"
-                                    "          ^\n"
-                                    "test.st:2:5: note: 'x' was first declared here\n"
-                                    "VAR x : INT; END_VAR\n"
-                                    "    ^\n");
+    EXPECT_EQ(resolved->rendered(),
+              "test.st:3:11: error: 'x' is already declared in this scope [E0202]\n"
+              "VAR_INPUT x : BOOL; END_VAR\n"
+              "          ^\n"
+              "test.st:2:5: note: 'x' was first declared here\n"
+              "VAR x : INT; END_VAR\n"
+              "    ^\n");
 }
 
 TEST(Resolver, SameNameInDifferentPousIsAllowed) {

@@ -39,7 +39,7 @@ TEST(CheckCommand, UndeclaredIdentifierExitsWithOneAndShowsTheCaret) {
     const std::string config = write_source("config.st", kConfiguration);
     const auto result = eposp("check " + main + " " + config);
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_THAT(result.output, HasSubstr(main + ":3:12: error: undeclared identifier 'totl'\n"
+    EXPECT_THAT(result.output, HasSubstr(main + ":3:12: error: undeclared identifier 'totl' [E0201]\n"
                                                 "  total := totl + 1;\n"
                                                 "           ^~~~\n"));
 }

@@ -45,12 +45,12 @@ void ProgramGenerator::publish_access_path(const ast::Configuration& configurati
     const sema::Symbol* global = program_.model.global().find_member(name);
     if (global != nullptr && global->kind == sema::SymbolKind::Variable) {
         diagnostics_.error(
-            declaration.name.range,
+            DiagnosticCode::E0202, declaration.name.range,
             fmt::format("'{}' is already the name of a global variable", declaration.name.name));
         return;
     }
     if (instances_.contains(name) || !access_names_.insert(name).second) {
-        diagnostics_.error(declaration.name.range,
+        diagnostics_.error(DiagnosticCode::E0202, declaration.name.range,
                            fmt::format("'{}' is already the name of a program instance or an "
                                        "access path",
                                        declaration.name.name));
@@ -62,13 +62,13 @@ void ProgramGenerator::publish_access_path(const ast::Configuration& configurati
         return;
     }
     if (!sema::same_type(*declared, *target->type)) {
-        diagnostics_.error(declaration.type.range,
+        diagnostics_.error(DiagnosticCode::E0301, declaration.type.range,
                            fmt::format("the access path '{}' is a {}, not a {}",
                                        declaration.name.name, target->type->name, declared->name));
         return;
     }
     if (declaration.writable && !target->writable) {
-        diagnostics_.error(declaration.range,
+        diagnostics_.error(DiagnosticCode::E0401, declaration.range,
                            fmt::format("the access path '{}' names a constant: it can only be "
                                        "READ_ONLY",
                                        declaration.name.name));
@@ -86,7 +86,7 @@ ProgramGenerator::access_path_target(const ast::Configuration& configuration,
     }
     const auto& names = std::get<std::vector<ast::Identifier>>(declaration.path);
     const auto unknown = [&] {
-        diagnostics_.error(declaration.range,
+        diagnostics_.error(DiagnosticCode::E0201, declaration.range,
                            fmt::format("unknown access path '{}'", joined(names)));
         return std::nullopt;
     };

@@ -91,7 +91,7 @@ void ProgramGenerator::warn_if_cut(const ast::Expression& expression, const sema
     const std::size_t length =
         narrow != nullptr ? narrow->size() : std::get<std::u16string>(text->value).size();
     if (length > target.capacity) {
-        diagnostics_.warning(expression.range,
+        diagnostics_.warning(DiagnosticCode::W0406, expression.range,
                              fmt::format("this string of {} characters is cut to the {} of {}",
                                          length, target.capacity, target.name));
     }
@@ -170,7 +170,7 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
                                                  static_cast<std::uint64_t>(-(range->min + 1)) + 1
                                   : !range || integer->magnitude <= range->max;
             if (!fits && type.kind != sema::TypeKind::Enum) {
-                diagnostics_.error(expression.range,
+                diagnostics_.error(DiagnosticCode::E0311, expression.range,
                                    fmt::format("the value {}{} does not fit in {}",
                                                integer->negative ? "-" : "", integer->magnitude,
                                                type.name));
@@ -186,7 +186,7 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
         return std::nullopt;
     }
     if (!fits_integer(*value, type) && type.kind != sema::TypeKind::Enum) {
-        diagnostics_.error(expression.range,
+        diagnostics_.error(DiagnosticCode::E0311, expression.range,
                            fmt::format("the value {} does not fit in {}", *value, type.name));
     }
     check_in_subrange(expression, *value, type);
@@ -196,7 +196,7 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
 void ProgramGenerator::check_in_subrange(const ast::Expression& expression, std::int64_t value,
                                          const sema::Type& type) {
     if (type.range && !type.range->contains(value)) {
-        diagnostics_.error(expression.range,
+        diagnostics_.error(DiagnosticCode::E0410, expression.range,
                            fmt::format("the value {} is outside {} ({}..{})", value, type.name,
                                        type.range->lower, type.range->upper));
     }
@@ -286,7 +286,7 @@ void ProgramGenerator::apply_initializer(const sema::Type& type,
                                          std::span<std::uint8_t> bytes) {
     if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer.value)) {
         if (type.kind == sema::TypeKind::Enum && !is_enumerator_of(**expression, type)) {
-            diagnostics_.error((*expression)->range,
+            diagnostics_.error(DiagnosticCode::E0301, (*expression)->range,
                                fmt::format("the initial value must be a value of {}", type.name));
             return;
         }
@@ -294,7 +294,7 @@ void ProgramGenerator::apply_initializer(const sema::Type& type,
             warn_if_cut(**expression, type);
             std::copy(value->begin(), value->end(), bytes.begin());
         } else {
-            diagnostics_.error((*expression)->range,
+            diagnostics_.error(DiagnosticCode::E0313, (*expression)->range,
                                fmt::format("the initial value must be a constant {}", type.name));
         }
         return;
@@ -302,7 +302,8 @@ void ProgramGenerator::apply_initializer(const sema::Type& type,
     if (const auto* elements =
             std::get_if<std::vector<ast::ArrayInitElement>>(&initializer.value)) {
         if (type.kind != sema::TypeKind::Array) {
-            diagnostics_.error(initializer.range, fmt::format("{} is not an array", type.name));
+            diagnostics_.error(DiagnosticCode::E0301, initializer.range,
+                               fmt::format("{} is not an array", type.name));
             return;
         }
         const std::uint32_t size = type.element->size;
@@ -313,14 +314,14 @@ void ProgramGenerator::apply_initializer(const sema::Type& type,
             if (element.repeat_count) {
                 repeat = types_.fold_integer(*element.repeat_count).value_or(-1);
                 if (repeat < 0) {
-                    diagnostics_.error(element.repeat_count->range,
+                    diagnostics_.error(DiagnosticCode::E0313, element.repeat_count->range,
                                        "a repetition count must be a constant >= 0");
                     return;
                 }
             }
             for (std::int64_t i = 0; i < repeat; ++i, ++next) {
                 if (next >= count) {
-                    diagnostics_.error(initializer.range,
+                    diagnostics_.error(DiagnosticCode::E0411, initializer.range,
                                        fmt::format("too many initial values for {}", type.name));
                     return;
                 }
@@ -337,8 +338,9 @@ void ProgramGenerator::apply_initializer(const sema::Type& type,
         const sema::Field* field = type.field(member.member.name);
         if (field == nullptr ||
             (type.kind != sema::TypeKind::Struct && type.kind != sema::TypeKind::Instance)) {
-            diagnostics_.error(member.member.range, fmt::format("'{}' has no member '{}'",
-                                                                type.name, member.member.name));
+            diagnostics_.error(
+                DiagnosticCode::E0206, member.member.range,
+                fmt::format("'{}' has no member '{}'", type.name, member.member.name));
             continue;
         }
         initial_value(*field->type, member.value.get(),

@@ -18,7 +18,7 @@ void PouGenerator::call_native_block() {
     for (const sema::Field& field : instance.fields) {
         const bool by_reference = field.section == ast::VarSectionKind::InOut;
         if (!by_reference && !sema::is_scalar(*field.type)) {
-            error(field.declaration->range,
+            error(DiagnosticCode::E0419, field.declaration->range,
                   fmt::format("'{}' of the native block '{}' is a {}: a native block's variables "
                               "are elementary or VAR_IN_OUT",
                               field.name, pou_.name.name, field.type->name));

@@ -65,7 +65,7 @@ const NativeFunctionInterface* ProgramGenerator::native_function(const ast::Pou&
     for (const sema::Field& field : frame.fields) {
         if (field.declaration == nullptr) { // the result
             if (!sema::is_scalar(*field.type) || field.type->kind == sema::TypeKind::Reference) {
-                diagnostics_.error(pou.return_type->range,
+                diagnostics_.error(DiagnosticCode::E0419, pou.return_type->range,
                                    fmt::format("the native function '{}' returns a {}: a native "
                                                "function returns an elementary value or nothing",
                                                pou.name.name, field.type->name));
@@ -96,7 +96,7 @@ const NativeFunctionInterface* ProgramGenerator::native_function(const ast::Pou&
             native.signature.parameters.push_back(vm::Scalar::U32);
         } else {
             const bool in_out = field.section == ast::VarSectionKind::InOut;
-            diagnostics_.error(field.declaration->range,
+            diagnostics_.error(DiagnosticCode::E0419, field.declaration->range,
                                fmt::format("'{}' of the native function '{}' is {}{}: {}",
                                            field.name, pou.name.name,
                                            field.section == ast::VarSectionKind::Input || in_out
@@ -136,7 +136,7 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
                                      [&](const NativeParameter& p) { return p.field == field; });
         if (field == nullptr || it == parameters.end() ||
             argument.kind == ast::Argument::Kind::Output) {
-            error(argument.range,
+            error(argument.name ? DiagnosticCode::E0210 : DiagnosticCode::E0306, argument.range,
                   argument.name ? fmt::format("'{}' has no input '{}'", function.name.name,
                                               argument.name->name)
                                 : fmt::format("too many arguments for '{}'", function.name.name));
@@ -145,7 +145,8 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
         }
         const auto& slot = given[static_cast<std::size_t>(it - parameters.begin())];
         if (slot != nullptr) {
-            error(argument.range, fmt::format("'{}' is given twice", field->name));
+            error(DiagnosticCode::E0414, argument.range,
+                  fmt::format("'{}' is given twice", field->name));
             ok = false;
             continue;
         }
@@ -169,7 +170,7 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
             continue;
         }
         if (argument == nullptr) {
-            error(range,
+            error(DiagnosticCode::E0413, range,
                   fmt::format("{} '{}' of '{}' must be given",
                               parameter.kind == NativeParameter::Kind::Any ? "the ANY input"
                                                                            : "the VAR_IN_OUT",
@@ -220,8 +221,9 @@ std::optional<Value> PouGenerator::any_argument(const ast::Expression& expressio
         value = value_as(*value, expression.range, *value->iec);
     }
     if (value && !is_any_value(*value->type)) {
-        error(expression.range, fmt::format("ANY takes an elementary value or a string, not a {}",
-                                            value->type->name));
+        error(
+            DiagnosticCode::E0305, expression.range,
+            fmt::format("ANY takes an elementary value or a string, not a {}", value->type->name));
         return std::nullopt;
     }
     return value;

@@ -32,8 +32,9 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
             if (symbol->pou->kind == ast::PouKind::Program) {
                 break; // its single instance is called, as CODESYS does
             }
-            error(range, fmt::format("'{}' is a FUNCTION_BLOCK type: call an instance of it",
-                                     symbol->name));
+            error(
+                DiagnosticCode::E0204, range,
+                fmt::format("'{}' is a FUNCTION_BLOCK type: call an instance of it", symbol->name));
             return std::nullopt;
         case sema::SymbolKind::StandardFunction:
             if (const ast::Pou* pou = program_.library_pou(symbol->name);
@@ -42,8 +43,9 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
             }
             return standard_function(sema::fold_case(symbol->name), node, hint, dest, range);
         case sema::SymbolKind::StandardFunctionBlock:
-            error(range, fmt::format("'{}' is a function block type: call an instance of it",
-                                     symbol->name));
+            error(
+                DiagnosticCode::E0204, range,
+                fmt::format("'{}' is a function block type: call an instance of it", symbol->name));
             return std::nullopt;
         default:
             break;
@@ -54,7 +56,7 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
         return std::nullopt;
     }
     if (instance->type->kind != sema::TypeKind::Instance) {
-        error(node.callee->range,
+        error(DiagnosticCode::E0204, node.callee->range,
               fmt::format("a {} cannot be called: it is not a function block instance",
                           instance->type->name));
         return std::nullopt;
@@ -126,7 +128,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         const bool output = argument.kind == ast::Argument::Kind::Output;
         if (field == nullptr || !is_parameter(field->section) ||
             output != (field->section == ast::VarSectionKind::Output)) {
-            error(argument.range,
+            error(argument.name ? DiagnosticCode::E0210 : DiagnosticCode::E0306, argument.range,
                   argument.name ? fmt::format("'{}' has no {} '{}'", function.name.name,
                                               output ? "output" : "input", argument.name->name)
                                 : fmt::format("too many arguments for '{}'", function.name.name));
@@ -169,8 +171,9 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                                      [&](const Bound& b) { return b.field == &field; });
         if (it == bound.end()) {
             if (field.section == ast::VarSectionKind::InOut) {
-                error(range, fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", field.name,
-                                         function.name.name));
+                error(DiagnosticCode::E0413, range,
+                      fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", field.name,
+                                  function.name.name));
                 ok = false;
                 break;
             }
@@ -250,7 +253,8 @@ std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sem
     for (const ast::Argument& argument : node.arguments) {
         const sema::Field* field = formal(frame, argument, positional);
         if (field == nullptr || field->section != ast::VarSectionKind::Input) {
-            error(argument.range, fmt::format("bad argument for '{}'", function.name.name));
+            error(DiagnosticCode::E0210, argument.range,
+                  fmt::format("bad argument for '{}'", function.name.name));
             return std::nullopt;
         }
         program_.warn_if_cut(*argument.value, *field->type);
@@ -283,7 +287,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
         connected.push_back(field);
         if (field == nullptr) {
-            error(argument.range,
+            error(argument.name ? DiagnosticCode::E0210 : DiagnosticCode::E0415, argument.range,
                   argument.name
                       ? fmt::format("'{}' has no parameter '{}'", type.name, argument.name->name)
                       : "a function block call needs formal arguments (IN := x)");
@@ -292,8 +296,9 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         const bool output = argument.kind == ast::Argument::Kind::Output;
         if (output != (field->section == ast::VarSectionKind::Output) ||
             !is_parameter(field->section)) {
-            error(argument.range, fmt::format("'{}' is not an {} of '{}'", field->name,
-                                              output ? "output" : "input", type.name));
+            error(DiagnosticCode::E0210, argument.range,
+                  fmt::format("'{}' is not an {} of '{}'", field->name, output ? "output" : "input",
+                              type.name));
             continue;
         }
         if (output) {
@@ -324,7 +329,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
     for (const sema::Field& field : type.fields) {
         if (field.section == ast::VarSectionKind::InOut &&
             std::find(connected.begin(), connected.end(), &field) == connected.end()) {
-            error(node.callee->range,
+            error(DiagnosticCode::E0413, node.callee->range,
                   fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", field.name, type.name));
         }
     }
@@ -345,8 +350,9 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             value.operand = negated;
         }
         if (!sema::converts_implicitly(*field->type, *target->type)) {
-            error(argument->range, fmt::format("a {} output cannot be stored in a {}",
-                                               field->type->name, target->type->name));
+            error(DiagnosticCode::E0301, argument->range,
+                  fmt::format("a {} output cannot be stored in a {}", field->type->name,
+                              target->type->name));
             continue;
         }
         store(*target, *value_as(value, argument->range, *target->type));

@@ -29,15 +29,16 @@ std::optional<Value> PouGenerator::in_out_argument(const Place& target, const se
     const sema::Type& formal = *field.type->element;
     if (!field.type->conformant) {
         if (!sema::same_type(*target.type, formal)) {
-            error(range,
+            error(DiagnosticCode::E0302, range,
                   fmt::format("VAR_IN_OUT '{}' needs a {} variable", field.name, formal.name));
             return std::nullopt;
         }
         return Value{address_of(target), field.type};
     }
     if (!sema::conforms(*target.type, formal)) {
-        error(range, fmt::format("VAR_IN_OUT '{}' needs an array of {} dimension(s) of {}",
-                                 field.name, formal.dimensions.size(), formal.element->name));
+        error(DiagnosticCode::E0302, range,
+              fmt::format("VAR_IN_OUT '{}' needs an array of {} dimension(s) of {}", field.name,
+                          formal.dimensions.size(), formal.element->name));
         return std::nullopt;
     }
     if (target.type->conformant) {
@@ -101,7 +102,7 @@ std::optional<Value> PouGenerator::array_bound(const std::string& name,
                                                const ast::CallExpression& node,
                                                const Destination* dest, const SourceRange& range) {
     if (node.arguments.size() != 2) {
-        error(range, fmt::format("{} takes an array and a dimension", name));
+        error(DiagnosticCode::E0306, range, fmt::format("{} takes an array and a dimension", name));
         return std::nullopt;
     }
     const auto array = place(*node.arguments[0].value);
@@ -110,14 +111,14 @@ std::optional<Value> PouGenerator::array_bound(const std::string& name,
     }
     const sema::Type& type = *array->type;
     if (type.kind != sema::TypeKind::Array) {
-        error(node.arguments[0].value->range,
+        error(DiagnosticCode::E0305, node.arguments[0].value->range,
               fmt::format("{} needs an array, not {}", name, type.name));
         return std::nullopt;
     }
     const auto dimension = types_.fold_integer(*node.arguments[1].value);
     if (!dimension || *dimension < 1 ||
         *dimension > static_cast<std::int64_t>(type.dimensions.size())) {
-        error(node.arguments[1].value->range,
+        error(DiagnosticCode::E0313, node.arguments[1].value->range,
               fmt::format("the dimension must be a constant from 1 to {}", type.dimensions.size()));
         return std::nullopt;
     }

@@ -48,7 +48,7 @@ const sema::Field* PouGenerator::connected_field(const ast::Argument& argument) 
     const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
     if (field == nullptr ||
         field->section != (output ? ast::VarSectionKind::Output : ast::VarSectionKind::Input)) {
-        error(argument.range,
+        error(DiagnosticCode::E0210, argument.range,
               fmt::format("'{}' has no {} of that name", type.name, output ? "output" : "input"));
         return nullptr;
     }
@@ -57,10 +57,11 @@ const sema::Field* PouGenerator::connected_field(const ast::Argument& argument) 
 
 bool PouGenerator::is_connectable(const ast::Expression& expression, bool output) {
     const auto refuse = [&](const SourceRange& range) {
-        error(range, output ? "an output connects to a global variable (or a part of one) or a "
-                              "direct output or memory address"
-                            : "an input connects to a global variable (or a part of one), a "
-                              "constant, a direct address or an output of another program");
+        error(DiagnosticCode::E0423, range,
+              output ? "an output connects to a global variable (or a part of one) or a "
+                       "direct output or memory address"
+                     : "an input connects to a global variable (or a part of one), a "
+                       "constant, a direct address or an output of another program");
         return false;
     };
     const ast::Expression* path = &expression;
@@ -117,7 +118,8 @@ void PouGenerator::connect_output(const sema::Field& field, const ast::Expressio
     const std::uint32_t mark = frame_top_;
     const auto target = place(sink);
     if (target && !target->writable) {
-        error(sink.range, fmt::format("'{}' cannot be connected to a constant", field.name));
+        error(DiagnosticCode::E0401, sink.range,
+              fmt::format("'{}' cannot be connected to a constant", field.name));
     } else if (target) {
         const Value output{Operand::self(field.offset), field.type};
         if (const auto value = value_as(output, sink.range, *target->type)) {

@@ -34,15 +34,17 @@ std::optional<PouGenerator::Enable> PouGenerator::enable_of(const ast::CallExpre
         const bool en = sema::fold_case(argument.name->name) == "EN";
         const auto kind = en ? ast::Argument::Kind::Input : ast::Argument::Kind::Output;
         if (argument.kind != kind) {
-            error(argument.range, en ? "EN is an input: write EN := condition"
-                                     : "ENO is an output: write ENO => variable");
+            error(DiagnosticCode::E0415, argument.range,
+                  en ? "EN is an input: write EN := condition"
+                     : "ENO is an output: write ENO => variable");
             ok = false;
         }
         (en ? enable.en : enable.eno) = &argument;
     }
     // EN and ENO belong to the formal form of a call (6.6.1.2.2).
     if (positional != nullptr && (enable.en != nullptr || enable.eno != nullptr)) {
-        error(positional->range, "EN and ENO need a formal call: name every input");
+        error(DiagnosticCode::E0415, positional->range,
+              "EN and ENO need a formal call: name every input");
         ok = false;
     }
     return ok ? std::optional(enable) : std::nullopt;
@@ -58,13 +60,14 @@ bool PouGenerator::with_enable(const Enable& enable, const std::function<void()>
             return false;
         }
         if (eno->type != &boolean) {
-            error(enable.eno->value->range,
+            error(DiagnosticCode::E0301, enable.eno->value->range,
                   fmt::format("ENO needs a BOOL variable, not {}", eno->type->name));
             return false;
         }
         if (!eno->writable) {
-            error(enable.eno->value->range, "ENO cannot be written to this variable (a constant, "
-                                            "an input or an output of another instance)");
+            error(DiagnosticCode::E0401, enable.eno->value->range,
+                  "ENO cannot be written to this variable (a constant, "
+                  "an input or an output of another instance)");
             return false;
         }
     }

@@ -92,7 +92,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
                 ? type.field(node->member.name)
                 : nullptr;
         if (field == nullptr) {
-            error(node->member.range,
+            error(DiagnosticCode::E0206, node->member.range,
                   fmt::format("'{}' has no member '{}'", type.name, node->member.name));
             return std::nullopt;
         }
@@ -101,7 +101,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
         if (names_program(*node->object)) {
             if (field->section == ast::VarSectionKind::InOut ||
                 field->section == ast::VarSectionKind::Temp || field->declaration == nullptr) {
-                error(node->member.range,
+                error(DiagnosticCode::E0212, node->member.range,
                       fmt::format("'{}' is internal to '{}'", field->name, type.name));
                 return std::nullopt;
             }
@@ -113,7 +113,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
             (field->section == ast::VarSectionKind::Var ||
              field->section == ast::VarSectionKind::InOut)) {
             // 6.5.2.2: only inputs and outputs of an instance are visible outside it.
-            error(node->member.range,
+            error(DiagnosticCode::E0212, node->member.range,
                   fmt::format("'{}' is internal to '{}'", field->name, type.name));
             return std::nullopt;
         }
@@ -136,7 +136,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
             return std::nullopt;
         }
         if (pointer->type->kind != sema::TypeKind::Reference || pointer->type->element == nullptr) {
-            error(expression.range,
+            error(DiagnosticCode::E0304, expression.range,
                   fmt::format("'^' needs a reference, not {}", pointer->type->name));
             return std::nullopt;
         }
@@ -144,7 +144,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
                      .type = pointer->type->element,
                      .operand = pointer->operand};
     }
-    error(expression.range, "this expression is not a variable");
+    error(DiagnosticCode::E0315, expression.range, "this expression is not a variable");
     return std::nullopt;
 }
 
@@ -236,11 +236,12 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     }
     const sema::Type& type = *array->type;
     if (type.kind != sema::TypeKind::Array) {
-        error(range, fmt::format("{} is not an array", type.name));
+        error(DiagnosticCode::E0308, range, fmt::format("{} is not an array", type.name));
         return std::nullopt;
     }
     if (node.indices.size() != type.dimensions.size()) {
-        error(range, fmt::format("{} needs {} indices", type.name, type.dimensions.size()));
+        error(DiagnosticCode::E0308, range,
+              fmt::format("{} needs {} indices", type.name, type.dimensions.size()));
         return std::nullopt;
     }
     if (type.conformant) {
@@ -260,7 +261,7 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
         }
         if (*folded < dimension.lower ||
             *folded >= dimension.lower + static_cast<std::int64_t>(dimension.count)) {
-            error(node.indices[d]->range,
+            error(DiagnosticCode::E0409, node.indices[d]->range,
                   fmt::format("index {} is outside {}", *folded, type.name));
             return std::nullopt;
         }
@@ -331,7 +332,7 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
 std::optional<Value> PouGenerator::integer_index(const ast::Expression& expression) {
     const auto value = eval(expression, &types_.elementary(E::Dint));
     if (value && !sema::is_integer(*value->type) && value->type->kind != sema::TypeKind::Enum) {
-        error(expression.range,
+        error(DiagnosticCode::E0307, expression.range,
               fmt::format("an array index must be an integer, not {}", value->type->name));
         return std::nullopt;
     }
@@ -359,11 +360,13 @@ std::optional<Value> PouGenerator::bit_word(const ast::BitAccessExpression& node
         return std::nullopt;
     }
     if (!sema::is_bit_string(*word->type) && !sema::is_integer(*word->type)) {
-        error(range, fmt::format("bit access needs a bit string, not {}", word->type->name));
+        error(DiagnosticCode::E0304, range,
+              fmt::format("bit access needs a bit string, not {}", word->type->name));
         return std::nullopt;
     }
     if (node.bit >= word->type->size * 8) {
-        error(range, fmt::format("{} has no bit {}", word->type->name, node.bit));
+        error(DiagnosticCode::E0105, range,
+              fmt::format("{} has no bit {}", word->type->name, node.bit));
         return std::nullopt;
     }
     return word;
@@ -396,7 +399,8 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         }
         if (symbol->kind != sema::SymbolKind::Variable &&
             !(symbol->kind == sema::SymbolKind::Pou && symbol->pou == &pou_)) {
-            error(expression.range, fmt::format("'{}' is not a value", symbol->name));
+            error(DiagnosticCode::E0204, expression.range,
+                  fmt::format("'{}' is not a value", symbol->name));
             return std::nullopt;
         }
     }
@@ -447,7 +451,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
             result, masked);
         return Value{result, &boolean};
     }
-    error(expression.range, "this expression is not supported");
+    error(DiagnosticCode::E0504, expression.range, "this expression is not supported");
     return std::nullopt;
 }
 
@@ -501,7 +505,8 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
     }
     auto bytes = program_.constant_value(expression, *type);
     if (!bytes) {
-        error(expression.range, fmt::format("this literal is not a valid {}", type->name));
+        error(DiagnosticCode::E0311, expression.range,
+              fmt::format("this literal is not a valid {}", type->name));
         return std::nullopt;
     }
     return Value{program_.constant(*bytes, std::max<std::uint32_t>(type->align, 1)), type};
@@ -511,7 +516,8 @@ std::optional<Value> PouGenerator::character(const ast::Expression& expression, 
     const sema::Type& character_type = types_.elementary(type);
     const auto bytes = program_.constant_value(expression, character_type);
     if (!bytes) {
-        error(expression.range, fmt::format("this literal is not a valid {}", character_type.name));
+        error(DiagnosticCode::E0311, expression.range,
+              fmt::format("this literal is not a valid {}", character_type.name));
         return std::nullopt;
     }
     return Value{program_.constant(*bytes, character_type.size), &character_type};
@@ -537,7 +543,7 @@ std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type&
 std::optional<Value> PouGenerator::function_value(const std::optional<Value>& called,
                                                   const SourceRange& range) {
     if (called && called->type == nullptr) {
-        error(range, "this call has no value");
+        error(DiagnosticCode::E0309, range, "this call has no value");
         return std::nullopt;
     }
     return called;
@@ -555,12 +561,13 @@ std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
 std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRange& range,
                                             const sema::Type& want, const Destination* dest) {
     if (!sema::converts_implicitly(*value.type, want)) {
-        error(range, fmt::format("a {} value cannot be used as {}{}", value.type->name, want.name,
-                                 value.type->kind == sema::TypeKind::Elementary &&
-                                         want.kind == sema::TypeKind::Elementary
-                                     ? fmt::format(" (convert it with {}_TO_{})", value.type->name,
-                                                   want.name)
-                                     : ""));
+        error(DiagnosticCode::E0301, range,
+              fmt::format(
+                  "a {} value cannot be used as {}{}", value.type->name, want.name,
+                  value.type->kind == sema::TypeKind::Elementary &&
+                          want.kind == sema::TypeKind::Elementary
+                      ? fmt::format(" (convert it with {}_TO_{})", value.type->name, want.name)
+                      : ""));
         return std::nullopt;
     }
     if (want.range) {
@@ -616,9 +623,10 @@ std::optional<std::pair<Value, Value>> PouGenerator::unify(const Value& l, const
         converted.iec = r.iec != nullptr ? r.iec : r.type;
         return std::pair(l, converted);
     }
-    error(range, fmt::format("operands of types {} and {} do not match",
-                             (l.iec != nullptr ? l.iec : l.type)->name,
-                             (r.iec != nullptr ? r.iec : r.type)->name));
+    error(DiagnosticCode::E0303, range,
+          fmt::format("operands of types {} and {} do not match",
+                      (l.iec != nullptr ? l.iec : l.type)->name,
+                      (r.iec != nullptr ? r.iec : r.type)->name));
     return std::nullopt;
 }
 
@@ -638,7 +646,8 @@ std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const
     const sema::Type& type = *value->type;
     if (node.op == ast::UnaryOperator::Negate) {
         if (!sema::is_numeric(type) && !(sema::is_time_like(type) && type.elementary <= E::Ltime)) {
-            error(range, fmt::format("'-' needs a number, not {}", type.name));
+            error(DiagnosticCode::E0304, range,
+                  fmt::format("'-' needs a number, not {}", type.name));
             return std::nullopt;
         }
         const Operand result = result_operand(type, dest);
@@ -651,7 +660,8 @@ std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const
     } else if (sema::is_bit_string(type) || sema::is_integer(type)) {
         emit(op_width("Not", type), result, value->operand);
     } else {
-        error(range, fmt::format("NOT needs a BOOL or bit string, not {}", type.name));
+        error(DiagnosticCode::E0304, range,
+              fmt::format("NOT needs a BOOL or bit string, not {}", type.name));
         return std::nullopt;
     }
     return Value{result, &type};
@@ -880,8 +890,9 @@ std::optional<Value> PouGenerator::pointer_offset(bool add, const Value& pointer
         return std::nullopt;
     }
     if (!sema::is_integer(*offset->type)) {
-        error(bytes.range, fmt::format("a pointer moves by a whole number of bytes, not by a {}",
-                                       offset->type->name));
+        error(DiagnosticCode::E0304, bytes.range,
+              fmt::format("a pointer moves by a whole number of bytes, not by a {}",
+                          offset->type->name));
         return std::nullopt;
     }
     const auto wide = convert(*offset, lint, nullptr);
@@ -899,8 +910,9 @@ std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
     }
     const bool real = sema::is_real(*value->type);
     if (!real && !sema::is_integer(*value->type)) {
-        error(factor.range, fmt::format("a TIME is multiplied or divided by a number, not {}",
-                                        value->type->name));
+        error(
+            DiagnosticCode::E0304, factor.range,
+            fmt::format("a TIME is multiplied or divided by a number, not {}", value->type->name));
         return std::nullopt;
     }
     const sema::Type& wide = real ? types_.elementary(E::Lreal) : lint;
@@ -920,7 +932,7 @@ bool PouGenerator::check_divisor(ast::BinaryOperator op, const ast::Expression& 
     const auto* real =
         literal != nullptr ? std::get_if<ast::RealLiteral>(&literal->value) : nullptr;
     if ((real != nullptr && real->value == 0.0) || types_.fold_integer(divisor) == 0) {
-        error(divisor.range,
+        error(DiagnosticCode::E0408, divisor.range,
               op == ast::BinaryOperator::Divide ? "division by zero" : "MOD by zero");
         return false;
     }
@@ -937,12 +949,13 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         if (auto result = compare(oper, left, right, dest)) {
             return result;
         }
-        error(range, fmt::format("values of type {} cannot be compared", type.name));
+        error(DiagnosticCode::E0304, range,
+              fmt::format("values of type {} cannot be compared", type.name));
         return std::nullopt;
     }
     if (oper == Op::And || oper == Op::Or || oper == Op::Xor) {
         if (!sema::is_bool(type) && !sema::is_bit_string(type)) {
-            error(range,
+            error(DiagnosticCode::E0304, range,
                   fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", type.name));
             return std::nullopt;
         }
@@ -976,19 +989,21 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         } else if (!((oper == Op::Add || oper == Op::Subtract) &&
                      (durations || point_plus_duration) && type.elementary != E::TimeOfDay &&
                      type.elementary != E::Ltod && type.elementary != E::Date)) {
-            error(range, fmt::format("this operation is not defined on {} and {} (use the "
-                                     "functions of IEC 61131-3 table 30)",
-                                     type.name, right.type->name));
+            error(DiagnosticCode::E0303, range,
+                  fmt::format("this operation is not defined on {} and {} (use the "
+                              "functions of IEC 61131-3 table 30)",
+                              type.name, right.type->name));
             return std::nullopt;
         }
     } else if (!sema::is_numeric(type) && !sema::is_bit_string(type)) {
         // BYTE..LWORD count as unsigned integers of their width, as in CODESYS: libraries
         // (CRCs, hashes, OSCAT) add and multiply DWORDs.
-        error(range, fmt::format("arithmetic needs numbers, not {}", type.name));
+        error(DiagnosticCode::E0304, range,
+              fmt::format("arithmetic needs numbers, not {}", type.name));
         return std::nullopt;
     }
     if (oper == Op::Modulo && !sema::is_integer(type) && !sema::is_bit_string(type)) {
-        error(range, fmt::format("MOD needs integers, not {}", type.name));
+        error(DiagnosticCode::E0304, range, fmt::format("MOD needs integers, not {}", type.name));
         return std::nullopt;
     }
     const Operand result = result_operand(*result_type, dest);

@@ -28,7 +28,7 @@ std::uint32_t PouGenerator::generate() {
     if (pou_.kind == ast::PouKind::Function) {
         for (const sema::Field& field : types_.frame(pou_)->fields) {
             if (field.type->generic) {
-                error(field.declaration->type.range,
+                error(DiagnosticCode::E0416, field.declaration->type.range,
                       fmt::format("'{}' is ANY, which only a native function takes: a FUNCTION "
                                   "without statements in a linked library",
                                   field.name));
@@ -53,7 +53,7 @@ std::uint32_t PouGenerator::generate() {
 
 void PouGenerator::report_unused() {
     if (pou_.kind == ast::PouKind::Function && pou_.return_type && !result_assigned_) {
-        warning(pou_.name.range,
+        warning(DiagnosticCode::W0403, pou_.name.range,
                 fmt::format("function '{}' never assigns its result", pou_.name.name));
     }
     // A program's outputs may be written from outside (connections, online); a function's or
@@ -67,7 +67,7 @@ void PouGenerator::report_unused() {
             for (const ast::VariableDeclaration& declaration : variables->variables) {
                 for (const ast::Identifier& name : declaration.names) {
                     if (!written.contains(sema::fold_case(name.name))) {
-                        warning(name.range,
+                        warning(DiagnosticCode::W0402, name.range,
                                 fmt::format("output '{}' is never assigned", name.name));
                     }
                 }
@@ -86,7 +86,8 @@ void PouGenerator::report_unused() {
         for (const ast::VariableDeclaration& declaration : variables->variables) {
             for (const ast::Identifier& name : declaration.names) {
                 if (!used_.contains(sema::fold_case(name.name))) {
-                    warning(name.range, fmt::format("variable '{}' is never used", name.name));
+                    warning(DiagnosticCode::W0401, name.range,
+                            fmt::format("variable '{}' is never used", name.name));
                 }
             }
         }
@@ -141,15 +142,13 @@ void PouGenerator::report_unassigned_paths(const std::unordered_set<std::string>
         const auto at = std::find(names.begin(), names.end(), paths.name) - names.begin();
         const ast::Identifier& name = *declared[static_cast<std::size_t>(at)];
         Diagnostic diagnostic{
-            Severity::Warning,
-            name.range,
+            &name == &pou_.name ? DiagnosticCode::W0403 : DiagnosticCode::W0402, name.range,
             &name == &pou_.name
                 ? fmt::format("function '{}' may return without assigning its result (not "
                               "assigned on every path)",
                               name.name)
                 : fmt::format("output '{}' may be left unassigned (not assigned on every path)",
-                              name.name),
-            {}};
+                              name.name)};
         for (const SourceRange& range : paths.returns) {
             diagnostic.notes.push_back({range, "this RETURN is reached without assigning it"});
         }
@@ -161,12 +160,12 @@ void PouGenerator::report_unassigned_paths(const std::unordered_set<std::string>
     }
 }
 
-void PouGenerator::error(const SourceRange& range, std::string message) {
-    program_.diagnostics().error(range, std::move(message));
+void PouGenerator::error(DiagnosticCode code, const SourceRange& range, std::string message) {
+    program_.diagnostics().error(code, range, std::move(message));
 }
 
-void PouGenerator::warning(const SourceRange& range, std::string message) {
-    program_.diagnostics().warning(range, std::move(message));
+void PouGenerator::warning(DiagnosticCode code, const SourceRange& range, std::string message) {
+    program_.diagnostics().warning(code, range, std::move(message));
 }
 
 void PouGenerator::declare_locals() {
@@ -289,7 +288,8 @@ std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const So
          (symbol.section == ast::VarSectionKind::Global && local == locals_.end()))) {
         auto global = program_.global(symbol.name);
         if (!global) {
-            error(range, fmt::format("no global variable '{}' in the configuration", symbol.name));
+            error(DiagnosticCode::E0208, range,
+                  fmt::format("no global variable '{}' in the configuration", symbol.name));
             return std::nullopt;
         }
         if (symbol.section == ast::VarSectionKind::External && symbol.variable != nullptr &&
@@ -312,7 +312,7 @@ std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const So
     }
     // A variable missing from the frame is one whose declaration failed, already reported.
     if (symbol.kind != sema::SymbolKind::Variable || !program_.diagnostics().has_errors()) {
-        error(range, fmt::format("'{}' is not a variable", symbol.name));
+        error(DiagnosticCode::E0204, range, fmt::format("'{}' is not a variable", symbol.name));
     }
     return std::nullopt;
 }

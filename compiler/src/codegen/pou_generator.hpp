@@ -104,8 +104,8 @@ private:
     /// An array descriptor, remembering the bytes it covers.
     std::uint16_t array_descriptor(const vm::ArrayDescriptor& array);
     std::optional<Place> variable(const sema::Symbol& symbol, const SourceRange& range);
-    void error(const SourceRange& range, std::string message);
-    void warning(const SourceRange& range, std::string message);
+    void error(DiagnosticCode code, const SourceRange& range, std::string message);
+    void warning(DiagnosticCode code, const SourceRange& range, std::string message);
     vm::Opcode op(std::string_view family, const sema::Type& type) const;
     vm::Opcode op_width(std::string_view family, const sema::Type& type) const;
     /// `dst := src` of the same type (strings of other capacities are truncated).

@@ -58,7 +58,7 @@ void PouGenerator::statements(const ast::StatementList& list) {
                             std::holds_alternative<ast::ContinueStatement>(node);
         if (leaves && i + 1 < list.size() && !reported &&
             !std::holds_alternative<ast::EmptyStatement>(list[i + 1].node)) {
-            warning(list[i + 1].range, "this statement is never executed");
+            warning(DiagnosticCode::W0404, list[i + 1].range, "this statement is never executed");
             reported = true;
         }
     }
@@ -88,9 +88,9 @@ void PouGenerator::statement(const ast::Statement& statement) {
             } else if constexpr (std::is_same_v<T, ast::ExitStatement> ||
                                  std::is_same_v<T, ast::ContinueStatement>) {
                 if (loops_.empty()) {
-                    error(statement.range, std::is_same_v<T, ast::ExitStatement>
-                                               ? "EXIT outside a loop"
-                                               : "CONTINUE outside a loop");
+                    error(DiagnosticCode::E0405, statement.range,
+                          std::is_same_v<T, ast::ExitStatement> ? "EXIT outside a loop"
+                                                                : "CONTINUE outside a loop");
                 } else {
                     builder_.jump(Opcode::Jmp, std::is_same_v<T, ast::ExitStatement>
                                                    ? loops_.back().exit
@@ -108,9 +108,10 @@ void PouGenerator::warn_if_input(const ast::Expression& target) {
     const auto* name = std::get_if<ast::NameExpression>(&target.node);
     const auto local = name ? locals_.find(sema::fold_case(name->name.name)) : locals_.end();
     if (local != locals_.end() && local->second.section == ast::VarSectionKind::Input) {
-        warning(target.range, fmt::format("'{}' is an input: IEC 61131-3 does not let a POU "
-                                          "write its inputs (CODESYS does, and so does eposp)",
-                                          name->name.name));
+        warning(DiagnosticCode::W0405, target.range,
+                fmt::format("'{}' is an input: IEC 61131-3 does not let a POU "
+                            "write its inputs (CODESYS does, and so does eposp)",
+                            name->name.name));
     }
 }
 
@@ -124,7 +125,7 @@ void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
         return;
     }
     if (!word_place->writable) {
-        error(target.object->range, "this variable cannot be assigned here");
+        error(DiagnosticCode::E0401, target.object->range, "this variable cannot be assigned here");
         return;
     }
     warn_if_input(*target.object);
@@ -152,14 +153,16 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
         return;
     }
     if (!target->writable) {
-        error(node.target->range, "this variable cannot be assigned here (a constant or an "
-                                  "output of another instance)");
+        error(DiagnosticCode::E0401, node.target->range,
+              "this variable cannot be assigned here (a constant or an "
+              "output of another instance)");
         return;
     }
     warn_if_input(*node.target);
     if (is_for_variable(*target)) {
-        error(node.target->range, "the control variable of a FOR loop cannot be assigned in "
-                                  "its body (IEC 61131-3 7.3.3.4.2)");
+        error(DiagnosticCode::E0402, node.target->range,
+              "the control variable of a FOR loop cannot be assigned in "
+              "its body (IEC 61131-3 7.3.3.4.2)");
         return;
     }
     // The result counts as assigned when it or a part of it is (`F.x := 1`).
@@ -168,11 +171,12 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
         result_assigned_ = result_assigned_ || (symbol != nullptr && symbol->pou == &pou_);
     }
     if (target->type->kind == sema::TypeKind::Instance) {
-        error(range, "a function block instance cannot be assigned");
+        error(DiagnosticCode::E0412, range, "a function block instance cannot be assigned");
         return;
     }
     if (target->type->conformant) {
-        error(range, "an ARRAY[*] cannot be assigned as a whole, only its elements");
+        error(DiagnosticCode::E0412, range,
+              "an ARRAY[*] cannot be assigned as a whole, only its elements");
         return;
     }
     const Destination dest{target->operand, target->type};
@@ -295,7 +299,7 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
     const sema::Type& type = *selector->type;
     if (!sema::is_integer(type) && !sema::is_bit_string(type) &&
         type.kind != sema::TypeKind::Enum) {
-        error(node.selector->range,
+        error(DiagnosticCode::E0304, node.selector->range,
               fmt::format("a CASE selector must be an integer or enumeration, not {}", type.name));
         return;
     }
@@ -323,14 +327,15 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
             if (!low_value || !high_value) {
                 const bool constant = types_.fold_unsigned(*label.low) &&
                                       (!label.high || types_.fold_unsigned(*label.high));
-                error(label.range,
+                error(constant ? DiagnosticCode::E0301 : DiagnosticCode::E0313, label.range,
                       constant ? fmt::format("a CASE label must be a value of {}", type.name)
                                : "a CASE label must be a constant");
                 continue;
             }
             for (const CaseRange& seen : ranges) {
                 if (at_most(*low_value, seen.high) && at_most(seen.low, *high_value)) {
-                    error(label.range, "this CASE label overlaps an earlier one");
+                    error(DiagnosticCode::E0406, label.range,
+                          "this CASE label overlaps an earlier one");
                 }
             }
             const auto low = value_as(*label.low, type);
@@ -447,7 +452,7 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
     }
     const sema::Type& type = *control->type;
     if (!sema::is_integer(type) || control->kind != Place::Kind::Direct || !control->writable) {
-        error(node.control_variable.range,
+        error(DiagnosticCode::E0403, node.control_variable.range,
               "the control variable of a FOR loop must be a local integer variable (7.3.3.4.2)");
         return;
     }
@@ -457,13 +462,14 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
     if (node.by) {
         const auto folded = types_.fold_integer(*node.by);
         if (folded && *folded == 0) {
-            error(node.by->range, "BY must not be 0");
+            error(DiagnosticCode::E0404, node.by->range, "BY must not be 0");
             return;
         }
         constant_step = folded && *folded >= INT16_MIN && *folded <= INT16_MAX;
         step = folded.value_or(0);
         if (constant_step && !sema::is_signed(type) && step < 0) {
-            error(node.by->range, "a negative step needs a signed control variable");
+            error(DiagnosticCode::E0404, node.by->range,
+                  "a negative step needs a signed control variable");
             return;
         }
     }

@@ -11,15 +11,17 @@ namespace eposp::compiler::codegen {
 
 void ProgramGenerator::check_limits() {
     if (builder_.static_size() > vm::kMaxAreaSize) {
-        diagnostics_.error({}, fmt::format("the program's static data (globals, program and FB "
-                                           "instances, constants) needs {} bytes; the limit is {}",
-                                           builder_.static_size(), vm::kMaxAreaSize));
+        diagnostics_.error(DiagnosticCode::E0502, {},
+                           fmt::format("the program's static data (globals, program and FB "
+                                       "instances, constants) needs {} bytes; the limit is {}",
+                                       builder_.static_size(), vm::kMaxAreaSize));
     }
     const std::uint64_t stacks = stack_size() * tasks_.size();
     if (stacks > vm::kMaxAreaSize) {
-        diagnostics_.error({}, fmt::format("the task stacks need {} bytes ({} per task, for the "
-                                           "frames of every POU); the limit is {}",
-                                           stacks, stack_size(), vm::kMaxAreaSize));
+        diagnostics_.error(DiagnosticCode::E0502, {},
+                           fmt::format("the task stacks need {} bytes ({} per task, for the "
+                                       "frames of every POU); the limit is {}",
+                                       stacks, stack_size(), vm::kMaxAreaSize));
     }
     check_call_depth();
 }
@@ -41,7 +43,7 @@ void ProgramGenerator::check_call_depth() {
     };
     for (const auto& [pou, callees] : calls_) {
         if (const std::uint32_t nesting = depth(pou); nesting > vm::kMaxCallDepth) {
-            diagnostics_.error(pou->name.range,
+            diagnostics_.error(DiagnosticCode::E0503, pou->name.range,
                                fmt::format("calls from '{}' nest {} deep; the limit is {}",
                                            pou->name.name, nesting, vm::kMaxCallDepth));
             return; // the POUs it calls nest deeply too: one message says it

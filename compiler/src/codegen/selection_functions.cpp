@@ -52,7 +52,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
     const std::size_t minimum = name == "MOVE" ? 1 : name == "LIMIT" ? 3 : 2;
     if (arguments.size() < minimum + first || (name == "MOVE" && arguments.size() != 1) ||
         (name == "LIMIT" && arguments.size() != 3) || (name == "SEL" && arguments.size() != 3)) {
-        error(range, fmt::format("wrong number of arguments for {}", name));
+        error(DiagnosticCode::E0306, range, fmt::format("wrong number of arguments for {}", name));
         return std::nullopt;
     }
     if (name == "MOVE") {
@@ -81,7 +81,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
             }
             const sema::Type* both = common_type(common, *values[i]->type);
             if (both == nullptr) {
-                error(arguments[i]->range,
+                error(DiagnosticCode::E0303, arguments[i]->range,
                       fmt::format("{} mixes {} and {}", name, common->name, values[i]->type->name));
                 return std::nullopt;
             }
@@ -95,7 +95,8 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
     if (name != "SEL" && name != "MUX" &&
         ((!sema::is_scalar(type) && type.kind != sema::TypeKind::String) ||
          type.kind == sema::TypeKind::Reference)) {
-        error(range, fmt::format("{} needs values of an elementary type, not {}", name, type.name));
+        error(DiagnosticCode::E0305, range,
+              fmt::format("{} needs values of an elementary type, not {}", name, type.name));
         return std::nullopt;
     }
     // The destination when no argument lives there (so none is overwritten before it is

@@ -63,7 +63,7 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
             continue;
         }
         if (argument.kind == ast::Argument::Kind::Output) {
-            error(argument.range, fmt::format("{} has no outputs", name));
+            error(DiagnosticCode::E0210, argument.range, fmt::format("{} has no outputs", name));
             return std::nullopt;
         }
         written.push_back(&argument);
@@ -99,7 +99,7 @@ std::optional<Value> PouGenerator::address_or_size(const std::string& name,
                                                    const Arguments& arguments,
                                                    const SourceRange& range) {
     if (arguments.size() != 1) {
-        error(range, fmt::format("{} takes one argument", name));
+        error(DiagnosticCode::E0306, range, fmt::format("{} takes one argument", name));
         return std::nullopt;
     }
     const ast::Expression& argument = *arguments.front()->value;
@@ -124,8 +124,9 @@ std::optional<Value> PouGenerator::address_or_size(const std::string& name,
         return Value{address_of(*target), &types_.reference(nullptr)};
     }
     if (type->conformant) {
-        error(range, "the size of an ARRAY[*] is known only when running: use LOWER_BOUND and "
-                     "UPPER_BOUND");
+        error(DiagnosticCode::E0417, range,
+              "the size of an ARRAY[*] is known only when running: use LOWER_BOUND and "
+              "UPPER_BOUND");
         return std::nullopt;
     }
     // SIZEOF: a constant of the smallest unsigned type that holds the size (CODESYS), so that
@@ -143,7 +144,7 @@ std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
         return std::nullopt;
     }
     if (!sema::is_integer(*value->type)) {
-        error(expression.range,
+        error(DiagnosticCode::E0305, expression.range,
               fmt::format("an integer is needed here, not {}", value->type->name));
         return std::nullopt;
     }
@@ -180,7 +181,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         const bool wchar = other.kind == sema::TypeKind::Elementary && other.elementary == E::Wchar;
         const bool wide = to_string ? want.wide : from.wide;
         if (!sema::is_scalar(other) || other.kind != sema::TypeKind::Elementary || wide != wchar) {
-            error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
+            error(DiagnosticCode::E0310, range,
+                  fmt::format("{} cannot be converted to {}", from.name, want.name));
             return std::nullopt;
         }
         if (to_string) {
@@ -202,7 +204,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     }
     if (!sema::is_scalar(from) || !sema::is_scalar(want) ||
         from.kind == sema::TypeKind::Reference || want.kind == sema::TypeKind::Reference) {
-        error(range, fmt::format("{} cannot be converted to {}", from.name, want.name));
+        error(DiagnosticCode::E0310, range,
+              fmt::format("{} cannot be converted to {}", from.name, want.name));
         return std::nullopt;
     }
     const bool from_time = sema::is_time_like(from);
@@ -248,7 +251,7 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
 std::optional<Value> PouGenerator::conversion(const std::string& name, const Arguments& arguments,
                                               const Destination* dest, const SourceRange& range) {
     if (arguments.size() != 1) {
-        error(range, fmt::format("{} takes one argument", name));
+        error(DiagnosticCode::E0306, range, fmt::format("{} takes one argument", name));
         return std::nullopt;
     }
     const auto separator = name.starts_with("TO_") ? std::string::npos : name.find("_TO_");
@@ -265,8 +268,9 @@ std::optional<Value> PouGenerator::conversion(const std::string& name, const Arg
             !(value->type->kind == sema::TypeKind::String &&
               source.kind == sema::TypeKind::String && value->type->wide == source.wide)) {
             if (!sema::converts_implicitly(*value->type, source)) {
-                error(argument.range, fmt::format("{} needs a {} argument, not {}", name,
-                                                  source.name, value->type->name));
+                error(DiagnosticCode::E0305, argument.range,
+                      fmt::format("{} needs a {} argument, not {}", name, source.name,
+                                  value->type->name));
                 return std::nullopt;
             }
             value = convert(*value, source, nullptr);
@@ -300,7 +304,7 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
     if ((shape.texts < 0 && arguments.size() < 2) ||
         (shape.texts >= 0 &&
          arguments.size() != texts + static_cast<std::size_t>(shape.integers))) {
-        error(range,
+        error(DiagnosticCode::E0306, range,
               fmt::format("{} takes {} arguments", name,
                           shape.texts < 0
                               ? "two or more"
@@ -324,11 +328,12 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
                 wide = value->type->wide;
             }
             if (!is_string || value->type->wide != wide) {
-                error(expression.range, fmt::format("{} needs a {} here, not {}", name,
-                                                    i == 0 ? "STRING or WSTRING"
-                                                    : wide ? "WSTRING"
-                                                           : "STRING",
-                                                    value->type->name));
+                error(DiagnosticCode::E0305, expression.range,
+                      fmt::format("{} needs a {} here, not {}", name,
+                                  i == 0 ? "STRING or WSTRING"
+                                  : wide ? "WSTRING"
+                                         : "STRING",
+                                  value->type->name));
                 return std::nullopt;
             }
             capacity = shape.texts < 0 || name == "INSERT" || name == "REPLACE"
@@ -378,7 +383,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                                                     const SourceRange& range) {
     auto arity = [&](std::size_t n) {
         if (arguments.size() != n) {
-            error(range, fmt::format("{} takes {} argument{}", name, n, n == 1 ? "" : "s"));
+            error(DiagnosticCode::E0306, range,
+                  fmt::format("{} takes {} argument{}", name, n, n == 1 ? "" : "s"));
             return false;
         }
         return true;
@@ -394,7 +400,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             continue;
         }
         if (arguments.size() < 2) {
-            error(range, fmt::format("{} takes two or more arguments", name));
+            error(DiagnosticCode::E0306, range,
+                  fmt::format("{} takes two or more arguments", name));
             return std::nullopt;
         }
         for (std::size_t i = 1; i < arguments.size(); ++i) {
@@ -445,7 +452,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         } else if (sema::is_bit_string(*value->type) || sema::is_integer(*value->type)) {
             emit(op_width("Not", *value->type), result, value->operand);
         } else {
-            error(range, fmt::format("NOT needs a BOOL or bit string, not {}", value->type->name));
+            error(DiagnosticCode::E0304, range,
+                  fmt::format("NOT needs a BOOL or bit string, not {}", value->type->name));
             return std::nullopt;
         }
         return Value{result, value->type};
@@ -468,11 +476,12 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             return std::nullopt;
         }
         if (!sema::is_bit_string(*value->type) && !sema::is_integer(*value->type)) {
-            error(range, fmt::format("{} needs a bit string, not {}", name, value->type->name));
+            error(DiagnosticCode::E0305, range,
+                  fmt::format("{} needs a bit string, not {}", name, value->type->name));
             return std::nullopt;
         }
         if (!sema::is_integer(*count->type)) {
-            error(arguments[1]->range, "the shift count must be an integer");
+            error(DiagnosticCode::E0305, arguments[1]->range, "the shift count must be an integer");
             return std::nullopt;
         }
         // A count is taken as unsigned (a negative one as its two's complement): SHL and SHR
@@ -509,7 +518,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         const auto value = eval(*arguments[0]->value, &types_.elementary(E::Lreal));
         if (!value || !sema::is_real(*value->type)) {
             if (value) {
-                error(range, "TRUNC needs a REAL or LREAL");
+                error(DiagnosticCode::E0305, range, "TRUNC needs a REAL or LREAL");
             }
             return std::nullopt;
         }
@@ -529,7 +538,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         const auto value = eval(*arguments[0]->value, hint);
         if (!value || !sema::is_numeric(*value->type)) {
             if (value) {
-                error(range, fmt::format("ABS needs a number, not {}", value->type->name));
+                error(DiagnosticCode::E0305, range,
+                      fmt::format("ABS needs a number, not {}", value->type->name));
             }
             return std::nullopt;
         }
@@ -545,7 +555,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     const bool two = name == "ATAN2" || name == "EXPT";
     if (!one_of(name, {"SQRT", "LN", "LOG", "EXP", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN",
                        "ATAN2", "EXPT"})) {
-        error(range, fmt::format("the standard function {} is not supported yet", name));
+        error(DiagnosticCode::E0504, range,
+              fmt::format("the standard function {} is not supported yet", name));
         return std::nullopt;
     }
     if (!arity(two ? 2 : 1)) {
@@ -556,7 +567,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         eval(*arguments[0]->value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
     if (!first || !sema::is_numeric(*first->type)) {
         if (first) {
-            error(range, fmt::format("{} needs a number, not {}", name, first->type->name));
+            error(DiagnosticCode::E0305, range,
+                  fmt::format("{} needs a number, not {}", name, first->type->name));
         }
         return std::nullopt;
     }

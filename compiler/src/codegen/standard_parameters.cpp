@@ -90,17 +90,18 @@ std::optional<Arguments> PouGenerator::in_parameter_order(const std::string& nam
     Arguments ordered(arguments.size(), nullptr);
     for (const ast::Argument* argument : arguments) {
         if (!argument->name) {
-            error(argument->range, fmt::format("a call of {} names all its inputs or none", name));
+            error(DiagnosticCode::E0415, argument->range,
+                  fmt::format("a call of {} names all its inputs or none", name));
             return std::nullopt;
         }
         const auto position = input_position(name, sema::fold_case(argument->name->name));
         if (!position || *position >= ordered.size()) {
-            error(argument->range,
+            error(DiagnosticCode::E0210, argument->range,
                   fmt::format("{} has no input '{}' here", name, argument->name->name));
             return std::nullopt;
         }
         if (ordered[*position] != nullptr) {
-            error(argument->range,
+            error(DiagnosticCode::E0414, argument->range,
                   fmt::format("input '{}' of {} is given twice", argument->name->name, name));
             return std::nullopt;
         }

@@ -57,7 +57,7 @@ std::optional<Value> PouGenerator::time_function(const std::string& name,
                                                  const SourceRange& range) {
     const TimeFunction& function = *find_time_function(name);
     if (arguments.size() != 2) {
-        error(range, fmt::format("{} takes two arguments", name));
+        error(DiagnosticCode::E0306, range, fmt::format("{} takes two arguments", name));
         return std::nullopt;
     }
     const ast::Expression& first = *arguments[0]->value;

@@ -35,12 +35,12 @@ void ignore_configurations(std::vector<ast::CompilationUnit>& units, const Compi
             keep_global_variables(*unit);
             unit->configurations.clear();
         } else if (file < sources.file_count()) {
-            diagnostics.error(kOptionRange,
+            diagnostics.error(DiagnosticCode::E0002, kOptionRange,
                               fmt::format("ignored_configurations: '{}' is not among the files "
                                           "compiled",
                                           sources.path(file)));
         } else {
-            diagnostics.error(kOptionRange,
+            diagnostics.error(DiagnosticCode::E0002, kOptionRange,
                               fmt::format("ignored_configurations: file {} is not among the "
                                           "files compiled",
                                           file));

@@ -48,12 +48,12 @@ Renames checked_renames(std::span<const ast::CompilationUnit> units,
             pou = find_pou(built_in, folded);
         }
         if (pou == nullptr) {
-            diagnostics.error(kOptionRange,
+            diagnostics.error(DiagnosticCode::E0003, kOptionRange,
                               fmt::format("substitutions: no FUNCTION_BLOCK named '{}' "
                                           "(substituting '{}' by '{}')",
                                           name, original, double_name));
         } else if (pou->kind != ast::PouKind::FunctionBlock) {
-            diagnostics.error(kOptionRange,
+            diagnostics.error(DiagnosticCode::E0003, kOptionRange,
                               fmt::format("substitutions: '{}' is {}, not a FUNCTION_BLOCK "
                                           "(substituting '{}' by '{}')",
                                           name, kind_name(pou->kind), original, double_name));
@@ -65,16 +65,16 @@ Renames checked_renames(std::span<const ast::CompilationUnit> units,
         const std::string folded = sema::fold_case(original);
         if (folded == sema::fold_case(double_name)) {
             diagnostics.error(
-                kOptionRange,
+                DiagnosticCode::E0003, kOptionRange,
                 fmt::format("substitutions: '{}' cannot stand in for itself", original));
         } else if (!renames.emplace(folded, double_name).second) {
-            diagnostics.error(kOptionRange,
+            diagnostics.error(DiagnosticCode::E0003, kOptionRange,
                               fmt::format("substitutions: '{}' is substituted twice", original));
         }
     }
     for (const auto& [original, double_name] : options.substitutions) {
         if (renames.contains(sema::fold_case(double_name))) {
-            diagnostics.error(kOptionRange,
+            diagnostics.error(DiagnosticCode::E0003, kOptionRange,
                               fmt::format("substitutions: '{}' stands in for '{}' and is "
                                           "substituted itself",
                                           double_name, original));

@@ -9,9 +9,8 @@ void ResolverState::declare(Scope& scope, const Symbol& symbol) {
     if (first == nullptr) {
         return;
     }
-    Diagnostic diagnostic;
-    diagnostic.range = symbol.declared;
-    diagnostic.message = fmt::format("'{}' is already declared in this scope", symbol.name);
+    Diagnostic diagnostic(DiagnosticCode::E0202, symbol.declared,
+                          fmt::format("'{}' is already declared in this scope", symbol.name));
     if (first->declared.begin.line == 0) {
         diagnostic.message =
             fmt::format("'{}' is already declared by the standard library", symbol.name);

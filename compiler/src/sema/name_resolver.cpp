@@ -39,8 +39,8 @@ public:
     }
 
 private:
-    void error(const SourceRange& range, std::string message) {
-        state_.diagnostics.error(range, std::move(message));
+    void error(DiagnosticCode code, const SourceRange& range, std::string message) {
+        state_.diagnostics.error(code, range, std::move(message));
     }
 
     // --- Types -----------------------------------------------------------------------------
@@ -61,11 +61,13 @@ private:
             return; // the generic type of native functions' inputs (TypeTable::any)
         }
         if (symbol == nullptr) {
-            error(node.name.range, fmt::format("unknown type '{}'", node.name.name));
+            error(DiagnosticCode::E0203, node.name.range,
+                  fmt::format("unknown type '{}'", node.name.name));
             return;
         }
         if (!names_a_type(*symbol)) {
-            error(node.name.range, fmt::format("'{}' is not a type", node.name.name));
+            error(DiagnosticCode::E0204, node.name.range,
+                  fmt::format("'{}' is not a type", node.name.name));
             return;
         }
         model_.bind(node.name, *symbol);
@@ -211,12 +213,12 @@ private:
     ValueShape resolve_qualified_enum_value(const ast::EnumValueLiteral& literal) {
         const Symbol* type = global_.find_member(literal.type_name.name);
         if (type == nullptr) {
-            error(literal.type_name.range,
+            error(DiagnosticCode::E0203, literal.type_name.range,
                   fmt::format("unknown type '{}'", literal.type_name.name));
             return {};
         }
         if (!is_enumerated_type(*type)) {
-            error(literal.type_name.range,
+            error(DiagnosticCode::E0204, literal.type_name.range,
                   fmt::format("'{}' is not an enumerated type", literal.type_name.name));
             return {};
         }
@@ -229,7 +231,7 @@ private:
         model_.bind(type_name, type);
         const Symbol* symbol = type.members->find_member(value.name);
         if (symbol == nullptr) {
-            error(value.range,
+            error(DiagnosticCode::E0205, value.range,
                   fmt::format("enumerated type '{}' has no value '{}'", type.name, value.name));
             return {};
         }
@@ -289,7 +291,8 @@ private:
             }
             return it->second;
         }
-        error(name.range, fmt::format("undeclared identifier '{}'", name.name));
+        error(DiagnosticCode::E0201, name.range,
+              fmt::format("undeclared identifier '{}'", name.name));
         return nullptr;
     }
 
@@ -299,11 +302,10 @@ private:
             return candidates.front();
         }
         const Symbol* first = candidates.front();
-        Diagnostic diagnostic;
-        diagnostic.range = name.range;
-        diagnostic.message =
+        Diagnostic diagnostic(
+            DiagnosticCode::E0207, name.range,
             fmt::format("'{}' is ambiguous: qualify it with its type, as in {}#{}", name.name,
-                        first->owner != nullptr ? first->owner->name : "T", name.name);
+                        first->owner != nullptr ? first->owner->name : "T", name.name));
         for (const Symbol* candidate : candidates) {
             diagnostic.notes.push_back(
                 {candidate->declared,
@@ -331,7 +333,7 @@ private:
         const Symbol* member =
             object.members != nullptr ? object.members->find_member(node.member.name) : nullptr;
         if (member == nullptr) {
-            error(node.member.range,
+            error(DiagnosticCode::E0206, node.member.range,
                   fmt::format("'{}' has no member '{}'", object.type_name, node.member.name));
             return {};
         }
@@ -400,7 +402,7 @@ private:
                 if (const Symbol* formal = parameters->find_member(argument.name->name)) {
                     model_.bind(*argument.name, *formal);
                 } else if (!is_enable_parameter(argument.name->name)) {
-                    error(argument.name->range,
+                    error(DiagnosticCode::E0210, argument.name->range,
                           fmt::format("'{}' has no parameter '{}'", callee, argument.name->name));
                 }
             }
@@ -467,8 +469,9 @@ private:
                                        ? structure.members->find_member(element.member.name)
                                        : nullptr;
             if (member == nullptr && structure.known) {
-                error(element.member.range, fmt::format("'{}' has no member '{}'",
-                                                        structure.type_name, element.member.name));
+                error(DiagnosticCode::E0206, element.member.range,
+                      fmt::format("'{}' has no member '{}'", structure.type_name,
+                                  element.member.name));
             }
             if (member != nullptr) {
                 model_.bind(element.member, *member);
@@ -518,7 +521,7 @@ private:
             const Symbol* global = global_.find_member(name.name);
             if (global == nullptr || global->kind != SymbolKind::Variable ||
                 global->section != ast::VarSectionKind::Global) {
-                error(name.range,
+                error(DiagnosticCode::E0208, name.range,
                       fmt::format("VAR_EXTERNAL '{}' has no matching VAR_GLOBAL", name.name));
                 continue;
             }
@@ -533,7 +536,8 @@ private:
         }
         resolve_base(pou, scope);
         for (const ast::Identifier& interface : pou.implements) {
-            error(interface.range, fmt::format("unknown interface '{}'", interface.name));
+            error(DiagnosticCode::E0203, interface.range,
+                  fmt::format("unknown interface '{}'", interface.name));
         }
         resolve_sections(pou.sections, scope);
         resolve_statements(pou.body, scope);
@@ -547,17 +551,19 @@ private:
         const ast::Identifier& name = *pou.extends;
         const Symbol* base = global_.find_member(name.name);
         if (base == nullptr) {
-            error(name.range, fmt::format("unknown function block '{}'", name.name));
+            error(DiagnosticCode::E0203, name.range,
+                  fmt::format("unknown function block '{}'", name.name));
             return;
         }
         if (base->kind != SymbolKind::Pou || base->pou->kind != ast::PouKind::FunctionBlock) {
-            error(name.range, fmt::format("'{}' is not a function block", name.name));
+            error(DiagnosticCode::E0204, name.range,
+                  fmt::format("'{}' is not a function block", name.name));
             return;
         }
         for (const Scope* ancestor = base->members; ancestor != nullptr;
              ancestor = ancestor->base()) {
             if (ancestor == &scope) {
-                error(name.range,
+                error(DiagnosticCode::E0211, name.range,
                       fmt::format("'{}' extends itself through '{}'", pou.name.name, name.name));
                 return;
             }
@@ -651,7 +657,8 @@ private:
         if (instance.task) {
             const Symbol* task = resource_scope.find_member(instance.task->name);
             if (task == nullptr || task->kind != SymbolKind::Task) {
-                error(instance.task->range, fmt::format("unknown task '{}'", instance.task->name));
+                error(DiagnosticCode::E0209, instance.task->range,
+                      fmt::format("unknown task '{}'", instance.task->name));
             } else {
                 model_.bind(*instance.task, *task);
             }
@@ -659,7 +666,8 @@ private:
         const Symbol* program = global_.find_member(instance.type.name);
         if (program == nullptr || program->kind != SymbolKind::Pou ||
             program->pou->kind != ast::PouKind::Program) {
-            error(instance.type.range,
+            error(program == nullptr ? DiagnosticCode::E0203 : DiagnosticCode::E0204,
+                  instance.type.range,
                   program == nullptr ? fmt::format("unknown program type '{}'", instance.type.name)
                                      : fmt::format("'{}' is not a PROGRAM", instance.type.name));
             resolve_arguments(instance.connections, nullptr, instance.type.name, connections);
@@ -676,10 +684,9 @@ private:
         if (global == nullptr || global->kind != SymbolKind::Variable) {
             return;
         }
-        Diagnostic diagnostic;
-        diagnostic.range = name.range;
-        diagnostic.message =
-            fmt::format("'{}' is already the name of a global variable", name.name);
+        Diagnostic diagnostic(
+            DiagnosticCode::E0202, name.range,
+            fmt::format("'{}' is already the name of a global variable", name.name));
         diagnostic.notes.push_back(
             {global->declared, fmt::format("'{}' was declared here", global->name)});
         state_.diagnostics.report(std::move(diagnostic));

@@ -138,7 +138,7 @@ const Type* TypeTable::resolve(const ast::TypeSpec& spec) {
             through_reference_ && partial != partial_structures_.end()) {
             return partial->second;
         }
-        diagnostics_.error(spec.range, "this type contains itself");
+        diagnostics_.error(DiagnosticCode::E0418, spec.range, "this type contains itself");
         return nullptr;
     }
     in_progress_[&spec] = true;
@@ -157,7 +157,7 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
         if (node->length) {
             const auto folded = fold_integer(*node->length);
             if (!folded || *folded < 1 || *folded > vm::stdlib::kMaxStringCapacity) {
-                diagnostics_.error(node->length->range,
+                diagnostics_.error(DiagnosticCode::E0313, node->length->range,
                                    "a string length must be a constant from 1 to 65535");
                 return nullptr;
             }
@@ -189,7 +189,8 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
     const Type* target = resolve(*node.target);
     through_reference_ = outer;
     if (target != nullptr && target->conformant) {
-        diagnostics_.error(spec.range, "ARRAY[*] is only allowed for VAR_IN_OUT");
+        diagnostics_.error(DiagnosticCode::E0417, spec.range,
+                           "ARRAY[*] is only allowed for VAR_IN_OUT");
         return nullptr;
     }
     return target != nullptr ? &reference(target) : nullptr;
@@ -203,7 +204,8 @@ const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& rang
         return nullptr;
     }
     if (element->kind == TypeKind::Array && element->conformant) {
-        diagnostics_.error(range, "the elements of an array need their bounds");
+        diagnostics_.error(DiagnosticCode::E0417, range,
+                           "the elements of an array need their bounds");
         return nullptr;
     }
     if (!spec.dimensions.front().bounds) {
@@ -214,27 +216,30 @@ const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& rang
     std::string bounds;
     for (const ast::ArrayDimension& dimension : spec.dimensions) {
         if (!dimension.bounds) {
-            diagnostics_.error(range, "an array has either bounds or '*' in every dimension");
+            diagnostics_.error(DiagnosticCode::E0417, range,
+                               "an array has either bounds or '*' in every dimension");
             return nullptr;
         }
         const auto low = fold_integer(*dimension.bounds->low);
         const auto high = fold_integer(*dimension.bounds->high);
         if (!low || !high) {
-            diagnostics_.error(dimension.bounds->low->range, "array bounds must be constants");
+            diagnostics_.error(DiagnosticCode::E0313, dimension.bounds->low->range,
+                               "array bounds must be constants");
             return nullptr;
         }
         if (*high < *low || *low < INT32_MIN || *high > INT32_MAX) {
             diagnostics_.error(
-                dimension.bounds->low->range,
+                DiagnosticCode::E0314, dimension.bounds->low->range,
                 fmt::format("array bounds {}..{} are empty or too large", *low, *high));
             return nullptr;
         }
         const auto n = static_cast<std::uint64_t>(*high - *low + 1);
         count *= n;
         if (count * element->size > vm::kMaxAreaSize) {
-            diagnostics_.error(range, fmt::format("this array is too large: its data exceeds the "
-                                                  "limit of {} bytes",
-                                                  vm::kMaxAreaSize));
+            diagnostics_.error(DiagnosticCode::E0502, range,
+                               fmt::format("this array is too large: its data exceeds the "
+                                           "limit of {} bytes",
+                                           vm::kMaxAreaSize));
             return nullptr;
         }
         type.dimensions.push_back({*low, static_cast<std::uint32_t>(n)});
@@ -249,7 +254,8 @@ const Type* TypeTable::conformant_array(const ast::ArrayType& spec, const Type& 
                                         const SourceRange& range) {
     for (const ast::ArrayDimension& dimension : spec.dimensions) {
         if (dimension.bounds) {
-            diagnostics_.error(range, "an array has either bounds or '*' in every dimension");
+            diagnostics_.error(DiagnosticCode::E0417, range,
+                               "an array has either bounds or '*' in every dimension");
             return nullptr;
         }
     }
@@ -283,7 +289,7 @@ void TypeTable::lay_out(Type& type,
             !(type.kind == TypeKind::Struct && type.pou != nullptr &&
               type.pou->kind == ast::PouKind::Function && type.pou->body.empty() &&
               sections[i] == ast::VarSectionKind::Input)) {
-            diagnostics_.error(declaration.type.range,
+            diagnostics_.error(DiagnosticCode::E0416, declaration.type.range,
                                "ANY is only allowed for a VAR_INPUT of a native function (a "
                                "FUNCTION without statements in a linked library)");
             continue;
@@ -291,7 +297,7 @@ void TypeTable::lay_out(Type& type,
         // VAR_IN_OUT is passed by reference (6.5.1.2), an ARRAY[*] with its bounds (6.5.3).
         if (member->kind == TypeKind::Array && member->conformant) {
             if (sections[i] != ast::VarSectionKind::InOut) {
-                diagnostics_.error(declaration.type.range,
+                diagnostics_.error(DiagnosticCode::E0417, declaration.type.range,
                                    "ARRAY[*] is only allowed for VAR_IN_OUT");
                 continue;
             }
@@ -303,7 +309,7 @@ void TypeTable::lay_out(Type& type,
             const std::uint64_t at = align_up(static_cast<std::uint32_t>(offset), member->align);
             if (at + member->size > vm::kMaxAreaSize) {
                 // The members laid out so far stay a consistent type for what follows.
-                diagnostics_.error(declaration.range,
+                diagnostics_.error(DiagnosticCode::E0502, declaration.range,
                                    fmt::format("this structure or instance is too large: its data "
                                                "exceeds the limit of {} bytes",
                                                vm::kMaxAreaSize));
@@ -336,7 +342,8 @@ const Type* TypeTable::structure(const ast::StructType& spec) {
 const Type* TypeTable::enumeration(const ast::EnumType& spec, std::string name) {
     const Type* base = spec.base ? resolve(*spec.base) : &elementary(E::Int);
     if (base == nullptr || !(is_integer(*base) || is_bit_string(*base))) {
-        diagnostics_.error(spec.values.empty() ? SourceRange{} : spec.values.front().name.range,
+        diagnostics_.error(DiagnosticCode::E0312,
+                           spec.values.empty() ? SourceRange{} : spec.values.front().name.range,
                            "an enumeration's base type must be an integer type");
         return nullptr;
     }
@@ -352,7 +359,8 @@ const Type* TypeTable::enumeration(const ast::EnumType& spec, std::string name) 
             if (const auto folded = fold_integer(*value.value)) {
                 next = *folded;
             } else {
-                diagnostics_.error(value.value->range, "an enumeration value must be a constant");
+                diagnostics_.error(DiagnosticCode::E0313, value.value->range,
+                                   "an enumeration value must be a constant");
             }
         }
         type.enumerators.emplace_back(value.name.name, next);
@@ -369,14 +377,15 @@ const Type* TypeTable::subrange(const ast::SubrangeType& spec) {
     }
     if (!is_integer(*base)) {
         diagnostics_.error(
-            spec.base->range,
+            DiagnosticCode::E0312, spec.base->range,
             fmt::format("a subrange needs an integer base type, not {}", base->name));
         return nullptr;
     }
     const auto lower = fold_integer(*spec.range.low);
     const auto upper = fold_integer(*spec.range.high);
     if (!lower || !upper) {
-        diagnostics_.error(spec.range.low->range, "subrange bounds must be constants");
+        diagnostics_.error(DiagnosticCode::E0313, spec.range.low->range,
+                           "subrange bounds must be constants");
         return nullptr;
     }
     const auto limits = ast::integer_range(base->elementary);
@@ -385,7 +394,7 @@ const Type* TypeTable::subrange(const ast::SubrangeType& spec) {
                            (value < 0 || static_cast<std::uint64_t>(value) <= limits->max));
     };
     if (*upper < *lower || !fits(*lower) || !fits(*upper)) {
-        diagnostics_.error(spec.range.low->range,
+        diagnostics_.error(DiagnosticCode::E0314, spec.range.low->range,
                            fmt::format("the subrange {}..{} is empty or does not fit in {}", *lower,
                                        *upper, base->name));
         return nullptr;
@@ -458,7 +467,7 @@ const Type& TypeTable::with_default(const Type& type, const ast::TypeDeclaration
 const Type* TypeTable::instance(const ast::Pou& pou) {
     if (const auto it = instances_.find(&pou); it != instances_.end()) {
         if (instances_in_progress_.contains(&pou) && !through_reference_) {
-            diagnostics_.error(pou.name.range,
+            diagnostics_.error(DiagnosticCode::E0418, pou.name.range,
                                fmt::format("'{}' contains an instance of itself", pou.name.name));
             return nullptr;
         }
@@ -508,7 +517,8 @@ const Type* TypeTable::frame(const ast::Pou& pou) {
     if (function && pou.return_type) {
         const Type* result = resolve(*pou.return_type);
         if (result != nullptr && result->conformant) {
-            diagnostics_.error(pou.return_type->range, "ARRAY[*] is only allowed for VAR_IN_OUT");
+            diagnostics_.error(DiagnosticCode::E0417, pou.return_type->range,
+                               "ARRAY[*] is only allowed for VAR_IN_OUT");
             result = nullptr;
         }
         if (result != nullptr) {

@@ -47,8 +47,9 @@ bool is_untyped_literal(const ast::Expression& expression) {
 ExpressionTyper::ExpressionTyper(TypedProgram& program, Diagnostics& diagnostics)
     : program_(program), diagnostics_(diagnostics) {}
 
-const sema::Type* ExpressionTyper::fail(const SourceRange& range, std::string message) {
-    diagnostics_.error(range, std::move(message));
+const sema::Type* ExpressionTyper::fail(DiagnosticCode code, const SourceRange& range,
+                                        std::string message) {
+    diagnostics_.error(code, range, std::move(message));
     return nullptr;
 }
 
@@ -156,8 +157,9 @@ void ExpressionTyper::expect(const ast::Expression& expression, const sema::Type
     const sema::Type& to = program_.types().unranged(target);
     if (!sema::converts_implicitly(program_.types().unranged(*actual), to) &&
         !sema::conforms(*actual, target)) {
-        diagnostics_.error(expression.range, fmt::format("{} of type {} is expected, not {}", what,
-                                                         target.name, actual->name));
+        diagnostics_.error(
+            DiagnosticCode::E0301, expression.range,
+            fmt::format("{} of type {} is expected, not {}", what, target.name, actual->name));
     }
 }
 
@@ -275,8 +277,9 @@ const sema::Type* ExpressionTyper::literal(const ast::Expression& expression,
     if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal)) {
         if (integer->type) {
             if (!fits(*integer, *integer->type)) {
-                return fail(expression.range, fmt::format("the literal does not fit {}",
-                                                          ast::name_of(*integer->type)));
+                return fail(
+                    DiagnosticCode::E0311, expression.range,
+                    fmt::format("the literal does not fit {}", ast::name_of(*integer->type)));
             }
             return &elementary(*integer->type);
         }
@@ -288,7 +291,7 @@ const sema::Type* ExpressionTyper::literal(const ast::Expression& expression,
                 return &elementary(e);
             }
         }
-        return fail(expression.range, "the literal fits no integer type");
+        return fail(DiagnosticCode::E0311, expression.range, "the literal fits no integer type");
     }
     if (const auto* real = std::get_if<ast::RealLiteral>(&literal)) {
         if (real->type) {
@@ -357,7 +360,7 @@ const sema::Type* ExpressionTyper::member(const ast::Expression& expression,
     if (const sema::Field* field = object->field(node.member.name)) {
         return field->type;
     }
-    return fail(node.member.range,
+    return fail(DiagnosticCode::E0206, node.member.range,
                 fmt::format("{} has no member '{}'", object->name, node.member.name));
 }
 
@@ -367,7 +370,7 @@ const sema::Type* ExpressionTyper::index(const ast::IndexExpression& node) {
         const sema::Type* type = this->type(*index, nullptr);
         if (type != nullptr && !sema::is_integer(program_.types().unranged(*type)) &&
             type->kind != sema::TypeKind::Enum) {
-            diagnostics_.error(index->range,
+            diagnostics_.error(DiagnosticCode::E0307, index->range,
                                fmt::format("an array index is an integer, not {}", type->name));
         }
     }
@@ -375,7 +378,8 @@ const sema::Type* ExpressionTyper::index(const ast::IndexExpression& node) {
         return nullptr;
     }
     if (array->kind != sema::TypeKind::Array) {
-        return fail(node.array->range, fmt::format("{} is not an array", array->name));
+        return fail(DiagnosticCode::E0308, node.array->range,
+                    fmt::format("{} is not an array", array->name));
     }
     return array->element;
 }
@@ -390,13 +394,14 @@ const sema::Type* ExpressionTyper::unary(const ast::Expression& expression,
     const sema::Type& plain = program_.types().unranged(*operand);
     if (node.op == ast::UnaryOperator::Not) {
         if (!sema::is_bool(plain) && !sema::is_bit_string(plain) && !sema::is_integer(plain)) {
-            return fail(expression.range,
+            return fail(DiagnosticCode::E0304, expression.range,
                         fmt::format("NOT needs BOOL or bits, not {}", plain.name));
         }
         return &plain;
     }
     if (!sema::is_numeric(plain) && plain.elementary != E::Time && plain.elementary != E::Ltime) {
-        return fail(expression.range, fmt::format("a sign needs a number, not {}", plain.name));
+        return fail(DiagnosticCode::E0304, expression.range,
+                    fmt::format("a sign needs a number, not {}", plain.name));
     }
     return &plain;
 }
@@ -448,7 +453,8 @@ const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression
                 result = both;
             } else {
                 diagnostics_.error(
-                    range, fmt::format("{} and {} have no common type", result->name, type->name));
+                    DiagnosticCode::E0303, range,
+                    fmt::format("{} and {} have no common type", result->name, type->name));
                 failed = true;
             }
         }
@@ -498,7 +504,7 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
         const sema::Type* operands = unify({node.left.get(), node.right.get()}, expected, range);
         if (operands != nullptr && !sema::is_bool(*operands) && !sema::is_bit_string(*operands) &&
             !sema::is_integer(*operands)) {
-            return fail(range,
+            return fail(DiagnosticCode::E0304, range,
                         fmt::format("AND, OR and XOR need BOOL or bits, not {}", operands->name));
         }
         return operands;
@@ -513,7 +519,7 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
         if (left != nullptr && sema::is_time_like(*left)) {
             const sema::Type* factor = type(*node.right, &elementary(E::Lint));
             if (factor != nullptr && !sema::is_numeric(*factor)) {
-                return fail(range,
+                return fail(DiagnosticCode::E0304, range,
                             fmt::format("a TIME is scaled by a number, not {}", factor->name));
             }
             return left;
@@ -529,7 +535,8 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
     if (sema::is_time_like(*operands) && (node.op == Op::Add || node.op == Op::Subtract)) {
         return operands;
     }
-    return fail(range, fmt::format("arithmetic needs numbers, not {}", operands->name));
+    return fail(DiagnosticCode::E0304, range,
+                fmt::format("arithmetic needs numbers, not {}", operands->name));
 }
 
 std::vector<const ast::Argument*> ExpressionTyper::inputs(const ast::CallExpression& node) {
@@ -570,7 +577,8 @@ const sema::Type* ExpressionTyper::call(const ast::Expression& expression,
     const sema::Type* instance = type(*node.callee, nullptr);
     if (instance == nullptr || instance->kind != sema::TypeKind::Instance ||
         instance->pou == nullptr) {
-        return fail(node.callee->range, "only functions and FB instances can be called");
+        return fail(DiagnosticCode::E0204, node.callee->range,
+                    "only functions and FB instances can be called");
     }
     return pou_call(expression, node, *instance->pou, instance);
 }
@@ -599,14 +607,14 @@ const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
         }
         if (field == nullptr) {
             type(*argument->value, nullptr);
-            diagnostics_.error(argument->range,
+            diagnostics_.error(DiagnosticCode::E0210, argument->range,
                                fmt::format("{} has no such parameter", pou.name.name));
             continue;
         }
         if (argument->kind == ast::Argument::Kind::Output) {
             const sema::Type* target = type(*argument->value, nullptr);
             if (target != nullptr && !sema::converts_implicitly(*field->type, *target)) {
-                diagnostics_.error(argument->range,
+                diagnostics_.error(DiagnosticCode::E0301, argument->range,
                                    fmt::format("output {} of type {} goes into {}", field->name,
                                                field->type->name, target->name));
             }
@@ -622,7 +630,7 @@ const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
             if (actual != nullptr && !sema::same_type(*actual, formal) &&
                 !sema::conforms(*actual, formal) &&
                 !(actual->kind == sema::TypeKind::String && formal.kind == actual->kind)) {
-                diagnostics_.error(argument->range,
+                diagnostics_.error(DiagnosticCode::E0302, argument->range,
                                    fmt::format("VAR_IN_OUT {} takes a {}, not a {}", field->name,
                                                formal.name, actual->name));
             }
@@ -658,7 +666,8 @@ const sema::Type* ExpressionTyper::conversion(const ast::Expression& expression,
     inputs(node); // EN and ENO
     const auto arguments = standard_arguments("TO", node);
     if (arguments.size() != 1 || arguments[0] == nullptr) {
-        return fail(expression.range, fmt::format("{} takes one input", name));
+        return fail(DiagnosticCode::E0306, expression.range,
+                    fmt::format("{} takes one input", name));
     }
     CallTarget target{.kind = CallKind::Conversion, .name = name};
     const sema::Type* source = nullptr;
@@ -667,7 +676,8 @@ const sema::Type* ExpressionTyper::conversion(const ast::Expression& expression,
         // Table 22: TRUNC of an ANY_REAL; the project truncates to DINT.
         source = type(*arguments[0]->value, nullptr);
         if (source != nullptr && !sema::is_real(*source)) {
-            return fail(expression.range, fmt::format("TRUNC needs a REAL, not {}", source->name));
+            return fail(DiagnosticCode::E0305, expression.range,
+                        fmt::format("TRUNC needs a REAL, not {}", source->name));
         }
         result = &elementary(E::Dint);
     } else {

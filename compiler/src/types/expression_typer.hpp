@@ -64,7 +64,7 @@ private:
     void fold(const ast::Expression& expression, const sema::Type& type);
 
     const sema::Type& elementary(E e) { return program_.types().elementary(e); }
-    const sema::Type* fail(const SourceRange& range, std::string message);
+    const sema::Type* fail(DiagnosticCode code, const SourceRange& range, std::string message);
 
     TypedProgram& program_;
     Diagnostics& diagnostics_;

@@ -66,14 +66,15 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
     std::vector<const ast::Expression*> values;
     for (const ast::Argument* argument : standard_arguments(name, node)) {
         if (argument == nullptr) {
-            return fail(expression.range, fmt::format("{} has no such input", name));
+            return fail(DiagnosticCode::E0210, expression.range,
+                        fmt::format("{} has no such input", name));
         }
         values.push_back(argument->value.get());
     }
     const SourceRange& range = expression.range;
     const auto count = [&](std::size_t low, std::size_t high) {
         if (values.size() < low || values.size() > high) {
-            diagnostics_.error(range,
+            diagnostics_.error(DiagnosticCode::E0306, range,
                                fmt::format("{} takes {} inputs, not {}", name, low, values.size()));
             return false;
         }
@@ -82,14 +83,14 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
     const auto integer = [&](const ast::Expression& value) {
         const sema::Type* type = this->type(value, &elementary(E::Dint));
         if (type != nullptr && !sema::is_integer(program_.types().unranged(*type))) {
-            diagnostics_.error(value.range,
+            diagnostics_.error(DiagnosticCode::E0305, value.range,
                                fmt::format("{} needs an integer here, not {}", name, type->name));
         }
     };
     const auto string = [&](const ast::Expression& value) {
         const sema::Type* type = this->type(value, nullptr);
         if (type != nullptr && type->kind != sema::TypeKind::String) {
-            diagnostics_.error(value.range,
+            diagnostics_.error(DiagnosticCode::E0305, value.range,
                                fmt::format("{} needs a string, not {}", name, type->name));
             return static_cast<const sema::Type*>(nullptr);
         }
@@ -111,11 +112,12 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
         }
         operand = &program_.types().unranged(*operand);
         if (real && !sema::is_real(*operand)) {
-            return fail(range,
+            return fail(DiagnosticCode::E0305, range,
                         fmt::format("{} needs a REAL or LREAL, not {}", name, operand->name));
         }
         if (name == "ABS" && !sema::is_numeric(*operand)) {
-            return fail(range, fmt::format("ABS needs a number, not {}", operand->name));
+            return fail(DiagnosticCode::E0305, range,
+                        fmt::format("ABS needs a number, not {}", operand->name));
         }
         target.operand = result = operand;
     } else if (name == "ATAN2" || name == "EXPT") {
@@ -144,7 +146,8 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
         result = unify(values, expected, range);
         if (result != nullptr && (kArithmetic.contains(name)) && !sema::is_numeric(*result) &&
             !sema::is_bit_string(*result)) {
-            return fail(range, fmt::format("{} needs numbers, not {}", name, result->name));
+            return fail(DiagnosticCode::E0305, range,
+                        fmt::format("{} needs numbers, not {}", name, result->name));
         }
         target.operand = result;
     } else if (kComparison.contains(name)) {
@@ -232,7 +235,7 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
         } else {
             const sema::Type* factor = type(*values[1], &elementary(E::Lint));
             if (factor != nullptr && !sema::is_numeric(*factor)) {
-                return fail(range,
+                return fail(DiagnosticCode::E0305, range,
                             fmt::format("{} scales by a number, not {}", name, factor->name));
             }
         }
@@ -253,7 +256,8 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
                  : object->size <= 0xFFFF ? &elementary(E::Uint)
                                           : &elementary(E::Udint);
     } else {
-        return fail(range, fmt::format("the typing stage does not know {} yet", name));
+        return fail(DiagnosticCode::E0504, range,
+                    fmt::format("the typing stage does not know {} yet", name));
     }
     if (result == nullptr) {
         return nullptr;

@@ -1,0 +1,74 @@
+#include "eposp/compiler/diagnostics_json.hpp"
+
+#include "eposp/compiler/source_manager.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace eposp::compiler {
+namespace {
+
+using nlohmann::json;
+
+json position(const SourcePosition& at) {
+    return {{"line", at.line}, {"column", at.column}};
+}
+
+// The file by its path (null for a diagnostic about the compilation as a whole, such as a
+// compile option), and the range with both ends included, 1-based.
+void locate(json& out, const SourceRange& range, const SourceManager& sources) {
+    const bool in_a_file = range.file < sources.file_count();
+    out["file"] = in_a_file ? json(sources.path(range.file)) : json(nullptr);
+    out["range"] = in_a_file && range.begin.line > 0
+                       ? json{{"start", position(range.begin)}, {"end", position(range.end)}}
+                       : json(nullptr);
+}
+
+std::string_view severity_name(Severity severity) {
+    switch (severity) {
+    case Severity::Note:
+        return "note";
+    case Severity::Warning:
+        return "warning";
+    case Severity::Error:
+        return "error";
+    }
+    return "error";
+}
+
+json to_json(const Diagnostic& diagnostic, const SourceManager& sources) {
+    json out;
+    const bool coded = diagnostic.code != DiagnosticCode::Uncoded;
+    out["code"] = coded ? json(describe(diagnostic.code).name) : json(nullptr);
+    out["severity"] = severity_name(diagnostic.severity);
+    out["title"] = coded ? json(describe(diagnostic.code).title) : json(nullptr);
+    out["message"] = diagnostic.message;
+    locate(out, diagnostic.range, sources);
+    out["notes"] = json::array();
+    for (const DiagnosticNote& note : diagnostic.notes) {
+        json entry{{"message", note.message}};
+        locate(entry, note.range, sources);
+        out["notes"].push_back(std::move(entry));
+    }
+    out["fix_it"] = nullptr;
+    if (diagnostic.fix_it) {
+        json fix{{"replacement", diagnostic.fix_it->replacement}};
+        locate(fix, diagnostic.fix_it->range, sources);
+        out["fix_it"] = std::move(fix);
+    }
+    return out;
+}
+
+} // namespace
+
+std::string render_json(const Diagnostics& diagnostics, const SourceManager& sources) {
+    std::string out;
+    for (const Diagnostic& diagnostic : diagnostics.all()) {
+        // Invalid UTF-8 in a message (a quoted name from a Windows-1252 file) is replaced, not
+        // thrown on.
+        out += to_json(diagnostic, sources).dump(-1, ' ', false, json::error_handler_t::replace);
+        out += '\n';
+    }
+    return out;
+}
+
+} // namespace eposp::compiler
