@@ -6,6 +6,7 @@
 #include "eposp/drives/motion/profile_planner.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/statusword_bits.hpp"
+#include "modes/analog_setpoint.hpp"
 #include "modes/mode_behaviour.hpp"
 #include "modes/mode_table.hpp"
 
@@ -66,6 +67,7 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     read_input_mask();
     watch_dictionary();
     compute_measured_values();
+    compute_analog_setpoints(dictionary_.objects());
     node_.on_reset_application([this] { reset_application(); });
     // The remote bit changes with the NMT state, between two control periods: stored at once, so
     // that the first TPDO in Operational carries it.
@@ -103,6 +105,10 @@ void Epos2Drive::set_supply_voltage(double volts) {
     machine_.plant.power_stage.supply_voltage = volts;
     configure_axis();
     device_control_.set_fault_condition_present(supply_error().has_value());
+}
+
+void Epos2Drive::set_analog_input(AnalogInput input, std::int16_t millivolts) {
+    dictionary_.objects().set_as(0x207C, static_cast<std::uint8_t>(input), millivolts);
 }
 
 // 4.2.5, 4.2.6: the supply out of the power stage's range.
@@ -316,22 +322,27 @@ void Epos2Drive::control_period() {
     finish_device_control_transitions();
     follow_power_stage();
     const motion::DriveOutputs outputs = device_control_.outputs();
-    MotionState demand{static_cast<double>(position_actual()), 0, 0};
+    // Stop ramps and holding run on the position loop; the mode chooses its loop (5.9, 5.12,
+    // 5.14).
+    ModeDemand commanded{.motion = {static_cast<double>(position_actual()), 0, 0}};
     if (outputs.ramp != motion::StopRamp::None) {
-        demand = stop_ramp(now);
+        commanded.motion = stop_ramp(now);
     } else if (outputs.drive_function_enabled) {
-        const ModeDemand commanded = mode_behaviour_->demand(mode_inputs());
+        commanded = mode_behaviour_->demand(mode_inputs());
         if (commanded.position_offset) {
             position_offset_ += *commanded.position_offset;
         }
-        demand = commanded.motion;
     } else if (power_stage_on_) {
-        demand = MotionState{hold_position_, 0, 0}; // hold where the power stage came on
+        commanded.motion = MotionState{hold_position_, 0, 0}; // where the power stage came on
     }
     index_latch_.reset();
+    const MotionState demand = commanded.motion;
+    axis_.set_mode(power_stage_on_ ? commanded.loop : plant::ControlMode::PowerOff);
     axis_.set_demand({.position = demand.position - static_cast<double>(position_offset_),
                       .velocity = demand.velocity,
-                      .acceleration = demand.acceleration});
+                      .acceleration = demand.acceleration,
+                      .current = commanded.current,
+                      .speed_limit = commanded.speed_limit});
     const double overcurrent = machine_.plant.power_stage.overcurrent;
     bool overcurrent_seen = false;
     for (int step = 0; step < plant::ServoAxis::kCurrentStepsPerOuterLoop; ++step) {

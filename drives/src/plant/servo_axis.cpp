@@ -63,6 +63,7 @@ void ServoAxis::reset_controllers() {
     velocity_controller_.reset();
     position_controller_.reset();
     current_demand_ = 0;
+    speed_limiting_ = false;
     // The outer loop keeps its 1 ms rhythm, so the velocity measurement keeps its interval.
 }
 
@@ -96,6 +97,9 @@ void ServoAxis::run_outer_loop() {
     case ControlMode::Current:
         current_demand_ = std::clamp(demand_.current, -parameters_.gains.current_limit,
                                      parameters_.gains.current_limit);
+        if (demand_.speed_limit > 0) {
+            current_demand_ = cap_at_speed_limit(current_demand_);
+        }
         break;
     case ControlMode::Velocity: {
         const VelocityGains& gains = parameters_.gains.velocity;
@@ -115,6 +119,28 @@ void ServoAxis::run_outer_loop() {
         break;
     }
     }
+}
+
+// 8.2.130 sub 4: once the speed reaches the limit in the direction of the current, the velocity
+// controller takes over from the set value without a bump and holds the limit; it hands back
+// when it would demand more than the set value.
+double ServoAxis::cap_at_speed_limit(double current) {
+    const double limit = current >= 0 ? demand_.speed_limit : -demand_.speed_limit;
+    if (!speed_limiting_) {
+        const bool reached = current >= 0 ? velocity_ >= limit : velocity_ <= limit;
+        if (!reached) {
+            return current;
+        }
+        velocity_controller_.preset(current);
+        speed_limiting_ = true;
+    }
+    const double cap = velocity_controller_.update((limit - velocity_) * radians_per_count_,
+                                                   kOuterLoopPeriod);
+    if (current >= 0 ? cap >= current : cap <= current) {
+        speed_limiting_ = false;
+        return current;
+    }
+    return cap;
 }
 
 std::uint8_t ServoAxis::hall_sensors() const {

@@ -1,8 +1,11 @@
 #include "mode_table.hpp"
 
+#include "current_mode.hpp"
 #include "homing_mode.hpp"
+#include "position_mode.hpp"
 #include "profile_position_mode.hpp"
 #include "profile_velocity_mode.hpp"
+#include "velocity_mode.hpp"
 
 namespace eposp::drives::epos2 {
 
@@ -11,6 +14,9 @@ std::optional<OperatingMode> simulated_mode(std::int8_t modes_of_operation) {
     case OperatingMode::ProfilePosition:
     case OperatingMode::ProfileVelocity:
     case OperatingMode::Homing:
+    case OperatingMode::Position:
+    case OperatingMode::Velocity:
+    case OperatingMode::Current:
         return static_cast<OperatingMode>(modes_of_operation);
     }
     return std::nullopt;
@@ -24,6 +30,12 @@ std::unique_ptr<ModeBehaviour> make_mode_behaviour(OperatingMode mode, ModeServi
         return std::make_unique<ProfileVelocityMode>(services);
     case OperatingMode::Homing:
         return std::make_unique<HomingMode>(services);
+    case OperatingMode::Position:
+        return std::make_unique<PositionMode>(services);
+    case OperatingMode::Velocity:
+        return std::make_unique<VelocityMode>(services);
+    case OperatingMode::Current:
+        return std::make_unique<CurrentMode>(services);
     }
     return std::make_unique<ProfilePositionMode>(services);
 }

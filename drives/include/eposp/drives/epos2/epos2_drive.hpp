@@ -28,9 +28,19 @@ struct ModeInputs;
 struct ModeServices;
 
 /// EPOS2 FW spec 8.2.90, table 8-118: the modes of operation this simulation runs. The others of
-/// the table (7 IPM, -1 position, -2 velocity, -3 current, -5 master encoder, -6 step/direction)
-/// are refused with "not yet" (see docs/epos2.md).
-enum class OperatingMode : std::int8_t { ProfilePosition = 1, ProfileVelocity = 3, Homing = 6 };
+/// the table (7 IPM, -4 diagnostic, -5 master encoder, -6 step/direction) are refused with "not
+/// yet" (see docs/epos2.md).
+enum class OperatingMode : std::int8_t {
+    ProfilePosition = 1,
+    ProfileVelocity = 3,
+    Homing = 6,
+    Position = -1,
+    Velocity = -2,
+    Current = -3,
+};
+
+/// EPOS2 FW spec 8.2.63: the two analog inputs of 0x207C.
+enum class AnalogInput : std::uint8_t { Input1 = 1, Input2 = 2 };
 
 /// EPOS2 FW spec table 8-86: the two limit switch functionalities of the digital inputs.
 enum class LimitSwitch { Negative, Positive };
@@ -74,6 +84,10 @@ public:
     /// The simulated power supply: the drive checks it against the power stage's limits
     /// (undervoltage 0x3220, overvoltage 0x3210) every control period.
     void set_supply_voltage(double volts);
+    /// The voltage at an analog input (8.2.63, 0x207C, mV), from the next control period on; an
+    /// input configured as a set value (0x207B) and executed (0x207D) commands the Position,
+    /// Velocity or Current Mode (8.2.81 - 8.2.83).
+    void set_analog_input(AnalogInput input, std::int16_t millivolts);
 
     // Fault injection (docs/epos2.md, "Fault injection").
 

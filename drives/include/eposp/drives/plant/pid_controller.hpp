@@ -16,6 +16,11 @@ public:
 
     double update(double error, double dt, double feed_forward = 0);
     void reset();
+    /// Takes over from another source of the output without a bump: the integral becomes it.
+    void preset(double output) {
+        integral_ = output;
+        has_previous_ = false;
+    }
     /// New gains and limit from the next update on; the integral carries on (no bump).
     void retune(Gains gains, double output_limit) {
         gains_ = gains;

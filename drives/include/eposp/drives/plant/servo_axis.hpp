@@ -20,6 +20,9 @@ struct AxisDemand {
     double velocity = 0;     ///< velocity demand, and velocity feed-forward in position mode
     double acceleration = 0; ///< acceleration feed-forward
     double current = 0;      ///< current mode only
+    /// Current mode: the velocity controller caps the current so that |velocity| stays below
+    /// this (quadcounts/s; EPOS2 FW spec 8.2.130 sub 4 "Maximal Motor Speed"); 0: no cap.
+    double speed_limit = 0;
 };
 
 struct ServoGains {
@@ -75,6 +78,7 @@ public:
 
 private:
     void run_outer_loop();
+    double cap_at_speed_limit(double current);
     void reset_controllers();
 
     AxisParameters parameters_;
@@ -86,6 +90,7 @@ private:
     ControlMode mode_ = ControlMode::PowerOff;
     AxisDemand demand_;
     double current_demand_ = 0;
+    bool speed_limiting_ = false; ///< current mode: the velocity controller holds the limit
     std::int64_t position_ = 0;
     std::int64_t position_at_outer_loop_ = 0;
     double velocity_ = 0;
