@@ -2,6 +2,7 @@
 
 #include "axis_configuration.hpp"
 #include "eposp/drives/epos2/device_errors.hpp"
+#include "eposp/drives/epos2/epos2_io.hpp"
 #include "eposp/drives/motion/device_error_codes.hpp"
 #include "eposp/drives/motion/profile_planner.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
@@ -25,10 +26,8 @@ using motion::MotionState;
 // 7.3, figure 7-54 remark *3 and table 7-65: statusword bit 9 is TRUE in NMT Operational only.
 constexpr std::uint16_t kRemoteBit = 1U << 9;
 
-// Table 8-115 (0x2071 sub 1): the functionalities the simulated switches drive.
-constexpr std::uint16_t kNegativeLimitInput = 1U << 0;
-constexpr std::uint16_t kPositiveLimitInput = 1U << 1;
-constexpr std::uint16_t kHomeSwitchInput = 1U << 2;
+// Table 3-6: the controlword bits of the device commands (0 … 3) and fault reset (7).
+constexpr std::uint16_t kDeviceCommandBits = 0x008F;
 
 // Table 4-11: the errors of the power stage and the CAN controller (4.2.3, 4.2.5, 4.2.6, 4.2.18).
 constexpr std::uint16_t kOvercurrentErrorCode = 0x2310;
@@ -64,7 +63,7 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     write_axis_defaults(dictionary_.objects(), machine_);
     configure_axis();
     read_counts_per_turn();
-    read_input_mask();
+    io_ = std::make_unique<Epos2Io>(dictionary_.objects());
     watch_dictionary();
     compute_measured_values();
     compute_analog_setpoints(dictionary_.objects());
@@ -195,11 +194,8 @@ void Epos2Drive::watch_dictionary() {
         read_counts_per_turn();
         homing_.reference_lost();
     });
-    od.on_change(0x2071, [this](std::uint16_t, std::uint8_t sub) {
-        if (sub == 2) {
-            read_input_mask();
-        }
-    });
+    // 8.2.73: the standstill of the stop ramps and of PVM's speed zero.
+    od.on_change(0x2101, [this](std::uint16_t, std::uint8_t) { read_standstill_window(); });
     for (const std::uint16_t option_code :
          std::array<std::uint16_t, 4>{0x6007, 0x605B, 0x605C, 0x605E}) {
         od.on_change(option_code, [this](std::uint16_t, std::uint8_t) { read_option_codes(); });
@@ -232,7 +228,8 @@ void Epos2Drive::watch_dictionary() {
 void Epos2Drive::reset_application() {
     configure_axis(); // the reset restored values without telling the listeners
     read_counts_per_turn();
-    read_input_mask();
+    io_->reload();
+    read_standstill_window();
     read_option_codes();
     published_.reset(); // the reset stored the defaults behind the computed objects
     device_control_.node_reset();
@@ -358,6 +355,7 @@ void Epos2Drive::control_period() {
     velocity_averaged_.update(counts_to_rpm(axis_.velocity_actual()));
     last_demand_ = demand;
     watch_motion(demand);
+    watch_io(now);
     publish(demand);
     control_time_ += kControlPeriod;
 }
@@ -370,7 +368,10 @@ void Epos2Drive::finish_device_control_transitions() {
     if (state == DriveState::Refresh) {
         device_control_.refresh_finished();
     } else if (state == DriveState::MeasureInit) {
-        device_control_.measure_init_finished();
+        // 8.2.72: Operation Enable once the holding brake has let go (its fall time).
+        if (io_->operation_may_start(seconds())) {
+            device_control_.measure_init_finished();
+        }
     } else if ((state == DriveState::FaultReactionActiveDisabled ||
                 state == DriveState::FaultReactionActiveEnabled) &&
                device_control_.outputs().ramp == motion::StopRamp::None) {
@@ -380,7 +381,15 @@ void Epos2Drive::finish_device_control_transitions() {
 
 // Power stage switched on: the controllers start on the actual position, at rest.
 void Epos2Drive::follow_power_stage() {
-    const bool on = device_control_.outputs().power_stage_on;
+    const bool requested = device_control_.outputs().power_stage_on;
+    const DriveState state = device_control_.state();
+    const bool fault = state == DriveState::FaultReactionActiveDisabled ||
+                       state == DriveState::FaultReactionActiveEnabled ||
+                       state == DriveState::Fault;
+    const bool on = io_->power_stage(seconds(), requested, fault, velocity_averaged_.output());
+    if (on && !requested) {
+        hold_position_ = last_demand_.position; // 8.2.72: held until the brake holds
+    }
     if (on == power_stage_on_) {
         return;
     }
@@ -440,7 +449,6 @@ void Epos2Drive::watch_motion(const MotionState& demand) {
                 raise_device_error(*error);
             }
         }
-        watch_limit_switches();
         // 8.2.105: the actual position leaving the limits; homing runs before the limits mean
         // anything (they are relative to the home position).
         if (mode_behaviour_->supervises_limits()) {
@@ -452,23 +460,28 @@ void Epos2Drive::watch_motion(const MotionState& demand) {
     mode_behaviour_->watch(mode_inputs(), demand);
 }
 
-// 8.2.57, table 8-89: a limit switch functionality that goes high while its bit of the execution
-// mask (0x2071 sub 4) is set raises 0xFF06 / 0xFF07 (4.2.27, 4.2.28). During homing the switches
-// are references, which the homing procedure handles. The plant gives the functionalities'
-// states directly, so the polarity (sub 3) has no pin level to invert.
-void Epos2Drive::watch_limit_switches() {
-    const std::uint16_t states = digital_input_states();
-    const std::uint16_t rising = states & ~limit_inputs_before_;
-    limit_inputs_before_ = states;
-    if (rising == 0 || !mode_behaviour_->supervises_limits()) {
-        return;
-    }
-    const auto executed = dictionary_.objects().get_as<std::uint16_t>(0x2071, 4);
-    if ((rising & executed & kNegativeLimitInput) != 0) {
+// 8.2.56 - 8.2.61: the digital inputs and what they execute (limit switch errors 0xFF06 / 0xFF07,
+// quickstop and device enable as device commands, the marker's Single & Stop as a Halt), the
+// position marker and compare, the digital outputs.
+void Epos2Drive::watch_io(double now) {
+    const IoReaction reaction = io_->update({.now = now,
+                                             .position = position_actual(),
+                                             .state = device_control_.state(),
+                                             .power_stage_on = power_stage_on_,
+                                             .homing_mode = !mode_behaviour_->supervises_limits(),
+                                             .homing_in_progress = homing_.in_progress(),
+                                             .machine_switches = axis_.switches()});
+    if (reaction.negative_limit_error) {
         raise_device_error(motion::kNegativeLimitSwitchErrorCode);
     }
-    if ((rising & executed & kPositiveLimitInput) != 0) {
+    if (reaction.positive_limit_error) {
         raise_device_error(motion::kPositiveLimitSwitchErrorCode);
+    }
+    for (const std::uint16_t command : reaction.device_commands) {
+        on_controlword(static_cast<std::uint16_t>((controlword_ & ~kDeviceCommandBits) | command));
+    }
+    if (reaction.stop) {
+        on_controlword(static_cast<std::uint16_t>(controlword_ | kHaltBit));
     }
 }
 
@@ -484,28 +497,30 @@ std::uint16_t Epos2Drive::statusword() const {
 }
 
 std::uint16_t Epos2Drive::digital_input_states() const {
-    const plant::SwitchStates pressed = switches();
-    std::uint16_t states = 0;
-    if (pressed.negative_limit)
-        states |= kNegativeLimitInput;
-    if (pressed.positive_limit)
-        states |= kPositiveLimitInput;
-    if (pressed.home)
-        states |= kHomeSwitchInput;
-    return states & input_mask_;
+    return io_->displayed_inputs(axis_.switches());
 }
 
 plant::SwitchStates Epos2Drive::switches() const {
-    plant::SwitchStates pressed = axis_.switches();
-    pressed.negative_limit = pressed.negative_limit || held_switches_.negative_limit;
-    pressed.positive_limit = pressed.positive_limit || held_switches_.positive_limit;
-    return pressed;
+    return io_->switch_functions(axis_.switches());
 }
 
 // A switch held from outside acts from the next control period on, like one the axis reaches.
 void Epos2Drive::hold_limit_switch(LimitSwitch which, bool pressed) {
-    (which == LimitSwitch::Negative ? held_switches_.negative_limit
-                                    : held_switches_.positive_limit) = pressed;
+    io_->hold_limit_switch(which == LimitSwitch::Negative ? InputFunction::NegativeLimitSwitch
+                                                          : InputFunction::PositiveLimitSwitch,
+                           pressed);
+}
+
+void Epos2Drive::set_digital_input(unsigned input, bool high) {
+    io_->set_input(input, high);
+}
+
+bool Epos2Drive::digital_input(unsigned input) const {
+    return io_->input(input, axis_.switches());
+}
+
+bool Epos2Drive::digital_output(unsigned output) const {
+    return io_->output(output);
 }
 
 // The computed objects (8.2.86, 8.2.92 - 8.2.97, 8.2.57), stored when they change so that the
@@ -555,9 +570,9 @@ void Epos2Drive::read_option_codes() {
                                       .fault_reaction = od.get_as<std::int16_t>(0x605E, 0)});
 }
 
-// 8.2.57: read when written, not each time the switches are sampled.
-void Epos2Drive::read_input_mask() {
-    input_mask_ = dictionary_.objects().get_as<std::uint16_t>(0x2071, 2);
+// 8.2.73: read when written.
+void Epos2Drive::read_standstill_window() {
+    standstill_ = motion::StandstillMonitor(standstill_window(dictionary_.objects()));
 }
 
 // 8.2.74: quadcounts are four per encoder pulse.

@@ -23,6 +23,7 @@
 
 namespace eposp::drives::epos2 {
 
+class Epos2Io;
 class ModeBehaviour;
 struct ModeInputs;
 struct ModeServices;
@@ -84,6 +85,19 @@ public:
     /// The simulated power supply: the drive checks it against the power stage's limits
     /// (undervoltage 0x3220, overvoltage 0x3210) every control period.
     void set_supply_voltage(double volts);
+
+    // Digital inputs and outputs of an EPOS2 24/5 (docs/epos2.md, "Digital inputs and outputs").
+
+    /// Drives digital input `input` (1 … 6) high or low from outside the drive: a test, the
+    /// network file, an EPOS P output. The machine's switches drive inputs 4 - 6 too (home,
+    /// positive, negative limit switch, normally open); a pin is high when any source drives
+    /// it. 0x2070 and 0x2071 decide what it means from the next control period on. Another
+    /// input number is a programming error (std::invalid_argument).
+    void set_digital_input(unsigned input, bool high);
+    /// The level of digital input `input` (1 … 6) from every source.
+    bool digital_input(unsigned input) const;
+    /// The level of digital output `output` (1 … 4) as 0x2078 and 0x2079 make it (8.2.59, 8.2.60).
+    bool digital_output(unsigned output) const;
     /// The voltage at an analog input (8.2.63, 0x207C, mV), from the next control period on; an
     /// input configured as a set value (0x207B) and executed (0x207D) commands the Position,
     /// Velocity or Current Mode (8.2.81 - 8.2.83).
@@ -121,7 +135,7 @@ private:
     motion::MotionState stop_ramp(double now);
     ModeInputs mode_inputs() const;
     void watch_motion(const motion::MotionState& demand);
-    void watch_limit_switches();
+    void watch_io(double now);
     /// The machine's switches at the present position, and those held by hold_limit_switch().
     plant::SwitchStates switches() const;
     void publish(const motion::MotionState& demand);
@@ -132,7 +146,7 @@ private:
     double seconds() const;
     void read_counts_per_turn();
     void read_option_codes();
-    void read_input_mask();
+    void read_standstill_window();
     double rpm_to_counts(double rpm) const { return rpm * counts_per_turn_ / 60.0; }
     double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn_; }
     std::int64_t position_actual() const { return axis_.position_actual() + position_offset_; }
@@ -149,6 +163,7 @@ private:
     motion::StandstillMonitor standstill_;
     std::unique_ptr<ModeServices> mode_services_;
     std::unique_ptr<ModeBehaviour> mode_behaviour_; ///< of mode_ (modes/)
+    std::unique_ptr<Epos2Io> io_;                   ///< digital I/O, marker, compare, brake
 
     OperatingMode mode_ = OperatingMode::ProfilePosition;
     std::uint16_t controlword_ = 0;
@@ -161,9 +176,6 @@ private:
     std::int64_t position_offset_ = 0;        ///< what homing added to the axis' counter
     std::optional<std::int64_t> index_latch_; ///< an index pulse since the last control period
     double counts_per_turn_ = 0;              ///< 4 × 0x2210 sub 1
-    std::uint16_t limit_inputs_before_ = 0;   ///< 0x2071 sub 1 in the last control period
-    std::uint16_t input_mask_ = 0;            ///< 0x2071 sub 2
-    plant::SwitchStates held_switches_;       ///< limit switches held by fault injection
     std::int64_t counter_at_index_ = 0;       ///< 0x2021: the raw encoder counter
     /// 8.2.47: the current filtered at 50 Hz every 0.1 ms; 8.2.48: the velocity at 5 Hz every ms.
     plant::LowPassFilter current_averaged_{50, plant::ServoAxis::kCurrentLoopPeriod};
