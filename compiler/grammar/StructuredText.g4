@@ -219,7 +219,8 @@ identifier : IDENTIFIER | ON ;
 BLOCK_COMMENT : '(*' (BLOCK_COMMENT | .)*? '*)' -> skip ;
 C_COMMENT : '/*' (C_COMMENT | .)*? '*/' -> skip ;
 LINE_COMMENT : '//' ~[\r\n]* -> skip ;
-PRAGMA : '{' ~[}]* '}' -> skip ;
+// Pragmas stay on the hidden channel: the AST builder reads the attributes above a declaration.
+PRAGMA : '{' ~[}]* '}' -> channel(HIDDEN) ;
 WHITESPACE : [ \t\r\n\f]+ -> skip ;
 // A comment that never closes is not skipped: it reaches the parser as '(' '*' or '/' '*', a
 // pair that cannot occur in ST otherwise and is reported as an unterminated comment.

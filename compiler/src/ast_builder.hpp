@@ -10,7 +10,8 @@ namespace eposp::compiler {
 /// and locations kept, everything the grammar matched loosely checked here with a precise
 /// message. The parse tree can be dropped afterwards.
 ast::CompilationUnit build_ast(generated::StructuredTextParser::CompilationUnitContext& tree,
-                               FileId file, Diagnostics& diagnostics);
+                               antlr4::BufferedTokenStream& tokens, FileId file,
+                               Diagnostics& diagnostics);
 
 /// The builder's state, shared by its parts (declarations, statements, expressions), each in
 /// its own file.
@@ -18,7 +19,8 @@ class AstBuilder {
 public:
     using P = generated::StructuredTextParser;
 
-    AstBuilder(FileId file, Diagnostics& diagnostics) : file_(file), diagnostics_(diagnostics) {}
+    AstBuilder(antlr4::BufferedTokenStream& tokens, FileId file, Diagnostics& diagnostics)
+        : tokens_(tokens), file_(file), diagnostics_(diagnostics) {}
 
     ast::CompilationUnit compilation_unit(P::CompilationUnitContext& context);
 
@@ -42,6 +44,10 @@ public:
     ast::InitializerPtr declaration_initializer(P::DeclarationInitializerContext* context);
     std::vector<ast::ArrayInitElement>
     array_elements(const std::vector<P::ArrayInitElementContext*>& contexts);
+
+    // ast_builder_attributes.cpp
+    /// The attribute pragmas just above `context` (other pragmas are not attributes).
+    std::vector<ast::Attribute> attributes_before(antlr4::ParserRuleContext& context);
 
     // ast_builder_types.cpp
     ast::TypeSpec type_spec(P::TypeSpecContext& context);
@@ -78,6 +84,7 @@ private:
     ast::ExpressionPtr operand(P::UnaryExpressionContext& context);
     ast::ExpressionPtr primary(P::PrimaryExpressionContext& context);
 
+    antlr4::BufferedTokenStream& tokens_; ///< with the pragmas on its hidden channel
     FileId file_;
     Diagnostics& diagnostics_;
     bool warned_about_on_ = false;

@@ -45,9 +45,9 @@ ast::Retention retention_of(const antlr4::Token* token) {
 
 } // namespace
 
-ast::CompilationUnit build_ast(P::CompilationUnitContext& tree, FileId file,
-                               Diagnostics& diagnostics) {
-    return AstBuilder(file, diagnostics).compilation_unit(tree);
+ast::CompilationUnit build_ast(P::CompilationUnitContext& tree, antlr4::BufferedTokenStream& tokens,
+                               FileId file, Diagnostics& diagnostics) {
+    return AstBuilder(tokens, file, diagnostics).compilation_unit(tree);
 }
 
 ast::CompilationUnit AstBuilder::compilation_unit(P::CompilationUnitContext& context) {
@@ -166,6 +166,7 @@ ast::Resource AstBuilder::resource(P::ResourceBodyContext& body, ast::Identifier
 // IEC 61131-3 ed. 3, 6.8.2, table 63: SINGLE, INTERVAL and PRIORITY, each at most once.
 ast::TaskDeclaration AstBuilder::task(P::TaskDeclarationContext& context) {
     ast::TaskDeclaration result;
+    result.attributes = attributes_before(context);
     result.name = identifier(*context.identifier());
     result.range = range(context);
     for (P::TaskPropertyContext* property : context.taskProperty()) {

@@ -18,7 +18,7 @@ std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId>
     }
     codegen::ProgramGenerator generator({*front_end->model, front_end->units, libraries.size()},
                                         {*front_end->library_model, front_end->library_units},
-                                        diagnostics, options.if_conversion);
+                                        diagnostics, options);
     return generator.generate();
 }
 

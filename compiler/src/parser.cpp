@@ -117,7 +117,7 @@ ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostic
     if (diagnostics.error_count() != errors_before) {
         return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
-    return build_ast(*tree, file, diagnostics);
+    return build_ast(*tree, tokens, file, diagnostics);
 }
 
 } // namespace eposp::compiler

@@ -3,6 +3,7 @@
 #include "device_axis_link.hpp"
 #include "eposp/device/axis_process_data.hpp"
 #include "eposp/device/error_entry.hpp"
+#include "event_tasks.hpp"
 #include "manufacturer_status.hpp"
 #include "network_port.hpp"
 #include "plc_objects.hpp"
@@ -35,18 +36,6 @@ EposPDictionaryConfig dictionary_config(const EposPConfig& config, const Plc& pl
     };
     dictionary.erase_program = std::move(erase_program);
     return dictionary;
-}
-
-// An event task by name, looked up at each event: a download (0x1F50) may have replaced the
-// program the binding was made for; a program without that event task ignores the event.
-void raise_event_task(vm::PlcRuntime& runtime, const std::string& name) {
-    if (runtime.state() != vm::ProgramState::Running) {
-        return;
-    }
-    const auto task = runtime.task_index(name);
-    if (task && runtime.image().tasks[*task].kind == vm::TaskKind::Event) {
-        runtime.raise_event(*task);
-    }
 }
 
 } // namespace
@@ -98,6 +87,10 @@ EposP::EposP(EposPConfig config)
             manufacturer_status_->on_emergency(port, emergency);
         });
     }
+    event_tasks_ = std::make_unique<EventTasks>(
+        plc_.runtime(), dictionary_.objects(),
+        [this](std::uint8_t port) -> NetworkPort& { return network_port(port); });
+    plc_.observe_loads(*event_tasks_);
     program_store_->power_up(); // after the motion blocks: a program may call them
     faults_ = std::make_unique<FaultInjector>(*this);
     internal_drive_->start();
@@ -127,48 +120,7 @@ void EposP::apply_can_bit_rate() {
 }
 
 std::optional<core::Error> EposP::bind_event(const EventBinding& event) {
-    vm::PlcRuntime& runtime = plc_.runtime();
-    const auto task = runtime.task_index(event.task);
-    if (!task || plc_.image().tasks[*task].kind != vm::TaskKind::Event) {
-        return core::Error{fmt::format(
-            "event task {}: the program has no such task with SINGLE (an event task)", event.task)};
-    }
-    const auto raise = [&runtime, name = event.task] {
-        raise_event_task(runtime, name);
-    };
-    switch (event.source) {
-    case EventBinding::Source::Sync:
-        sync_tasks_.push_back(event.task);
-        break;
-    case EventBinding::Source::Emcy:
-        network_port(event.port)
-            .on_emergency([raise, node = event.node](const canopen::Emergency& emergency) {
-                if (!node || emergency.node == *node) {
-                    raise();
-                }
-            });
-        break;
-    case EventBinding::Source::Rpdo:
-        network_port(event.port).on_rpdo(event.rpdo, raise);
-        break;
-    case EventBinding::Source::Input: {
-        const auto entry = vm::object_entry_of(vm::IoArea::Input, event.input_byte);
-        const std::uint8_t mask = static_cast<std::uint8_t>(1U << event.input_bit);
-        // The bit's level after the last write (shared: the dictionary may copy its listeners);
-        // an edge is 0 -> 1.
-        dictionary_.objects().on_change(
-            entry->index, [this, raise, byte = event.input_byte, mask,
-                           level = std::make_shared<bool>(false)](std::uint16_t, std::uint8_t) {
-                const bool now = (plc_.runtime().process_image().inputs()[byte] & mask) != 0;
-                if (now && !*level) {
-                    raise();
-                }
-                *level = now;
-            });
-        break;
-    }
-    }
-    return std::nullopt;
+    return event_tasks_->bind(event);
 }
 
 void EposP::follow_sync() {
@@ -181,9 +133,7 @@ void EposP::follow_sync() {
     // What the axes run goes on when no block of theirs is called: with the TPDOs in, as the
     // tasks of the cycle see them (DESIGN.md, "One communication cycle").
     loop_.after(delay, [this] { motion_->poll(); });
-    for (const std::string& task : sync_tasks_) {
-        raise_event_task(plc_.runtime(), task);
-    }
+    event_tasks_->on_sync();
 }
 
 NetworkPort& EposP::network_port(std::uint8_t port) {

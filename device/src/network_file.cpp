@@ -12,7 +12,6 @@
 #include "eposp/yaml/reader.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <map>
 #include <set>
 #include <string>
@@ -153,17 +152,13 @@ NetworkSlave read_slave(Reader& in, const YAML::Node& node, const std::filesyste
 
 // "%IX4.2": byte 4, bit 2 of the process input image.
 void read_input_bit(Reader& in, const YAML::Node& value, EventBinding& event) {
-    const auto text = in.scalar<std::string>(value, "input");
-    unsigned byte = 0;
-    unsigned bit = 0;
-    char end = 0;
-    if (std::sscanf(text.c_str(), "%%IX%u.%u%c", &byte, &bit, &end) != 2 ||
-        byte >= vm::kProcessImageSize || bit > 7) {
+    const auto bit = parse_input_bit(in.scalar<std::string>(value, "input"));
+    if (!bit) {
         in.fail(value, fmt::format("input must be a process input bit %IX0.0 .. %IX{}.7",
                                    vm::kProcessImageSize - 1));
     }
-    event.input_byte = byte;
-    event.input_bit = static_cast<std::uint8_t>(bit);
+    event.input_byte = bit->first;
+    event.input_bit = bit->second;
 }
 
 EventBinding read_event(Reader& in, const YAML::Node& node) {
@@ -213,7 +208,7 @@ EventBinding read_event(Reader& in, const YAML::Node& node) {
         in.fail(node, "an event needs its 'task' and what it is 'on'");
     }
     if (event.source == EventBinding::Source::Rpdo &&
-        (event.rpdo == 0 || (event.port == kInternalPort && event.rpdo > 4))) {
+        (event.rpdo == 0 || event.rpdo > last_rpdo(event.port))) {
         in.fail(rpdo_node.value_or(node),
                 "an rpdo event needs 'rpdo': 1..32 on the CAN port, 1..4 on the internal one");
     }

@@ -35,7 +35,27 @@ Plc::Plc(core::EventLoop& loop, vm::RuntimeConfig config)
           }
       }) {}
 
+std::optional<core::Error> Plc::load(vm::Image image) {
+    if (load_observer_ != nullptr) {
+        if (auto refusal = load_observer_->check(image)) {
+            return refusal;
+        }
+    }
+    if (auto refusal = runtime_.load(std::move(image))) {
+        return refusal;
+    }
+    if (load_observer_ != nullptr) {
+        load_observer_->loaded(runtime_.image());
+    }
+    return std::nullopt;
+}
+
 std::optional<core::Error> Plc::verify(vm::Image image) const {
+    if (load_observer_ != nullptr) {
+        if (auto refusal = load_observer_->check(image)) {
+            return refusal;
+        }
+    }
     vm::PlcRuntime scratch(loop_, natives_, scratch_config_, [](std::uint16_t, std::string) {});
     return scratch.load(std::move(image));
 }

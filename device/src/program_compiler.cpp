@@ -1,5 +1,6 @@
 #include "eposp/device/program_compiler.hpp"
 
+#include "eposp/device/event_binding.hpp"
 #include "eposp/plcopen/motion_library.hpp"
 
 namespace eposp::device {
@@ -9,7 +10,13 @@ std::optional<vm::Image> compile_program(compiler::SourceManager& sources,
                                          compiler::Diagnostics& diagnostics) {
     const compiler::FileId motion =
         sources.add("<motion library>", plcopen::MotionLibrary::source());
-    return compiler::compile(sources, files, diagnostics, std::span(&motion, 1));
+    compiler::CompileOptions options;
+    // The TASKs' {attribute 'event' := '…'} name the EPOS P's events (docs/network.md, "Events").
+    options.task_event_check = [](std::string_view text) -> std::optional<std::string> {
+        const auto event = parse_event(text);
+        return event ? std::nullopt : std::optional(event.error());
+    };
+    return compiler::compile(sources, files, diagnostics, std::span(&motion, 1), options);
 }
 
 } // namespace eposp::device

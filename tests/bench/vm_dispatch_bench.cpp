@@ -98,7 +98,11 @@ Image assemble_sort() {
     b.emit(Opcode::Add32, v(kChecksum), v(kChecksum), v(kT2));
     b.emit(Opcode::Ret);
     b.end_body(0);
-    b.task(Task{"MainTask", TaskKind::Cyclic, 1'000'000, 0, 0, 256, {{main, instance}}});
+    b.task(Task{.name = "MainTask",
+                .kind = TaskKind::Cyclic,
+                .interval_ns = 1'000'000,
+                .stack_size = 256,
+                .entries = {{main, instance}}});
     return std::move(*b.finish());
 }
 

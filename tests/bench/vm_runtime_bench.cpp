@@ -40,13 +40,12 @@ Image counting_tasks(const std::vector<std::optional<std::int32_t>>& iterations_
         b.jump(Opcode::JLtI32, loop, Operand::self(0), Operand::self(4));
         b.emit(Opcode::Ret);
         b.end_body(0, 0);
-        b.task(Task{"T" + std::to_string(t),
-                    TaskKind::Cyclic,
-                    1'000'000,
-                    0,
-                    t,
-                    64,
-                    {TaskEntry{pou, instance}}});
+        b.task(Task{.name = "T" + std::to_string(t),
+                    .kind = TaskKind::Cyclic,
+                    .interval_ns = 1'000'000,
+                    .priority = t,
+                    .stack_size = 64,
+                    .entries = {TaskEntry{pou, instance}}});
     }
     auto image = b.finish();
     if (!image) {

@@ -179,13 +179,11 @@ public:
         b.emit(Opcode::Ldi8, self(kTaken), imm(1));
         b.emit(Opcode::Ret);
         harness_.end_main(64, 64);
-        harness_.builder.task(Task{"T",
-                                   TaskKind::Cyclic,
-                                   1'000'000,
-                                   0,
-                                   0,
-                                   4096,
-                                   {TaskEntry{harness_.main, harness_.instance}}});
+        harness_.builder.task(Task{.name = "T",
+                                   .kind = TaskKind::Cyclic,
+                                   .interval_ns = 1'000'000,
+                                   .stack_size = 4096,
+                                   .entries = {TaskEntry{harness_.main, harness_.instance}}});
         auto image = harness_.builder.finish();
         if (!image) {
             ADD_FAILURE() << image.error();

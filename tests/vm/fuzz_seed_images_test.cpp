@@ -65,7 +65,11 @@ Image string_loop_image() {
     b.emit(Opcode::Ret);
     b.end_body(0, 24);
 
-    b.task(Task{"MainTask", TaskKind::Cyclic, 10'000'000, 0, 0, 256, {{main, instance}}});
+    b.task(Task{.name = "MainTask",
+                .kind = TaskKind::Cyclic,
+                .interval_ns = 10'000'000,
+                .stack_size = 256,
+                .entries = {{main, instance}}});
     return std::move(*b.finish());
 }
 

@@ -58,6 +58,25 @@ TEST(ImageFormat, AReadOnlyAccessPathStaysReadOnly) {
     EXPECT_FALSE(read->symbols.front().read_only);
 }
 
+TEST(ImageFormat, EventTasksKeepTheirSingleVariableAndTheirHostEvent) {
+    auto image = sample_image();
+    Task by_event = image.tasks.front();
+    by_event.name = "OnSync";
+    by_event.kind = TaskKind::Event;
+    by_event.interval_ns = 0;
+    by_event.event = "rpdo internal 1";
+    Task by_both = by_event;
+    by_both.name = "OnBoth";
+    by_both.event_offset = 0;
+    image.tasks.push_back(by_event);
+    image.tasks.push_back(by_both);
+    const auto read = read_image(write_image(image));
+    ASSERT_TRUE(read) << read.error();
+    EXPECT_EQ(read->tasks, image.tasks);
+    EXPECT_FALSE(read->tasks[1].event_offset);
+    EXPECT_EQ(read->tasks[2].event_offset, 0u);
+}
+
 void set_u32(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) {
         bytes[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
@@ -99,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(
         Corruption{"Empty", [](auto& b) { b.clear(); }, "not a program image (bad magic)"},
         Corruption{"HeaderCut", [](auto& b) { b.resize(10); }, "truncated image header"},
         Corruption{"OtherVersion", [](auto& b) { b[4] = 99; },
-                   "image version 99 is not supported (expected 4)"},
+                   "image version 99 is not supported (expected 5)"},
         Corruption{"ReservedHeaderByte", [](auto& b) { b[7] = 9; },
                    "reserved header bytes are not zero"},
         Corruption{"FlippedBit", [](auto& b) { b[40] ^= 0x10; },

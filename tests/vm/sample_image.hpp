@@ -61,7 +61,12 @@ inline Image sample_image() {
     b.symbol("Inst0.counter", dint, instance);
     b.binding(IoBinding{IoArea::Input, Scalar::I16, 4, 0, input});
     b.retain(instance, 4);
-    b.task(Task{"MainTask", TaskKind::Cyclic, 1'000'000, 0, 1, 1024, {{main, instance}}});
+    b.task(Task{.name = "MainTask",
+                .kind = TaskKind::Cyclic,
+                .interval_ns = 1'000'000,
+                .priority = 1,
+                .stack_size = 1024,
+                .entries = {{main, instance}}});
     return std::move(*b.finish());
 }
 

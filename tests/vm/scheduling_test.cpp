@@ -122,8 +122,11 @@ TEST(Suspension, AnotherTaskRunsOnItsOwnStackWhileTheFirstIsSuspended) {
     const auto second_instance = h.builder.allocate(Harness::kInstanceSize, 8);
     const std::uint8_t last[] = {63, 0, 0, 0};
     h.builder.initialise(second_instance + 16, last);
-    h.builder.task(
-        Task{"Fast", TaskKind::Cyclic, 100'000, 0, 0, 4096, {TaskEntry{h.main, second_instance}}});
+    h.builder.task(Task{.name = "Fast",
+                        .kind = TaskKind::Cyclic,
+                        .interval_ns = 100'000,
+                        .stack_size = 4096,
+                        .entries = {TaskEntry{h.main, second_instance}}});
     ASSERT_EQ(h.load(), "");
     h.machine->start(1, 0);
     ASSERT_EQ(h.machine->run(1, 500), RunState::Suspended);

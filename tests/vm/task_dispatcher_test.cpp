@@ -82,13 +82,15 @@ public:
             const auto pou = b.declare_pou(spec.name + "Program", PouKind::Program, 8);
             const auto instance = b.allocate(8, 4);
             emit_busy_program(b, pou, instance, spec.instructions);
-            b.task(Task{spec.name,
-                        spec.kind,
-                        spec.interval_ns,
-                        0,
-                        spec.priority,
-                        64,
-                        {TaskEntry{pou, instance}}});
+            b.task(Task{.name = spec.name,
+                        .kind = spec.kind,
+                        .interval_ns = spec.interval_ns,
+                        .event_offset = spec.kind == TaskKind::Event
+                                            ? std::optional<std::uint32_t>(0)
+                                            : std::nullopt,
+                        .priority = spec.priority,
+                        .stack_size = 64,
+                        .entries = {TaskEntry{pou, instance}}});
             timeline.names.push_back(spec.name);
         }
         auto linked = link(*b.finish(), natives_);
@@ -183,8 +185,8 @@ TEST(TaskDispatcher, AlignMovesTasksWhoseIntervalIsAMultipleOfTheClockOntoItsGri
     d.dispatcher->align(core::TimePoint{4800us}, 1ms);
     d.timeline.events.clear();
     d.loop.run_until(core::TimePoint{4800us});
-    EXPECT_EQ(d.timeline.events,
-              (std::vector<std::string>{"4500 begin Odd", "4600 end Odd", "4700 begin One", "4800 end One"}));
+    EXPECT_EQ(d.timeline.events, (std::vector<std::string>{"4500 begin Odd", "4600 end Odd",
+                                                           "4700 begin One", "4800 end One"}));
 }
 
 TEST(TaskDispatcher, CyclicTaskStillRunningAtItsNextReleaseIsATimerTaskError) {

@@ -146,6 +146,10 @@ INSTANTIATE_TEST_SUITE_P(
                          i.tasks[0].event_offset = i.static_size;
                      },
                      "event variable outside static data"},
+        Malformation{"CyclicTaskWithAnEvent", [](Image& i) { i.tasks[0].event = "sync"; },
+                     "cyclic task with an event"},
+        Malformation{"CyclicTaskWithASingleVariable", [](Image& i) { i.tasks[0].event_offset = 0; },
+                     "cyclic task with an event"},
         Malformation{"TypeReferringForward", [](Image& i) { i.types[2].element = 3; },
                      "bad element type or size"},
         Malformation{"ArrayTypeOfWrongSize", [](Image& i) { i.types[2].size = 12; },

@@ -37,13 +37,11 @@ public:
 
     /// Adds the task running Main, finishes, links and prepares the machine. Empty on success.
     std::string load(std::uint32_t stack_size = 4096) {
-        builder.task(Task{"MainTask",
-                          TaskKind::Cyclic,
-                          1'000'000,
-                          0,
-                          0,
-                          stack_size,
-                          {TaskEntry{main, instance}}});
+        builder.task(Task{.name = "MainTask",
+                          .kind = TaskKind::Cyclic,
+                          .interval_ns = 1'000'000,
+                          .stack_size = stack_size,
+                          .entries = {TaskEntry{main, instance}}});
         auto image = builder.finish();
         if (!image) {
             return image.error();

@@ -72,9 +72,16 @@ void tables(const Image& image, std::string& out) {
                        image.code.size(), image.static_size);
     out += "tasks:\n";
     for (const auto& task : image.tasks) {
-        out += task.kind == TaskKind::Cyclic
-                   ? fmt::format("  {} INTERVAL {} ns", task.name, task.interval_ns)
-                   : fmt::format("  {} SINGLE s+{}", task.name, task.event_offset);
+        out += fmt::format("  {}", task.name);
+        if (task.kind == TaskKind::Cyclic) {
+            out += fmt::format(" INTERVAL {} ns", task.interval_ns);
+        }
+        if (task.event_offset) {
+            out += fmt::format(" SINGLE s+{}", *task.event_offset);
+        }
+        if (!task.event.empty()) {
+            out += fmt::format(" EVENT '{}'", task.event);
+        }
         out += fmt::format(" PRIORITY {} stack {}:", task.priority, task.stack_size);
         for (const auto& entry : task.entries) {
             out += fmt::format(" {}@s+{}", name_or_index(image.pous, entry.pou), entry.instance);

@@ -148,7 +148,12 @@ void describe_tasks(Io& io, std::vector<Task>& tasks) {
         io.string(t.name);
         io.enumerator(t.kind, TaskKind::Event, "task kind");
         io.u64(t.interval_ns);
-        io.u32(t.event_offset);
+        bool single = t.event_offset.has_value();
+        std::uint32_t offset = t.event_offset.value_or(0);
+        io.boolean(single);
+        io.u32(offset);
+        t.event_offset = single ? std::optional(offset) : std::nullopt;
+        io.string(t.event);
         io.u32(t.priority);
         io.u32(t.stack_size);
         io.list(t.entries, 8, [&](TaskEntry& e) {

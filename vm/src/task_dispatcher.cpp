@@ -67,12 +67,12 @@ void TaskDispatcher::release_on_rising_edges() {
     const auto memory = machine_.memory();
     for (std::size_t task = 0; task < slots_.size(); ++task) {
         Slot& slot = slots_[task];
-        if (slot.spec->kind != TaskKind::Event || slot.faulted) {
+        if (!slot.spec->event_offset || slot.faulted) {
             continue;
         }
         // IEC 61131-3 6.8.2: SINGLE fires on the rising edge; before the start it counts as
         // FALSE, so a variable initialised TRUE releases the task once at the start.
-        const bool level = memory[slot.spec->event_offset] != 0;
+        const bool level = memory[*slot.spec->event_offset] != 0;
         if (level && !slot.event_level && running_) {
             release(task, loop_.now(), error_code::kInterruptTask);
         }

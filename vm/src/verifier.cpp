@@ -268,7 +268,10 @@ Defect verify_tasks(const Image& image) {
         if (task.kind == TaskKind::Cyclic && task.interval_ns == 0) {
             return defect(where + ": cyclic task without an interval");
         }
-        if (task.kind == TaskKind::Event && !fits(task.event_offset, 1, image.static_size)) {
+        if (task.kind == TaskKind::Cyclic && (task.event_offset || !task.event.empty())) {
+            return defect(where + ": cyclic task with an event");
+        }
+        if (task.event_offset && !fits(*task.event_offset, 1, image.static_size)) {
             return defect(where + ": event variable outside static data");
         }
         stacks += task.stack_size;

@@ -36,9 +36,8 @@ vm::PouKind vm_kind(ast::PouKind kind) {
 } // namespace
 
 ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnostics& diagnostics,
-                                   bool if_conversion)
-    : program_(program), library_(library), diagnostics_(diagnostics),
-      if_conversion_(if_conversion),
+                                   const CompileOptions& options)
+    : program_(program), library_(library), diagnostics_(diagnostics), options_(options),
       types_(
           program.model, diagnostics, [this](std::string_view name) { return library_pou(name); },
           [this](const ast::VariableDeclaration& declaration) {
@@ -396,6 +395,7 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
                     task.priority = static_cast<std::uint32_t>(*priority);
                 }
             }
+            bind_task_event(declaration, task);
             if (declaration.single) {
                 task.kind = vm::TaskKind::Event;
                 const auto* name = std::get_if<ast::NameExpression>(&declaration.single->node);
@@ -406,7 +406,7 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
                 } else {
                     task.event_offset = place->operand.offset();
                 }
-            } else {
+            } else if (task.event.empty()) {
                 task.interval_ns = task_interval(declaration);
             }
             task_of.push_back(tasks_.size());
@@ -454,6 +454,32 @@ void ProgramGenerator::connect_programs() {
         PouGenerator generator(*this, program_.model, *connected.program, wrapper);
         pou_frames_total_ += generator.generate_connections(*connected.instance, entry.pou);
         entry.pou = wrapper;
+    }
+}
+
+void ProgramGenerator::bind_task_event(const ast::TaskDeclaration& declaration, vm::Task& task) {
+    for (const ast::Attribute& attribute : declaration.attributes) {
+        if (sema::fold_case(attribute.name) != sema::fold_case("event")) {
+            continue; // an attribute of another tool
+        }
+        if (!task.event.empty()) {
+            diagnostics_.error(attribute.range,
+                               "task '" + task.name + "' is already released by an event");
+        } else if (declaration.interval) {
+            diagnostics_.error(attribute.range, "task '" + task.name +
+                                                    "' has an INTERVAL: a task released by an "
+                                                    "event is not cyclic");
+        } else if (attribute.value.empty()) {
+            diagnostics_.error(attribute.range,
+                               "the attribute names the event: {attribute 'event' := 'sync'}");
+        } else if (const auto refusal = options_.task_event_check
+                                            ? options_.task_event_check(attribute.value)
+                                            : std::nullopt) {
+            diagnostics_.error(attribute.range, "event '" + attribute.value + "': " + *refusal);
+        } else {
+            task.kind = vm::TaskKind::Event;
+            task.event = attribute.value;
+        }
     }
 }
 

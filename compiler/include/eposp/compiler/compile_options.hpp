@@ -2,8 +2,11 @@
 
 #include "eposp/compiler/source_location.hpp"
 
+#include <functional>
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace eposp::compiler {
@@ -26,6 +29,10 @@ struct CompileOptions {
     /// Coverage compiles turn it off, so that every IF has a branch whose outcomes are counted;
     /// the program's results are the same either way.
     bool if_conversion = true;
+    /// Whether the host releases event tasks on the event a TASK's `{attribute 'event' :=
+    /// '…'}` names: nothing if it does, else why not (reported at the attribute). Unset: every
+    /// text is kept in the image for the host to judge when it loads the program.
+    std::function<std::optional<std::string>(std::string_view)> task_event_check{};
 };
 
 } // namespace eposp::compiler

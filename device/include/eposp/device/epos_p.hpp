@@ -20,6 +20,7 @@
 namespace eposp::device {
 
 class DeviceAxisLink;
+class EventTasks;
 class ManufacturerStatus;
 class NetworkPort;
 class ProgramStore;
@@ -139,7 +140,6 @@ private:
     void follow_sync();
 
     core::EventLoop loop_;
-    std::vector<std::string> sync_tasks_; ///< event tasks released at each SYNC, by name
     can::VirtualBus internal_bus_;
     std::unique_ptr<can::VirtualPort> internal_port_;
     std::unique_ptr<can::VirtualPort> internal_drive_port_;
@@ -154,6 +154,7 @@ private:
     std::unique_ptr<DeviceAxisLink> axis_link_;
     std::unique_ptr<plcopen::MotionLibrary> motion_; ///< its blocks are natives of plc_
     std::unique_ptr<ManufacturerStatus> manufacturer_status_;
+    std::unique_ptr<EventTasks> event_tasks_; ///< plc_ asks it at each load
     std::unique_ptr<ProgramStore> program_store_;
     std::uint16_t stored_program_control_ = 0; ///< 0x5F51 as stored: the boot-up state
     std::vector<std::unique_ptr<can::VirtualPort>> slave_ports_;

@@ -4,6 +4,7 @@
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/core/result.hpp"
 #include "eposp/core/time.hpp"
+#include "eposp/device/event_binding.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
 #include "eposp/manager/network_list.hpp"
 
@@ -41,23 +42,6 @@ struct NetworkSlave {
     /// A simulated slave's machine: motor, load, switches … (an axis file, as `eposp drive
     /// epos2 --config` reads); the reference axis without one.
     std::optional<drives::plant::AxisParameters> plant;
-};
-
-/// A device event that releases an event task of the program (docs/network.md, "Events").
-struct EventBinding {
-    enum class Source : std::uint8_t {
-        Sync,  ///< each SYNC the EPOS P sends
-        Emcy,  ///< an EMCY from `node` (any node without one) on `port`
-        Rpdo,  ///< the data of RPDO `rpdo` of `port` stored
-        Input, ///< a rising edge of process input bit %IX`input_byte`.`input_bit`
-    };
-    std::string task;
-    Source source = Source::Sync;
-    std::uint8_t port = 2;
-    std::optional<canopen::NodeId> node;
-    std::size_t rpdo = 0;
-    std::uint32_t input_byte = 0;
-    std::uint8_t input_bit = 0;
 };
 
 /// What a user writes instead of setting objects one by one.

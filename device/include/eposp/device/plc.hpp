@@ -27,17 +27,28 @@ struct RaisedError {
 /// Neither copyable nor movable: the runtime refers to the natives and the error sink to this.
 class Plc {
 public:
+    /// What the device adds to loading a program: a check that may refuse it (load() and
+    /// verify() ask it), and what it sets up once the program is in.
+    class LoadObserver {
+    public:
+        virtual ~LoadObserver() = default;
+        virtual std::optional<core::Error> check(const vm::Image& image) const = 0;
+        virtual void loaded(const vm::Image& image) = 0;
+    };
+
     Plc(core::EventLoop& loop, vm::RuntimeConfig config);
     Plc(const Plc&) = delete;
     Plc& operator=(const Plc&) = delete;
 
     /// Verifies, links and loads a program image; the error says why it cannot run. The program
     /// does not start: runtime().start() starts it.
-    std::optional<core::Error> load(vm::Image image) { return runtime_.load(std::move(image)); }
+    std::optional<core::Error> load(vm::Image image);
     /// Whether load() would accept `image`, leaving the loaded program alone: verified and linked
     /// on a scratch runtime of the same natives and settings (a download is checked this way
     /// before it replaces anything).
     std::optional<core::Error> verify(vm::Image image) const;
+    /// Lets `observer`, which outlives this, check and follow each load from now on.
+    void observe_loads(LoadObserver& observer) { load_observer_ = &observer; }
 
     vm::PlcRuntime& runtime() { return runtime_; }
     /// The natives programs link against; more (the motion blocks) are added before a load.
@@ -60,6 +71,7 @@ private:
     std::vector<RaisedError> errors_;
     std::function<void(const RaisedError&)> error_handler_;
     vm::RuntimeConfig scratch_config_; ///< verify()'s runtime: the limits without a RETAIN store
+    LoadObserver* load_observer_ = nullptr;
     vm::PlcRuntime runtime_;
 };
 

@@ -8,7 +8,8 @@
 namespace eposp::device {
 
 /// Compiles the files of one program for the EPOS P: with the motion library linked, so that a
-/// program uses AXIS_REF and the MC_* blocks without declaring them (plcopen::MotionLibrary).
+/// program uses AXIS_REF and the MC_* blocks without declaring them (plcopen::MotionLibrary),
+/// and with the device's events for the TASKs that name one.
 std::optional<vm::Image> compile_program(compiler::SourceManager& sources,
                                          std::span<const compiler::FileId> files,
                                          compiler::Diagnostics& diagnostics);

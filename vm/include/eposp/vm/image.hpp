@@ -4,6 +4,7 @@
 #include "eposp/vm/scalar.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,7 +12,7 @@ namespace eposp::vm {
 
 /// Bumped whenever the binary layout or the meaning of an opcode changes; the loader refuses
 /// other versions.
-inline constexpr std::uint16_t kImageVersion = 4;
+inline constexpr std::uint16_t kImageVersion = 5;
 
 /// Memory addresses (pointer values, static offsets) below this are never valid data: a
 /// pointer of 0 is NULL and dereferencing anything in the guard traps.
@@ -85,14 +86,19 @@ struct TaskEntry {
     bool operator==(const TaskEntry&) const = default;
 };
 
-/// IEC 61131-3 TASK: cyclic (INTERVAL) or on the rising edge of a BOOL (SINGLE).
+/// IEC 61131-3 TASK: cyclic (INTERVAL), or an event task released on the rising edge of a BOOL
+/// (SINGLE), by an event of the host, or both.
 struct Task {
     std::string name;
     TaskKind kind = TaskKind::Cyclic;
-    std::uint64_t interval_ns = 0;  ///< cyclic tasks
-    std::uint32_t event_offset = 0; ///< event tasks: the static BOOL whose rising edge fires
-    std::uint32_t priority = 0;     ///< 0 is the highest
-    std::uint32_t stack_size = 0;   ///< bytes of function frames
+    std::uint64_t interval_ns = 0; ///< cyclic tasks
+    /// Event tasks: the static BOOL whose rising edge releases it (SINGLE); none without SINGLE.
+    std::optional<std::uint32_t> event_offset{};
+    /// Event tasks: the host's event that releases it, as the program names it (`{attribute
+    /// 'event' := 'sync'}` on the TASK); the host judges the text. Empty: none.
+    std::string event{};
+    std::uint32_t priority = 0;   ///< 0 is the highest
+    std::uint32_t stack_size = 0; ///< bytes of function frames
     std::vector<TaskEntry> entries;
     bool operator==(const Task&) const = default;
 };

@@ -96,7 +96,16 @@ struct Pou {
     SourceRange range;
 };
 
+/// A CODESYS attribute pragma written above a declaration: `{attribute 'name' := 'value'}`, or
+/// `{attribute 'name'}` with an empty value.
+struct Attribute {
+    std::string name;
+    std::string value;
+    SourceRange range;
+};
+
 struct TaskDeclaration {
+    std::vector<Attribute> attributes; ///< the attribute pragmas above it, in order
     Identifier name;
     ExpressionPtr single;   // null: cyclic or without trigger
     ExpressionPtr interval; // null: event task
