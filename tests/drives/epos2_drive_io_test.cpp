@@ -2,6 +2,7 @@
 // simulated EPOS2 on the CAN-only bench (EPOS2 FW spec 6.3, 6.4, 8.2.56 - 8.2.61, 8.2.72): pins
 // driven through Epos2Drive's I/O interface, everything else as a master sees it.
 #include "epos2_bus_fixture.hpp"
+#include "eposp/drives/epos2/epos2_io.hpp"
 
 #include <optional>
 #include <stdexcept>
@@ -253,6 +254,35 @@ TEST_F(Epos2DriveIo, BrakeRiseTimeKeepsThePowerStageOnAfterShutdown) {
         ++powered_ms;
     }
     EXPECT_NEAR(powered_ms, 40, 2);
+}
+
+// 8.2.60: the brake output changes in a power-disabled state only (0x08000022 otherwise).
+TEST_F(Epos2DriveIo, BrakeOutputChangeIsRefusedWhileThePowerStageIsOn) {
+    configure_and_enable(1);
+    std::optional<AbortCode> result;
+    client.download(kNode, 0x2079, 1, encode(std::uint16_t{2}),
+                    [&result](AbortCode code) { result = code; });
+    loop.run_for(20ms);
+    EXPECT_EQ(result, AbortCode::DeviceState);
+    write(0x2079, 1, encode(std::uint16_t{14})); // general purpose B: no brake involved
+    controlword(kShutdown);
+    run_with_sync(5ms);
+    write(0x2079, 1, encode(std::uint16_t{2}));
+}
+
+// The first control period compares no passage: the position before it is unknown, not 0.
+TEST(Epos2Io, FirstPeriodPassesNoComparePosition) {
+    Epos2Dictionary dictionary{Epos2DictionaryConfig{}};
+    canopen::ObjectDictionary& od = dictionary.objects();
+    od.set_as(0x2079, 1, std::uint16_t{1});      // output 1: position compare
+    od.set_as(0x2078, 2, std::uint16_t{0x0002}); // under the mask
+    od.set_as(0x207A, 2, std::int32_t{100});
+    od.set_as(0x207A, 1, std::uint16_t{0x0041}); // single position, both directions
+    Epos2Io io(od);
+    io.update({.now = 0.001, .position = 5000});
+    EXPECT_FALSE(io.output(1));
+    io.update({.now = 0.002, .position = 50});
+    EXPECT_TRUE(io.output(1)) << "passed 100 downwards";
 }
 
 // Without a brake output the power stage follows the device control at once (no delays).

@@ -67,6 +67,34 @@ Epos2Io::Epos2Io(canopen::ObjectDictionary& od) : od_(od) {
     od.on_change(0x2210, [this](std::uint16_t, std::uint8_t) { read_compare(); });
     od.on_change(0x2100, [this](std::uint16_t, std::uint8_t) { read_brake(); });
     od.on_change(0x2101, [this](std::uint16_t, std::uint8_t) { read_brake(); });
+    guard_brake_output();
+}
+
+// 8.2.60: "Changes for Holding Brake Configuration are only supported in 'Disable' state": an
+// output becoming or ceasing to be the brake output is refused while the power stage is on.
+void Epos2Io::guard_brake_output() {
+    constexpr auto kBrake = static_cast<std::uint16_t>(OutputFunction::HoldingBrake);
+    for (std::uint8_t n = 1; n <= kDigitalOutputCount; ++n) {
+        canopen::SubObject& entry = *od_.find(0x2079, n);
+        entry.on_write = [this, n, checked = entry.on_write](std::span<const std::uint8_t> value) {
+            if (checked) {
+                if (const canopen::AbortCode code = checked(value);
+                    code != canopen::AbortCode::None) {
+                    return code;
+                }
+            }
+            const auto now = canopen::decode<std::uint16_t>(value);
+            const auto before = od_.get_as<std::uint16_t>(0x2079, n);
+            const bool brake_changes = now != before && (now == kBrake || before == kBrake);
+            return brake_changes && power_stage_on_ ? canopen::AbortCode::DeviceState
+                                                    : canopen::AbortCode::None;
+        };
+    }
+}
+
+bool Epos2Io::power_stage(double now, bool requested, bool fault, double velocity_averaged) {
+    power_stage_on_ = brake_.power_stage(now, requested, fault, velocity_averaged);
+    return power_stage_on_;
 }
 
 void Epos2Io::reload() {
@@ -206,7 +234,8 @@ IoReaction Epos2Io::update(const IoSample& sample) {
                                    static_cast<std::int32_t>(sample.position));
     store_marker();
 
-    const bool compare = compare_.update(sample.now, position_before_, sample.position);
+    const bool compare =
+        compare_.update(sample.now, position_before_.value_or(sample.position), sample.position);
     position_before_ = sample.position;
 
     std::uint16_t firmware = 0;

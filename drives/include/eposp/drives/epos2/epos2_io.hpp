@@ -10,6 +10,7 @@
 #include "eposp/drives/plant/shaft_sensors.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace eposp::drives::epos2 {
@@ -22,7 +23,7 @@ struct IoSample {
     bool power_stage_on = false;
     bool homing_mode = false; ///< 0x6061 = 6: the switches are references, not limits
     bool homing_in_progress = false;
-    plant::SwitchStates machine_switches; ///< the machine's switches at the axis' position
+    plant::SwitchStates machine_switches{}; ///< the machine's switches at the axis' position
 };
 
 /// What the executed inputs ask of the drive (8.2.57, table 8-89).
@@ -52,9 +53,7 @@ public:
     /// outputs.
     IoReaction update(const IoSample& sample);
     /// The power stage as the holding brake lets it follow the device control (8.2.72).
-    bool power_stage(double now, bool requested, bool fault, double velocity_averaged) {
-        return brake_.power_stage(now, requested, fault, velocity_averaged);
-    }
+    bool power_stage(double now, bool requested, bool fault, double velocity_averaged);
     /// Whether Measure Init may end: the brake has let go for its fall time.
     bool operation_may_start(double now) const { return brake_.operation_may_start(now); }
 
@@ -83,6 +82,7 @@ private:
     void counter_written();
     void store_marker();
     void store_firmware_outputs(std::uint16_t bits);
+    void guard_brake_output();
 
     canopen::ObjectDictionary& od_;
     DigitalInputs inputs_;
@@ -93,9 +93,10 @@ private:
     EdgeDetector limit_edges_;  ///< sampled while the power stage is on, outside Fault
     EdgeDetector device_edges_; ///< quickstop and device enable, every period
     bool homing_before_ = false;
-    std::int64_t position_before_ = 0;
-    std::uint16_t general_purpose_outputs_ = 0; ///< 0x2078 sub 1, bits 8 … 15
-    std::uint16_t firmware_outputs_ = 0;        ///< 0x2078 sub 1, bits 0 … 7
+    bool power_stage_on_ = false;
+    std::optional<std::int64_t> position_before_; ///< none before the first period
+    std::uint16_t general_purpose_outputs_ = 0;   ///< 0x2078 sub 1, bits 8 … 15
+    std::uint16_t firmware_outputs_ = 0;          ///< 0x2078 sub 1, bits 0 … 7
     struct MarkerValues {
         std::int32_t captured, history1, history2;
         std::uint16_t counter;
