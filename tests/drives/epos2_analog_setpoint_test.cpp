@@ -111,5 +111,42 @@ TEST_F(Epos2DriveOnBus, ExecutedAnalogSetpointWithoutAnInputLeavesTheSettingValu
     EXPECT_EQ(drive.objects().get_as<std::int32_t>(0x606B, 0), 300);
 }
 
+class AnalogConfiguration : public Epos2DriveOnBus {
+public:
+    std::optional<canopen::AbortCode> try_write(std::uint16_t index, std::uint8_t sub,
+                                                canopen::Bytes value) {
+        std::optional<canopen::AbortCode> result;
+        client.download(kNode, index, sub, std::move(value),
+                        [&result](canopen::AbortCode code) { result = code; });
+        loop.run_for(20ms);
+        return result;
+    }
+};
+
+// 8.2.62, 8.2.81 - 8.2.83: "Changes are only supported in Disable state": refused with 0x08000022
+// (table 4-12, wrong device state) while the power stage is on, accepted again once it is off.
+TEST_F(AnalogConfiguration, ChangesAreRefusedWhileThePowerStageIsOn) {
+    configure_and_enable(kCurrentMode);
+    EXPECT_EQ(try_write(0x2301, 1, encode(std::int16_t{100})), canopen::AbortCode::DeviceState);
+    EXPECT_EQ(try_write(0x2303, 3, encode(std::int8_t{-1})), canopen::AbortCode::DeviceState);
+    EXPECT_EQ(try_write(0x207B, 1, encode(std::uint16_t{0})), canopen::AbortCode::DeviceState);
+    EXPECT_EQ(read<std::int16_t>(0x2301, 1), 0);
+    controlword(kShutdown);
+    run_with_sync(10ms);
+    EXPECT_EQ(try_write(0x2301, 1, encode(std::int16_t{100})), canopen::AbortCode::None);
+    EXPECT_EQ(try_write(0x207B, 1, encode(std::uint16_t{0})), canopen::AbortCode::None);
+}
+
+// 8.2.62: "A functionality can only be assigned to one of the two analog inputs at the same
+// time": the other input's functionality is refused (0x06040043, general parameter
+// incompatibility).
+TEST_F(AnalogConfiguration, OneFunctionalityIsAssignedToOneInputOnly) {
+    write(0x207B, 1, encode(std::uint16_t{1}));
+    EXPECT_EQ(try_write(0x207B, 2, encode(std::uint16_t{1})),
+              canopen::AbortCode::ParameterIncompatibility);
+    EXPECT_EQ(read<std::uint16_t>(0x207B, 2), 14U) << "unchanged: general purpose B";
+    EXPECT_EQ(try_write(0x207B, 2, encode(std::uint16_t{0})), canopen::AbortCode::None);
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

@@ -67,6 +67,8 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     watch_dictionary();
     compute_measured_values();
     compute_analog_setpoints(dictionary_.objects());
+    guard_analog_configuration(dictionary_.objects(),
+                               [this] { return device_control_.outputs().power_stage_on; });
     node_.on_reset_application([this] { reset_application(); });
     // The remote bit changes with the NMT state, between two control periods: stored at once, so
     // that the first TPDO in Operational carries it.
