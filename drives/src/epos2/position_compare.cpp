@@ -23,8 +23,7 @@ constexpr unsigned kSequenceMode = 1;
 constexpr unsigned kNegativeIntervals = 0;
 constexpr unsigned kPositiveIntervals = 1;
 constexpr unsigned kBothIntervals = 2;
-constexpr unsigned kNegativeDirection = 0;
-constexpr unsigned kPositiveDirection = 1;
+constexpr unsigned kPositiveDirection = 1; // 0: negative
 constexpr unsigned kBothDirections = 2;
 
 // Control periods are whole microseconds; their times in seconds are doubles.
