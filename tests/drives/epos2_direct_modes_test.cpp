@@ -186,6 +186,51 @@ TEST_F(DirectModes, HaltBitIsReservedInVelocityMode) {
     EXPECT_NEAR(velocity_rpm(), 500, 35);
 }
 
+TEST_F(DirectModes, HaltBitIsReservedInPositionMode) {
+    limit_profile();
+    configure_and_enable(kPositionMode);
+    controlword(kEnableOperation | kHalt);
+    write(0x2062, 0, encode(std::int32_t{-5000}));
+    run_with_sync(600ms);
+    EXPECT_NEAR(position(), -5000, 5);
+}
+
+TEST_F(DirectModes, HaltBitIsReservedInCurrentMode) {
+    configure_and_enable(kCurrentMode);
+    controlword(kEnableOperation | kHalt);
+    write(0x2030, 0, encode(std::int16_t{200}));
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.objects().get_as<std::int32_t>(0x2031, 0), 200);
+}
+
+// 3.2 transition 11 in Position Mode: the demand leaves the set value and stops on the quickstop
+// ramp (1000 rpm at 5000 rpm/s: 0.2 s, 3333 qc); Quickstop Active holds there.
+TEST_F(DirectModes, PositionModeQuickStopStopsShortOfTheSetValue) {
+    limit_profile();
+    configure_and_enable(kPositionMode);
+    write(0x6085, 0, encode(std::uint32_t{5000}));
+    write(0x2062, 0, encode(std::int32_t{40000}));
+    run_with_sync(300ms);
+    const std::int32_t at_quickstop = position();
+    ASSERT_NEAR(velocity_rpm(), 1000, 35);
+    controlword(kQuickStopCommand);
+    run_with_sync(500ms);
+    EXPECT_EQ(tpdos.back().statusword & kStateMask, kQuickStopActive);
+    EXPECT_EQ(velocity_rpm(), 0);
+    EXPECT_NEAR(position() - at_quickstop, 3333, 100);
+}
+
+// 8.2.105: the actual position leaving the software limits raises 0xFF09 in the modes without
+// a position set value too; its fault reaction (quickstop) ends in Fault.
+TEST_F(DirectModes, VelocityModeBeyondTheSoftwarePositionLimitRaisesFF09) {
+    write(0x607D, 2, encode(std::int32_t{5000}));
+    configure_and_enable(kVelocityMode);
+    write(0x206B, 0, encode(std::int32_t{300}));
+    run_with_sync(1500ms);
+    EXPECT_EQ(read<std::uint32_t>(0x1003, 1) & 0xFFFF, 0xFF09U);
+    EXPECT_EQ(tpdos.back().statusword & kStateMask, kFault);
+}
+
 // 5.13 / 5.14: the current loop holds the set value; the axis accelerates as torque over inertia
 // (k_t · I − Coulomb friction) / J = (0.0234 · 0.3 − 0.001) / 6.05e-6 = 995 rad/s² (9500 rpm/s).
 TEST_F(DirectModes, CurrentModeHoldsTheSetCurrentAndAcceleratesAsTorqueOverInertia) {
