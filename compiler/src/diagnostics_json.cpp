@@ -7,7 +7,8 @@
 namespace eposp::compiler {
 namespace {
 
-using nlohmann::json;
+// Fields in the order of the schema (docs/diagnostics.md), not sorted.
+using json = nlohmann::ordered_json;
 
 json position(const SourcePosition& at) {
     return {{"line", at.line}, {"column", at.column}};

@@ -1,5 +1,6 @@
 // `eposp check` as a user meets it: exit 0 for a program whose names all resolve, 1 and a
-// compiler-style diagnostic with a caret otherwise.
+// compiler-style diagnostic with a caret otherwise (or JSON lines); `eposp explain` says what a
+// diagnostic's code means.
 #include "eposp_command.hpp"
 
 #include <fstream>
@@ -39,9 +40,10 @@ TEST(CheckCommand, UndeclaredIdentifierExitsWithOneAndShowsTheCaret) {
     const std::string config = write_source("config.st", kConfiguration);
     const auto result = eposp("check " + main + " " + config);
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_THAT(result.output, HasSubstr(main + ":3:12: error: undeclared identifier 'totl' [E0201]\n"
-                                                "  total := totl + 1;\n"
-                                                "           ^~~~\n"));
+    EXPECT_THAT(result.output,
+                HasSubstr(main + ":3:12: error: undeclared identifier 'totl' [E0201]\n"
+                                 "  total := totl + 1;\n"
+                                 "           ^~~~\n"));
 }
 
 TEST(CheckCommand, SyntaxErrorExitsWithOne) {
@@ -102,6 +104,66 @@ TEST(CheckCommand, ControlCharactersOfTheSourceAreEscaped) {
     EXPECT_THAT(result.output, HasSubstr("\\x1b[2J\\x0d1;"));
     EXPECT_THAT(result.output, Not(HasSubstr("\x1b")));
     EXPECT_THAT(result.output, Not(HasSubstr("\r")));
+}
+
+TEST(CheckCommand, ErrorFormatJsonPrintsOneObjectPerDiagnostic) {
+    const std::string main = write_source("main.st", "PROGRAM Main\n"
+                                                     "  VAR x : INT; END_VAR\n"
+                                                     "  x := totl + 1;\n"
+                                                     "END_PROGRAM\n");
+    const auto result = eposp("check --error-format json " + main);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output,
+                HasSubstr("{\"code\":\"E0201\",\"severity\":\"error\",\"title\":\"undeclared "
+                          "identifier\",\"message\":\"undeclared identifier 'totl'\",\"file\":\"" +
+                          main +
+                          "\",\"range\":{\"start\":{\"line\":3,\"column\":8},\"end\":{\"line\":3,"
+                          "\"column\":11}},\"notes\":[],\"fix_it\":null}\n"));
+    EXPECT_THAT(result.output, Not(HasSubstr("^~~~")));
+}
+
+TEST(CheckCommand, BuildAndRunTakeTheErrorFormatToo) {
+    const std::string main =
+        write_source("main.st", "PROGRAM Main\nVAR x : INT; END_VAR\nx = 1;\nEND_PROGRAM\n");
+    for (const std::string& command :
+         std::vector<std::string>{"build -o " + scratch("main.epx").string(), "run --for 1s"}) {
+        const auto result = eposp(command + " --error-format json " + main);
+        EXPECT_EQ(result.exit_code, 1) << command;
+        EXPECT_THAT(result.output, HasSubstr("{\"code\":\"E0107\",")) << command;
+        // The fix-it: ' := ' in place of ' = '.
+        EXPECT_THAT(result.output, HasSubstr("\"fix_it\":{\"replacement\":\" := \",")) << command;
+    }
+}
+
+TEST(CheckCommand, ErrorFormatIsHumanOrJson) {
+    const std::string main = write_source("main.st", "PROGRAM Main\nEND_PROGRAM\n");
+    const auto result = eposp("check --error-format xml " + main);
+    EXPECT_NE(result.exit_code, 0);
+    EXPECT_THAT(result.output, HasSubstr("--error-format"));
+}
+
+TEST(ExplainCommand, ExplainsACodeWithTheWrongAndTheRightExample) {
+    const auto result = eposp("explain e0201");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("E0201 (error, names): undeclared identifier\n"));
+    EXPECT_THAT(result.output, HasSubstr("This produces it:\n\n    PROGRAM Main\n"));
+    EXPECT_THAT(result.output, HasSubstr("    totl := 1;\n"));
+    EXPECT_THAT(result.output, HasSubstr("Fixed:\n\n    PROGRAM Main\n"));
+    EXPECT_THAT(result.output, HasSubstr("    total := 1;\n"));
+}
+
+TEST(ExplainCommand, WithoutACodeListsEveryCode) {
+    const auto result = eposp("explain");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_THAT(result.output, HasSubstr("E0101  syntax   syntax error\n"));
+    EXPECT_THAT(result.output, HasSubstr("W0401  checks   unused variable\n"));
+}
+
+TEST(ExplainCommand, AnUnknownCodeIsAUserError) {
+    const auto result = eposp("explain E9999");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output,
+                HasSubstr("eposp explain: error: no diagnostic has the code 'E9999'"));
 }
 
 } // namespace

@@ -22,6 +22,7 @@ int run_cli(int argc, char** argv) {
     cli::add_node_command(app, exit_code);
     cli::add_drive_command(app, exit_code);
     cli::add_check_command(app, exit_code);
+    cli::add_explain_command(app, exit_code);
     cli::add_build_command(app, exit_code);
     cli::add_dump_command(app, exit_code);
     cli::add_eds_command(app, exit_code);

@@ -20,10 +20,11 @@ struct BuildOptions {
     std::vector<std::string> paths;
     std::string output; // empty: the first file's name with .epx
     bool force = false;
+    ErrorFormat error_format = ErrorFormat::Human;
 };
 
 int run_build(const BuildOptions& options) {
-    const auto image = compile_sources(options.paths);
+    const auto image = compile_sources(options.paths, options.error_format);
     if (!image) {
         return report_user_error(kBuildCommand, image.error());
     }
@@ -57,6 +58,7 @@ void add_build_command(CLI::App& app, int& exit_code) {
     command->add_option("-o,--output", options->output,
                         "The image file to write (default: the first file with .epx)");
     add_force_option(*command, options->force);
+    add_error_format_option(*command, options->error_format);
     command->callback([options, &exit_code] { exit_code = run_build(*options); });
 }
 

@@ -12,12 +12,14 @@ namespace eposp::device::cli {
 
 void add_check_command(CLI::App& app, int& exit_code) {
     auto paths = std::make_shared<std::vector<std::string>>();
+    auto format = std::make_shared<ErrorFormat>(ErrorFormat::Human);
     CLI::App* command =
         app.add_subcommand("check", "Check the Structured Text files of one program for errors");
     command->add_option("files", *paths, "The .st files of the program, checked together")
         ->required();
-    command->callback([paths, &exit_code] {
-        const auto image = compile_sources(*paths);
+    add_error_format_option(*command, *format);
+    command->callback([paths, format, &exit_code] {
+        const auto image = compile_sources(*paths, *format);
         exit_code = image ? 0 : report_user_error("check", image.error());
     });
 }

@@ -288,7 +288,7 @@ core::Result<std::unique_ptr<DeviceSession>> DeviceSession::open(const SessionOp
     }
     std::optional<vm::Image> image;
     if (!options.paths.empty()) {
-        auto compiled = program_image(options.paths);
+        auto compiled = program_image(options.paths, options.error_format);
         if (!compiled) {
             return core::Error{compiled.error()};
         }

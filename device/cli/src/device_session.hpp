@@ -5,6 +5,7 @@
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/network_file.hpp"
 #include "eposp/vm/plc_runtime.hpp"
+#include "program_input.hpp"
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -37,6 +38,7 @@ struct SessionOptions {
     /// `eposp serve`: without --state-dir the EPOS P keeps its memory in its default state
     /// directory, as a device keeps its program over a power cycle; `eposp run` keeps none.
     bool state_by_default = false;
+    ErrorFormat error_format = ErrorFormat::Human; ///< of the .st files' diagnostics
 };
 
 /// Adds FILES (required or not) and the options of SessionOptions to `command`.

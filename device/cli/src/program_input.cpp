@@ -1,5 +1,6 @@
 #include "program_input.hpp"
 
+#include "eposp/compiler/diagnostics_json.hpp"
 #include "eposp/device/program_compiler.hpp"
 #include "eposp/vm/image_format.hpp"
 #include "eposp/vm/verifier.hpp"
@@ -41,7 +42,18 @@ core::Result<vm::Image> read_image_file(const std::string& path) {
 
 } // namespace
 
-core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths) {
+void add_error_format_option(CLI::App& command, ErrorFormat& format) {
+    command
+        .add_option("--error-format", format,
+                    "How compiler diagnostics are printed: human (default) or json, one object a "
+                    "line")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, ErrorFormat>{{"human", ErrorFormat::Human},
+                                               {"json", ErrorFormat::Json}},
+            CLI::ignore_case));
+}
+
+core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths, ErrorFormat format) {
     compiler::SourceManager sources;
     compiler::Diagnostics diagnostics;
     std::vector<compiler::FileId> files;
@@ -61,7 +73,13 @@ core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths) {
         files.push_back(*file);
     }
     auto image = compile_program(sources, files, diagnostics);
-    fmt::print(stderr, "{}", terminal_text(compiler::render(diagnostics, sources)));
+    if (format == ErrorFormat::Json) {
+        // On stdout, apart from the command's own messages, for a tool to read; escaped, so no
+        // terminal codes reach it.
+        fmt::print("{}", compiler::render_json(diagnostics, sources));
+    } else {
+        fmt::print(stderr, "{}", terminal_text(compiler::render(diagnostics, sources)));
+    }
     if (!image) {
         return core::Error{
             fmt::format("{} has errors", paths.size() == 1 ? paths.front() : "the program")};
@@ -69,7 +87,7 @@ core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths) {
     return std::move(*image);
 }
 
-core::Result<vm::Image> program_image(const std::vector<std::string>& paths) {
+core::Result<vm::Image> program_image(const std::vector<std::string>& paths, ErrorFormat format) {
     if (paths.size() == 1 && is_image_file(paths.front())) {
         return read_image_file(paths.front());
     }
@@ -78,7 +96,7 @@ core::Result<vm::Image> program_image(const std::vector<std::string>& paths) {
             return core::Error{"a program image (" + path + ") comes alone, not with other files"};
         }
     }
-    return compile_sources(paths);
+    return compile_sources(paths, format);
 }
 
 } // namespace eposp::device::cli

@@ -57,6 +57,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
         app.add_subcommand("run", "Run a program's tasks in virtual time and print what they did");
     add_session_options(*command, options->session, true);
     add_duration_option(*command, "--for", options->duration, "Virtual time to run (default 10s)");
+    add_error_format_option(*command, options->session.error_format);
     command->callback([options, &exit_code] { exit_code = run_program(*options); });
 }
 
