@@ -67,9 +67,6 @@ public:
     SourceRange range(antlr4::Token& token) const;
     void error(DiagnosticCode code, const SourceRange& range, std::string message);
     void warning(DiagnosticCode code, const SourceRange& range, std::string message);
-    // Transitional, until every call site passes its code (issue 17).
-    void error(const SourceRange& range, std::string message);
-    void warning(const SourceRange& range, std::string message);
 
 private:
     template <typename Operand>

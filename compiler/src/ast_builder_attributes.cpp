@@ -101,8 +101,9 @@ std::vector<ast::Attribute> AstBuilder::attributes_before(antlr4::ParserRuleCont
             attributes.push_back(std::move(attribute));
             break;
         case PragmaKind::Malformed:
-            warning(attribute.range, "this attribute is ignored: an attribute reads {attribute "
-                                     "'name'} or {attribute 'name' := 'value'}");
+            warning(DiagnosticCode::W0105, attribute.range,
+                    "this attribute is ignored: an attribute reads {attribute "
+                    "'name'} or {attribute 'name' := 'value'}");
             break;
         case PragmaKind::NotAnAttribute:
             break;

@@ -77,7 +77,7 @@ void AstBuilder::global_variable_list(P::VarSectionContext& context,
     ast::DeclarationSection section = std::move(sections({&context}).front());
     const auto* variables = std::get_if<ast::VarSection>(&section);
     if (variables == nullptr || variables->kind != ast::VarSectionKind::Global) {
-        error(range(*context.getStart()),
+        error(DiagnosticCode::E0109, range(*context.getStart()),
               "only VAR_GLOBAL can be declared outside a POU or configuration");
         return;
     }
@@ -176,18 +176,21 @@ ast::TaskDeclaration AstBuilder::task(P::TaskDeclarationContext& context) {
                                    : equal_ignoring_case(name.name, "PRIORITY") ? &result.priority
                                                                                 : nullptr;
         if (slot == nullptr) {
-            error(name.range, "unknown task property '" + name.name +
-                                  "'; a task has SINGLE, INTERVAL and PRIORITY");
+            error(DiagnosticCode::E0110, name.range,
+                  "unknown task property '" + name.name +
+                      "'; a task has SINGLE, INTERVAL and PRIORITY");
             continue;
         }
         if (*slot) {
-            error(name.range, "task property '" + name.name + "' is given twice");
+            error(DiagnosticCode::E0110, name.range,
+                  "task property '" + name.name + "' is given twice");
             continue;
         }
         *slot = expression(*property->expression());
     }
     if (!result.priority) {
-        error(result.name.range, "task '" + result.name.name + "' needs a PRIORITY");
+        error(DiagnosticCode::E0110, result.name.range,
+              "task '" + result.name.name + "' needs a PRIORITY");
     }
     return result;
 }
@@ -248,7 +251,7 @@ AstBuilder::sections(const std::vector<P::VarSectionContext*>& all) {
             }
         }
         if (built.constant && built.retention == ast::Retention::Retain) {
-            error(built.range, "a CONSTANT section cannot be RETAIN");
+            error(DiagnosticCode::E0111, built.range, "a CONSTANT section cannot be RETAIN");
         }
         for (P::VarDeclarationContext* declaration : variables.varDeclaration()) {
             built.variables.push_back(variable(*declaration));
@@ -269,8 +272,9 @@ ast::VariableDeclaration AstBuilder::variable(P::VarDeclarationContext& context)
     }
     if (context.AT() != nullptr) {
         if (result.names.size() > 1) {
-            error(result.names[1].range, "AT locates a single variable; declare '" +
-                                             result.names[1].name + "' separately");
+            error(DiagnosticCode::E0112, result.names[1].range,
+                  "AT locates a single variable; declare '" + result.names[1].name +
+                      "' separately");
         }
         result.address = direct_address(*context.DIRECT_ADDRESS()->getSymbol());
     }
@@ -306,7 +310,8 @@ std::optional<ast::DirectAddress> AstBuilder::direct_address(antlr4::Token& toke
         const auto [end, status] =
             std::from_chars(text.data() + position, text.data() + text.size(), part);
         if (status != std::errc{}) {
-            error(address.range, "address part in '" + text + "' is too large");
+            error(DiagnosticCode::E0113, address.range,
+                  "address part in '" + text + "' is too large");
             return std::nullopt;
         }
         address.path.push_back(part);
@@ -348,8 +353,9 @@ ast::InitializerPtr AstBuilder::declaration_initializer(P::DeclarationInitialize
     auto result = std::make_unique<ast::Initializer>();
     result->range = range(*bare);
     result->value = array_elements(bare->arrayInitElement());
-    warning(result->range, "array initial values without brackets are a CODESYS V2 form; IEC "
-                           "61131-3 (6.4.4.5) writes them in brackets: [1, 2, 3]");
+    warning(DiagnosticCode::W0101, result->range,
+            "array initial values without brackets are a CODESYS V2 form; IEC "
+            "61131-3 (6.4.4.5) writes them in brackets: [1, 2, 3]");
     return result;
 }
 

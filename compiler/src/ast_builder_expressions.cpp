@@ -334,12 +334,4 @@ void AstBuilder::warning(DiagnosticCode code, const SourceRange& where, std::str
     diagnostics_.warning(code, where, std::move(message));
 }
 
-void AstBuilder::error(const SourceRange& where, std::string message) {
-    diagnostics_.error(where, std::move(message));
-}
-
-void AstBuilder::warning(const SourceRange& where, std::string message) {
-    diagnostics_.warning(where, std::move(message));
-}
-
 } // namespace eposp::compiler

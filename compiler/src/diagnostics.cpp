@@ -8,9 +8,8 @@
 namespace eposp::compiler {
 
 Diagnostic::Diagnostic(DiagnosticCode code_, SourceRange range_, std::string message_)
-    : code(code_),
-      severity(code_ == DiagnosticCode::Uncoded ? Severity::Error : describe(code_).severity),
-      range(range_), message(std::move(message_)) {}
+    : code(code_), severity(describe(code_).severity), range(range_), message(std::move(message_)) {
+}
 
 Diagnostics::Diagnostics(std::size_t error_limit) : error_limit_(error_limit) {}
 
@@ -41,16 +40,6 @@ void Diagnostics::warning(DiagnosticCode code, const SourceRange& range, std::st
         throw std::logic_error(std::string(describe(code).name) + " is not a warning's code");
     }
     report(Diagnostic(code, range, std::move(message)));
-}
-
-void Diagnostics::error(const SourceRange& range, std::string message) {
-    report(Diagnostic(DiagnosticCode::Uncoded, range, std::move(message)));
-}
-
-void Diagnostics::warning(const SourceRange& range, std::string message) {
-    Diagnostic diagnostic(DiagnosticCode::Uncoded, range, std::move(message));
-    diagnostic.severity = Severity::Warning;
-    report(std::move(diagnostic));
 }
 
 namespace {
@@ -130,10 +119,8 @@ void render_one(std::string& out, Severity severity, std::string_view code,
 
 std::string render(const Diagnostic& diagnostic, const SourceManager& sources) {
     std::string out;
-    const std::string_view code = diagnostic.code == DiagnosticCode::Uncoded
-                                      ? std::string_view()
-                                      : describe(diagnostic.code).name;
-    render_one(out, diagnostic.severity, code, diagnostic.range, diagnostic.message, sources);
+    render_one(out, diagnostic.severity, describe(diagnostic.code).name, diagnostic.range,
+               diagnostic.message, sources);
     if (diagnostic.fix_it && diagnostic.fix_it->range.file < sources.file_count() &&
         diagnostic.fix_it->range.begin.line > 0) {
         render_fix_it(out, *diagnostic.fix_it, sources);

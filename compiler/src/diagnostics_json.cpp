@@ -38,10 +38,9 @@ std::string_view severity_name(Severity severity) {
 
 json to_json(const Diagnostic& diagnostic, const SourceManager& sources) {
     json out;
-    const bool coded = diagnostic.code != DiagnosticCode::Uncoded;
-    out["code"] = coded ? json(describe(diagnostic.code).name) : json(nullptr);
+    out["code"] = describe(diagnostic.code).name;
     out["severity"] = severity_name(diagnostic.severity);
-    out["title"] = coded ? json(describe(diagnostic.code).title) : json(nullptr);
+    out["title"] = describe(diagnostic.code).title;
     out["message"] = diagnostic.message;
     locate(out, diagnostic.range, sources);
     out["notes"] = json::array();

@@ -64,10 +64,11 @@ TEST(Diagnostics, StopCollectingErrorsAfterTheLimit) {
     const FileId file = sources.add("l.st", "");
     Diagnostics diagnostics(2);
     for (int i = 0; i < 5; ++i) {
-        diagnostics.error({file, {1, 1}, {1, 1}}, "problem");
+        diagnostics.error(DiagnosticCode::E0201, {file, {1, 1}, {1, 1}}, "problem");
     }
     ASSERT_EQ(diagnostics.all().size(), 3u);
     EXPECT_EQ(diagnostics.all()[2].message, "too many errors; stopping after 2");
+    EXPECT_EQ(diagnostics.all()[2].code, DiagnosticCode::E0004);
 }
 
 TEST(ErrorRecovery, ReportsEveryBrokenStatement) {

@@ -36,11 +36,11 @@ TEST(GlobalVariableList, OnlyVarGlobalIsAllowedOutsideAPou) {
                                      "VAR_EXTERNAL y : INT; END_VAR\n");
     EXPECT_EQ(parsed.rendered(),
               "test.st:1:1: error: only VAR_GLOBAL can be declared outside a POU or "
-              "configuration\n"
+              "configuration [E0109]\n"
               "VAR x : INT; END_VAR\n"
               "^~~\n"
               "test.st:4:1: error: only VAR_GLOBAL can be declared outside a POU or "
-              "configuration\n"
+              "configuration [E0109]\n"
               "VAR_EXTERNAL y : INT; END_VAR\n"
               "^~~~~~~~~~~~\n");
 }

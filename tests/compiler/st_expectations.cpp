@@ -22,7 +22,6 @@
 
 namespace {
 
-using eposp::compiler::DiagnosticCode;
 using Expectations = std::map<std::uint32_t, std::multiset<std::string>>; // line 0: unlocated
 
 void add_codes(std::multiset<std::string>& to, std::string_view codes) {
@@ -94,9 +93,7 @@ int main(int argc, char** argv) {
     eposp::compiler::compile(sources, files, diagnostics);
 
     for (const auto& diagnostic : diagnostics.all()) {
-        const std::string code(diagnostic.code == DiagnosticCode::Uncoded
-                                   ? "uncoded"
-                                   : eposp::compiler::describe(diagnostic.code).name);
+        const std::string code(eposp::compiler::describe(diagnostic.code).name);
         const std::uint32_t line = diagnostic.range.file == *file ? diagnostic.range.begin.line : 0;
         auto& codes = expected[line];
         if (const auto it = codes.find(code); it != codes.end()) {

@@ -203,7 +203,8 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         return std::nullopt;
     }
     if (tasks_.empty()) {
-        diagnostics_.warning({}, "there is no PROGRAM to run: the image has no task");
+        diagnostics_.warning(DiagnosticCode::W0407, {},
+                             "there is no PROGRAM to run: the image has no task");
     }
     for (vm::Task& task : tasks_) {
         task.stack_size = static_cast<std::uint32_t>(stack_size()); // checked above
@@ -211,7 +212,7 @@ std::optional<vm::Image> ProgramGenerator::generate() {
     }
     auto image = builder_.finish();
     if (!image) {
-        diagnostics_.error({}, "internal error: " + image.error());
+        diagnostics_.error(DiagnosticCode::E0001, {}, "internal error: " + image.error());
         return std::nullopt;
     }
     // Back-edges first, so that an inlined body is a copy of its callee as it finally runs.
@@ -254,7 +255,7 @@ void ProgramGenerator::check_recursion() {
             for (const ast::Pou* callee : it->second) {
                 const Mark mark = marks[callee];
                 if (mark == Mark::Active) {
-                    diagnostics_.error(callee->name.range,
+                    diagnostics_.error(DiagnosticCode::E0407, callee->name.range,
                                        fmt::format("'{}' calls itself (through '{}'): recursion is "
                                                    "not allowed in IEC 61131-3 (6.6.1.1)",
                                                    callee->name.name, pou->name.name));
@@ -324,20 +325,22 @@ std::optional<Place> ProgramGenerator::instance_of_program(const ast::Pou& progr
         // Not instantiated by the configuration (or the configuration is ignored, as under
         // `eposp test`): one instance for the calls, watched by the program's name.
         if (instances_.contains(sema::fold_case(program.name.name))) {
-            diagnostics_.error(range, fmt::format("'{}' cannot have an instance of its own name: "
-                                                  "the configuration has a program instance "
-                                                  "'{}' of another type",
-                                                  program.name.name, program.name.name));
+            diagnostics_.error(DiagnosticCode::E0422, range,
+                               fmt::format("'{}' cannot have an instance of its own name: "
+                                           "the configuration has a program instance "
+                                           "'{}' of another type",
+                                           program.name.name, program.name.name));
             return std::nullopt;
         }
         program_instance(program, program.name.name, false);
         return instances_.at(sema::fold_case(program.name.name));
     }
     if (it->second.size() > 1) {
-        diagnostics_.error(range, fmt::format("'{}' has several instances in the configuration "
-                                              "({}): a call by the program's name needs exactly "
-                                              "one",
-                                              program.name.name, fmt::join(it->second, ", ")));
+        diagnostics_.error(DiagnosticCode::E0422, range,
+                           fmt::format("'{}' has several instances in the configuration "
+                                       "({}): a call by the program's name needs exactly "
+                                       "one",
+                                       program.name.name, fmt::join(it->second, ", ")));
         return std::nullopt;
     }
     return instances_.at(sema::fold_case(it->second.front()));
@@ -389,7 +392,7 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
             if (declaration.priority) {
                 const auto priority = types_.fold_integer(*declaration.priority);
                 if (!priority || *priority < 0 || *priority > UINT32_MAX) {
-                    diagnostics_.error(declaration.priority->range,
+                    diagnostics_.error(DiagnosticCode::E0421, declaration.priority->range,
                                        "PRIORITY must be a constant from 0 upwards");
                 } else {
                     task.priority = static_cast<std::uint32_t>(*priority);
@@ -401,7 +404,7 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
                 const auto* name = std::get_if<ast::NameExpression>(&declaration.single->node);
                 const auto place = name != nullptr ? global(name->name.name) : std::nullopt;
                 if (!place || !sema::is_bool(*place->type)) {
-                    diagnostics_.error(declaration.single->range,
+                    diagnostics_.error(DiagnosticCode::E0421, declaration.single->range,
                                        "SINGLE must name a global BOOL variable");
                 } else {
                     task.event_offset = place->operand.offset();
@@ -463,19 +466,21 @@ void ProgramGenerator::bind_task_event(const ast::TaskDeclaration& declaration, 
             continue; // an attribute of another tool
         }
         if (!task.event.empty()) {
-            diagnostics_.error(attribute.range,
+            diagnostics_.error(DiagnosticCode::E0424, attribute.range,
                                "task '" + task.name + "' is already released by an event");
         } else if (declaration.interval) {
-            diagnostics_.error(attribute.range, "task '" + task.name +
-                                                    "' has an INTERVAL: a task released by an "
-                                                    "event is not cyclic");
+            diagnostics_.error(DiagnosticCode::E0424, attribute.range,
+                               "task '" + task.name +
+                                   "' has an INTERVAL: a task released by an "
+                                   "event is not cyclic");
         } else if (attribute.value.empty()) {
-            diagnostics_.error(attribute.range,
+            diagnostics_.error(DiagnosticCode::E0424, attribute.range,
                                "the attribute names the event: {attribute 'event' := 'sync'}");
         } else if (const auto refusal = options_.task_event_check
                                             ? options_.task_event_check(attribute.value)
                                             : std::nullopt) {
-            diagnostics_.error(attribute.range, "event '" + attribute.value + "': " + *refusal);
+            diagnostics_.error(DiagnosticCode::E0424, attribute.range,
+                               "event '" + attribute.value + "': " + *refusal);
         } else {
             task.kind = vm::TaskKind::Event;
             task.event = attribute.value;
@@ -491,11 +496,12 @@ std::uint64_t ProgramGenerator::task_interval(const ast::TaskDeclaration& task) 
     const auto* duration =
         literal != nullptr ? std::get_if<ast::DurationLiteral>(&literal->value) : nullptr;
     if (duration == nullptr || duration->nanoseconds <= 0) {
-        diagnostics_.error(task.interval->range, "INTERVAL must be a positive TIME literal");
+        diagnostics_.error(DiagnosticCode::E0421, task.interval->range,
+                           "INTERVAL must be a positive TIME literal");
         return kDefaultIntervalNs;
     }
     if (static_cast<std::uint64_t>(duration->nanoseconds) < vm::kMinTaskIntervalNs) {
-        diagnostics_.error(task.interval->range,
+        diagnostics_.error(DiagnosticCode::E0421, task.interval->range,
                            fmt::format("INTERVAL must be at least {} ms: the controller runs "
                                        "cyclic tasks on a {} ms tick",
                                        vm::kMinTaskIntervalNs / 1'000'000,
@@ -615,7 +621,8 @@ std::optional<Place> ProgramGenerator::direct_variable(const ast::DirectAddress&
         break;
     }
     if (address.path.empty()) {
-        diagnostics_.error(address.range, "an address used in code must be complete (not %I*)");
+        diagnostics_.error(DiagnosticCode::E0420, address.range,
+                           "an address used in code must be complete (not %I*)");
         return std::nullopt;
     }
     const sema::Type& variable = types_.elementary(type);
@@ -638,7 +645,8 @@ void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const s
         return; // `%I*`: bound in the configuration (not supported yet)
     }
     if (!sema::is_scalar(type)) {
-        diagnostics_.error(address.range, "only elementary variables can be located");
+        diagnostics_.error(DiagnosticCode::E0420, address.range,
+                           "only elementary variables can be located");
         return;
     }
     vm::IoBinding binding{.type = sema::scalar_of(type), .offset = offset};
@@ -672,12 +680,13 @@ void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const s
                      address.size == ast::DirectAddress::Size::Bit;
     if (bit) {
         if (address.path.size() != 2 || address.path[1] > 7 || !sema::is_bool(type)) {
-            diagnostics_.error(address.range, "a bit address is %IX<byte>.<bit> on a BOOL");
+            diagnostics_.error(DiagnosticCode::E0420, address.range,
+                               "a bit address is %IX<byte>.<bit> on a BOOL");
             return;
         }
         binding.bit = static_cast<std::uint8_t>(address.path[1]);
     } else if (vm::scalar_size(binding.type) != unit) {
-        diagnostics_.error(address.range,
+        diagnostics_.error(DiagnosticCode::E0420, address.range,
                            fmt::format("a {}-byte address cannot hold a {}", unit, type.name));
         return;
     }

@@ -21,8 +21,6 @@ enum class DiagnosticCode : std::uint16_t {
 #define EPOSP_DIAGNOSTIC(code, severity, stage, title, explanation, wrong, right) code,
 #include "eposp/compiler/diagnostic_catalogue.def"
 #undef EPOSP_DIAGNOSTIC
-    // Transitional: the call sites not yet given their code (issue 17); rendered without one.
-    Uncoded,
 };
 
 /// One entry of the catalogue: what `eposp explain CODE` prints. `wrong` is ST that produces

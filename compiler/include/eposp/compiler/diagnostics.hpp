@@ -51,9 +51,6 @@ public:
     /// programming error (std::logic_error).
     void error(DiagnosticCode code, const SourceRange& range, std::string message);
     void warning(DiagnosticCode code, const SourceRange& range, std::string message);
-    // Transitional (DiagnosticCode::Uncoded), until every call site passes its code.
-    void error(const SourceRange& range, std::string message);
-    void warning(const SourceRange& range, std::string message);
 
     const std::vector<Diagnostic>& all() const { return diagnostics_; }
     std::size_t error_count() const { return error_count_; }
