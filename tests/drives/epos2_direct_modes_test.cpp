@@ -126,6 +126,29 @@ TEST_F(DirectModesWithBlockedLoad, PositionModeFollowingErrorRaises8611) {
     EXPECT_EQ(tpdos.back().statusword & kStateMask, kFault);
 }
 
+// 5.14.1: the I²t limitation. 1 A on a blocked axis with a continuous current of 500 mA and
+// τ = 1 s heats the winding to its limit after −τ·ln(1 − 0.5²) = 0.288 s: from then on the current
+// is the continuous current and statusword bit 11 "internal limit active" is set; a set value
+// below the continuous current releases it.
+TEST_F(DirectModesWithBlockedLoad, CurrentAboveTheContinuousLimitIsReducedAfterTheI2tTime) {
+    write(0x6410, 1, encode(std::uint16_t{500}));
+    write(0x6410, 5, encode(std::uint16_t{10}));
+    configure_and_enable(kCurrentMode);
+    EXPECT_EQ(tpdos.back().statusword & 0x0800, 0);
+    const double commanded = now(); // the SDO write takes effect within a millisecond
+    write(0x2030, 0, encode(std::int16_t{1000}));
+    run_with_sync(500ms);
+    const std::optional<Tpdo> limited = first_tpdo_with(0x0800, commanded);
+    ASSERT_TRUE(limited.has_value());
+    EXPECT_NEAR(limited->time - commanded, -std::log(0.75), 0.004);
+    EXPECT_NEAR(current_ma(), 500, 15);
+    EXPECT_EQ(tpdos.back().statusword & kStateMask, kOperationEnabled);
+    write(0x2030, 0, encode(std::int16_t{300}));
+    run_with_sync(5ms);
+    EXPECT_EQ(tpdos.back().statusword & 0x0800, 0);
+    EXPECT_NEAR(current_ma(), 300, 15);
+}
+
 // 5.11: the velocity loop reaches the set value, ramped at Max Acceleration 0x60C5 (1000 rpm in
 // 0.1 s at 10 000 rpm/s); 0x606B shows the demand.
 TEST_F(DirectModes, VelocityModeReachesTheSetValueAtMaxAcceleration) {

@@ -125,7 +125,12 @@ std::optional<std::uint16_t> Epos2Drive::supply_error() const {
 }
 
 void Epos2Drive::configure_axis() {
-    axis_.reconfigure(configured_axis(dictionary_.objects(), machine_));
+    const auto& od = dictionary_.objects();
+    axis_.reconfigure(configured_axis(od, machine_));
+    // 8.2.130: mA, mA and 100 ms.
+    i2t_.set_parameters({.continuous_current = od.get_as<std::uint16_t>(0x6410, 1) / 1000.0,
+                         .output_current_limit = od.get_as<std::uint16_t>(0x6410, 2) / 1000.0,
+                         .time_constant = od.get_as<std::uint16_t>(0x6410, 5) / 10.0});
 }
 
 Epos2Drive::~Epos2Drive() = default;
@@ -351,8 +356,10 @@ void Epos2Drive::control_period() {
             counter_at_index_ = axis_.position_actual();
         }
         current_averaged_.update(axis_.current_actual());
+        i2t_.update(axis_.current_actual(), plant::ServoAxis::kCurrentLoopPeriod);
         overcurrent_seen = overcurrent_seen || std::abs(axis_.current_actual()) > overcurrent;
     }
+    axis_.reduce_current_limit(i2t_.limit()); // 5.14.1
     watch_power_stage(overcurrent_seen);
     velocity_averaged_.update(counts_to_rpm(axis_.velocity_actual()));
     last_demand_ = demand;
@@ -490,9 +497,10 @@ void Epos2Drive::watch_io(double now) {
 // 8.2.86: the state bits (table 3-4), the mode's bits (table 8-114) and Remote.
 std::uint16_t Epos2Drive::statusword() const {
     const bool remote = node_.nmt_state() == canopen::NmtState::Operational;
-    // Table 8-114: bit 15 in every mode, bits 10, 12, 13 the present mode's.
+    // Table 8-114: bits 15 and 11 (I²t, 5.14.1) in every mode, bits 10, 12, 13 the present mode's.
     const std::uint16_t mode_bits = static_cast<std::uint16_t>(
         (homing_.referenced() ? motion::kPositionReferencedBit : 0) |
+        (i2t_.limiting() ? motion::kInternalLimitActiveBit : 0) |
         mode_behaviour_->statusword_bits(seconds(), following_error_.active()));
     return static_cast<std::uint16_t>(device_control_.statusword() | mode_bits |
                                       (remote ? kRemoteBit : 0));

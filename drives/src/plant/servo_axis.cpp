@@ -29,7 +29,8 @@ ServoAxis::ServoAxis(const AxisParameters& parameters)
       current_controller_(current_law(parameters.gains),
                           parameters.plant.power_stage.max_voltage()),
       velocity_controller_(velocity_law(parameters.gains), parameters.gains.current_limit),
-      position_controller_(position_law(parameters.gains), parameters.gains.current_limit) {}
+      position_controller_(position_law(parameters.gains), parameters.gains.current_limit),
+      current_limit_(parameters.gains.current_limit) {}
 
 void ServoAxis::reconfigure(const AxisParameters& parameters) {
     const MotorState state = motor_.state();
@@ -43,12 +44,29 @@ void ServoAxis::reconfigure(const AxisParameters& parameters) {
                                parameters.plant.power_stage.max_voltage());
     velocity_controller_.retune(velocity_law(parameters.gains), parameters.gains.current_limit);
     position_controller_.retune(position_law(parameters.gains), parameters.gains.current_limit);
+    apply_current_limit();
     // The velocity measured at the next outer loop stays in step with the new resolution.
     const std::int64_t position = quadcounts(state.angle, parameters.encoder_pulses);
     position_at_outer_loop_ =
         position -
         static_cast<std::int64_t>(static_cast<double>(position_ - position_at_outer_loop_) * scale);
     position_ = position;
+}
+
+void ServoAxis::reduce_current_limit(double amperes) {
+    if (amperes != reduced_current_limit_) {
+        reduced_current_limit_ = amperes;
+        apply_current_limit();
+    }
+}
+
+// The outer loops' output limit, and their anti-windup with it, follow the limit in force.
+void ServoAxis::apply_current_limit() {
+    const double configured = parameters_.gains.current_limit;
+    current_limit_ =
+        reduced_current_limit_ > 0 ? std::min(configured, reduced_current_limit_) : configured;
+    velocity_controller_.retune(velocity_law(parameters_.gains), current_limit_);
+    position_controller_.retune(position_law(parameters_.gains), current_limit_);
 }
 
 void ServoAxis::set_mode(ControlMode mode) {
@@ -95,8 +113,7 @@ void ServoAxis::run_outer_loop() {
         current_demand_ = 0;
         break;
     case ControlMode::Current:
-        current_demand_ = std::clamp(demand_.current, -parameters_.gains.current_limit,
-                                     parameters_.gains.current_limit);
+        current_demand_ = std::clamp(demand_.current, -current_limit_, current_limit_);
         if (demand_.speed_limit > 0) {
             current_demand_ = cap_at_speed_limit(current_demand_);
         }
@@ -134,8 +151,8 @@ double ServoAxis::cap_at_speed_limit(double current) {
         velocity_controller_.preset(current);
         speed_limiting_ = true;
     }
-    const double cap = velocity_controller_.update((limit - velocity_) * radians_per_count_,
-                                                   kOuterLoopPeriod);
+    const double cap =
+        velocity_controller_.update((limit - velocity_) * radians_per_count_, kOuterLoopPeriod);
     if (current >= 0 ? cap >= current : cap <= current) {
         speed_limiting_ = false;
         return current;

@@ -8,6 +8,7 @@
 #include "eposp/drives/motion/device_control.hpp"
 #include "eposp/drives/motion/following_error_monitor.hpp"
 #include "eposp/drives/motion/homing_procedure.hpp"
+#include "eposp/drives/motion/i2t_current_limit.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/standstill_monitor.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
@@ -161,6 +162,7 @@ private:
     motion::FollowingErrorMonitor following_error_;
     motion::SoftwarePositionLimitMonitor position_limit_;
     motion::StandstillMonitor standstill_;
+    motion::I2tCurrentLimit i2t_; ///< 5.14.1, statusword bit 11
     std::unique_ptr<ModeServices> mode_services_;
     std::unique_ptr<ModeBehaviour> mode_behaviour_; ///< of mode_ (modes/)
     std::unique_ptr<Epos2Io> io_;                   ///< digital I/O, marker, compare, brake

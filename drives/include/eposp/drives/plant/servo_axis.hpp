@@ -61,6 +61,9 @@ public:
     void set_mode(ControlMode mode);
     ControlMode mode() const { return mode_; }
     void set_demand(const AxisDemand& demand) { demand_ = demand; }
+    /// A current limit below the configured output current limit (the drive's I²t limitation,
+    /// EPOS2 FW spec 5.14.1), from the next step on; the configured limit applies when larger.
+    void reduce_current_limit(double amperes);
 
     /// One 0.1 ms step of the current loop and the plant.
     void step();
@@ -80,6 +83,7 @@ private:
     void run_outer_loop();
     double cap_at_speed_limit(double current);
     void reset_controllers();
+    void apply_current_limit();
 
     AxisParameters parameters_;
     MotorModel motor_;
@@ -90,7 +94,9 @@ private:
     ControlMode mode_ = ControlMode::PowerOff;
     AxisDemand demand_;
     double current_demand_ = 0;
-    bool speed_limiting_ = false; ///< current mode: the velocity controller holds the limit
+    bool speed_limiting_ = false;      ///< current mode: the velocity controller holds the limit
+    double reduced_current_limit_ = 0; ///< reduce_current_limit(), 0: none
+    double current_limit_ = 0;         ///< in force: the smaller of the two
     std::int64_t position_ = 0;
     std::int64_t position_at_outer_loop_ = 0;
     double velocity_ = 0;
