@@ -50,6 +50,7 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
       axis_(config.axis),
       mode_services_(std::make_unique<ModeServices>(ModeServices{
           .objects = dictionary_.objects(),
+          .outputs = dictionary_.objects(),
           .counts_per_turn = counts_per_turn_,
           .raise_device_error = [this](std::uint16_t code) { raise_device_error(code); },
           .homing = homing_,
@@ -208,8 +209,8 @@ void Epos2Drive::watch_dictionary() {
         od.on_change(option_code, [this](std::uint16_t, std::uint8_t) { read_option_codes(); });
     }
     for (const std::uint16_t set_value : kSetValueObjects) {
-        od.on_change(set_value, [this](std::uint16_t index, std::uint8_t) {
-            mode_behaviour_->on_set_value_written(seconds(), index);
+        od.on_change(set_value, [this](std::uint16_t index, std::uint8_t sub_index) {
+            mode_behaviour_->on_set_value_written(seconds(), index, sub_index);
         });
     }
     od.on_change(0x1003, [this](std::uint16_t, std::uint8_t sub) {

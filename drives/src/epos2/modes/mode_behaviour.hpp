@@ -23,6 +23,8 @@ inline constexpr std::uint16_t kEndlessMovementBit = 1U << 15;
 /// units, the errors of table 4-11, and the parts whose state outlives a mode change.
 struct ModeServices {
     const canopen::ObjectDictionary& objects;
+    /// The same dictionary, for the read-only values a mode shows (IPM's buffer status).
+    canopen::ObjectDictionary& outputs;
     const double& counts_per_turn; ///< 4 × 0x2210 sub 1, kept up to date by the drive
     std::function<void(std::uint16_t)> raise_device_error;
     motion::HomingProcedure& homing;       ///< its reference (bit 15) survives mode changes
@@ -76,8 +78,9 @@ public:
     /// The mode starts at rest at `position` (the actual position); its parameters are read now.
     virtual void start(double now, std::int64_t position, bool power_stage_on) = 0;
     virtual void on_controlword(const ControlwordChange& change) = 0;
-    /// A set value of the mode (see kSetValueObjects) was written.
-    virtual void on_set_value_written(double /*now*/, std::uint16_t /*index*/) {}
+    /// A set value of the mode (see kSetValueObjects) was written, or set by the drive.
+    virtual void on_set_value_written(double /*now*/, std::uint16_t /*index*/,
+                                      std::uint8_t /*sub_index*/) {}
     /// The demand for this control period, before the plant steps.
     virtual ModeDemand demand(const ModeInputs& inputs) = 0;
     /// After the plant stepped: the mode's monitors (target reached, speed zero, …).

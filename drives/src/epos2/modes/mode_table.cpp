@@ -2,6 +2,7 @@
 
 #include "current_mode.hpp"
 #include "homing_mode.hpp"
+#include "interpolated_position_mode.hpp"
 #include "position_mode.hpp"
 #include "profile_position_mode.hpp"
 #include "profile_velocity_mode.hpp"
@@ -17,6 +18,7 @@ std::optional<OperatingMode> simulated_mode(std::int8_t modes_of_operation) {
     case OperatingMode::Position:
     case OperatingMode::Velocity:
     case OperatingMode::Current:
+    case OperatingMode::InterpolatedPosition:
         return static_cast<OperatingMode>(modes_of_operation);
     }
     return std::nullopt;
@@ -36,6 +38,8 @@ std::unique_ptr<ModeBehaviour> make_mode_behaviour(OperatingMode mode, ModeServi
         return std::make_unique<VelocityMode>(services);
     case OperatingMode::Current:
         return std::make_unique<CurrentMode>(services);
+    case OperatingMode::InterpolatedPosition:
+        return std::make_unique<InterpolatedPositionMode>(services);
     }
     return std::make_unique<ProfilePositionMode>(services);
 }

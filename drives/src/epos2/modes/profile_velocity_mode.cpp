@@ -26,7 +26,7 @@ void ProfileVelocityMode::on_controlword(const ControlwordChange& change) {
     }
 }
 
-void ProfileVelocityMode::on_set_value_written(double now, std::uint16_t index) {
+void ProfileVelocityMode::on_set_value_written(double now, std::uint16_t index, std::uint8_t) {
     if (index == 0x60FF) {
         follow_target(now);
     }

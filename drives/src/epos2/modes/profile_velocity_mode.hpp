@@ -14,7 +14,7 @@ public:
 
     void start(double now, std::int64_t position, bool power_stage_on) override;
     void on_controlword(const ControlwordChange& change) override;
-    void on_set_value_written(double now, std::uint16_t index) override;
+    void on_set_value_written(double now, std::uint16_t index, std::uint8_t sub_index) override;
     ModeDemand demand(const ModeInputs& inputs) override;
     void watch(const ModeInputs& inputs, const motion::MotionState& demand) override;
     std::uint16_t statusword_bits(double now, bool following_error) const override;

@@ -36,6 +36,7 @@ enum class OperatingMode : std::int8_t {
     ProfilePosition = 1,
     ProfileVelocity = 3,
     Homing = 6,
+    InterpolatedPosition = 7,
     Position = -1,
     Velocity = -2,
     Current = -3,
