@@ -331,11 +331,10 @@ TEST_F(DirectModes, ModeSwitchWhileEnabledHandsTheAxisOver) {
     EXPECT_EQ(tpdos.back().statusword & kStateMask, kOperationEnabled);
 }
 
-// 8.2.90: the modes not simulated yet are still refused.
-TEST_F(DirectModes, ModesMinusFourToMinusSixAreRefused) {
-    for (const std::int8_t mode : {std::int8_t{-4}, std::int8_t{-5}, std::int8_t{-6}}) {
-        EXPECT_EQ(try_write(0x6060, 0, encode(mode)), AbortCode::InvalidValue) << int{mode};
-    }
+// 8.2.90, table 8-118: the Diagnostic Mode (-4) serves maxon's GUI only and is refused.
+TEST_F(DirectModes, DiagnosticModeIsRefused) {
+    EXPECT_EQ(try_write(0x6060, 0, encode(std::int8_t{-4})), AbortCode::InvalidValue);
+    EXPECT_EQ(read<std::int8_t>(0x6061, 0), 1);
 }
 
 } // namespace

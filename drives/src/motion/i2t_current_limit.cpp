@@ -12,7 +12,11 @@ void I2tCurrentLimit::update(double current, double dt) {
     }
     const double ratio = current / parameters_.continuous_current;
     // The first-order heating, exact for a current constant over dt.
-    load_ += (ratio * ratio - load_) * -std::expm1(-dt / parameters_.time_constant);
+    if (dt != gain_dt_) {
+        gain_dt_ = dt;
+        gain_ = -std::expm1(-dt / parameters_.time_constant);
+    }
+    load_ += (ratio * ratio - load_) * gain_;
 }
 
 double I2tCurrentLimit::limit() const {

@@ -21,7 +21,10 @@ public:
     explicit I2tCurrentLimit(const I2tParameters& parameters) : parameters_(parameters) {}
 
     /// New motor data; the winding keeps its heat.
-    void set_parameters(const I2tParameters& parameters) { parameters_ = parameters; }
+    void set_parameters(const I2tParameters& parameters) {
+        parameters_ = parameters;
+        gain_dt_ = 0;
+    }
     /// The measured current during the last `dt` seconds.
     void update(double current, double dt);
     /// The current limit in force, A.
@@ -31,7 +34,9 @@ public:
 
 private:
     I2tParameters parameters_;
-    double load_ = 0; ///< (I / I_continuous)² filtered: 1 is the winding's maximal temperature
+    double load_ = 0;    ///< (I / I_continuous)² filtered: 1 is the winding's maximal temperature
+    double gain_dt_ = 0; ///< the step the filter gain was computed for (one exp per change)
+    double gain_ = 0;
 };
 
 } // namespace eposp::drives::motion
