@@ -3,10 +3,10 @@
 // function of its name, its arguments in the call's argument block. Elementary inputs go by
 // value, strings by address, ANY as the value's address and a descriptor of its type, and a
 // VAR_IN_OUT ARRAY[*] as the address of its reference (address and bounds) and a descriptor of
-// its element type (vm/native_values.hpp).
+// its element type (vm/native_type.hpp).
 
 #include "eposp/compiler/sema/type.hpp"
-#include "eposp/vm/native_values.hpp"
+#include "eposp/vm/native_type.hpp"
 #include "pou_generator.hpp"
 
 #include <algorithm>

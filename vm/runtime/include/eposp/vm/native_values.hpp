@@ -4,60 +4,14 @@
 // "Native functions") is handed besides plain scalars: the value an ANY input refers to, the
 // elements of an ARRAY[*], and where in the source it is called from.
 
+#include "eposp/vm/native_type.hpp"
+
 #include <cstdint>
 #include <cstring>
 #include <span>
 #include <string>
 
 namespace eposp::vm {
-
-/// The type of a value passed to an ANY input or held by an ARRAY[*] argument, in the order of
-/// IEC 61131-3 ed. 3 table 10 as the compiler lists it. An enumeration arrives as its base
-/// integer type; a subrange as its base type.
-enum class NativeType : std::uint8_t {
-    Bool,
-    Sint,
-    Int,
-    Dint,
-    Lint,
-    Usint,
-    Uint,
-    Udint,
-    Ulint,
-    Byte,
-    Word,
-    Dword,
-    Lword,
-    Real,
-    Lreal,
-    Time,
-    Ltime,
-    Date,
-    Ldate,
-    TimeOfDay,
-    Ltod,
-    DateAndTime,
-    Ldt,
-    String,
-    Wstring,
-    Char,
-    Wchar,
-};
-
-/// The name of `type` as IEC 61131-3 spells it (`TIME_OF_DAY`).
-std::string_view native_type_name(NativeType type);
-
-/// The U32 descriptor that follows the pointer of an ANY or ARRAY[*] argument: the type in the
-/// low byte, the size in bytes of the value (of one element) above it.
-constexpr std::uint32_t native_descriptor(NativeType type, std::uint32_t bytes) {
-    return static_cast<std::uint32_t>(type) | bytes << 8;
-}
-constexpr NativeType descriptor_type(std::uint32_t descriptor) {
-    return static_cast<NativeType>(descriptor & 0xFF);
-}
-constexpr std::uint32_t descriptor_bytes(std::uint32_t descriptor) {
-    return descriptor >> 8;
-}
 
 /// The value an ANY input refers to: its type and its bytes in VM memory (for STRING and
 /// WSTRING, the whole string: header, characters and terminator).

@@ -5,8 +5,6 @@
 #include "eposp/vm/native.hpp"
 #include "eposp/vm/stdlib/string_layout.hpp"
 
-#include <array>
-
 namespace eposp::vm {
 namespace {
 
@@ -62,18 +60,7 @@ std::span<std::uint8_t> string_at(const NativeArgs& args, std::uint64_t address,
                                                                    : std::span<std::uint8_t>{};
 }
 
-constexpr std::array<std::string_view, 27> kTypeNames = {
-    "BOOL",          "SINT",  "INT",    "DINT",    "LINT",  "USINT",       "UINT",
-    "UDINT",         "ULINT", "BYTE",   "WORD",    "DWORD", "LWORD",       "REAL",
-    "LREAL",         "TIME",  "LTIME",  "DATE",    "LDATE", "TIME_OF_DAY", "LTOD",
-    "DATE_AND_TIME", "LDT",   "STRING", "WSTRING", "CHAR",  "WCHAR"};
-
 } // namespace
-
-std::string_view native_type_name(NativeType type) {
-    const auto index = static_cast<std::size_t>(type);
-    return index < kTypeNames.size() ? kTypeNames[index] : "?";
-}
 
 std::string NativeValue::text() const {
     if (type == NativeType::String) {
@@ -111,7 +98,7 @@ NativeValue NativeArgs::any(std::size_t index) {
     if (type == NativeType::String || type == NativeType::Wstring) {
         bytes = string_at(*this, address,
                           type == NativeType::Wstring ? CharWidth::Wide : CharWidth::Narrow);
-    } else if (static_cast<std::size_t>(type) < kTypeNames.size()) {
+    } else if (static_cast<std::size_t>(type) < kNativeTypeCount) {
         bytes = memory(address, descriptor_bytes(descriptor));
     }
     if (bytes.empty()) {
