@@ -110,7 +110,7 @@ TEST_F(Epos2DriveOnBus, MeasuredValuesFollowTheMotion) {
 // 8.2.90: the modes this simulation does not run yet are refused.
 TEST_F(Epos2DriveOnBus, ModesNotYetSimulatedAreRefused) {
     std::optional<AbortCode> result;
-    client.download(kNode, 0x6060, 0, encode(std::int8_t{-5}), // Master Encoder Mode
+    client.download(kNode, 0x6060, 0, encode(std::int8_t{-4}), // Diagnostic Mode
                     [&result](AbortCode code) { result = code; });
     loop.run_for(20ms);
     EXPECT_EQ(result, AbortCode::InvalidValue);

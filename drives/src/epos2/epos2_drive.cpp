@@ -52,6 +52,7 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
           .objects = dictionary_.objects(),
           .outputs = dictionary_.objects(),
           .counts_per_turn = counts_per_turn_,
+          .digital_position_counter = digital_position_counter_,
           .raise_device_error = [this](std::uint16_t code) { raise_device_error(code); },
           .homing = homing_,
           .standstill = standstill_})),

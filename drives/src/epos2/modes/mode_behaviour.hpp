@@ -26,6 +26,7 @@ struct ModeServices {
     /// The same dictionary, for the read-only values a mode shows (IPM's buffer status).
     canopen::ObjectDictionary& outputs;
     const double& counts_per_turn; ///< 4 × 0x2210 sub 1, kept up to date by the drive
+    const std::int32_t& digital_position_counter; ///< inputs 2 and 3 (Epos2Drive)
     std::function<void(std::uint16_t)> raise_device_error;
     motion::HomingProcedure& homing;       ///< its reference (bit 15) survives mode changes
     motion::StandstillMonitor& standstill; ///< shared with the stop ramps (8.2.73)

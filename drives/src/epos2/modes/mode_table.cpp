@@ -1,6 +1,7 @@
 #include "mode_table.hpp"
 
 #include "current_mode.hpp"
+#include "digital_position_mode.hpp"
 #include "homing_mode.hpp"
 #include "interpolated_position_mode.hpp"
 #include "position_mode.hpp"
@@ -19,6 +20,8 @@ std::optional<OperatingMode> simulated_mode(std::int8_t modes_of_operation) {
     case OperatingMode::Velocity:
     case OperatingMode::Current:
     case OperatingMode::InterpolatedPosition:
+    case OperatingMode::MasterEncoder:
+    case OperatingMode::StepDirection:
         return static_cast<OperatingMode>(modes_of_operation);
     }
     return std::nullopt;
@@ -40,6 +43,9 @@ std::unique_ptr<ModeBehaviour> make_mode_behaviour(OperatingMode mode, ModeServi
         return std::make_unique<CurrentMode>(services);
     case OperatingMode::InterpolatedPosition:
         return std::make_unique<InterpolatedPositionMode>(services);
+    case OperatingMode::MasterEncoder:
+    case OperatingMode::StepDirection:
+        return std::make_unique<DigitalPositionMode>(services);
     }
     return std::make_unique<ProfilePositionMode>(services);
 }

@@ -40,6 +40,8 @@ enum class OperatingMode : std::int8_t {
     Position = -1,
     Velocity = -2,
     Current = -3,
+    MasterEncoder = -5,
+    StepDirection = -6,
 };
 
 /// EPOS2 FW spec 8.2.63: the two analog inputs of 0x207C.
@@ -104,6 +106,16 @@ public:
     /// input configured as a set value (0x207B) and executed (0x207D) commands the Position,
     /// Velocity or Current Mode (8.2.81 - 8.2.83).
     void set_analog_input(AnalogInput input, std::int16_t millivolts);
+    /// Counts on the digital position input (inputs 2 and 3, 5.7 / 5.8): the quadrature counter
+    /// of a master encoder, or the up/down counter of step pulses, advances by `counts` (negative
+    /// counts down). It commands the Master Encoder and Step/Direction Modes; a neighbouring
+    /// axis' encoder counts fed here make this axis follow it as an electronic gear.
+    void count_digital_position_input(std::int32_t counts) {
+        // A 32-bit hardware counter: it wraps.
+        digital_position_counter_ =
+            static_cast<std::int32_t>(static_cast<std::uint32_t>(digital_position_counter_) +
+                                      static_cast<std::uint32_t>(counts));
+    }
 
     // Fault injection (docs/epos2.md, "Fault injection").
 
@@ -176,10 +188,11 @@ private:
     motion::MotionState last_demand_; ///< of the last control period
     motion::Trajectory stop_;         ///< the stop ramp in progress
     double stop_start_ = 0;
-    std::int64_t position_offset_ = 0;        ///< what homing added to the axis' counter
-    std::optional<std::int64_t> index_latch_; ///< an index pulse since the last control period
-    double counts_per_turn_ = 0;              ///< 4 × 0x2210 sub 1
-    std::int64_t counter_at_index_ = 0;       ///< 0x2021: the raw encoder counter
+    std::int64_t position_offset_ = 0;          ///< what homing added to the axis' counter
+    std::optional<std::int64_t> index_latch_;   ///< an index pulse since the last control period
+    double counts_per_turn_ = 0;                ///< 4 × 0x2210 sub 1
+    std::int32_t digital_position_counter_ = 0; ///< of inputs 2 and 3 (5.7, 5.8), wrapping
+    std::int64_t counter_at_index_ = 0;         ///< 0x2021: the raw encoder counter
     /// 8.2.47: the current filtered at 50 Hz every 0.1 ms; 8.2.48: the velocity at 5 Hz every ms.
     plant::LowPassFilter current_averaged_{50, plant::ServoAxis::kCurrentLoopPeriod};
     plant::LowPassFilter velocity_averaged_{5, plant::ServoAxis::kOuterLoopPeriod};

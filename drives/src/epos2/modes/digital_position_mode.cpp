@@ -1,0 +1,36 @@
+#include "digital_position_mode.hpp"
+
+#include <algorithm>
+
+namespace eposp::drives::epos2 {
+
+void DigitalPositionMode::start(double, std::int64_t position, bool) {
+    limiter_ = motion::PositionSetValueLimiter(static_cast<double>(position));
+    held_ = static_cast<double>(position);
+}
+
+void DigitalPositionMode::stop_completed(double position) {
+    limiter_ = motion::PositionSetValueLimiter(position);
+    held_ = position;
+}
+
+ModeDemand DigitalPositionMode::demand(const ModeInputs&) {
+    const auto& od = services_.objects;
+    const std::int32_t counter = services_.digital_position_counter;
+    const std::int32_t desired = od.get_as<std::uint8_t>(0x2300, 4) == 0 ? counter : -counter;
+    services_.outputs.set_as(0x2300, 1, desired);
+    const auto denominator = od.get_as<std::uint16_t>(0x2300, 3);
+    if (denominator != 0) {
+        held_ = static_cast<double>(desired) * od.get_as<std::uint16_t>(0x2300, 2) / denominator +
+                od.get_as<std::int32_t>(0x2300, 5);
+    }
+    const double set_value =
+        std::clamp(held_, static_cast<double>(od.get_as<std::int32_t>(0x607D, 1)),
+                   static_cast<double>(od.get_as<std::int32_t>(0x607D, 2)));
+    return {.motion = limiter_.update(set_value,
+                                      services_.rpm_to_counts(od.get_as<std::uint32_t>(0x607F, 0)),
+                                      services_.rpm_to_counts(od.get_as<std::uint32_t>(0x60C5, 0)),
+                                      plant::ServoAxis::kOuterLoopPeriod)};
+}
+
+} // namespace eposp::drives::epos2
