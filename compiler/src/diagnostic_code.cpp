@@ -62,6 +62,18 @@ std::optional<DiagnosticCode> find_diagnostic_code(std::string_view name) {
     return std::nullopt;
 }
 
+std::string_view severity_name(Severity severity) {
+    switch (severity) {
+    case Severity::Note:
+        return "note";
+    case Severity::Warning:
+        return "warning";
+    case Severity::Error:
+        return "error";
+    }
+    return "error";
+}
+
 std::string_view stage_name(DiagnosticStage stage) {
     switch (stage) {
     case DiagnosticStage::Driver:

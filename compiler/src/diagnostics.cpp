@@ -44,18 +44,6 @@ void Diagnostics::warning(DiagnosticCode code, const SourceRange& range, std::st
 
 namespace {
 
-std::string_view severity_name(Severity severity) {
-    switch (severity) {
-    case Severity::Note:
-        return "note";
-    case Severity::Warning:
-        return "warning";
-    case Severity::Error:
-        return "error";
-    }
-    return "error";
-}
-
 // Blanks up to `column` of `line`. Tabs are copied so that what follows lines up in any tab
 // width.
 void indent_to(std::string& out, std::string_view line, std::uint32_t column) {

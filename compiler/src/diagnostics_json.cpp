@@ -24,18 +24,6 @@ void locate(json& out, const SourceRange& range, const SourceManager& sources) {
                        : json(nullptr);
 }
 
-std::string_view severity_name(Severity severity) {
-    switch (severity) {
-    case Severity::Note:
-        return "note";
-    case Severity::Warning:
-        return "warning";
-    case Severity::Error:
-        return "error";
-    }
-    return "error";
-}
-
 json to_json(const Diagnostic& diagnostic, const SourceManager& sources) {
     json out;
     out["code"] = describe(diagnostic.code).name;

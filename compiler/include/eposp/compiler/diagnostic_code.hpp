@@ -44,5 +44,7 @@ const DiagnosticInfo& describe(DiagnosticCode code);
 /// The code named `name` ("E0201", any case); nullopt when there is none.
 std::optional<DiagnosticCode> find_diagnostic_code(std::string_view name);
 std::string_view stage_name(DiagnosticStage stage);
+/// "note", "warning", "error": as rendered and in JSON.
+std::string_view severity_name(Severity severity);
 
 } // namespace eposp::compiler
