@@ -1,7 +1,5 @@
 #include "digital_position_mode.hpp"
 
-#include <algorithm>
-
 namespace eposp::drives::epos2 {
 
 void DigitalPositionMode::start(double, std::int64_t position, bool) {
@@ -24,13 +22,7 @@ ModeDemand DigitalPositionMode::demand(const ModeInputs&) {
         held_ = static_cast<double>(desired) * od.get_as<std::uint16_t>(0x2300, 2) / denominator +
                 od.get_as<std::int32_t>(0x2300, 5);
     }
-    const double set_value =
-        std::clamp(held_, static_cast<double>(od.get_as<std::int32_t>(0x607D, 1)),
-                   static_cast<double>(od.get_as<std::int32_t>(0x607D, 2)));
-    return {.motion = limiter_.update(set_value,
-                                      services_.rpm_to_counts(od.get_as<std::uint32_t>(0x607F, 0)),
-                                      services_.rpm_to_counts(od.get_as<std::uint32_t>(0x60C5, 0)),
-                                      plant::ServoAxis::kOuterLoopPeriod)};
+    return {.motion = services_.follow_position_set_value(limiter_, held_)};
 }
 
 } // namespace eposp::drives::epos2

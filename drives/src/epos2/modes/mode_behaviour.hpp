@@ -2,6 +2,7 @@
 
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/drives/motion/homing_procedure.hpp"
+#include "eposp/drives/motion/position_set_value_limiter.hpp"
 #include "eposp/drives/motion/profile_planner.hpp"
 #include "eposp/drives/motion/standstill_monitor.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
@@ -35,6 +36,11 @@ struct ModeServices {
     double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn; }
     /// 5.3.2.1 / 5.10.2.1: 0x6081, 0x6083, 0x6084, 0x6086 clamped to 0x607F and 0x60C5.
     motion::ProfileParameters profile_parameters() const;
+    /// The modes whose master gives the position (Position, Master Encoder, Step/Direction):
+    /// `set_value` within the software limits 0x607D, followed by `limiter` within 0x607F and
+    /// 0x60C5 for one control period (tables 5-37, 5-40, 5-43).
+    motion::MotionState follow_position_set_value(motion::PositionSetValueLimiter& limiter,
+                                                  double set_value) const;
 };
 
 /// The drive's measurements in a control period, in drive units.

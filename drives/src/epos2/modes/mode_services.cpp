@@ -1,5 +1,7 @@
 #include "mode_behaviour.hpp"
 
+#include <algorithm>
+
 namespace eposp::drives::epos2 {
 
 // 5.3.2.1 / 5.10.2.1: the profile clamped to Maximal Profile Velocity 0x607F and Max
@@ -14,6 +16,17 @@ motion::ProfileParameters ModeServices::profile_parameters() const {
         .max_velocity = rpm_to_counts(objects.get_as<std::uint32_t>(0x607F, 0)),
         .max_acceleration = rpm_to_counts(objects.get_as<std::uint32_t>(0x60C5, 0))};
     return *motion::clamp_to_limits(written, limits);
+}
+
+motion::MotionState
+ModeServices::follow_position_set_value(motion::PositionSetValueLimiter& limiter,
+                                        double set_value) const {
+    const double limited =
+        std::clamp(set_value, static_cast<double>(objects.get_as<std::int32_t>(0x607D, 1)),
+                   static_cast<double>(objects.get_as<std::int32_t>(0x607D, 2)));
+    return limiter.update(limited, rpm_to_counts(objects.get_as<std::uint32_t>(0x607F, 0)),
+                          rpm_to_counts(objects.get_as<std::uint32_t>(0x60C5, 0)),
+                          plant::ServoAxis::kOuterLoopPeriod);
 }
 
 } // namespace eposp::drives::epos2
