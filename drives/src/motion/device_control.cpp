@@ -122,7 +122,13 @@ FaultReaction fault_reaction(FaultClass fault_class, const OptionCodes& codes) {
 }
 
 std::uint16_t DeviceControl::statusword() const {
-    return static_cast<std::uint16_t>(state_bits(state_) | (warning_ ? kWarningBit : 0U));
+    // ESCON2 FW spec table 6: the EPOS2's bits without bit 8 (reserved) and 14 (Refresh).
+    constexpr std::uint16_t kEscon2StateBits = 0x007F;
+    const std::uint16_t bits =
+        machine_ == StateMachine::Escon2
+            ? static_cast<std::uint16_t>(state_bits(state_) & kEscon2StateBits)
+            : state_bits(state_);
+    return static_cast<std::uint16_t>(bits | (warning_ ? kWarningBit : 0U));
 }
 
 DriveOutputs DeviceControl::outputs() const {
@@ -187,14 +193,14 @@ void DeviceControl::apply(DeviceCommand command) {
             enter(DriveState::SwitchedOn); // 3
         } else if (command == EnableOperation) {
             enter(DriveState::SwitchedOn); // 3, then 4 automatically (table 3-6 remark *1)
-            enter(DriveState::Refresh);
+            enable_operation();
         } else if (command == DisableVoltage || command == QuickStop) {
             enter(DriveState::SwitchOnDisabled); // 7
         }
         break;
     case DriveState::SwitchedOn:
         if (command == EnableOperation) {
-            enter(DriveState::Refresh); // 4
+            enable_operation(); // 4
         } else if (command == Shutdown) {
             enter(DriveState::ReadyToSwitchOn); // 6
         } else if (command == DisableVoltage || command == QuickStop) {
@@ -232,6 +238,12 @@ void DeviceControl::begin_disable(DriveState target, std::int16_t option_code) {
     } else {
         enter(target);
     }
+}
+
+// EPOS2 FW spec table 3-5: transition 4 refreshes the power stage and measures; ESCON2 FW spec
+// table 7: it enables the drive function at once.
+void DeviceControl::enable_operation() {
+    enter(machine_ == StateMachine::Escon2 ? DriveState::OperationEnable : DriveState::Refresh);
 }
 
 void DeviceControl::node_reset() {

@@ -74,6 +74,12 @@ struct DriveOutputs {
     friend bool operator==(const DriveOutputs&, const DriveOutputs&) = default;
 };
 
+/// Whose state machine: the EPOS2's (FW spec 3.2) passes Refresh and Measure Init between
+/// Switched On and Operation Enable and sets statusword bit 8; the ESCON2's (FW spec 2.2, tables
+/// 6 - 8) calibrates the current offset in transition 3, enables at once in transition 4, and
+/// keeps bit 8 reserved (0), so that its states show only bits 0 - 6.
+enum class StateMachine { Epos2, Escon2 };
+
 /// The CiA 402 device control state machine of the EPOS2 (FW spec 3.2, tables 3-4 to 3-6). It is
 /// fed with controlword writes and internal events and has no clock of its own: the drive reports
 /// when a refresh, a measurement or a stop has finished. A command that starts a transition which
@@ -81,7 +87,8 @@ struct DriveOutputs {
 /// one (3.2.2 note): controlwords written meanwhile are held and the last one applied afterwards.
 class DeviceControl {
 public:
-    explicit DeviceControl(OptionCodes codes = {}) : codes_(codes) {}
+    explicit DeviceControl(OptionCodes codes = {}, StateMachine machine = StateMachine::Epos2)
+        : codes_(codes), machine_(machine) {}
 
     DriveState state() const { return state_; }
     /// Bits 0…8 and 14 of the statusword; mode-specific bits are the operating mode's.
@@ -121,7 +128,11 @@ private:
     void enter(DriveState state);
     bool busy() const;
 
+    /// Transition 4 (and 3, 4 of "Switch on & Enable operation").
+    void enable_operation();
+
     OptionCodes codes_;
+    StateMachine machine_;
     DriveState state_ = DriveState::Start;
     bool warning_ = false;
     bool fault_reset_bit_ = false;
