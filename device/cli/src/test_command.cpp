@@ -3,6 +3,7 @@
 // (docs/testing-plc-code.md), each in a fresh EPOS P in virtual time, and reports like a CI test
 // runner: each failure as `file:line: Suite.Test: …`, then `N passed, N failed`.
 #include "commands.hpp"
+#include "eposp/compiler/diagnostics_json.hpp"
 #include "eposp/core/durable_file.hpp"
 #include "eposp/plctest/lcov_writer.hpp"
 #include "eposp/plctest/reports.hpp"
@@ -10,11 +11,13 @@
 #include "exit_codes.hpp"
 #include "file_checks.hpp"
 #include "options.hpp"
+#include "program_input.hpp"
 #include "terminal_text.hpp"
 
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
+#include <set>
 #include <thread>
 
 namespace eposp::device::cli {
@@ -34,6 +37,7 @@ struct TestOptions {
     std::optional<std::uint64_t> seed;
     vm::Engine engine = vm::default_engine();
     bool force = false;
+    ErrorFormat error_format = ErrorFormat::Human;
 };
 
 std::optional<std::string> options_problem(const TestOptions& options) {
@@ -70,6 +74,25 @@ std::optional<std::string> options_problem(const TestOptions& options) {
     return output_files_problem(outputs, inputs, options.force);
 }
 
+/// Prints each compilation's diagnostics as JSON lines on stdout, each once: every suite's
+/// program holds the same files, so the same warning would otherwise come once per suite.
+plctest::DiagnosticsObserver json_diagnostics_printer() {
+    return [printed = std::make_shared<std::set<std::string>>()](
+               const compiler::Diagnostics& diagnostics, const compiler::SourceManager& sources) {
+        const std::string lines = compiler::render_json(diagnostics, sources);
+        for (std::size_t begin = 0, end; begin < lines.size(); begin = end + 1) {
+            end = lines.find('\n', begin);
+            if (end == std::string::npos) {
+                end = lines.size();
+            }
+            if (std::string line = lines.substr(begin, end - begin);
+                !line.empty() && printed->insert(line).second) {
+                fmt::print("{}\n", line);
+            }
+        }
+    };
+}
+
 std::optional<std::string> write_text(const std::string& path, const std::string& text) {
     const std::vector<std::uint8_t> bytes(text.begin(), text.end());
     if (auto error = core::write_file_durably(path, bytes)) {
@@ -89,6 +112,9 @@ int run_test_command(const TestOptions& options) {
     run_options.seed = options.seed;
     run_options.settings.engine = options.engine;
     run_options.settings.coverage = options.coverage || options.lcov;
+    if (options.error_format == ErrorFormat::Json) {
+        run_options.observe_diagnostics = json_diagnostics_printer();
+    }
     if (options.timeout) {
         run_options.settings.timeout = *options.timeout;
     }
@@ -101,7 +127,8 @@ int run_test_command(const TestOptions& options) {
     }
     auto run = plctest::run_tests(run_options);
     if (!run) {
-        // The files' own mistakes, already `file:line: error: …` as the compiler writes them.
+        // The files' own mistakes, already `file:line: error: …` as the compiler writes them
+        // (on stderr also with --error-format json, whose lines went to stdout).
         const std::string text = terminal_text(run.error());
         fmt::print(stderr, "{}{}", text, text.ends_with('\n') ? "" : "\n");
         return kExitUserError;
@@ -167,6 +194,7 @@ void add_test_command(CLI::App& app, int& exit_code) {
                         "Machine time one test may take (default 10s)");
     add_engine_option(*command, options->engine);
     add_force_option(*command, options->force);
+    add_error_format_option(*command, options->error_format);
     command->callback([options, &exit_code] { exit_code = run_test_command(*options); });
 }
 

@@ -98,7 +98,8 @@ std::string TestSources::file_of(std::string_view pou) const {
     return found == pou_files.end() ? std::string() : found->second;
 }
 
-core::Result<TestSources> discover_suites(const std::vector<std::string>& paths) {
+core::Result<TestSources> discover_suites(const std::vector<std::string>& paths,
+                                          const DiagnosticsObserver& observe) {
     compiler::SourceManager sources;
     compiler::Diagnostics diagnostics;
     TestSources found{.paths = paths, .suites = {}, .pou_files = {}};
@@ -127,6 +128,9 @@ core::Result<TestSources> discover_suites(const std::vector<std::string>& paths)
             suites.push_back(
                 {pou.name, pou.kind, {path, line}, std::move(attributes->mocks), network});
         }
+    }
+    if (observe) {
+        observe(diagnostics, sources);
     }
     if (diagnostics.has_errors()) {
         return core::Error{compiler::render(diagnostics, sources)};

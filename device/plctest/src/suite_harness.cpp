@@ -48,7 +48,8 @@ std::string harness_source(const Suite& suite, core::Duration cycle) {
 }
 
 core::Result<vm::Image> build_suite(const TestSources& sources, const Suite& suite,
-                                    core::Duration cycle, bool coverage) {
+                                    core::Duration cycle, bool coverage,
+                                    const DiagnosticsObserver& observe) {
     compiler::SourceManager files;
     compiler::CompileOptions options;
     std::vector<compiler::FileId> program;
@@ -69,6 +70,9 @@ core::Result<vm::Image> build_suite(const TestSources& sources, const Suite& sui
     options.if_conversion = !coverage;
     compiler::Diagnostics diagnostics;
     auto image = compiler::compile(files, program, diagnostics, libraries, options);
+    if (observe) {
+        observe(diagnostics, files);
+    }
     if (!image) {
         return core::Error{"does not compile:\n" + compiler::render(diagnostics, files)};
     }

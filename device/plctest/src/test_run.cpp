@@ -55,7 +55,7 @@ bool TestFilter::may_select(std::string_view suite) const {
 }
 
 core::Result<TestRun> run_tests(const TestRunOptions& options) {
-    auto sources = discover_suites(options.paths);
+    auto sources = discover_suites(options.paths, options.observe_diagnostics);
     if (!sources) {
         return core::Error{sources.error()};
     }
@@ -86,7 +86,7 @@ core::Result<TestRun> run_tests(const TestRunOptions& options) {
         const auto& network = suite_settings[i].network;
         images.emplace_back(build_suite(run.sources, *suites[i],
                                         test_cycle(network.value_or(default_network())),
-                                        settings.coverage));
+                                        settings.coverage, options.observe_diagnostics));
     }
     std::vector<std::size_t> order(suites.size());
     std::iota(order.begin(), order.end(), std::size_t{0});

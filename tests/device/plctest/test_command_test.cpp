@@ -711,6 +711,44 @@ TEST(EpospTestBadInput, SuiteThatDoesNotCompileFailsWithTheCompilersMessage) {
     EXPECT_EQ(last_line(result), "0 passed, 1 failed");
 }
 
+TEST(EpospTestBadInput, ErrorFormatJsonPrintsEachDiagnosticOnceAsJson) {
+    // Two suites: each compiles the same files, so each error would be found twice.
+    const auto suite = write_source("two_suites_test.st", "FUNCTION_BLOCK First\n"
+                                                          "    TEST('T');\n"
+                                                          "    AssertEquals_DINT(1, nowhere, '');\n"
+                                                          "    TEST_FINISHED();\n"
+                                                          "END_FUNCTION_BLOCK\n"
+                                                          "FUNCTION_BLOCK Second\n"
+                                                          "    TEST('T');\n"
+                                                          "    TEST_FINISHED();\n"
+                                                          "END_FUNCTION_BLOCK\n");
+    const auto result = eposp("test --error-format json " + suite);
+    EXPECT_EQ(result.exit_code, 1);
+    const std::string json =
+        "{\"code\":\"E0201\",\"severity\":\"error\",\"title\":\"undeclared "
+        "identifier\",\"message\":\"undeclared identifier 'nowhere'\",\"file\":\"" +
+        suite + "\",\"range\":{\"start\":{\"line\":3,\"column\":26}";
+    EXPECT_EQ(
+        std::ranges::count_if(lines_of(result),
+                              [&json](const std::string& line) { return line.starts_with(json); }),
+        1)
+        << result.output;
+    // The report still says which suite could not run.
+    EXPECT_THAT(result.output, HasSubstr(suite + ":1: First: does not compile:"));
+}
+
+TEST(EpospTestBadInput, ErrorFormatJsonShowsParseErrorsAsJson) {
+    const auto suite = write_source("broken_test.st", "FUNCTION_BLOCK Broken\n"
+                                                      "    TEST('T');\n"
+                                                      "    x := ;\n"
+                                                      "END_FUNCTION_BLOCK\n");
+    const auto result = eposp("test --error-format json " + suite);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_THAT(result.output, HasSubstr("\"severity\":\"error\""));
+    EXPECT_THAT(result.output,
+                HasSubstr("\"file\":\"" + suite + "\",\"range\":{\"start\":{\"line\":3,"));
+}
+
 TEST(EpospTestBadInput, MalformedMockAttributeIsShownAtItsLine) {
     const auto suite =
         write_source("mock_test.st", "FUNCTION_BLOCK FB_Double\n"

@@ -43,9 +43,10 @@ std::string harness_source(const Suite& suite, core::Duration cycle);
 /// and test libraries, its mocks substituted; the error is `does not compile:` and the
 /// compiler's diagnostics.
 /// With `coverage`, simple IFs keep their branches (CompileOptions::if_conversion) so that
-/// both outcomes are counted.
+/// both outcomes are counted. `observe`, if set, sees the compiler's diagnostics.
 core::Result<vm::Image> build_suite(const TestSources& sources, const Suite& suite,
-                                    core::Duration cycle, bool coverage);
+                                    core::Duration cycle, bool coverage,
+                                    const DiagnosticsObserver& observe = {});
 
 struct SuiteRun {
     SuiteResult result;

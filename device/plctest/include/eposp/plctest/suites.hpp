@@ -1,10 +1,12 @@
 #pragma once
 
 #include "eposp/compiler/ast/compilation_unit.hpp"
+#include "eposp/compiler/diagnostics.hpp"
 #include "eposp/compiler/source_manager.hpp"
 #include "eposp/core/result.hpp"
 #include "eposp/plctest/test_results.hpp"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -42,9 +44,15 @@ struct TestSources {
     std::string file_of(std::string_view pou) const;
 };
 
+/// Sees the diagnostics of every compilation a test run makes (the files' parse, then each
+/// suite's program), errors and warnings, for a caller that prints them in a form of its own.
+using DiagnosticsObserver =
+    std::function<void(const compiler::Diagnostics&, const compiler::SourceManager&)>;
+
 /// The suites of the files, or why the files do not parse or hold a malformed attribute
-/// (`file:line: error: …`).
-core::Result<TestSources> discover_suites(const std::vector<std::string>& paths);
+/// (`file:line: error: …`). `observe`, if set, sees the parser's diagnostics.
+core::Result<TestSources> discover_suites(const std::vector<std::string>& paths,
+                                          const DiagnosticsObserver& observe = {});
 
 /// The attributes on the lines just above `line` (1-based) of `text`: pragma lines
 /// `{attribute 'mock' := 'A => B'}` and `{attribute 'network' := 'file.yaml'}`, with blank and

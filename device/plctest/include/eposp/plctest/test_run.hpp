@@ -38,6 +38,9 @@ struct TestRunOptions {
     /// The suites start in an order shuffled by this seed (the report keeps the files' order):
     /// each suite has a device of its own, so the results must not change with it.
     std::optional<std::uint64_t> seed;
+    /// Sees the diagnostics of each compilation, in the order made (they are not in the
+    /// reports otherwise, except as a suite's `does not compile` error).
+    DiagnosticsObserver observe_diagnostics;
 };
 
 struct TestRun {
