@@ -13,7 +13,7 @@
 #include <unordered_map>
 #include <variant>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::checks {
 namespace {
 
 /// The variables definitely assigned at a point; an unreachable point assigns everything, the
@@ -331,4 +331,4 @@ std::vector<UnassignedPaths> unassigned_paths(const ast::StatementList& body,
     return analysis.result(variables, end);
 }
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::checks

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::checks {
 
 /// What the definite-assignment pass needs from type checking.
 struct AssignmentFacts {
@@ -39,4 +39,4 @@ std::vector<UnassignedPaths> unassigned_paths(const ast::StatementList& body,
                                               const std::vector<std::string>& variables,
                                               const AssignmentFacts& facts);
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::checks

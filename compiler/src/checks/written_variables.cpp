@@ -5,7 +5,7 @@
 #include <type_traits>
 #include <variant>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::checks {
 namespace {
 
 class WrittenVariables {
@@ -104,4 +104,4 @@ std::unordered_set<std::string> written_variables(const ast::StatementList& body
     return std::move(walker.names);
 }
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::checks

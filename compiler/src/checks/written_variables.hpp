@@ -5,7 +5,7 @@
 #include <string>
 #include <unordered_set>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::checks {
 
 /// The variable under `x`, `x.a`, `x[i]`, `x.3`: what writing that target changes; null when
 /// the target is not rooted in a name (a dereference, a call).
@@ -16,4 +16,4 @@ const ast::NameExpression* root_variable(const ast::Expression& target);
 /// REF/ADR, which may write through them. An output absent from it is never assigned.
 std::unordered_set<std::string> written_variables(const ast::StatementList& body);
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::checks

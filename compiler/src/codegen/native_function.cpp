@@ -131,7 +131,7 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
         if (is_enable_argument(argument)) {
             continue;
         }
-        const sema::Field* field = formal(frame, argument, positional);
+        const sema::Field* field = sema::formal_parameter(frame, argument, positional);
         const auto it = std::find_if(parameters.begin(), parameters.end(),
                                      [&](const NativeParameter& p) { return p.field == field; });
         if (field == nullptr || it == parameters.end() ||

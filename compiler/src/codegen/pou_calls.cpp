@@ -65,25 +65,6 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
     return Value{};
 }
 
-const sema::Field* formal(const sema::Type& frame, const ast::Argument& argument,
-                          std::size_t& positional) {
-    if (argument.name) {
-        const sema::Field* field = frame.field(argument.name->name);
-        return field != nullptr && field->declaration != nullptr ? field : nullptr;
-    }
-    std::size_t seen = 0;
-    for (const sema::Field& field : frame.fields) {
-        if (field.declaration != nullptr && (field.section == ast::VarSectionKind::Input ||
-                                             field.section == ast::VarSectionKind::InOut)) {
-            if (seen++ == positional) {
-                ++positional;
-                return &field;
-            }
-        }
-    }
-    return nullptr;
-}
-
 namespace {
 
 bool is_parameter(ast::VarSectionKind section) {
@@ -124,7 +105,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         if (is_enable_argument(argument)) {
             continue;
         }
-        const sema::Field* field = formal(frame, argument, positional);
+        const sema::Field* field = sema::formal_parameter(frame, argument, positional);
         const bool output = argument.kind == ast::Argument::Kind::Output;
         if (field == nullptr || !is_parameter(field->section) ||
             output != (field->section == ast::VarSectionKind::Output)) {
@@ -251,7 +232,7 @@ std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sem
     std::vector<Value> arguments;
     std::size_t positional = 0;
     for (const ast::Argument& argument : node.arguments) {
-        const sema::Field* field = formal(frame, argument, positional);
+        const sema::Field* field = sema::formal_parameter(frame, argument, positional);
         if (field == nullptr || field->section != ast::VarSectionKind::Input) {
             error(DiagnosticCode::E0210, argument.range,
                   fmt::format("bad argument for '{}'", function.name.name));
@@ -391,38 +372,6 @@ std::optional<Value> PouGenerator::native_result(const vm::NativeSignature& sign
              result, native_block());
     }
     return Value{result, &type};
-}
-
-bool PouGenerator::may_write_argument(const ast::CallExpression& node, std::size_t index) const {
-    const auto* name = std::get_if<ast::NameExpression>(&node.callee->node);
-    const sema::Symbol* callee = name != nullptr ? model_.resolved(name->name) : nullptr;
-    const ast::Pou* function = nullptr;
-    if (callee != nullptr && callee->kind == sema::SymbolKind::Pou) {
-        function = callee->pou;
-    } else if (callee != nullptr && callee->kind == sema::SymbolKind::StandardFunction) {
-        function = program_.library_pou(callee->name);
-        if (function == nullptr) {
-            return false; // the built-in standard functions take values (ADR aside)
-        }
-    }
-    if (function != nullptr) {
-        const sema::Type& frame = *types_.frame(*function);
-        std::size_t positional = 0;
-        for (std::size_t i = 0; i < index; ++i) {
-            if (!node.arguments[i].name) {
-                formal(frame, node.arguments[i], positional);
-            }
-        }
-        const sema::Field* field = formal(frame, node.arguments[index], positional);
-        return field != nullptr && field->section == ast::VarSectionKind::InOut;
-    }
-    // An instance: its formal names resolve to its variables.
-    const ast::Argument& argument = node.arguments[index];
-    const sema::Symbol* formal_symbol = argument.name ? model_.resolved(*argument.name) : nullptr;
-    if (formal_symbol != nullptr && formal_symbol->kind == sema::SymbolKind::Variable) {
-        return formal_symbol->section == ast::VarSectionKind::InOut;
-    }
-    return true;
 }
 
 } // namespace eposp::compiler::codegen

@@ -1,9 +1,7 @@
 #include "pou_generator.hpp"
 
 #include "constant_declarations.hpp"
-#include "definite_assignment.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
-#include "written_variables.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -41,7 +39,6 @@ std::uint32_t PouGenerator::generate() {
         call_native_block();
     } else {
         statements(pou_.body);
-        report_unused();
     }
     bind(end_);
     emit(Opcode::Ret);
@@ -49,115 +46,6 @@ std::uint32_t PouGenerator::generate() {
     const std::uint32_t out = sema::align_up(out_max_, 8);
     builder_.end_body(frame, out);
     return frame + out;
-}
-
-void PouGenerator::report_unused() {
-    if (pou_.kind == ast::PouKind::Function && pou_.return_type && !result_assigned_) {
-        warning(DiagnosticCode::W0403, pou_.name.range,
-                fmt::format("function '{}' never assigns its result", pou_.name.name));
-    }
-    // A program's outputs may be written from outside (connections, online); a function's or
-    // FB's only by its body.
-    const auto written = pou_.kind == ast::PouKind::Program ? std::unordered_set<std::string>{}
-                                                            : written_variables(pou_.body);
-    for (const ast::DeclarationSection& section : pou_.sections) {
-        const auto* variables = std::get_if<ast::VarSection>(&section);
-        if (variables != nullptr && variables->kind == ast::VarSectionKind::Output &&
-            pou_.kind != ast::PouKind::Program) {
-            for (const ast::VariableDeclaration& declaration : variables->variables) {
-                for (const ast::Identifier& name : declaration.names) {
-                    if (!written.contains(sema::fold_case(name.name))) {
-                        warning(DiagnosticCode::W0402, name.range,
-                                fmt::format("output '{}' is never assigned", name.name));
-                    }
-                }
-            }
-            continue;
-        }
-        if (variables == nullptr || (variables->kind != ast::VarSectionKind::Var &&
-                                     variables->kind != ast::VarSectionKind::Temp &&
-                                     variables->kind != ast::VarSectionKind::External)) {
-            continue;
-        }
-        // A PROGRAM's variables are visible from outside (watch, configuration access).
-        if (pou_.kind == ast::PouKind::Program && variables->kind == ast::VarSectionKind::Var) {
-            continue;
-        }
-        for (const ast::VariableDeclaration& declaration : variables->variables) {
-            for (const ast::Identifier& name : declaration.names) {
-                if (!used_.contains(sema::fold_case(name.name))) {
-                    warning(DiagnosticCode::W0401, name.range,
-                            fmt::format("variable '{}' is never used", name.name));
-                }
-            }
-        }
-    }
-    if (pou_.kind == ast::PouKind::Function) {
-        report_unassigned_paths(written);
-    }
-}
-
-// A function's result and outputs start from their initial values at each call (6.5.1.3): a
-// path that assigns none returns those, likely an oversight unless the declaration gives one.
-// An FB's outputs keep their values from the last call, so a path that leaves one is normal
-// PLC practice and is not reported. What is never assigned at all was reported above.
-void PouGenerator::report_unassigned_paths(const std::unordered_set<std::string>& written) {
-    std::vector<std::string> names;
-    std::vector<const ast::Identifier*> declared;
-    if (pou_.return_type && result_assigned_) {
-        names.push_back(sema::fold_case(pou_.name.name));
-        declared.push_back(&pou_.name);
-    }
-    for (const ast::DeclarationSection& section : pou_.sections) {
-        const auto* variables = std::get_if<ast::VarSection>(&section);
-        if (variables == nullptr || variables->kind != ast::VarSectionKind::Output) {
-            continue;
-        }
-        for (const ast::VariableDeclaration& declaration : variables->variables) {
-            for (const ast::Identifier& name : declaration.names) {
-                if (declaration.initial_value == nullptr &&
-                    written.contains(sema::fold_case(name.name))) {
-                    names.push_back(sema::fold_case(name.name));
-                    declared.push_back(&name);
-                }
-            }
-        }
-    }
-    if (names.empty()) {
-        return;
-    }
-    const AssignmentFacts facts{[this](const ast::CallExpression& node, std::size_t index) {
-                                    return may_write_argument(node, index);
-                                },
-                                [this](const ast::CaseStatement& node) {
-                                    return exhaustive_cases_.contains(&node);
-                                }};
-    // The POU ends with END_FUNCTION: underline it.
-    constexpr std::uint32_t kEndLength = 12; // END_FUNCTION
-    SourceRange end{pou_.range.file, pou_.range.end, pou_.range.end};
-    if (end.end.column >= kEndLength) {
-        end.begin.column = end.end.column - kEndLength + 1;
-    }
-    for (const UnassignedPaths& paths : unassigned_paths(pou_.body, names, facts)) {
-        const auto at = std::find(names.begin(), names.end(), paths.name) - names.begin();
-        const ast::Identifier& name = *declared[static_cast<std::size_t>(at)];
-        Diagnostic diagnostic{
-            &name == &pou_.name ? DiagnosticCode::W0403 : DiagnosticCode::W0402, name.range,
-            &name == &pou_.name
-                ? fmt::format("function '{}' may return without assigning its result (not "
-                              "assigned on every path)",
-                              name.name)
-                : fmt::format("output '{}' may be left unassigned (not assigned on every path)",
-                              name.name)};
-        for (const SourceRange& range : paths.returns) {
-            diagnostic.notes.push_back({range, "this RETURN is reached without assigning it"});
-        }
-        if (paths.at_end) {
-            diagnostic.notes.push_back(
-                {end, "the end of the function is reached without assigning it"});
-        }
-        program_.diagnostics().report(std::move(diagnostic));
-    }
 }
 
 void PouGenerator::error(DiagnosticCode code, const SourceRange& range, std::string message) {
@@ -280,7 +168,6 @@ Operand PouGenerator::native_block() const {
 }
 
 std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const SourceRange& range) {
-    used_.insert(sema::fold_case(symbol.name));
     // A PROGRAM's own VAR_GLOBAL lives in its instance; other globals in the configuration.
     const auto local = locals_.find(sema::fold_case(symbol.name));
     if (symbol.kind == sema::SymbolKind::Variable &&

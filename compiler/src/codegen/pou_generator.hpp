@@ -33,11 +33,6 @@ bool is_time_function(std::string_view name);
 /// (pou_enable.cpp).
 bool is_enable_argument(const ast::Argument& argument);
 
-/// The parameter of `frame` (a function's) that `argument` names, or the next positional input
-/// or in-out after the `positional` ones already bound; null if there is none (pou_calls.cpp).
-const sema::Field* formal(const sema::Type& frame, const ast::Argument& argument,
-                          std::size_t& positional);
-
 /// The arguments of a standard function call as written, without EN and ENO.
 using Arguments = std::vector<const ast::Argument*>;
 
@@ -82,11 +77,6 @@ private:
     /// signature lists the instance's fields (native_block.cpp).
     void call_native_block();
     void initialise_frame();
-    /// Warnings: variables never used, a function result never assigned.
-    void report_unused();
-    /// Warnings: a function's result or output (of those `written` somewhere) left unassigned
-    /// by some path to a RETURN or the end (definite_assignment.hpp).
-    void report_unassigned_paths(const std::unordered_set<std::string>& written);
     vm::Operand temp(const sema::Type& type);
     std::uint32_t out_slot(std::uint32_t end);
     /// Where a host function called now finds its argument block and leaves its result: after
@@ -218,8 +208,6 @@ private:
                                  const Destination* dest);
     vm::Operand result_operand(const sema::Type& type, const Destination* dest);
     /// `pointer + bytes`, `pointer - bytes`: CODESYS pointer arithmetic, in bytes.
-    /// Warns when an assignment writes an input of the running POU.
-    void warn_if_input(const ast::Expression& target);
     std::optional<Value> pointer_offset(bool add, const Value& pointer,
                                         const ast::Expression& bytes, const Destination* dest);
     static bool is_untyped_literal(const ast::Expression& expression);
@@ -347,10 +335,6 @@ private:
     std::optional<Value> native_result(const vm::NativeSignature& signature, const sema::Type& type,
                                        const Destination* dest);
 
-    /// Whether the argument `index` of `node`, given as a variable, may be written by the call:
-    /// a VAR_IN_OUT, or a parameter that cannot be told.
-    bool may_write_argument(const ast::CallExpression& node, std::size_t index) const;
-
     // --- standard_functions.cpp --------------------------------------------------------------
     std::optional<Value> standard_function(const std::string& name, const ast::CallExpression& node,
                                            const sema::Type* hint, const Destination* dest,
@@ -403,10 +387,6 @@ private:
     std::uint32_t out_pending_ = 0;
     std::vector<Loop> loops_;
     std::vector<std::uint32_t> for_variables_; // operands of the enclosing FOR loops
-    bool result_assigned_ = false;
-    /// CASE statements whose labels cover every value of the selector (definite assignment).
-    std::unordered_set<const ast::CaseStatement*> exhaustive_cases_;
-    std::unordered_set<std::string> used_; // folded names of the variables referred to
     ValueCache cache_;
     std::unordered_map<std::uint16_t, std::uint32_t> array_bytes_; // per descriptor
     vm::Label end_;

@@ -3,7 +3,6 @@
 #include "eposp/compiler/sema/symbol.hpp"
 #include "if_conversion.hpp"
 #include "pou_generator.hpp"
-#include "written_variables.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -13,54 +12,9 @@ namespace eposp::compiler::codegen {
 using vm::Opcode;
 using vm::Operand;
 
-namespace {
-
-/// Whether the CASE labels `ranges` (low, high) cover every value a selector of `type` holds:
-/// each enumerator of an enumeration, the whole of a subrange. Then no selector value skips
-/// all the branches (7.3.3.3.3), which definite assignment takes into account.
-bool covers_every_value(const sema::Type& type,
-                        std::vector<std::pair<std::int64_t, std::int64_t>> ranges) {
-    const auto covered = [&](std::int64_t value) {
-        return std::any_of(ranges.begin(), ranges.end(),
-                           [&](const auto& r) { return r.first <= value && value <= r.second; });
-    };
-    if (type.kind == sema::TypeKind::Enum) {
-        return !type.enumerators.empty() &&
-               std::all_of(type.enumerators.begin(), type.enumerators.end(),
-                           [&](const auto& enumerator) { return covered(enumerator.second); });
-    }
-    if (!type.range) {
-        return false;
-    }
-    std::sort(ranges.begin(), ranges.end());
-    std::int64_t next = type.range->lower; // the lowest value not yet covered
-    for (const auto& [low, high] : ranges) {
-        if (low > next) {
-            return false;
-        }
-        if (high >= type.range->upper) {
-            return true;
-        }
-        next = std::max(next, high + 1);
-    }
-    return false;
-}
-
-} // namespace
-
 void PouGenerator::statements(const ast::StatementList& list) {
-    bool reported = false;
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        statement(list[i]);
-        const auto& node = list[i].node;
-        const bool leaves = std::holds_alternative<ast::ReturnStatement>(node) ||
-                            std::holds_alternative<ast::ExitStatement>(node) ||
-                            std::holds_alternative<ast::ContinueStatement>(node);
-        if (leaves && i + 1 < list.size() && !reported &&
-            !std::holds_alternative<ast::EmptyStatement>(list[i + 1].node)) {
-            warning(DiagnosticCode::W0404, list[i + 1].range, "this statement is never executed");
-            reported = true;
-        }
+    for (const ast::Statement& statement : list) {
+        this->statement(statement);
     }
 }
 
@@ -104,17 +58,6 @@ void PouGenerator::statement(const ast::Statement& statement) {
     release(mark);
 }
 
-void PouGenerator::warn_if_input(const ast::Expression& target) {
-    const auto* name = std::get_if<ast::NameExpression>(&target.node);
-    const auto local = name ? locals_.find(sema::fold_case(name->name.name)) : locals_.end();
-    if (local != locals_.end() && local->second.section == ast::VarSectionKind::Input) {
-        warning(DiagnosticCode::W0405, target.range,
-                fmt::format("'{}' is an input: IEC 61131-3 does not let a POU "
-                            "write its inputs (CODESYS does, and so does eposp)",
-                            name->name.name));
-    }
-}
-
 void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
                                   const ast::Expression& value, const SourceRange& range) {
     const auto word_place = place(*target.object);
@@ -128,7 +71,6 @@ void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
         error(DiagnosticCode::E0401, target.object->range, "this variable cannot be assigned here");
         return;
     }
-    warn_if_input(*target.object);
     // word := (word AND NOT mask) OR (BOOL_TO_<word>(bit) << n)
     const sema::Type& type = *word->type;
     const Operand cleared = temp(type);
@@ -158,17 +100,11 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
               "output of another instance)");
         return;
     }
-    warn_if_input(*node.target);
     if (is_for_variable(*target)) {
         error(DiagnosticCode::E0402, node.target->range,
               "the control variable of a FOR loop cannot be assigned in "
               "its body (IEC 61131-3 7.3.3.4.2)");
         return;
-    }
-    // The result counts as assigned when it or a part of it is (`F.x := 1`).
-    if (const auto* name = root_variable(*node.target)) {
-        const sema::Symbol* symbol = model_.resolved(name->name);
-        result_assigned_ = result_assigned_ || (symbol != nullptr && symbol->pou == &pou_);
     }
     if (target->type->kind == sema::TypeKind::Instance) {
         error(DiagnosticCode::E0412, range, "a function block instance cannot be assigned");
@@ -345,20 +281,6 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
                                   bodies.back(), !label.high});
             }
         }
-    }
-    std::vector<std::pair<std::int64_t, std::int64_t>> labels;
-    for (const CaseRange& range : ranges) {
-        // A subrange's bounds are signed 64-bit: an unsigned label above them covers none of
-        // its values, a range reaching above them covers all up to its upper bound.
-        if (!unsigned64 || range.low >= 0) {
-            labels.emplace_back(range.low, unsigned64 && range.high < 0 ? INT64_MAX : range.high);
-        }
-    }
-    // Loading a subrange variable gives its base type; its labels are checked against its own.
-    const sema::Type* subrange =
-        type.kind == sema::TypeKind::Enum ? nullptr : declared_subrange(*node.selector);
-    if (covers_every_value(subrange != nullptr ? *subrange : type, std::move(labels))) {
-        exhaustive_cases_.insert(&node);
     }
     const vm::Label otherwise = builder_.label();
     if (!jump_table(selector->operand, type, ranges, otherwise)) {

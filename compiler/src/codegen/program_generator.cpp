@@ -10,7 +10,6 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <functional>
 
 namespace eposp::compiler::codegen {
 
@@ -194,7 +193,7 @@ std::optional<vm::Image> ProgramGenerator::generate() {
     }
     generate_bodies();
     connect_programs();
-    check_recursion();
+    // Recursion (the checks stage) is an error already: the limits below assume none.
     if (diagnostics_.has_errors()) {
         return std::nullopt;
     }
@@ -241,34 +240,6 @@ void ProgramGenerator::check_type_defaults() {
                     default_value(*type);
                 }
             }
-        }
-    }
-}
-
-void ProgramGenerator::check_recursion() {
-    // Depth-first search for a cycle, reporting each POU on one once.
-    enum class Mark { Unvisited, Active, Done };
-    std::unordered_map<const ast::Pou*, Mark> marks;
-    std::function<void(const ast::Pou*)> visit = [&](const ast::Pou* pou) {
-        marks[pou] = Mark::Active;
-        if (const auto it = calls_.find(pou); it != calls_.end()) {
-            for (const ast::Pou* callee : it->second) {
-                const Mark mark = marks[callee];
-                if (mark == Mark::Active) {
-                    diagnostics_.error(DiagnosticCode::E0407, callee->name.range,
-                                       fmt::format("'{}' calls itself (through '{}'): recursion is "
-                                                   "not allowed in IEC 61131-3 (6.6.1.1)",
-                                                   callee->name.name, pou->name.name));
-                } else if (mark == Mark::Unvisited) {
-                    visit(callee);
-                }
-            }
-        }
-        marks[pou] = Mark::Done;
-    };
-    for (const auto& [pou, callees] : calls_) {
-        if (marks[pou] == Mark::Unvisited) {
-            visit(pou);
         }
     }
 }

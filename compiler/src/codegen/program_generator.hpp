@@ -166,8 +166,6 @@ private:
     void generate_bodies();
     /// The bodies that copy the connections of `PROGRAM p WITH t : P (in := g, out => h)`.
     void connect_programs();
-    /// 6.6.1.1: POUs shall not call themselves, directly or through others.
-    void check_recursion();
     /// What the loader would refuse (eposp/vm/image_limits.hpp), reported with the limit.
     void check_limits();
     void check_call_depth();

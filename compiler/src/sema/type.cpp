@@ -216,4 +216,23 @@ bool converts_implicitly(const Type& from, const Type& to) {
     return false;
 }
 
+const Field* formal_parameter(const Type& frame, const ast::Argument& argument,
+                              std::size_t& positional) {
+    if (argument.name) {
+        const Field* field = frame.field(argument.name->name);
+        return field != nullptr && field->declaration != nullptr ? field : nullptr;
+    }
+    std::size_t seen = 0;
+    for (const Field& field : frame.fields) {
+        if (field.declaration != nullptr && (field.section == ast::VarSectionKind::Input ||
+                                             field.section == ast::VarSectionKind::InOut)) {
+            if (seen++ == positional) {
+                ++positional;
+                return &field;
+            }
+        }
+    }
+    return nullptr;
+}
+
 } // namespace eposp::compiler::sema

@@ -10,6 +10,18 @@
 
 namespace eposp::compiler::types {
 
+const ast::Pou* FrontEnd::library_pou(std::string_view name) const {
+    const std::string key = sema::fold_case(name);
+    for (const ast::CompilationUnit& unit : library_units) {
+        for (const ast::Pou& pou : unit.pous) {
+            if (sema::fold_case(pou.name.name) == key) {
+                return &pou;
+            }
+        }
+    }
+    return nullptr;
+}
+
 std::unique_ptr<FrontEnd> resolve_names(SourceManager& sources, std::span<const FileId> files,
                                         Diagnostics& diagnostics, const CompileOptions& options) {
     auto result = std::make_unique<FrontEnd>();
@@ -44,18 +56,7 @@ std::unique_ptr<FrontEnd> analyse(SourceManager& sources, std::span<const FileId
     const FrontEnd* front_end = result.get();
     auto program = type_program(
         result->units, *result->model,
-        [front_end](std::string_view name) -> const ast::Pou* {
-            const std::string key = sema::fold_case(name);
-            for (const ast::CompilationUnit& unit : front_end->library_units) {
-                for (const ast::Pou& pou : unit.pous) {
-                    if (sema::fold_case(pou.name.name) == key) {
-                        return &pou;
-                    }
-                }
-            }
-            return nullptr;
-        },
-        diagnostics);
+        [front_end](std::string_view name) { return front_end->library_pou(name); }, diagnostics);
     if (!diagnostics.has_errors()) {
         result->program = std::move(program);
     }

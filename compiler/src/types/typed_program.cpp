@@ -10,7 +10,7 @@ TypedProgram::TypedProgram(const sema::SemanticModel& model,
                            std::function<const ast::Pou*(std::string_view)> library,
                            std::function<bool(const ast::VariableDeclaration&)> is_constant,
                            Diagnostics& diagnostics)
-    : model_(model), is_constant_(is_constant),
+    : model_(model), library_(library), is_constant_(is_constant),
       types_(model, diagnostics, std::move(library), std::move(is_constant)) {}
 
 const sema::Type* TypedProgram::type_of(const ast::Expression& expression) const {

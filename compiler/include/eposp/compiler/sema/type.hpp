@@ -114,4 +114,10 @@ inline constexpr std::uint32_t kConformantDimensionSize = 8;
 /// of `from` may be used where `to` is expected without a conversion function.
 bool converts_implicitly(const Type& from, const Type& to);
 
+/// The parameter of the function whose frame is `frame` that a call's `argument` binds: by its
+/// formal name, or the next input or VAR_IN_OUT when positional (`positional` counts those
+/// taken); null when it binds none.
+const Field* formal_parameter(const Type& frame, const ast::Argument& argument,
+                              std::size_t& positional);
+
 } // namespace eposp::compiler::sema

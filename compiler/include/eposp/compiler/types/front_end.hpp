@@ -25,6 +25,10 @@ struct FrontEnd {
     std::vector<ast::CompilationUnit> library_units;
     std::optional<sema::SemanticModel> library_model;
     std::unique_ptr<TypedProgram> program;
+
+    /// The POU of the built-in library named `name` (a standard FB, a host function); null
+    /// when there is none.
+    const ast::Pou* library_pou(std::string_view name) const;
 };
 
 /// Parses and resolves `files` and the built-in library, without typing: what code generation

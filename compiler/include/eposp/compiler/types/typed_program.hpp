@@ -70,6 +70,9 @@ public:
         return is_constant_(declaration);
     }
     const sema::SemanticModel& model() const { return model_; }
+    /// The POU of the built-in library (stdlib/standard_library_source.cpp) implementing a
+    /// standard FB or host function of that name; null if there is none.
+    const ast::Pou* library_pou(std::string_view name) const { return library_(name); }
     sema::TypeTable& types() { return types_; }
     const sema::TypeTable& types() const { return types_; }
 
@@ -80,6 +83,7 @@ public:
 
 private:
     const sema::SemanticModel& model_;
+    std::function<const ast::Pou*(std::string_view)> library_;
     std::function<bool(const ast::VariableDeclaration&)> is_constant_;
     sema::TypeTable types_;
     std::unordered_map<const ast::Expression*, const sema::Type*> types_of_;

@@ -1,0 +1,32 @@
+#pragma once
+
+// Which POU calls which, from the call targets the typing stage found: what the recursion
+// check walks and what decides which library POUs are checked at all.
+
+#include "eposp/compiler/ast/compilation_unit.hpp"
+#include "eposp/compiler/types/typed_program.hpp"
+
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+namespace eposp::compiler::checks {
+
+class CallGraph {
+public:
+    /// The POUs of the program's own files (all of `units` but the last `linked`), then the
+    /// linked POUs with statements they call, directly or not.
+    CallGraph(const types::TypedProgram& program, std::span<const ast::CompilationUnit> units,
+              std::size_t linked);
+
+    /// The POUs whose code runs, in the order of their files, then as first called.
+    const std::vector<const ast::Pou*>& pous() const { return pous_; }
+    /// The user FUNCTIONs, FBs and PROGRAMs `pou` calls, each once, as first called.
+    const std::vector<const ast::Pou*>& callees(const ast::Pou& pou) const;
+
+private:
+    std::vector<const ast::Pou*> pous_;
+    std::unordered_map<const ast::Pou*, std::vector<const ast::Pou*>> callees_;
+};
+
+} // namespace eposp::compiler::checks

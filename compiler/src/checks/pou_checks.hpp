@@ -1,0 +1,30 @@
+#pragma once
+
+// The checks of the checking stage, one file each (checks.hpp runs them).
+
+#include "call_graph.hpp"
+#include "eposp/compiler/diagnostics.hpp"
+#include "eposp/compiler/types/typed_program.hpp"
+
+namespace eposp::compiler::checks {
+
+/// One POU under check, with the typed program it belongs to.
+struct PouUnderCheck {
+    types::TypedProgram& program;
+    const ast::Pou& pou;
+    Diagnostics& diagnostics;
+};
+
+/// W0401: a variable of a function or FB (a program's VAR_TEMP and VAR_EXTERNAL) never used.
+void check_unused_variables(const PouUnderCheck& check);
+/// W0402, W0403: an output or a function's result never assigned, or not on every path
+/// (definite_assignment.hpp).
+void check_assigned_results(const PouUnderCheck& check);
+/// W0404: a statement after RETURN, EXIT or CONTINUE in the same list.
+void check_unreachable_statements(const PouUnderCheck& check);
+/// W0405: an assignment to the POU's own input.
+void check_written_inputs(const PouUnderCheck& check);
+/// E0407: a POU that calls itself, directly or through others (6.6.1.1).
+void check_recursion(const CallGraph& calls, Diagnostics& diagnostics);
+
+} // namespace eposp::compiler::checks

@@ -1,0 +1,108 @@
+// The checking stage on its own: the language rules it owns are reported from the typed
+// program, without code generation (compiler/src/checks/, issue 17).
+#include "checks/checks.hpp"
+#include "eposp/compiler/types/front_end.hpp"
+
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+namespace eposp::compiler {
+namespace {
+
+struct Checked {
+    SourceManager sources;
+    Diagnostics front_end_diagnostics;
+    Diagnostics diagnostics; // the checks' alone
+};
+
+// Types `program` (and `library`, linked after it, when given) and runs the checks only.
+std::vector<std::string> check(Checked& checked, const std::string& program,
+                               const std::string& library = "") {
+    std::vector<FileId> files{checked.sources.add("main.st", program)};
+    if (!library.empty()) {
+        files.push_back(checked.sources.add("library.st", library));
+    }
+    auto front_end = types::analyse(checked.sources, files, checked.front_end_diagnostics);
+    EXPECT_NE(front_end->program, nullptr)
+        << render(checked.front_end_diagnostics, checked.sources);
+    std::vector<std::string> codes;
+    if (front_end->program == nullptr) {
+        return codes;
+    }
+    checks::check_program(*front_end->program, front_end->units, library.empty() ? 0 : 1,
+                          checked.diagnostics);
+    for (const Diagnostic& diagnostic : checked.diagnostics.all()) {
+        codes.emplace_back(describe(diagnostic.code).name);
+    }
+    return codes;
+}
+
+using Codes = std::vector<std::string>;
+
+TEST(ChecksStage, FindsRecursionThroughAnotherPou) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+FUNCTION Ping : INT
+VAR_INPUT n : INT; END_VAR
+Ping := Pong(n);
+END_FUNCTION
+FUNCTION Pong : INT
+VAR_INPUT n : INT; END_VAR
+Pong := Ping(n);
+END_FUNCTION
+PROGRAM Main
+VAR x : INT; END_VAR
+x := Ping(1);
+END_PROGRAM
+)st"),
+              Codes{"E0407"});
+}
+
+TEST(ChecksStage, ReportsTheWarningsOfABody) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+FUNCTION Sign : INT
+VAR_INPUT x : INT; END_VAR
+VAR spare : INT; END_VAR
+x := 0;
+IF x > 0 THEN
+    Sign := 1;
+END_IF;
+RETURN;
+x := 1;
+END_FUNCTION
+PROGRAM Main
+VAR n : INT; END_VAR
+n := Sign(5);
+END_PROGRAM
+)st"),
+              (Codes{"W0404", "W0405", "W0405", "W0401", "W0403"}));
+}
+
+TEST(ChecksStage, ChecksALibraryPouOnlyWhenTheProgramCallsIt) {
+    const std::string library = R"st(
+FUNCTION Called : INT
+VAR unused_in_called : INT; END_VAR
+Called := 1;
+END_FUNCTION
+FUNCTION NotCalled : INT
+VAR unused_in_other : INT; END_VAR
+NotCalled := 1;
+END_FUNCTION
+)st";
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+PROGRAM Main
+VAR n : INT; END_VAR
+n := Called();
+END_PROGRAM
+)st",
+                    library),
+              Codes{"W0401"});
+    EXPECT_NE(render(checked.diagnostics, checked.sources).find("unused_in_called"),
+              std::string::npos);
+}
+
+} // namespace
+} // namespace eposp::compiler
