@@ -1,0 +1,139 @@
+#pragma once
+
+#include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/core/event_loop.hpp"
+#include "eposp/drives/escon2/error_handling.hpp"
+#include "eposp/drives/escon2/escon2_dictionary.hpp"
+#include "eposp/drives/escon2/protection/output_current_limitation.hpp"
+#include "eposp/drives/motion/device_control.hpp"
+#include "eposp/drives/motion/trajectory.hpp"
+#include "eposp/drives/plant/low_pass_filter.hpp"
+#include "eposp/drives/plant/reference_axis.hpp"
+#include "eposp/drives/plant/servo_axis.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+
+namespace eposp::drives::escon2 {
+
+/// ESCON2 FW spec table 100: the modes of operation (0x6060).
+enum class OperatingMode : std::int8_t { IoVelocity = -121, IoCurrent = -120 };
+
+struct Escon2DriveConfig {
+    Escon2DictionaryConfig dictionary;
+    /// Motor, load, power stage, encoder pulses and controller gains. The pulses, gains, output
+    /// current limit, pole pairs and motor type become the defaults of 0x3010, 0x30A0, 0x30A2,
+    /// 0x3001 and 0x6402; the dictionary configures the plant from then on.
+    plant::AxisParameters axis = plant::reference_axis();
+};
+
+/// A simulated maxon ESCON2: its dictionary, the device control of 2.2 (StateMachine::Escon2),
+/// I/O Velocity Mode and I/O Current Mode (chapter 3) on the shared ServoAxis plant, the output
+/// current limitation (3.6.2) and the error handling of 7.1, stepped by one event-loop timer
+/// every millisecond (velocity loop, then ten 0.1 ms current-loop and plant steps) on its own
+/// clock, so that a run in virtual time is exact and reproducible.
+///
+/// The ESCON2 has no CAN: a host (the USB service interface, a test) reads and writes its
+/// dictionary; the controlword, the mode and the commanding objects act through change listeners
+/// from the next control period on. The set values come from the inputs (chapter 4) through the
+/// set_* methods below, which write the commanding objects of tables 15 and 21.
+///
+/// Neither copyable nor movable: the dictionary's listeners refer to it.
+class Escon2Drive {
+public:
+    static constexpr std::chrono::microseconds kControlPeriod{1000};
+
+    Escon2Drive(core::EventLoop& loop, Escon2DriveConfig config);
+    ~Escon2Drive();
+    Escon2Drive(const Escon2Drive&) = delete;
+    Escon2Drive& operator=(const Escon2Drive&) = delete;
+
+    /// Power-up: the stored parameters (a refused store raises 0x6380 and keeps the defaults),
+    /// the device control through transitions 0 and 1 to «Switch on disabled».
+    void start();
+
+    canopen::ObjectDictionary& objects() { return dictionary_.objects(); }
+    const canopen::ObjectDictionary& objects() const { return dictionary_.objects(); }
+    canopen::ParameterStore& store() { return dictionary_.store(); }
+    motion::DriveState state() const { return device_control_.state(); }
+    const plant::ServoAxis& axis() const { return axis_; }
+
+    // The commanding parameters (tables 15, 21), in the objects' units; what an input
+    // functionality (analog, PWM, set value switches) sets.
+
+    /// Target velocity 0x60FF, velocity units (0x60A9).
+    void set_velocity_set_value(std::int32_t velocity);
+    /// Velocity offset 0x60B1, velocity units.
+    void set_velocity_offset(std::int32_t velocity);
+    /// Target current 0x30F0, mA.
+    void set_current_set_value(std::int32_t milliamperes);
+    /// Current offset 0x30F1, mA.
+    void set_current_offset(std::int32_t milliamperes);
+
+    /// The simulated power supply (0x2200 sub 1).
+    void set_supply_voltage(double volts);
+    /// Raises an error or warning of table 110 as if its cause had occurred: its history entry,
+    /// its register bits and error code, and its reaction ("f" quick stop, "d" disable, "w"
+    /// warning only). A code the table does not list is a programming error
+    /// (std::invalid_argument).
+    void raise_device_error(std::uint16_t code);
+    /// The cause of an auto-clearing warning went away.
+    void clear_warning(std::uint16_t code);
+
+private:
+    static Escon2DictionaryConfig with_power_disable_rule(Escon2DictionaryConfig config,
+                                                          const Escon2Drive& drive);
+    bool power_disabled() const;
+    void configure_axis();
+    void watch_dictionary();
+    void compute_measured_values();
+    void on_controlword(std::uint16_t controlword);
+    void on_mode_written();
+    void control_period();
+    void follow_power_stage();
+    void check_configuration();
+    plant::AxisDemand stop_ramp(double now);
+    plant::AxisDemand velocity_mode(double now);
+    plant::AxisDemand current_mode();
+    void publish();
+    std::uint16_t statusword() const;
+
+    double seconds() const;
+    double counts_per_rpm() const;
+    double velocity_unit_in_rpm() const;
+    double to_counts(double velocity_units) const;
+    double to_velocity_units(double counts_per_second) const;
+    double polarity() const;
+    bool has_main_sensor() const;
+
+    core::EventLoop& loop_;
+    Escon2Dictionary dictionary_;
+    plant::AxisParameters machine_;
+    plant::ServoAxis axis_;
+    motion::DeviceControl device_control_;
+    ErrorHandling errors_;
+    OutputCurrentLimitation limitation_;
+
+    OperatingMode mode_ = OperatingMode::IoVelocity;
+    std::uint16_t controlword_ = 0;
+    bool power_stage_on_ = false;
+    /// I/O Velocity Mode's ramp (3.3: profile acceleration / deceleration) toward its target.
+    motion::Trajectory ramp_;
+    double ramp_start_ = 0;
+    double ramp_target_ = 0;     ///< counts/s
+    motion::MotionState demand_; ///< of the last control period, counts
+    /// A stop ramp of the device control in progress (quick stop, disable operation, "f").
+    std::optional<motion::Trajectory> stop_;
+    double stop_start_ = 0;
+    bool stop_completed_ = false;    ///< the device control has heard that the ramp ended
+    bool set_value_limited_ = false; ///< bit 11: max motor speed or output current limit
+    /// 6.2.21.1 / 6.2.23.1: the current filtered at 50 Hz every 0.1 ms, the velocity at 5 Hz
+    /// every ms.
+    plant::LowPassFilter current_averaged_{50, plant::ServoAxis::kCurrentLoopPeriod};
+    plant::LowPassFilter velocity_averaged_{5, plant::ServoAxis::kOuterLoopPeriod};
+    core::TimePoint control_time_;
+    core::ScopedTimer control_timer_;
+};
+
+} // namespace eposp::drives::escon2

@@ -1,0 +1,484 @@
+#include "eposp/drives/escon2/escon2_drive.hpp"
+
+#include "axis_configuration.hpp"
+#include "eposp/drives/escon2/units.hpp"
+#include "eposp/drives/motion/profile_planner.hpp"
+#include "eposp/drives/motion/statusword_bits.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace eposp::drives::escon2 {
+namespace {
+
+using motion::DriveState;
+
+// Table 18 / 24: statusword bit 12 "drive follows command value" (bit 11 is motion's).
+constexpr std::uint16_t kFollowsCommandValueBit = 1U << 12;
+constexpr std::uint16_t kFaultResetBit = 1U << 7; // table 98
+
+// Table 49: the control structures with a velocity controller and their main sensor.
+constexpr std::uint32_t kCurrentControlOnly = 0x0000'0001;
+constexpr std::uint32_t kMainSensorSensor1 = 0x0001'0011;
+constexpr std::uint32_t kMainSensorSensor2 = 0x0002'0011;
+
+// Table 110: the errors the drive itself detects.
+constexpr std::uint16_t kOvercurrentError = 0x2310;              // 7.1.3
+constexpr std::uint16_t kLoadingParameterFailedError = 0x6380;   // 7.1.17
+constexpr std::uint16_t kMissingMainSensorError = 0x7390;        // 7.1.25
+constexpr std::uint16_t kMissingCommutationSensorError = 0x7391; // 7.1.26
+constexpr std::uint16_t kModeNotSupportedError = 0xFF0D;         // 7.1.41
+
+constexpr double kPowerStageTemperature = 25; // °C: no thermal model of the power stage yet
+constexpr std::int16_t kPowerStageTemperatureDeci = 250; // 0.1 °C
+
+motion::FaultClass fault_class(FaultReactionCode reaction) {
+    // 7.1: "f" quick stop ramp (the CiA 402 fault reaction option code 2 of DeviceControl's
+    // defaults), "d" disables at once.
+    return reaction == FaultReactionCode::QuickStop ? motion::FaultClass::Device
+                                                    : motion::FaultClass::Critical;
+}
+
+std::int32_t rounded(double value) {
+    using Limits = std::numeric_limits<std::int32_t>;
+    return static_cast<std::int32_t>(
+        std::clamp(std::round(value), double{Limits::min()}, double{Limits::max()}));
+}
+
+} // namespace
+
+Escon2Drive::Escon2Drive(core::EventLoop& loop, Escon2DriveConfig config)
+    : loop_(loop), dictionary_(with_power_disable_rule(std::move(config.dictionary), *this)),
+      machine_(config.axis), axis_(config.axis),
+      device_control_(motion::OptionCodes{}, motion::StateMachine::Escon2),
+      errors_(dictionary_.objects()), control_time_(loop.now() + kControlPeriod),
+      control_timer_(loop,
+                     loop.every(kControlPeriod, control_time_, [this] { control_period(); })) {
+    write_axis_defaults(dictionary_.objects(), machine_);
+    configure_axis();
+    watch_dictionary();
+    compute_measured_values();
+    set_supply_voltage(machine_.plant.power_stage.supply_voltage);
+}
+
+Escon2Drive::~Escon2Drive() = default;
+
+// «Power Disable»: the power stage is off and no fault is pending (6.2.6, 6.2.13 …).
+Escon2DictionaryConfig Escon2Drive::with_power_disable_rule(Escon2DictionaryConfig config,
+                                                            const Escon2Drive& drive) {
+    config.power_disabled = [&drive] {
+        return drive.power_disabled();
+    };
+    return config;
+}
+
+bool Escon2Drive::power_disabled() const {
+    const DriveState state = device_control_.state();
+    return state == DriveState::Start || state == DriveState::NotReadyToSwitchOn ||
+           state == DriveState::SwitchOnDisabled || state == DriveState::ReadyToSwitchOn;
+}
+
+void Escon2Drive::start() {
+    const canopen::StoredValuesReport stored = dictionary_.power_up();
+    configure_axis(); // the power-up restored values without telling the listeners
+    errors_.reset();
+    device_control_.node_reset();
+    device_control_.initialise();              // 0
+    device_control_.initialisation_finished(); // 1
+    controlword_ = 0;
+    power_stage_on_ = false;
+    stop_.reset();
+    on_mode_written();
+    if (stored.refused()) {
+        raise_device_error(kLoadingParameterFailedError); // 7.1.17: the defaults are set
+    }
+    publish();
+}
+
+void Escon2Drive::set_velocity_set_value(std::int32_t velocity) {
+    objects().set_as(0x60FF, 0, velocity);
+}
+
+void Escon2Drive::set_velocity_offset(std::int32_t velocity) {
+    objects().set_as(0x60B1, 0, velocity);
+}
+
+void Escon2Drive::set_current_set_value(std::int32_t milliamperes) {
+    objects().set_as(0x30F0, 0, milliamperes);
+}
+
+void Escon2Drive::set_current_offset(std::int32_t milliamperes) {
+    objects().set_as(0x30F1, 0, milliamperes);
+}
+
+void Escon2Drive::set_supply_voltage(double volts) {
+    machine_.plant.power_stage.supply_voltage = volts;
+    configure_axis();
+    objects().set_as(
+        0x2200, 1,
+        static_cast<std::uint16_t>(std::clamp(std::round(volts * 10), 0.0, 65'535.0))); // 0.1 V
+}
+
+void Escon2Drive::raise_device_error(std::uint16_t code) {
+    const DeviceError& error = device_error(code);
+    if (errors_.raise(code) && error.reaction != FaultReactionCode::Warning) {
+        device_control_.fault_occurred(fault_class(error.reaction));
+        device_control_.set_fault_condition_present(errors_.needs_device_reset());
+    }
+    publish();
+}
+
+void Escon2Drive::clear_warning(std::uint16_t code) {
+    errors_.clear_warning(code);
+}
+
+void Escon2Drive::configure_axis() {
+    const auto& od = objects();
+    axis_.reconfigure(configured_axis(od, machine_));
+    const HardwareData& hardware = dictionary_.hardware();
+    CurrentLimitationParameters limits;
+    limits.motor = {.continuous_current = od.get_as<std::uint32_t>(0x3001, 1) / 1000.0,
+                    .output_current_limit = od.get_as<std::uint32_t>(0x3001, 2) / 1000.0,
+                    .time_constant = od.get_as<std::uint16_t>(0x3001, 4) / 10.0,
+                    .release_level = CurrentLimitationParameters::kReleaseLevel};
+    // 6.2.56 note: the Nano 24/2 limits by temperature only. The power stage's rating is that
+    // of its hardware (tables 53, 54).
+    if (hardware.hardware_version == hardware_data(Escon2Hardware::Nano24_2).hardware_version) {
+        limits.power_stage.reset();
+    } else {
+        limits.power_stage = motion::I2tParameters{
+            .continuous_current = static_cast<double>(hardware.nominal_current.max) / 1000.0,
+            .output_current_limit = static_cast<double>(hardware.output_current_limit.max) / 1000.0,
+            .time_constant = limits.power_stage->time_constant,
+            .release_level = CurrentLimitationParameters::kReleaseLevel};
+    }
+    limits.max_power_stage_temperature = od.get_as<std::uint16_t>(0x3201, 3) / 10.0;
+    limitation_.set_parameters(limits);
+}
+
+void Escon2Drive::watch_dictionary() {
+    auto& od = objects();
+    od.on_change(0x6040, [this](std::uint16_t, std::uint8_t) {
+        on_controlword(objects().get_as<std::uint16_t>(0x6040, 0));
+    });
+    od.on_change(0x6060, [this](std::uint16_t, std::uint8_t) { on_mode_written(); });
+    for (const std::uint16_t index : kAxisConfigurationObjects) {
+        od.on_change(index, [this](std::uint16_t, std::uint8_t) { configure_axis(); });
+    }
+    od.on_change(0x3201, [this](std::uint16_t, std::uint8_t) { configure_axis(); });
+    // 6.2.13.1: a brushed motor has no Hall sensor.
+    od.on_change(0x6402, [this](std::uint16_t, std::uint8_t) {
+        if (objects().get_as<std::uint16_t>(0x6402, 0) == 1) {
+            objects().set_as(0x3000, 1, objects().get_as<std::uint32_t>(0x3000, 1) & ~0xFFU);
+        }
+    });
+}
+
+// Measured values computed when read (the USB host reads them now and then).
+void Escon2Drive::compute_measured_values() {
+    auto& od = objects();
+    const auto computed = [&od](std::uint16_t index, std::uint8_t sub, auto read) {
+        od.find(index, sub)->on_read = [read] {
+            return canopen::encode(read());
+        };
+    };
+    computed(0x30D1, 1, [this] {
+        return rounded(polarity() * current_averaged_.output() * 1000); // 6.2.21.1
+    });
+    computed(0x30D3, 1, [this] { // 6.2.23.1
+        return rounded(to_velocity_units(polarity() * velocity_averaged_.output()));
+    });
+    // 6.2.76: each sensor's velocity, 0 where none is configured. Both sit on the motor shaft.
+    const auto sensor_velocity = [this](std::uint32_t mask, bool averaged) {
+        if ((objects().get_as<std::uint32_t>(0x3000, 1) & mask) == 0) {
+            return std::int32_t{0};
+        }
+        const double velocity = averaged ? velocity_averaged_.output() : axis_.velocity_actual();
+        return rounded(to_velocity_units(polarity() * velocity));
+    };
+    computed(0x60E5, 1, [sensor_velocity] { return sensor_velocity(0x00FF, false); });
+    computed(0x60E5, 2, [sensor_velocity] { return sensor_velocity(0xFF00, false); });
+    computed(0x60E5, 9, [sensor_velocity] { return sensor_velocity(0x00FF, true); });
+    computed(0x60E5, 10, [sensor_velocity] { return sensor_velocity(0xFF00, true); });
+    // 6.2.22.1, 6.2.66: per thousand of 0x6076 = nominal current × torque constant, so the
+    // current in per thousand of the nominal current.
+    const auto torque = [this](double amperes) {
+        const double nominal = objects().get_as<std::uint32_t>(0x3001, 1) / 1000.0;
+        return static_cast<std::int16_t>(
+            std::clamp(nominal > 0 ? std::round(polarity() * amperes / nominal * 1000) : 0.0,
+                       -32768.0, 32767.0));
+    };
+    computed(0x6077, 0, [this, torque] { return torque(axis_.current_actual()); });
+    computed(0x30D2, 1, [this, torque] { return torque(current_averaged_.output()); });
+    computed(0x301A, 2, [this] { return std::uint16_t{axis_.hall_sensors()}; }); // 6.2.17.2
+    computed(0x3000, 5, [this] { // 6.2.13.5: increments per turn of the main sensor
+        const std::uint32_t structure = objects().get_as<std::uint32_t>(0x3000, 2);
+        if (structure == kMainSensorSensor2) {
+            return 4 * objects().get_as<std::uint32_t>(0x3010, 1);
+        }
+        return structure == kMainSensorSensor1
+                   ? std::uint32_t{6} * objects().get_as<std::uint8_t>(0x3001, 3)
+                   : std::uint32_t{0};
+    });
+    const auto percent = [](double level) {
+        return static_cast<std::uint16_t>(std::clamp(std::round(level * 100), 0.0, 65'535.0));
+    };
+    computed(0x3200, 1, [this, percent] { return percent(limitation_.motor_level()); });
+    computed(0x3201, 1, [this, percent] { return percent(limitation_.power_stage_level()); });
+    computed(0x3201, 2, [] { return kPowerStageTemperatureDeci; });
+    computed(0x2202, 1, [] { return kPowerStageTemperatureDeci; });
+    // 6.2.57.1: the bridge voltage R·I + k·ω over the supply, 0.1 %.
+    computed(0x3203, 1, [this] {
+        const plant::MotorModel& motor = axis_.motor();
+        const plant::MotorParameters& data = motor.parameters().motor;
+        const double volts = data.terminal_resistance * motor.state().current +
+                             data.back_emf_constant() * motor.state().speed;
+        const double supply = machine_.plant.power_stage.supply_voltage;
+        const double duty = supply > 0 && power_stage_on_ ? std::abs(volts) / supply : 0.0;
+        return static_cast<std::uint16_t>(std::clamp(
+            std::round(duty * 1000), 0.0, double(dictionary_.hardware().pwm_max_duty_cycle)));
+    });
+}
+
+// Table 8: the device commands, fault reset and clear warning on bit 7's rising edge.
+void Escon2Drive::on_controlword(std::uint16_t controlword) {
+    const bool reset_edge =
+        (controlword & kFaultResetBit) != 0 && (controlword_ & kFaultResetBit) == 0;
+    controlword_ = controlword;
+    const bool was_fault = device_control_.state() == DriveState::Fault;
+    if (reset_edge) {
+        // Transition 15 only "if no fault is present": not while one needs a device reset.
+        if (was_fault) {
+            errors_.fault_reset();
+        }
+        errors_.clear_warnings();
+        device_control_.set_fault_condition_present(errors_.needs_device_reset());
+    }
+    const DriveState before = device_control_.state();
+    device_control_.write_controlword(controlword);
+    if (before != DriveState::OperationEnable &&
+        device_control_.state() == DriveState::OperationEnable) {
+        check_configuration();
+    }
+    publish();
+}
+
+// 7.1.25, 7.1.26, 7.1.41: what the enabled drive needs of its configuration.
+void Escon2Drive::check_configuration() {
+    const auto& od = objects();
+    const std::uint32_t sensors = od.get_as<std::uint32_t>(0x3000, 1);
+    const std::uint32_t structure = od.get_as<std::uint32_t>(0x3000, 2);
+    const bool sensor1 = (sensors & 0x00FF) != 0;
+    const bool sensor2 = (sensors & 0xFF00) != 0;
+    if ((structure == kMainSensorSensor1 && !sensor1) ||
+        (structure == kMainSensorSensor2 && !sensor2)) {
+        raise_device_error(kMissingMainSensorError);
+    }
+    const std::uint32_t commutation = od.get_as<std::uint32_t>(0x3000, 3);
+    const bool brushless = od.get_as<std::uint16_t>(0x6402, 0) == 10;
+    if (brushless && (commutation == 0 || ((commutation & 0xF0) != 0 && !sensor1) ||
+                      ((commutation & 0x0F) != 0 && !sensor2))) {
+        raise_device_error(kMissingCommutationSensorError);
+    }
+    // 3.3: the velocity mode runs on the velocity controller, which needs a main sensor.
+    if (mode_ == OperatingMode::IoVelocity && structure == kCurrentControlOnly) {
+        raise_device_error(kModeNotSupportedError);
+    }
+}
+
+// 6.2.62: the display follows; the mode starts from the actual state.
+void Escon2Drive::on_mode_written() {
+    const auto written = objects().get_as<std::int8_t>(0x6060, 0);
+    mode_ = static_cast<OperatingMode>(written);
+    objects().set_as(0x6061, 0, written);
+    demand_ = {static_cast<double>(axis_.position_actual()), axis_.velocity_actual(), 0};
+    ramp_ = motion::Trajectory(demand_.position, {});
+    ramp_start_ = seconds();
+    ramp_target_ = std::numeric_limits<double>::quiet_NaN(); // replanned at the next period
+    if (device_control_.state() == DriveState::OperationEnable) {
+        check_configuration();
+    }
+}
+
+// One millisecond: the device control's outputs, the mode's demand, ten steps of the current
+// loop and the plant with the current limitation, the computed objects. It runs at
+// control_time_, the timer's scheduled time, never at the loop's now().
+void Escon2Drive::control_period() {
+    const double now = seconds();
+    if ((device_control_.state() == DriveState::FaultReactionActiveDisabled ||
+         device_control_.state() == DriveState::FaultReactionActiveEnabled) &&
+        device_control_.outputs().ramp == motion::StopRamp::None) {
+        device_control_.stop_completed(); // 14: nothing to ramp down
+    }
+    follow_power_stage();
+    const motion::DriveOutputs outputs = device_control_.outputs();
+    plant::ControlMode loop = plant::ControlMode::PowerOff;
+    plant::AxisDemand demand;
+    set_value_limited_ = false;
+    if (power_stage_on_ && outputs.ramp != motion::StopRamp::None) {
+        loop = plant::ControlMode::Velocity;
+        demand = stop_ramp(now);
+    } else if (power_stage_on_ && outputs.drive_function_enabled) {
+        if (stop_) { // transition 16: the mode starts over from rest
+            stop_.reset();
+            on_mode_written();
+        }
+        const bool velocity = mode_ == OperatingMode::IoVelocity;
+        loop = velocity ? plant::ControlMode::Velocity : plant::ControlMode::Current;
+        demand = velocity ? velocity_mode(now) : current_mode();
+    }
+    axis_.set_mode(loop);
+    axis_.set_demand(demand);
+    const double overcurrent = machine_.plant.power_stage.overcurrent;
+    bool overcurrent_seen = false;
+    for (int step = 0; step < plant::ServoAxis::kCurrentStepsPerOuterLoop; ++step) {
+        axis_.step();
+        current_averaged_.update(axis_.current_actual());
+        limitation_.update(axis_.current_actual(), kPowerStageTemperature,
+                           plant::ServoAxis::kCurrentLoopPeriod);
+        overcurrent_seen = overcurrent_seen || std::abs(axis_.current_actual()) > overcurrent;
+    }
+    axis_.reduce_current_limit(limitation_.limit()); // 3.6.2
+    if (overcurrent_seen) {
+        raise_device_error(kOvercurrentError);
+    }
+    velocity_averaged_.update(axis_.velocity_actual());
+    publish();
+    control_time_ += kControlPeriod;
+}
+
+void Escon2Drive::follow_power_stage() {
+    const bool on = device_control_.outputs().power_stage_on;
+    if (on != power_stage_on_) {
+        power_stage_on_ = on;
+        stop_.reset();
+        on_mode_written(); // the mode starts over on the actual state
+    }
+}
+
+// 3.3: (target velocity + velocity offset) within ± max motor speed, ramped with the profile
+// acceleration (speeding up) and deceleration (slowing down), both within max acceleration.
+plant::AxisDemand Escon2Drive::velocity_mode(double now) {
+    const auto& od = objects();
+    const double set_value = static_cast<double>(od.get_as<std::int32_t>(0x60FF, 0)) +
+                             od.get_as<std::int32_t>(0x60B1, 0);
+    const double max_rpm = od.get_as<std::uint32_t>(0x6080, 0);
+    const double rpm = set_value * velocity_unit_in_rpm();
+    set_value_limited_ = std::abs(rpm) > max_rpm;
+    const double target = std::clamp(rpm, -max_rpm, max_rpm) * counts_per_rpm();
+    const double max_acceleration = od.get_as<std::uint32_t>(0x60C5, 0);
+    const motion::ProfileParameters profile{
+        .acceleration = std::min<double>(od.get_as<std::uint32_t>(0x6083, 0), max_acceleration) *
+                        counts_per_rpm(),
+        .deceleration = std::min<double>(od.get_as<std::uint32_t>(0x6084, 0), max_acceleration) *
+                        counts_per_rpm()};
+    if (target != ramp_target_) {
+        const motion::MotionState from = ramp_.sample(now - ramp_start_);
+        ramp_ = motion::plan_velocity_change(from, target, profile);
+        ramp_start_ = now;
+        ramp_target_ = target;
+    }
+    demand_ = ramp_.sample(now - ramp_start_);
+    return {.velocity = polarity() * demand_.velocity,
+            .acceleration = polarity() * demand_.acceleration};
+}
+
+// 3.4: target current + current offset within ± output current limit; the velocity controller
+// caps the speed at max motor speed when a main sensor is configured (3.4 note).
+plant::AxisDemand Escon2Drive::current_mode() {
+    const auto& od = objects();
+    const double set_value = static_cast<double>(od.get_as<std::int32_t>(0x30F0, 0)) +
+                             od.get_as<std::int32_t>(0x30F1, 0);
+    const double limit = od.get_as<std::uint32_t>(0x3001, 2);
+    const double max_speed = od.get_as<std::uint32_t>(0x6080, 0) * counts_per_rpm();
+    const bool speed_capped = has_main_sensor() && std::abs(axis_.velocity_actual()) >= max_speed;
+    set_value_limited_ = std::abs(set_value) > limit || speed_capped;
+    demand_ = {static_cast<double>(axis_.position_actual()), axis_.velocity_actual(), 0};
+    return {.current = polarity() * std::clamp(set_value, -limit, limit) / 1000.0,
+            .speed_limit = has_main_sensor() ? max_speed : 0.0};
+}
+
+// Transitions 5, 8 (slow down with the profile deceleration), 11 and "f" errors (quick stop
+// deceleration): the velocity falls from where it is to rest, then the device control goes on.
+plant::AxisDemand Escon2Drive::stop_ramp(double now) {
+    const auto& od = objects();
+    if (!stop_) {
+        const bool quick = device_control_.outputs().ramp == motion::StopRamp::QuickStop;
+        const double deceleration = std::min(od.get_as<std::uint32_t>(quick ? 0x6085 : 0x6084, 0),
+                                             od.get_as<std::uint32_t>(0x60C5, 0)) *
+                                    counts_per_rpm();
+        const motion::MotionState from =
+            mode_ == OperatingMode::IoVelocity
+                ? demand_
+                : motion::MotionState{static_cast<double>(axis_.position_actual()),
+                                      polarity() * axis_.velocity_actual(), 0};
+        stop_ = motion::plan_stop(from, deceleration, motion::RampShape::Linear);
+        stop_start_ = now;
+        stop_completed_ = false;
+    }
+    demand_ = stop_->sample(now - stop_start_);
+    if (!stop_completed_ && now - stop_start_ >= stop_->duration()) {
+        stop_completed_ = true; // quick stop active stays at rest until 12 or 16
+        device_control_.stop_completed();
+    }
+    return {.velocity = polarity() * demand_.velocity,
+            .acceleration = polarity() * demand_.acceleration};
+}
+
+// The computed objects stored every period (the dictionary skips unchanged values' listeners
+// only by their equality; these are cheap).
+void Escon2Drive::publish() {
+    auto& od = objects();
+    od.set_as(0x6041, 0, statusword());
+    od.set_as(0x606B, 0, rounded(to_velocity_units(demand_.velocity)));
+    od.set_as(0x606C, 0, rounded(to_velocity_units(polarity() * axis_.velocity_actual())));
+    od.set_as(0x30D0, 0, rounded(polarity() * axis_.current_demand() * 1000));
+    od.set_as(0x30D1, 2, rounded(polarity() * axis_.current_actual() * 1000));
+}
+
+// Tables 17, 23, 99: the state bits, warning, bit 11 internal limit active, bit 12 follows the
+// command value.
+std::uint16_t Escon2Drive::statusword() const {
+    std::uint16_t bits = device_control_.statusword();
+    if (errors_.warning_active()) {
+        bits |= motion::kWarningBit;
+    }
+    if (set_value_limited_ || limitation_.limiting()) {
+        bits |= motion::kInternalLimitActiveBit;
+    }
+    if (device_control_.state() == DriveState::OperationEnable &&
+        device_control_.outputs().ramp == motion::StopRamp::None) {
+        bits |= kFollowsCommandValueBit;
+    }
+    return bits;
+}
+
+double Escon2Drive::seconds() const {
+    return std::chrono::duration<double>(control_time_.time_since_epoch()).count();
+}
+
+// Quadcounts of the main sensor's encoder per motor turn, per minute.
+double Escon2Drive::counts_per_rpm() const {
+    return 4.0 * objects().get_as<std::uint32_t>(0x3010, 1) / 60.0;
+}
+
+double Escon2Drive::velocity_unit_in_rpm() const {
+    return escon2::velocity_unit_in_rpm(objects().get_as<std::uint32_t>(0x60A9, 0));
+}
+
+double Escon2Drive::to_velocity_units(double counts_per_second) const {
+    return counts_per_second / counts_per_rpm() / velocity_unit_in_rpm();
+}
+
+// 6.2.13.4 bit 0: inverse polarity turns the axis CW on positive demands.
+double Escon2Drive::polarity() const {
+    return (objects().get_as<std::uint32_t>(0x3000, 4) & 1U) != 0 ? -1.0 : 1.0;
+}
+
+bool Escon2Drive::has_main_sensor() const {
+    return objects().get_as<std::uint32_t>(0x3000, 2) != kCurrentControlOnly;
+}
+
+} // namespace eposp::drives::escon2
