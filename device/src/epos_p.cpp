@@ -10,6 +10,7 @@
 #include "program_download.hpp"
 #include "program_store.hpp"
 #include "severable_port.hpp"
+#include "signal_wires.hpp"
 #include "variable_access.hpp"
 
 #include <fmt/format.h>
@@ -92,6 +93,11 @@ EposP::EposP(EposPConfig config)
         [this](std::uint8_t port) -> NetworkPort& { return network_port(port); });
     plc_.observe_loads(*event_tasks_);
     program_store_->power_up(); // after the motion blocks: a program may call them
+    wires_ = std::make_unique<SignalWires>(
+        loop_, dictionary_.objects(), plc_.runtime().process_image(),
+        [this](std::uint8_t port, canopen::NodeId node) -> drives::epos2::Epos2Drive& {
+            return simulated_drive(port, node);
+        });
     faults_ = std::make_unique<FaultInjector>(*this);
     internal_drive_->start();
 }
@@ -164,6 +170,21 @@ void EposP::add_network(const NetworkFile& network) {
                                                                       std::move(config)));
         slaves_.back()->start();
     }
+    wires_->add(network.wires);
+}
+
+drives::epos2::Epos2Drive& EposP::simulated_drive(std::uint8_t port, canopen::NodeId node) {
+    if (port == kInternalPort) {
+        return *internal_drive_;
+    }
+    for (const auto& drive : slaves_) {
+        if (drive->node().node_id() == node) {
+            return *drive;
+        }
+    }
+    // The network file's reader lets no wire name an EPOS2 it does not simulate.
+    throw std::logic_error(
+        fmt::format("no EPOS2 with node {} is simulated on port {}", node, port));
 }
 
 std::vector<TracedAxis> EposP::simulated_axes() const {

@@ -215,11 +215,68 @@ EventBinding read_event(Reader& in, const YAML::Node& node) {
     return event;
 }
 
+SignalEnd read_signal_end(Reader& in, const YAML::Node& value, std::string_view what) {
+    auto end = parse_signal_end(in.scalar<std::string>(value, what));
+    if (!end) {
+        in.fail(value, fmt::format("{}: {}", what, end.error()));
+    }
+    return *end;
+}
+
+SignalWire read_wire(Reader& in, const YAML::Node& node) {
+    std::optional<SignalEnd> from;
+    std::optional<SignalEnd> to;
+    in.each_key(node, "wires",
+                {{"from",
+                  [&](const YAML::Node& value) {
+                      from = read_signal_end(in, value, "from");
+                  }},
+                 {"to", [&](const YAML::Node& value) {
+                      to = read_signal_end(in, value, "to");
+                  }}});
+    if (!from || !to) {
+        in.fail(node, "a wire needs its 'from' (an output) and its 'to' (an input)");
+    }
+    const SignalWire wire{*from, *to};
+    if (auto problem = wire_problem(wire)) {
+        in.fail(node, *problem);
+    }
+    return wire;
+}
+
+// Each EPOS2 a wire names is simulated here, and no input has two wires.
+void check_wires(Reader& in, const NetworkFile& network,
+                 const std::vector<YAML::Node>& wire_nodes) {
+    const auto simulated = [&network](const SignalEnd& end) {
+        return end.device != SignalEnd::Device::Epos2 || end.port == kInternalPort ||
+               std::ranges::any_of(network.slaves, [&end](const NetworkSlave& slave) {
+                   return slave.port == kExternalPort && slave.node_id == end.node &&
+                          slave.kind == NetworkSlave::Kind::Epos2;
+               });
+    };
+    for (std::size_t i = 0; i < network.wires.size(); ++i) {
+        const SignalWire& wire = network.wires[i];
+        for (const SignalEnd* end : {&wire.from, &wire.to}) {
+            if (!simulated(*end)) {
+                in.fail(wire_nodes[i], fmt::format("'{}': node {} is no EPOS2 simulated on the "
+                                                   "CAN bus (slaves)",
+                                                   to_string(*end), end->node));
+            }
+        }
+        for (std::size_t earlier = 0; earlier < i; ++earlier) {
+            if (network.wires[earlier].to == wire.to) {
+                in.fail(wire_nodes[i], fmt::format("'{}' is wired twice", to_string(wire.to)));
+            }
+        }
+    }
+}
+
 NetworkFile read_network(Reader& in, const YAML::Node& root, const std::filesystem::path& base) {
     NetworkFile network;
     std::set<std::pair<std::uint8_t, canopen::NodeId>> nodes;
     std::set<std::uint8_t> axes;
     std::vector<std::pair<canopen::NodeId, YAML::Node>> can_slaves;
+    std::vector<YAML::Node> wire_nodes;
     in.each_key(
         root, "network",
         {{"node_id",
@@ -263,6 +320,16 @@ NetworkFile read_network(Reader& in, const YAML::Node& root, const std::filesyst
                   network.events.push_back(read_event(in, node));
               }
           }},
+         {"wires",
+          [&](const YAML::Node& list) {
+              if (!list.IsSequence()) {
+                  in.fail(list, "'wires' must be a list");
+              }
+              for (const YAML::Node& node : list) {
+                  network.wires.push_back(read_wire(in, node));
+                  wire_nodes.push_back(node);
+              }
+          }},
          {"slaves", [&](const YAML::Node& list) {
               if (!list.IsSequence()) {
                   in.fail(list, "'slaves' must be a list");
@@ -281,6 +348,7 @@ NetworkFile read_network(Reader& in, const YAML::Node& root, const std::filesyst
                   network.slaves.push_back(slave);
               }
           }}});
+    check_wires(in, network, wire_nodes);
     for (const auto& [node_id, node] : can_slaves) {
         if (node_id == network.node_id) {
             in.fail(node, fmt::format("node {} is the EPOS P's own node-ID on the CAN bus "

@@ -68,6 +68,26 @@ TEST(NetworkFile, ReadsTheEventsThatReleaseTasks) {
     EXPECT_EQ(network->events[3].input_bit, 7);
 }
 
+TEST(NetworkFile, ReadsTheWiresBetweenTheDevices) {
+    const auto network =
+        parse_network_file("slaves:\n"
+                           "  - {node: 2}\n"
+                           "wires:\n"
+                           "  - {from: \"%QX0.3\", to: Node 2 Digital Input 6}\n"
+                           "  - {from: internal digital output 2, to: \"%IX4.7\"}\n"
+                           "  - {from: \"%QW16\", to: node 2 analog input 2}\n",
+                           "net.yaml");
+    ASSERT_TRUE(network) << network.error();
+    ASSERT_EQ(network->wires.size(), 3U);
+    std::vector<std::string> texts;
+    for (const SignalWire& wire : network->wires) {
+        texts.push_back(to_string(wire.from) + " -> " + to_string(wire.to));
+    }
+    EXPECT_THAT(texts, testing::ElementsAre("%QX0.3 -> node 2 digital input 6",
+                                            "internal digital output 2 -> %IX4.7",
+                                            "%QW16 -> node 2 analog input 2"));
+}
+
 TEST(RunCommand, AnEventForATaskTheProgramLacksIsAUserError) {
     const std::string program = write_source("main.st", "PROGRAM Main\nEND_PROGRAM\n");
     const std::string network = write_source("net.yaml", "events:\n  - {task: OnSync, on: sync}\n");
@@ -232,7 +252,29 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"EventRpdo", "events:\n  - {task: T, on: rpdo, port: internal, rpdo: 5}\n",
                 "net.yaml:2:47: error: an rpdo event needs 'rpdo'"},
         BadFile{"EventInput", "events:\n  - {task: T, on: input, input: \"%IX224.0\"}\n",
-                "net.yaml:2:33: error: input must be a process input bit"}),
+                "net.yaml:2:33: error: input must be a process input bit"},
+        BadFile{"WireFromAnInput", "wires:\n  - {from: \"%IX0.0\", to: internal digital input 1}\n",
+                "net.yaml:2:5: error: '%IX0.0' is an input: a wire runs from an output"},
+        BadFile{"WireToAnOutput", "wires:\n  - {from: \"%QX0.0\", to: internal digital output 1}\n",
+                "net.yaml:2:5: error: 'internal digital output 1' is an output: a wire runs to an "
+                "input"},
+        BadFile{"WireOfTwoKinds", "wires:\n  - {from: \"%QW16\", to: internal digital input 1}\n",
+                "net.yaml:2:5: error: '%QW16' is analog but 'internal digital input 1' is digital"},
+        BadFile{"WireToAMissingPin",
+                "wires:\n  - {from: \"%QX0.0\", to: internal digital input 7}\n",
+                "net.yaml:2:26: error: to: an EPOS2 24/5 has digital inputs 1..6"},
+        BadFile{"WireOutsideTheImage", "wires:\n  - {from: \"%QX224.0\", to: \"%IX0.0\"}\n",
+                "net.yaml:2:12: error: from: a wire's end is"},
+        BadFile{"WireWithoutTo", "wires:\n  - {from: \"%QX0.0\"}\n",
+                "net.yaml:2:5: error: a wire needs its 'from' (an output) and its 'to'"},
+        BadFile{"WireToAnUnsimulatedNode",
+                "slaves:\n  - {node: 3, kind: external}\nwires:\n  - {from: \"%QX0.0\", to: node 3 "
+                "digital input 1}\n",
+                "net.yaml:4:5: error: 'node 3 digital input 1': node 3 is no EPOS2 simulated"},
+        BadFile{"InputWiredTwice",
+                "wires:\n  - {from: \"%QX0.0\", to: \"%IX1.0\"}\n  - {from: \"%QX0.1\", to: "
+                "\"%ix1.0\"}\n",
+                "net.yaml:3:5: error: '%IX1.0' is wired twice"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(RunCommand, WithANetworkPrintsTheBootReport) {

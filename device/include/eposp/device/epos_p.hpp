@@ -25,6 +25,7 @@ class ManufacturerStatus;
 class NetworkPort;
 class ProgramStore;
 class SeverablePort;
+class SignalWires;
 
 struct EposPConfig {
     /// Virtual time (as fast as the CPU allows, deterministic) or the wall clock.
@@ -138,6 +139,8 @@ private:
     /// DESIGN.md, "One communication cycle": at each SYNC, puts the PLC's cyclic tasks a
     /// fixed delay after it, when the slaves' synchronous TPDOs are in.
     void follow_sync();
+    /// The simulated EPOS2 with `node` on `port` (the internal one on port 1).
+    drives::epos2::Epos2Drive& simulated_drive(std::uint8_t port, canopen::NodeId node);
 
     core::EventLoop loop_;
     can::VirtualBus internal_bus_;
@@ -160,6 +163,7 @@ private:
     std::vector<std::unique_ptr<can::VirtualPort>> slave_ports_;
     std::vector<std::unique_ptr<SeverablePort>> slave_links_; ///< each slave's cable to the bus
     std::vector<std::unique_ptr<drives::epos2::Epos2Drive>> slaves_;
+    std::unique_ptr<SignalWires> wires_; ///< the network files' wires between the devices
     std::unique_ptr<FaultInjector> faults_;
 };
 

@@ -5,6 +5,7 @@
 #include "eposp/core/result.hpp"
 #include "eposp/core/time.hpp"
 #include "eposp/device/event_binding.hpp"
+#include "eposp/device/signal_wire.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
 #include "eposp/manager/network_list.hpp"
 
@@ -53,20 +54,23 @@ struct NetworkFile {
     std::optional<core::Duration> sync_period;
     std::vector<NetworkSlave> slaves;
     std::vector<EventBinding> events;
+    /// Outputs wired to inputs: of the simulated EPOS2s, of the process image.
+    std::vector<SignalWire> wires;
 };
 
 /// Reads a network file; every mistake is an error "file:line:col: error: message" (`source`
 /// names the text): unknown keys, values out of range, a node listed twice on a port, an axis
-/// served twice, an internal slave other than node 1, a slave with the EPOS P's own node-ID.
+/// served twice, an internal slave other than node 1, a slave with the EPOS P's own node-ID, a
+/// wire to or from an EPOS2 the file does not simulate, an input wired twice.
 /// A slave's `dcf` is read from `base` / its name (a file's directory).
 core::Result<NetworkFile> parse_network_file(std::string_view text, std::string_view source,
                                              const std::filesystem::path& base = {});
 core::Result<NetworkFile> load_network_file(const std::filesystem::path& path);
 
 /// Writes the network into the EPOS P's dictionary: per slave 0x1F81 (slave, boot slave,
-/// mandatory), 0x1F84 - 0x1F88, 0x1F26 / 0x1F27, 0x1016 (port code, node-ID, time) and its axis' slave number
-/// 0x5280 + axis sub 1 (table 30); 0x1F89; a SYNC period in 0x1006 and the generate bit of
-/// 0x1005. Axes the file does not name keep their defaults.
+/// mandatory), 0x1F84 - 0x1F88, 0x1F26 / 0x1F27, 0x1016 (port code, node-ID, time) and its axis'
+/// slave number 0x5280 + axis sub 1 (table 30); 0x1F89; a SYNC period in 0x1006 and the generate
+/// bit of 0x1005. Axes the file does not name keep their defaults.
 void apply_network(const NetworkFile& network, canopen::ObjectDictionary& od);
 
 } // namespace eposp::device
