@@ -9,6 +9,8 @@
 #include "eposp/drives/epos2/epos2_drive.hpp"
 #include "plant_test_motor.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -75,6 +77,7 @@ public:
                              canopen::decode<std::int32_t>(frame.payload().subspan(2, 4))});
         } else if (frame.id == kEmcyId) {
             emcys.emplace_back(frame.payload().begin(), frame.payload().end());
+            emcy_times.push_back(now());
         }
     }
 
@@ -155,7 +158,36 @@ public:
     Epos2Drive drive;
     std::vector<Tpdo> tpdos;
     std::vector<std::vector<std::uint8_t>> emcys;
+    std::vector<double> emcy_times; ///< seconds, beside emcys
 };
+
+using EmcyBytes = std::array<std::uint8_t, 8>;
+
+inline EmcyBytes emcy_bytes(const std::vector<std::uint8_t>& frame) {
+    EmcyBytes bytes{};
+    EXPECT_EQ(frame.size(), bytes.size());
+    std::copy_n(frame.begin(), std::min(frame.size(), bytes.size()), bytes.begin());
+    return bytes;
+}
+
+// The error as table 4-11 and 4.1 give it: its EMCY (code, register, five zero bytes) the first
+// the master saw, the register in 0x1001 and the newest history entry.
+inline void expect_emcy(Epos2DriveOnBus& bench, std::uint16_t code, std::uint8_t error_register) {
+    ASSERT_FALSE(bench.emcys.empty());
+    EXPECT_EQ(emcy_bytes(bench.emcys.front()),
+              (EmcyBytes{static_cast<std::uint8_t>(code), static_cast<std::uint8_t>(code >> 8),
+                         error_register, 0, 0, 0, 0, 0}));
+    EXPECT_EQ(bench.read<std::uint8_t>(0x1001, 0), error_register);
+    EXPECT_EQ(bench.read<std::uint8_t>(0x1003, 0), 1U) << "one entry in the history";
+    EXPECT_EQ(bench.read<std::uint32_t>(0x1003, 1) & 0xFFFF, code);
+}
+
+// … and the drive in Fault.
+inline void expect_error(Epos2DriveOnBus& bench, std::uint16_t code, std::uint8_t error_register) {
+    expect_emcy(bench, code, error_register);
+    EXPECT_EQ(bench.drive.state(), motion::DriveState::Fault);
+    EXPECT_EQ(bench.read<std::uint16_t>(0x6041, 0) & kStateMask, kFault);
+}
 
 } // namespace test
 } // namespace eposp::drives::epos2

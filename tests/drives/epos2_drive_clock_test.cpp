@@ -43,6 +43,8 @@ std::vector<Sample> profile_move(core::EventLoop& loop, const std::function<void
                                  const std::vector<core::Duration>& disturbances) {
     can::VirtualBus bus{loop};
     const std::unique_ptr<can::VirtualPort> port = bus.connect("epos2");
+    // A node alone on the bus sees no acknowledgement and goes error-passive (0x8120, 4.2.15).
+    const std::unique_ptr<can::VirtualPort> listener = bus.connect("master");
     std::optional<Epos2Drive> drive;
     std::vector<Sample> samples;
     std::vector<core::ScopedTimer> timers;

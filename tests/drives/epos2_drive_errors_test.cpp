@@ -3,7 +3,7 @@
 // and recovery.
 #include "epos2_bus_fixture.hpp"
 
-#include <array>
+#include <algorithm>
 
 namespace eposp::drives::epos2 {
 namespace {
@@ -11,29 +11,6 @@ namespace {
 using namespace test;
 using namespace std::chrono_literals;
 using canopen::encode;
-
-using EmcyBytes = std::array<std::uint8_t, 8>;
-
-EmcyBytes bytes_of(const std::vector<std::uint8_t>& frame) {
-    EmcyBytes bytes{};
-    EXPECT_EQ(frame.size(), bytes.size());
-    std::copy_n(frame.begin(), std::min(frame.size(), bytes.size()), bytes.begin());
-    return bytes;
-}
-
-// The error as table 4-11 and 4.1 give it: EMCY (code, register, five zero bytes), the register
-// in 0x1001, the newest history entry, and the drive in Fault.
-void expect_error(Epos2DriveOnBus& bench, std::uint16_t code, std::uint8_t error_register) {
-    ASSERT_FALSE(bench.emcys.empty());
-    EXPECT_EQ(bytes_of(bench.emcys.front()),
-              (EmcyBytes{static_cast<std::uint8_t>(code), static_cast<std::uint8_t>(code >> 8),
-                         error_register, 0, 0, 0, 0, 0}));
-    EXPECT_EQ(bench.read<std::uint8_t>(0x1001, 0), error_register);
-    EXPECT_EQ(bench.read<std::uint8_t>(0x1003, 0), 1U) << "one entry in the history";
-    EXPECT_EQ(bench.read<std::uint32_t>(0x1003, 1) & 0xFFFF, code);
-    EXPECT_EQ(bench.drive.state(), motion::DriveState::Fault);
-    EXPECT_EQ(bench.read<std::uint16_t>(0x6041, 0) & kStateMask, kFault);
-}
 
 class Epos2DriveErrors : public Epos2DriveOnBus {
 public:
@@ -60,7 +37,7 @@ TEST_F(Epos2DriveErrors, OvervoltageRaises3210AndDisables) {
     run_with_sync(5ms);
     EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
     EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0);
-    EXPECT_EQ(bytes_of(emcys.back()), (EmcyBytes{}));
+    EXPECT_EQ(emcy_bytes(emcys.back()), (EmcyBytes{}));
 }
 
 // 4.2.6: "Supply voltage is too low for operation", also while the power stage is off.
@@ -116,6 +93,76 @@ TEST_F(Epos2DriveErrors, BusOffRaises81FDWithTheAbortConnectionReaction) {
     run_with_sync(100ms); // automatic recovery after 128 × 11 recessive bits
     EXPECT_EQ(device->error_state(), can::ErrorState::Active);
     expect_error(*this, 0x81FD, 0x10);
+}
+
+// Table 3-4 under the mask of bits 0-3 and 6: Fault Reaction Active.
+constexpr std::uint16_t kFaultReactionMask = 0x004F;
+constexpr std::uint16_t kFaultReactionActive = 0x000F;
+
+// The "a" reaction with 0x6007 = 3 (the default, 8.2.84): a quickstop of the axis moving at
+// 1000 rpm, Fault Reaction Active for the ramp, then Fault.
+void expect_quickstop_reaction(Epos2DriveOnBus& bench) {
+    ASSERT_FALSE(bench.emcy_times.empty());
+    const double emcy = bench.emcy_times.front();
+    const auto ramp = std::find_if(bench.tpdos.begin(), bench.tpdos.end(),
+                                   [emcy](const Tpdo& t) { return t.time > emcy + 0.01; });
+    ASSERT_NE(ramp, bench.tpdos.end());
+    EXPECT_EQ(ramp->statusword & kFaultReactionMask, kFaultReactionActive);
+    bench.run_with_sync(200ms);
+    EXPECT_EQ(bench.drive.state(), motion::DriveState::Fault);
+}
+
+void start_long_move(Epos2DriveOnBus& bench) {
+    bench.controlword_and_target(kEnableOperation | kNewSetpoint | 0x0040, 20000);
+    bench.run_with_sync(100ms);
+    ASSERT_TRUE(bench.emcys.empty());
+}
+
+// 4.2.15: the CAN controller goes error-passive (it still sends: the EMCY leaves at once).
+TEST_F(Epos2DriveErrors, ErrorPassiveRaises8120WithTheAbortConnectionReaction) {
+    configure_and_enable(1);
+    start_long_move(*this);
+    device->force_error_state(can::ErrorState::Passive);
+    run_with_sync(20ms);
+    expect_emcy(*this, 0x8120, 0x10);
+    expect_quickstop_reaction(*this);
+}
+
+// 4.2.19: "One of the CAN receive queues had an overrun": the drive's controller holds the
+// frames it has not taken (its virtual port paused) beyond its receive queue (64 frames).
+TEST_F(Epos2DriveErrors, ReceiveQueueOverflowRaises81FE) {
+    configure_and_enable(1);
+    start_long_move(*this);
+    device->pause_receive(true);
+    for (int burst = 0; burst < 10; ++burst) {
+        for (int frame = 0; frame < 10; ++frame) {
+            master->send(can::Frame::data_frame(0x7F0, {0}));
+        }
+        loop.run_for(2ms);
+    }
+    device->pause_receive(false);
+    run_with_sync(5ms);
+    expect_emcy(*this, 0x81FE, 0x10);
+    expect_quickstop_reaction(*this);
+}
+
+// 4.2.20: "One of the CAN transmit queues had an overrun ... heartbeat producer enabled" while
+// a higher-priority babbler holds the bus: the 65th heartbeat finds the transmit queue (64
+// frames) full. The EMCY meets the same full queue and is lost like any frame sent then; the
+// register, the history and the 0x6007 reaction show the error.
+TEST_F(Epos2DriveErrors, TransmitQueueOverflowRaises81FF) {
+    configure_and_enable(1);
+    start_long_move(*this);
+    write(0x1017, 0, encode(std::uint16_t{1})); // heartbeat every ms
+    master->babble(can::Frame::data_frame(0x001, {0}));
+    loop.run_for(100ms);
+    master->stop_babbling();
+    run_with_sync(20ms);
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0x10);
+    EXPECT_EQ(read<std::uint8_t>(0x1003, 0), 1U);
+    EXPECT_EQ(read<std::uint32_t>(0x1003, 1) & 0xFFFF, 0x81FFU);
+    run_with_sync(200ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault) << "0x6007 = 3: quickstop, then Fault";
 }
 
 } // namespace

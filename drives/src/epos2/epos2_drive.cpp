@@ -10,6 +10,7 @@
 #include "modes/analog_setpoint.hpp"
 #include "modes/mode_behaviour.hpp"
 #include "modes/mode_table.hpp"
+#include "sensor_supervision.hpp"
 
 #include <algorithm>
 #include <array>
@@ -34,6 +35,17 @@ constexpr std::uint16_t kOvercurrentErrorCode = 0x2310;
 constexpr std::uint16_t kOvervoltageErrorCode = 0x3210;
 constexpr std::uint16_t kUndervoltageErrorCode = 0x3220;
 constexpr std::uint16_t kCanBusOffErrorCode = 0x81FD;
+constexpr std::uint16_t kCanPassiveErrorCode = 0x8120;
+constexpr std::uint16_t kCanRxQueueOverflowErrorCode = 0x81FE;
+constexpr std::uint16_t kCanTxQueueOverflowErrorCode = 0x81FF;
+
+// Table 8-125 and 8-102: the motor types with hall sensors, the main sensor types of encoder 1.
+constexpr std::uint16_t kSinusoidalEcMotor = 10;
+constexpr std::uint16_t kTrapezoidalEcMotor = 11;
+constexpr std::uint16_t kEncoder1WithIndex = 1;
+constexpr std::uint16_t kEncoder1WithoutIndex = 2;
+// 8.2.41, table 8-83: "Disable sensor supervision by hardware".
+constexpr std::uint16_t kNoHardwareSupervisionBit = 1U << 1;
 
 // Table 4-11: CAN errors (0x81xx, 0x82xx) are "a" errors, reacting after 0x6007.
 bool is_communication_error(std::uint16_t code) {
@@ -66,6 +78,8 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     configure_axis();
     read_counts_per_turn();
     io_ = std::make_unique<Epos2Io>(dictionary_.objects());
+    sensor_supervision_ = std::make_unique<SensorSupervision>();
+    read_sensor_configuration();
     watch_dictionary();
     compute_measured_values();
     compute_analog_setpoints(dictionary_.objects());
@@ -80,12 +94,23 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
             dictionary_.objects().set_as(0x6041, 0, published_->statusword);
         }
     });
-    // 4.2.18: the CAN controller going bus-off is an "a" error.
+    // 4.2.15, 4.2.18: the CAN controller going error-passive or bus-off is an "a" error.
     node_.on_controller_state([this](can::ErrorState state) {
-        if (state == can::ErrorState::BusOff) {
+        if (state == can::ErrorState::Passive) {
+            raise_device_error(kCanPassiveErrorCode);
+        } else if (state == can::ErrorState::BusOff) {
             raise_device_error(kCanBusOffErrorCode);
         }
     });
+    // 4.2.19, 4.2.20: the controller's receive and transmit queues are the virtual bus port's
+    // (the spec gives no sizes for the EPOS2's). Raised at the next control period: a transmit
+    // overflow is heard inside a send, where an EMCY would be sent again.
+    if (auto* virtual_port = dynamic_cast<can::VirtualPort*>(&port)) {
+        virtual_port->on_overflow([this](can::Overflow overflow, const can::Frame&) {
+            queue_overflow_ = overflow == can::Overflow::Receive ? kCanRxQueueOverflowErrorCode
+                                                                 : kCanTxQueueOverflowErrorCode;
+        });
+    }
 }
 
 // 8.2.9: "Restoring of the default parameters is permitted in 'Power Disable' state and
@@ -157,7 +182,9 @@ void Epos2Drive::compute_measured_values() {
     // The raw counter register (8.2.44, 8.2.45), modulo 2^32.
     computed(0x2020, [this] { return static_cast<std::uint32_t>(axis_.position_actual()); });
     computed(0x2021, [this] { return static_cast<std::uint32_t>(counter_at_index_); });
-    computed(0x2022, [this] { return std::uint16_t{axis_.hall_sensors()}; });
+    computed(0x2022, [this] {
+        return std::uint16_t{plant::hall_inputs(axis_.hall_sensors(), sensor_faults_)};
+    });
     computed(0x2027, [this, rounded] {
         return static_cast<std::int16_t>(rounded(current_averaged_.output() * 1000));
     });
@@ -203,6 +230,9 @@ void Epos2Drive::watch_dictionary() {
         read_counts_per_turn();
         homing_.reference_lost();
     });
+    for (const std::uint16_t index : std::array<std::uint16_t, 3>{0x2008, 0x2210, 0x6402}) {
+        od.on_change(index, [this](std::uint16_t, std::uint8_t) { read_sensor_configuration(); });
+    }
     // 8.2.73: the standstill of the stop ramps and of PVM's speed zero.
     od.on_change(0x2101, [this](std::uint16_t, std::uint8_t) { read_standstill_window(); });
     for (const std::uint16_t option_code :
@@ -238,6 +268,7 @@ void Epos2Drive::reset_application() {
     configure_axis(); // the reset restored values without telling the listeners
     read_counts_per_turn();
     io_->reload();
+    read_sensor_configuration();
     read_standstill_window();
     read_option_codes();
     published_.reset(); // the reset stored the defaults behind the computed objects
@@ -274,10 +305,7 @@ void Epos2Drive::on_controlword(std::uint16_t controlword) {
     const bool was_fault = device_control_.state() == DriveState::Fault;
     device_control_.write_controlword(controlword);
     if (was_fault && device_control_.state() != DriveState::Fault) {
-        // 3.2.3 transition 15: fault reset ends every error (one EMCY 0x0000).
-        node_.emcy().clear_all();
-        following_error_ =
-            motion::FollowingErrorMonitor(dictionary_.objects().get_as<std::uint32_t>(0x6065, 0));
+        clear_errors();
     }
     mode_behaviour_->on_controlword({.now = seconds(),
                                      .controlword = controlword,
@@ -285,6 +313,21 @@ void Epos2Drive::on_controlword(std::uint16_t controlword) {
                                      .falling = falling,
                                      .enabled = device_control_.outputs().drive_function_enabled,
                                      .last_demand = last_demand_});
+}
+
+// 3.2.3 transition 15: fault reset ends every error (one EMCY 0x0000). Table 4-11, "Position
+// Reset": clearing a sensor error resets the actual position (to 0, no longer referenced) and
+// the sensors start up again.
+void Epos2Drive::clear_errors() {
+    node_.emcy().clear_all();
+    following_error_ =
+        motion::FollowingErrorMonitor(dictionary_.objects().get_as<std::uint32_t>(0x6065, 0));
+    if (position_reset_on_clear_) {
+        position_reset_on_clear_ = false;
+        position_offset_ = -axis_.position_actual();
+        homing_.reference_lost();
+        restart_sensor_supervision();
+    }
 }
 
 // 4.2: an error recorded in 0x1003 that the node's services raised (heartbeat, guarding, PDO
@@ -301,6 +344,7 @@ void Epos2Drive::on_error_recorded() {
 // reaction of its class.
 void Epos2Drive::raise_device_error(std::uint16_t code) {
     const DeviceError& error = device_error(code);
+    position_reset_on_clear_ = position_reset_on_clear_ || error.position_reset;
     node_.emcy().raise(code, error.error_register);
     device_control_.fault_occurred(error.reaction);
 }
@@ -353,7 +397,8 @@ void Epos2Drive::control_period() {
     bool overcurrent_seen = false;
     for (int step = 0; step < plant::ServoAxis::kCurrentStepsPerOuterLoop; ++step) {
         axis_.step();
-        if (axis_.index_passed()) {
+        if (axis_.index_passed() && !sensor_faults_.index_missing &&
+            !sensor_faults_.encoder_broken) {
             index_latch_ = position_actual();
             counter_at_index_ = axis_.position_actual();
         }
@@ -363,12 +408,47 @@ void Epos2Drive::control_period() {
     }
     axis_.reduce_current_limit(i2t_.limit()); // 5.14.1
     watch_power_stage(overcurrent_seen);
+    watch_sensors();
+    watch_bus_queues();
     velocity_averaged_.update(counts_to_rpm(axis_.velocity_actual()));
     last_demand_ = demand;
     watch_motion(demand);
     watch_io(now);
     publish(demand);
     control_time_ += kControlPeriod;
+}
+
+void Epos2Drive::watch_sensors() {
+    if (const auto error = sensor_supervision_->update(axis_.motor().state().angle,
+                                                       axis_.hall_sensors(), sensor_faults_)) {
+        raise_device_error(*error);
+    }
+}
+
+void Epos2Drive::watch_bus_queues() {
+    if (queue_overflow_) {
+        raise_device_error(*queue_overflow_);
+        queue_overflow_.reset();
+    }
+}
+
+// 8.2.74, 8.2.41, 8.2.127: what the sensor supervision checks; a new configuration is a start-up.
+void Epos2Drive::read_sensor_configuration() {
+    const auto& od = dictionary_.objects();
+    const auto main_sensor = static_cast<std::uint16_t>(od.get_as<std::uint16_t>(0x2210, 2) & 0xF);
+    const auto motor_type = od.get_as<std::uint16_t>(0x6402, 0);
+    sensor_supervision_->configure(
+        {.encoder_pulses = static_cast<int>(od.get_as<std::uint32_t>(0x2210, 1)),
+         .encoder = main_sensor == kEncoder1WithIndex || main_sensor == kEncoder1WithoutIndex,
+         .encoder_index = main_sensor == kEncoder1WithIndex,
+         .hall_sensors = motor_type == kSinusoidalEcMotor || motor_type == kTrapezoidalEcMotor,
+         .hardware_supervision =
+             (od.get_as<std::uint16_t>(0x2008, 0) & kNoHardwareSupervisionBit) == 0});
+    restart_sensor_supervision();
+}
+
+void Epos2Drive::restart_sensor_supervision() {
+    sensor_supervision_->restart(axis_.motor().state().angle, axis_.hall_sensors(), sensor_faults_);
 }
 
 // Refresh (20) and Measure Init (21) take one control period here, and so does a fault reaction

@@ -45,6 +45,11 @@ std::uint8_t hall_pattern(double motor_angle, int pole_pairs) {
     return kSequence[sector];
 }
 
+std::uint8_t hall_inputs(std::uint8_t pattern, const SensorFaults& faults) {
+    return static_cast<std::uint8_t>((pattern & ~faults.hall_stuck_mask) |
+                                     (faults.hall_stuck_levels & faults.hall_stuck_mask));
+}
+
 SwitchStates switch_states(const SwitchLayout& layout, std::int64_t position) {
     SwitchStates states;
     states.negative_limit = layout.negative_limit && position <= *layout.negative_limit;

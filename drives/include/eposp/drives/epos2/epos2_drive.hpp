@@ -15,6 +15,7 @@
 #include "eposp/drives/plant/low_pass_filter.hpp"
 #include "eposp/drives/plant/reference_axis.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
+#include "eposp/drives/plant/shaft_sensors.hpp"
 
 #include <cstdint>
 #include <deque>
@@ -25,6 +26,7 @@
 namespace eposp::drives::epos2 {
 
 class Epos2Io;
+class SensorSupervision;
 class ModeBehaviour;
 struct ModeInputs;
 struct ModeServices;
@@ -67,7 +69,8 @@ struct Epos2DriveConfig {
 /// actual values, digital inputs) are stored each millisecond when they change, so that SDO,
 /// synchronous and event-driven TPDOs read them alike, and the further measured values (encoder
 /// counter, averaged values, current demand, following error) are computed when read. The power
-/// stage's supervision and the CAN controller's bus-off raise their errors of table 4-11.
+/// stage's supervision, the sensor supervision, the CAN controller's error-passive and bus-off
+/// states and its lost frames raise their errors of table 4-11.
 ///
 /// Neither copyable nor movable: the dictionary's listeners refer to it.
 class Epos2Drive {
@@ -131,11 +134,20 @@ public:
     /// not raised again (one EMCY per error event, CiA 301 7.2.7). A code the table does not
     /// list is a programming error (std::invalid_argument; device_errors() lists them).
     void raise_device_error(std::uint16_t code);
+    /// Faults of the motor's sensors from the next control period on (none: all false): the
+    /// sensor inputs (0x2022, the index for homing) read as the faults make them, and the sensor
+    /// supervision raises what it finds (4.2.23 - 4.2.31, docs/epos2.md "Fault injection").
+    void inject_sensor_faults(const plant::SensorFaults& faults) { sensor_faults_ = faults; }
 
 private:
     static Epos2DictionaryConfig with_restore_rule(Epos2DictionaryConfig config, Epos2Drive& drive);
     void configure_axis();
     void watch_power_stage(bool overcurrent);
+    void watch_sensors();
+    void watch_bus_queues();
+    void read_sensor_configuration();
+    void restart_sensor_supervision();
+    void clear_errors();
     std::optional<std::uint16_t> supply_error() const;
     void watch_dictionary();
     void compute_measured_values();
@@ -177,8 +189,14 @@ private:
     motion::StandstillMonitor standstill_;
     motion::I2tCurrentLimit i2t_; ///< 5.14.1, statusword bit 11
     std::unique_ptr<ModeServices> mode_services_;
-    std::unique_ptr<ModeBehaviour> mode_behaviour_; ///< of mode_ (modes/)
-    std::unique_ptr<Epos2Io> io_;                   ///< digital I/O, marker, compare, brake
+    std::unique_ptr<ModeBehaviour> mode_behaviour_;         ///< of mode_ (modes/)
+    std::unique_ptr<Epos2Io> io_;                           ///< digital I/O, marker, compare, brake
+    std::unique_ptr<SensorSupervision> sensor_supervision_; ///< 4.2.23 - 4.2.31
+    plant::SensorFaults sensor_faults_;                     ///< injected
+    /// An error with "position reset" (table 4-11) was raised: its clearing resets the position.
+    bool position_reset_on_clear_ = false;
+    /// 0x81FE / 0x81FF: a queue of the CAN controller lost a frame, raised at the next period.
+    std::optional<std::uint16_t> queue_overflow_;
 
     OperatingMode mode_ = OperatingMode::ProfilePosition;
     std::uint16_t controlword_ = 0;

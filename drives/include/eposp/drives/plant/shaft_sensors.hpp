@@ -21,6 +21,24 @@ bool index_passed(std::int64_t before, std::int64_t after, int encoder_pulses);
 /// 1, 3, 2, 6, 4, 5 for positive rotation.
 std::uint8_t hall_pattern(double motor_angle, int pole_pairs);
 
+/// Faults of the motor's sensors that a test injects (EPOS2 FW spec 4.2.23 - 4.2.31 list them as
+/// causes): what the drive's sensor inputs read instead of the shaft's angle.
+struct SensorFaults {
+    bool encoder_broken = false; ///< a broken encoder line: the channels carry no signal
+    bool index_missing = false;  ///< the encoder's index channel never pulses
+    /// The lines per turn of the encoder actually mounted, when not those configured (0x2210).
+    std::optional<int> encoder_pulses;
+    /// Hall sensor inputs held at a level whatever the angle (a broken sensor or supply): bit n
+    /// of `hall_stuck_mask` holds sensor n + 1 at bit n of `hall_stuck_levels`.
+    std::uint8_t hall_stuck_mask = 0;
+    std::uint8_t hall_stuck_levels = 0;
+
+    friend bool operator==(const SensorFaults&, const SensorFaults&) = default;
+};
+
+/// The hall sensor inputs as the drive reads them: `pattern` with the stuck sensors at their level.
+std::uint8_t hall_inputs(std::uint8_t pattern, const SensorFaults& faults);
+
 /// Simulated switches at configurable positions in quadcounts; an absent switch never trips.
 struct SwitchLayout {
     std::optional<std::int64_t> negative_limit; ///< active at and below this position

@@ -1,0 +1,175 @@
+// The sensor errors of table 4-11 from sensor faults injected into the plant (EPOS2 FW spec
+// 4.2.23 - 4.2.26, 4.2.31): each with its EMCY, error register, the "d" reaction (disabled at
+// once, no ramp) and the position reset when it is cleared.
+#include "epos2_bus_fixture.hpp"
+
+#include <algorithm>
+
+namespace eposp::drives::epos2 {
+namespace {
+
+using namespace test;
+using namespace std::chrono_literals;
+using canopen::encode;
+
+constexpr std::uint8_t kSensorErrorRegister = 0x80; // table 4-11: 1000 0000b
+constexpr std::uint16_t kReferencedBit = 1U << 15;
+
+// One fault each, the others absent.
+plant::SensorFaults fault(void (*set)(plant::SensorFaults&)) {
+    plant::SensorFaults faults;
+    set(faults);
+    return faults;
+}
+const plant::SensorFaults kBrokenEncoder = fault([](auto& f) { f.encoder_broken = true; });
+const plant::SensorFaults kMissingIndex = fault([](auto& f) { f.index_missing = true; });
+const plant::SensorFaults k512LineEncoder = fault([](auto& f) { f.encoder_pulses = 512; });
+const plant::SensorFaults kHallSensor3StuckLow = fault([](auto& f) { f.hall_stuck_mask = 0b100; });
+const plant::SensorFaults kHallSupplyLost = fault([](auto& f) { f.hall_stuck_mask = 0b111; });
+
+class Epos2SensorErrors : public Epos2DriveOnBus {
+public:
+    /// A relative move of ten turns (20000 qc at 500 pulses) at 1000 rpm: about 0.6 s.
+    void start_long_move() {
+        controlword_and_target(kEnableOperation | kNewSetpoint | 0x0040, 20000);
+    }
+
+    /// "d": a secure movement is no longer possible, the drive is disabled at once: the TPDO
+    /// two control periods after the EMCY shows Fault, not the quickstop ramp of "f" or "a"
+    /// (100 ms from 1000 rpm at 10000 rpm/s).
+    void expect_disabled_at_once() {
+        ASSERT_FALSE(emcy_times.empty());
+        const double emcy = emcy_times.front();
+        const auto after = std::find_if(tpdos.begin(), tpdos.end(), [emcy](const Tpdo& tpdo) {
+            return tpdo.time > emcy + 0.0025;
+        });
+        ASSERT_NE(after, tpdos.end());
+        EXPECT_EQ(after->statusword & kStateMask, kFault);
+        EXPECT_EQ(drive.axis().current_actual(), 0.0) << "power stage off";
+    }
+
+    void use_ec_motor() {
+        write(0x6402, 0, encode(std::uint16_t{10})); // sinusoidal PM BL motor (table 8-125)
+    }
+};
+
+// 4.2.31: a broken encoder line, seen by the hardware supervision.
+TEST_F(Epos2SensorErrors, BrokenEncoderRaisesFF0APositionSensorBreach) {
+    configure_and_enable(1);
+    start_long_move();
+    run_with_sync(100ms);
+    ASSERT_TRUE(emcys.empty());
+    drive.inject_sensor_faults(kBrokenEncoder);
+    run_with_sync(10ms);
+    expect_error(*this, 0xFF0A, kSensorErrorRegister);
+    expect_disabled_at_once();
+}
+
+// 8.2.41, table 8-83 bit 1: "Disable sensor supervision by hardware".
+TEST_F(Epos2SensorErrors, BrokenEncoderGoesUnseenWithTheHardwareSupervisionDisabled) {
+    write(0x2008, 0, encode(std::uint16_t{0x0002}));
+    configure_and_enable(1);
+    drive.inject_sensor_faults(kBrokenEncoder);
+    run_with_sync(50ms);
+    EXPECT_TRUE(emcys.empty());
+    EXPECT_EQ(drive.state(), motion::DriveState::OperationEnable);
+}
+
+// 4.2.24: "Encoder index signal was not found within two turns at start-up".
+TEST_F(Epos2SensorErrors, MissingIndexRaisesFF02AfterTwoTurns) {
+    drive.inject_sensor_faults(kMissingIndex);
+    configure_and_enable(1);
+    start_long_move();
+    run_with_sync(700ms);
+    expect_error(*this, 0xFF02, kSensorErrorRegister);
+    expect_disabled_at_once();
+    // Two turns of 2000 qc, not before.
+    const auto at_error = std::find_if(tpdos.begin(), tpdos.end(), [this](const Tpdo& tpdo) {
+        return tpdo.time >= emcy_times.front();
+    });
+    ASSERT_NE(at_error, tpdos.end());
+    EXPECT_GT(at_error->position, 4000);
+    EXPECT_LT(at_error->position, 4000 + 100);
+}
+
+// An encoder with index that works raises nothing over many turns (the same move).
+TEST_F(Epos2SensorErrors, AWorkingEncoderRaisesNothing) {
+    use_ec_motor();
+    configure_and_enable(1);
+    start_long_move();
+    run_with_sync(700ms);
+    EXPECT_TRUE(emcys.empty());
+    EXPECT_NEAR(tpdos.back().position, 20000, 10);
+}
+
+// 4.2.25: "Encoder pulses counted between the first two index pulses does not fit to
+// resolution": a 512-line encoder configured as 500 lines counts 2048 qc from index to index.
+TEST_F(Epos2SensorErrors, WrongResolutionRaisesFF03AtTheSecondIndex) {
+    drive.inject_sensor_faults(k512LineEncoder);
+    configure_and_enable(1);
+    start_long_move();
+    run_with_sync(700ms);
+    expect_error(*this, 0xFF03, kSensorErrorRegister);
+    expect_disabled_at_once();
+}
+
+// 4.2.26: "No Hall sensor 3 edge found within first motor turn": hall sensor 3 stuck low.
+TEST_F(Epos2SensorErrors, StuckHallSensor3RaisesFF04WithinTheFirstTurn) {
+    use_ec_motor();
+    drive.inject_sensor_faults(kHallSensor3StuckLow);
+    configure_and_enable(1);
+    start_long_move();
+    run_with_sync(700ms);
+    expect_error(*this, 0xFF04, kSensorErrorRegister);
+    expect_disabled_at_once();
+    const auto at_error = std::find_if(tpdos.begin(), tpdos.end(), [this](const Tpdo& tpdo) {
+        return tpdo.time >= emcy_times.front();
+    });
+    ASSERT_NE(at_error, tpdos.end());
+    EXPECT_GT(at_error->position, 2000);
+    EXPECT_LT(at_error->position, 2000 + 100);
+}
+
+// 4.2.23: "an impossible signal combination" (the hall supply lost: all three low) once the
+// hall sensors were found; 0x2022 shows what the drive reads.
+TEST_F(Epos2SensorErrors, HallSupplyLostRaisesFF01) {
+    use_ec_motor();
+    configure_and_enable(1);
+    start_long_move();
+    run_with_sync(100ms);
+    ASSERT_TRUE(emcys.empty());
+    drive.inject_sensor_faults(kHallSupplyLost);
+    run_with_sync(10ms);
+    expect_error(*this, 0xFF01, kSensorErrorRegister);
+    expect_disabled_at_once();
+    EXPECT_EQ(read<std::uint16_t>(0x2022, 0), 0U);
+}
+
+// Table 4-11 "Position Reset": clearing the error resets the actual position, which is no longer
+// referenced; the sensors start up again (a fault still there is found again).
+TEST_F(Epos2SensorErrors, ClearingASensorErrorResetsTheActualPosition) {
+    write(0x6098, 0, encode(std::int8_t{35})); // homing on the actual position: referenced
+    configure_and_enable(6);
+    controlword(kEnableOperation | 0x0010);
+    run_with_sync(20ms);
+    controlword(kEnableOperation);
+    write(0x6060, 0, encode(std::int8_t{1}));
+    start_long_move();
+    run_with_sync(100ms);
+    ASSERT_NE(tpdos.back().statusword & kReferencedBit, 0);
+    ASSERT_GT(tpdos.back().position, 1000);
+    drive.inject_sensor_faults(kBrokenEncoder);
+    run_with_sync(1000ms); // the motor coasts to rest
+    ASSERT_EQ(drive.state(), motion::DriveState::Fault);
+    ASSERT_EQ(drive.axis().velocity_actual(), 0.0);
+    drive.inject_sensor_faults({});
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
+    EXPECT_EQ(read<std::int32_t>(0x6064, 0), 0);
+    EXPECT_EQ(tpdos.back().statusword & kReferencedBit, 0);
+    EXPECT_EQ(tpdos.back().statusword & kStateMask, kSwitchOnDisabled);
+}
+
+} // namespace
+} // namespace eposp::drives::epos2
