@@ -4,6 +4,7 @@
 #include "eposp/drives/escon2/units.hpp"
 #include "eposp/drives/motion/profile_planner.hpp"
 #include "eposp/drives/motion/statusword_bits.hpp"
+#include "escon2_io.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,12 @@ using motion::DriveState;
 // Table 18 / 24: statusword bit 12 "drive follows command value" (bit 11 is motion's).
 constexpr std::uint16_t kFollowsCommandValueBit = 1U << 12;
 constexpr std::uint16_t kFaultResetBit = 1U << 7; // table 98
+// Table 8: the device commands the drive enable and quick stop inputs give.
+constexpr std::uint16_t kDeviceCommandBits = 0x008F;
+constexpr std::uint16_t kDisableVoltage = 0x0000;
+constexpr std::uint16_t kQuickStop = 0x0002;
+constexpr std::uint16_t kShutdown = 0x0006;
+constexpr std::uint16_t kEnableOperation = 0x000F;
 
 // Table 49: the control structures with a velocity controller and their main sensor.
 constexpr std::uint32_t kCurrentControlOnly = 0x0000'0001;
@@ -58,6 +65,13 @@ Escon2Drive::Escon2Drive(core::EventLoop& loop, Escon2DriveConfig config)
                      loop.every(kControlPeriod, control_time_, [this] { control_period(); })) {
     write_axis_defaults(dictionary_.objects(), machine_);
     configure_axis();
+    const HardwareData& hardware = dictionary_.hardware();
+    const auto volts = [](std::int64_t millivolts) {
+        return static_cast<double>(millivolts) / 1000.0;
+    };
+    io_ = std::make_unique<Escon2Io>(
+        dictionary_.objects(), volts(hardware.analog_input_low), volts(hardware.analog_input_high),
+        volts(hardware.analog_output_low), volts(hardware.analog_output_high), seconds());
     watch_dictionary();
     compute_measured_values();
     set_supply_voltage(machine_.plant.power_stage.supply_voltage);
@@ -83,6 +97,7 @@ bool Escon2Drive::power_disabled() const {
 void Escon2Drive::start() {
     const canopen::StoredValuesReport stored = dictionary_.power_up();
     configure_axis(); // the power-up restored values without telling the listeners
+    io_->reload();
     errors_.reset();
     device_control_.node_reset();
     device_control_.initialise();              // 0
@@ -111,6 +126,31 @@ void Escon2Drive::set_current_set_value(std::int32_t milliamperes) {
 
 void Escon2Drive::set_current_offset(std::int32_t milliamperes) {
     objects().set_as(0x30F1, 0, milliamperes);
+}
+
+void Escon2Drive::set_digital_input(unsigned input, bool high) {
+    io_->set_digital_input(input, high,
+                           std::chrono::duration<double>(loop_.now().time_since_epoch()).count());
+}
+
+bool Escon2Drive::digital_input(unsigned input) const {
+    return io_->digital_input(input);
+}
+
+void Escon2Drive::set_pwm_signal(unsigned input, std::optional<PwmSignal> signal) {
+    io_->set_pwm_signal(input, signal);
+}
+
+void Escon2Drive::set_analog_input(unsigned input, double volts) {
+    io_->set_analog_input(input, volts);
+}
+
+bool Escon2Drive::digital_output(unsigned output) const {
+    return io_->digital_output(output);
+}
+
+double Escon2Drive::analog_output(unsigned output) const {
+    return io_->analog_output(output);
 }
 
 void Escon2Drive::set_supply_voltage(double volts) {
@@ -307,6 +347,8 @@ void Escon2Drive::on_mode_written() {
 // control_time_, the timer's scheduled time, never at the loop's now().
 void Escon2Drive::control_period() {
     const double now = seconds();
+    react_to_inputs(io_->read_inputs(now - plant::ServoAxis::kOuterLoopPeriod, now,
+                                     mode_ == OperatingMode::IoVelocity));
     if ((device_control_.state() == DriveState::FaultReactionActiveDisabled ||
          device_control_.state() == DriveState::FaultReactionActiveEnabled) &&
         device_control_.outputs().ramp == motion::StopRamp::None) {
@@ -346,7 +388,80 @@ void Escon2Drive::control_period() {
     }
     velocity_averaged_.update(axis_.velocity_actual());
     publish();
+    const DriveState state = device_control_.state();
+    const double counts_to_rpm = 1.0 / counts_per_rpm();
+    io_->write_outputs(
+        {.fault = state == DriveState::Fault || state == DriveState::FaultReactionActiveDisabled ||
+                  state == DriveState::FaultReactionActiveEnabled,
+         .limiting = (statusword() & motion::kInternalLimitActiveBit) != 0,
+         .monitored = {.velocity = to_velocity_units(polarity() * axis_.velocity_actual()),
+                       .velocity_averaged =
+                           to_velocity_units(polarity() * velocity_averaged_.output()),
+                       .current = polarity() * axis_.current_actual(),
+                       .current_averaged = polarity() * current_averaged_.output(),
+                       .logic_section_temperature = kPowerStageTemperature,
+                       .power_stage_temperature = kPowerStageTemperature},
+         .velocity_rpm = axis_.velocity_actual() * counts_to_rpm,
+         .pole_pairs = objects().get_as<std::uint8_t>(0x3001, 3)},
+        plant::ServoAxis::kOuterLoopPeriod);
     control_time_ += kControlPeriod;
+}
+
+// Tables 59, 60: the set values the inputs command, drive enable and quick stop as device
+// commands, the limit switches while the drive runs (7.1.28, 7.1.29) and the PWM conditions
+// (7.1.30 - 7.1.35).
+void Escon2Drive::react_to_inputs(const IoReaction& reaction) {
+    const InputSetValues& values = reaction.set_values;
+    if (values.velocity) {
+        set_velocity_set_value(*values.velocity);
+    }
+    if (values.velocity_offset) {
+        set_velocity_offset(*values.velocity_offset);
+    }
+    if (values.current) {
+        set_current_set_value(*values.current);
+    }
+    if (values.current_offset) {
+        set_current_offset(*values.current_offset);
+    }
+    // "Enable / disable the drive or clear errors in Fault state".
+    if (reaction.drive_enable) {
+        if (!*reaction.drive_enable) {
+            command(kDisableVoltage);
+        } else if (device_control_.state() == DriveState::Fault) {
+            command(kDisableVoltage);
+            command(kFaultResetBit);
+        } else {
+            command(kShutdown);
+            command(kEnableOperation);
+        }
+    }
+    // "Stop movement and switch to «Quick stop active» state"; released, operation resumes (16).
+    if (reaction.quick_stop) {
+        if (*reaction.quick_stop) {
+            command(kQuickStop);
+        } else if (device_control_.state() == DriveState::QuickStopActive) {
+            command(kEnableOperation);
+        }
+    }
+    for (const DeviceErrorCode condition : reaction.conditions) {
+        const auto code = static_cast<std::uint16_t>(condition);
+        const bool limit_switch = condition == DeviceErrorCode::NegativeLimitSwitch ||
+                                  condition == DeviceErrorCode::PositiveLimitSwitch;
+        if (!limit_switch || device_control_.state() == DriveState::OperationEnable) {
+            raise_device_error(code);
+        }
+    }
+    for (const DeviceErrorCode warning : reaction.cleared) {
+        if (errors_.active(static_cast<std::uint16_t>(warning))) {
+            clear_warning(static_cast<std::uint16_t>(warning));
+        }
+    }
+}
+
+void Escon2Drive::command(std::uint16_t device_command) {
+    on_controlword(
+        static_cast<std::uint16_t>((controlword_ & ~kDeviceCommandBits) | device_command));
 }
 
 void Escon2Drive::follow_power_stage() {

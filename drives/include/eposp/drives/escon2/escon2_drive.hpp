@@ -4,6 +4,7 @@
 #include "eposp/core/event_loop.hpp"
 #include "eposp/drives/escon2/error_handling.hpp"
 #include "eposp/drives/escon2/escon2_dictionary.hpp"
+#include "eposp/drives/escon2/io/pwm_input.hpp"
 #include "eposp/drives/escon2/protection/output_current_limitation.hpp"
 #include "eposp/drives/motion/device_control.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
@@ -13,9 +14,13 @@
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 namespace eposp::drives::escon2 {
+
+class Escon2Io;
+struct IoReaction;
 
 /// ESCON2 FW spec table 100: the modes of operation (0x6060).
 enum class OperatingMode : std::int8_t { IoVelocity = -121, IoCurrent = -120 };
@@ -29,15 +34,17 @@ struct Escon2DriveConfig {
 };
 
 /// A simulated maxon ESCON2: its dictionary, the device control of 2.2 (StateMachine::Escon2),
-/// I/O Velocity Mode and I/O Current Mode (chapter 3) on the shared ServoAxis plant, the output
-/// current limitation (3.6.2) and the error handling of 7.1, stepped by one event-loop timer
+/// I/O Velocity Mode and I/O Current Mode (chapter 3) on the shared ServoAxis plant, the inputs
+/// and outputs of chapter 4, the output current limitation (3.6.2) and the error handling of
+/// 7.1, stepped by one event-loop timer
 /// every millisecond (velocity loop, then ten 0.1 ms current-loop and plant steps) on its own
 /// clock, so that a run in virtual time is exact and reproducible.
 ///
 /// The ESCON2 has no CAN: a host (the USB service interface, a test) reads and writes its
 /// dictionary; the controlword, the mode and the commanding objects act through change listeners
-/// from the next control period on. The set values come from the inputs (chapter 4) through the
-/// set_* methods below, which write the commanding objects of tables 15 and 21.
+/// from the next control period on. The set values come from the inputs (analog, PWM, set value
+/// switches) or from a host through the set_* methods below, which write the commanding objects
+/// of tables 15 and 21; drive enable and quick stop inputs act as device commands.
 ///
 /// Neither copyable nor movable: the dictionary's listeners refer to it.
 class Escon2Drive {
@@ -71,6 +78,24 @@ public:
     /// Current offset 0x30F1, mA.
     void set_current_offset(std::int32_t milliamperes);
 
+    // The pins (chapter 4), driven from outside (a test, a wiring to another device's outputs):
+    // the I/O classes of io/ read them as 0x3141 - 0x3172 configure them.
+
+    /// Digital input `input` (1 - 4 regular, 5 - 8 high-speed 1 - 4) high or low from now on;
+    /// it counts once held longer than its filter time (4.1.1). Another number is a programming
+    /// error (std::out_of_range).
+    void set_digital_input(unsigned input, bool high);
+    /// The filtered level of digital input `input` as 0x3141 sub 1 shows it.
+    bool digital_input(unsigned input) const;
+    /// A steady PWM signal at digital input 1 or 2 (6.2.31, 6.2.32); none: the pin's level.
+    void set_pwm_signal(unsigned input, std::optional<PwmSignal> signal);
+    /// The voltage at analog input 1 or 2 (V), limited to the hardware's range.
+    void set_analog_input(unsigned input, double volts);
+    /// The level of digital output `output` (1, 2, 3 = high-speed 1) after its polarity.
+    bool digital_output(unsigned output) const;
+    /// The voltage of analog output 1 or 2, V.
+    double analog_output(unsigned output) const;
+
     /// The simulated power supply (0x2200 sub 1).
     void set_supply_voltage(double volts);
     /// Raises an error or warning of table 110 as if its cause had occurred: its history entry,
@@ -91,6 +116,8 @@ private:
     void on_controlword(std::uint16_t controlword);
     void on_mode_written();
     void control_period();
+    void react_to_inputs(const IoReaction& reaction);
+    void command(std::uint16_t device_command);
     void follow_power_stage();
     void check_configuration();
     plant::AxisDemand stop_ramp(double now);
@@ -114,6 +141,7 @@ private:
     motion::DeviceControl device_control_;
     ErrorHandling errors_;
     OutputCurrentLimitation limitation_;
+    std::unique_ptr<Escon2Io> io_;
 
     OperatingMode mode_ = OperatingMode::IoVelocity;
     std::uint16_t controlword_ = 0;
