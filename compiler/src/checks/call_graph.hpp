@@ -21,6 +21,8 @@ public:
 
     /// The POUs whose code runs, in the order of their files, then as first called.
     const std::vector<const ast::Pou*>& pous() const { return pous_; }
+    /// Whether `pou` is among pous().
+    bool runs(const ast::Pou& pou) const { return callees_.contains(&pou); }
     /// The user FUNCTIONs, FBs and PROGRAMs `pou` calls, each once, as first called.
     const std::vector<const ast::Pou*>& callees(const ast::Pou& pou) const;
 

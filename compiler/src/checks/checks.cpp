@@ -13,8 +13,16 @@ void check_program(types::TypedProgram& program, std::span<const ast::Compilatio
         check_written_inputs(check);
         check_unused_variables(check);
         check_assigned_results(check);
+        check_constant_indices(check);
     }
+    const ProgramUnderCheck program_check{program, calls, diagnostics};
+    check_constant_subranges(program_check);
+    check_string_cuts(program_check);
     check_recursion(calls, diagnostics);
+}
+
+bool ProgramUnderCheck::includes(const ast::Pou* pou) const {
+    return pou == nullptr || calls.runs(*pou);
 }
 
 } // namespace eposp::compiler::checks

@@ -15,6 +15,16 @@ struct PouUnderCheck {
     Diagnostics& diagnostics;
 };
 
+/// The program under check: which POUs' values the program-wide checks look at.
+struct ProgramUnderCheck {
+    types::TypedProgram& program;
+    const CallGraph& calls;
+    Diagnostics& diagnostics;
+
+    /// Whether values in `pou` are checked: outside POUs (null) always, else when its code runs.
+    bool includes(const ast::Pou* pou) const;
+};
+
 /// W0401: a variable of a function or FB (a program's VAR_TEMP and VAR_EXTERNAL) never used.
 void check_unused_variables(const PouUnderCheck& check);
 /// W0402, W0403: an output or a function's result never assigned, or not on every path
@@ -24,6 +34,12 @@ void check_assigned_results(const PouUnderCheck& check);
 void check_unreachable_statements(const PouUnderCheck& check);
 /// W0405: an assignment to the POU's own input.
 void check_written_inputs(const PouUnderCheck& check);
+/// E0409: a constant array index outside the array's bounds.
+void check_constant_indices(const PouUnderCheck& check);
+/// E0410: a constant stored into a subrange outside its bounds.
+void check_constant_subranges(const ProgramUnderCheck& check);
+/// W0406: a string literal longer than the string it is stored into.
+void check_string_cuts(const ProgramUnderCheck& check);
 /// E0407: a POU that calls itself, directly or through others (6.6.1.1).
 void check_recursion(const CallGraph& calls, Diagnostics& diagnostics);
 

@@ -77,26 +77,6 @@ std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) 
     return bytes;
 }
 
-void ProgramGenerator::warn_if_cut(const ast::Expression& expression, const sema::Type& target) {
-    const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
-    const auto* text =
-        literal != nullptr ? std::get_if<ast::StringLiteral>(&literal->value) : nullptr;
-    if (text == nullptr || target.kind != sema::TypeKind::String) {
-        return;
-    }
-    const auto* narrow = std::get_if<std::string>(&text->value);
-    if (target.wide != (narrow == nullptr)) {
-        return; // a type mismatch, reported as such
-    }
-    const std::size_t length =
-        narrow != nullptr ? narrow->size() : std::get<std::u16string>(text->value).size();
-    if (length > target.capacity) {
-        diagnostics_.warning(DiagnosticCode::W0406, expression.range,
-                             fmt::format("this string of {} characters is cut to the {} of {}",
-                                         length, target.capacity, target.name));
-    }
-}
-
 std::optional<std::vector<std::uint8_t>>
 ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type) {
     const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
@@ -177,7 +157,6 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
             }
             const std::uint64_t bits =
                 integer->negative ? 0 - integer->magnitude : integer->magnitude;
-            check_in_subrange(expression, static_cast<std::int64_t>(bits), type);
             return integer_bytes(static_cast<std::int64_t>(bits), type.size);
         }
     }
@@ -189,17 +168,7 @@ ProgramGenerator::constant_value(const ast::Expression& expression, const sema::
         diagnostics_.error(DiagnosticCode::E0311, expression.range,
                            fmt::format("the value {} does not fit in {}", *value, type.name));
     }
-    check_in_subrange(expression, *value, type);
     return integer_bytes(*value, type.size);
-}
-
-void ProgramGenerator::check_in_subrange(const ast::Expression& expression, std::int64_t value,
-                                         const sema::Type& type) {
-    if (type.range && !type.range->contains(value)) {
-        diagnostics_.error(DiagnosticCode::E0410, expression.range,
-                           fmt::format("the value {} is outside {} ({}..{})", value, type.name,
-                                       type.range->lower, type.range->upper));
-    }
 }
 
 void ProgramGenerator::initial_value(const sema::Type& type, const ast::Initializer* initializer,
@@ -291,7 +260,6 @@ void ProgramGenerator::apply_initializer(const sema::Type& type,
             return;
         }
         if (const auto value = constant_value(**expression, type)) {
-            warn_if_cut(**expression, type);
             std::copy(value->begin(), value->end(), bytes.begin());
         } else {
             diagnostics_.error(DiagnosticCode::E0313, (*expression)->range,

@@ -180,7 +180,6 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
         std::optional<Value> value;
         switch (parameter.kind) {
         case NativeParameter::Kind::Value:
-            program_.warn_if_cut(*argument->value, type);
             value = value_as(*argument->value, type);
             break;
         case NativeParameter::Kind::String:

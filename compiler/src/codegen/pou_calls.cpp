@@ -173,7 +173,6 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                 clear(slot, *field.type); // the header a string function writes through
             }
             const Destination into{slot, field.type};
-            program_.warn_if_cut(*it->argument->value, *field.type);
             const auto value = value_as(*it->argument->value, *field.type, &into);
             if (!value) {
                 ok = false;
@@ -238,7 +237,6 @@ std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sem
                   fmt::format("bad argument for '{}'", function.name.name));
             return std::nullopt;
         }
-        program_.warn_if_cut(*argument.value, *field->type);
         const auto value = value_as(*argument.value, *field->type);
         if (!value) {
             return std::nullopt;
@@ -295,7 +293,6 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             }
             continue;
         }
-        program_.warn_if_cut(*argument.value, *field->type);
         if (slot.kind == Place::Kind::Direct) {
             const Destination into{slot.operand, field->type};
             if (const auto value = value_as(*argument.value, *field->type, &into)) {

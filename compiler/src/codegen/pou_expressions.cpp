@@ -249,21 +249,17 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
     }
     const sema::Type& element = *type.element;
     const sema::Type& dint = types_.elementary(E::Dint);
-    // Constant indices are checked now and cost nothing at run time.
+    // Constant indices cost nothing at run time; the checks stage refused those outside the
+    // bounds (E0409), which would otherwise be checked at run time like any other.
     std::int64_t constant = 0;
     bool all_constant = true;
     for (std::size_t d = 0; d < node.indices.size(); ++d) {
         const auto folded = types_.fold_integer(*node.indices[d]);
         const auto& dimension = type.dimensions[d];
-        if (!folded) {
+        if (!folded || *folded < dimension.lower ||
+            *folded >= dimension.lower + static_cast<std::int64_t>(dimension.count)) {
             all_constant = false;
             break;
-        }
-        if (*folded < dimension.lower ||
-            *folded >= dimension.lower + static_cast<std::int64_t>(dimension.count)) {
-            error(DiagnosticCode::E0409, node.indices[d]->range,
-                  fmt::format("index {} is outside {}", *folded, type.name));
-            return std::nullopt;
         }
         constant = constant * dimension.count + (*folded - dimension.lower);
     }

@@ -122,7 +122,6 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
     if (!enable) {
         return;
     }
-    program_.warn_if_cut(*node.value, *target->type);
     if (enable->en == nullptr && enable->eno == nullptr) {
         if (const auto value = value_as(*node.value, *target->type, into)) {
             store(*target, *value);

@@ -1,7 +1,8 @@
 // Subrange types (IEC 61131-3 ed. 3, 6.4.4.4): a value stored into a subrange variable must lie
-// within its bounds. Constants are checked when compiling; other values by a Range<I>
-// instruction before they are stored, unless they come from a variable or a function result
-// whose own subrange lies inside the target's. Values computed from subranges (`p + 1`) have the
+// within its bounds. A constant inside them is stored as it is (the checks stage refuses one
+// outside, checks/constant_subranges.cpp); any other value is checked by a Range<I> instruction
+// before it is stored, unless it comes from a variable or a function result whose own subrange
+// lies inside the target's. Values computed from subranges (`p + 1`) have the
 // base type: only a checked conversion gives a value the subrange type again.
 
 #include "eposp/compiler/sema/symbol.hpp"
@@ -14,8 +15,8 @@ using vm::Operand;
 std::optional<Value> PouGenerator::subrange_value(const ast::Expression& expression,
                                                   const sema::Type& want) {
     const sema::Type& base = types_.unranged(want);
-    if (const auto constant = types_.fold_integer(expression)) {
-        program_.check_in_subrange(expression, *constant, want);
+    if (const auto constant = types_.fold_integer(expression);
+        constant && want.range->contains(*constant)) {
         const auto value = value_as(expression, base);
         return value ? std::optional(Value{value->operand, &want}) : std::nullopt;
     }

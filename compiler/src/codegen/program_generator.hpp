@@ -116,12 +116,6 @@ public:
     /// The value of a constant expression of type `type`, encoded as in memory.
     std::optional<std::vector<std::uint8_t>> constant_value(const ast::Expression& expression,
                                                             const sema::Type& type);
-    /// Warns when `expression` is a string literal longer than the STRING[n] `target` it goes
-    /// to (an assignment, initial value or argument): it is cut to n characters.
-    void warn_if_cut(const ast::Expression& expression, const sema::Type& target);
-    /// Reports a constant `value` of `expression` that lies outside the subrange `type`.
-    void check_in_subrange(const ast::Expression& expression, std::int64_t value,
-                           const sema::Type& type);
 
 private:
     struct QueuedPou {

@@ -78,7 +78,11 @@ void ExpressionTyper::sections(const std::vector<ast::DeclarationSection>& secti
 void ExpressionTyper::type_declaration(const ast::TypeDeclaration& declaration) {
     type_spec(declaration.type);
     if (declaration.initial_value) {
-        initializer(*declaration.initial_value, program_.types().resolve(declaration.type));
+        // The type by its name (`Pct`), which its diagnostics say.
+        const sema::Symbol* symbol = program_.model().global().find_member(declaration.name.name);
+        initializer(*declaration.initial_value, symbol != nullptr && symbol->type == &declaration
+                                                    ? program_.types().named(*symbol)
+                                                    : program_.types().resolve(declaration.type));
     }
 }
 
@@ -114,7 +118,7 @@ void ExpressionTyper::initializer(const ast::Initializer& initializer, const sem
         return;
     }
     if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer.value)) {
-        expect(**expression, *target, "an initial value");
+        store(**expression, *target, "an initial value");
     } else if (const auto* elements =
                    std::get_if<std::vector<ast::ArrayInitElement>>(&initializer.value)) {
         for (const ast::ArrayInitElement& element : *elements) {
@@ -163,13 +167,19 @@ void ExpressionTyper::expect(const ast::Expression& expression, const sema::Type
     }
 }
 
+void ExpressionTyper::store(const ast::Expression& expression, const sema::Type& target,
+                            const char* what) {
+    expect(expression, target, what);
+    program_.add_store({&expression, &target, current_});
+}
+
 void ExpressionTyper::statement(const ast::Statement& statement) {
     std::visit(
         [&](const auto& node) {
             using T = std::decay_t<decltype(node)>;
             if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
                 if (const sema::Type* target = type(*node.target, nullptr)) {
-                    expect(*node.value, *target, "a value");
+                    store(*node.value, *target, "a value");
                 }
             } else if constexpr (std::is_same_v<T, ast::CallStatement>) {
                 type(*node.call, nullptr);
@@ -635,7 +645,7 @@ const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
                                                formal.name, actual->name));
             }
         } else {
-            expect(*argument->value, *field->type, "an input");
+            store(*argument->value, *field->type, "an input");
         }
     }
     CallTarget target;

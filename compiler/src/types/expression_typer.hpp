@@ -30,6 +30,8 @@ private:
     void condition(const ast::Expression& expression);
     /// Types `expression` where a value of `target` is expected, and checks that it converts.
     void expect(const ast::Expression& expression, const sema::Type& target, const char* what);
+    /// expect(), for a value stored into a variable or parameter of type `target`.
+    void store(const ast::Expression& expression, const sema::Type& target, const char* what);
 
     /// The type of `expression`; `expected` is what its context needs (null: nothing).
     const sema::Type* type(const ast::Expression& expression, const sema::Type* expected);

@@ -18,6 +18,7 @@
 #include <string>
 #include <unordered_map>
 #include <variant>
+#include <vector>
 
 namespace eposp::compiler::types {
 
@@ -31,6 +32,14 @@ enum class CallKind {
     StandardFunction,      ///< ed. 3, 6.6.2.5: ABS, SEL, CONCAT, ...
     Conversion,            ///< `<T>_TO_<U>`, `TO_<U>`, TRUNC (6.6.2.5.3)
     StandardFunctionBlock, ///< an instance of SR, TON, CTU, ... (6.6.3.5)
+};
+
+/// A value stored into a variable or parameter: an assignment's value, an initial value (or one
+/// element of an array's or structure's), a call's input.
+struct Store {
+    const ast::Expression* value = nullptr;
+    const sema::Type* into = nullptr; ///< the variable's or parameter's declared type
+    const ast::Pou* pou = nullptr;    ///< the POU it is in; null outside POUs (globals, types)
 };
 
 /// What a call expression calls.
@@ -65,6 +74,9 @@ public:
     /// What a CallExpression calls; null for any other expression.
     const CallTarget* call_target(const ast::Expression& expression) const;
 
+    /// Every value stored, in the order of the program (checks/constant_subranges.cpp).
+    const std::vector<Store>& stores() const { return stores_; }
+
     /// Whether a declaration is in a CONSTANT section.
     bool is_constant(const ast::VariableDeclaration& declaration) const {
         return is_constant_(declaration);
@@ -80,6 +92,7 @@ public:
     void set_type(const ast::Expression& expression, const sema::Type& type);
     void set_constant(const ast::Expression& expression, Constant value);
     void set_call(const ast::Expression& expression, CallTarget target);
+    void add_store(Store store) { stores_.push_back(store); }
 
 private:
     const sema::SemanticModel& model_;
@@ -89,6 +102,7 @@ private:
     std::unordered_map<const ast::Expression*, const sema::Type*> types_of_;
     std::unordered_map<const ast::Expression*, Constant> constants_;
     std::unordered_map<const ast::Expression*, CallTarget> calls_;
+    std::vector<Store> stores_;
 };
 
 /// Types every expression of `units` (POU bodies, initial values, CASE labels, FOR bounds,
