@@ -307,16 +307,16 @@ TEST_F(Escon2DriveTest, VelocityModeWithoutVelocityControllerIsNotSupported) {
     EXPECT_EQ(statusword() & kStateMask, kOperationEnabled) << "current mode runs without";
 }
 
-// 7.1.9, table 99 bit 7: a warning leaves the state alone and clears with its cause; 7.1.36:
+// 7.1.21, table 99 bit 7: a warning leaves the state alone and clears with its cause; 7.1.36:
 // the system overload warning clears with the Clear warning command of table 8.
 TEST_F(Escon2DriveTest, WarningsSetBit7AndClear) {
     enable();
-    drive.raise_device_error(0x4383);
+    drive.raise_device_error(0x7280);
     run(1ms);
     EXPECT_NE(statusword() & kWarning, 0);
     EXPECT_EQ(statusword() & kStateMask, kOperationEnabled);
-    EXPECT_EQ(read<std::uint32_t>(0x1003, 1), 0x8000'4383u);
-    drive.clear_warning(0x4383);
+    EXPECT_EQ(read<std::uint32_t>(0x1003, 1), 0x8000'7280u);
+    drive.clear_warning(0x7280);
     run(1ms);
     EXPECT_EQ(statusword() & kWarning, 0);
     drive.raise_device_error(0xFF01);

@@ -38,8 +38,9 @@ constexpr std::uint16_t kMissingMainSensorError = 0x7390;        // 7.1.25
 constexpr std::uint16_t kMissingCommutationSensorError = 0x7391; // 7.1.26
 constexpr std::uint16_t kModeNotSupportedError = 0xFF0D;         // 7.1.41
 
-constexpr double kPowerStageTemperature = 25; // °C: no thermal model of the power stage yet
-constexpr std::int16_t kPowerStageTemperatureDeci = 250; // 0.1 °C
+std::int16_t deci_celsius(double celsius) {
+    return static_cast<std::int16_t>(std::clamp(std::round(celsius * 10), -32768.0, 32767.0));
+}
 
 motion::FaultClass fault_class(FaultReactionCode reaction) {
     // 7.1: "f" quick stop ramp (the CiA 402 fault reaction option code 2 of DeviceControl's
@@ -60,7 +61,10 @@ Escon2Drive::Escon2Drive(core::EventLoop& loop, Escon2DriveConfig config)
     : loop_(loop), dictionary_(with_power_disable_rule(std::move(config.dictionary), *this)),
       machine_(config.axis), axis_(config.axis),
       device_control_(motion::OptionCodes{}, motion::StateMachine::Escon2),
-      errors_(dictionary_.objects()), control_time_(loop.now() + kControlPeriod),
+      errors_(dictionary_.objects()), power_stage_(config.power_stage_thermal),
+      power_stage_loss_resistance_(config.power_stage_loss_resistance),
+      ambient_temperature_(config.power_stage_thermal.ambient_temperature),
+      control_time_(loop.now() + kControlPeriod),
       control_timer_(loop,
                      loop.every(kControlPeriod, control_time_, [this] { control_period(); })) {
     write_axis_defaults(dictionary_.objects(), machine_);
@@ -156,18 +160,57 @@ double Escon2Drive::analog_output(unsigned output) const {
 void Escon2Drive::set_supply_voltage(double volts) {
     machine_.plant.power_stage.supply_voltage = volts;
     configure_axis();
-    objects().set_as(
-        0x2200, 1,
-        static_cast<std::uint16_t>(std::clamp(std::round(volts * 10), 0.0, 65'535.0))); // 0.1 V
+    supply_.update(volts, false);
+    objects().set_as(0x2200, 1, supply_.voltage_object()); // 0.1 V
 }
 
 void Escon2Drive::raise_device_error(std::uint16_t code) {
     const DeviceError& error = device_error(code);
     if (errors_.raise(code) && error.reaction != FaultReactionCode::Warning) {
         device_control_.fault_occurred(fault_class(error.reaction));
-        device_control_.set_fault_condition_present(errors_.needs_device_reset());
     }
+    update_fault_condition();
     publish();
+}
+
+// 7.1.6 - 7.1.10: a fault reset is refused while the supply or a temperature is still out of
+// range, and while an error needs a device reset.
+void Escon2Drive::update_fault_condition() {
+    device_control_.set_fault_condition_present(
+        errors_.needs_device_reset() || supply_.undervoltage() || supply_.overvoltage() ||
+        thermal_.power_stage_error() || thermal_.logic_section_error());
+}
+
+// 6.2.10 - 6.2.12, 6.2.56: the supply and the temperatures, every control period.
+void Escon2Drive::supervise() {
+    const DriveState state = device_control_.state();
+    supply_.update(machine_.plant.power_stage.supply_voltage,
+                   state == DriveState::OperationEnable || state == DriveState::QuickStopActive);
+    thermal_.update(power_stage_.temperature(), logic_section_temperature());
+    std::vector<DeviceErrorCode> conditions = supply_.conditions();
+    const std::vector<DeviceErrorCode> thermal = thermal_.conditions();
+    conditions.insert(conditions.end(), thermal.begin(), thermal.end());
+    for (const DeviceErrorCode condition : conditions) {
+        raise_device_error(static_cast<std::uint16_t>(condition));
+    }
+    // 7.1.9: the warning clears itself below the warning temperature.
+    constexpr auto kWarning =
+        static_cast<std::uint16_t>(DeviceErrorCode::ThermalPowerStageOverloadWarning);
+    if (!thermal_.power_stage_warning() && errors_.active(kWarning)) {
+        clear_warning(kWarning);
+    }
+    update_fault_condition();
+}
+
+double Escon2Drive::logic_section_temperature() const {
+    return ambient_temperature_; // the logic dissipates too little to matter here
+}
+
+void Escon2Drive::set_ambient_temperature(double celsius) {
+    ambient_temperature_ = celsius;
+    plant::ThermalParameters parameters = power_stage_.parameters();
+    parameters.ambient_temperature = celsius;
+    power_stage_.set_parameters(parameters);
 }
 
 void Escon2Drive::clear_warning(std::uint16_t code) {
@@ -196,6 +239,17 @@ void Escon2Drive::configure_axis() {
     }
     limits.max_power_stage_temperature = od.get_as<std::uint16_t>(0x3201, 3) / 10.0;
     limitation_.set_parameters(limits);
+    // Tables 41 - 46: 0x2201 in mV, the hardware's hystereses and logic section limit.
+    (void)supply_.set_limits(
+        {.undervoltage_limit = od.get_as<std::uint32_t>(0x2201, 1) / 1000.0,
+         .undervoltage_hysteresis = static_cast<double>(hardware.undervoltage_hysteresis) / 1000.0,
+         .overvoltage_limit = od.get_as<std::uint32_t>(0x2201, 2) / 1000.0,
+         .overvoltage_hysteresis = static_cast<double>(hardware.overvoltage_hysteresis) / 1000.0});
+    thermal_.set_limits(
+        {.max_power_stage_temperature = limits.max_power_stage_temperature,
+         .logic_section_limit = static_cast<double>(hardware.logic_temperature_limit) / 10.0,
+         .logic_section_hysteresis =
+             static_cast<double>(hardware.logic_temperature_hysteresis) / 10.0});
 }
 
 void Escon2Drive::watch_dictionary() {
@@ -207,7 +261,9 @@ void Escon2Drive::watch_dictionary() {
     for (const std::uint16_t index : kAxisConfigurationObjects) {
         od.on_change(index, [this](std::uint16_t, std::uint8_t) { configure_axis(); });
     }
-    od.on_change(0x3201, [this](std::uint16_t, std::uint8_t) { configure_axis(); });
+    for (const std::uint16_t index : {std::uint16_t{0x2201}, std::uint16_t{0x3201}}) {
+        od.on_change(index, [this](std::uint16_t, std::uint8_t) { configure_axis(); });
+    }
     // 6.2.13.1: a brushed motor has no Hall sensor.
     od.on_change(0x6402, [this](std::uint16_t, std::uint8_t) {
         if (objects().get_as<std::uint16_t>(0x6402, 0) == 1) {
@@ -267,8 +323,8 @@ void Escon2Drive::compute_measured_values() {
     };
     computed(0x3200, 1, [this, percent] { return percent(limitation_.motor_level()); });
     computed(0x3201, 1, [this, percent] { return percent(limitation_.power_stage_level()); });
-    computed(0x3201, 2, [] { return kPowerStageTemperatureDeci; });
-    computed(0x2202, 1, [] { return kPowerStageTemperatureDeci; });
+    computed(0x3201, 2, [this] { return deci_celsius(power_stage_.temperature()); });
+    computed(0x2202, 1, [this] { return deci_celsius(logic_section_temperature()); });
     // 6.2.57.1: the bridge voltage R·I + k·ω over the supply, 0.1 %.
     computed(0x3203, 1, [this] {
         const plant::MotorModel& motor = axis_.motor();
@@ -287,17 +343,16 @@ void Escon2Drive::on_controlword(std::uint16_t controlword) {
     const bool reset_edge =
         (controlword & kFaultResetBit) != 0 && (controlword_ & kFaultResetBit) == 0;
     controlword_ = controlword;
-    const bool was_fault = device_control_.state() == DriveState::Fault;
-    if (reset_edge) {
-        // Transition 15 only "if no fault is present": not while one needs a device reset.
-        if (was_fault) {
-            errors_.fault_reset();
-        }
-        errors_.clear_warnings();
-        device_control_.set_fault_condition_present(errors_.needs_device_reset());
-    }
     const DriveState before = device_control_.state();
+    if (reset_edge) {
+        errors_.clear_warnings();
+        update_fault_condition();
+    }
     device_control_.write_controlword(controlword);
+    // Transition 15 only "if no fault is present" (a cause still there, a device reset needed).
+    if (before == DriveState::Fault && device_control_.state() != DriveState::Fault) {
+        errors_.fault_reset();
+    }
     if (before != DriveState::OperationEnable &&
         device_control_.state() == DriveState::OperationEnable) {
         check_configuration();
@@ -378,7 +433,10 @@ void Escon2Drive::control_period() {
     for (int step = 0; step < plant::ServoAxis::kCurrentStepsPerOuterLoop; ++step) {
         axis_.step();
         current_averaged_.update(axis_.current_actual());
-        limitation_.update(axis_.current_actual(), kPowerStageTemperature,
+        const double current = axis_.current_actual();
+        power_stage_.step(current * current * power_stage_loss_resistance_,
+                          plant::ServoAxis::kCurrentLoopPeriod);
+        limitation_.update(current, power_stage_.temperature(),
                            plant::ServoAxis::kCurrentLoopPeriod);
         overcurrent_seen = overcurrent_seen || std::abs(axis_.current_actual()) > overcurrent;
     }
@@ -386,6 +444,7 @@ void Escon2Drive::control_period() {
     if (overcurrent_seen) {
         raise_device_error(kOvercurrentError);
     }
+    supervise();
     velocity_averaged_.update(axis_.velocity_actual());
     publish();
     const DriveState state = device_control_.state();
@@ -399,8 +458,8 @@ void Escon2Drive::control_period() {
                            to_velocity_units(polarity() * velocity_averaged_.output()),
                        .current = polarity() * axis_.current_actual(),
                        .current_averaged = polarity() * current_averaged_.output(),
-                       .logic_section_temperature = kPowerStageTemperature,
-                       .power_stage_temperature = kPowerStageTemperature},
+                       .logic_section_temperature = logic_section_temperature(),
+                       .power_stage_temperature = power_stage_.temperature()},
          .velocity_rpm = axis_.velocity_actual() * counts_to_rpm,
          .pole_pairs = objects().get_as<std::uint8_t>(0x3001, 3)},
         plant::ServoAxis::kOuterLoopPeriod);

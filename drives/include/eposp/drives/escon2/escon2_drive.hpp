@@ -6,11 +6,14 @@
 #include "eposp/drives/escon2/escon2_dictionary.hpp"
 #include "eposp/drives/escon2/io/pwm_input.hpp"
 #include "eposp/drives/escon2/protection/output_current_limitation.hpp"
+#include "eposp/drives/escon2/protection/power_supply_supervision.hpp"
+#include "eposp/drives/escon2/protection/thermal_supervision.hpp"
 #include "eposp/drives/motion/device_control.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
 #include "eposp/drives/plant/low_pass_filter.hpp"
 #include "eposp/drives/plant/reference_axis.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
+#include "eposp/drives/plant/thermal_model.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -31,6 +34,12 @@ struct Escon2DriveConfig {
     /// current limit, pole pairs and motor type become the defaults of 0x3010, 0x30A0, 0x30A2,
     /// 0x3001 and 0x6402; the dictionary configures the plant from then on.
     plant::AxisParameters axis = plant::reference_axis();
+    /// The power stage's heat path and its conduction losses (I²·R): the manual gives no
+    /// figures; these let the Module's 30 A nominal current settle about 60 °C above ambient
+    /// within minutes, below the warning temperature of table 95 at 25 °C ambient.
+    plant::ThermalParameters power_stage_thermal{
+        .ambient_temperature = 25, .thermal_resistance = 3.3, .time_constant = 60};
+    double power_stage_loss_resistance = 0.02; ///< Ω
 };
 
 /// A simulated maxon ESCON2: its dictionary, the device control of 2.2 (StateMachine::Escon2),
@@ -96,7 +105,11 @@ public:
     /// The voltage of analog output 1 or 2, V.
     double analog_output(unsigned output) const;
 
-    /// The simulated power supply (0x2200 sub 1).
+    /// The air around the device (°C): the power stage cools to it, the logic section is at it
+    /// (6.2.12, 6.2.56.2).
+    void set_ambient_temperature(double celsius);
+
+    /// The simulated power supply (0x2200 sub 1), supervised against 0x2201 (6.2.11).
     void set_supply_voltage(double volts);
     /// Raises an error or warning of table 110 as if its cause had occurred: its history entry,
     /// its register bits and error code, and its reaction ("f" quick stop, "d" disable, "w"
@@ -117,6 +130,9 @@ private:
     void on_mode_written();
     void control_period();
     void react_to_inputs(const IoReaction& reaction);
+    void supervise();
+    void update_fault_condition();
+    double logic_section_temperature() const;
     void command(std::uint16_t device_command);
     void follow_power_stage();
     void check_configuration();
@@ -141,6 +157,11 @@ private:
     motion::DeviceControl device_control_;
     ErrorHandling errors_;
     OutputCurrentLimitation limitation_;
+    PowerSupplySupervision supply_;
+    ThermalSupervision thermal_;
+    plant::ThermalModel power_stage_;
+    double power_stage_loss_resistance_;
+    double ambient_temperature_;
     std::unique_ptr<Escon2Io> io_;
 
     OperatingMode mode_ = OperatingMode::IoVelocity;
