@@ -4,6 +4,7 @@
 #include "epos2_bus_fixture.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace eposp::drives::epos2 {
 namespace {
@@ -163,6 +164,36 @@ TEST_F(Epos2DriveErrors, TransmitQueueOverflowRaises81FF) {
     EXPECT_EQ(read<std::uint32_t>(0x1003, 1) & 0xFFFF, 0x81FFU);
     run_with_sync(200ms);
     EXPECT_EQ(drive.state(), motion::DriveState::Fault) << "0x6007 = 3: quickstop, then Fault";
+}
+
+// 4.2.7: "Temperature at device's power stage too high". The power stage off dissipates
+// nothing, so its temperature follows the ambient as the first-order body of the defaults
+// (PowerStageThermal: τ = 60 s, limit 100 °C): 110 − 85·e^(−t/τ) passes 100 °C at
+// τ·ln(85 / 10) = 128.40 s. "d": Fault; a fault reset only once it has cooled below the limit.
+TEST_F(Epos2DriveErrors, HotCabinetRaises4210WhenThePowerStagePassesItsLimit) {
+    nmt(canopen::NmtCommand::Start); // the controlword by RPDO
+    const double start = now();
+    drive.set_ambient_temperature(110);
+    const double crossing = 60 * std::log(85.0 / 10.0);
+    loop.run_for(
+        std::chrono::duration_cast<core::Duration>(std::chrono::duration<double>(crossing - 0.01)));
+    EXPECT_TRUE(emcys.empty());
+    loop.run_for(20ms);
+    ASSERT_EQ(emcys.size(), 1U);
+    EXPECT_NEAR(emcy_times.front() - start, crossing, 0.002);
+    expect_error(*this, 0x4210, 0x08);
+
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault) << "still above 100 °C";
+    drive.set_ambient_temperature(25);
+    run_with_sync(100ms);
+    ASSERT_LT(drive.power_stage_temperature(), 100);
+    controlword(0);
+    run_with_sync(2ms);
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
 }
 
 } // namespace

@@ -558,7 +558,9 @@ TEST_F(Epos2ObjectTable, EveryEntryHasTheSpecifiedNameTypeAccessDefaultAndAttrib
         }
         EXPECT_EQ(sub->name, row.name);
         EXPECT_EQ(sub->type, row.type);
-        EXPECT_EQ(sub->access, row.access);
+        // Table 8-77: the read-write objects PDOs may map are receive PDO objects, rww (CiA 306).
+        const bool output = row.access == kRW && (row.flags & kPdo) != 0;
+        EXPECT_EQ(sub->access, output ? Access::ReadWriteOutput : row.access);
         EXPECT_EQ(sub->persistent, (row.flags & kP) != 0);
         EXPECT_EQ(sub->pdo_mappable, (row.flags & kPdo) != 0);
         if (row.default_value) {

@@ -4,12 +4,30 @@
 #include "verify_configuration.hpp"
 
 #include <utility>
+#include <vector>
 
 namespace eposp::drives::epos2 {
 namespace {
 
 constexpr std::uint32_t high_low(std::uint16_t high, std::uint16_t low) {
     return std::uint32_t{high} << 16 | low;
+}
+
+// Table 8-77: every read-write object of table 8-67 that PDOs may map is a receive PDO object
+// (none is mapped by transmit PDOs only). CiA 306 writes that access as rww, as maxon's EDS does;
+// it reads and writes like rw.
+void mark_receive_pdo_objects(canopen::ObjectDictionary& od) {
+    std::vector<std::pair<std::uint16_t, std::uint8_t>> outputs;
+    for (const auto& [index, object] : od.objects()) {
+        for (const auto& [sub_index, sub] : object.subs) {
+            if (sub.access == canopen::Access::ReadWrite && sub.pdo_mappable) {
+                outputs.emplace_back(index, sub_index);
+            }
+        }
+    }
+    for (const auto& [index, sub_index] : outputs) {
+        od.find(index, sub_index)->access = canopen::Access::ReadWriteOutput;
+    }
 }
 
 } // namespace
@@ -26,6 +44,7 @@ Epos2Dictionary::Epos2Dictionary(Epos2DictionaryConfig config)
     add_communication_objects(od_, store_, config_);
     add_manufacturer_objects(od_, config_);
     add_profile_objects(od_);
+    mark_receive_pdo_objects(od_);
     watch_verified_configuration(od_);
 }
 

@@ -34,6 +34,7 @@ constexpr std::uint16_t kDeviceCommandBits = 0x008F;
 constexpr std::uint16_t kOvercurrentErrorCode = 0x2310;
 constexpr std::uint16_t kOvervoltageErrorCode = 0x3210;
 constexpr std::uint16_t kUndervoltageErrorCode = 0x3220;
+constexpr std::uint16_t kOvertemperatureErrorCode = 0x4210;
 constexpr std::uint16_t kCanBusOffErrorCode = 0x81FD;
 constexpr std::uint16_t kCanPassiveErrorCode = 0x8120;
 constexpr std::uint16_t kCanRxQueueOverflowErrorCode = 0x81FE;
@@ -59,7 +60,7 @@ constexpr std::chrono::microseconds kControlPeriod{1000};
 Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig config)
     : loop_(loop), dictionary_(with_restore_rule(std::move(config.dictionary), *this)),
       node_(loop, port, dictionary_.objects(), dictionary_.node_config()), machine_(config.axis),
-      axis_(config.axis),
+      axis_(config.axis), power_stage_temperature_(config.power_stage_thermal),
       mode_services_(std::make_unique<ModeServices>(ModeServices{
           .objects = dictionary_.objects(),
           .outputs = dictionary_.objects(),
@@ -132,7 +133,13 @@ Epos2DictionaryConfig Epos2Drive::with_restore_rule(Epos2DictionaryConfig config
 void Epos2Drive::set_supply_voltage(double volts) {
     machine_.plant.power_stage.supply_voltage = volts;
     configure_axis();
-    device_control_.set_fault_condition_present(supply_error().has_value());
+    device_control_.set_fault_condition_present(fault_condition_present());
+}
+
+// A fault reset is refused while the supply or the power stage's temperature is out of range
+// (4.2.5 - 4.2.7: "only possible if ... in valid range").
+bool Epos2Drive::fault_condition_present() const {
+    return supply_error().has_value() || power_stage_temperature_.too_high();
 }
 
 void Epos2Drive::set_analog_input(AnalogInput input, std::int16_t millivolts) {
@@ -349,13 +356,16 @@ void Epos2Drive::raise_device_error(std::uint16_t code) {
     device_control_.fault_occurred(error.reaction);
 }
 
-// 4.2.3, 4.2.5, 4.2.6: the power stage's supervision. A fault reset is refused while the supply
-// is out of range ("only possible if supply voltage is in valid range").
+// 4.2.3, 4.2.5 - 4.2.7: the power stage's supervision: current, supply, temperature.
 void Epos2Drive::watch_power_stage(bool overcurrent) {
-    const std::optional<std::uint16_t> supply = supply_error();
-    device_control_.set_fault_condition_present(supply.has_value());
-    if (supply) {
+    power_stage_temperature_.update(axis_.current_actual(), power_stage_on_,
+                                    plant::ServoAxis::kOuterLoopPeriod);
+    device_control_.set_fault_condition_present(fault_condition_present());
+    if (const std::optional<std::uint16_t> supply = supply_error()) {
         raise_device_error(*supply);
+    }
+    if (power_stage_temperature_.too_high()) {
+        raise_device_error(kOvertemperatureErrorCode);
     }
     if (overcurrent) {
         raise_device_error(kOvercurrentErrorCode);

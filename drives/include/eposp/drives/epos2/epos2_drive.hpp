@@ -5,6 +5,7 @@
 #include "eposp/canopen/node.hpp"
 #include "eposp/core/event_loop.hpp"
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
+#include "eposp/drives/epos2/power_stage_temperature.hpp"
 #include "eposp/drives/motion/device_control.hpp"
 #include "eposp/drives/motion/following_error_monitor.hpp"
 #include "eposp/drives/motion/homing_procedure.hpp"
@@ -58,6 +59,8 @@ struct Epos2DriveConfig {
     /// gains, motor type, pole pairs and current limit become the defaults of 0x2210, 0x60F6,
     /// 0x60F9, 0x60FB, 0x6402 and 0x6410; the dictionary configures the plant from then on.
     plant::AxisParameters axis = plant::reference_axis();
+    /// The power stage's heating for the Overtemperature Error 0x4210.
+    PowerStageThermal power_stage_thermal;
 };
 
 /// A simulated maxon EPOS2 24/5 on a CAN port: a canopen::Node on the EPOS2 dictionary, the
@@ -92,6 +95,13 @@ public:
     /// The simulated power supply: the drive checks it against the power stage's limits
     /// (undervoltage 0x3220, overvoltage 0x3210) every control period.
     void set_supply_voltage(double volts);
+    /// The air around the drive (°C, a hot cabinet): the power stage's temperature follows it
+    /// with its time constant; above PowerStageThermal::max_temperature the drive raises 0x4210
+    /// and refuses a fault reset until it has cooled below it (4.2.7).
+    void set_ambient_temperature(double celsius) {
+        power_stage_temperature_.set_ambient_temperature(celsius);
+    }
+    double power_stage_temperature() const { return power_stage_temperature_.temperature(); }
 
     // Digital inputs and outputs of an EPOS2 24/5 (docs/epos2.md, "Digital inputs and outputs").
 
@@ -149,6 +159,7 @@ private:
     void restart_sensor_supervision();
     void clear_errors();
     std::optional<std::uint16_t> supply_error() const;
+    bool fault_condition_present() const;
     void watch_dictionary();
     void compute_measured_values();
     void reset_application();
@@ -187,7 +198,8 @@ private:
     motion::FollowingErrorMonitor following_error_;
     motion::SoftwarePositionLimitMonitor position_limit_;
     motion::StandstillMonitor standstill_;
-    motion::I2tCurrentLimit i2t_; ///< 5.14.1, statusword bit 11
+    motion::I2tCurrentLimit i2t_;                   ///< 5.14.1, statusword bit 11
+    PowerStageTemperature power_stage_temperature_; ///< 4.2.7
     std::unique_ptr<ModeServices> mode_services_;
     std::unique_ptr<ModeBehaviour> mode_behaviour_;         ///< of mode_ (modes/)
     std::unique_ptr<Epos2Io> io_;                           ///< digital I/O, marker, compare, brake
