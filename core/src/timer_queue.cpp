@@ -1,18 +1,62 @@
 #include "timer_queue.hpp"
 
 #include <cassert>
+#include <stdexcept>
+#include <utility>
 
 namespace eposp::core {
 
 TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callback fn) {
-    const std::uint64_t id = next_id_++;
-    entries_.emplace(id, Entry{std::move(fn), period});
+    std::size_t slot = entries_.size();
+    if (free_slots_.empty()) {
+        if (slot + 1 >= (std::size_t{1} << kSlotBits)) {
+            throw std::length_error("EventLoop: too many pending timers");
+        }
+        entries_.emplace_back();
+    } else {
+        slot = free_slots_.back();
+        free_slots_.pop_back();
+    }
+    Entry& entry = entries_[slot];
+    entry.fn = std::move(fn);
+    entry.period = period;
+    entry.live = true;
+    ++live_count_;
+    const std::uint64_t id = entry.generation << kSlotBits | (slot + 1);
     push(when, id);
     return TimerId{id};
 }
 
+const TimerQueue::Entry* TimerQueue::live(std::uint64_t id) const {
+    const std::uint64_t slot = (id & ((std::uint64_t{1} << kSlotBits) - 1)) - 1;
+    if (slot >= entries_.size()) {
+        return nullptr;
+    }
+    const Entry& entry = entries_[slot];
+    return entry.live && entry.generation == id >> kSlotBits ? &entry : nullptr;
+}
+
+TimerQueue::Entry* TimerQueue::live(std::uint64_t id) {
+    return const_cast<Entry*>(std::as_const(*this).live(id));
+}
+
+// The slot's next timer gets a new generation, so that this id no longer names it.
+void TimerQueue::release(std::uint64_t id) {
+    const std::size_t slot = (id & ((std::uint64_t{1} << kSlotBits) - 1)) - 1;
+    Entry& entry = entries_[slot];
+    entry.fn = nullptr;
+    entry.live = false;
+    ++entry.generation;
+    --live_count_;
+    free_slots_.push_back(slot);
+}
+
 bool TimerQueue::cancel(TimerId id) {
-    return entries_.erase(id.value) > 0;
+    if (live(id.value) == nullptr) {
+        return false;
+    }
+    release(id.value);
+    return true;
 }
 
 void TimerQueue::push(TimePoint when, std::uint64_t id) {
@@ -20,7 +64,7 @@ void TimerQueue::push(TimePoint when, std::uint64_t id) {
 }
 
 void TimerQueue::drop_cancelled() {
-    while (!heap_.empty() && !entries_.contains(heap_.top().id)) {
+    while (!heap_.empty() && live(heap_.top().id) == nullptr) {
         heap_.pop();
     }
 }
@@ -41,21 +85,20 @@ void TimerQueue::run_next(const std::function<void(TimePoint)>& set_now) {
     set_now(slot.when);
 
     // The callback is moved out while it runs so that it may cancel itself or schedule more
-    // timers (which may rehash the map) without destroying the function being executed.
-    auto it = entries_.find(slot.id);
-    EventLoop::Callback fn = std::move(it->second.fn);
+    // timers (which may grow the entries) without destroying the function being executed.
+    EventLoop::Callback fn = std::move(live(slot.id)->fn);
     fn();
 
-    it = entries_.find(slot.id);
-    if (it == entries_.end()) {
+    Entry* entry = live(slot.id);
+    if (entry == nullptr) {
         return; // cancelled by its own callback
     }
-    if (it->second.period == Duration::zero()) {
-        entries_.erase(it);
+    if (entry->period == Duration::zero()) {
+        release(slot.id);
         return;
     }
-    it->second.fn = std::move(fn);
-    push(slot.when + it->second.period, slot.id);
+    entry->fn = std::move(fn);
+    push(slot.when + entry->period, slot.id);
 }
 
 } // namespace eposp::core

@@ -4,13 +4,15 @@
 
 #include <optional>
 #include <queue>
-#include <unordered_map>
 #include <vector>
 
 namespace eposp::core {
 
 /// The pending events of an EventLoop: a binary heap ordered by (time, scheduling sequence)
 /// with cancellation by id. Cancelled entries are dropped lazily when they reach the top.
+/// The entries live in a vector whose slots are reused; an id is the slot and the slot's
+/// generation, so that an old id never names the slot's next timer (a simulated bus schedules
+/// two events per frame: no hash table and no allocation per event).
 class TimerQueue {
 public:
     struct Due {
@@ -20,8 +22,8 @@ public:
 
     TimerId schedule(TimePoint when, Duration period, EventLoop::Callback fn);
     bool cancel(TimerId id);
-    bool pending(TimerId id) const { return entries_.contains(id.value); }
-    std::size_t size() const { return entries_.size(); }
+    bool pending(TimerId id) const { return live(id.value) != nullptr; }
+    std::size_t size() const { return live_count_; }
 
     /// The earliest live event, if any.
     std::optional<TimePoint> next_time();
@@ -42,15 +44,22 @@ private:
     };
     struct Entry {
         EventLoop::Callback fn;
-        Duration period; // zero for one-shot timers
+        Duration period;              // zero for one-shot timers
+        std::uint64_t generation = 0; // the id's high bits while the timer lives
+        bool live = false;
     };
+    static constexpr int kSlotBits = 24; // the id's low bits: 1 + the slot's index
 
+    const Entry* live(std::uint64_t id) const;
+    Entry* live(std::uint64_t id);
+    void release(std::uint64_t id);
     void push(TimePoint when, std::uint64_t id);
     void drop_cancelled();
 
     std::priority_queue<Slot, std::vector<Slot>, std::greater<>> heap_;
-    std::unordered_map<std::uint64_t, Entry> entries_;
-    std::uint64_t next_id_ = 1;
+    std::vector<Entry> entries_;
+    std::vector<std::size_t> free_slots_;
+    std::size_t live_count_ = 0;
     std::uint64_t next_sequence_ = 0;
 };
 

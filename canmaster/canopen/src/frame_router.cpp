@@ -10,19 +10,39 @@ void FrameRouter::add(KeySource keys, Handler handler) {
 }
 
 void FrameRouter::rebuild() {
-    table_.clear();
+    lists_.clear();
+    standard_.fill(0);
+    extended_.clear();
     ReceiveKeys keys;
     for (std::size_t receiver = 0; receiver < receivers_.size(); ++receiver) {
         keys.clear();
         receivers_[receiver].keys(keys);
         for (const ReceiveKey key : keys) {
-            std::vector<std::size_t>& listed = table_[key];
+            std::vector<std::size_t>& listed = list_of(key);
             if (listed.empty() || listed.back() != receiver) {
                 listed.push_back(receiver);
             }
         }
     }
     stale_ = false;
+}
+
+std::vector<std::size_t>& FrameRouter::list_of(ReceiveKey key) {
+    const std::size_t next = lists_.size() + 1;
+    std::size_t position = 0; // 1 + the list's index
+    if ((key & kCobIdExtended) != 0) {
+        position = extended_.try_emplace(key, next).first->second;
+    } else {
+        std::uint16_t& slot = standard_.at(key);
+        if (slot == 0) {
+            slot = static_cast<std::uint16_t>(next);
+        }
+        position = slot;
+    }
+    if (position == next) {
+        lists_.emplace_back();
+    }
+    return lists_[position - 1];
 }
 
 void FrameRouter::dispatch(const can::Frame& frame) {
@@ -34,12 +54,18 @@ void FrameRouter::dispatch(const can::Frame& frame) {
     if (stale_ && depth_ == 0) {
         rebuild();
     }
-    const auto found = table_.find(receive_key(frame));
-    if (found == table_.end()) {
+    std::size_t position = 0;
+    if (frame.extended) {
+        const auto found = extended_.find(receive_key(frame));
+        position = found == extended_.end() ? 0 : found->second;
+    } else if (frame.id < standard_.size()) {
+        position = standard_[frame.id];
+    }
+    if (position == 0) {
         return;
     }
     ++depth_;
-    for (const std::size_t receiver : found->second) {
+    for (const std::size_t receiver : lists_[position - 1]) {
         receivers_[receiver].handler(frame);
     }
     --depth_;

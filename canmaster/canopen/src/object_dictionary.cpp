@@ -175,7 +175,8 @@ SubObject& ObjectDictionary::add_sub(std::uint16_t index, std::uint8_t sub_index
 }
 
 ObjectDictionary::ObjectDictionary(const ObjectDictionary& other)
-    : objects_(other.objects_), listeners_(other.listeners_), next_listener_(other.next_listener_) {
+    : objects_(other.objects_), listeners_(other.listeners_), watched_(other.watched_),
+      next_listener_(other.next_listener_) {
     index_objects();
 }
 
@@ -183,6 +184,7 @@ ObjectDictionary& ObjectDictionary::operator=(const ObjectDictionary& other) {
     if (this != &other) {
         objects_ = other.objects_;
         listeners_ = other.listeners_;
+        watched_ = other.watched_;
         next_listener_ = other.next_listener_;
         index_objects();
     }
@@ -301,7 +303,11 @@ Bytes ObjectDictionary::get(std::uint16_t index, std::uint8_t sub_index) const {
 void ObjectDictionary::set(std::uint16_t index, std::uint8_t sub_index,
                            std::span<const std::uint8_t> value) {
     auto& sub = const_cast<SubObject&>(existing(index, sub_index));
-    require_fits(sub.type, value.size(), index, sub_index);
+    // A stored value has its type's length: only another length needs the check (a drive
+    // stores its actual values every millisecond).
+    if (value.size() != sub.value.size()) {
+        require_fits(sub.type, value.size(), index, sub_index);
+    }
     sub.value.assign(value.begin(), value.end());
     notify(index, sub_index);
 }
@@ -310,13 +316,16 @@ ObjectDictionary::ListenerId ObjectDictionary::on_change(std::uint16_t index,
                                                          ChangeListener listener) {
     const ListenerId id = next_listener_++;
     listeners_.emplace(index, std::pair{id, std::move(listener)});
+    watched_.set(index);
     return id;
 }
 
 void ObjectDictionary::remove_listener(ListenerId id) {
     for (auto it = listeners_.begin(); it != listeners_.end(); ++it) {
         if (it->second.first == id) {
+            const std::uint16_t index = it->first;
             listeners_.erase(it);
+            watched_.set(index, listeners_.contains(index));
             return;
         }
     }
@@ -331,6 +340,9 @@ void ObjectDictionary::reset_to_defaults() {
 }
 
 void ObjectDictionary::notify(std::uint16_t index, std::uint8_t sub_index) const {
+    if (!watched_.test(index)) {
+        return;
+    }
     // A listener may add or remove listeners: call copies, and skip one removed meanwhile.
     std::vector<std::pair<ListenerId, ChangeListener>> to_call;
     const auto [first, last] = listeners_.equal_range(index);

@@ -137,8 +137,14 @@ std::vector<std::uint16_t> PdoMapping::mapped_indices() const {
 Bytes PdoMapping::pack(const ObjectDictionary& od) const {
     std::uint64_t word = 0;
     for (const Field& field : fields_) {
-        const Bytes value = od.get(field.entry.index, field.entry.sub_index);
-        word |= to_field(field.type, value, field.entry.bits) << field.offset;
+        // A stored value is read in place: every TPDO packs at every SYNC.
+        const SubObject* sub = od.find(field.entry.index, field.entry.sub_index);
+        const std::uint64_t bits =
+            sub != nullptr && !sub->on_read
+                ? to_field(field.type, sub->value, field.entry.bits)
+                : to_field(field.type, od.get(field.entry.index, field.entry.sub_index),
+                           field.entry.bits);
+        word |= bits << field.offset;
     }
     Bytes payload(size());
     store_le(word, payload);

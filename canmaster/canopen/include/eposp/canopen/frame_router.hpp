@@ -3,6 +3,7 @@
 #include "eposp/can/frame.hpp"
 #include "eposp/canopen/cob_id.hpp"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <unordered_map>
@@ -46,9 +47,15 @@ private:
         Handler handler;
     };
     void rebuild();
+    std::vector<std::size_t>& list_of(ReceiveKey key); ///< made empty when new
 
     std::vector<Receiver> receivers_;
-    std::unordered_map<ReceiveKey, std::vector<std::size_t>> table_;
+    /// The receivers of each key, in the order they were added.
+    std::vector<std::vector<std::size_t>> lists_;
+    /// An 11-bit identifier's list as 1 + its position in lists_, 0: none. Every node looks up
+    /// every frame on the bus, most of them someone else's: an array read, not a hash lookup.
+    std::array<std::uint16_t, std::size_t{1} << 11> standard_{};
+    std::unordered_map<ReceiveKey, std::size_t> extended_; ///< 29-bit keys, positions in lists_
     bool stale_ = true;
     int depth_ = 0; ///< dispatches in progress
 };

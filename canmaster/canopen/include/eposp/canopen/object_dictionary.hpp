@@ -4,6 +4,7 @@
 #include "eposp/canopen/data_type.hpp"
 #include "eposp/canopen/value_codec.hpp"
 
+#include <bitset>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -170,6 +171,9 @@ private:
     /// handle, and a binary search in contiguous memory beats walking the map's nodes.
     std::vector<std::pair<std::uint16_t, Object*>> by_index_;
     std::multimap<std::uint16_t, std::pair<ListenerId, ChangeListener>> listeners_;
+    /// The indices with a listener: a drive stores its actual values every millisecond, and
+    /// most of them nobody watches; the test is one bit, not a walk through listeners_.
+    std::bitset<std::size_t{1} << 16> watched_;
     ListenerId next_listener_ = 1;
 };
 
