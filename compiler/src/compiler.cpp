@@ -3,6 +3,7 @@
 #include "checks/checks.hpp"
 #include "codegen/program_generator.hpp"
 #include "eposp/compiler/types/front_end.hpp"
+#include "lower/image_passes.hpp"
 
 #include <vector>
 
@@ -27,7 +28,11 @@ std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId>
     codegen::ProgramGenerator generator({*front_end->model, front_end->units, libraries.size()},
                                         {*front_end->library_model, front_end->library_units},
                                         diagnostics, options);
-    return generator.generate();
+    auto image = generator.generate();
+    if (image) {
+        lower::optimise_image(*image);
+    }
+    return image;
 }
 
 } // namespace eposp::compiler

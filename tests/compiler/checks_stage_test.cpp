@@ -104,5 +104,29 @@ END_PROGRAM
               std::string::npos);
 }
 
+TEST(ChecksStage, RefusesConstantsOutsideTheBoundsAndWarnsOfCutStrings) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+TYPE Percent : INT (0..100); END_TYPE
+FUNCTION Scale : INT
+VAR_INPUT p : Percent; END_VAR
+Scale := p;
+END_FUNCTION
+PROGRAM Main
+VAR
+    a : ARRAY[1..10] OF INT;
+    p : Percent := 150;
+    s : STRING[3];
+    n : INT;
+END_VAR
+a[11] := 1;
+p := 50 * 3;
+n := Scale(-1);
+s := 'abcdef';
+END_PROGRAM
+)st"),
+              (Codes{"E0409", "E0410", "E0410", "E0410", "W0406"}));
+}
+
 } // namespace
 } // namespace eposp::compiler

@@ -267,7 +267,7 @@ private:
     void if_statement(const ast::IfStatement& node);
     /// The control variable of an enclosing FOR loop, which its body may not assign.
     bool is_for_variable(const Place& place) const;
-    /// The IF as a conditional move (if_conversion.hpp); false where it is not one.
+    /// The IF as a conditional move (lower/if_conversion.hpp); false where it is not one.
     bool select_statement(const ast::IfStatement& node);
     void case_statement(const ast::CaseStatement& node);
     /// One CASE label (`3:` or `1..5:`) and the branch it selects.

@@ -1,7 +1,7 @@
 // Statements of IEC 61131-3 ed. 3, 7.3.3 (table 72).
 
+#include "../lower/if_conversion.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
-#include "if_conversion.hpp"
 #include "pou_generator.hpp"
 
 #include <algorithm>
@@ -172,7 +172,7 @@ bool PouGenerator::select_statement(const ast::IfStatement& node) {
     if (!program_.if_conversion()) {
         return false;
     }
-    const auto form = select_form(node);
+    const auto form = lower::select_form(node);
     if (!form) {
         return false;
     }

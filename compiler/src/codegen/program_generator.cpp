@@ -1,11 +1,8 @@
 #include "program_generator.hpp"
 
-#include "back_edge_duplication.hpp"
-#include "call_inlining.hpp"
 #include "constant_declarations.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "eposp/vm/image_limits.hpp"
-#include "jump_threading.hpp"
 #include "pou_generator.hpp"
 
 #include <fmt/format.h>
@@ -214,11 +211,6 @@ std::optional<vm::Image> ProgramGenerator::generate() {
         diagnostics_.error(DiagnosticCode::E0001, {}, "internal error: " + image.error());
         return std::nullopt;
     }
-    // Back-edges first, so that an inlined body is a copy of its callee as it finally runs.
-    thread_jumps(*image);
-    duplicate_back_edges(*image);
-    inline_leaf_calls(*image);
-    thread_jumps(*image);
     return std::move(*image);
 }
 

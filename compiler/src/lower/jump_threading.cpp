@@ -2,7 +2,7 @@
 
 #include "code_rewriter.hpp"
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::lower {
 
 namespace {
 
@@ -31,4 +31,4 @@ void thread_jumps(vm::Image& image) {
     }
 }
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::lower

@@ -4,7 +4,7 @@
 #include <numeric>
 #include <optional>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::lower {
 
 namespace {
 
@@ -104,4 +104,4 @@ void rewrite_code(vm::Image& image, const Expand& expand) {
     CodeRewrite::run(image, expand);
 }
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::lower

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <optional>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::lower {
 namespace {
 
 using vm::Base;
@@ -154,4 +154,4 @@ void inline_leaf_calls(vm::Image& image) {
     });
 }
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::lower

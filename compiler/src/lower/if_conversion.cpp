@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::lower {
 namespace {
 
 // Both values are always computed, so each must stay small.
@@ -106,4 +106,4 @@ std::optional<SelectForm> select_form(const ast::IfStatement& node) {
     return SelectForm{&condition, then->target.get(), chosen, otherwise_value};
 }
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::lower

@@ -2,7 +2,7 @@
 
 #include "eposp/vm/image.hpp"
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::lower {
 
 /// Puts the body of every small leaf function or FB in place of its calls (`Call`, and
 /// `CallFb` on a directly addressed instance): PLC code calls many small FBs (R_TRIG, CTU, SR,
@@ -12,4 +12,4 @@ namespace eposp::compiler::codegen {
 /// name the callee and its line. The callees stay in the image for the calls not inlined.
 void inline_leaf_calls(vm::Image& image);
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::lower

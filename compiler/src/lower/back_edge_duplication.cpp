@@ -2,7 +2,7 @@
 
 #include "code_rewriter.hpp"
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::lower {
 
 void duplicate_back_edges(vm::Image& image) {
     rewrite_code(image, [](const CodeBefore& before, vm::Pou&, std::uint32_t i, CodeSink& sink) {
@@ -18,4 +18,4 @@ void duplicate_back_edges(vm::Image& image) {
     });
 }
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::lower

@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::lower {
 
 /// Where the replacement of one instruction goes while a pass rebuilds the code.
 class CodeSink {
@@ -47,4 +47,4 @@ void retarget(vm::Instruction& ins, const std::function<std::uint32_t(std::uint3
 void retarget(vm::Instruction& ins, std::vector<vm::JumpTable>& tables,
               const std::function<std::uint32_t(std::uint32_t)>& to);
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::lower

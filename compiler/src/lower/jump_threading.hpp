@@ -2,7 +2,7 @@
 
 #include "eposp/vm/image.hpp"
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::lower {
 
 /// A peephole pass over finished code: every jump (also conditional and FOR back-edges) to a
 /// `Jmp` goes straight to the final target, and a `Jmp` to a `Ret` becomes a `Ret`. (A FOR
@@ -10,4 +10,4 @@ namespace eposp::compiler::codegen {
 /// instructions do not change, so line tables stay valid.
 void thread_jumps(vm::Image& image);
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::lower

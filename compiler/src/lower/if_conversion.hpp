@@ -4,7 +4,7 @@
 
 #include <optional>
 
-namespace eposp::compiler::codegen {
+namespace eposp::compiler::lower {
 
 /// `IF c THEN x := a; ELSE x := b; END_IF` (or without ELSE) where c, a and b are cheap and can
 /// neither trap nor have an effect: code generation may evaluate all three and choose with a
@@ -21,4 +21,4 @@ struct SelectForm {
 /// target is a plain variable of a scalar type.
 std::optional<SelectForm> select_form(const ast::IfStatement& node);
 
-} // namespace eposp::compiler::codegen
+} // namespace eposp::compiler::lower
