@@ -119,5 +119,23 @@ TEST_F(Epos2DriveOnBus, RestoreIsRefusedOutsidePowerDisableAndPreOperational) {
     EXPECT_EQ(restore(*this), AbortCode::None);
 }
 
+// 8.2.42: 0x200A shows the bit rate in use as a code of table 8-81; with 0x2001 at its default
+// 9 ("automatic bit rate detection") that is the bus's, 500 kbit/s here (code 2).
+TEST(Epos2DriveBitRate, CanBitrateDisplayShowsTheBitRateInUse) {
+    core::EventLoop loop;
+    can::VirtualBus bus{loop, {.bitrate = 500'000}};
+    const std::unique_ptr<can::VirtualPort> port = bus.connect("epos2");
+    const std::unique_ptr<can::VirtualPort> listener = bus.connect("master");
+    Epos2DriveConfig config = drive_config(plant::test::tuned_axis());
+    config.dictionary.bit_rate = 500'000;
+    Epos2Drive drive(loop, *port, std::move(config));
+    drive.start();
+    loop.run_for(10ms);
+    canopen::Bytes shown;
+    ASSERT_EQ(drive.objects().read(0x200A, 0, shown), AbortCode::None);
+    EXPECT_EQ(canopen::decode<std::uint16_t>(shown), 2U);
+    EXPECT_EQ(drive.objects().get_as<std::uint16_t>(0x2001, 0), 9U);
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

@@ -51,6 +51,7 @@ Epos2Dictionary::Epos2Dictionary(Epos2DictionaryConfig config)
 canopen::NodeConfig Epos2Dictionary::node_config() const {
     canopen::NodeConfig node;
     node.node_id = config_.node_id;
+    node.bit_rate = config_.bit_rate;
     node.device_type = kDeviceType;
     node.identity = epos2_identity(config_.serial_number);
     node.parameter_file = config_.parameter_file;

@@ -22,7 +22,9 @@ inline constexpr std::uint16_t kApplicationVersion = 0x0000;
 inline constexpr std::uint32_t kDeviceType = 0x0002'0192;
 
 struct Epos2DictionaryConfig {
-    canopen::NodeId node_id = 1;     ///< 0x2000 and the node-ID-based COB-IDs (8.2.34)
+    canopen::NodeId node_id = 1; ///< 0x2000 and the node-ID-based COB-IDs (8.2.34)
+    /// bit/s of the bus the node runs on: what automatic bit rate detection finds (0x200A, 8.2.42)
+    std::uint32_t bit_rate = 1'000'000;
     std::uint64_t serial_number = 0; ///< 0x2004; 0x1018 sub 4 shows its low 32 bits (8.2.15)
     /// The non-volatile memory of 0x1010 / 0x1011: nothing is written before a "save".
     std::filesystem::path parameter_file;
