@@ -166,6 +166,23 @@ TEST_F(Escon2DriveTest, MaxMotorSpeedLimitsTheSetValueWithBit11) {
     EXPECT_EQ(statusword() & kInternalLimitActive, 0);
 }
 
+// Table 19 "PWM max duty cycle": at 9 V the reference motor cannot reach 4000 rpm (its back-EMF
+// alone needs about 9.4 V, more than 95 % of 9 V); the duty cycle stays at 950 ‰ (table 97) and
+// bit 11 says so.
+TEST_F(Escon2DriveTest, LowSupplyLimitsAtThePwmMaxDutyCycleWithBit11) {
+    drive.set_supply_voltage(9);
+    enable();
+    drive.set_velocity_set_value(4000);
+    run(1s);
+    EXPECT_LT(velocity_actual(), 3900);
+    EXPECT_EQ(read<std::uint16_t>(0x3203, 1), 950u);
+    EXPECT_NE(statusword() & kInternalLimitActive, 0);
+    drive.set_velocity_set_value(1000);
+    run(1s);
+    EXPECT_EQ(statusword() & kInternalLimitActive, 0);
+    EXPECT_LT(read<std::uint16_t>(0x3203, 1), 950u);
+}
+
 // 6.2.74: the velocity offset is added to the target velocity.
 TEST_F(Escon2DriveTest, VelocityOffsetIsAddedToTheTarget) {
     enable();

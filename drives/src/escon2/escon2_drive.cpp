@@ -219,6 +219,7 @@ void Escon2Drive::clear_warning(std::uint16_t code) {
 
 void Escon2Drive::configure_axis() {
     const auto& od = objects();
+    machine_.plant.power_stage.max_duty = max_duty_cycle(); // table 97
     axis_.reconfigure(configured_axis(od, machine_));
     const HardwareData& hardware = dictionary_.hardware();
     CurrentLimitationParameters limits;
@@ -326,16 +327,24 @@ void Escon2Drive::compute_measured_values() {
     computed(0x3201, 2, [this] { return deci_celsius(power_stage_.temperature()); });
     computed(0x2202, 1, [this] { return deci_celsius(logic_section_temperature()); });
     // 6.2.57.1: the bridge voltage R·I + k·ω over the supply, 0.1 %.
-    computed(0x3203, 1, [this] {
-        const plant::MotorModel& motor = axis_.motor();
-        const plant::MotorParameters& data = motor.parameters().motor;
-        const double volts = data.terminal_resistance * motor.state().current +
-                             data.back_emf_constant() * motor.state().speed;
-        const double supply = machine_.plant.power_stage.supply_voltage;
-        const double duty = supply > 0 && power_stage_on_ ? std::abs(volts) / supply : 0.0;
-        return static_cast<std::uint16_t>(std::clamp(
-            std::round(duty * 1000), 0.0, double(dictionary_.hardware().pwm_max_duty_cycle)));
-    });
+    computed(0x3203, 1,
+             [this] { return static_cast<std::uint16_t>(std::round(pwm_duty_cycle() * 1000)); });
+}
+
+// 6.2.57.1: the bridge voltage R·I + k·ω over the supply, at most the PWM max duty cycle of
+// table 97 (the plant's power stage saturates there).
+double Escon2Drive::pwm_duty_cycle() const {
+    const plant::MotorModel& motor = axis_.motor();
+    const plant::MotorParameters& data = motor.parameters().motor;
+    const double volts = data.terminal_resistance * motor.state().current +
+                         data.back_emf_constant() * motor.state().speed;
+    const double supply = machine_.plant.power_stage.supply_voltage;
+    const double duty = supply > 0 && power_stage_on_ ? std::abs(volts) / supply : 0.0;
+    return std::min(duty, max_duty_cycle());
+}
+
+double Escon2Drive::max_duty_cycle() const {
+    return static_cast<double>(dictionary_.hardware().pwm_max_duty_cycle) / 1000.0;
 }
 
 // Table 8: the device commands, fault reset and clear warning on bit 7's rising edge.
@@ -619,7 +628,10 @@ std::uint16_t Escon2Drive::statusword() const {
     if (errors_.warning_active()) {
         bits |= motion::kWarningBit;
     }
-    if (set_value_limited_ || limitation_.limiting()) {
+    // Tables 19 / 25 "PWM max duty cycle": the supply voltage limits the current.
+    constexpr double kAtMaxDuty = 0.99;
+    const bool voltage_limited = pwm_duty_cycle() >= kAtMaxDuty * max_duty_cycle();
+    if (set_value_limited_ || limitation_.limiting() || voltage_limited) {
         bits |= motion::kInternalLimitActiveBit;
     }
     if (device_control_.state() == DriveState::OperationEnable &&

@@ -133,6 +133,8 @@ private:
     void supervise();
     void update_fault_condition();
     double logic_section_temperature() const;
+    double pwm_duty_cycle() const;
+    double max_duty_cycle() const;
     void command(std::uint16_t device_command);
     void follow_power_stage();
     void check_configuration();
