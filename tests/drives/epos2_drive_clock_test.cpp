@@ -1,8 +1,10 @@
 // The drive's physics run on its own schedule, not on the host's load: a 1000 rpm profile move
 // gives the same Position / Velocity Actual Values (0x6064 / 0x606C) every millisecond whether
 // its event loop keeps time or runs late in bursts (real-time pace on a loaded host, where an
-// I/O handler meanwhile reads the wall clock), and the reference axis does not overshoot.
+// I/O handler meanwhile reads the wall clock), commanded through the dictionary or by RPDO, and
+// the reference axis does not overshoot.
 #include "eposp/can/virtual_bus.hpp"
+#include "eposp/canopen/nmt_protocol.hpp"
 #include "eposp/core/event_loop.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
 
@@ -35,16 +37,23 @@ struct Sample {
 constexpr core::TimePoint kOrigin{100ms};
 constexpr auto kMoveStart = 50ms;
 constexpr auto kEnd = 450ms;
+constexpr std::uint32_t kRpdo1Id = 0x202; // node 2
+constexpr std::uint32_t kRpdo3Id = 0x402;
 
-/// A master writing the dictionary as its SDO writes would (the reference axis, 1000 rpm,
-/// 10 000 rpm/s, four turns), and the values it samples each millisecond. `disturb` runs at the
-/// given times into the move.
+/// How the master commands the drive: writing the dictionary as its SDO writes would, or by
+/// RPDO frames on the bus (3: controlword and target, 1: controlword; 8.2.18, 8.2.20).
+enum class Commands { Dictionary, Rpdo };
+
+/// A master commanding the reference axis (1000 rpm, 10 000 rpm/s, four turns), and the values
+/// it samples each millisecond. `disturb` runs at the given times into the move.
 std::vector<Sample> profile_move(core::EventLoop& loop, const std::function<void()>& disturb,
-                                 const std::vector<core::Duration>& disturbances) {
+                                 const std::vector<core::Duration>& disturbances,
+                                 Commands commands = Commands::Dictionary) {
     can::VirtualBus bus{loop};
     const std::unique_ptr<can::VirtualPort> port = bus.connect("epos2");
-    // A node alone on the bus sees no acknowledgement and goes error-passive (0x8120, 4.2.15).
-    const std::unique_ptr<can::VirtualPort> listener = bus.connect("master");
+    // The master; also, a node alone on the bus sees no acknowledgement and goes error-passive
+    // (0x8120, 4.2.15).
+    const std::unique_ptr<can::VirtualPort> master = bus.connect("master");
     std::optional<Epos2Drive> drive;
     std::vector<Sample> samples;
     std::vector<core::ScopedTimer> timers;
@@ -54,6 +63,22 @@ std::vector<Sample> profile_move(core::EventLoop& loop, const std::function<void
     const auto write = [&drive](std::uint16_t index, auto value) {
         ASSERT_EQ(drive->objects().write(index, 0, canopen::encode(value)),
                   canopen::AbortCode::None);
+    };
+    const auto command = [&](std::uint16_t controlword, std::optional<std::int32_t> target = {}) {
+        if (commands == Commands::Dictionary) {
+            if (target) {
+                write(0x607A, *target);
+            }
+            write(0x6040, controlword);
+            return;
+        }
+        std::vector<std::uint8_t> data{static_cast<std::uint8_t>(controlword),
+                                       static_cast<std::uint8_t>(controlword >> 8)};
+        if (target) {
+            const canopen::Bytes bytes = canopen::encode(*target);
+            data.insert(data.end(), bytes.begin(), bytes.end());
+        }
+        master->send(can::Frame::data_frame(target ? kRpdo3Id : kRpdo1Id, data));
     };
     at(0ms, [&] {
         Epos2DriveConfig config;
@@ -65,14 +90,13 @@ std::vector<Sample> profile_move(core::EventLoop& loop, const std::function<void
         write(0x6081, std::uint32_t{1000});
         write(0x6083, std::uint32_t{10'000});
         write(0x6084, std::uint32_t{10'000});
-        write(0x6040, std::uint16_t{0x0006}); // shutdown
+        master->send(can::Frame::data_frame(canopen::kNmtCanId, {0x01, 0x02})); // start node 2
     });
-    at(20ms, [&] { write(0x6040, std::uint16_t{0x000F}); }); // switch on, enable operation
-    at(kMoveStart, [&] {
-        write(0x607A, std::int32_t{4 * 2000}); // four turns of the 500-pulse encoder
-        write(0x6040, std::uint16_t{0x003F});  // new set-point, absolute, at once
-    });
-    at(kMoveStart + 5ms, [&] { write(0x6040, std::uint16_t{0x000F}); });
+    at(15ms, [&] { command(0x0006); }); // shutdown
+    at(20ms, [&] { command(0x000F); }); // switch on, enable operation
+    // Four turns of the 500-pulse encoder; new set-point, absolute, at once.
+    at(kMoveStart, [&] { command(0x003F, 4 * 2000); });
+    at(kMoveStart + 20ms, [&] { command(0x000F); });
     for (const core::Duration when : disturbances) {
         at(kMoveStart + when, disturb);
     }
@@ -84,25 +108,46 @@ std::vector<Sample> profile_move(core::EventLoop& loop, const std::function<void
     return samples;
 }
 
-TEST(Epos2DriveClock, LateBurstsOfTheLoopGiveTheSamplesOfAnUndisturbedRun) {
-    core::EventLoop on_time;
-    const std::vector<Sample> undisturbed = profile_move(on_time, [] {}, {});
-
-    // The host is busy for 5 ms at three moments of the move (accelerating, cruising,
-    // decelerating); meanwhile a frame arrives from a socket, whose handler reads the clock.
-    core::EventLoop late(core::Pace::RealTime);
-    const auto busy_host = [&late] {
+// The host is busy for 5 ms at `late` (a real-time loop); meanwhile a frame arrives from a
+// socket, whose handler reads the clock.
+std::function<void()> busy_host(core::EventLoop& late) {
+    return [&late] {
         const auto until = std::chrono::steady_clock::now() + 5ms;
         while (std::chrono::steady_clock::now() < until) {
         }
         boost::asio::post(late.io(), [&late] { (void)late.now(); });
     };
-    const std::vector<Sample> disturbed = profile_move(late, busy_host, {50ms, 150ms, 280ms});
+}
 
+void expect_same_samples(const std::vector<Sample>& disturbed,
+                         const std::vector<Sample>& undisturbed) {
     ASSERT_EQ(disturbed.size(), undisturbed.size());
     for (std::size_t ms = 0; ms < undisturbed.size(); ++ms) {
         ASSERT_EQ(disturbed[ms], undisturbed[ms]) << "at " << ms << " ms into the move";
     }
+}
+
+TEST(Epos2DriveClock, LateBurstsOfTheLoopGiveTheSamplesOfAnUndisturbedRun) {
+    core::EventLoop on_time;
+    const std::vector<Sample> undisturbed = profile_move(on_time, [] {}, {});
+
+    // Accelerating, cruising, decelerating.
+    core::EventLoop late(core::Pace::RealTime);
+    expect_same_samples(profile_move(late, busy_host(late), {50ms, 150ms, 280ms}), undisturbed);
+}
+
+// The same with the commands by RPDO: the host is busy while the frame that starts the move is
+// on the bus, and the loop, late, hears it with the wall clock read. Its controlword still acts
+// at the control period after the frame's time, not at the wall clock's.
+TEST(Epos2DriveClock, AnRpdoHeardLateActsAtTheControlPeriodOfItsTime) {
+    core::EventLoop on_time;
+    const std::vector<Sample> undisturbed = profile_move(
+        on_time, [] {}, {}, Commands::Rpdo);
+    ASSERT_NEAR(undisturbed.back().position, 8000, 10) << "the RPDOs moved the axis";
+
+    core::EventLoop late(core::Pace::RealTime);
+    expect_same_samples(profile_move(late, busy_host(late), {10us, 150ms}, Commands::Rpdo),
+                        undisturbed);
 }
 
 // The reference axis (`eposp drive epos2` without --config) follows a 1000 rpm profile without

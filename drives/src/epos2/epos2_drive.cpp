@@ -231,12 +231,8 @@ void Epos2Drive::watch_dictionary() {
     od.on_change(0x6040, [this](std::uint16_t, std::uint8_t) {
         pending_controlwords_.push_back(dictionary_.objects().get_as<std::uint16_t>(0x6040, 0));
         if (pending_controlwords_.size() == 1) {
-            controlword_timer_ = core::ScopedTimer(loop_, loop_.post([this] {
-                while (!pending_controlwords_.empty()) {
-                    on_controlword(pending_controlwords_.front());
-                    pending_controlwords_.pop_front();
-                }
-            }));
+            controlword_timer_ =
+                core::ScopedTimer(loop_, loop_.post([this] { handle_pending_controlwords(); }));
         }
     });
     od.on_change(0x6060, [this](std::uint16_t, std::uint8_t) { on_mode_written(); });
@@ -279,6 +275,14 @@ void Epos2Drive::watch_dictionary() {
                    ? canopen::AbortCode::None
                    : canopen::AbortCode::InvalidValue;
     };
+}
+
+void Epos2Drive::handle_pending_controlwords() {
+    controlword_timer_.cancel();
+    while (!pending_controlwords_.empty()) {
+        on_controlword(pending_controlwords_.front());
+        pending_controlwords_.pop_front();
+    }
 }
 
 // Power-on and NMT reset node (transition 19, then 0 and 1 of table 3-5).
@@ -390,6 +394,9 @@ void Epos2Drive::watch_power_stage(bool overcurrent) {
 // load (the timer fires once per period, in order, so counting the periods is its schedule).
 void Epos2Drive::control_period() {
     const double now = seconds();
+    // A controlword written before this period's time acts now, also when a real-time loop
+    // running late posted its handling behind this period (now() was the wall clock then).
+    handle_pending_controlwords();
     finish_device_control_transitions();
     follow_power_stage();
     const motion::DriveOutputs outputs = device_control_.outputs();

@@ -164,6 +164,7 @@ private:
     void compute_measured_values();
     void reset_application();
     void on_controlword(std::uint16_t controlword);
+    void handle_pending_controlwords(); ///< in the order written
     void on_mode_written();
     void on_error_recorded();
     void control_period();
