@@ -426,7 +426,7 @@ const std::vector<SpecRange> kSpecRanges = {
     {0x2300, 4, 0, 1}, {0x2301, 3, -2, 0}, {0x2302, 3, -2, 0}, {0x2303, 3, -2, 0},
     {0x6007, 0, 1, 3}, {0x605B, 0, 0, 1}, {0x605C, 0, 0, 1}, {0x605E, 0, -1, 2},
     {0x6067, 0, 0, 2'147'483'647},
-    {0x607F, 0, 1, 4'294'967'295},
+    {0x607F, 0, 1, 25'000}, // table 8-119: 0x6410 sub 4 at its default, no gear
     {0x6083, 0, 1, 4'294'967'295}, {0x6084, 0, 1, 4'294'967'295},
     {0x6085, 0, 1, 4'294'967'295},
     {0x6089, 0, 0, 0}, {0x608A, 0, 0xAC, 0xAC}, {0x608B, 0, -3, 0}, {0x608C, 0, 0xA4, 0xA4},
@@ -633,6 +633,25 @@ TEST_F(Epos2ObjectTable, WritesBeyondTheBoundingObjectAreRefused) {
             EXPECT_EQ(write(-kBound - 1), canopen::AbortCode::ValueTooLow);
         }
     }
+}
+
+// Table 8-119: 0x607F at most the smaller of Maximal Motor Speed and Gear Maximal Speed, and with
+// a gear (8.2.79) that on the load side, × denominator / numerator.
+TEST_F(Epos2ObjectTable, MaximalProfileVelocityIsBoundedByMotorAndGearSpeedsAsTable8_119) {
+    const auto write = [this](std::uint16_t index, std::uint8_t sub, std::uint32_t value) {
+        return od.write(index, sub, canopen::encode(value));
+    };
+    ASSERT_EQ(write(0x6410, 4, 8000), canopen::AbortCode::None);
+    EXPECT_EQ(write(0x607F, 0, 8000), canopen::AbortCode::None);
+    EXPECT_EQ(write(0x607F, 0, 8001), canopen::AbortCode::ValueTooHigh);
+    ASSERT_EQ(write(0x2230, 3, 6000), canopen::AbortCode::None); // gear maximal speed lower
+    EXPECT_EQ(write(0x607F, 0, 6001), canopen::AbortCode::ValueTooHigh);
+    ASSERT_EQ(write(0x2230, 1, 10), canopen::AbortCode::None); // gear 10 : 1
+    EXPECT_EQ(write(0x607F, 0, 600), canopen::AbortCode::None);
+    EXPECT_EQ(write(0x607F, 0, 601), canopen::AbortCode::ValueTooHigh);
+    ASSERT_EQ(od.write(0x2230, 2, canopen::encode(std::uint16_t{3})), canopen::AbortCode::None);
+    EXPECT_EQ(write(0x607F, 0, 1800), canopen::AbortCode::None); // 6000 · 3 / 10
+    EXPECT_EQ(write(0x607F, 0, 1801), canopen::AbortCode::ValueTooHigh);
 }
 
 // Table 4-12: a value that is not in the list is "value range of parameter exceeded"

@@ -1,12 +1,14 @@
 // The CiA 402 profile area of the EPOS2 (firmware specification 8.2.84 - 8.2.131) as data, with
 // the units and factor group objects of 3.3 (0x6089 - 0x608E), for an EPOS2 24/5. Ranges bounded
-// by another object ("1 ... Maximal Profile Velocity") are checked against its current value;
-// those of tables 8-119 and 8-126 (functions of motor type, pole pairs and gear) keep only their
-// static bound until the motor model computes them.
+// by another object ("1 ... Maximal Profile Velocity") are checked against its current value,
+// 0x607F against table 8-119 (motor and gear speeds); that of table 8-126 (a function of motor
+// type and pole pairs) keeps only its static bound.
 #include "eposp/canopen/entry_builder.hpp"
 #include "object_areas.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
+#include <span>
 
 namespace eposp::drives::epos2 {
 namespace {
@@ -71,7 +73,7 @@ void add_profile_motion_objects(canopen::ObjectDictionary& od) {
     add_entry(od, 0x607D, 2, "Maximal Position Limit", kI32, kRW, kI32Max)
         .range(kI32Min, kI32Max)
         .persistent();
-    // 8.2.106: the upper bound follows table 8-119 (motor and gear speeds).
+    // 8.2.106: the upper bound follows table 8-119 (bound_maximal_profile_velocity).
     add_var(od, 0x607F, "Maximal Profile Velocity", kU32, kRW, 25'000)
         .range(1, kU32Max)
         .persistent();
@@ -211,6 +213,30 @@ void add_motor_objects(canopen::ObjectDictionary& od) {
     add_var(od, 0x6502, "Supported Drive Modes", kU32, kConst, 0x003F'0065);
 }
 
+// Table 8-119: the upper limit of 0x607F is the smaller of Maximal Motor Speed (0x6410 sub 4)
+// and Gear Maximal Speed (0x2230 sub 3), the motor side's; with a gear (numerator not 0) the
+// load side's, × denominator / numerator. Checked at each write (a limit lowered later leaves
+// the value as it is, like the other bounded ranges).
+void bound_maximal_profile_velocity(canopen::ObjectDictionary& od) {
+    canopen::SubObject& entry = *od.find(0x607F, 0);
+    entry.on_write = [&od, checked = entry.on_write](std::span<const std::uint8_t> value) {
+        if (checked) {
+            if (const canopen::AbortCode code = checked(value); code != canopen::AbortCode::None) {
+                return code;
+            }
+        }
+        const auto motor_side =
+            std::min(od.get_as<std::uint32_t>(0x6410, 4), od.get_as<std::uint32_t>(0x2230, 3));
+        const auto numerator = od.get_as<std::uint32_t>(0x2230, 1);
+        const std::uint64_t limit =
+            numerator == 0
+                ? motor_side
+                : std::uint64_t{motor_side} * od.get_as<std::uint16_t>(0x2230, 2) / numerator;
+        return canopen::decode<std::uint32_t>(value) > limit ? canopen::AbortCode::ValueTooHigh
+                                                             : canopen::AbortCode::None;
+    };
+}
+
 } // namespace
 
 void add_profile_objects(canopen::ObjectDictionary& od) {
@@ -221,6 +247,7 @@ void add_profile_objects(canopen::ObjectDictionary& od) {
     add_homing_interpolation_objects(od);
     add_control_parameter_objects(od);
     add_motor_objects(od);
+    bound_maximal_profile_velocity(od);
 }
 
 } // namespace eposp::drives::epos2
