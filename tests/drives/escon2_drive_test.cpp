@@ -380,5 +380,29 @@ TEST_F(Escon2DriveTest, InversePolarityTurnsTheOtherWay) {
     EXPECT_NEAR(velocity_actual(), 500, 40);
 }
 
+// Tables 41 - 97 on the smallest hardware: its own limits (6 A output current limit, 31 V
+// overvoltage, no power stage I²t, 90 % PWM) and the same motion.
+TEST(Escon2DriveHardware, NanoRunsTheVelocityModeWithItsOwnLimits) {
+    core::EventLoop loop;
+    Escon2DriveConfig config;
+    config.dictionary.hardware = Escon2Hardware::Nano24_2;
+    config.dictionary.parameter_file = parameter_file();
+    Escon2Drive drive(loop, config);
+    drive.start();
+    auto& od = drive.objects();
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x1018, 2), 0x1103'1000u);
+    EXPECT_EQ(od.get_as<std::uint32_t>(0x3001, 2), 3000u) << "the machine's 3 A, within 6 A";
+    ASSERT_EQ(od.write(0x6040, 0, canopen::encode(kShutdown)), AbortCode::None);
+    ASSERT_EQ(od.write(0x6040, 0, canopen::encode(kEnableOperation)), AbortCode::None);
+    drive.set_velocity_set_value(1000);
+    loop.run_for(500ms);
+    EXPECT_EQ(od.get_as<std::uint16_t>(0x6041, 0) & kStateMask, kOperationEnabled);
+    EXPECT_NEAR(od.get_as<std::int32_t>(0x30D3, 1), 1000, 10);
+    EXPECT_EQ(od.get_as<std::uint16_t>(0x3201, 1), 0u) << "no power stage I2t on the Nano";
+    drive.set_supply_voltage(32);
+    loop.run_for(2ms);
+    EXPECT_EQ(od.get_as<std::uint16_t>(0x603F, 0), 0x3210) << "above the Nano's 31 V";
+}
+
 } // namespace
 } // namespace eposp::drives::escon2
