@@ -101,6 +101,7 @@ demo)
     examples/pick-and-place/run.sh build/device/eposp
     examples/two-axis/run.sh build/device/eposp
     examples/plc-basics/run.sh build/device/eposp
+    examples/escon2-spindle/run.sh build/device/eposp
     log "the ST unit tests of examples/homing-then-move, with its drive simulated in virtual time"
     build/device/eposp test examples/homing-then-move/homing-then-move.st \
         examples/homing-then-move/tests/*_test.st --network examples/homing-then-move/network.yaml

@@ -95,9 +95,13 @@ EposP::EposP(EposPConfig config)
     program_store_->power_up(); // after the motion blocks: a program may call them
     wires_ = std::make_unique<SignalWires>(
         loop_, dictionary_.objects(), plc_.runtime().process_image(),
-        [this](std::uint8_t port, canopen::NodeId node) -> drives::epos2::Epos2Drive& {
-            return simulated_drive(port, node);
-        });
+        SignalWires::Drives{
+            .epos2 = [this](std::uint8_t port, canopen::NodeId node) -> drives::epos2::Epos2Drive& {
+                return simulated_drive(port, node);
+            },
+            .escon2 = [this](const std::string& name) -> drives::escon2::Escon2Drive& {
+                return simulated_escon2(name);
+            }});
     faults_ = std::make_unique<FaultInjector>(*this);
     internal_drive_->start();
 }
@@ -170,7 +174,44 @@ void EposP::add_network(const NetworkFile& network) {
                                                                       std::move(config)));
         slaves_.back()->start();
     }
+    for (const NetworkEscon2& escon2 : network.escon2s) {
+        drives::escon2::Escon2DriveConfig config;
+        config.dictionary.hardware = escon2.hardware;
+        if (escon2.plant) {
+            config.axis = *escon2.plant;
+        }
+        auto& drive = *escon2s_
+                           .emplace_back(escon2.name, std::make_unique<drives::escon2::Escon2Drive>(
+                                                          loop_, std::move(config)))
+                           .second;
+        drive.start();
+        for (const NetworkEscon2::Parameter& parameter : escon2.parameters) {
+            // The network file's reader wrote each one into a dictionary of the same hardware.
+            if (drive.objects().write(parameter.index, parameter.sub_index, parameter.value) !=
+                canopen::AbortCode::None) {
+                throw std::logic_error(fmt::format("ESCON2 {} refused 0x{:04X} sub {}", escon2.name,
+                                                   parameter.index, parameter.sub_index));
+            }
+        }
+    }
     wires_->add(network.wires);
+}
+
+drives::escon2::Escon2Drive* EposP::escon2(const std::string& name) {
+    for (auto& [drive_name, drive] : escon2s_) {
+        if (drive_name == name) {
+            return drive.get();
+        }
+    }
+    return nullptr;
+}
+
+drives::escon2::Escon2Drive& EposP::simulated_escon2(const std::string& name) {
+    if (drives::escon2::Escon2Drive* drive = escon2(name)) {
+        return *drive;
+    }
+    // The network file's reader lets no wire name an ESCON2 it does not simulate.
+    throw std::logic_error("no ESCON2 named " + name + " is simulated");
 }
 
 drives::epos2::Epos2Drive& EposP::simulated_drive(std::uint8_t port, canopen::NodeId node) {

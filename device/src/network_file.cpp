@@ -5,11 +5,12 @@
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/device/axis_process_data.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
-#include "eposp/drives/plant/axis_file.hpp"
 #include "eposp/manager/concise_dcf.hpp"
 #include "eposp/manager/network_list.hpp"
 #include "eposp/vm/process_image.hpp"
 #include "eposp/yaml/reader.hpp"
+#include "network_escon2.hpp"
+#include "yaml_values.hpp"
 
 #include <algorithm>
 #include <map>
@@ -23,25 +24,6 @@ namespace {
 using yaml::Reader;
 
 constexpr std::uint8_t kMaxNodeId = 127;
-
-core::Duration duration(Reader& in, const YAML::Node& node, std::string_view what) {
-    const auto text = in.scalar<std::string>(node, what);
-    const auto parsed = core::parse_duration(text);
-    if (!parsed) {
-        in.fail(node, fmt::format("{} must be a duration such as 500ms or 1s", what));
-    }
-    return *parsed;
-}
-
-template <typename T>
-T in_range(Reader& in, const YAML::Node& node, std::string_view what, std::int64_t low,
-           std::int64_t high) {
-    const auto value = in.scalar<std::int64_t>(node, what);
-    if (value < low || value > high) {
-        in.fail(node, fmt::format("{} must be {}..{}", what, low, high));
-    }
-    return static_cast<T>(value);
-}
 
 void read_expected(Reader& in, const YAML::Node& node, NetworkSlave& slave) {
     const auto u32 = [&in](std::uint32_t& field, std::string_view what) {
@@ -126,12 +108,7 @@ NetworkSlave read_slave(Reader& in, const YAML::Node& node, const std::filesyste
                   }},
                  {"plant",
                   [&](const YAML::Node& value) {
-                      const auto path = base / in.scalar<std::string>(value, "plant");
-                      auto axis = drives::plant::load_axis_file(path);
-                      if (!axis) {
-                          in.fail(value, fmt::format("plant {}: {}", path.string(), axis.error()));
-                      }
-                      slave.plant = std::move(*axis);
+                      slave.plant = read_plant(in, value, base);
                   }},
                  {"expect", [&](const YAML::Node& value) {
                       read_expected(in, value, slave);
@@ -244,23 +221,30 @@ SignalWire read_wire(Reader& in, const YAML::Node& node) {
     return wire;
 }
 
-// Each EPOS2 a wire names is simulated here, and no input has two wires.
+// Each drive a wire names is simulated here, and no input has two wires.
 void check_wires(Reader& in, const NetworkFile& network,
                  const std::vector<YAML::Node>& wire_nodes) {
-    const auto simulated = [&network](const SignalEnd& end) {
-        return end.device != SignalEnd::Device::Epos2 || end.port == kInternalPort ||
-               std::ranges::any_of(network.slaves, [&end](const NetworkSlave& slave) {
-                   return slave.port == kExternalPort && slave.node_id == end.node &&
-                          slave.kind == NetworkSlave::Kind::Epos2;
-               });
+    const auto problem = [&network](const SignalEnd& end) -> std::optional<std::string> {
+        if (end.device == SignalEnd::Device::Escon2) {
+            if (std::ranges::none_of(network.escon2s, [&end](const NetworkEscon2& escon2) {
+                    return escon2.name == end.name;
+                })) {
+                return fmt::format("no ESCON2 is named '{}' (escon2)", end.name);
+            }
+        } else if (end.device == SignalEnd::Device::Epos2 && end.port == kExternalPort &&
+                   std::ranges::none_of(network.slaves, [&end](const NetworkSlave& slave) {
+                       return slave.port == kExternalPort && slave.node_id == end.node &&
+                              slave.kind == NetworkSlave::Kind::Epos2;
+                   })) {
+            return fmt::format("node {} is no EPOS2 simulated on the CAN bus (slaves)", end.node);
+        }
+        return std::nullopt;
     };
     for (std::size_t i = 0; i < network.wires.size(); ++i) {
         const SignalWire& wire = network.wires[i];
         for (const SignalEnd* end : {&wire.from, &wire.to}) {
-            if (!simulated(*end)) {
-                in.fail(wire_nodes[i], fmt::format("'{}': node {} is no EPOS2 simulated on the "
-                                                   "CAN bus (slaves)",
-                                                   to_string(*end), end->node));
+            if (auto missing = problem(*end)) {
+                in.fail(wire_nodes[i], fmt::format("'{}': {}", to_string(*end), *missing));
             }
         }
         for (std::size_t earlier = 0; earlier < i; ++earlier) {
@@ -318,6 +302,22 @@ NetworkFile read_network(Reader& in, const YAML::Node& root, const std::filesyst
               }
               for (const YAML::Node& node : list) {
                   network.events.push_back(read_event(in, node));
+              }
+          }},
+         {"escon2",
+          [&](const YAML::Node& list) {
+              if (!list.IsSequence()) {
+                  in.fail(list, "'escon2' must be a list");
+              }
+              for (const YAML::Node& node : list) {
+                  NetworkEscon2 escon2 = read_escon2(in, node, base);
+                  if (std::ranges::any_of(network.escon2s, [&escon2](const NetworkEscon2& other) {
+                          return other.name == escon2.name;
+                      })) {
+                      in.fail(node,
+                              fmt::format("an ESCON2 named '{}' is listed twice", escon2.name));
+                  }
+                  network.escon2s.push_back(std::move(escon2));
               }
           }},
          {"wires",

@@ -1,10 +1,12 @@
 #include "signal_wires.hpp"
 
 #include "eposp/drives/epos2/epos2_drive.hpp"
+#include "eposp/drives/escon2/escon2_drive.hpp"
 #include "eposp/vm/process_image.hpp"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 
 namespace eposp::device {
@@ -25,7 +27,7 @@ std::int16_t saturated(std::int32_t millivolts) {
 } // namespace
 
 SignalWires::SignalWires(core::EventLoop& loop, canopen::ObjectDictionary& objects,
-                         vm::ProcessImage& image, DriveLookup drives)
+                         vm::ProcessImage& image, Drives drives)
     : loop_(loop), objects_(objects), image_(image), drives_(std::move(drives)) {}
 
 void SignalWires::add(const std::vector<SignalWire>& wires) {
@@ -48,7 +50,18 @@ std::function<std::int32_t()> SignalWires::source(const SignalEnd& end) {
             return std::int32_t{read_word(image_.outputs(), end.number)};
         };
     }
-    drives::epos2::Epos2Drive& drive = drives_(end.port, end.node);
+    if (end.device == SignalEnd::Device::Escon2) {
+        drives::escon2::Escon2Drive& drive = drives_.escon2(end.name);
+        if (end.kind == SignalEnd::Kind::Digital) {
+            return [&drive, output = end.number] {
+                return std::int32_t{drive.digital_output(output)};
+            };
+        }
+        return [&drive, output = end.number] {
+            return static_cast<std::int32_t>(std::lround(drive.analog_output(output) * 1000.0));
+        };
+    }
+    drives::epos2::Epos2Drive& drive = drives_.epos2(end.port, end.node);
     return [&drive, output = end.number] {
         return std::int32_t{drive.digital_output(output)};
     };
@@ -72,7 +85,18 @@ std::function<void(std::int32_t)> SignalWires::sink(const SignalEnd& end) {
             write_inputs(2 * end.number, bytes);
         };
     }
-    drives::epos2::Epos2Drive& drive = drives_(end.port, end.node);
+    if (end.device == SignalEnd::Device::Escon2) {
+        drives::escon2::Escon2Drive& drive = drives_.escon2(end.name);
+        if (end.kind == SignalEnd::Kind::Digital) {
+            return [&drive, input = end.number](std::int32_t level) {
+                drive.set_digital_input(input, level != 0);
+            };
+        }
+        return [&drive, input = end.number](std::int32_t millivolts) {
+            drive.set_analog_input(input, static_cast<double>(millivolts) / 1000.0);
+        };
+    }
+    drives::epos2::Epos2Drive& drive = drives_.epos2(end.port, end.node);
     if (end.kind == SignalEnd::Kind::Digital) {
         return [&drive, input = end.number](std::int32_t level) {
             drive.set_digital_input(input, level != 0);

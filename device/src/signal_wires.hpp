@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace eposp::vm {
@@ -14,6 +15,9 @@ class ProcessImage;
 }
 namespace eposp::drives::epos2 {
 class Epos2Drive;
+}
+namespace eposp::drives::escon2 {
+class Escon2Drive;
 }
 
 namespace eposp::device {
@@ -26,12 +30,14 @@ namespace eposp::device {
 /// event sees its edge.
 class SignalWires {
 public:
-    /// The simulated EPOS2 on a port with a node-ID; the network file names only those.
-    using DriveLookup =
-        std::function<drives::epos2::Epos2Drive&(std::uint8_t port, canopen::NodeId node)>;
+    /// The simulated drives a wire may name; the network file names only those there are.
+    struct Drives {
+        std::function<drives::epos2::Epos2Drive&(std::uint8_t port, canopen::NodeId node)> epos2;
+        std::function<drives::escon2::Escon2Drive&(const std::string& name)> escon2;
+    };
 
     SignalWires(core::EventLoop& loop, canopen::ObjectDictionary& objects, vm::ProcessImage& image,
-                DriveLookup drives);
+                Drives drives);
 
     /// Wires `wires` (checked by the network file's reader) and, with the first, starts the
     /// sampling.
@@ -53,7 +59,7 @@ private:
     core::EventLoop& loop_;
     canopen::ObjectDictionary& objects_;
     vm::ProcessImage& image_;
-    DriveLookup drives_;
+    Drives drives_;
     std::vector<Connection> connections_;
     core::ScopedTimer timer_;
 };

@@ -75,17 +75,25 @@ TEST(NetworkFile, ReadsTheWiresBetweenTheDevices) {
                            "wires:\n"
                            "  - {from: \"%QX0.3\", to: Node 2 Digital Input 6}\n"
                            "  - {from: internal digital output 2, to: \"%IX4.7\"}\n"
-                           "  - {from: \"%QW16\", to: node 2 analog input 2}\n",
+                           "  - {from: \"%QW16\", to: node 2 analog input 2}\n"
+                           "  - {from: escon2 belt-1 analog output 2, to: \"%IW20\"}\n"
+                           "  - {from: \"%QX0.4\", to: ESCON2 belt-1 high-speed digital input 2}\n"
+                           "escon2:\n"
+                           "  - {name: belt-1, hardware: nano 24/2}\n",
                            "net.yaml");
     ASSERT_TRUE(network) << network.error();
-    ASSERT_EQ(network->wires.size(), 3U);
+    ASSERT_EQ(network->wires.size(), 5U);
+    ASSERT_EQ(network->escon2s.size(), 1U);
+    EXPECT_EQ(network->escon2s[0].hardware, drives::escon2::Escon2Hardware::Nano24_2);
     std::vector<std::string> texts;
     for (const SignalWire& wire : network->wires) {
         texts.push_back(to_string(wire.from) + " -> " + to_string(wire.to));
     }
     EXPECT_THAT(texts, testing::ElementsAre("%QX0.3 -> node 2 digital input 6",
                                             "internal digital output 2 -> %IX4.7",
-                                            "%QW16 -> node 2 analog input 2"));
+                                            "%QW16 -> node 2 analog input 2",
+                                            "escon2 belt-1 analog output 2 -> %IW20",
+                                            "%QX0.4 -> escon2 belt-1 high-speed digital input 2"));
 }
 
 TEST(RunCommand, AnEventForATaskTheProgramLacksIsAUserError) {
@@ -274,7 +282,32 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"InputWiredTwice",
                 "wires:\n  - {from: \"%QX0.0\", to: \"%IX1.0\"}\n  - {from: \"%QX0.1\", to: "
                 "\"%ix1.0\"}\n",
-                "net.yaml:3:5: error: '%IX1.0' is wired twice"}),
+                "net.yaml:3:5: error: '%IX1.0' is wired twice"},
+        BadFile{"WireToAnUnknownEscon2",
+                "wires:\n  - {from: \"%QX0.0\", to: escon2 belt digital input 1}\n",
+                "net.yaml:2:5: error: 'escon2 belt digital input 1': no ESCON2 is named 'belt'"},
+        BadFile{"Escon2WithoutName", "escon2:\n  - {hardware: Nano 24/2}\n",
+                "net.yaml:2:5: error: an ESCON2 needs its 'name'"},
+        BadFile{"Escon2Hardware", "escon2:\n  - {name: a, hardware: Giga 99/9}\n",
+                "net.yaml:2:25: error: hardware must be 'Module 60/30'"},
+        BadFile{"Escon2NameTwice", "escon2:\n  - {name: a}\n  - {name: a}\n",
+                "net.yaml:3:5: error: an ESCON2 named 'a' is listed twice"},
+        BadFile{"Escon2UnknownObject",
+                "escon2:\n  - name: a\n    parameters:\n      - {index: 0x5555, value: 1}\n",
+                "net.yaml:4:9: error: 0x5555 sub 0: the ESCON2 has no such object"},
+        BadFile{"Escon2RefusedValue",
+                "escon2:\n  - name: a\n    parameters:\n      - {index: 0x3142, sub: 1, value: "
+                "200}\n",
+                "net.yaml:4:9: error: 0x3142 sub 1: the ESCON2 refuses 200:"},
+        BadFile{"Escon2ValueOutsideItsType",
+                "escon2:\n  - name: a\n    parameters:\n      - {index: 0x3142, sub: 1, value: "
+                "300}\n",
+                "net.yaml:4:9: error: 0x3142 sub 1: 300 does not fit its type UNSIGNED8"},
+        BadFile{
+            "Escon2PinOutOfRange",
+            "escon2:\n  - {name: a}\nwires:\n  - {from: escon2 a high-speed digital output 2, "
+            "to: \"%IX0.0\"}\n",
+            "net.yaml:4:12: error: from: an ESCON2 has one high-speed digital output, number 1"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(RunCommand, WithANetworkPrintsTheBootReport) {

@@ -8,6 +8,7 @@
 #include "eposp/device/network_file.hpp"
 #include "eposp/device/plc.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
+#include "eposp/drives/escon2/escon2_drive.hpp"
 #include "eposp/manager/network_boot.hpp"
 #include "eposp/plcopen/motion_library.hpp"
 
@@ -84,6 +85,8 @@ public:
     const std::vector<std::unique_ptr<drives::epos2::Epos2Drive>>& simulated_slaves() const {
         return slaves_;
     }
+    /// The ESCON2 the network file names `name`; none if it names none.
+    drives::escon2::Escon2Drive* escon2(const std::string& name);
 
     /// Lets `event` release the event task it names (docs/network.md, "Events"); the program
     /// must be loaded. The error says why not: no such task, or not an event task.
@@ -141,6 +144,7 @@ private:
     void follow_sync();
     /// The simulated EPOS2 with `node` on `port` (the internal one on port 1).
     drives::epos2::Epos2Drive& simulated_drive(std::uint8_t port, canopen::NodeId node);
+    drives::escon2::Escon2Drive& simulated_escon2(const std::string& name);
 
     core::EventLoop loop_;
     can::VirtualBus internal_bus_;
@@ -163,6 +167,8 @@ private:
     std::vector<std::unique_ptr<can::VirtualPort>> slave_ports_;
     std::vector<std::unique_ptr<SeverablePort>> slave_links_; ///< each slave's cable to the bus
     std::vector<std::unique_ptr<drives::epos2::Epos2Drive>> slaves_;
+    /// The network files' ESCON2s by name (no CAN: the wires reach them).
+    std::vector<std::pair<std::string, std::unique_ptr<drives::escon2::Escon2Drive>>> escon2s_;
     std::unique_ptr<SignalWires> wires_; ///< the network files' wires between the devices
     std::unique_ptr<FaultInjector> faults_;
 };

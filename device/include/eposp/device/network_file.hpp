@@ -6,6 +6,7 @@
 #include "eposp/core/time.hpp"
 #include "eposp/device/event_binding.hpp"
 #include "eposp/device/signal_wire.hpp"
+#include "eposp/drives/escon2/escon2_hardware.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
 #include "eposp/manager/network_list.hpp"
 
@@ -45,6 +46,22 @@ struct NetworkSlave {
     std::optional<drives::plant::AxisParameters> plant;
 };
 
+/// An ESCON2 simulated in this process (docs/network.md, "ESCON2 servo controllers"): it has no
+/// CAN, the machine reaches it through wires to its pins.
+struct NetworkEscon2 {
+    /// One object written at power-up, as a configuration tool's download over USB writes it.
+    struct Parameter {
+        std::uint16_t index = 0;
+        std::uint8_t sub_index = 0;
+        canopen::Bytes value;
+    };
+    std::string name; ///< what the wires call it
+    drives::escon2::Escon2Hardware hardware = drives::escon2::Escon2Hardware::Module60_30;
+    /// Its machine (an axis file); the reference axis without one.
+    std::optional<drives::plant::AxisParameters> plant;
+    std::vector<Parameter> parameters; ///< in the file's order, each checked as the device would
+};
+
 /// What a user writes instead of setting objects one by one.
 struct NetworkFile {
     canopen::NodeId node_id = 1;                               ///< the EPOS P's on port 2 (0x5000)
@@ -54,14 +71,16 @@ struct NetworkFile {
     std::optional<core::Duration> sync_period;
     std::vector<NetworkSlave> slaves;
     std::vector<EventBinding> events;
-    /// Outputs wired to inputs: of the simulated EPOS2s, of the process image.
+    std::vector<NetworkEscon2> escon2s;
+    /// Outputs wired to inputs: of the simulated drives, of the process image.
     std::vector<SignalWire> wires;
 };
 
 /// Reads a network file; every mistake is an error "file:line:col: error: message" (`source`
 /// names the text): unknown keys, values out of range, a node listed twice on a port, an axis
 /// served twice, an internal slave other than node 1, a slave with the EPOS P's own node-ID, a
-/// wire to or from an EPOS2 the file does not simulate, an input wired twice.
+/// wire to or from a drive the file does not simulate, an input wired twice, an ESCON2 parameter
+/// the device refuses.
 /// A slave's `dcf` is read from `base` / its name (a file's directory).
 core::Result<NetworkFile> parse_network_file(std::string_view text, std::string_view source,
                                              const std::filesystem::path& base = {});
