@@ -128,5 +128,21 @@ END_PROGRAM
               (Codes{"E0409", "E0410", "E0410", "E0410", "W0406"}));
 }
 
+TEST(ChecksStage, RefusesLoopExitsOutsideALoopAndConstantZeroDivisors) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+PROGRAM Main
+VAR x, y : DINT := 7; END_VAR
+WHILE x > 0 DO
+    x := x - 1;
+    EXIT;
+END_WHILE;
+x := y / (3 - 3) + y MOD 0 + DIV(y, 0) + y / 2;
+CONTINUE;
+END_PROGRAM
+)st"),
+              (Codes{"E0405", "E0408", "E0408", "E0408"}));
+}
+
 } // namespace
 } // namespace eposp::compiler

@@ -14,6 +14,8 @@ void check_program(types::TypedProgram& program, std::span<const ast::Compilatio
         check_unused_variables(check);
         check_assigned_results(check);
         check_constant_indices(check);
+        check_loop_exits(check);
+        check_zero_divisors(check);
     }
     const ProgramUnderCheck program_check{program, calls, diagnostics};
     check_constant_subranges(program_check);

@@ -34,6 +34,10 @@ void check_assigned_results(const PouUnderCheck& check);
 void check_unreachable_statements(const PouUnderCheck& check);
 /// W0405: an assignment to the POU's own input.
 void check_written_inputs(const PouUnderCheck& check);
+/// E0405: EXIT or CONTINUE outside a loop.
+void check_loop_exits(const PouUnderCheck& check);
+/// E0408: a constant zero divisor.
+void check_zero_divisors(const PouUnderCheck& check);
 /// E0409: a constant array index outside the array's bounds.
 void check_constant_indices(const PouUnderCheck& check);
 /// E0410: a constant stored into a subrange outside its bounds.

@@ -759,9 +759,6 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
     const bool arithmetic = node.op == Op::Add || node.op == Op::Subtract ||
                             node.op == Op::Multiply || node.op == Op::Divide ||
                             node.op == Op::Modulo;
-    if (!check_divisor(node.op, *node.right)) {
-        return std::nullopt;
-    }
     if (node.op == Op::Power) {
         const sema::Type& lreal = types_.elementary(E::Lreal);
         const auto base = value_as(*node.left, lreal);
@@ -918,21 +915,6 @@ std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
     call_native(std::string(multiply ? "MUL_TIME" : "DIV_TIME") + (real ? "_LREAL" : ""), signature,
                 {time, *converted});
     return native_result(signature, *time.type, dest);
-}
-
-bool PouGenerator::check_divisor(ast::BinaryOperator op, const ast::Expression& divisor) {
-    if (op != ast::BinaryOperator::Divide && op != ast::BinaryOperator::Modulo) {
-        return true;
-    }
-    const auto* literal = std::get_if<ast::LiteralExpression>(&divisor.node);
-    const auto* real =
-        literal != nullptr ? std::get_if<ast::RealLiteral>(&literal->value) : nullptr;
-    if ((real != nullptr && real->value == 0.0) || types_.fold_integer(divisor) == 0) {
-        error(DiagnosticCode::E0408, divisor.range,
-              op == ast::BinaryOperator::Divide ? "division by zero" : "MOD by zero");
-        return false;
-    }
-    return true;
 }
 
 std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,

@@ -198,9 +198,6 @@ private:
     /// TIME * number, TIME / number.
     std::optional<Value> scale_time(bool multiply, const Value& time, const ast::Expression& factor,
                                     const Destination* dest);
-    /// Reports a divisor of / or MOD that is a constant zero, as a constant index out of range
-    /// is: the division would stop the task at every run. False when it did.
-    bool check_divisor(ast::BinaryOperator op, const ast::Expression& divisor);
     /// A binary operator on operands already of their common type.
     std::optional<Value> apply(ast::BinaryOperator op, const Value& left, const Value& right,
                                const Destination* dest, const SourceRange& range);

@@ -41,11 +41,7 @@ void PouGenerator::statement(const ast::Statement& statement) {
                 repeat_statement(node);
             } else if constexpr (std::is_same_v<T, ast::ExitStatement> ||
                                  std::is_same_v<T, ast::ContinueStatement>) {
-                if (loops_.empty()) {
-                    error(DiagnosticCode::E0405, statement.range,
-                          std::is_same_v<T, ast::ExitStatement> ? "EXIT outside a loop"
-                                                                : "CONTINUE outside a loop");
-                } else {
+                if (!loops_.empty()) { // outside a loop: E0405 (checks/loop_exits.cpp)
                     builder_.jump(Opcode::Jmp, std::is_same_v<T, ast::ExitStatement>
                                                    ? loops_.back().exit
                                                    : loops_.back().next);

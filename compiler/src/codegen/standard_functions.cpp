@@ -404,11 +404,6 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                   fmt::format("{} takes two or more arguments", name));
             return std::nullopt;
         }
-        for (std::size_t i = 1; i < arguments.size(); ++i) {
-            if (!check_divisor(op, *arguments[i]->value)) {
-                return std::nullopt;
-            }
-        }
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
         // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is
         // a > b AND b > c; the other extensible functions fold left to right.
