@@ -137,5 +137,33 @@ TEST(Epos2DriveBitRate, CanBitrateDisplayShowsTheBitRateInUse) {
     EXPECT_EQ(drive.objects().get_as<std::uint16_t>(0x2001, 0), 9U);
 }
 
+// 8.2.68: after a homing, 0x2082 shows how far the home found lies from the previous Home
+// Position (in the coordinates before); the position is then the Home Position. Homing on the
+// actual position (method 35) 1000 qc from the first home shows 1000.
+TEST_F(Epos2DriveOnBus, HomePositionDisplacementShowsTheDistanceFromThePreviousHome) {
+    write(0x6098, 0, encode(std::int8_t{35}));
+    configure_and_enable(6);
+    const auto home = [this] {
+        controlword(kEnableOperation | kNewSetpoint);
+        run_with_sync(20ms);
+        controlword(kEnableOperation);
+        run_with_sync(5ms);
+    };
+    home();
+    EXPECT_NEAR(read<std::int32_t>(0x2082, 0), 0, 2) << "the axis was where the counter began";
+    const std::int32_t first = read<std::int32_t>(0x6064, 0);
+    write(0x6060, 0, encode(std::int8_t{1}));
+    controlword_and_target(kEnableOperation | kNewSetpoint | 0x0040, 1000); // relative
+    run_with_sync(300ms);
+    controlword(kEnableOperation); // bit 4 low, for the next homing's rising edge
+    const std::int32_t moved = read<std::int32_t>(0x6064, 0) - first;
+    ASSERT_NEAR(moved, 1000, 5);
+    write(0x6060, 0, encode(std::int8_t{6}));
+    run_with_sync(5ms);
+    home();
+    EXPECT_NEAR(read<std::int32_t>(0x2082, 0), first + moved, 2);
+    EXPECT_NEAR(read<std::int32_t>(0x6064, 0), 0, 2);
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

@@ -409,6 +409,9 @@ void Epos2Drive::control_period() {
         commanded = mode_behaviour_->demand(mode_inputs());
         if (commanded.position_offset) {
             position_offset_ += *commanded.position_offset;
+            // 8.2.68: the home found, in the coordinates before, minus the Home Position.
+            dictionary_.objects().set_as(0x2082, 0,
+                                         static_cast<std::int32_t>(-*commanded.position_offset));
         }
     } else if (power_stage_on_) {
         commanded.motion = MotionState{hold_position_, 0, 0}; // where the power stage came on
