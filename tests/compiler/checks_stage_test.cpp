@@ -144,5 +144,21 @@ END_PROGRAM
               (Codes{"E0405", "E0408", "E0408", "E0408"}));
 }
 
+TEST(ChecksStage, RefusesCaseLabelsThatShareAValue) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+PROGRAM Main
+VAR n : ULINT; x : INT; END_VAR
+CASE n OF
+    1..10: x := 1;
+    5, 16#FFFF_FFFF_FFFF_FFFF: x := 2;
+    11..20: x := 3;
+    18446744073709551615: x := 4;
+END_CASE;
+END_PROGRAM
+)st"),
+              (Codes{"E0406", "E0406"}));
+}
+
 } // namespace
 } // namespace eposp::compiler

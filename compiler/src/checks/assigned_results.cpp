@@ -2,6 +2,7 @@
 // is assigned, and a function's on every path (definite_assignment.hpp).
 
 #include "body_walk.hpp"
+#include "case_labels.hpp"
 #include "definite_assignment.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
@@ -88,24 +89,14 @@ bool covers_every_value(types::TypedProgram& program, const ast::CaseStatement& 
             return false;
         }
     }
-    const bool unsigned64 = sema::scalar_of(*type) == vm::Scalar::U64;
+    const CaseLabels labels = case_labels(program, node, *type);
     std::vector<std::pair<std::int64_t, std::int64_t>> ranges;
-    for (const ast::CaseBranch& branch : node.branches) {
-        for (const ast::CaseLabel& label : branch.labels) {
-            const auto fold = [&](const ast::Expression& bound) -> std::optional<std::int64_t> {
-                if (!unsigned64) {
-                    return program.types().fold_integer(bound);
-                }
-                const auto bits = program.types().fold_unsigned(bound);
-                return bits ? std::optional(static_cast<std::int64_t>(*bits)) : std::nullopt;
-            };
-            const auto low = fold(*label.low);
-            const auto high = label.high ? fold(*label.high) : low;
-            // A subrange's bounds are signed 64-bit: an unsigned label above them covers none
-            // of its values, a range reaching above them all up to its upper bound.
-            if (low && high && (!unsigned64 || *low >= 0)) {
-                ranges.emplace_back(*low, unsigned64 && *high < 0 ? INT64_MAX : *high);
-            }
+    for (const CaseLabelRange& label : labels.ranges) {
+        // A subrange's bounds are signed 64-bit: an unsigned label above them covers none of its
+        // values, a range reaching above them all up to its upper bound.
+        if (!labels.unsigned64 || label.low >= 0) {
+            ranges.emplace_back(label.low,
+                                labels.unsigned64 && label.high < 0 ? INT64_MAX : label.high);
         }
     }
     const auto covered = [&](std::int64_t value) {

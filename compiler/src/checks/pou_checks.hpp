@@ -36,6 +36,8 @@ void check_unreachable_statements(const PouUnderCheck& check);
 void check_written_inputs(const PouUnderCheck& check);
 /// E0405: EXIT or CONTINUE outside a loop.
 void check_loop_exits(const PouUnderCheck& check);
+/// E0406: CASE labels that share a value.
+void check_overlapping_case_labels(const PouUnderCheck& check);
 /// E0408: a constant zero divisor.
 void check_zero_divisors(const PouUnderCheck& check);
 /// E0409: a constant array index outside the array's bounds.

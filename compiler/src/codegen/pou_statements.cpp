@@ -247,9 +247,6 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
         const auto bits = types_.fold_unsigned(label);
         return bits ? std::optional(static_cast<std::int64_t>(*bits)) : std::nullopt;
     };
-    const auto at_most = [&](std::int64_t a, std::int64_t b) {
-        return unsigned64 ? static_cast<std::uint64_t>(a) <= static_cast<std::uint64_t>(b) : a <= b;
-    };
     for (const ast::CaseBranch& branch_node : node.branches) {
         bodies.push_back(builder_.label());
         for (const ast::CaseLabel& label : branch_node.labels) {
@@ -262,12 +259,6 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
                       constant ? fmt::format("a CASE label must be a value of {}", type.name)
                                : "a CASE label must be a constant");
                 continue;
-            }
-            for (const CaseRange& seen : ranges) {
-                if (at_most(*low_value, seen.high) && at_most(seen.low, *high_value)) {
-                    error(DiagnosticCode::E0406, label.range,
-                          "this CASE label overlaps an earlier one");
-                }
             }
             const auto low = value_as(*label.low, type);
             const auto high = label.high ? value_as(*label.high, type) : low;
