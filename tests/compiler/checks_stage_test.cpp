@@ -160,5 +160,22 @@ END_PROGRAM
               (Codes{"E0406", "E0406"}));
 }
 
+TEST(ChecksStage, RefusesWritingAForVariableAndStepsThatCannotEnd) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+PROGRAM Main
+VAR i, j : INT; END_VAR
+FOR i := 1 TO 10 DO
+    FOR j := 1 TO 10 BY 0 DO
+        i := 5;
+    END_FOR;
+    j := i;
+    i := 2;
+END_FOR;
+END_PROGRAM
+)st"),
+              (Codes{"E0404", "E0402"}));
+}
+
 } // namespace
 } // namespace eposp::compiler

@@ -15,6 +15,7 @@ void check_program(types::TypedProgram& program, std::span<const ast::Compilatio
         check_assigned_results(check);
         check_constant_indices(check);
         check_loop_exits(check);
+        check_for_loops(check);
         check_overlapping_case_labels(check);
         check_zero_divisors(check);
     }

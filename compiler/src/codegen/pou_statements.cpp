@@ -96,12 +96,6 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
               "output of another instance)");
         return;
     }
-    if (is_for_variable(*target)) {
-        error(DiagnosticCode::E0402, node.target->range,
-              "the control variable of a FOR loop cannot be assigned in "
-              "its body (IEC 61131-3 7.3.3.4.2)");
-        return;
-    }
     if (target->type->kind == sema::TypeKind::Instance) {
         error(DiagnosticCode::E0412, range, "a function block instance cannot be assigned");
         return;
@@ -369,16 +363,10 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
     bool constant_step = true;
     if (node.by) {
         const auto folded = types_.fold_integer(*node.by);
-        if (folded && *folded == 0) {
-            error(DiagnosticCode::E0404, node.by->range, "BY must not be 0");
-            return;
-        }
         constant_step = folded && *folded >= INT16_MIN && *folded <= INT16_MAX;
         step = folded.value_or(0);
-        if (constant_step && !sema::is_signed(type) && step < 0) {
-            error(DiagnosticCode::E0404, node.by->range,
-                  "a negative step needs a signed control variable");
-            return;
+        if ((folded && *folded == 0) || (constant_step && !sema::is_signed(type) && step < 0)) {
+            return; // a step the checks stage refuses (E0404, checks/for_loops.cpp)
         }
     }
     const Destination dest{control->operand, &type};
