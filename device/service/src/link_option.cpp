@@ -1,6 +1,6 @@
 #include "eposp/service/link_option.hpp"
 
-#include "tcp_address.hpp"
+#include "eposp/core/tcp_address.hpp"
 
 #include <cerrno>
 #include <fmt/format.h>
@@ -24,7 +24,7 @@ core::Result<LinkOption> parse_link_option(std::string_view text) {
     }
     if (text.starts_with(kTcpPrefix)) {
         const std::string_view address = text.substr(kTcpPrefix.size());
-        if (const auto parsed = parse_tcp_address(address); !parsed) {
+        if (const auto parsed = core::parse_tcp_address(address); !parsed) {
             return core::Error{fmt::format("{}: {}", text, parsed.error())};
         }
         return LinkOption{LinkOption::Kind::Tcp, std::string(address)};

@@ -1,7 +1,7 @@
 #include "eposp/service/tcp_client_link.hpp"
 
 #include "byte_stream.hpp"
-#include "tcp_address.hpp"
+#include "eposp/core/tcp_address.hpp"
 
 #include <boost/asio/connect.hpp>
 #include <boost/asio/error.hpp>
@@ -85,7 +85,7 @@ private:
 core::Result<std::unique_ptr<TcpClientLink>> TcpClientLink::open(core::EventLoop& loop,
                                                                  const std::string& address,
                                                                  std::size_t max_unsent_bytes) {
-    const auto parsed = parse_tcp_address(address);
+    const auto parsed = core::parse_tcp_address(address);
     if (!parsed) {
         return core::Error{parsed.error()};
     }

@@ -1,7 +1,7 @@
 #include "eposp/service/tcp_server_link.hpp"
 
 #include "byte_stream.hpp"
-#include "tcp_address.hpp"
+#include "eposp/core/tcp_address.hpp"
 
 #include <boost/asio/ip/tcp.hpp>
 #include <chrono>
@@ -94,7 +94,7 @@ private:
     void serve(tcp::socket socket) {
         boost::system::error_code error;
         const auto remote = socket.remote_endpoint(error);
-        remote_ = error ? std::string("an unknown address") : format_endpoint(remote);
+        remote_ = error ? std::string("an unknown address") : core::format_endpoint(remote);
         // Each answer goes out as soon as it is sent, as on a serial line; a socket that refuses
         // the option only adds latency.
         socket.set_option(tcp::no_delay(true), error);
@@ -125,7 +125,7 @@ private:
 core::Result<std::unique_ptr<TcpServerLink>> TcpServerLink::open(core::EventLoop& loop,
                                                                  const std::string& address,
                                                                  TcpServerLinkOptions options) {
-    const auto parsed = parse_tcp_address(address);
+    const auto parsed = core::parse_tcp_address(address);
     if (!parsed) {
         return core::Error{parsed.error()};
     }
@@ -162,7 +162,7 @@ core::Result<std::unique_ptr<TcpServerLink>> TcpServerLink::open(core::EventLoop
 }
 
 TcpServerLink::TcpServerLink(std::shared_ptr<Impl> impl)
-    : impl_(std::move(impl)), name_(fmt::format("tcp {}", format_endpoint(impl_->local()))) {}
+    : impl_(std::move(impl)), name_(fmt::format("tcp {}", core::format_endpoint(impl_->local()))) {}
 
 TcpServerLink::~TcpServerLink() {
     impl_->stop();
@@ -183,7 +183,7 @@ std::uint16_t TcpServerLink::port() const {
 }
 
 std::string TcpServerLink::address() const {
-    return format_endpoint(impl_->local());
+    return core::format_endpoint(impl_->local());
 }
 
 bool TcpServerLink::host_connected() const {

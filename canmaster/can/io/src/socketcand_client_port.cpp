@@ -1,8 +1,8 @@
 #include "eposp/can/io/socketcand_client_port.hpp"
 
 #include "eposp/can/io/socketcand_protocol.hpp"
+#include "eposp/core/tcp_address.hpp"
 #include "outgoing_bytes.hpp"
-#include "tcp_address.hpp"
 
 #include <array>
 #include <boost/asio/connect.hpp>
@@ -98,7 +98,7 @@ private:
     std::string failure_;
     std::array<char, 4096> read_buffer_{};
     std::string input_;
-    std::string held_;      ///< frames sent before raw mode is on
+    std::string held_; ///< frames sent before raw mode is on
     OutgoingBytes outgoing_;
 };
 
@@ -305,7 +305,7 @@ void SocketcandClientPort::Connection::close() {
 core::Result<std::unique_ptr<SocketcandClientPort>>
 SocketcandClientPort::open(core::EventLoop& loop, const std::string& address,
                            const std::string& bus_name) {
-    const auto parsed = parse_listen_address(address);
+    const auto parsed = core::parse_tcp_address(address);
     if (!parsed) {
         return core::Error{
             fmt::format("'{}' is not an address to connect to (HOST:PORT)", address)};

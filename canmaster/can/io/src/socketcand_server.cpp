@@ -1,8 +1,8 @@
 #include "eposp/can/io/socketcand_server.hpp"
 
 #include "eposp/can/io/socketcand_protocol.hpp"
+#include "eposp/core/tcp_address.hpp"
 #include "socketcand_session.hpp"
-#include "tcp_address.hpp"
 
 #include <algorithm>
 #include <boost/asio/ip/tcp.hpp>
@@ -88,7 +88,8 @@ void SocketcandServer::Impl::on_accepted(boost::system::error_code error, tcp::s
 void SocketcandServer::Impl::turn_away(tcp::socket socket) {
     boost::system::error_code error;
     const auto endpoint = socket.remote_endpoint(error);
-    const std::string remote = error ? std::string("unknown address") : format_endpoint(endpoint);
+    const std::string remote =
+        error ? std::string("unknown address") : core::format_endpoint(endpoint);
     // The reply fits an empty send buffer; a non-blocking write never holds up the loop.
     socket.non_blocking(true, error);
     const std::string reply = socketcand::format_error("too many clients");
@@ -162,7 +163,7 @@ SocketcandServer::open(VirtualBus& bus, SocketcandServerConfig config) {
         return core::Error{"a socketcand server needs a transmit queue, room for a client and "
                            "time for it to open the bus"};
     }
-    const auto address = parse_listen_address(config.listen);
+    const auto address = core::parse_tcp_address(config.listen);
     if (!address) {
         return core::Error{
             fmt::format("'{}' is not an address to listen on (HOST:PORT)", config.listen)};
@@ -210,7 +211,7 @@ std::uint16_t SocketcandServer::port() const {
 }
 
 std::string SocketcandServer::address() const {
-    return format_endpoint(impl_->local());
+    return core::format_endpoint(impl_->local());
 }
 
 std::size_t SocketcandServer::client_count() const {

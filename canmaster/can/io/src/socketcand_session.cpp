@@ -1,6 +1,6 @@
 #include "socketcand_session.hpp"
 
-#include "tcp_address.hpp"
+#include "eposp/core/tcp_address.hpp"
 
 #include <boost/asio/post.hpp>
 #include <boost/asio/write.hpp>
@@ -40,7 +40,7 @@ SocketcandSession::SocketcandSession(boost::asio::ip::tcp::socket socket, std::s
       on_joined_(std::move(on_joined)), on_closed_(std::move(on_closed)) {
     boost::system::error_code error;
     const auto endpoint = socket_.remote_endpoint(error);
-    remote_ = error ? std::string("unknown address") : format_endpoint(endpoint);
+    remote_ = error ? std::string("unknown address") : core::format_endpoint(endpoint);
     // Tuning, which a socket that refuses it works without: each reply goes out as soon as it
     // is written (python-can reads the handshake replies one recv() each), and the kernel's
     // buffer stays small (see SocketcandServerConfig).

@@ -1,6 +1,6 @@
 #pragma once
 
-// Internal: the ADDR of `tcp:ADDR` as users write it.
+// TCP addresses as users write them on the command line and as messages show them.
 
 #include "eposp/core/result.hpp"
 
@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace eposp::service {
+namespace eposp::core {
 
 struct TcpAddress {
     std::string host;
@@ -17,9 +17,9 @@ struct TcpAddress {
 };
 
 /// "HOST:PORT", "[IPV6]:PORT", or "PORT" alone for 127.0.0.1.
-core::Result<TcpAddress> parse_tcp_address(std::string_view text);
+Result<TcpAddress> parse_tcp_address(std::string_view text);
 
 /// "127.0.0.1:4001", "[::1]:4001".
 std::string format_endpoint(const boost::asio::ip::tcp::endpoint& endpoint);
 
-} // namespace eposp::service
+} // namespace eposp::core
