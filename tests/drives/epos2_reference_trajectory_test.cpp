@@ -6,6 +6,7 @@
 #include "eposp/can/virtual_bus.hpp"
 #include "eposp/core/event_loop.hpp"
 #include "eposp/drives/epos2/epos2_drive.hpp"
+#include "eposp/test/moving_epos2_network.hpp"
 
 #include <chrono>
 #include <fmt/format.h>
@@ -161,6 +162,50 @@ TEST(Epos2ReferenceTrajectory, MoveReversalAndQuickStopGiveTheRecordedSamplesBit
     for (std::size_t i = 0; i < samples.size(); ++i) {
         EXPECT_EQ(samples[i], kReference[i]);
     }
+}
+
+/// FNV-1a, 64 bits.
+class Fnv1a {
+public:
+    void add(std::uint64_t value, int bytes = 8) {
+        for (int i = 0; i < bytes; ++i) {
+            hash_ = (hash_ ^ ((value >> (8 * i)) & 0xFF)) * 0x100000001B3ULL;
+        }
+    }
+    std::uint64_t value() const { return hash_; }
+
+private:
+    std::uint64_t hash_ = 0xCBF29CE484222325ULL;
+};
+
+// Eight drives moving on one virtual bus, every wire event (start and end of frame to the
+// nanosecond, identifier, data, sender) folded into one hash for 1.2 s of SYNC, TPDOs and
+// RPDOs. The speed work on the bus and the drives must not move one frame by a bit time nor
+// change one byte: a change of the bus or drive behaviour on purpose updates the figures (the
+// failure message prints the new hash).
+TEST(Epos2NetworkTrace, MovingDrivesGiveTheRecordedWireEvents) {
+    core::EventLoop loop;
+    test::MovingEpos2Network network(loop, 8);
+    Fnv1a hash;
+    std::uint64_t events = 0;
+    network.bus().add_observer([&](const can::WireEvent& event) {
+        ++events;
+        hash.add(static_cast<std::uint64_t>(event.start.time_since_epoch().count()));
+        hash.add(static_cast<std::uint64_t>(event.end.time_since_epoch().count()));
+        hash.add(event.frame.id, 4);
+        hash.add(event.frame.dlc, 1);
+        for (const std::uint8_t byte : event.frame.payload()) {
+            hash.add(byte, 1);
+        }
+        for (const char c : event.sender) {
+            hash.add(static_cast<std::uint8_t>(c), 1);
+        }
+    });
+    for (int millisecond = 0; millisecond < 1200; ++millisecond) {
+        network.run_millisecond();
+    }
+    EXPECT_EQ(events, 10896U);
+    EXPECT_EQ(hash.value(), 0xC1DA1CA6C7754EE9U) << std::hex << "0x" << hash.value();
 }
 
 } // namespace
