@@ -51,6 +51,14 @@ TimerId EventLoop::every(Duration period, Callback fn) {
     return every(period, now() + period, std::move(fn));
 }
 
+bool EventLoop::next_in_line() {
+    if (pace_ != Pace::Virtual || io_ || stop_requested_) {
+        return false;
+    }
+    const std::optional<TimePoint> next = timers_->next_time();
+    return !next || *next > now_;
+}
+
 bool EventLoop::cancel(TimerId id) {
     return timers_->cancel(id);
 }

@@ -132,6 +132,24 @@ TEST(EventLoop, StopReturnsAfterTheCurrentCallback) {
     EXPECT_EQ(runs, 6);
 }
 
+// The virtual bus arbitrates at once instead of posting when nothing could come in between.
+TEST(EventLoop, APostedCallIsNextInLineOnlyWhenNothingElseIsDueNow) {
+    EventLoop loop;
+    std::vector<bool> seen;
+    loop.at(TimePoint{1ms}, [&] { seen.push_back(loop.next_in_line()); }); // the next is due now
+    loop.at(TimePoint{1ms}, [&] {
+        seen.push_back(loop.next_in_line());                     // the next is at 2 ms
+        loop.post([&] { seen.push_back(loop.next_in_line()); }); // posted: due now
+        seen.push_back(loop.next_in_line());
+    });
+    loop.at(TimePoint{2ms}, [&] {
+        loop.stop();
+        seen.push_back(loop.next_in_line()); // the loop returns first
+    });
+    loop.run();
+    EXPECT_EQ(seen, (std::vector<bool>{false, true, false, true, false}));
+}
+
 TEST(EventLoop, RunReturnsWhenNoEventIsLeft) {
     EventLoop loop;
     loop.after(3s, [] {});

@@ -8,17 +8,16 @@ constexpr unsigned kReceiveCounterAfterPassive = 119;
 
 } // namespace
 
-ErrorState ErrorCounters::state() const {
+void ErrorCounters::update_state() {
     if (transmit_ > kBusOffAbove) {
-        return ErrorState::BusOff;
+        state_ = ErrorState::BusOff;
+    } else if (transmit_ > kErrorPassiveAbove || receive_ > kErrorPassiveAbove) {
+        state_ = ErrorState::Passive;
+    } else if (transmit_ >= kErrorWarningFrom || receive_ >= kErrorWarningFrom) {
+        state_ = ErrorState::Warning;
+    } else {
+        state_ = ErrorState::Active;
     }
-    if (transmit_ > kErrorPassiveAbove || receive_ > kErrorPassiveAbove) {
-        return ErrorState::Passive;
-    }
-    if (transmit_ >= kErrorWarningFrom || receive_ >= kErrorWarningFrom) {
-        return ErrorState::Warning;
-    }
-    return ErrorState::Active;
 }
 
 void ErrorCounters::transmit_error(bool ack_error) {
@@ -26,15 +25,18 @@ void ErrorCounters::transmit_error(bool ack_error) {
         return;
     }
     transmit_ += kTransmitErrorStep;
+    update_state();
 }
 
 void ErrorCounters::receive_error() {
     ++receive_;
+    update_state();
 }
 
 void ErrorCounters::transmit_success() {
     if (transmit_ > 0) {
         --transmit_;
+        update_state();
     }
 }
 
@@ -43,12 +45,16 @@ void ErrorCounters::receive_success() {
         receive_ = kReceiveCounterAfterPassive;
     } else if (receive_ > 0) {
         --receive_;
+    } else {
+        return; // the common case: nothing to count down
     }
+    update_state();
 }
 
 void ErrorCounters::reset() {
     transmit_ = 0;
     receive_ = 0;
+    update_state();
 }
 
 void ErrorCounters::force(ErrorState state) {
@@ -67,6 +73,7 @@ void ErrorCounters::force(ErrorState state) {
         transmit_ = kBusOffAbove + 1;
         break;
     }
+    update_state();
 }
 
 } // namespace eposp::can

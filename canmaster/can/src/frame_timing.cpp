@@ -106,32 +106,9 @@ StuffedBits stuff(const BitSequence& bits) {
 
 namespace {
 
-// frame_length() runs for every frame the virtual bus carries, so it works a byte at a time:
-// the bits are packed into bytes, the CRC and the stuffing are table-driven. The test checks it
-// against the bit-level stuff(unstuffed_bits()).
-
-/// The bits in wire order, most significant first: whole bytes, then fewer than 8 tail bits.
-class PackedBits {
-public:
-    void append(std::uint32_t value, unsigned width) {
-        accumulator_ = (accumulator_ << width) | (value & ((std::uint64_t{1} << width) - 1));
-        tail_bits_ += width;
-        while (tail_bits_ >= 8) {
-            tail_bits_ -= 8;
-            bytes_[size_++] = static_cast<std::uint8_t>(accumulator_ >> tail_bits_);
-        }
-    }
-    std::span<const std::uint8_t> bytes() const { return {bytes_.data(), size_}; }
-    unsigned tail_bits() const { return tail_bits_; }
-    /// Tail bit `i` (0 = the first of the tail).
-    bool tail_bit(unsigned i) const { return ((accumulator_ >> (tail_bits_ - 1 - i)) & 1U) != 0; }
-
-private:
-    std::array<std::uint8_t, (kMaxUnstuffedBits + 7) / 8> bytes_{};
-    std::size_t size_ = 0;
-    std::uint64_t accumulator_ = 0;
-    unsigned tail_bits_ = 0;
-};
+// frame_length() runs for every frame the virtual bus carries, so it takes the bits in chunks:
+// the CRC and the stuffing are table-driven. The test checks it against the bit-level
+// stuff(unstuffed_bits()).
 
 // CRC-15 eight bits at a time: entry b is the register b << 7 after eight steps with zero input.
 constexpr std::array<std::uint16_t, 256> kCrc15Table = [] {
@@ -146,64 +123,101 @@ constexpr std::array<std::uint16_t, 256> kCrc15Table = [] {
     return table;
 }();
 
-std::uint16_t packed_crc15(const PackedBits& bits) {
-    std::uint16_t crc = 0;
-    for (const std::uint8_t byte : bits.bytes()) {
-        crc = static_cast<std::uint16_t>(((crc << 8) & kCrc15Mask) ^
-                                         kCrc15Table[((crc >> 7) ^ byte) & 0xFFU]);
-    }
-    for (unsigned i = 0; i < bits.tail_bits(); ++i) {
-        crc = crc15_step(crc, bits.tail_bit(i));
-    }
-    return crc;
-}
-
-// unstuffed_bits(), packed.
-PackedBits packed_unstuffed_bits(const Frame& frame) {
-    PackedBits bits;
-    append_frame_fields(bits, frame);
-    bits.append(packed_crc15(bits), 15);
-    return bits;
-}
-
 constexpr unsigned kStuffStates = 10;
 
-/// Per state and byte: the state after the byte (low 4 bits) and the stuff bits it took.
-constexpr std::array<std::uint8_t, kStuffStates* 256> kStuffTable = [] {
-    std::array<std::uint8_t, kStuffStates * 256> table{};
+/// Per stuffing state and chunk of `Bits` bits: the state after the chunk (low 4 bits) and the
+/// stuff bits it took.
+template <unsigned Bits>
+constexpr std::array<std::uint8_t, (kStuffStates << Bits)> stuff_table() {
+    std::array<std::uint8_t, (kStuffStates << Bits)> table{};
     for (unsigned code = 0; code < kStuffStates; ++code) {
-        for (unsigned byte = 0; byte < 256; ++byte) {
+        for (unsigned chunk = 0; chunk < (1U << Bits); ++chunk) {
             StuffState state{.last = code >= 5, .run = code % 5};
             unsigned stuffed = 0;
-            for (unsigned bit = 8; bit-- > 0;) {
-                stuffed += state.send(((byte >> bit) & 1U) != 0) ? 1U : 0U;
+            for (unsigned bit = Bits; bit-- > 0;) {
+                stuffed += state.send(((chunk >> bit) & 1U) != 0) ? 1U : 0U;
             }
-            table[code * 256 + byte] = static_cast<std::uint8_t>(state.code() | stuffed << 4);
+            table[(code << Bits) + chunk] = static_cast<std::uint8_t>(state.code() | stuffed << 4);
         }
     }
     return table;
-}();
+}
+constexpr auto kStuffTable8 = stuff_table<8>();
+/// The odd chunks ahead of whole bytes: a standard header (19 bits), an extended header (39)
+/// and the CRC sequence (15).
+constexpr auto kStuffTable7 = stuff_table<7>();
+constexpr auto kStuffTable3 = stuff_table<3>();
+
+/// The CRC register and the stuffing state over the bits sent so far.
+class WireCounter {
+public:
+    /// The low `width` bits of `value` (19, 39 or 15; or 8), most significant first, through the
+    /// stuffing; the CRC covers them when asked. Zeros ahead of the bits leave a CRC register of
+    /// 0 unchanged, so the CRC takes the value as whole bytes while it is still 0 (the header).
+    void send(std::uint64_t value, unsigned width, bool covered_by_crc) {
+        const unsigned lead = width % 8;
+        if (lead == 7) {
+            stuff(kStuffTable7[(code_ << 7) + (value >> (width - 7) & 0x7FU)]);
+        } else if (lead == 3) {
+            stuff(kStuffTable3[(code_ << 3) + (value >> (width - 3) & 0x7U)]);
+        }
+        for (unsigned bit = width - lead; bit > 0; bit -= 8) {
+            stuff(kStuffTable8[(code_ << 8) + (value >> (bit - 8) & 0xFFU)]);
+        }
+        if (covered_by_crc) {
+            for (unsigned bit = width + (8 - lead) % 8; bit > 0; bit -= 8) {
+                crc_byte(static_cast<std::uint8_t>(value >> (bit - 8)));
+            }
+        }
+        sent_ += width;
+    }
+
+    std::uint16_t crc() const { return crc_; }
+    FrameLength length() const {
+        return {.stuffed = sent_ + stuff_bits_,
+                .stuff_bits = stuff_bits_,
+                // The run that ends the output is the trailing one; recessive bits are 1.
+                .trailing_recessive = code_ >= 5 ? code_ % 5 : 0};
+    }
+
+private:
+    void stuff(std::uint8_t entry) {
+        code_ = entry & 0x0FU;
+        stuff_bits_ += entry >> 4;
+    }
+    void crc_byte(std::uint8_t byte) {
+        crc_ = static_cast<std::uint16_t>(((crc_ << 8) & kCrc15Mask) ^
+                                          kCrc15Table[((crc_ >> 7) ^ byte) & 0xFFU]);
+    }
+
+    std::uint16_t crc_ = 0;
+    unsigned code_ = 0; ///< StuffState::code()
+    std::size_t stuff_bits_ = 0;
+    std::size_t sent_ = 0; ///< bits before stuffing
+};
 
 } // namespace
 
+// The fields of append_frame_fields() packed into one word: SOF and the arbitration and control
+// fields are 19 bits in a standard frame, 39 in an extended one.
 FrameLength frame_length(const Frame& frame) {
-    const PackedBits bits = packed_unstuffed_bits(frame);
-    std::size_t stuff_bits = 0;
-    unsigned code = 0;
-    for (const std::uint8_t byte : bits.bytes()) {
-        const std::uint8_t entry = kStuffTable[code * 256 + byte];
-        code = entry & 0x0FU;
-        stuff_bits += entry >> 4;
+    assert(frame.valid());
+    const std::uint64_t rtr = frame.remote ? 1 : 0;
+    WireCounter wire;
+    if (frame.extended) {
+        // SOF 0, base identifier, SRR 1, IDE 1, identifier extension, RTR, r1 0, r0 0, DLC.
+        wire.send(std::uint64_t{frame.id >> 18} << 27 | std::uint64_t{3} << 25 |
+                      std::uint64_t{frame.id & 0x3FFFF} << 7 | rtr << 6 | frame.dlc,
+                  39, true);
+    } else {
+        // SOF 0, identifier, RTR, IDE 0, r0 0, DLC.
+        wire.send(std::uint64_t{frame.id} << 7 | rtr << 6 | frame.dlc, 19, true);
     }
-    StuffState state{.last = code >= 5, .run = code % 5};
-    for (unsigned i = 0; i < bits.tail_bits(); ++i) {
-        stuff_bits += state.send(bits.tail_bit(i)) ? 1U : 0U;
+    for (const std::uint8_t byte : frame.payload()) {
+        wire.send(byte, 8, true);
     }
-    const std::size_t unstuffed = bits.bytes().size() * 8 + bits.tail_bits();
-    return {.stuffed = unstuffed + stuff_bits,
-            .stuff_bits = stuff_bits,
-            // The run that ends the output is the trailing one; recessive bits are 1.
-            .trailing_recessive = state.last ? state.run : 0};
+    wire.send(wire.crc(), 15, false);
+    return wire.length();
 }
 
 core::Duration bit_duration(std::uint32_t bitrate) {

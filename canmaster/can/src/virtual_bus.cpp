@@ -231,10 +231,12 @@ void VirtualBus::Impl::start(VirtualPort::Impl& sender, const Frame& next) {
     const Timeline timeline = timeline_of(outcome, length, dominant_error_flag(sender, outcome));
     const core::TimePoint now = loop.now();
 
-    count_recessive_runs(now);
+    // A recovering controller counts the recessive stretch this frame ends and waits on the next.
+    const core::TimePoint stretch_start = recessive_since;
     recessive_since = at_bit(now, timeline.recessive_from);
     for (VirtualPort* port : ports) {
         if (port->impl_->recovering) {
+            count_recessive_runs(*port->impl_, stretch_start, now);
             schedule_recovery(*port->impl_);
         }
     }
@@ -360,16 +362,19 @@ void VirtualBus::Impl::finish() {
         transmission.sender->counters.state() == ErrorState::Passive) {
         transmission.sender->suspended_until = at_bit(loop.now(), kSuspendTransmissionBits);
     }
-    request_arbitration();
+    // The deferred arbitration would run next anyway when nothing else is due now: the frames
+    // that compete are the same, and the bus saves an event per frame.
+    if (loop.next_in_line()) {
+        arbitrate();
+    } else {
+        request_arbitration();
+    }
 }
 
 // --- fault confinement --------------------------------------------------------------------
 
-void VirtualBus::Impl::settle_state(VirtualPort::Impl& port, ErrorState before) {
+void VirtualBus::Impl::change_state(VirtualPort::Impl& port, ErrorState before) {
     const ErrorState after = port.counters.state();
-    if (after == before) {
-        return;
-    }
     if (before == ErrorState::BusOff) {
         port.recovering = false;
         port.recovery_timer.cancel();
@@ -392,14 +397,13 @@ void VirtualBus::Impl::start_recovery(VirtualPort::Impl& port) {
 
 // A recovering controller counts the runs of 11 recessive bits in each stretch of recessive
 // bus that ends with a start of frame; the stretch in progress decides when it is done.
-void VirtualBus::Impl::count_recessive_runs(core::TimePoint start_of_frame) {
+void VirtualBus::Impl::count_recessive_runs(VirtualPort::Impl& controller,
+                                            core::TimePoint stretch_start,
+                                            core::TimePoint start_of_frame) const {
     const core::Duration run = bit * static_cast<std::int64_t>(kRecessiveRunBits);
-    for (VirtualPort* port : ports) {
-        VirtualPort::Impl& controller = *port->impl_;
-        const core::TimePoint from = std::max(recessive_since, controller.counting_from);
-        if (controller.recovering && start_of_frame > from) {
-            controller.recessive_runs += static_cast<std::uint64_t>((start_of_frame - from) / run);
-        }
+    const core::TimePoint from = std::max(stretch_start, controller.counting_from);
+    if (start_of_frame > from) {
+        controller.recessive_runs += static_cast<std::uint64_t>((start_of_frame - from) / run);
     }
 }
 

@@ -92,7 +92,11 @@ public:
         }
         return before;
     }
-    void settle_state(VirtualPort::Impl& port, ErrorState before);
+    void settle_state(VirtualPort::Impl& port, ErrorState before) {
+        if (port.counters.state() != before) { // rare: inline the test, not the change
+            change_state(port, before);
+        }
+    }
     void start_recovery(VirtualPort::Impl& port);
 
     core::EventLoop& loop;
@@ -129,7 +133,11 @@ private:
     void transmitted(Transmission& transmission);
     template <typename Visit>
     void for_each_receiver(const Transmission& transmission, Visit visit);
-    void count_recessive_runs(core::TimePoint start_of_frame);
+    void change_state(VirtualPort::Impl& port, ErrorState before);
+    /// The runs of 11 recessive bits from `stretch_start` (or later, when the controller began
+    /// counting) to a start of frame.
+    void count_recessive_runs(VirtualPort::Impl& controller, core::TimePoint stretch_start,
+                              core::TimePoint start_of_frame) const;
     void schedule_recovery(VirtualPort::Impl& port);
     void compact_ports();
     core::TimePoint at_bit(core::TimePoint start, std::size_t bits) const;

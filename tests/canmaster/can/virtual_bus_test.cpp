@@ -134,6 +134,20 @@ TEST_F(VirtualBusTest, FramesQueuedAtTheSameInstantAllCompete) {
     EXPECT_EQ(wire.events[0].start, at_us(100));
 }
 
+// The arbitration where a frame's intermission ends takes the frames queued at that instant by
+// the events that run before it, those scheduled while the frame was on the wire included.
+TEST_F(VirtualBusTest, FramesQueuedWhereTheBusBecomesFreeAllCompete) {
+    auto a = bus.connect("a");
+    auto b = bus.connect("b");
+    auto c = bus.connect("c");
+    a->send(kZeroFrame); // the bus is free again at 53 us
+    loop.at(at_us(53), [&] { b->send(Frame::data_frame(0x300, {})); });
+    loop.at(at_us(51), [&] { loop.at(at_us(53), [&] { c->send(Frame::data_frame(0x100, {})); }); });
+    loop.run();
+    EXPECT_EQ(wire.ids(), (std::vector<std::uint32_t>{0x000, 0x100, 0x300}));
+    EXPECT_EQ(wire.events[1].start, at_us(53));
+}
+
 TEST_F(VirtualBusTest, FrameQueuedWhileBusyStartsAfterTheIntermission) {
     auto a = bus.connect("a");
     auto b = bus.connect("b");

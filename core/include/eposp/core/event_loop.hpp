@@ -55,6 +55,10 @@ public:
     TimerId every(Duration period, Callback fn);
     /// Runs `fn` now, after the events already due (a deferred call).
     TimerId post(Callback fn) { return after(Duration::zero(), std::move(fn)); }
+    /// From a callback: whether a call post()ed now would run right after it, with nothing in
+    /// between (virtual pace, no other event due now, no I/O to poll, no stop() pending). The
+    /// callback may then make the call itself and save an event (the virtual bus arbitrates so).
+    bool next_in_line();
 
     /// Cancels a pending timer; safe from within its own callback. Returns false when the timer
     /// already ran (one-shot) or was cancelled before.

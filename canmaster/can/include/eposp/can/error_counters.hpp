@@ -20,7 +20,8 @@ class ErrorCounters {
 public:
     unsigned transmit() const { return transmit_; }
     unsigned receive() const { return receive_; }
-    ErrorState state() const;
+    /// Kept with the counters: the bus asks for it several times per port and frame.
+    ErrorState state() const { return state_; }
 
     /// A transmitter that sends an error flag adds 8. The exception: an error-passive
     /// transmitter that detects an ACK error (and no dominant bit in its passive error flag)
@@ -40,8 +41,11 @@ public:
     void force(ErrorState state);
 
 private:
+    void update_state();
+
     unsigned transmit_ = 0;
     unsigned receive_ = 0;
+    ErrorState state_ = ErrorState::Active;
 };
 
 } // namespace eposp::can
