@@ -99,6 +99,27 @@ TEST(ServoAxis, EcMotorReportsHallSensorsAndIndex) {
     EXPECT_EQ(index_pulses, axis.position_actual() / 2000);
 }
 
+// The axis tracks the revolution it is in instead of dividing at every step: its index pulses
+// are those of the readings, forwards and backwards across zero.
+TEST(ServoAxis, IndexPulsesWhereTheReadingsCrossARevolution) {
+    ServoAxis axis(test::tuned_axis());
+    axis.set_mode(ControlMode::Position);
+    int pulses = 0;
+    std::int64_t lowest = 0;
+    for (const double target : {5000.0, -7000.0, 2500.0}) {
+        axis.set_demand({.position = target});
+        for (int i = 0; i < 4000; ++i) {
+            const std::int64_t before = axis.position_actual();
+            axis.step();
+            ASSERT_EQ(axis.index_passed(), index_passed(before, axis.position_actual(), 500));
+            pulses += axis.index_passed() ? 1 : 0;
+            lowest = std::min(lowest, axis.position_actual());
+        }
+    }
+    EXPECT_LT(lowest, -6000);
+    EXPECT_GE(pulses, 13); // at least 2000, 4000; 4000 … -6000 back; -6000 … 2000 again
+}
+
 TEST(ServoAxis, SwitchesTripWhereTheAxisIs) {
     AxisParameters parameters = test::tuned_axis();
     parameters.switches = {-500, 4000, 1000, true, std::nullopt};

@@ -24,20 +24,10 @@ void I2tCurrentLimit::set_parameters(const I2tParameters& parameters) {
     winding_.set_parameters(normalised_winding(parameters));
 }
 
-void I2tCurrentLimit::update(double current, double dt) {
-    if (parameters_.continuous_current <= 0) {
-        // no continuous current at all: limited to 0 at once
-        winding_.set_temperature(current == 0 ? 0 : 1);
-        limiting_ = current != 0;
-        return;
-    }
-    const double ratio = current / parameters_.continuous_current;
-    winding_.step(ratio * ratio, dt);
-    if (level() >= 1) {
-        limiting_ = true;
-    } else if (level() < parameters_.release_level) {
-        limiting_ = false;
-    }
+// No continuous current at all: limited to 0 at once.
+void I2tCurrentLimit::hold_without_continuous_current(double current) {
+    winding_.set_temperature(current == 0 ? 0 : 1);
+    limiting_ = current != 0;
 }
 
 double I2tCurrentLimit::limit() const {

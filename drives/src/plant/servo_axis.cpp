@@ -30,7 +30,8 @@ ServoAxis::ServoAxis(const AxisParameters& parameters)
                           parameters.plant.power_stage.max_voltage()),
       velocity_controller_(velocity_law(parameters.gains), parameters.gains.current_limit),
       position_controller_(position_law(parameters.gains), parameters.gains.current_limit),
-      current_limit_(parameters.gains.current_limit) {}
+      current_limit_(parameters.gains.current_limit),
+      revolution_(revolution_of(position_, parameters.encoder_pulses)) {}
 
 void ServoAxis::reconfigure(const AxisParameters& parameters) {
     const MotorState state = motor_.state();
@@ -51,6 +52,7 @@ void ServoAxis::reconfigure(const AxisParameters& parameters) {
         position -
         static_cast<std::int64_t>(static_cast<double>(position_ - position_at_outer_loop_) * scale);
     position_ = position;
+    revolution_ = revolution_of(position_, parameters.encoder_pulses);
 }
 
 void ServoAxis::reduce_current_limit(double amperes) {
@@ -97,9 +99,11 @@ void ServoAxis::step() {
         const double error = current_demand_ - motor_.state().current;
         motor_.step(current_controller_.update(error, kCurrentLoopPeriod));
     }
-    const std::int64_t previous = position_;
     position_ = quadcounts(motor_.state().angle, parameters_.encoder_pulses);
-    index_passed_ = plant::index_passed(previous, position_, parameters_.encoder_pulses);
+    index_passed_ = !revolution_.holds(position_);
+    if (index_passed_) {
+        revolution_ = revolution_of(position_, parameters_.encoder_pulses);
+    }
 }
 
 void ServoAxis::run_outer_loop() {

@@ -15,26 +15,15 @@ std::int64_t floor_div(std::int64_t value, std::int64_t divisor) {
 
 } // namespace
 
-std::int64_t counts_per_turn(int encoder_pulses) {
-    return 4 * std::int64_t{encoder_pulses};
-}
-
-// Both run at every 0.1 ms step of every axis: floor without the libm call, and no division
-// while the shaft stands.
-std::int64_t quadcounts(double motor_angle, int encoder_pulses) {
-    const double turns = motor_angle / (2 * std::numbers::pi);
-    const double counts = turns * static_cast<double>(counts_per_turn(encoder_pulses));
-    const auto truncated = static_cast<std::int64_t>(counts);
-    return static_cast<double>(truncated) > counts ? truncated - 1 : truncated;
+Revolution revolution_of(std::int64_t count, int encoder_pulses) {
+    const std::int64_t turn = counts_per_turn(encoder_pulses);
+    const std::int64_t first = floor_div(count, turn) * turn;
+    return {.first = first, .end = first + turn};
 }
 
 bool index_passed(std::int64_t before, std::int64_t after, int encoder_pulses) {
-    if (before == after) {
-        return false;
-    }
-    const std::int64_t turn = counts_per_turn(encoder_pulses);
     // The index sits at the boundary count; crossing it either way changes the revolution.
-    return floor_div(before, turn) != floor_div(after, turn);
+    return before != after && !revolution_of(before, encoder_pulses).holds(after);
 }
 
 std::uint8_t hall_pattern(double motor_angle, int pole_pairs) {

@@ -31,16 +31,9 @@ void ThermalModel::set_parameters(const ThermalParameters& parameters) {
     gain_dt_ = 0;
 }
 
-double ThermalModel::steady_state_temperature(double power) const {
-    return parameters_.ambient_temperature + power * parameters_.thermal_resistance;
-}
-
-void ThermalModel::step(double power, double dt) {
-    if (dt != gain_dt_) {
-        gain_dt_ = dt;
-        gain_ = -std::expm1(-dt / parameters_.time_constant);
-    }
-    temperature_ += (steady_state_temperature(power) - temperature_) * gain_;
+void ThermalModel::set_step(double dt) {
+    gain_dt_ = dt;
+    gain_ = -std::expm1(-dt / parameters_.time_constant);
 }
 
 } // namespace eposp::drives::plant

@@ -98,6 +98,9 @@ private:
     double reduced_current_limit_ = 0; ///< reduce_current_limit(), 0: none
     double current_limit_ = 0;         ///< in force: the smaller of the two
     std::int64_t position_ = 0;
+    /// The revolution position_ lies in: the index test of every step is two comparisons, the
+    /// divisions only when the shaft enters another revolution.
+    Revolution revolution_;
     std::int64_t position_at_outer_loop_ = 0;
     double velocity_ = 0;
     bool index_passed_ = false;

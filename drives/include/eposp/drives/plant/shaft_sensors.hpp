@@ -1,16 +1,34 @@
 #pragma once
 
 #include <cstdint>
+#include <numbers>
 #include <optional>
 
 namespace eposp::drives::plant {
 
 /// EPOS2 FW spec 3.3.1: positions are quadcounts, 4 × encoder pulses per revolution (0x2210).
-std::int64_t counts_per_turn(int encoder_pulses);
+inline std::int64_t counts_per_turn(int encoder_pulses) {
+    return 4 * std::int64_t{encoder_pulses};
+}
 
 /// The quadcount reading of an incremental encoder on the motor shaft: the angle quantised
-/// downwards to whole counts, zero at angle zero.
-std::int64_t quadcounts(double motor_angle, int encoder_pulses);
+/// downwards to whole counts, zero at angle zero. Inline, as every 0.1 ms step of every axis
+/// reads it: floor without the libm call.
+inline std::int64_t quadcounts(double motor_angle, int encoder_pulses) {
+    const double turns = motor_angle / (2 * std::numbers::pi);
+    const double counts = turns * static_cast<double>(counts_per_turn(encoder_pulses));
+    const auto truncated = static_cast<std::int64_t>(counts);
+    return static_cast<double>(truncated) > counts ? truncated - 1 : truncated;
+}
+
+/// The encoder revolution that holds a count: from a multiple of counts_per_turn up to the next.
+/// The index channel pulses where a reading leaves it.
+struct Revolution {
+    std::int64_t first = 0;
+    std::int64_t end = 0; ///< one past its last count
+    bool holds(std::int64_t count) const { return count >= first && count < end; }
+};
+Revolution revolution_of(std::int64_t count, int encoder_pulses);
 
 /// Whether the index channel pulsed between two readings: once per revolution, where the count
 /// is a multiple of counts_per_turn.

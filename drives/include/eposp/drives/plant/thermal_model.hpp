@@ -31,15 +31,25 @@ public:
     void set_parameters(const ThermalParameters& parameters);
     const ThermalParameters& parameters() const { return parameters_; }
 
-    /// `power` W dissipated during the last `dt` s.
-    void step(double power, double dt);
+    /// `power` W dissipated during the last `dt` s. Inline: an I²t limitation steps its winding
+    /// every 0.1 ms.
+    void step(double power, double dt) {
+        if (dt != gain_dt_) {
+            set_step(dt);
+        }
+        temperature_ += (steady_state_temperature(power) - temperature_) * gain_;
+    }
     double temperature() const { return temperature_; }
     /// The temperature `power` W would hold the body at in the end.
-    double steady_state_temperature(double power) const;
+    double steady_state_temperature(double power) const {
+        return parameters_.ambient_temperature + power * parameters_.thermal_resistance;
+    }
     /// Sets the temperature (a body cooled or heated from outside, a test's starting point).
     void set_temperature(double temperature) { temperature_ = temperature; }
 
 private:
+    void set_step(double dt);
+
     ThermalParameters parameters_;
     double temperature_ = parameters_.ambient_temperature;
     double gain_dt_ = 0; ///< the step the gain was computed for: one exp per step length
