@@ -111,17 +111,7 @@ TEST_F(Epos2DriveOnBus, ExecutedAnalogSetpointWithoutAnInputLeavesTheSettingValu
     EXPECT_EQ(drive.objects().get_as<std::int32_t>(0x606B, 0), 300);
 }
 
-class AnalogConfiguration : public Epos2DriveOnBus {
-public:
-    std::optional<canopen::AbortCode> try_write(std::uint16_t index, std::uint8_t sub,
-                                                canopen::Bytes value) {
-        std::optional<canopen::AbortCode> result;
-        client.download(kNode, index, sub, std::move(value),
-                        [&result](canopen::AbortCode code) { result = code; });
-        loop.run_for(20ms);
-        return result;
-    }
-};
+class AnalogConfiguration : public Epos2DriveOnBus {};
 
 // 8.2.62, 8.2.81 - 8.2.83: "Changes are only supported in Disable state": refused with 0x08000022
 // (table 4-12, wrong device state) while the power stage is on, accepted again once it is off.

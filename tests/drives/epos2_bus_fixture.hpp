@@ -81,12 +81,18 @@ public:
         }
     }
 
-    void write(std::uint16_t index, std::uint8_t sub, canopen::Bytes value) {
+    /// An SDO download: the drive's answer (nullopt: none within 20 ms).
+    std::optional<AbortCode> try_write(std::uint16_t index, std::uint8_t sub,
+                                       canopen::Bytes value) {
         std::optional<AbortCode> result;
         client.download(kNode, index, sub, std::move(value),
                         [&result](AbortCode code) { result = code; });
         loop.run_for(20ms);
-        ASSERT_EQ(result, AbortCode::None) << fmt::format("0x{:04X} sub {}", index, sub);
+        return result;
+    }
+    void write(std::uint16_t index, std::uint8_t sub, canopen::Bytes value) {
+        ASSERT_EQ(try_write(index, sub, std::move(value)), AbortCode::None)
+            << fmt::format("0x{:04X} sub {}", index, sub);
     }
     template <typename T>
     T read(std::uint16_t index, std::uint8_t sub) {

@@ -33,14 +33,6 @@ public:
         write(0x607F, 0, encode(std::uint32_t{1000}));
         write(0x60C5, 0, encode(std::uint32_t{10000}));
     }
-    std::optional<AbortCode> try_write(std::uint16_t index, std::uint8_t sub,
-                                       canopen::Bytes value) {
-        std::optional<AbortCode> result;
-        client.download(kNode, index, sub, std::move(value),
-                        [&result](AbortCode code) { result = code; });
-        loop.run_for(20ms);
-        return result;
-    }
     std::int32_t position() { return drive.objects().get_as<std::int32_t>(0x6064, 0); }
     std::int32_t velocity_rpm() { return drive.objects().get_as<std::int32_t>(0x606C, 0); }
     std::int16_t current_ma() { return drive.objects().get_as<std::int16_t>(0x6078, 0); }

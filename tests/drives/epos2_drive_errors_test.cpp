@@ -166,6 +166,23 @@ TEST_F(Epos2DriveErrors, TransmitQueueOverflowRaises81FF) {
     EXPECT_EQ(drive.state(), motion::DriveState::Fault) << "0x6007 = 3: quickstop, then Fault";
 }
 
+// 4.2.20, 4.1: the EMCY of 0x81FF meets the transmit queue it reports full; it waits and leaves
+// once the queue has room, so that the master learns of the lost frames.
+TEST_F(Epos2DriveErrors, TransmitQueueOverflowEmcyLeavesOnceTheQueueHasRoom) {
+    configure_and_enable(1);
+    start_long_move(*this);
+    write(0x1017, 0, encode(std::uint16_t{1})); // heartbeat every ms
+    master->babble(can::Frame::data_frame(0x001, {0}));
+    loop.run_for(100ms);
+    ASSERT_TRUE(emcys.empty()) << "nothing of the drive passes the babbling idiot";
+    master->stop_babbling();
+    const double stopped = now();
+    run_with_sync(20ms);
+    ASSERT_EQ(emcys.size(), 1U);
+    EXPECT_GE(emcy_times.front(), stopped);
+    expect_emcy(*this, 0x81FF, 0x10);
+}
+
 // 4.2.7: "Temperature at device's power stage too high". The power stage off dissipates
 // nothing, so its temperature follows the ambient as the first-order body of the defaults
 // (PowerStageThermal: τ = 60 s, limit 100 °C): 110 − 85·e^(−t/τ) passes 100 °C at

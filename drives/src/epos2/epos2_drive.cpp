@@ -11,6 +11,8 @@
 #include "modes/mode_behaviour.hpp"
 #include "modes/mode_table.hpp"
 #include "sensor_supervision.hpp"
+#include "velocity_units.hpp"
+#include "write_rules.hpp"
 
 #include <algorithm>
 #include <array>
@@ -47,6 +49,7 @@ constexpr std::uint16_t kEncoder1WithIndex = 1;
 constexpr std::uint16_t kEncoder1WithoutIndex = 2;
 // 8.2.41, table 8-83: "Disable sensor supervision by hardware".
 constexpr std::uint16_t kNoHardwareSupervisionBit = 1U << 1;
+constexpr std::uint16_t kInversePolarityBit = 1U << 8;
 
 // Table 4-11: CAN errors (0x81xx, 0x82xx) are "a" errors, reacting after 0x6007.
 bool is_communication_error(std::uint16_t code) {
@@ -54,6 +57,9 @@ bool is_communication_error(std::uint16_t code) {
 }
 
 constexpr std::chrono::microseconds kControlPeriod{1000};
+
+// CiA 301 7.3.5: a COB-ID's CAN identifier (bits 0 … 28; bit 29 the frame format, 31 invalid).
+constexpr std::uint32_t kCanIdMask = 0x1FFF'FFFF;
 
 // Table 8-81: the codes of the bit rates (5 and 8 are not used).
 std::uint16_t can_bit_rate_code(std::uint32_t bit_rate) {
@@ -66,13 +72,14 @@ std::uint16_t can_bit_rate_code(std::uint32_t bit_rate) {
 } // namespace
 
 Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig config)
-    : loop_(loop), dictionary_(with_restore_rule(std::move(config.dictionary), *this)),
+    : loop_(loop), port_(port), dictionary_(with_restore_rule(std::move(config.dictionary), *this)),
       node_(loop, port, dictionary_.objects(), dictionary_.node_config()), machine_(config.axis),
       axis_(config.axis), power_stage_temperature_(config.power_stage_thermal),
       mode_services_(std::make_unique<ModeServices>(ModeServices{
           .objects = dictionary_.objects(),
           .outputs = dictionary_.objects(),
           .counts_per_turn = counts_per_turn_,
+          .rpm_per_velocity_unit = rpm_per_velocity_unit_,
           .digital_position_counter = digital_position_counter_,
           .raise_device_error = [this](std::uint16_t code) { raise_device_error(code); },
           .homing = homing_,
@@ -86,14 +93,18 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     write_axis_defaults(dictionary_.objects(), machine_);
     configure_axis();
     read_counts_per_turn();
+    read_units_and_polarity();
     io_ = std::make_unique<Epos2Io>(dictionary_.objects());
     sensor_supervision_ = std::make_unique<SensorSupervision>();
     read_sensor_configuration();
     watch_dictionary();
     compute_measured_values();
     compute_analog_setpoints(dictionary_.objects());
-    guard_analog_configuration(dictionary_.objects(),
-                               [this] { return device_control_.outputs().power_stage_on; });
+    // 8.2.62 and the "Disable state" objects: refused while the power stage is on.
+    guard_disable_state_objects(dictionary_.objects(),
+                                [this] { return device_control_.outputs().power_stage_on; });
+    guard_analog_input_assignment(dictionary_.objects());
+    guard_gear_configuration(dictionary_.objects());
     node_.on_reset_application([this] { reset_application(); });
     // The remote bit changes with the NMT state, between two control periods: stored at once, so
     // that the first TPDO in Operational carries it.
@@ -113,11 +124,22 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     });
     // 4.2.19, 4.2.20: the controller's receive and transmit queues are the virtual bus port's
     // (the spec gives no sizes for the EPOS2's). Raised at the next control period: a transmit
-    // overflow is heard inside a send, where an EMCY would be sent again.
+    // overflow is heard inside a send, where an EMCY would be sent again. An EMCY the full queue
+    // refused is kept: the error is reported once the queue has room (4.1: an EMCY "per error
+    // event"), not lost with the frames that caused it.
     if (auto* virtual_port = dynamic_cast<can::VirtualPort*>(&port)) {
-        virtual_port->on_overflow([this](can::Overflow overflow, const can::Frame&) {
-            queue_overflow_ = overflow == can::Overflow::Receive ? kCanRxQueueOverflowErrorCode
-                                                                 : kCanTxQueueOverflowErrorCode;
+        virtual_port->on_overflow([this](can::Overflow overflow, const can::Frame& lost) {
+            if (overflow == can::Overflow::Receive) {
+                queue_overflow_ = kCanRxQueueOverflowErrorCode;
+                return;
+            }
+            queue_overflow_ = kCanTxQueueOverflowErrorCode;
+            const auto emcy_id =
+                dictionary_.objects().get_as<std::uint32_t>(0x1014, 0) & kCanIdMask;
+            if (lost.id == emcy_id && !resending_emcys_ &&
+                refused_emcys_.size() < canopen::EmcyProducer::kMaxPending) {
+                refused_emcys_.push_back(lost);
+            }
         });
     }
 }
@@ -195,7 +217,7 @@ void Epos2Drive::compute_measured_values() {
         return std::lround(value);
     };
     // The raw counter register (8.2.44, 8.2.45), modulo 2^32.
-    computed(0x2020, [this] { return static_cast<std::uint32_t>(axis_.position_actual()); });
+    computed(0x2020, [this] { return static_cast<std::uint32_t>(encoder_counter()); });
     computed(0x2021, [this] { return static_cast<std::uint32_t>(counter_at_index_); });
     computed(0x2022, [this] {
         return std::uint16_t{plant::hall_inputs(axis_.hall_sensors(), sensor_faults_)};
@@ -207,10 +229,11 @@ void Epos2Drive::compute_measured_values() {
         return static_cast<std::int16_t>(rounded(current_averaged_.output() * 1000));
     });
     computed(0x2028, [this, rounded] {
-        return static_cast<std::int32_t>(rounded(velocity_averaged_.output()));
+        return static_cast<std::int32_t>(
+            rounded(velocity_averaged_.output() / rpm_per_velocity_unit_));
     });
     computed(0x2031, [this, rounded] {
-        return static_cast<std::int32_t>(rounded(axis_.current_demand() * 1000));
+        return static_cast<std::int32_t>(rounded(polarity_ * axis_.current_demand() * 1000));
     });
     computed(0x20F4, [this, rounded] {
         const double error = last_demand_.position - static_cast<double>(position_actual());
@@ -218,9 +241,8 @@ void Epos2Drive::compute_measured_values() {
         return static_cast<std::int16_t>(
             std::clamp<long>(rounded(error), Limits::min(), Limits::max()));
     });
-    computed(0x6069, [this, rounded] {
-        return static_cast<std::int32_t>(rounded(axis_.velocity_actual()));
-    });
+    computed(0x6069,
+             [this, rounded] { return static_cast<std::int32_t>(rounded(velocity_actual())); });
 }
 
 void Epos2Drive::watch_dictionary() {
@@ -247,6 +269,9 @@ void Epos2Drive::watch_dictionary() {
     for (const std::uint16_t index : std::array<std::uint16_t, 3>{0x2008, 0x2210, 0x6402}) {
         od.on_change(index, [this](std::uint16_t, std::uint8_t) { read_sensor_configuration(); });
     }
+    for (const std::uint16_t index : std::array<std::uint16_t, 2>{0x2008, 0x608B}) {
+        od.on_change(index, [this](std::uint16_t, std::uint8_t) { read_units_and_polarity(); });
+    }
     // 8.2.73: the standstill of the stop ramps and of PVM's speed zero.
     od.on_change(0x2101, [this](std::uint16_t, std::uint8_t) { read_standstill_window(); });
     for (const std::uint16_t option_code :
@@ -264,17 +289,11 @@ void Epos2Drive::watch_dictionary() {
         }
     });
     // 8.2.90: the modes this simulation does not run yet are refused like a value out of range.
-    canopen::SubObject& modes = *od.find(0x6060, 0);
-    modes.on_write = [checked = modes.on_write](std::span<const std::uint8_t> value) {
-        if (checked) {
-            if (const canopen::AbortCode code = checked(value); code != canopen::AbortCode::None) {
-                return code;
-            }
-        }
+    add_write_rule(*od.find(0x6060, 0), [](std::span<const std::uint8_t> value) {
         return simulated_mode(canopen::decode<std::int8_t>(value)).has_value()
                    ? canopen::AbortCode::None
                    : canopen::AbortCode::InvalidValue;
-    };
+    });
 }
 
 void Epos2Drive::handle_pending_controlwords() {
@@ -289,6 +308,7 @@ void Epos2Drive::handle_pending_controlwords() {
 void Epos2Drive::reset_application() {
     configure_axis(); // the reset restored values without telling the listeners
     read_counts_per_turn();
+    read_units_and_polarity();
     io_->reload();
     read_sensor_configuration();
     read_standstill_window();
@@ -346,7 +366,7 @@ void Epos2Drive::clear_errors() {
         motion::FollowingErrorMonitor(dictionary_.objects().get_as<std::uint32_t>(0x6065, 0));
     if (position_reset_on_clear_) {
         position_reset_on_clear_ = false;
-        position_offset_ = -axis_.position_actual();
+        position_offset_ = -encoder_counter();
         homing_.reference_lost();
         restart_sensor_supervision();
     }
@@ -419,11 +439,12 @@ void Epos2Drive::control_period() {
     index_latch_.reset();
     const MotionState demand = commanded.motion;
     axis_.set_mode(power_stage_on_ ? commanded.loop : plant::ControlMode::PowerOff);
-    axis_.set_demand({.position = demand.position - static_cast<double>(position_offset_),
-                      .velocity = demand.velocity,
-                      .acceleration = demand.acceleration,
-                      .current = commanded.current,
-                      .speed_limit = commanded.speed_limit});
+    axis_.set_demand(
+        {.position = polarity_ * (demand.position - static_cast<double>(position_offset_)),
+         .velocity = polarity_ * demand.velocity,
+         .acceleration = polarity_ * demand.acceleration,
+         .current = polarity_ * commanded.current,
+         .speed_limit = commanded.speed_limit});
     const double overcurrent = machine_.plant.power_stage.overcurrent;
     bool overcurrent_seen = false;
     for (int step = 0; step < plant::ServoAxis::kCurrentStepsPerOuterLoop; ++step) {
@@ -431,9 +452,9 @@ void Epos2Drive::control_period() {
         if (axis_.index_passed() && !sensor_faults_.index_missing &&
             !sensor_faults_.encoder_broken) {
             index_latch_ = position_actual();
-            counter_at_index_ = axis_.position_actual();
+            counter_at_index_ = encoder_counter();
         }
-        current_averaged_.update(axis_.current_actual());
+        current_averaged_.update(current_actual());
         i2t_.update(axis_.current_actual(), plant::ServoAxis::kCurrentLoopPeriod);
         overcurrent_seen = overcurrent_seen || std::abs(axis_.current_actual()) > overcurrent;
     }
@@ -441,7 +462,7 @@ void Epos2Drive::control_period() {
     watch_power_stage(overcurrent_seen);
     watch_sensors();
     watch_bus_queues();
-    velocity_averaged_.update(counts_to_rpm(axis_.velocity_actual()));
+    velocity_averaged_.update(counts_to_rpm(velocity_actual()));
     last_demand_ = demand;
     watch_motion(demand);
     watch_io(now);
@@ -457,10 +478,29 @@ void Epos2Drive::watch_sensors() {
 }
 
 void Epos2Drive::watch_bus_queues() {
+    resend_refused_emcys();
     if (queue_overflow_) {
         raise_device_error(*queue_overflow_);
         queue_overflow_.reset();
     }
+}
+
+// EMCYs go out in NMT pre-operational and operational only (7.3.5); a reset or stop drops them,
+// as it drops those the EMCY producer still holds.
+void Epos2Drive::resend_refused_emcys() {
+    const canopen::NmtState nmt = node_.nmt_state();
+    if (nmt != canopen::NmtState::PreOperational && nmt != canopen::NmtState::Operational) {
+        refused_emcys_.clear();
+    }
+    resending_emcys_ = true;
+    while (!refused_emcys_.empty()) {
+        const can::SendStatus status = port_.send(refused_emcys_.front());
+        if (status == can::SendStatus::TxOverflow || status == can::SendStatus::BusOff) {
+            break; // still no room: the next period tries again
+        }
+        refused_emcys_.pop_front();
+    }
+    resending_emcys_ = false;
 }
 
 // 8.2.74, 8.2.41, 8.2.127: what the sensor supervision checks; a new configuration is a start-up.
@@ -541,7 +581,7 @@ MotionState Epos2Drive::stop_ramp(double now) {
         mode_behaviour_->drive_disabled(now);
     }
     const MotionState demand = stop_.sample(now - stop_start_);
-    standstill_.update(now, counts_to_rpm(axis_.velocity_actual()),
+    standstill_.update(now, counts_to_rpm(velocity_actual()),
                        now - stop_start_ >= stop_.duration());
     if (standstill_.stop_completed(now)) {
         stopping_ = false;
@@ -556,8 +596,8 @@ ModeInputs Epos2Drive::mode_inputs() const {
     return {.now = seconds(),
             .controlword = controlword_,
             .position = position_actual(),
-            .velocity = axis_.velocity_actual(),
-            .current = axis_.current_actual(),
+            .velocity = velocity_actual(),
+            .current = current_actual(),
             .switches = switches(),
             .index_position = index_latch_};
 }
@@ -656,9 +696,9 @@ void Epos2Drive::publish(const MotionState& demand) {
         .statusword = statusword(),
         .position_demand = to_i32(demand.position),
         .position_actual = static_cast<std::int32_t>(position_actual()),
-        .velocity_demand = to_i32(counts_to_rpm(demand.velocity)),
-        .velocity_actual = to_i32(counts_to_rpm(axis_.velocity_actual())),
-        .current_actual = static_cast<std::int16_t>(std::lround(axis_.current_actual() * 1000)),
+        .velocity_demand = to_i32(counts_to_velocity(demand.velocity)),
+        .velocity_actual = to_i32(counts_to_velocity(velocity_actual())),
+        .current_actual = static_cast<std::int16_t>(std::lround(current_actual() * 1000)),
         .digital_inputs = digital_input_states(),
     };
     // Compared with what was stored last, not read back: a dictionary read per object and
@@ -696,6 +736,14 @@ void Epos2Drive::read_option_codes() {
 // 8.2.73: read when written.
 void Epos2Drive::read_standstill_window() {
     standstill_ = motion::StandstillMonitor(standstill_window(dictionary_.objects()));
+}
+
+// 3.3: the velocity unit; 8.2.41 table 8-83 bit 8: "1 = Inverse: If demanded velocity or position
+// is positive, direction of rotation is CW".
+void Epos2Drive::read_units_and_polarity() {
+    const auto& od = dictionary_.objects();
+    rpm_per_velocity_unit_ = rpm_per_velocity_unit(od);
+    polarity_ = (od.get_as<std::uint16_t>(0x2008, 0) & kInversePolarityBit) != 0 ? -1 : 1;
 }
 
 // 8.2.74: quadcounts are four per encoder pulse.

@@ -1,5 +1,7 @@
 #include "eposp/drives/epos2/epos2_io.hpp"
 
+#include "write_rules.hpp"
+
 #include <array>
 #include <stdexcept>
 #include <string>
@@ -75,20 +77,13 @@ Epos2Io::Epos2Io(canopen::ObjectDictionary& od) : od_(od) {
 void Epos2Io::guard_brake_output() {
     constexpr auto kBrake = static_cast<std::uint16_t>(OutputFunction::HoldingBrake);
     for (std::uint8_t n = 1; n <= kDigitalOutputCount; ++n) {
-        canopen::SubObject& entry = *od_.find(0x2079, n);
-        entry.on_write = [this, n, checked = entry.on_write](std::span<const std::uint8_t> value) {
-            if (checked) {
-                if (const canopen::AbortCode code = checked(value);
-                    code != canopen::AbortCode::None) {
-                    return code;
-                }
-            }
+        add_write_rule(*od_.find(0x2079, n), [this, n](std::span<const std::uint8_t> value) {
             const auto now = canopen::decode<std::uint16_t>(value);
             const auto before = od_.get_as<std::uint16_t>(0x2079, n);
             const bool brake_changes = now != before && (now == kBrake || before == kBrake);
             return brake_changes && power_stage_on_ ? canopen::AbortCode::DeviceState
                                                     : canopen::AbortCode::None;
-        };
+        });
     }
 }
 

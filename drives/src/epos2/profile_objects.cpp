@@ -5,8 +5,11 @@
 // type and pole pairs) keeps only its static bound.
 #include "eposp/canopen/entry_builder.hpp"
 #include "object_areas.hpp"
+#include "velocity_units.hpp"
+#include "write_rules.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <span>
 
@@ -215,26 +218,22 @@ void add_motor_objects(canopen::ObjectDictionary& od) {
 
 // Table 8-119: the upper limit of 0x607F is the smaller of Maximal Motor Speed (0x6410 sub 4)
 // and Gear Maximal Speed (0x2230 sub 3), the motor side's; with a gear (numerator not 0) the
-// load side's, × denominator / numerator. Checked at each write (a limit lowered later leaves
-// the value as it is, like the other bounded ranges).
+// load side's, × denominator / numerator; in velocity units (0x608B). Checked at each write (a
+// limit lowered later leaves the value as it is, like the other bounded ranges).
 void bound_maximal_profile_velocity(canopen::ObjectDictionary& od) {
-    canopen::SubObject& entry = *od.find(0x607F, 0);
-    entry.on_write = [&od, checked = entry.on_write](std::span<const std::uint8_t> value) {
-        if (checked) {
-            if (const canopen::AbortCode code = checked(value); code != canopen::AbortCode::None) {
-                return code;
-            }
-        }
+    add_write_rule(*od.find(0x607F, 0), [&od](std::span<const std::uint8_t> value) {
         const auto motor_side =
             std::min(od.get_as<std::uint32_t>(0x6410, 4), od.get_as<std::uint32_t>(0x2230, 3));
         const auto numerator = od.get_as<std::uint32_t>(0x2230, 1);
-        const std::uint64_t limit =
+        const double limit_rpm =
             numerator == 0
-                ? motor_side
-                : std::uint64_t{motor_side} * od.get_as<std::uint16_t>(0x2230, 2) / numerator;
+                ? static_cast<double>(motor_side)
+                : static_cast<double>(motor_side) * od.get_as<std::uint16_t>(0x2230, 2) / numerator;
+        // 8.2.106: "The maximum value range also depends on Velocity Notation Index".
+        const double limit = std::floor(limit_rpm / rpm_per_velocity_unit(od) + 1e-9);
         return canopen::decode<std::uint32_t>(value) > limit ? canopen::AbortCode::ValueTooHigh
                                                              : canopen::AbortCode::None;
-    };
+    });
 }
 
 } // namespace

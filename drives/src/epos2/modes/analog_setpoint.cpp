@@ -1,5 +1,7 @@
 #include "analog_setpoint.hpp"
 
+#include "../write_rules.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,38 +67,15 @@ void compute_analog_setpoints(canopen::ObjectDictionary& od) {
     computed(AnalogSetpoint::Position, rounded_to<std::int32_t>);
 }
 
-// The dictionary's own checks (type, range, list) first, then the rule.
-void guard_analog_configuration(canopen::ObjectDictionary& od,
-                                std::function<bool()> power_stage_on) {
-    const auto guard = [&od, power_stage_on](std::uint16_t index, std::uint8_t sub) {
-        canopen::SubObject& entry = *od.find(index, sub);
-        entry.on_write = [&od, power_stage_on, index, sub,
-                          checked = entry.on_write](std::span<const std::uint8_t> value) {
-            if (checked) {
-                if (const canopen::AbortCode code = checked(value);
-                    code != canopen::AbortCode::None) {
-                    return code;
-                }
-            }
-            if (power_stage_on()) {
-                return canopen::AbortCode::DeviceState;
-            }
-            if (index == 0x207B) {
-                const auto other = static_cast<std::uint8_t>(3 - sub);
-                if (canopen::decode<std::uint16_t>(value) ==
-                    od.get_as<std::uint16_t>(index, other)) {
-                    return canopen::AbortCode::ParameterIncompatibility;
-                }
-            }
-            return canopen::AbortCode::None;
-        };
-    };
-    guard(0x207B, 1);
-    guard(0x207B, 2);
-    for (std::uint16_t index = 0x2301; index <= 0x2303; ++index) {
-        for (std::uint8_t sub = 1; sub <= 3; ++sub) {
-            guard(index, sub);
-        }
+// 8.2.62: "A functionality can only be assigned to one of the two analog inputs at the same time."
+void guard_analog_input_assignment(canopen::ObjectDictionary& od) {
+    for (std::uint8_t input = 1; input <= 2; ++input) {
+        const auto other = static_cast<std::uint8_t>(3 - input);
+        add_write_rule(*od.find(0x207B, input), [&od, other](std::span<const std::uint8_t> value) {
+            return canopen::decode<std::uint16_t>(value) == od.get_as<std::uint16_t>(0x207B, other)
+                       ? canopen::AbortCode::ParameterIncompatibility
+                       : canopen::AbortCode::None;
+        });
     }
 }
 

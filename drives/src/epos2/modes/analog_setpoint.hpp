@@ -27,11 +27,9 @@ std::optional<double> executed_analog_setpoint(const canopen::ObjectDictionary& 
 /// 0x2301 - 0x2303 sub 4, computed when read (SDO, TPDO sampling).
 void compute_analog_setpoints(canopen::ObjectDictionary& od);
 
-/// 8.2.62, 8.2.81 - 8.2.83: "Changes are only supported in Disable state": writes of 0x207B and
-/// 0x2301 - 0x2303 sub 1 - 3 are refused with 0x08000022 while `power_stage_on()`; and "a
-/// functionality can only be assigned to one of the two analog inputs": 0x207B refuses the
-/// other input's value with 0x06040043.
-void guard_analog_configuration(canopen::ObjectDictionary& od,
-                                std::function<bool()> power_stage_on);
+/// 8.2.62: "a functionality can only be assigned to one of the two analog inputs": 0x207B
+/// refuses the other input's value with 0x06040043. (Their "Disable state" rule is
+/// guard_disable_state_objects'.)
+void guard_analog_input_assignment(canopen::ObjectDictionary& od);
 
 } // namespace eposp::drives::epos2

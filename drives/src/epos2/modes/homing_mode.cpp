@@ -45,8 +45,10 @@ motion::HomingParameters HomingMode::parameters() const {
     motion::HomingParameters parameters;
     parameters.method = motion::to_homing_method(od.get_as<std::int8_t>(0x6098, 0))
                             .value_or(motion::HomingMethod::ActualPosition);
-    parameters.switch_search_speed = services_.rpm_to_counts(od.get_as<std::uint32_t>(0x6099, 1));
-    parameters.zero_search_speed = services_.rpm_to_counts(od.get_as<std::uint32_t>(0x6099, 2));
+    parameters.switch_search_speed =
+        services_.velocity_to_counts(od.get_as<std::uint32_t>(0x6099, 1));
+    parameters.zero_search_speed =
+        services_.velocity_to_counts(od.get_as<std::uint32_t>(0x6099, 2));
     parameters.acceleration = services_.rpm_to_counts(od.get_as<std::uint32_t>(0x609A, 0));
     parameters.shape = static_cast<motion::RampShape>(od.get_as<std::int16_t>(0x6086, 0));
     parameters.home_offset = od.get_as<std::int32_t>(0x607C, 0);

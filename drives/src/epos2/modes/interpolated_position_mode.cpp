@@ -95,8 +95,8 @@ void InterpolatedPositionMode::next_segment(double now) {
         return;
     }
     segment_.emplace(last_demand_.position, last_demand_.velocity,
-                     static_cast<double>(end->position), services_.rpm_to_counts(end->velocity),
-                     end->time_ms / 1000.0);
+                     static_cast<double>(end->position),
+                     services_.velocity_to_counts(end->velocity), end->time_ms / 1000.0);
     segment_start_ = now;
 }
 
@@ -130,7 +130,8 @@ ModeDemand InterpolatedPositionMode::demand(const ModeInputs& inputs) {
 }
 
 void InterpolatedPositionMode::check_limits(const motion::MotionState& state) {
-    const double velocity = std::abs(services_.counts_to_rpm(state.velocity));
+    // Velocities in velocity units (0x6081, 0x607F), accelerations in rpm/s (0x6083, 0x60C5).
+    const double velocity = std::abs(services_.counts_to_velocity(state.velocity));
     const double acceleration = std::abs(services_.counts_to_rpm(state.acceleration));
     const auto& od = services_.objects;
     if (velocity > od.get_as<std::uint32_t>(0x6081, 0)) {

@@ -26,14 +26,23 @@ struct ModeServices {
     const canopen::ObjectDictionary& objects;
     /// The same dictionary, for the read-only values a mode shows (IPM's buffer status).
     canopen::ObjectDictionary& outputs;
-    const double& counts_per_turn; ///< 4 × 0x2210 sub 1, kept up to date by the drive
+    const double& counts_per_turn;       ///< 4 × 0x2210 sub 1, kept up to date by the drive
+    const double& rpm_per_velocity_unit; ///< 10^0x608B (3.3), kept up to date by the drive
     const std::int32_t& digital_position_counter; ///< inputs 2 and 3 (Epos2Drive)
     std::function<void(std::uint16_t)> raise_device_error;
     motion::HomingProcedure& homing;       ///< its reference (bit 15) survives mode changes
     motion::StandstillMonitor& standstill; ///< shared with the stop ramps (8.2.73)
 
+    /// rpm (0x6410 sub 4, 0x2101) or rpm/s (the acceleration unit, 3.3) to qc/s or qc/s².
     double rpm_to_counts(double rpm) const { return rpm * counts_per_turn / 60.0; }
     double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn; }
+    /// [Velocity units] (3.3: rpm × 10^0x608B) to qc/s and back.
+    double velocity_to_counts(double velocity) const {
+        return rpm_to_counts(velocity * rpm_per_velocity_unit);
+    }
+    double counts_to_velocity(double counts) const {
+        return counts_to_rpm(counts) / rpm_per_velocity_unit;
+    }
     /// 5.3.2.1 / 5.10.2.1: 0x6081, 0x6083, 0x6084, 0x6086 clamped to 0x607F and 0x60C5.
     motion::ProfileParameters profile_parameters() const;
     /// The modes whose master gives the position (Position, Master Encoder, Step/Direction):

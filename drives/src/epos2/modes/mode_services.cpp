@@ -8,12 +8,12 @@ namespace eposp::drives::epos2 {
 // Acceleration 0x60C5 (all of them at least 1 by their value ranges, so the clamp cannot fail).
 motion::ProfileParameters ModeServices::profile_parameters() const {
     const motion::ProfileParameters written{
-        .velocity = rpm_to_counts(objects.get_as<std::uint32_t>(0x6081, 0)),
+        .velocity = velocity_to_counts(objects.get_as<std::uint32_t>(0x6081, 0)),
         .acceleration = rpm_to_counts(objects.get_as<std::uint32_t>(0x6083, 0)),
         .deceleration = rpm_to_counts(objects.get_as<std::uint32_t>(0x6084, 0)),
         .shape = static_cast<motion::RampShape>(objects.get_as<std::int16_t>(0x6086, 0))};
     const motion::ProfileLimits limits{
-        .max_velocity = rpm_to_counts(objects.get_as<std::uint32_t>(0x607F, 0)),
+        .max_velocity = velocity_to_counts(objects.get_as<std::uint32_t>(0x607F, 0)),
         .max_acceleration = rpm_to_counts(objects.get_as<std::uint32_t>(0x60C5, 0))};
     return *motion::clamp_to_limits(written, limits);
 }
@@ -24,7 +24,7 @@ ModeServices::follow_position_set_value(motion::PositionSetValueLimiter& limiter
     const double limited =
         std::clamp(set_value, static_cast<double>(objects.get_as<std::int32_t>(0x607D, 1)),
                    static_cast<double>(objects.get_as<std::int32_t>(0x607D, 2)));
-    return limiter.update(limited, rpm_to_counts(objects.get_as<std::uint32_t>(0x607F, 0)),
+    return limiter.update(limited, velocity_to_counts(objects.get_as<std::uint32_t>(0x607F, 0)),
                           rpm_to_counts(objects.get_as<std::uint32_t>(0x60C5, 0)),
                           plant::ServoAxis::kOuterLoopPeriod);
 }

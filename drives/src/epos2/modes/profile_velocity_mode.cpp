@@ -15,9 +15,9 @@ void ProfileVelocityMode::start(double now, std::int64_t position, bool power_st
 }
 
 void ProfileVelocityMode::follow_target(double now) {
-    profile_.set_target(now,
-                        services_.rpm_to_counts(services_.objects.get_as<std::int32_t>(0x60FF, 0)),
-                        services_.profile_parameters());
+    profile_.set_target(
+        now, services_.velocity_to_counts(services_.objects.get_as<std::int32_t>(0x60FF, 0)),
+        services_.profile_parameters());
 }
 
 void ProfileVelocityMode::on_controlword(const ControlwordChange& change) {
@@ -37,13 +37,15 @@ ModeDemand ProfileVelocityMode::demand(const ModeInputs& inputs) {
 }
 
 void ProfileVelocityMode::watch(const ModeInputs& inputs, const motion::MotionState& demand) {
-    const double velocity_rpm = services_.counts_to_rpm(inputs.velocity);
+    // The window 0x606D and the target in velocity units, the standstill window 0x2101 in rpm.
+    const double velocity = services_.counts_to_velocity(inputs.velocity);
     const double target = (inputs.controlword & kHaltBit) != 0
                               ? 0.0
                               : services_.objects.get_as<std::int32_t>(0x60FF, 0);
-    target_reached_now_ = target_reached_.update(inputs.now, profile_.ramp_finished(inputs.now),
-                                                 velocity_rpm, target);
-    standstill_now_ = services_.standstill.update(inputs.now, velocity_rpm, demand.velocity == 0);
+    target_reached_now_ =
+        target_reached_.update(inputs.now, profile_.ramp_finished(inputs.now), velocity, target);
+    standstill_now_ = services_.standstill.update(
+        inputs.now, services_.counts_to_rpm(inputs.velocity), demand.velocity == 0);
 }
 
 // Table 8-114, 5.10.2.5.

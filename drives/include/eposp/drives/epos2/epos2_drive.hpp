@@ -155,6 +155,7 @@ private:
     void watch_power_stage(bool overcurrent);
     void watch_sensors();
     void watch_bus_queues();
+    void resend_refused_emcys();
     void read_sensor_configuration();
     void restart_sensor_supervision();
     void clear_errors();
@@ -183,13 +184,26 @@ private:
     /// The drive's clock in seconds: control_time_.
     double seconds() const;
     void read_counts_per_turn();
+    void read_units_and_polarity();
     void read_option_codes();
     void read_standstill_window();
     double rpm_to_counts(double rpm) const { return rpm * counts_per_turn_ / 60.0; }
     double counts_to_rpm(double counts) const { return counts * 60.0 / counts_per_turn_; }
-    std::int64_t position_actual() const { return axis_.position_actual() + position_offset_; }
+    /// qc/s in velocity units (3.3: rpm × 10^0x608B).
+    double counts_to_velocity(double counts) const {
+        return counts_to_rpm(counts) / rpm_per_velocity_unit_;
+    }
+    // The plant's motor turns CCW for a positive value; the firmware's values are the plant's
+    // times the polarity of 0x2008 bit 8 (8.2.41; 8.2.44: the counter "multiplied by Polarity").
+    std::int64_t encoder_counter() const {
+        return static_cast<std::int64_t>(polarity_) * axis_.position_actual();
+    }
+    double velocity_actual() const { return polarity_ * axis_.velocity_actual(); }
+    double current_actual() const { return polarity_ * axis_.current_actual(); }
+    std::int64_t position_actual() const { return encoder_counter() + position_offset_; }
 
     core::EventLoop& loop_;
+    can::Port& port_;
     Epos2Dictionary dictionary_;
     canopen::Node node_;
     plant::AxisParameters machine_; ///< what the dictionary does not configure (see configure_axis)
@@ -210,6 +224,10 @@ private:
     bool position_reset_on_clear_ = false;
     /// 0x81FE / 0x81FF: a queue of the CAN controller lost a frame, raised at the next period.
     std::optional<std::uint16_t> queue_overflow_;
+    /// 4.2.20: EMCYs a full transmit queue refused (0x81FF's own among them), sent again each
+    /// control period, in order, until the queue takes them.
+    std::deque<can::Frame> refused_emcys_;
+    bool resending_emcys_ = false; ///< a refusal heard now is of a frame refused_emcys_ keeps
 
     OperatingMode mode_ = OperatingMode::ProfilePosition;
     std::uint16_t controlword_ = 0;
@@ -222,6 +240,8 @@ private:
     std::int64_t position_offset_ = 0;          ///< what homing added to the axis' counter
     std::optional<std::int64_t> index_latch_;   ///< an index pulse since the last control period
     double counts_per_turn_ = 0;                ///< 4 × 0x2210 sub 1
+    double rpm_per_velocity_unit_ = 1;          ///< 10^0x608B (3.3)
+    int polarity_ = 1;                          ///< 0x2008 bit 8: 1 normal, -1 inverse
     std::int32_t digital_position_counter_ = 0; ///< of inputs 2 and 3 (5.7, 5.8), wrapping
     std::int64_t counter_at_index_ = 0;         ///< 0x2021: the raw encoder counter
     /// 8.2.47: the current filtered at 50 Hz every 0.1 ms; 8.2.48: the velocity at 5 Hz every ms.
