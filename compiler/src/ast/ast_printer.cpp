@@ -27,6 +27,10 @@ std::string_view operator_name(UnaryOperator op) {
 /// Writes one tree as nested parentheses; every node kind prints its own tag.
 class Printer {
 public:
+    Printer() = default;
+    /// Laid out for reading: statements on lines of their own, expressions with their notes.
+    explicit Printer(const DumpLayout& layout) : layout_(&layout) {}
+
     std::string text() const { return out_.str(); }
 
     void literal(const Literal& value) {
@@ -99,6 +103,9 @@ public:
                        },
                    },
                    e.node);
+        if (layout_ != nullptr && layout_->note) {
+            out_ << layout_->note(e);
+        }
     }
 
     void statement(const Statement& s) {
@@ -301,7 +308,9 @@ public:
             for (const DeclarationSection& section : pou.sections) {
                 if (const auto* variables = std::get_if<VarSection>(&section)) {
                     for (const VariableDeclaration& declaration : variables->variables) {
-                        out_ << " ";
+                        ++depth_;
+                        separate();
+                        --depth_;
                         variable(declaration);
                     }
                 }
@@ -351,12 +360,22 @@ private:
         }
         out_ << ")";
     }
+    /// A space between the parts of a line; in a laid-out dump, a new line at the depth.
+    void separate() {
+        if (layout_ != nullptr) {
+            out_ << "\n" << std::string(2 * depth_, ' ');
+        } else {
+            out_ << " ";
+        }
+    }
     void block(std::string_view tag, const StatementList& body) {
         out_ << " (" << tag;
+        ++depth_;
         for (const Statement& s : body) {
-            out_ << " ";
+            separate();
             statement(s);
         }
+        --depth_;
         out_ << ")";
     }
     void address(const DirectAddress& a) {
@@ -375,6 +394,8 @@ private:
         }
     }
 
+    const DumpLayout* layout_ = nullptr;
+    int depth_ = 0;
     std::ostringstream out_;
 };
 
@@ -400,6 +421,12 @@ std::string to_sexpr(const TypeSpec& type) {
 
 std::string to_sexpr(const CompilationUnit& unit) {
     Printer printer;
+    printer.unit(unit);
+    return printer.text();
+}
+
+std::string to_sexpr(const CompilationUnit& unit, const DumpLayout& layout) {
+    Printer printer(layout);
     printer.unit(unit);
     return printer.text();
 }

@@ -1,0 +1,56 @@
+#include "eposp/compiler/types/typed_dump.hpp"
+
+#include "eposp/compiler/ast/ast_printer.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::types {
+namespace {
+
+std::string constant_text(const Constant& value) {
+    return std::visit(
+        [](const auto& v) -> std::string {
+            using V = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<V, bool>) {
+                return v ? "TRUE" : "FALSE";
+            } else if constexpr (std::is_same_v<V, std::string>) {
+                return fmt::format("'{}'", v);
+            } else if constexpr (std::is_same_v<V, double>) {
+                return fmt::format("{}", v); // the shortest text that reads back as the same value
+            } else {
+                return std::to_string(v);
+            }
+        },
+        value);
+}
+
+std::string call_text(const CallTarget& target) {
+    const std::string_view callee =
+        target.pou != nullptr && target.kind != CallKind::StandardFunctionBlock
+            ? std::string_view(target.pou->name.name)
+            : std::string_view(target.name);
+    return target.operand != nullptr ? fmt::format("->{}({})", callee, target.operand->name)
+                                     : fmt::format("->{}", callee);
+}
+
+} // namespace
+
+std::string dump_typed(const TypedProgram& program, const ast::CompilationUnit& unit) {
+    ast::DumpLayout layout;
+    layout.note = [&program](const ast::Expression& expression) {
+        std::string note;
+        if (const sema::Type* type = program.type_of(expression)) {
+            note = ":" + type->name;
+        }
+        if (const Constant* value = program.constant_of(expression)) {
+            note += "=" + constant_text(*value);
+        }
+        if (const CallTarget* target = program.call_target(expression)) {
+            note += call_text(*target);
+        }
+        return note;
+    };
+    return ast::to_sexpr(unit, layout);
+}
+
+} // namespace eposp::compiler::types
