@@ -165,6 +165,8 @@ void EposP::add_network(const NetworkFile& network) {
         drives::epos2::Epos2DriveConfig config;
         config.dictionary.node_id = slave.node_id;
         config.dictionary.serial_number = slave.node_id;
+        // 0x200A (8.2.42): automatic bit rate detection finds the rate of the bus it joins.
+        config.dictionary.bit_rate = external_bus_.config().bitrate;
         if (slave.plant) {
             config.axis = *slave.plant;
         }

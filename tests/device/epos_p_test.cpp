@@ -6,6 +6,7 @@
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/device/epos_p.hpp"
 #include "eposp/device/error_entry.hpp"
+#include "eposp/device/network_file.hpp"
 #include "eposp/manager/network_list.hpp"
 #include "eposp/test/test_directory.hpp"
 
@@ -67,6 +68,19 @@ TEST(EposP, AutomaticBitRateDetectionKeepsTheBussRate) {
                   canopen::AbortCode::None);
     }
     EXPECT_EQ(EposP(config).external_bus().config().bitrate, 125'000u);
+}
+
+// EPOS2 FW spec 8.2.42: the simulated EPOS2s on port 2 run at the EPOS P's bit rate, which their
+// automatic bit rate detection (0x2001 = 9) finds and 0x200A shows as a code of table 8-81.
+TEST(EposP, TheSimulatedEpos2sShowTheBitRateOfTheEposP) {
+    EposPConfig config;
+    config.external_bit_rate = 250'000;
+    EposP device(config);
+    const auto network = parse_network_file("slaves:\n  - {node: 2, axis: 1}\n", "net.yaml");
+    ASSERT_TRUE(network) << network.error();
+    device.add_network(*network);
+    const auto& drive = device.simulated_slaves().at(0)->objects();
+    EXPECT_EQ(drive.get_as<std::uint16_t>(0x200A, 0), 3u); // 250 kbit/s
 }
 
 TEST(EposP, RunsTheProgramsTasksAndTimersInTheLoopsTime) {
