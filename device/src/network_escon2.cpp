@@ -40,9 +40,9 @@ bool fits(canopen::DataType type, std::int64_t value) {
     return value >= 0 && value < (std::int64_t{1} << bits);
 }
 
-NetworkEscon2::Parameter read_parameter(yaml::Reader& in, const YAML::Node& node,
+Escon2Machine::Parameter read_parameter(yaml::Reader& in, const YAML::Node& node,
                                         canopen::ObjectDictionary& od) {
-    NetworkEscon2::Parameter parameter;
+    Escon2Machine::Parameter parameter;
     std::optional<std::int64_t> value;
     in.each_key(node, "parameters",
                 {{"index",
@@ -85,51 +85,59 @@ NetworkEscon2::Parameter read_parameter(yaml::Reader& in, const YAML::Node& node
 
 } // namespace
 
-NetworkEscon2 read_escon2(yaml::Reader& in, const YAML::Node& node,
-                          const std::filesystem::path& base) {
-    NetworkEscon2 escon2;
+Escon2Machine
+read_escon2_machine(yaml::Reader& in, const YAML::Node& node, std::string_view section,
+                    const std::filesystem::path& base,
+                    std::map<std::string, std::function<void(const YAML::Node&)>> more) {
+    Escon2Machine machine;
     std::optional<YAML::Node> parameters;
-    in.each_key(node, "escon2",
-                {{"name",
-                  [&](const YAML::Node& value) {
-                      escon2.name = in.scalar<std::string>(value, "name");
-                      if (!is_name(escon2.name)) {
-                          in.fail(value, "name must be letters, digits, '_' or '-'");
-                      }
-                  }},
-                 {"hardware",
-                  [&](const YAML::Node& value) {
-                      const auto found =
-                          kHardware.find(lower(in.scalar<std::string>(value, "hardware")));
-                      if (found == kHardware.end()) {
-                          in.fail(value, "hardware must be 'Module 60/30', 'Compact 60/30', "
-                                         "'Micro 60/5' or 'Nano 24/2'");
-                      }
-                      escon2.hardware = found->second;
-                  }},
-                 {"plant",
-                  [&](const YAML::Node& value) {
-                      escon2.plant = read_plant(in, value, base);
-                  }},
-                 {"parameters", [&](const YAML::Node& value) {
-                      if (!value.IsSequence()) {
-                          in.fail(value, "'parameters' must be a list");
-                      }
-                      parameters = value;
-                  }}});
-    if (escon2.name.empty()) {
-        in.fail(node, "an ESCON2 needs its 'name'");
-    }
+    more.emplace("hardware", [&](const YAML::Node& value) {
+        const auto found = kHardware.find(lower(in.scalar<std::string>(value, "hardware")));
+        if (found == kHardware.end()) {
+            in.fail(value, "hardware must be 'Module 60/30', 'Compact 60/30', "
+                           "'Micro 60/5' or 'Nano 24/2'");
+        }
+        machine.hardware = found->second;
+    });
+    more.emplace("plant",
+                 [&](const YAML::Node& value) { machine.plant = read_plant(in, value, base); });
+    more.emplace("parameters", [&](const YAML::Node& value) {
+        if (!value.IsSequence()) {
+            in.fail(value, "'parameters' must be a list");
+        }
+        parameters = value;
+    });
+    in.each_key(node, section, more);
     if (parameters) {
         // After the hardware, whatever the keys' order: it decides defaults and ranges.
         drives::escon2::Escon2DictionaryConfig config;
-        config.hardware = escon2.hardware;
+        config.hardware = machine.hardware;
         drives::escon2::Escon2Dictionary device(std::move(config));
         (void)device.power_up();
         for (const YAML::Node& entry : *parameters) {
-            escon2.parameters.push_back(read_parameter(in, entry, device.objects()));
+            machine.parameters.push_back(read_parameter(in, entry, device.objects()));
         }
     }
+    return machine;
+}
+
+NetworkEscon2 read_escon2(yaml::Reader& in, const YAML::Node& node,
+                          const std::filesystem::path& base) {
+    std::string name;
+    Escon2Machine machine =
+        read_escon2_machine(in, node, "escon2", base,
+                            {{"name", [&](const YAML::Node& value) {
+                                  name = in.scalar<std::string>(value, "name");
+                                  if (!is_name(name)) {
+                                      in.fail(value, "name must be letters, digits, '_' or '-'");
+                                  }
+                              }}});
+    if (name.empty()) {
+        in.fail(node, "an ESCON2 needs its 'name'");
+    }
+    NetworkEscon2 escon2;
+    static_cast<Escon2Machine&>(escon2) = std::move(machine);
+    escon2.name = std::move(name);
     return escon2;
 }
 

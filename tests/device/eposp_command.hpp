@@ -51,6 +51,24 @@ inline test::CommandResult eposp_interrupted(const std::string& arguments,
         out.string() + "; exit $code");
 }
 
+/// Runs `clients` (shell commands using $port) while `eposp ARGUMENTS` runs in the background
+/// and serves the link whose path it prints after `printed: ` (waited for up to 30 s on a loaded
+/// machine), then ends it with SIGINT. The output holds the clients' output, then the served
+/// command's after a line "--- eposp <command>:"; the exit code is the clients'.
+inline test::CommandResult with_served_port(const std::string& arguments,
+                                            const std::string& printed, const std::string& clients,
+                                            const std::filesystem::path& out) {
+    const std::string start =
+        ": > " + out.string() + "; " + kEposp + " " + arguments + " > " + out.string() +
+        " 2>&1 & pid=$!; for i in $(seq 600); do port=$(sed -n \"s/^" + printed + ": //p\" " +
+        out.string() + "); [ -n \"$port\" ] && break; sleep 0.05; done; ";
+    auto result = test::run_command("sh -c '" + start + "{ " + clients +
+                                    "; } 2>&1; code=$?; kill -INT $pid; wait $pid; exit $code'");
+    result.output +=
+        "\n--- eposp " + arguments.substr(0, arguments.find(' ')) + ":\n" + read_file(out);
+    return result;
+}
+
 /// A shell-script prefix that starts `eposp ARGUMENTS` (which must serve socketcand, e.g.
 /// `bus --socketcand 127.0.0.1:0`) in the background with its output in `out`, waits until it
 /// listens (up to 30 s: a loaded CI machine starts it slowly), and leaves its address in

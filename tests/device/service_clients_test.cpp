@@ -44,26 +44,11 @@ void PrintTo(const ServedPort& port, std::ostream* os) {
 constexpr ServedPort kRs232{"--serial pty", "RS-232 service port", "v1"};
 constexpr ServedPort kUsb{"--usb pty", "USB service port", "v2"};
 
-// A shell-script prefix that starts `eposp serve` with the port in the background, waits until
-// it printed the path of the pseudo-terminal (up to 30 s on a loaded machine) and leaves it in
-// $port, the pid in $pid, and $eposp the client command line up to its arguments.
-std::string start_serve(const std::filesystem::path& out, const ServedPort& port) {
-    return ": > " + out.string() + "; " + kEposp + " serve " + port.serve_option + " --for 20s > " +
-           out.string() +
-           " 2>&1 & pid=$!; for i in $(seq 600); do port=$(sed "
-           "-n \"s/^" +
-           port.printed + ": //p\" " + out.string() +
-           "); [ -n \"$port\" ] && break; sleep 0.05; done; ";
-}
-
-// Runs `clients` (shell commands using $port) against a served port, then ends the server.
+// Runs `clients` (shell commands using $port) against a port `eposp serve` serves, then ends it.
 test::CommandResult with_served_port(const ServedPort& port, const std::string& clients,
                                      const std::string& name) {
-    const auto out = scratch(name + ".serve");
-    auto result = run_command("sh -c '" + start_serve(out, port) + "{ " + clients +
-                              "; } 2>&1; code=$?; kill -INT $pid; wait $pid; exit $code'");
-    result.output += "\n--- eposp serve:\n" + read_file(out);
-    return result;
+    return device::with_served_port(std::string("serve ") + port.serve_option + " --for 20s",
+                                    port.printed, clients, scratch(name + ".serve"));
 }
 
 class ServiceClients : public ::testing::TestWithParam<ServedPort> {

@@ -1,4 +1,5 @@
-// What a host may send the EPOS P's service interface, once the link delivered whole frames: a
+// What a host may send the service interface of the EPOS P and of an ESCON2 (each input goes to
+// both), once the link delivered whole frames: a
 // sequence of requests of any opcode and parameters, with time passing between them. The
 // commands (device/src/service/service_commands.hpp) never crash, answer every request exactly
 // once with an answer frame (opcode 0x00, an error code and whole words), keep the segmented
@@ -11,6 +12,7 @@
 #include "../../device/src/service/service_commands.hpp"
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/device/epos_p.hpp"
+#include "eposp/drives/escon2/escon2_drive.hpp"
 #include "fuzz_check.hpp"
 
 #include <cstddef>
@@ -30,14 +32,10 @@ void check_answer(const service::Frame& answer) {
     require(answer.words() <= 255, "an answer fits a v2 frame");
 }
 
-} // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    eposp::device::EposP device;
-    eposp::device::ServiceCommands commands(device.loop(), eposp::device::service_parts(device));
+void serve(std::span<const std::uint8_t> input, eposp::core::EventLoop& loop,
+           eposp::device::ServiceCommands& commands) {
     std::size_t answers = 0;
     std::size_t requests = 0;
-    const std::span<const std::uint8_t> input(data, size);
     for (std::size_t at = 0; at + 2 <= input.size();) {
         const std::uint8_t opcode = input[at];
         const std::size_t words = input[at + 1] & 0x7F;
@@ -55,15 +53,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             check_answer(answer);
             ++answers;
         });
-        device.loop().run_for(wait ? 50ms : 1ms);
+        loop.run_for(wait ? 50ms : 1ms);
     }
-    device.loop().run_for(2s); // every gateway request and wait ends
+    loop.run_for(2s); // every gateway request and wait ends
     require(answers == requests, "every request is answered exactly once");
 
     std::optional<service::Frame> last;
     commands.execute(service::encode_request(service::ReadObject{{std::nullopt, 0, 0x1000, 0}}),
                      [&last](service::Frame answer) { last = std::move(answer); });
-    device.loop().run_for(1ms);
+    loop.run_for(1ms);
     require(last && service::decode_answer(*last)->error == 0, "the device still serves");
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::span<const std::uint8_t> input(data, size);
+    {
+        eposp::device::EposP device;
+        eposp::device::ServiceCommands commands(device.loop(),
+                                                eposp::device::service_parts(device));
+        serve(input, device.loop(), commands);
+    }
+    eposp::core::EventLoop loop;
+    eposp::drives::escon2::Escon2Drive escon2(loop, {});
+    escon2.start();
+    eposp::device::ServiceCommands commands(loop, eposp::device::service_parts(escon2));
+    serve(input, loop, commands);
     return 0;
 }

@@ -9,6 +9,8 @@ namespace eposp::device::cli {
 void add_bus_command(CLI::App& app, int& exit_code);
 void add_node_command(CLI::App& app, int& exit_code);
 void add_drive_command(CLI::App& app, int& exit_code);
+/// `drive escon2`, under `drive` (drive_escon2_command.cpp).
+void add_drive_escon2_command(CLI::App& drive, int& exit_code);
 void add_check_command(CLI::App& app, int& exit_code);
 void add_explain_command(CLI::App& app, int& exit_code);
 void add_build_command(CLI::App& app, int& exit_code);

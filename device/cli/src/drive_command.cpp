@@ -104,6 +104,7 @@ void add_drive_command(CLI::App& app, int& exit_code) {
     add_state_dir_option(*epos2, options->state_dir, "epos2-<node-ID>");
     add_hosted_bus_options(*epos2, options->hosting);
     epos2->callback([options, &exit_code] { exit_code = run_drive(*options); });
+    add_drive_escon2_command(*drive, exit_code);
 }
 
 } // namespace eposp::device::cli

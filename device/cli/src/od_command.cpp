@@ -1,12 +1,12 @@
 // `eposp od --port PATH|tcp:ADDR read INDEX SUB | write INDEX SUB VALUE | dump`: the object
-// dictionary of an EPOS P (or of a node behind its gateway) over its service interface, as
-// maxon's tools reach it (docs/service-interface.md, "Clients"). Values up to 4 bytes go by
-// ReadObject / WriteObject, strings and longer ones by segmented transfer.
+// dictionary of an EPOS P (or of a node behind its gateway) or of an ESCON2 over its service
+// interface, as maxon's tools reach it (docs/service-interface.md, "Clients"). Values up to 4
+// bytes go by ReadObject / WriteObject, strings and longer ones by segmented transfer.
 #include "commands.hpp"
-#include "eposp/device/epos_p_dictionary.hpp"
 #include "exit_codes.hpp"
 #include "object_value.hpp"
 #include "options.hpp"
+#include "served_device.hpp"
 #include "service_connection.hpp"
 #include "terminal_text.hpp"
 
@@ -49,14 +49,19 @@ core::Result<ObjectName> parse_object_name(const OdOptions& options) {
     return ObjectName{static_cast<std::uint16_t>(*index), static_cast<std::uint8_t>(*sub_index)};
 }
 
-// --type, or the type the EPOS P's dictionary gives the object; a node behind the gateway is
-// read as u32 unless told.
-ValueType value_type(const OdOptions& options, const ObjectName& name) {
+// --type, or the type the dictionary of the device itself (the EPOS P or an ESCON2: it is asked
+// which) gives the object; a node behind the gateway is read as u32 unless told.
+service::ClientResult<ValueType> value_type(const OdOptions& options, const ObjectName& name,
+                                            ServiceConnection& connection) {
     if (options.type) {
         return *parse_value_type(*options.type);
     }
     if (options.target.node == 0 && options.target.network.value_or(0) == 0) {
-        const EposPDictionary dictionary(EposPDictionaryConfig{});
+        const auto device = identify_device(connection);
+        if (!device) {
+            return device.error();
+        }
+        const ServedDictionary dictionary(*device);
         if (const auto* entry = dictionary.objects().find(name.index, name.sub_index)) {
             return value_type_of(entry->type);
         }
@@ -102,11 +107,18 @@ int read_command(const OdOptions& options) {
     if (!connection) {
         return report_user_error(kOdCommand, connection.error());
     }
-    ValueType type = value_type(options, *name);
+    const auto typed = value_type(options, *name, **connection);
+    if (!typed) {
+        return exit_code_for(**connection, typed.error());
+    }
+    ValueType type = *typed;
     const auto address = object_address(options.target, name->index, name->sub_index);
     auto value = read_value(**connection, address, type);
-    // A node's object longer than 4 bytes (its type unknown here, no --type): read it whole.
-    if (!value && !options.type && value.error().code == kLengthTooHigh) {
+    // An object longer than 4 bytes whose type is unknown here (a node's, no --type): read it
+    // whole (the ESCON2 says "segmented transfer expected", table 111).
+    if (!value && !options.type &&
+        (value.error().code == kLengthTooHigh ||
+         value.error().code == service::error::kSegmentedTransferExpected)) {
         value = (*connection)->read_segmented(address);
         type = value && is_printable(*value) ? ValueType::Str : ValueType::Hex;
     }
@@ -122,14 +134,25 @@ int write_command(const OdOptions& options) {
     if (!name) {
         return report_user_error(kOdCommand, name.error());
     }
-    const ValueType type = value_type(options, *name);
-    const auto bytes = encode_value(type, options.value);
-    if (!bytes) {
-        return report_user_error(kOdCommand, fmt::format("VALUE: {}", bytes.error()));
+    // With --type a wrong value is refused before the link is opened.
+    if (options.type) {
+        if (const auto bytes = encode_value(*parse_value_type(*options.type), options.value);
+            !bytes) {
+            return report_user_error(kOdCommand, fmt::format("VALUE: {}", bytes.error()));
+        }
     }
     auto connection = open(options);
     if (!connection) {
         return report_user_error(kOdCommand, connection.error());
+    }
+    const auto typed = value_type(options, *name, **connection);
+    if (!typed) {
+        return exit_code_for(**connection, typed.error());
+    }
+    const ValueType type = *typed;
+    const auto bytes = encode_value(type, options.value);
+    if (!bytes) {
+        return report_user_error(kOdCommand, fmt::format("VALUE: {}", bytes.error()));
     }
     const auto address = object_address(options.target, name->index, name->sub_index);
     service::ClientResult<service::Done> written = service::Done{};
@@ -157,14 +180,18 @@ std::string table_value(ValueType type, std::span<const std::uint8_t> value) {
                        value.size());
 }
 
-// Every object of the EPOS P's dictionary, read one by one; a refused one shows its error and
-// the table goes on, a device that stops answering ends it.
+// Every object of the device's dictionary (the EPOS P's or an ESCON2's), read one by one; a
+// refused one shows its error and the table goes on, a device that stops answering ends it.
 int dump_command(const OdOptions& options) {
     auto connection = open(options);
     if (!connection) {
         return report_user_error(kOdCommand, connection.error());
     }
-    const EposPDictionary dictionary(EposPDictionaryConfig{});
+    const auto device = identify_device(**connection);
+    if (!device) {
+        return exit_code_for(**connection, device.error());
+    }
+    const ServedDictionary dictionary(*device);
     fmt::print("{:<6}  {:>3}  {:<40}  {}\n", "index", "sub", "name", "value");
     std::size_t refused = 0;
     for (const auto& [index, object] : dictionary.objects().objects()) {
@@ -203,8 +230,8 @@ CLI::App* add_object_subcommand(CLI::App& od, const std::string& name,
     add_object_target_options(*command, options.target);
     command
         ->add_option("--type", options.type,
-                     "How to read and write the value (default: the EPOS P's type of the "
-                     "object, u32 for another node)")
+                     "How to read and write the value (default: the type the device's "
+                     "dictionary gives the object, EPOS P or ESCON2; u32 for another node)")
         ->check(CLI::IsMember(value_type_names()));
     return command;
 }
@@ -214,7 +241,8 @@ CLI::App* add_object_subcommand(CLI::App& od, const std::string& name,
 void add_od_command(CLI::App& app, int& exit_code) {
     auto options = std::make_shared<OdOptions>();
     CLI::App* od = app.add_subcommand(
-        "od", "Read and write the objects of an EPOS P over its service interface (RS-232/USB)");
+        "od", "Read and write the objects of an EPOS P (RS-232/USB) or an ESCON2 (USB) over its "
+              "service interface");
     add_service_client_options(*od, options->link);
     od->require_subcommand(1);
 
@@ -224,7 +252,8 @@ void add_od_command(CLI::App& app, int& exit_code) {
     write->add_option("value", options->value, "The value: a number (0x for hex), text or bytes")
         ->required();
     write->callback([options, &exit_code] { exit_code = write_command(*options); });
-    CLI::App* dump = od->add_subcommand("dump", "Read every object of the EPOS P, as a table");
+    CLI::App* dump = od->add_subcommand(
+        "dump", "Read every object of the device (EPOS P or ESCON2), as a table");
     dump->fallthrough();
     dump->callback([options, &exit_code] { exit_code = dump_command(*options); });
 }

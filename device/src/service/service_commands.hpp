@@ -1,13 +1,17 @@
 #pragma once
 
 #include "can_gateway.hpp"
-#include "object_transfer.hpp"
+#include "object_server.hpp"
+#include "service_parts.hpp"
+
+#include <optional>
 
 namespace eposp::device {
 
-/// Executes the requests of one service link (RS-232 or USB) on the controller: decodes each
-/// request frame and answers it (docs/service-interface.md, "Commands"). An unknown opcode is
-/// answered "illegal command", parameters of the wrong length "length mismatch"; whether the
+/// Executes the requests of one service link (RS-232 or USB) on a device: decodes each request
+/// frame and answers it (docs/service-interface.md, "Commands"). An opcode the device does not
+/// serve (every one but the object commands on a device without CAN) is answered with the
+/// dialect's "unknown command", parameters of the wrong length "length mismatch"; whether the
 /// answer goes back (v1 does not answer the send commands) is the link's business.
 class ServiceCommands {
 public:
@@ -21,10 +25,12 @@ public:
     /// The host went away: what it started ends, and no answer comes for it.
     void abandon();
 
+    const ServiceParts& parts() const { return parts_; }
+
 private:
     ServiceParts parts_;
-    ObjectTransfer objects_;
-    CanGateway gateway_;
+    ObjectServer objects_;
+    std::optional<CanGateway> gateway_; ///< on a device with CAN ports
 };
 
 } // namespace eposp::device

@@ -2,7 +2,6 @@
 
 #include "eposp/core/event_loop.hpp"
 #include "eposp/device/epos_p.hpp"
-#include "eposp/device/epos_p_dictionary.hpp"
 #include "eposp/service/v1_device_link.hpp"
 #include "eposp/service/v2_decoder.hpp"
 #include "eposp/service/v2_encoder.hpp"
@@ -12,11 +11,6 @@
 #include <optional>
 
 namespace eposp::device {
-namespace {
-
-constexpr std::uint16_t kFrameTimeoutIndex = 0x5005; // EPOS P firmware specification 10.35
-
-} // namespace
 
 std::string_view to_string(ServiceProtocol protocol) {
     return protocol == ServiceProtocol::Rs232 ? "RS-232" : "USB";
@@ -24,9 +18,10 @@ std::string_view to_string(ServiceProtocol protocol) {
 
 class ServicePort::Impl {
 public:
-    Impl(EposP& device, std::unique_ptr<service::Link> link, ServiceProtocol protocol)
-        : device_(device), loop_(device.loop()), link_(std::move(link)), protocol_(protocol),
-          commands_(loop_, service_parts(device)) {
+    Impl(core::EventLoop& loop, ServiceParts parts, std::unique_ptr<service::Link> link,
+         ServiceProtocol protocol)
+        : loop_(loop), link_(std::move(link)), protocol_(protocol),
+          commands_(loop_, std::move(parts)) {
         link_->on_receive([this](std::span<const std::uint8_t> bytes) { receive(bytes); });
         link_->on_event([this](const service::LinkEvent&) { hang_up(); });
         const auto write = [this](std::span<const std::uint8_t> bytes) {
@@ -35,8 +30,8 @@ public:
         if (protocol_ == ServiceProtocol::Rs232) {
             v1_.emplace(write, [this](const service::Frame& request) { execute(request); });
         } else {
-            v2_.emplace([this](const service::Frame& request) { queue(request); },
-                        [this](service::V2Error) { ++counters_.frame_errors; });
+            v2_.emplace([this](const service::Frame& request) { queue({request}); },
+                        [this](service::V2Error error) { frame_error(error); });
         }
     }
 
@@ -75,8 +70,7 @@ private:
         if (!mid_frame()) {
             return;
         }
-        const auto timeout = std::chrono::milliseconds(
-            device_.objects().get_as<std::uint16_t>(kFrameTimeoutIndex, 0));
+        const core::Duration timeout = commands_.parts().frame_timeout();
         frame_timer_ = core::ScopedTimer(loop_, loop_.after(timeout, [this] {
             if (v1_) {
                 v1_->on_timeout();
@@ -86,12 +80,27 @@ private:
         }));
     }
 
-    void queue(const service::Frame& request) {
+    // A request, or the error a dropped one is answered with (the ESCON2's CRC error).
+    struct Pending {
+        service::Frame request;
+        std::uint32_t refusal = service::error::kNone;
+    };
+
+    void frame_error(service::V2Error error) {
+        ++counters_.frame_errors;
+        // ESCON2 FW spec table 111: the device answers a frame whose CRC failed, so the host
+        // learns at once instead of waiting for its timeout.
+        if (error == service::V2Error::CrcError && commands_.parts().dialect.answers_crc_errors) {
+            queue({{}, static_cast<std::uint32_t>(canopen::AbortCode::CrcError)});
+        }
+    }
+
+    void queue(Pending request) {
         if (pending_.size() >= kMaxQueuedRequests) {
             ++counters_.refused_busy;
             return;
         }
-        pending_.push_back(request);
+        pending_.push_back(std::move(request));
         if (!executing_) {
             execute_next();
         }
@@ -101,9 +110,13 @@ private:
         if (pending_.empty()) {
             return;
         }
-        service::Frame request = std::move(pending_.front());
+        Pending next = std::move(pending_.front());
         pending_.pop_front();
-        execute(request);
+        if (next.refusal != service::error::kNone) {
+            executing_ = true;
+            return answer_request(next.request.opcode, service::encode_answer({next.refusal, {}}));
+        }
+        execute(next.request);
     }
 
     void execute(const service::Frame& request) {
@@ -161,14 +174,13 @@ private:
         }
     }
 
-    EposP& device_;
     core::EventLoop& loop_;
     std::unique_ptr<service::Link> link_;
     ServiceProtocol protocol_;
     ServiceCommands commands_;
     std::optional<service::V1DeviceLink> v1_;
     std::optional<service::V2Decoder> v2_;
-    std::deque<service::Frame> pending_; ///< USB requests waiting for the one executed
+    std::deque<Pending> pending_; ///< USB requests waiting for the one executed
     bool executing_ = false;
     std::uint64_t host_ = 0; ///< counts hang-ups: answers for an earlier host are dropped
     core::ScopedTimer frame_timer_;
@@ -177,7 +189,13 @@ private:
 
 ServicePort::ServicePort(EposP& device, std::unique_ptr<service::Link> link,
                          ServiceProtocol protocol)
-    : impl_(std::make_unique<Impl>(device, std::move(link), protocol)) {}
+    : impl_(std::make_unique<Impl>(device.loop(), service_parts(device), std::move(link),
+                                   protocol)) {}
+
+ServicePort::ServicePort(core::EventLoop& loop, drives::escon2::Escon2Drive& drive,
+                         std::unique_ptr<service::Link> link)
+    : impl_(std::make_unique<Impl>(loop, service_parts(drive), std::move(link),
+                                   ServiceProtocol::Usb)) {}
 
 ServicePort::~ServicePort() = default;
 

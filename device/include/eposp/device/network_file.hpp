@@ -4,6 +4,7 @@
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/core/result.hpp"
 #include "eposp/core/time.hpp"
+#include "eposp/device/escon2_machine.hpp"
 #include "eposp/device/event_binding.hpp"
 #include "eposp/device/signal_wire.hpp"
 #include "eposp/drives/escon2/escon2_hardware.hpp"
@@ -48,18 +49,8 @@ struct NetworkSlave {
 
 /// An ESCON2 simulated in this process (docs/network.md, "ESCON2 servo controllers"): it has no
 /// CAN, the machine reaches it through wires to its pins.
-struct NetworkEscon2 {
-    /// One object written at power-up, as a configuration tool's download over USB writes it.
-    struct Parameter {
-        std::uint16_t index = 0;
-        std::uint8_t sub_index = 0;
-        canopen::Bytes value;
-    };
+struct NetworkEscon2 : Escon2Machine {
     std::string name; ///< what the wires call it
-    drives::escon2::Escon2Hardware hardware = drives::escon2::Escon2Hardware::Module60_30;
-    /// Its machine (an axis file); the reference axis without one.
-    std::optional<drives::plant::AxisParameters> plant;
-    std::vector<Parameter> parameters; ///< in the file's order, each checked as the device would
 };
 
 /// What a user writes instead of setting objects one by one.

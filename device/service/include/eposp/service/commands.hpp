@@ -50,6 +50,8 @@ inline constexpr std::uint32_t kWrongNmtState = 0x0F00FFC0;
 /// The parameters do not have the command's length (CiA 301: "length of service parameter does
 /// not match").
 inline constexpr std::uint32_t kLengthMismatch = 0x06070010;
+/// ESCON2 FW spec table 111: a ReadObject of a value that needs a segmented read.
+inline constexpr std::uint32_t kSegmentedTransferExpected = 0x0F00FFC1;
 } // namespace error
 
 /// Which network a request addresses: kDevice (the plain opcodes; NodeId 0 is the device,
