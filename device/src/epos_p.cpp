@@ -3,6 +3,7 @@
 #include "device_axis_link.hpp"
 #include "eposp/device/axis_process_data.hpp"
 #include "eposp/device/error_entry.hpp"
+#include "eposp/device/escon2_machine.hpp"
 #include "event_tasks.hpp"
 #include "manufacturer_status.hpp"
 #include "network_port.hpp"
@@ -177,24 +178,13 @@ void EposP::add_network(const NetworkFile& network) {
         slaves_.back()->start();
     }
     for (const NetworkEscon2& escon2 : network.escon2s) {
-        drives::escon2::Escon2DriveConfig config;
-        config.dictionary.hardware = escon2.hardware;
-        if (escon2.plant) {
-            config.axis = *escon2.plant;
+        auto drive = start_escon2(loop_, escon2);
+        if (!drive) {
+            // The network file's reader wrote each parameter into a dictionary of the same
+            // hardware, and this one has stored nothing.
+            throw std::logic_error("ESCON2 " + escon2.name + ": " + drive.error());
         }
-        auto& drive = *escon2s_
-                           .emplace_back(escon2.name, std::make_unique<drives::escon2::Escon2Drive>(
-                                                          loop_, std::move(config)))
-                           .second;
-        drive.start();
-        for (const NetworkEscon2::Parameter& parameter : escon2.parameters) {
-            // The network file's reader wrote each one into a dictionary of the same hardware.
-            if (drive.objects().write(parameter.index, parameter.sub_index, parameter.value) !=
-                canopen::AbortCode::None) {
-                throw std::logic_error(fmt::format("ESCON2 {} refused 0x{:04X} sub {}", escon2.name,
-                                                   parameter.index, parameter.sub_index));
-            }
-        }
+        escon2s_.emplace_back(escon2.name, std::move(*drive));
     }
     wires_->add(network.wires);
 }
