@@ -23,6 +23,8 @@ public:
         : tokens_(tokens), file_(file), diagnostics_(diagnostics) {}
 
     ast::CompilationUnit compilation_unit(P::CompilationUnitContext& context);
+    /// Adds a TYPE block, POU, configuration or global variable list to `unit`.
+    void library_element(P::LibraryElementContext& context, ast::CompilationUnit& unit);
 
     // ast_builder_declarations.cpp
     ast::TypeDeclaration type_declaration(P::TypeDeclarationContext& context);

@@ -53,23 +53,27 @@ ast::CompilationUnit build_ast(P::CompilationUnitContext& tree, antlr4::Buffered
 ast::CompilationUnit AstBuilder::compilation_unit(P::CompilationUnitContext& context) {
     ast::CompilationUnit unit{file_, {}, {}, {}, {}};
     for (P::LibraryElementContext* element : context.libraryElement()) {
-        if (auto* types = element->typeDeclarationBlock()) {
-            for (P::TypeDeclarationContext* declaration : types->typeDeclaration()) {
-                unit.types.push_back(type_declaration(*declaration));
-            }
-        } else if (auto* function_context = element->functionDeclaration()) {
-            unit.pous.push_back(function(*function_context));
-        } else if (auto* block = element->functionBlockDeclaration()) {
-            unit.pous.push_back(function_block(*block));
-        } else if (auto* program_context = element->programDeclaration()) {
-            unit.pous.push_back(program(*program_context));
-        } else if (auto* configuration_context = element->configurationDeclaration()) {
-            unit.configurations.push_back(configuration(*configuration_context));
-        } else if (auto* variables = element->varSection()) {
-            global_variable_list(*variables, unit.global_variable_lists);
-        }
+        library_element(*element, unit);
     }
     return unit;
+}
+
+void AstBuilder::library_element(P::LibraryElementContext& element, ast::CompilationUnit& unit) {
+    if (auto* types = element.typeDeclarationBlock()) {
+        for (P::TypeDeclarationContext* declaration : types->typeDeclaration()) {
+            unit.types.push_back(type_declaration(*declaration));
+        }
+    } else if (auto* function_context = element.functionDeclaration()) {
+        unit.pous.push_back(function(*function_context));
+    } else if (auto* block = element.functionBlockDeclaration()) {
+        unit.pous.push_back(function_block(*block));
+    } else if (auto* program_context = element.programDeclaration()) {
+        unit.pous.push_back(program(*program_context));
+    } else if (auto* configuration_context = element.configurationDeclaration()) {
+        unit.configurations.push_back(configuration(*configuration_context));
+    } else if (auto* variables = element.varSection()) {
+        global_variable_list(*variables, unit.global_variable_lists);
+    }
 }
 
 void AstBuilder::global_variable_list(P::VarSectionContext& context,

@@ -13,7 +13,9 @@
 #include <Exceptions.h>
 #include <atn/ParserATNSimulator.h>
 #include <atn/PredictionMode.h>
+#include <limits>
 #include <memory>
+#include <optional>
 
 namespace eposp::compiler {
 
@@ -76,25 +78,45 @@ void set_prediction_mode(StructuredTextParser& parser, antlr4::atn::PredictionMo
     parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(mode);
 }
 
-// Two-stage parsing: the fast SLL prediction with bail-out on the first error succeeds for
-// nearly all correct input; only when it fails is the file parsed again with full LL prediction
-// and error recovery, which also decides whether the error is real.
-StructuredTextParser::CompilationUnitContext* parse_two_stage(StructuredTextParser& parser,
-                                                              antlr4::CommonTokenStream& tokens,
-                                                              FileId file,
-                                                              Diagnostics& diagnostics) {
+// Correct input (nearly all) parses with the fast SLL prediction, bailing out on the first
+// error. It is parsed one library element at a time, each element's parse tree turned into its
+// AST and freed before the next: the tree of a whole file takes many times the memory of its
+// AST. The builder reports to `built`, kept apart until the file is known to parse.
+std::optional<ast::CompilationUnit> parse_elements(StructuredTextParser& parser,
+                                                   antlr4::CommonTokenStream& tokens, FileId file,
+                                                   Diagnostics& built) {
     parser.removeErrorListeners();
     parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
     set_prediction_mode(parser, antlr4::atn::PredictionMode::SLL);
+    AstBuilder builder(tokens, file, built);
+    ast::CompilationUnit unit{file, {}, {}, {}, {}};
     try {
-        return parser.compilationUnit();
+        while (tokens.LA(1) != antlr4::Token::EOF) {
+            builder.library_element(*parser.libraryElement(), unit);
+            parser.getTreeTracker().reset();
+        }
     } catch (const antlr4::ParseCancellationException&) {
-        tokens.seek(0);
-        parser.reset();
-        parser.setErrorHandler(std::make_shared<SyntaxErrorStrategy>(file, diagnostics));
-        set_prediction_mode(parser, antlr4::atn::PredictionMode::LL);
-        return parser.compilationUnit();
+        return std::nullopt;
     }
+    return unit;
+}
+
+// Only when the fast parse fails is the file parsed again, whole, with full LL prediction and
+// error recovery, which also decides whether the error is real. No AST when it is.
+std::optional<ast::CompilationUnit> parse_with_recovery(StructuredTextParser& parser,
+                                                        antlr4::CommonTokenStream& tokens,
+                                                        FileId file, Diagnostics& diagnostics,
+                                                        Diagnostics& built) {
+    const std::size_t errors_before = diagnostics.error_count();
+    tokens.seek(0);
+    parser.reset();
+    parser.setErrorHandler(std::make_shared<SyntaxErrorStrategy>(file, diagnostics));
+    set_prediction_mode(parser, antlr4::atn::PredictionMode::LL);
+    StructuredTextParser::CompilationUnitContext* tree = parser.compilationUnit();
+    if (diagnostics.error_count() != errors_before) {
+        return std::nullopt;
+    }
+    return build_ast(*tree, tokens, file, built);
 }
 
 } // namespace
@@ -112,12 +134,20 @@ ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostic
         return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
     StructuredTextParser parser(&tokens);
-    StructuredTextParser::CompilationUnitContext* tree =
-        parse_two_stage(parser, tokens, file, diagnostics);
-    if (diagnostics.error_count() != errors_before) {
+    const auto unlimited = std::numeric_limits<std::size_t>::max();
+    Diagnostics built(unlimited);
+    std::optional<ast::CompilationUnit> unit = parse_elements(parser, tokens, file, built);
+    if (!unit) {
+        built = Diagnostics(unlimited); // what the builder said before the syntax error
+        unit = parse_with_recovery(parser, tokens, file, diagnostics, built);
+    }
+    if (!unit || diagnostics.error_count() != errors_before) {
         return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
-    return build_ast(*tree, tokens, file, diagnostics);
+    for (const Diagnostic& diagnostic : built.all()) {
+        diagnostics.report(diagnostic);
+    }
+    return std::move(*unit);
 }
 
 } // namespace eposp::compiler

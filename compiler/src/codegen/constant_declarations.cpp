@@ -1,5 +1,6 @@
 #include "constant_declarations.hpp"
 
+#include <functional>
 #include <variant>
 
 namespace eposp::compiler::codegen {
@@ -7,10 +8,13 @@ namespace eposp::compiler::codegen {
 bool is_constant(const ast::Pou& pou, const ast::VariableDeclaration* declaration) {
     for (const ast::DeclarationSection& section : pou.sections) {
         if (const auto* variables = std::get_if<ast::VarSection>(&section)) {
-            for (const ast::VariableDeclaration& candidate : variables->variables) {
-                if (&candidate == declaration) {
-                    return variables->constant;
-                }
+            // Within the section's array: a test per section, not per variable (a POU with
+            // many variables would make every call a long search).
+            const std::less<const ast::VariableDeclaration*> before;
+            const ast::VariableDeclaration* first = variables->variables.data();
+            if (!before(declaration, first) &&
+                before(declaration, first + variables->variables.size())) {
+                return variables->constant;
             }
         }
     }

@@ -1,28 +1,25 @@
 #include "eposp/compiler/sema/symbol.hpp"
 
-#include <cctype>
-
 namespace eposp::compiler::sema {
 
 std::string fold_case(std::string_view name) {
     std::string folded(name);
     for (char& c : folded) {
-        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        c = upper_ascii(c);
     }
     return folded;
 }
 
 const Symbol* Scope::declare(const Symbol& symbol) {
-    const auto [it, inserted] = symbols_.emplace(fold_case(symbol.name), &symbol);
+    const auto [it, inserted] = symbols_.emplace(symbol.name, &symbol);
     return inserted ? nullptr : it->second;
 }
 
 const Symbol* Scope::find_member(std::string_view name) const {
-    const std::string key = fold_case(name);
     // A depth bound keeps a (diagnosed) EXTENDS cycle from looping.
     int depth = 0;
     for (const Scope* scope = this; scope != nullptr && depth < 64; scope = scope->base_, ++depth) {
-        if (const auto it = scope->symbols_.find(key); it != scope->symbols_.end()) {
+        if (const auto it = scope->symbols_.find(name); it != scope->symbols_.end()) {
             return it->second;
         }
     }

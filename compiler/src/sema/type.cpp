@@ -1,21 +1,21 @@
 #include "eposp/compiler/sema/type.hpp"
 
-#include "eposp/compiler/sema/symbol.hpp"
-
 namespace eposp::compiler::sema {
 
 using E = ast::ElementaryType;
 
 const Field* Type::field(std::string_view field_name) const {
-    const std::string key = fold_case(field_name);
     for (const Type* type = this; type != nullptr; type = type->base) {
-        for (const Field& candidate : type->fields) {
-            if (fold_case(candidate.name) == key) {
-                return &candidate;
-            }
+        if (const auto it = type->field_index.find(field_name); it != type->field_index.end()) {
+            return &type->fields[it->second];
         }
     }
     return nullptr;
+}
+
+void Type::add_field(Field field) {
+    field_index.emplace(field.name, static_cast<std::uint32_t>(fields.size()));
+    fields.push_back(std::move(field));
 }
 
 namespace {

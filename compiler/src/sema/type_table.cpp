@@ -316,7 +316,7 @@ void TypeTable::lay_out(Type& type,
                 too_large = true;
                 break;
             }
-            type.fields.push_back(
+            type.add_field(
                 {name.name, member, static_cast<std::uint32_t>(at), sections[i], &declaration});
             offset = at + member->size;
             type.align = std::max(type.align, member->align);
@@ -522,7 +522,7 @@ const Type* TypeTable::frame(const ast::Pou& pou) {
             result = nullptr;
         }
         if (result != nullptr) {
-            type.fields.push_back({pou.name.name, result, 0, ast::VarSectionKind::Output, nullptr});
+            type.add_field({pou.name.name, result, 0, ast::VarSectionKind::Output, nullptr});
             start = result->size;
             type.align = result->align;
         }

@@ -1,11 +1,11 @@
 #pragma once
 
 #include "eposp/compiler/ast/compilation_unit.hpp"
+#include "eposp/compiler/sema/name_map.hpp"
 #include "eposp/compiler/source_location.hpp"
 
 #include <string>
 #include <string_view>
-#include <unordered_map>
 
 namespace eposp::compiler::sema {
 
@@ -67,10 +67,11 @@ public:
 private:
     const Scope* parent_;
     const Scope* base_ = nullptr;
-    std::unordered_map<std::string, const Symbol*> symbols_;
+    NameMap<const Symbol*> symbols_;
 };
 
-/// The key under which a name is stored: IEC identifiers ignore ASCII case.
+/// `name` in upper case, for comparing names (IEC identifiers ignore ASCII case); lookups go
+/// through `NameMap`, which needs no folded copy.
 std::string fold_case(std::string_view name);
 
 } // namespace eposp::compiler::sema

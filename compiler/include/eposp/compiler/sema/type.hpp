@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/compiler/ast/declarations.hpp"
+#include "eposp/compiler/sema/name_map.hpp"
 #include "eposp/vm/scalar.hpp"
 
 #include <cstdint>
@@ -82,6 +83,11 @@ struct Type {
 
     /// The field `name` (case-insensitive), searching the base part too.
     const Field* field(std::string_view field_name) const;
+    /// Appends `field` to `fields` and to the index `field` searches (the first of a name wins).
+    void add_field(Field field);
+
+    /// Struct, Instance: each field's position in `fields` by name.
+    NameMap<std::uint32_t> field_index{};
 };
 
 bool is_integer(const Type& type);    ///< ANY_INT
