@@ -24,7 +24,7 @@ std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId>
     const auto program = types::type_program(
         front_end->units, *front_end->model,
         [&front_end](std::string_view name) { return front_end->library_pou(name); }, typing);
-    checks::check_program(*program, front_end->units, libraries.size(), diagnostics);
+    checks::check_program(*program, front_end->units, libraries.size(), options, diagnostics);
     codegen::ProgramGenerator generator({*front_end->model, front_end->units, libraries.size()},
                                         {*front_end->library_model, front_end->library_units},
                                         diagnostics, options);

@@ -4,7 +4,9 @@
 #include "eposp/compiler/types/front_end.hpp"
 
 #include <gtest/gtest.h>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace eposp::compiler {
@@ -18,7 +20,8 @@ struct Checked {
 
 // Types `program` (and `library`, linked after it, when given) and runs the checks only.
 std::vector<std::string> check(Checked& checked, const std::string& program,
-                               const std::string& library = "") {
+                               const std::string& library = "",
+                               const CompileOptions& options = {}) {
     std::vector<FileId> files{checked.sources.add("main.st", program)};
     if (!library.empty()) {
         files.push_back(checked.sources.add("library.st", library));
@@ -30,7 +33,7 @@ std::vector<std::string> check(Checked& checked, const std::string& program,
     if (front_end->program == nullptr) {
         return codes;
     }
-    checks::check_program(*front_end->program, front_end->units, library.empty() ? 0 : 1,
+    checks::check_program(*front_end->program, front_end->units, library.empty() ? 0 : 1, options,
                           checked.diagnostics);
     for (const Diagnostic& diagnostic : checked.diagnostics.all()) {
         codes.emplace_back(describe(diagnostic.code).name);
@@ -175,6 +178,102 @@ END_FOR;
 END_PROGRAM
 )st"),
               (Codes{"E0404", "E0402"}));
+}
+
+TEST(ChecksStage, RefusesTasksTheControllerCannotRun) {
+    Checked checked;
+    CompileOptions options;
+    options.task_event_check = [](std::string_view event) -> std::optional<std::string> {
+        if (event == "sync") {
+            return std::nullopt;
+        }
+        return "not an event of this host";
+    };
+    EXPECT_EQ(check(checked, R"st(
+CONFIGURATION Cell
+VAR_GLOBAL count : INT; go : BOOL; END_VAR
+RESOURCE Station ON PLC
+    TASK Fast (INTERVAL := T#100us, PRIORITY := 1);
+    TASK Once (SINGLE := count, PRIORITY := -1);
+    {attribute 'event' := 'sync'}
+    {attribute 'event' := 'sync'}
+    TASK Synced (PRIORITY := 3);
+    {attribute 'event' := 'sync'}
+    TASK Both (INTERVAL := T#10ms, PRIORITY := 7);
+    {attribute 'event' := 'tick'}
+    TASK Refused (PRIORITY := 4);
+    {attribute 'event' := ''}
+    TASK Unnamed (PRIORITY := 5);
+    TASK Triggered (SINGLE := go, PRIORITY := 6);
+    PROGRAM Inst WITH Fast : Main;
+END_RESOURCE
+END_CONFIGURATION
+PROGRAM Main
+VAR x : INT; END_VAR
+x := x + 1;
+END_PROGRAM
+)st",
+                    "", options),
+              (Codes{"E0421", "E0421", "E0421", "E0424", "E0424", "E0424", "E0424"}));
+}
+
+TEST(ChecksStage, RefusesAnyParametersAndWholeInstancesAssigned) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+FUNCTION Describe : INT
+VAR_INPUT v : ANY; END_VAR
+END_FUNCTION
+FUNCTION_BLOCK Counter
+VAR_OUTPUT n : INT; END_VAR
+n := n + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a, b : Counter; END_VAR
+a();
+a := b;
+END_PROGRAM
+)st"),
+              (Codes{"W0403", "E0416", "E0412"}));
+}
+
+TEST(ChecksStage, RefusesProgramConnectionsToWhatCannotBeConnected) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+CONFIGURATION Cell
+VAR_GLOBAL g : INT; END_VAR
+RESOURCE Station ON PLC
+    TASK Cyclic (INTERVAL := T#10ms, PRIORITY := 1);
+    PROGRAM A WITH Cyclic : Source (out => g);
+    PROGRAM B WITH Cyclic : Sink (in := g + 1, total => 5);
+    PROGRAM C WITH Cyclic : Sink (in := A.out, total => g);
+END_RESOURCE
+END_CONFIGURATION
+PROGRAM Source
+VAR_OUTPUT out : INT; END_VAR
+out := 1;
+END_PROGRAM
+PROGRAM Sink
+VAR_INPUT in : INT; END_VAR
+VAR_OUTPUT total : INT; END_VAR
+total := in;
+END_PROGRAM
+)st"),
+              (Codes{"E0423", "E0423"}));
+}
+
+TEST(ChecksStage, RefusesTheSizeOfAConformantArray) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+FUNCTION Bytes : UDINT
+VAR_IN_OUT a : ARRAY[*] OF INT; END_VAR
+Bytes := SIZEOF(a) + SIZEOF(a[LOWER_BOUND(a, 1)]);
+END_FUNCTION
+PROGRAM Main
+VAR values : ARRAY[1..4] OF INT; n : UDINT; END_VAR
+n := Bytes(values);
+END_PROGRAM
+)st"),
+              Codes{"E0417"});
 }
 
 } // namespace

@@ -5,7 +5,7 @@
 namespace eposp::compiler::checks {
 
 void check_program(types::TypedProgram& program, std::span<const ast::CompilationUnit> units,
-                   std::size_t linked, Diagnostics& diagnostics) {
+                   std::size_t linked, const CompileOptions& options, Diagnostics& diagnostics) {
     const CallGraph calls(program, units, linked);
     for (const ast::Pou* pou : calls.pous()) {
         const PouUnderCheck check{program, *pou, diagnostics};
@@ -18,11 +18,16 @@ void check_program(types::TypedProgram& program, std::span<const ast::Compilatio
         check_for_loops(check);
         check_overlapping_case_labels(check);
         check_zero_divisors(check);
+        check_generic_parameters(check);
+        check_whole_assignments(check);
+        check_conformant_sizes(check);
     }
     const ProgramUnderCheck program_check{program, calls, diagnostics};
     check_constant_subranges(program_check);
     check_string_cuts(program_check);
     check_recursion(calls, diagnostics);
+    check_tasks(program, units, options, diagnostics);
+    check_program_connections(program, units, diagnostics);
 }
 
 bool ProgramUnderCheck::includes(const ast::Pou* pou) const {

@@ -3,6 +3,7 @@
 // The checks of the checking stage, one file each (checks.hpp runs them).
 
 #include "call_graph.hpp"
+#include "eposp/compiler/compile_options.hpp"
 #include "eposp/compiler/diagnostics.hpp"
 #include "eposp/compiler/types/typed_program.hpp"
 
@@ -45,10 +46,25 @@ void check_overlapping_case_labels(const PouUnderCheck& check);
 void check_zero_divisors(const PouUnderCheck& check);
 /// E0409: a constant array index outside the array's bounds.
 void check_constant_indices(const PouUnderCheck& check);
+/// E0412: an assignment to a whole FB instance or ARRAY[*].
+void check_whole_assignments(const PouUnderCheck& check);
+/// E0417: SIZEOF of an ARRAY[*].
+void check_conformant_sizes(const PouUnderCheck& check);
+/// E0416: a FUNCTION's parameter of type ANY (only native functions take one).
+void check_generic_parameters(const PouUnderCheck& check);
 /// E0410: a constant stored into a subrange outside its bounds.
 void check_constant_subranges(const ProgramUnderCheck& check);
 /// W0406: a string literal longer than the string it is stored into.
 void check_string_cuts(const ProgramUnderCheck& check);
+/// E0421, E0424: a TASK's PRIORITY, SINGLE or INTERVAL the controller cannot run, an event
+/// attribute the host refuses (`options.task_event_check`) or that contradicts the others.
+void check_tasks(types::TypedProgram& program, std::span<const ast::CompilationUnit> units,
+                 const CompileOptions& options, Diagnostics& diagnostics);
+/// E0423: a program connection to what is not a global variable, constant, direct address or
+/// another program's output (an input), or a global variable or direct output (an output).
+void check_program_connections(types::TypedProgram& program,
+                               std::span<const ast::CompilationUnit> units,
+                               Diagnostics& diagnostics);
 /// E0407: a POU that calls itself, directly or through others (6.6.1.1).
 void check_recursion(const CallGraph& calls, Diagnostics& diagnostics);
 

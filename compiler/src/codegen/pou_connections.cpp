@@ -4,6 +4,7 @@
 // the configuration (globals and their parts, constants, direct addresses, other programs'
 // outputs), so they are typed and generated like any other expression.
 
+#include "../checks/program_connections.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_generator.hpp"
 
@@ -22,7 +23,8 @@ std::uint32_t PouGenerator::generate_connections(const ast::ProgramInstance& ins
     for (const ast::Argument& argument : instance.connections) {
         const bool output = argument.kind == ast::Argument::Kind::Output;
         const sema::Field* field = connected_field(argument);
-        if (field == nullptr || !is_connectable(*argument.value, output)) {
+        // The checks refused the connections to what cannot be connected.
+        if (field == nullptr || !checks::is_connectable(model_, types_, *argument.value, output)) {
             continue;
         }
         if (output) {
@@ -53,53 +55,6 @@ const sema::Field* PouGenerator::connected_field(const ast::Argument& argument) 
         return nullptr;
     }
     return field;
-}
-
-bool PouGenerator::is_connectable(const ast::Expression& expression, bool output) {
-    const auto refuse = [&](const SourceRange& range) {
-        error(DiagnosticCode::E0423, range,
-              output ? "an output connects to a global variable (or a part of one) or a "
-                       "direct output or memory address"
-                     : "an input connects to a global variable (or a part of one), a "
-                       "constant, a direct address or an output of another program");
-        return false;
-    };
-    const ast::Expression* path = &expression;
-    if (const auto* negated = std::get_if<ast::UnaryExpression>(&path->node)) {
-        path = negated->operand.get(); // `-5`
-        if (!std::holds_alternative<ast::LiteralExpression>(path->node)) {
-            return refuse(expression.range);
-        }
-    }
-    if (std::holds_alternative<ast::LiteralExpression>(path->node)) {
-        return output ? refuse(expression.range) : true;
-    }
-    // Down a variable path to its root: `g`, `g.x`, `arr[2]`, `Inst1.out`, `%QX0.0`.
-    for (;;) {
-        if (const auto* member = std::get_if<ast::MemberExpression>(&path->node)) {
-            const auto* object = std::get_if<ast::NameExpression>(&member->object->node);
-            const sema::Symbol* symbol = object ? model_.resolved(object->name) : nullptr;
-            if (symbol != nullptr && symbol->kind == sema::SymbolKind::ProgramInstance) {
-                const auto instance = program_.program_instance_variable(symbol->name);
-                const sema::Field* field =
-                    instance ? instance->type->field(member->member.name) : nullptr;
-                if (output || field == nullptr || field->section != ast::VarSectionKind::Output) {
-                    return refuse(expression.range); // only read, and only its outputs
-                }
-            }
-            path = member->object.get();
-        } else if (const auto* element = std::get_if<ast::IndexExpression>(&path->node)) {
-            path = element->array.get();
-        } else {
-            break;
-        }
-    }
-    if (const auto* direct = std::get_if<ast::DirectAddressExpression>(&path->node)) {
-        const bool input_area = direct->address.area == ast::DirectAddress::Area::Input;
-        return output && input_area ? refuse(expression.range) : true;
-    }
-    return std::holds_alternative<ast::NameExpression>(path->node) ? true
-                                                                   : refuse(expression.range);
 }
 
 void PouGenerator::connect_input(const sema::Field& field, const ast::Expression& source) {

@@ -22,17 +22,7 @@ std::uint32_t PouGenerator::generate() {
     if (!native) { // a native body has no source: its errors are at its call (vm run_end.cpp)
         builder_.line(pou_.range.begin.line);
     }
-    declare_locals();
-    if (pou_.kind == ast::PouKind::Function) {
-        for (const sema::Field& field : types_.frame(pou_)->fields) {
-            if (field.type->generic) {
-                error(DiagnosticCode::E0416, field.declaration->type.range,
-                      fmt::format("'{}' is ANY, which only a native function takes: a FUNCTION "
-                                  "without statements in a linked library",
-                                  field.name));
-            }
-        }
-    }
+    declare_locals(); // an ANY parameter is refused by the checks (checks/generic_parameters.cpp)
     end_ = builder_.label();
     initialise_frame();
     if (native) {

@@ -63,9 +63,6 @@ private:
     // --- pou_connections.cpp -----------------------------------------------------------------
     /// The input or output of this program that `argument` connects; null after an error.
     const sema::Field* connected_field(const ast::Argument& argument);
-    /// Whether `expression` is what a connection may name (a literal, a variable path, a
-    /// direct address); reports it otherwise.
-    bool is_connectable(const ast::Expression& expression, bool output);
     /// `in := source`, before the program runs.
     void connect_input(const sema::Field& field, const ast::Expression& source);
     /// `out => sink`, after it.

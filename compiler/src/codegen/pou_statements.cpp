@@ -96,14 +96,8 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
               "output of another instance)");
         return;
     }
-    if (target->type->kind == sema::TypeKind::Instance) {
-        error(DiagnosticCode::E0412, range, "a function block instance cannot be assigned");
-        return;
-    }
-    if (target->type->conformant) {
-        error(DiagnosticCode::E0412, range,
-              "an ARRAY[*] cannot be assigned as a whole, only its elements");
-        return;
+    if (target->type->kind == sema::TypeKind::Instance || target->type->conformant) {
+        return; // refused by the checks (E0412, checks/whole_assignments.cpp)
     }
     const Destination dest{target->operand, target->type};
     const Destination* into = target->kind == Place::Kind::Direct ? &dest : nullptr;

@@ -352,12 +352,10 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
         for (const ast::TaskDeclaration& declaration : resource.tasks) {
             vm::Task task;
             task.name = declaration.name.name;
+            // The checks refused the properties the controller cannot run (checks/tasks.cpp).
             if (declaration.priority) {
                 const auto priority = types_.fold_integer(*declaration.priority);
-                if (!priority || *priority < 0 || *priority > UINT32_MAX) {
-                    diagnostics_.error(DiagnosticCode::E0421, declaration.priority->range,
-                                       "PRIORITY must be a constant from 0 upwards");
-                } else {
+                if (priority && *priority >= 0 && *priority <= UINT32_MAX) {
                     task.priority = static_cast<std::uint32_t>(*priority);
                 }
             }
@@ -365,11 +363,7 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
             if (declaration.single) {
                 task.kind = vm::TaskKind::Event;
                 const auto* name = std::get_if<ast::NameExpression>(&declaration.single->node);
-                const auto place = name != nullptr ? global(name->name.name) : std::nullopt;
-                if (!place || !sema::is_bool(*place->type)) {
-                    diagnostics_.error(DiagnosticCode::E0421, declaration.single->range,
-                                       "SINGLE must name a global BOOL variable");
-                } else {
+                if (const auto place = name != nullptr ? global(name->name.name) : std::nullopt) {
                     task.event_offset = place->operand.offset();
                 }
             } else if (task.event.empty()) {
@@ -424,54 +418,25 @@ void ProgramGenerator::connect_programs() {
 }
 
 void ProgramGenerator::bind_task_event(const ast::TaskDeclaration& declaration, vm::Task& task) {
+    // The checks refused every event attribute but one the host accepts (checks/tasks.cpp).
     for (const ast::Attribute& attribute : declaration.attributes) {
-        if (sema::fold_case(attribute.name) != sema::fold_case("event")) {
-            continue; // an attribute of another tool
-        }
-        if (!task.event.empty()) {
-            diagnostics_.error(DiagnosticCode::E0424, attribute.range,
-                               "task '" + task.name + "' is already released by an event");
-        } else if (declaration.interval) {
-            diagnostics_.error(DiagnosticCode::E0424, attribute.range,
-                               "task '" + task.name +
-                                   "' has an INTERVAL: a task released by an "
-                                   "event is not cyclic");
-        } else if (attribute.value.empty()) {
-            diagnostics_.error(DiagnosticCode::E0424, attribute.range,
-                               "the attribute names the event: {attribute 'event' := 'sync'}");
-        } else if (const auto refusal = options_.task_event_check
-                                            ? options_.task_event_check(attribute.value)
-                                            : std::nullopt) {
-            diagnostics_.error(DiagnosticCode::E0424, attribute.range,
-                               "event '" + attribute.value + "': " + *refusal);
-        } else {
+        if (sema::fold_case(attribute.name) == sema::fold_case("event")) {
             task.kind = vm::TaskKind::Event;
             task.event = attribute.value;
+            return;
         }
     }
 }
 
 std::uint64_t ProgramGenerator::task_interval(const ast::TaskDeclaration& task) {
-    if (!task.interval) {
-        return kDefaultIntervalNs;
-    }
-    const auto* literal = std::get_if<ast::LiteralExpression>(&task.interval->node);
+    const auto* literal =
+        task.interval ? std::get_if<ast::LiteralExpression>(&task.interval->node) : nullptr;
     const auto* duration =
         literal != nullptr ? std::get_if<ast::DurationLiteral>(&literal->value) : nullptr;
-    if (duration == nullptr || duration->nanoseconds <= 0) {
-        diagnostics_.error(DiagnosticCode::E0421, task.interval->range,
-                           "INTERVAL must be a positive TIME literal");
-        return kDefaultIntervalNs;
-    }
-    if (static_cast<std::uint64_t>(duration->nanoseconds) < vm::kMinTaskIntervalNs) {
-        diagnostics_.error(DiagnosticCode::E0421, task.interval->range,
-                           fmt::format("INTERVAL must be at least {} ms: the controller runs "
-                                       "cyclic tasks on a {} ms tick",
-                                       vm::kMinTaskIntervalNs / 1'000'000,
-                                       vm::kMinTaskIntervalNs / 1'000'000));
-        return kDefaultIntervalNs;
-    }
-    return static_cast<std::uint64_t>(duration->nanoseconds);
+    // A missing INTERVAL takes the default; the checks refused one below a tick.
+    return duration != nullptr && duration->nanoseconds > 0
+               ? static_cast<std::uint64_t>(duration->nanoseconds)
+               : kDefaultIntervalNs;
 }
 
 void ProgramGenerator::default_program_instances() {

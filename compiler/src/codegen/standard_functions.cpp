@@ -124,10 +124,7 @@ std::optional<Value> PouGenerator::address_or_size(const std::string& name,
         return Value{address_of(*target), &types_.reference(nullptr)};
     }
     if (type->conformant) {
-        error(DiagnosticCode::E0417, range,
-              "the size of an ARRAY[*] is known only when running: use LOWER_BOUND and "
-              "UPPER_BOUND");
-        return std::nullopt;
+        return std::nullopt; // refused by the checks (E0417, checks/conformant_sizes.cpp)
     }
     // SIZEOF: a constant of the smallest unsigned type that holds the size (CODESYS), so that
     // it fits a UINT parameter as well as a DINT.
