@@ -85,6 +85,7 @@ void EmcyProducer::set_nmt_state(NmtState state) {
     }
     if (state == NmtState::Initialising) {
         inhibit_timer_.cancel();
+        queue_retry_timer_.cancel();
     } else if (previous == NmtState::Initialising) {
         update_register(); // a reset restored 0x1001; the errors still active stay in it
     }
@@ -127,9 +128,17 @@ void EmcyProducer::emit(std::uint16_t error_code, std::uint8_t error_register,
 }
 
 void EmcyProducer::send_pending() {
-    while (!inhibit_timer_.pending() && !pending_.empty()) {
-        if (port_.send(pending_.front()) == can::SendStatus::BusOff) {
+    while (!inhibit_timer_.pending() && !queue_retry_timer_.pending() && !pending_.empty()) {
+        const can::SendStatus status = port_.send(pending_.front());
+        if (status == can::SendStatus::BusOff) {
             return; // kept for controller_recovered()
+        }
+        if (status == can::SendStatus::TxOverflow) {
+            queue_retry_timer_ = core::ScopedTimer(loop_, loop_.after(kQueueRetry, [this] {
+                queue_retry_timer_.cancel();
+                send_pending();
+            }));
+            return;
         }
         pending_.pop_front();
         const bool has_inhibit = od_.find(kInhibitTimeEmcyIndex, 0) != nullptr;

@@ -58,9 +58,6 @@ bool is_communication_error(std::uint16_t code) {
 
 constexpr std::chrono::microseconds kControlPeriod{1000};
 
-// CiA 301 7.3.5: a COB-ID's CAN identifier (bits 0 … 28; bit 29 the frame format, 31 invalid).
-constexpr std::uint32_t kCanIdMask = 0x1FFF'FFFF;
-
 // Table 8-81: the codes of the bit rates (5 and 8 are not used).
 std::uint16_t can_bit_rate_code(std::uint32_t bit_rate) {
     static constexpr std::array<std::uint32_t, 8> kBitRates = {1'000'000, 800'000, 500'000, 250'000,
@@ -72,7 +69,7 @@ std::uint16_t can_bit_rate_code(std::uint32_t bit_rate) {
 } // namespace
 
 Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig config)
-    : loop_(loop), port_(port), dictionary_(with_restore_rule(std::move(config.dictionary), *this)),
+    : loop_(loop), dictionary_(with_restore_rule(std::move(config.dictionary), *this)),
       node_(loop, port, dictionary_.objects(), dictionary_.node_config()), machine_(config.axis),
       axis_(config.axis), power_stage_temperature_(config.power_stage_thermal),
       mode_services_(std::make_unique<ModeServices>(ModeServices{
@@ -124,22 +121,12 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     });
     // 4.2.19, 4.2.20: the controller's receive and transmit queues are the virtual bus port's
     // (the spec gives no sizes for the EPOS2's). Raised at the next control period: a transmit
-    // overflow is heard inside a send, where an EMCY would be sent again. An EMCY the full queue
-    // refused is kept: the error is reported once the queue has room (4.1: an EMCY "per error
-    // event"), not lost with the frames that caused it.
+    // overflow is heard inside a send, where an EMCY would be sent again. The EMCY producer keeps
+    // an EMCY the full queue refused until there is room (4.1: an EMCY "per error event").
     if (auto* virtual_port = dynamic_cast<can::VirtualPort*>(&port)) {
-        virtual_port->on_overflow([this](can::Overflow overflow, const can::Frame& lost) {
-            if (overflow == can::Overflow::Receive) {
-                queue_overflow_ = kCanRxQueueOverflowErrorCode;
-                return;
-            }
-            queue_overflow_ = kCanTxQueueOverflowErrorCode;
-            const auto emcy_id =
-                dictionary_.objects().get_as<std::uint32_t>(0x1014, 0) & kCanIdMask;
-            if (lost.id == emcy_id && !resending_emcys_ &&
-                refused_emcys_.size() < canopen::EmcyProducer::kMaxPending) {
-                refused_emcys_.push_back(lost);
-            }
+        virtual_port->on_overflow([this](can::Overflow overflow, const can::Frame&) {
+            queue_overflow_ = overflow == can::Overflow::Receive ? kCanRxQueueOverflowErrorCode
+                                                                 : kCanTxQueueOverflowErrorCode;
         });
     }
 }
@@ -478,29 +465,10 @@ void Epos2Drive::watch_sensors() {
 }
 
 void Epos2Drive::watch_bus_queues() {
-    resend_refused_emcys();
     if (queue_overflow_) {
         raise_device_error(*queue_overflow_);
         queue_overflow_.reset();
     }
-}
-
-// EMCYs go out in NMT pre-operational and operational only (7.3.5); a reset or stop drops them,
-// as it drops those the EMCY producer still holds.
-void Epos2Drive::resend_refused_emcys() {
-    const canopen::NmtState nmt = node_.nmt_state();
-    if (nmt != canopen::NmtState::PreOperational && nmt != canopen::NmtState::Operational) {
-        refused_emcys_.clear();
-    }
-    resending_emcys_ = true;
-    while (!refused_emcys_.empty()) {
-        const can::SendStatus status = port_.send(refused_emcys_.front());
-        if (status == can::SendStatus::TxOverflow || status == can::SendStatus::BusOff) {
-            break; // still no room: the next period tries again
-        }
-        refused_emcys_.pop_front();
-    }
-    resending_emcys_ = false;
 }
 
 // 8.2.74, 8.2.41, 8.2.127: what the sensor supervision checks; a new configuration is a start-up.

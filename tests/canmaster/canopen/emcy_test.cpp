@@ -113,6 +113,31 @@ TEST_F(EmcyProducerTest, PendingEmcysBeyondTheQueueAreLostButRecorded) {
     EXPECT_EQ(history().size(), kEpos2ErrorHistoryEntries);
 }
 
+TEST(EmcyProducerQueue, AnEmcyTheFullTransmitQueueRefusedLeavesOnceThereIsRoom) {
+    ServiceBench bench;
+    const auto port = bench.bus.connect("small", 2);
+    ObjectDictionary od;
+    add_error_objects(od, kEpos2ErrorHistoryEntries);
+    add_emcy_objects(od, kNode);
+    EmcyProducer emcy{bench.loop, *port, od};
+    emcy.set_nmt_state(NmtState::PreOperational);
+    const can::Frame filler = *can::parse_candump_frame("185#0102030405060708");
+    std::size_t taken = 0;
+    while (port->send(filler) == can::SendStatus::Queued) {
+        ++taken;
+    }
+    emcy.raise(0x8110, error_register::kCommunication);
+    emcy.raise(0x81FF, error_register::kCommunication);
+    bench.run_for(10ms);
+
+    const std::vector<Sent> sent = bench.sent_by("small");
+    ASSERT_EQ(sent.size(), taken + 2);
+    EXPECT_EQ(sent[taken].frame, "085#1081110000000000");
+    EXPECT_EQ(sent[taken + 1].frame, "085#FF81110000000000");
+    // Offered again every kQueueRetry: the first leaves within one retry of the queue's room.
+    EXPECT_LE(sent[taken].at - sent[taken - 1].at, EmcyProducer::kQueueRetry + kFrameTime);
+}
+
 TEST_F(EmcyProducerTest, StoppedSendsNoEmcyButRecordsTheError) {
     emcy.set_nmt_state(NmtState::Stopped);
     emcy.raise(0x8130, error_register::kCommunication);

@@ -39,11 +39,15 @@ void enforce_emcy_rules(ObjectDictionary& od);
 /// EMCYs are sent in pre-operational and operational only (EPOS2 FW spec 7.3.5), not while 0x1014
 /// is invalid, and at least the inhibit time 0x1015 apart: those due sooner wait in order (up to
 /// kMaxPending; later ones are lost, the history and register keep them all). A controller that
-/// is bus-off sends nothing: the EMCYs it refuses wait until controller_recovered().
+/// is bus-off sends nothing: the EMCYs it refuses wait until controller_recovered(). One whose
+/// transmit queue is full keeps them too and offers the first again every kQueueRetry, as a
+/// stack's process loop does, so an error is reported once there is room (the EPOS2's own
+/// 0x81FF "CAN transmit queue overflow" among them) rather than lost with the frames before it.
 class EmcyProducer {
 public:
     using ManufacturerData = std::array<std::uint8_t, 5>;
     static constexpr std::size_t kMaxPending = 16;
+    static constexpr core::Duration kQueueRetry = std::chrono::milliseconds(1);
 
     EmcyProducer(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
                  GenericErrorBit generic_bit = GenericErrorBit::WithEveryError);
@@ -75,6 +79,7 @@ private:
     std::deque<can::Frame> pending_;
     bool reset_unsent_ = false; ///< an error ended while no EMCY could be sent
     core::ScopedTimer inhibit_timer_;
+    core::ScopedTimer queue_retry_timer_; ///< the transmit queue was full
 };
 
 } // namespace eposp::canopen

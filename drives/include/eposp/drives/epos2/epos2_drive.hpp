@@ -155,7 +155,6 @@ private:
     void watch_power_stage(bool overcurrent);
     void watch_sensors();
     void watch_bus_queues();
-    void resend_refused_emcys();
     void read_sensor_configuration();
     void restart_sensor_supervision();
     void clear_errors();
@@ -203,7 +202,6 @@ private:
     std::int64_t position_actual() const { return encoder_counter() + position_offset_; }
 
     core::EventLoop& loop_;
-    can::Port& port_;
     Epos2Dictionary dictionary_;
     canopen::Node node_;
     plant::AxisParameters machine_; ///< what the dictionary does not configure (see configure_axis)
@@ -224,10 +222,6 @@ private:
     bool position_reset_on_clear_ = false;
     /// 0x81FE / 0x81FF: a queue of the CAN controller lost a frame, raised at the next period.
     std::optional<std::uint16_t> queue_overflow_;
-    /// 4.2.20: EMCYs a full transmit queue refused (0x81FF's own among them), sent again each
-    /// control period, in order, until the queue takes them.
-    std::deque<can::Frame> refused_emcys_;
-    bool resending_emcys_ = false; ///< a refusal heard now is of a frame refused_emcys_ keeps
 
     OperatingMode mode_ = OperatingMode::ProfilePosition;
     std::uint16_t controlword_ = 0;
