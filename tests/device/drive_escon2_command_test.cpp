@@ -97,6 +97,19 @@ TEST(DriveEscon2Command, OdConfiguresTheEscon2OverItsUsbPort) {
     EXPECT_THAT(result.output, HasSubstr("0 frame errors"));
 }
 
+// 6.2.5: what a host saves over USB is in the device's memory (--state-dir) at the next run.
+TEST(DriveEscon2Command, ParametersSavedOverUsbAreThereAtTheNextRun) {
+    const std::string od = kEposp + " od --port $port --protocol v2 ";
+    const auto saved = with_served_port(drive_escon2("--usb pty"), "USB service port",
+                                        od + "write 0x210C 2 99 && " + od + "write 0x1010 1 save",
+                                        scratch("first.out"));
+    ASSERT_EQ(saved.exit_code, 0) << saved.output;
+    const auto next = with_served_port(drive_escon2("--usb pty"), "USB service port",
+                                       od + "read 0x210C 2", scratch("second.out"));
+    EXPECT_EQ(next.exit_code, 0) << next.output;
+    EXPECT_THAT(next.output, HasSubstr("0x210C sub 2: 99 (0x00000063)"));
+}
+
 TEST(DriveEscon2Command, OdDumpShowsTheObjectsOfTheEscon2) {
     const auto result =
         with_served_port(drive_escon2("--usb pty"), "USB service port",
