@@ -107,6 +107,10 @@ bool negate_literal(ast::Expression& operand) {
 
 template <typename Operand>
 ast::ExpressionPtr AstBuilder::binary_chain(antlr4::ParserRuleContext& context) {
+    if (context.children.size() == 1) {
+        // No operator at this level (most operands): no type test for the child.
+        return operand(*static_cast<Operand*>(context.children.front()));
+    }
     ast::ExpressionPtr result;
     ast::BinaryOperator pending = ast::BinaryOperator::Or;
     for (antlr4::tree::ParseTree* child : context.children) {

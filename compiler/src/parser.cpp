@@ -8,6 +8,7 @@
 #include "token_range.hpp"
 #include "utf8.hpp"
 
+#include <ANTLRInputStream.h>
 #include <BailErrorStrategy.h>
 #include <CommonTokenStream.h>
 #include <Exceptions.h>
@@ -23,6 +24,15 @@ namespace {
 
 using generated::StructuredTextLexer;
 using generated::StructuredTextParser;
+
+// The runtime converts the text to UTF-32 into a string sized for the longest conversion, about
+// five times what it keeps; its spare capacity would stay allocated while the file is parsed.
+class InputStream : public antlr4::ANTLRInputStream {
+public:
+    explicit InputStream(const std::string& text) : ANTLRInputStream(text) {
+        _data.shrink_to_fit();
+    }
+};
 
 // The ANTLR runtime needs UTF-8. A file that is not, such as one exported from CODESYS with
 // a 'ü' in a comment, is read as Windows-1252, one character a byte (so columns stay true),
@@ -124,7 +134,7 @@ std::optional<ast::CompilationUnit> parse_with_recovery(StructuredTextParser& pa
 ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
     const std::size_t errors_before = diagnostics.error_count();
     const std::string text = utf8_text(sources, file, diagnostics);
-    antlr4::ANTLRInputStream input(text);
+    InputStream input(text);
     StructuredTextLexer lexer(&input);
     lexer.removeErrorListeners(); // INVALID_CHARACTER leaves the lexer nothing to report
     antlr4::CommonTokenStream tokens(&lexer);
