@@ -276,5 +276,22 @@ END_PROGRAM
               Codes{"E0417"});
 }
 
+TEST(ChecksStage, RefusesAForVariableThatIsNoLocalInteger) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+FUNCTION_BLOCK Walker
+VAR_IN_OUT r : INT; END_VAR
+VAR_OUTPUT n : INT; END_VAR
+VAR i : INT; x : REAL; END_VAR
+VAR CONSTANT c : INT := 3; END_VAR
+FOR r := 1 TO 3 DO n := n + 1; END_FOR;
+FOR x := 1.0 TO 3.0 DO n := n + 1; END_FOR;
+FOR c := 1 TO 3 DO n := n + 1; END_FOR;
+FOR i := 1 TO 3 DO n := n + i; END_FOR;
+END_FUNCTION_BLOCK
+)st"),
+              (Codes{"E0403", "E0403", "E0403"}));
+}
+
 } // namespace
 } // namespace eposp::compiler

@@ -35,8 +35,8 @@ void check_assigned_results(const PouUnderCheck& check);
 void check_unreachable_statements(const PouUnderCheck& check);
 /// W0405: an assignment to the POU's own input.
 void check_written_inputs(const PouUnderCheck& check);
-/// E0402, E0404: a FOR loop's control variable assigned in its body, a constant step of 0 or
-/// negative on an unsigned control variable.
+/// E0402, E0403, E0404: a FOR loop's control variable that is not a local integer, or assigned
+/// in its body; a constant step of 0 or negative on an unsigned control variable.
 void check_for_loops(const PouUnderCheck& check);
 /// E0405: EXIT or CONTINUE outside a loop.
 void check_loop_exits(const PouUnderCheck& check);

@@ -348,9 +348,7 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
     }
     const sema::Type& type = *control->type;
     if (!sema::is_integer(type) || control->kind != Place::Kind::Direct || !control->writable) {
-        error(DiagnosticCode::E0403, node.control_variable.range,
-              "the control variable of a FOR loop must be a local integer variable (7.3.3.4.2)");
-        return;
+        return; // refused by the checks (E0403, checks/for_loops.cpp)
     }
     // A constant step (the usual case) uses the For<I> back-edge; another a general loop.
     std::int64_t step = 1;
