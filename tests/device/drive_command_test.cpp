@@ -38,6 +38,14 @@ TEST(DriveCommand, NodeIdOutsideOneTo127IsRefused) {
     EXPECT_EQ(eposp("drive epos2 --node-id 0 --virtual --for 1ms").exit_code, 1);
 }
 
+TEST(DriveCommand, RunsAtTheBitRatesOfTable8_81AndRefusesOthers) {
+    const auto slow = eposp("drive epos2 --bitrate 250000 --virtual --for 200ms");
+    EXPECT_EQ(slow.exit_code, 0) << slow.output;
+    const auto refused = eposp("drive epos2 --bitrate 100000 --virtual --for 200ms");
+    EXPECT_EQ(refused.exit_code, 1);
+    EXPECT_THAT(refused.output, HasSubstr("an EPOS2 does not run at 100000 bit/s"));
+}
+
 // docs/epos2.md: the machine of examples/epos2-drive, and a file with a typo.
 TEST(DriveCommand, ConfigFileDescribesTheMachine) {
     const std::string example =

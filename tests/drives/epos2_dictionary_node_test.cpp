@@ -86,6 +86,18 @@ protected:
     std::vector<can::Frame> received;
 };
 
+TEST(Epos2BitRates, HaveTheCodesOfTable8_81) {
+    const std::vector<std::pair<std::uint32_t, std::uint16_t>> table = {
+        {1'000'000, 0}, {800'000, 1}, {500'000, 2}, {250'000, 3},
+        {125'000, 4},   {50'000, 6},  {20'000, 7}};
+    for (const auto& [bit_rate, code] : table) {
+        EXPECT_EQ(bit_rate_code(bit_rate), code) << bit_rate;
+    }
+    for (const std::uint32_t unsupported : {0U, 10'000U, 100'000U, 1'000'001U}) {
+        EXPECT_EQ(bit_rate_code(unsupported), std::nullopt) << unsupported;
+    }
+}
+
 TEST_F(Epos2DictionaryOnBus, NodeFindsEveryCommunicationObjectItNeeds) {
     EXPECT_EQ(dictionary.objects().objects().size(), objects_before_node);
     EXPECT_EQ(node.nmt_state(), canopen::NmtState::PreOperational);

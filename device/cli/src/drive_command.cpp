@@ -55,8 +55,16 @@ int run_drive(const DriveOptions& options) {
     if (auto problem = hosted_bus_outputs_problem(options.hosting, inputs)) {
         return report_user_error(kDriveCommand, *problem);
     }
+    if (!drives::epos2::bit_rate_code(options.hosting.bitrate)) {
+        return report_user_error(
+            kDriveCommand,
+            fmt::format("an EPOS2 does not run at {} bit/s (table 8-81: 1000000, 800000, 500000, "
+                        "250000, 125000, 50000 or 20000)",
+                        options.hosting.bitrate));
+    }
     drives::epos2::Epos2DriveConfig config;
     config.dictionary.node_id = static_cast<canopen::NodeId>(options.node_id);
+    config.dictionary.bit_rate = options.hosting.bitrate;
     config.dictionary.parameter_file = parameter_file;
     if (!options.config.empty()) {
         auto axis = drives::plant::load_axis_file(options.config);

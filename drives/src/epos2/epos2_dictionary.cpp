@@ -3,6 +3,8 @@
 #include "object_areas.hpp"
 #include "verify_configuration.hpp"
 
+#include <algorithm>
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -75,6 +77,17 @@ canopen::DeviceInfo epos2_device_info() {
     info.simple_boot_up_slave = true;
     info.lss_supported = true;
     return info;
+}
+
+std::optional<std::uint16_t> bit_rate_code(std::uint32_t bit_rate) {
+    // Codes 5 and 8 are not used (reserved; 10 kbit/s not supported).
+    static constexpr std::array<std::uint32_t, 8> kBitRates = {1'000'000, 800'000, 500'000, 250'000,
+                                                               125'000,   0,       50'000,  20'000};
+    const auto* found = std::find(kBitRates.begin(), kBitRates.end(), bit_rate);
+    if (bit_rate == 0 || found == kBitRates.end()) {
+        return std::nullopt;
+    }
+    return static_cast<std::uint16_t>(found - kBitRates.begin());
 }
 
 } // namespace eposp::drives::epos2

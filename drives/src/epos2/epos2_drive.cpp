@@ -58,14 +58,6 @@ bool is_communication_error(std::uint16_t code) {
 
 constexpr std::chrono::microseconds kControlPeriod{1000};
 
-// Table 8-81: the codes of the bit rates (5 and 8 are not used).
-std::uint16_t can_bit_rate_code(std::uint32_t bit_rate) {
-    static constexpr std::array<std::uint32_t, 8> kBitRates = {1'000'000, 800'000, 500'000, 250'000,
-                                                               125'000,   0,       50'000,  20'000};
-    const auto* found = std::find(kBitRates.begin(), kBitRates.end(), bit_rate);
-    return static_cast<std::uint16_t>(found - kBitRates.begin());
-}
-
 } // namespace
 
 Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig config)
@@ -211,7 +203,8 @@ void Epos2Drive::compute_measured_values() {
     });
     // 8.2.42: the bit rate in use, as a code of table 8-81 (0x2001 9 "automatic bit rate
     // detection" is what the node found: the bus's).
-    computed(0x200A, [this] { return can_bit_rate_code(node_.bit_rate()); });
+    // A rate of no code (a bus the EPOS2 could not run on) shows as 8, "not supported".
+    computed(0x200A, [this] { return bit_rate_code(node_.bit_rate()).value_or(8); });
     computed(0x2027, [this, rounded] {
         return static_cast<std::int16_t>(rounded(current_averaged_.output() * 1000));
     });

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 
 namespace eposp::drives::epos2 {
 
@@ -20,6 +21,10 @@ inline constexpr std::uint16_t kApplicationNumber = 0x0000;
 inline constexpr std::uint16_t kApplicationVersion = 0x0000;
 /// 8.2.1: CiA 402 (0x0192) servo drive (0x0002).
 inline constexpr std::uint32_t kDeviceType = 0x0002'0192;
+
+/// Table 8-81: the code 0x2001 / 0x200A give a bit rate an EPOS2 runs at (0 for 1 Mbit/s … 7 for
+/// 20 kbit/s); nothing for one it cannot (10 kbit/s, 100 kbit/s, …).
+std::optional<std::uint16_t> bit_rate_code(std::uint32_t bit_rate);
 
 struct Epos2DictionaryConfig {
     canopen::NodeId node_id = 1; ///< 0x2000 and the node-ID-based COB-IDs (8.2.34)
