@@ -85,7 +85,7 @@ void EventLoop::stop() {
 
 void EventLoop::dispatch_next() {
     dispatching_ = true;
-    timers_->run_next([this](TimePoint when) { now_ = std::max(now_, when); });
+    timers_->run_next(now_);
     dispatching_ = false;
     ++dispatched_;
 }

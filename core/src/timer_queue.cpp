@@ -1,5 +1,6 @@
 #include "timer_queue.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <stdexcept>
 #include <utility>
@@ -60,12 +61,52 @@ bool TimerQueue::cancel(TimerId id) {
 }
 
 void TimerQueue::push(TimePoint when, std::uint64_t id) {
-    heap_.push(Slot{when, next_sequence_++, id});
+    const Slot slot{when, next_sequence_++, id};
+    std::size_t hole = heap_.size();
+    heap_.push_back(slot);
+    while (hole > 0) {
+        const std::size_t parent = (hole - 1) / 4;
+        if (!(heap_[parent] > slot)) {
+            break;
+        }
+        heap_[hole] = heap_[parent];
+        hole = parent;
+    }
+    heap_[hole] = slot;
+}
+
+void TimerQueue::pop() {
+    const Slot last = heap_.back();
+    heap_.pop_back();
+    const std::size_t size = heap_.size();
+    if (size == 0) {
+        return;
+    }
+    std::size_t hole = 0;
+    for (;;) {
+        const std::size_t first = 4 * hole + 1;
+        if (first >= size) {
+            break;
+        }
+        std::size_t least = first;
+        const std::size_t end = std::min(first + 4, size);
+        for (std::size_t child = first + 1; child < end; ++child) {
+            if (heap_[least] > heap_[child]) {
+                least = child;
+            }
+        }
+        if (!(last > heap_[least])) {
+            break;
+        }
+        heap_[hole] = heap_[least];
+        hole = least;
+    }
+    heap_[hole] = last;
 }
 
 void TimerQueue::drop_cancelled() {
-    while (!heap_.empty() && live(heap_.top().id) == nullptr) {
-        heap_.pop();
+    while (!heap_.empty() && live(heap_.front().id) == nullptr) {
+        pop();
     }
 }
 
@@ -74,15 +115,15 @@ std::optional<TimePoint> TimerQueue::next_time() {
     if (heap_.empty()) {
         return std::nullopt;
     }
-    return heap_.top().when;
+    return heap_.front().when;
 }
 
-void TimerQueue::run_next(const std::function<void(TimePoint)>& set_now) {
+void TimerQueue::run_next(TimePoint& now) {
     drop_cancelled();
     assert(!heap_.empty());
-    const Slot slot = heap_.top();
-    heap_.pop();
-    set_now(slot.when);
+    const Slot slot = heap_.front();
+    pop();
+    now = std::max(now, slot.when);
 
     // The callback is moved out while it runs so that it may cancel itself or schedule more
     // timers (which may grow the entries) without destroying the function being executed.

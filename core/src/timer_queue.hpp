@@ -3,13 +3,14 @@
 #include "eposp/core/event_loop.hpp"
 
 #include <optional>
-#include <queue>
 #include <vector>
 
 namespace eposp::core {
 
-/// The pending events of an EventLoop: a binary heap ordered by (time, scheduling sequence)
-/// with cancellation by id. Cancelled entries are dropped lazily when they reach the top.
+/// The pending events of an EventLoop: a 4-ary heap ordered by (time, scheduling sequence)
+/// with cancellation by id. Cancelled entries are dropped lazily when they reach the top. The
+/// order is total (no two entries share a sequence), so the shape of the heap cannot change
+/// which event runs next; four children a node halve the depth a removal sifts through.
 /// The entries live in a vector whose slots are reused; an id is the slot and the slot's
 /// generation, so that an old id never names the slot's next timer (a simulated bus schedules
 /// two events per frame: no hash table and no allocation per event).
@@ -28,10 +29,10 @@ public:
     /// The earliest live event, if any.
     std::optional<TimePoint> next_time();
 
-    /// Runs the earliest live event: `set_now` is told its time first. A periodic event is
-    /// re-armed one period after its scheduled time unless its callback cancelled it.
+    /// Runs the earliest live event, `now` first advanced to its time (never back). A periodic
+    /// event is re-armed one period after its scheduled time unless its callback cancelled it.
     /// Precondition: next_time() has a value.
-    void run_next(const std::function<void(TimePoint)>& set_now);
+    void run_next(TimePoint& now);
 
 private:
     struct Slot {
@@ -54,9 +55,10 @@ private:
     Entry* live(std::uint64_t id);
     void release(std::uint64_t id);
     void push(TimePoint when, std::uint64_t id);
+    void pop();
     void drop_cancelled();
 
-    std::priority_queue<Slot, std::vector<Slot>, std::greater<>> heap_;
+    std::vector<Slot> heap_; ///< heap_[0] is the earliest; the children of i are 4i+1..4i+4
     std::vector<Entry> entries_;
     std::vector<std::size_t> free_slots_;
     std::size_t live_count_ = 0;

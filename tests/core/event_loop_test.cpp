@@ -1,5 +1,6 @@
 #include "eposp/core/event_loop.hpp"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <random>
 #include <string>
@@ -35,6 +36,42 @@ TEST(EventLoop, EventsAtTheSameInstantRunInSchedulingOrder) {
     });
     loop.run();
     EXPECT_EQ(order, "xabc");
+}
+
+// The queue is a heap: whatever its shape, events run by time and, at the same time, in the
+// order they were scheduled. Thousands of events on a few instants, a third cancelled before
+// they run, against a stable sort of what was scheduled.
+TEST(EventLoop, ManyPendingEventsRunByTimeThenInSchedulingOrder) {
+    EventLoop loop;
+    std::mt19937 random(7);
+    std::uniform_int_distribution<std::int64_t> instant(0, 40);
+    struct Scheduled {
+        std::int64_t when;
+        int number;
+        bool cancelled;
+    };
+    std::vector<Scheduled> scheduled;
+    std::vector<TimerId> ids;
+    std::vector<int> ran;
+    for (int number = 0; number < 3000; ++number) {
+        const std::int64_t when = instant(random);
+        scheduled.push_back({when, number, false});
+        ids.push_back(loop.at(at_ns(when), [&ran, number] { ran.push_back(number); }));
+    }
+    for (std::size_t i = 0; i < scheduled.size(); i += 3) {
+        EXPECT_TRUE(loop.cancel(ids[i]));
+        scheduled[i].cancelled = true;
+    }
+    std::stable_sort(scheduled.begin(), scheduled.end(),
+                     [](const Scheduled& a, const Scheduled& b) { return a.when < b.when; });
+    std::vector<int> expected;
+    for (const Scheduled& event : scheduled) {
+        if (!event.cancelled) {
+            expected.push_back(event.number);
+        }
+    }
+    loop.run();
+    EXPECT_EQ(ran, expected);
 }
 
 TEST(EventLoop, NanosecondResolution) {

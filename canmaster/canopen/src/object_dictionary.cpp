@@ -194,25 +194,31 @@ ObjectDictionary& ObjectDictionary::operator=(const ObjectDictionary& other) {
 Object& ObjectDictionary::insert(Object object) {
     const std::uint16_t index = object.index;
     Object& inserted = objects_.emplace(index, std::move(object)).first->second;
-    const auto at =
-        std::lower_bound(by_index_.begin(), by_index_.end(), index,
-                         [](const auto& entry, std::uint16_t key) { return entry.first < key; });
-    by_index_.insert(at, {index, &inserted});
+    index_object(inserted);
     return inserted;
 }
 
+void ObjectDictionary::index_object(Object& object) {
+    std::unique_ptr<Page>& page = pages_[object.index >> 8];
+    if (!page) {
+        page = std::make_unique<Page>();
+        page->fill(nullptr);
+    }
+    (*page)[object.index & 0xFF] = &object;
+}
+
 void ObjectDictionary::index_objects() {
-    by_index_.clear();
+    for (auto& page : pages_) {
+        page.reset();
+    }
     for (auto& [index, object] : objects_) {
-        by_index_.emplace_back(index, &object);
+        index_object(object);
     }
 }
 
 const Object* ObjectDictionary::find(std::uint16_t index) const {
-    const auto at =
-        std::lower_bound(by_index_.begin(), by_index_.end(), index,
-                         [](const auto& entry, std::uint16_t key) { return entry.first < key; });
-    return at != by_index_.end() && at->first == index ? at->second : nullptr;
+    const Page* page = pages_[index >> 8].get();
+    return page == nullptr ? nullptr : (*page)[index & 0xFF];
 }
 
 Object* ObjectDictionary::find(std::uint16_t index) {

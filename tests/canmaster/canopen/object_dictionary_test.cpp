@@ -448,6 +448,50 @@ TEST(ObjectDictionary, SetChecksOnlyTheType) {
     EXPECT_THROW(od.set(0x1000, 0, Bytes{1, 2}), std::invalid_argument);
 }
 
+// find() reads a table of pages of 256 indices: indices at the edges of a page, in pages of
+// their own and missing ones next to present ones, in the dictionary, its copy and its move.
+TEST(ObjectDictionary, FindsEveryObjectByIndexAfterCopyAndMove) {
+    const std::vector<std::uint16_t> present{0x0000, 0x00FF, 0x1000, 0x10FF, 0x1100, 0x6041,
+                                             0xFFFF};
+    const std::vector<std::uint16_t> missing{0x0001, 0x0100, 0x1001, 0x10FE, 0x6040, 0x7000,
+                                             0xFFFE};
+    ObjectDictionary od;
+    for (const std::uint16_t index : present) {
+        const auto value = encode_array(index);
+        od.add_variable(index, "value", DataType::Unsigned16, Access::ReadWrite,
+                        Bytes(value.begin(), value.end()));
+    }
+    const auto expect_finds = [&](ObjectDictionary& dictionary) {
+        for (const std::uint16_t index : present) {
+            const Object* object = dictionary.find(index);
+            ASSERT_NE(object, nullptr) << index;
+            EXPECT_EQ(object->index, index);
+            EXPECT_EQ(object, &dictionary.objects().at(index)); // its own, not the original's
+            EXPECT_EQ(dictionary.get_as<std::uint16_t>(index, 0), index);
+        }
+        for (const std::uint16_t index : missing) {
+            EXPECT_EQ(dictionary.find(index), nullptr) << index;
+            EXPECT_EQ(dictionary.find(index, 0), nullptr) << index;
+        }
+    };
+    expect_finds(od);
+    ObjectDictionary copy(od);
+    expect_finds(copy);
+    ObjectDictionary assigned;
+    assigned.add_variable(0x1001, "gone after the assignment", DataType::Unsigned8,
+                          Access::ReadWrite, {0});
+    assigned = od;
+    expect_finds(assigned);
+    ObjectDictionary moved(std::move(copy));
+    expect_finds(moved);
+    ObjectDictionary move_assigned;
+    move_assigned = std::move(assigned);
+    expect_finds(move_assigned);
+    od.add_variable(0x6040, "added later", DataType::Unsigned16, Access::ReadWrite, {0, 0});
+    EXPECT_NE(od.find(0x6040), nullptr);
+    EXPECT_EQ(moved.find(0x6040), nullptr);
+}
+
 TEST(ObjectDictionary, MisuseIsAProgrammingError) {
     ObjectDictionary od = dictionary_with_a_record();
     EXPECT_THROW(od.add_variable(0x1000, "again", DataType::Unsigned8, Access::ReadOnly, {0}),

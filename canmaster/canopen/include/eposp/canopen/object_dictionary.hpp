@@ -4,11 +4,13 @@
 #include "eposp/canopen/data_type.hpp"
 #include "eposp/canopen/value_codec.hpp"
 
+#include <array>
 #include <bitset>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -163,13 +165,16 @@ private:
     /// The sub-object, or std::out_of_range.
     const SubObject& existing(std::uint16_t index, std::uint8_t sub_index) const;
     Object& insert(Object object);
+    void index_object(Object& object);
     void index_objects();
     void notify(std::uint16_t index, std::uint8_t sub_index) const;
 
     std::map<std::uint16_t, Object> objects_;
-    /// The objects by index in one sorted array: find() runs for every frame a node's services
-    /// handle, and a binary search in contiguous memory beats walking the map's nodes.
-    std::vector<std::pair<std::uint16_t, Object*>> by_index_;
+    /// The objects by index in pages of 256 indices, made for the pages in use: find() runs
+    /// for every object a drive publishes and a PDO packs each period, two reads instead of a
+    /// search. Pointers into objects_, whose nodes stay put when the dictionary moves.
+    using Page = std::array<Object*, 256>;
+    std::array<std::unique_ptr<Page>, 256> pages_;
     std::multimap<std::uint16_t, std::pair<ListenerId, ChangeListener>> listeners_;
     /// The indices with a listener: a drive stores its actual values every millisecond, and
     /// most of them nobody watches; the test is one bit, not a walk through listeners_.
