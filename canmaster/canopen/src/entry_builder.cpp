@@ -77,6 +77,25 @@ void Entry::set_write_check(SubObject::WriteHook check) {
     sub_.on_write = std::move(check);
 }
 
+Entry& Entry::rule(SubObject::WriteHook rule) {
+    sub_.on_write = [checked = std::move(sub_.on_write),
+                     rule = std::move(rule)](std::span<const std::uint8_t> value) {
+        if (checked) {
+            if (const AbortCode code = checked(value); code != AbortCode::None) {
+                return code;
+            }
+        }
+        return rule(value);
+    };
+    return *this;
+}
+
+void set_default(ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index, Bytes value) {
+    SubObject& entry = *od.find(index, sub_index);
+    entry.default_value = value;
+    entry.value = std::move(value);
+}
+
 Entry& Entry::persistent() {
     sub_.persistent = true;
     return *this;

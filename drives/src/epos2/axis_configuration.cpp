@@ -1,5 +1,7 @@
 #include "axis_configuration.hpp"
 
+#include "eposp/canopen/entry_builder.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,44 +12,33 @@ namespace {
 constexpr std::uint16_t kBrushedDcMotor = 1;
 constexpr std::uint16_t kSinusoidalEcMotor = 10;
 
-void set_default(canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub,
-                 canopen::Bytes value) {
-    canopen::SubObject& entry = *od.find(index, sub);
-    entry.default_value = value;
-    entry.value = std::move(value);
-}
-
-template <typename T>
-void set_default_as(canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub, T value) {
-    set_default(od, index, sub, canopen::encode(value));
-}
-
 } // namespace
 
 void write_axis_defaults(canopen::ObjectDictionary& od, const plant::AxisParameters& machine) {
-    set_default_as(od, 0x2210, 1, static_cast<std::uint32_t>(machine.encoder_pulses));
+    canopen::set_default_as(od, 0x2210, 1, static_cast<std::uint32_t>(machine.encoder_pulses));
     const auto current = plant::to_parameter_set(machine.gains.current);
-    set_default_as(od, 0x60F6, 1, current.p_gain);
-    set_default_as(od, 0x60F6, 2, current.i_gain);
+    canopen::set_default_as(od, 0x60F6, 1, current.p_gain);
+    canopen::set_default_as(od, 0x60F6, 2, current.i_gain);
     const auto velocity = plant::to_parameter_set(machine.gains.velocity);
-    set_default_as(od, 0x60F9, 1, velocity.p_gain);
-    set_default_as(od, 0x60F9, 2, velocity.i_gain);
-    set_default_as(od, 0x60F9, 4, velocity.velocity_feed_forward);
-    set_default_as(od, 0x60F9, 5, velocity.acceleration_feed_forward);
+    canopen::set_default_as(od, 0x60F9, 1, velocity.p_gain);
+    canopen::set_default_as(od, 0x60F9, 2, velocity.i_gain);
+    canopen::set_default_as(od, 0x60F9, 4, velocity.velocity_feed_forward);
+    canopen::set_default_as(od, 0x60F9, 5, velocity.acceleration_feed_forward);
     const auto position = plant::to_parameter_set(machine.gains.position);
-    set_default_as(od, 0x60FB, 1, position.p_gain);
-    set_default_as(od, 0x60FB, 2, position.i_gain);
-    set_default_as(od, 0x60FB, 3, position.d_gain);
-    set_default_as(od, 0x60FB, 4, position.velocity_feed_forward);
-    set_default_as(od, 0x60FB, 5, position.acceleration_feed_forward);
+    canopen::set_default_as(od, 0x60FB, 1, position.p_gain);
+    canopen::set_default_as(od, 0x60FB, 2, position.i_gain);
+    canopen::set_default_as(od, 0x60FB, 3, position.d_gain);
+    canopen::set_default_as(od, 0x60FB, 4, position.velocity_feed_forward);
+    canopen::set_default_as(od, 0x60FB, 5, position.acceleration_feed_forward);
     const plant::MotorParameters& motor = machine.plant.motor;
-    set_default_as(od, 0x6402, 0,
-                   motor.kind == plant::MotorKind::Ec ? kSinusoidalEcMotor : kBrushedDcMotor);
+    canopen::set_default_as(
+        od, 0x6402, 0, motor.kind == plant::MotorKind::Ec ? kSinusoidalEcMotor : kBrushedDcMotor);
     // 8.2.130: mA, at most the 10 A of an EPOS2 24/5.
     const double output_limit_ma =
         std::clamp(std::round(machine.gains.current_limit * 1000), 0.0, 10'000.0);
-    set_default_as(od, 0x6410, 2, static_cast<std::uint16_t>(output_limit_ma));
-    set_default_as(od, 0x6410, 3, static_cast<std::uint8_t>(std::clamp(motor.pole_pairs, 1, 255)));
+    canopen::set_default_as(od, 0x6410, 2, static_cast<std::uint16_t>(output_limit_ma));
+    canopen::set_default_as(od, 0x6410, 3,
+                            static_cast<std::uint8_t>(std::clamp(motor.pole_pairs, 1, 255)));
 }
 
 plant::AxisParameters configured_axis(const canopen::ObjectDictionary& od,

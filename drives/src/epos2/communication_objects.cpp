@@ -1,8 +1,8 @@
 // The communication area of the EPOS2 (firmware specification 8.2.1 - 8.2.33). Objects that a
 // canmaster service owns are added by that service, with the write rules and hooks the service
 // needs, and then given the EPOS2's names and attributes; the rest is data.
-#include "eposp/canopen/entry_builder.hpp"
 #include "eposp/canopen/emcy_producer.hpp"
+#include "eposp/canopen/entry_builder.hpp"
 #include "eposp/canopen/error_history.hpp"
 #include "eposp/canopen/heartbeat_consumer.hpp"
 #include "eposp/canopen/heartbeat_producer.hpp"

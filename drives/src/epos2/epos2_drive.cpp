@@ -1,6 +1,7 @@
 #include "eposp/drives/epos2/epos2_drive.hpp"
 
 #include "axis_configuration.hpp"
+#include "eposp/canopen/entry_builder.hpp"
 #include "eposp/drives/epos2/device_errors.hpp"
 #include "eposp/drives/epos2/epos2_io.hpp"
 #include "eposp/drives/motion/device_error_codes.hpp"
@@ -269,7 +270,7 @@ void Epos2Drive::watch_dictionary() {
         }
     });
     // 8.2.90: the modes this simulation does not run yet are refused like a value out of range.
-    add_write_rule(*od.find(0x6060, 0), [](std::span<const std::uint8_t> value) {
+    canopen::Entry(*od.find(0x6060, 0)).rule([](std::span<const std::uint8_t> value) {
         return simulated_mode(canopen::decode<std::int8_t>(value)).has_value()
                    ? canopen::AbortCode::None
                    : canopen::AbortCode::InvalidValue;

@@ -1,6 +1,6 @@
 #include "eposp/drives/epos2/epos2_io.hpp"
 
-#include "write_rules.hpp"
+#include "eposp/canopen/entry_builder.hpp"
 
 #include <array>
 #include <stdexcept>
@@ -77,7 +77,7 @@ Epos2Io::Epos2Io(canopen::ObjectDictionary& od) : od_(od) {
 void Epos2Io::guard_brake_output() {
     constexpr auto kBrake = static_cast<std::uint16_t>(OutputFunction::HoldingBrake);
     for (std::uint8_t n = 1; n <= kDigitalOutputCount; ++n) {
-        add_write_rule(*od_.find(0x2079, n), [this, n](std::span<const std::uint8_t> value) {
+        canopen::Entry(*od_.find(0x2079, n)).rule([this, n](std::span<const std::uint8_t> value) {
             const auto now = canopen::decode<std::uint16_t>(value);
             const auto before = od_.get_as<std::uint16_t>(0x2079, n);
             const bool brake_changes = now != before && (now == kBrake || before == kBrake);

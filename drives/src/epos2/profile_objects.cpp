@@ -6,7 +6,6 @@
 #include "eposp/canopen/entry_builder.hpp"
 #include "object_areas.hpp"
 #include "velocity_units.hpp"
-#include "write_rules.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -221,7 +220,7 @@ void add_motor_objects(canopen::ObjectDictionary& od) {
 // load side's, × denominator / numerator; in velocity units (0x608B). Checked at each write (a
 // limit lowered later leaves the value as it is, like the other bounded ranges).
 void bound_maximal_profile_velocity(canopen::ObjectDictionary& od) {
-    add_write_rule(*od.find(0x607F, 0), [&od](std::span<const std::uint8_t> value) {
+    Entry(*od.find(0x607F, 0)).rule([&od](std::span<const std::uint8_t> value) {
         const auto motor_side =
             std::min(od.get_as<std::uint32_t>(0x6410, 4), od.get_as<std::uint32_t>(0x2230, 3));
         const auto numerator = od.get_as<std::uint32_t>(0x2230, 1);

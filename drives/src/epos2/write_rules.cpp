@@ -1,5 +1,7 @@
 #include "write_rules.hpp"
 
+#include "eposp/canopen/entry_builder.hpp"
+
 #include <algorithm>
 #include <array>
 #include <utility>
@@ -20,18 +22,6 @@ bool gear_permitted(const canopen::ObjectDictionary& od) {
 
 } // namespace
 
-void add_write_rule(canopen::SubObject& entry, WriteRule rule) {
-    entry.on_write = [checked = std::move(entry.on_write),
-                      rule = std::move(rule)](std::span<const std::uint8_t> value) {
-        if (checked) {
-            if (const canopen::AbortCode code = checked(value); code != canopen::AbortCode::None) {
-                return code;
-            }
-        }
-        return rule(value);
-    };
-}
-
 void guard_disable_state_objects(canopen::ObjectDictionary& od,
                                  std::function<bool()> power_stage_on) {
     // Every writable entry of these objects (the sections put the remark on the whole object).
@@ -44,17 +34,18 @@ void guard_disable_state_objects(canopen::ObjectDictionary& od,
             if (!canopen::writable(entry.access) || (index == 0x6410 && sub_index != 3)) {
                 continue;
             }
-            add_write_rule(entry, [&entry, power_stage_on](std::span<const std::uint8_t> value) {
-                const bool changes = !std::ranges::equal(value, entry.value);
-                return changes && power_stage_on() ? canopen::AbortCode::DeviceState
-                                                   : canopen::AbortCode::None;
-            });
+            canopen::Entry(entry).rule(
+                [&entry, power_stage_on](std::span<const std::uint8_t> value) {
+                    const bool changes = !std::ranges::equal(value, entry.value);
+                    return changes && power_stage_on() ? canopen::AbortCode::DeviceState
+                                                       : canopen::AbortCode::None;
+                });
         }
     }
 }
 
 void guard_gear_configuration(canopen::ObjectDictionary& od) {
-    add_write_rule(*od.find(0x2230, 1), [&od](std::span<const std::uint8_t> value) {
+    canopen::Entry(*od.find(0x2230, 1)).rule([&od](std::span<const std::uint8_t> value) {
         return canopen::decode<std::uint32_t>(value) != 0 && !gear_permitted(od)
                    ? canopen::AbortCode::ParameterIncompatibility
                    : canopen::AbortCode::None;

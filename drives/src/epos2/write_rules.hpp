@@ -8,13 +8,6 @@
 
 namespace eposp::drives::epos2 {
 
-/// A device rule on a written value: AbortCode::None accepts it.
-using WriteRule = std::function<canopen::AbortCode(std::span<const std::uint8_t> value)>;
-
-/// Adds `rule` to the write check of `entry`: the checks already there (the dictionary's type,
-/// range and list, and the rules added before) first, then `rule`.
-void add_write_rule(canopen::SubObject& entry, WriteRule rule);
-
 /// The objects chapter 8 marks "Changes are only supported in 'Disable' state" or "Can only be
 /// changed in 'Disable' state": 0x2008 (8.2.41), 0x207B (8.2.62), 0x2210 - 0x2213
 /// (8.2.74 - 8.2.77), 0x2220 (8.2.78), 0x2230 (8.2.79), 0x2301 - 0x2303 (8.2.81 - 8.2.83), the

@@ -1,5 +1,7 @@
 #include "axis_configuration.hpp"
 
+#include "eposp/canopen/entry_builder.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,18 +13,6 @@ constexpr std::uint16_t kBrushedDcMotor = 1;     // table 108
 constexpr std::uint16_t kSinusoidalEcMotor = 10; // table 108
 constexpr double kMicro = 1e-6;
 constexpr double kMicroPerMilli = 1e-3; // µV/(A·ms) in V/(A·s)
-
-void set_default(canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub,
-                 canopen::Bytes value) {
-    canopen::SubObject& entry = *od.find(index, sub);
-    entry.default_value = value;
-    entry.value = std::move(value);
-}
-
-template <typename T>
-void set_default_as(canopen::ObjectDictionary& od, std::uint16_t index, std::uint8_t sub, T value) {
-    set_default(od, index, sub, canopen::encode(value));
-}
 
 std::uint32_t in_units(double si, double unit) {
     return static_cast<std::uint32_t>(
@@ -37,26 +27,28 @@ double gain(const canopen::ObjectDictionary& od, std::uint16_t index, std::uint8
 } // namespace
 
 void write_axis_defaults(canopen::ObjectDictionary& od, const plant::AxisParameters& machine) {
-    set_default_as(od, 0x3010, 1, static_cast<std::uint32_t>(machine.encoder_pulses));
+    canopen::set_default_as(od, 0x3010, 1, static_cast<std::uint32_t>(machine.encoder_pulses));
     const plant::ServoGains& gains = machine.gains;
-    set_default_as(od, 0x30A0, 1, in_units(gains.current.kp, kMicro));
-    set_default_as(od, 0x30A0, 2, in_units(gains.current.ki, kMicroPerMilli));
-    set_default_as(od, 0x30A2, 1, in_units(gains.velocity.kp, kMicro));
-    set_default_as(od, 0x30A2, 2, in_units(gains.velocity.ki, kMicro));
-    set_default_as(od, 0x30A2, 3, in_units(gains.velocity.velocity_feed_forward, kMicro));
-    set_default_as(od, 0x30A2, 4, in_units(gains.velocity.acceleration_feed_forward, kMicro));
+    canopen::set_default_as(od, 0x30A0, 1, in_units(gains.current.kp, kMicro));
+    canopen::set_default_as(od, 0x30A0, 2, in_units(gains.current.ki, kMicroPerMilli));
+    canopen::set_default_as(od, 0x30A2, 1, in_units(gains.velocity.kp, kMicro));
+    canopen::set_default_as(od, 0x30A2, 2, in_units(gains.velocity.ki, kMicro));
+    canopen::set_default_as(od, 0x30A2, 3, in_units(gains.velocity.velocity_feed_forward, kMicro));
+    canopen::set_default_as(od, 0x30A2, 4,
+                            in_units(gains.velocity.acceleration_feed_forward, kMicro));
     const auto& limit = od.find(0x3001, 2);
     const double max_ma = static_cast<double>(canopen::decode<std::uint32_t>(*limit->high_limit));
-    set_default_as(od, 0x3001, 2,
-                   static_cast<std::uint32_t>(
-                       std::clamp(std::round(gains.current_limit * 1000), 0.0, max_ma)));
+    canopen::set_default_as(od, 0x3001, 2,
+                            static_cast<std::uint32_t>(
+                                std::clamp(std::round(gains.current_limit * 1000), 0.0, max_ma)));
     const plant::MotorParameters& motor = machine.plant.motor;
-    set_default_as(od, 0x3001, 3, static_cast<std::uint8_t>(std::clamp(motor.pole_pairs, 1, 255)));
+    canopen::set_default_as(od, 0x3001, 3,
+                            static_cast<std::uint8_t>(std::clamp(motor.pole_pairs, 1, 255)));
     const bool brushed = motor.kind == plant::MotorKind::BrushedDc;
-    set_default_as(od, 0x6402, 0, brushed ? kBrushedDcMotor : kSinusoidalEcMotor);
+    canopen::set_default_as(od, 0x6402, 0, brushed ? kBrushedDcMotor : kSinusoidalEcMotor);
     if (brushed) {
-        set_default_as(od, 0x3000, 1, std::uint32_t{0x100}); // the encoder alone
-        set_default_as(od, 0x3000, 3, std::uint32_t{0});
+        canopen::set_default_as(od, 0x3000, 1, std::uint32_t{0x100}); // the encoder alone
+        canopen::set_default_as(od, 0x3000, 3, std::uint32_t{0});
     }
 }
 

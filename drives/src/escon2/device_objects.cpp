@@ -51,7 +51,7 @@ void add_supply_and_temperature(canopen::ObjectDictionary& od, const HardwareDat
         add_entry(od, 0x2201, 1, "Power supply undervoltage limit", kU32, kRW, under.default_value)
             .range(under.min, under.max)
             .persistent();
-    add_rule(undervoltage, [&od, gap](std::span<const std::uint8_t> value) {
+    undervoltage.rule([&od, gap](std::span<const std::uint8_t> value) {
         return compatible_if(decode<std::uint32_t>(value) + gap <
                              od.get_as<std::uint32_t>(0x2201, 2));
     });
@@ -60,7 +60,7 @@ void add_supply_and_temperature(canopen::ObjectDictionary& od, const HardwareDat
         add_entry(od, 0x2201, 2, "Power supply overvoltage limit", kU32, kRW, over.default_value)
             .range(over.min, over.max)
             .persistent();
-    add_rule(overvoltage, [&od, gap](std::span<const std::uint8_t> value) {
+    overvoltage.rule([&od, gap](std::span<const std::uint8_t> value) {
         return compatible_if(decode<std::uint32_t>(value) >
                              od.get_as<std::uint32_t>(0x2201, 1) + gap);
     });
@@ -80,14 +80,14 @@ void add_axis_configuration(canopen::ObjectDictionary& od, const Escon2Dictionar
         add_entry(od, 0x3000, 1, "Sensors configuration", kU32, kRW, 0x0000'0110)
             .one_of({0x000, 0x010, 0x100, 0x110})
             .persistent();
-    add_rule(sensor_configuration, [&od](std::span<const std::uint8_t> value) {
+    sensor_configuration.rule([&od](std::span<const std::uint8_t> value) {
         return compatible_if(!brushed_dc(od) || (decode<std::uint32_t>(value) & 0xFF) == 0);
     });
 
     auto control_structure = add_entry(od, 0x3000, 2, "Control structure", kU32, kRW, 0x0002'0011)
                                  .one_of({0x0000'0001, 0x0001'0011, 0x0002'0011})
                                  .persistent();
-    add_rule(control_structure, [&od, sensors](std::span<const std::uint8_t> value) {
+    control_structure.rule([&od, sensors](std::span<const std::uint8_t> value) {
         switch (decode<std::uint32_t>(value)) {
         case 0x0001'0011:
             return compatible_if(!brushed_dc(od) && (sensors() & 0xFF) == kSensor1Hall);
@@ -101,7 +101,7 @@ void add_axis_configuration(canopen::ObjectDictionary& od, const Escon2Dictionar
     auto commutation = add_entry(od, 0x3000, 3, "Commutation sensors", kU32, kRW, 0x0000'0012)
                            .one_of({0x00, 0x10, 0x12})
                            .persistent();
-    add_rule(commutation, [&od, sensors](std::span<const std::uint8_t> value) {
+    commutation.rule([&od, sensors](std::span<const std::uint8_t> value) {
         const auto written = decode<std::uint32_t>(value);
         if (brushed_dc(od)) {
             return compatible_if(written == 0);

@@ -20,21 +20,8 @@ canopen::LssAddress escon2_identity(Escon2Hardware hardware, std::uint64_t seria
             .serial_number = static_cast<std::uint32_t>(serial_number)};
 }
 
-void add_rule(canopen::Entry entry, canopen::SubObject::WriteHook rule) {
-    canopen::SubObject& sub = entry.sub();
-    sub.on_write = [first = std::move(sub.on_write),
-                    rule = std::move(rule)](std::span<const std::uint8_t> value) {
-        if (first) {
-            if (const canopen::AbortCode code = first(value); code != canopen::AbortCode::None) {
-                return code;
-            }
-        }
-        return rule(value);
-    };
-}
-
 void only_in_power_disable(canopen::Entry entry, const Escon2DictionaryConfig& config) {
-    add_rule(entry, [power_disabled = config.power_disabled](std::span<const std::uint8_t>) {
+    entry.rule([power_disabled = config.power_disabled](std::span<const std::uint8_t>) {
         return !power_disabled || power_disabled() ? canopen::AbortCode::None
                                                    : canopen::AbortCode::DeviceState;
     });

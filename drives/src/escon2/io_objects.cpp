@@ -140,7 +140,7 @@ void add_digital_inputs(canopen::ObjectDictionary& od, const Escon2DictionaryCon
                          .one_of(input <= 2 ? std::span<const std::int64_t>(kInputs1And2)
                                             : std::span<const std::int64_t>(kOtherInputs))
                          .persistent();
-        add_rule(entry, [&od, input, high_speed](std::span<const std::uint8_t> value) {
+        entry.rule([&od, input, high_speed](std::span<const std::uint8_t> value) {
             const auto written = decode<std::uint8_t>(value);
             const bool disabled = high_speed && written != kNone && sensor2_configured(od);
             return disabled || mapped_elsewhere(od, 0x3142, input, written) ||
@@ -201,7 +201,7 @@ void add_digital_outputs(canopen::ObjectDictionary& od) {
                          .one_of(high_speed ? std::span<const std::int64_t>(kHighSpeedOutputs)
                                             : std::span<const std::int64_t>(kOutputs))
                          .persistent();
-        add_rule(entry, [&od, output, high_speed](std::span<const std::uint8_t> value) {
+        entry.rule([&od, output, high_speed](std::span<const std::uint8_t> value) {
             const auto written = decode<std::uint8_t>(value);
             const bool frequency = written == 32 || written == 33;
             const std::uint8_t other_frequency = written == 32 ? 33 : 32;
@@ -236,7 +236,7 @@ void add_analog_inputs_and_outputs(canopen::ObjectDictionary& od, const Hardware
                       default_function)
                 .one_of(kAnalogInputs)
                 .persistent();
-        add_rule(configuration, [&od, n](std::span<const std::uint8_t> value) {
+        configuration.rule([&od, n](std::span<const std::uint8_t> value) {
             const auto written = decode<std::uint8_t>(value);
             return mapped_elsewhere(od, 0x3161, n, written) ||
                            second_source(od, 0x3161, n, analog_source(written))

@@ -17,8 +17,6 @@ void add_io_objects(canopen::ObjectDictionary& od, const Escon2DictionaryConfig&
 /// 0x603F - 0x6502 (6.2.58 - 6.2.81).
 void add_profile_objects(canopen::ObjectDictionary& od, const Escon2DictionaryConfig& config);
 
-/// Adds `rule` to the checks of an entry's writes, after those it has (a value list, a bound).
-void add_rule(canopen::Entry entry, canopen::SubObject::WriteHook rule);
 /// "Write access is only permitted in device state «Power Disable»": 0x08000022 otherwise.
 void only_in_power_disable(canopen::Entry entry, const Escon2DictionaryConfig& config);
 

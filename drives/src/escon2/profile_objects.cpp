@@ -31,7 +31,7 @@ void add_velocity_and_profile_objects(canopen::ObjectDictionary& od,
     add_var(od, 0x606B, "Velocity demand value", kI32, kRO, 0).pdo_mappable();
     add_var(od, 0x606C, "Velocity actual value", kI32, kRO, 0).pdo_mappable();
     auto rated_torque = add_var(od, 0x6076, "Motor rated torque", kU32, kRW, 0);
-    add_rule(rated_torque, [](std::span<const std::uint8_t>) { return AbortCode::ReadOnly; });
+    rated_torque.rule([](std::span<const std::uint8_t>) { return AbortCode::ReadOnly; });
     rated_torque.sub().on_read = [&od] {
         const std::uint64_t micro_newton_metres =
             std::uint64_t{od.get_as<std::uint32_t>(0x3001, 1)} *
@@ -48,7 +48,7 @@ void add_velocity_and_profile_objects(canopen::ObjectDictionary& od,
                                .range(1, kMaxSpeedRpm)
                                .pdo_mappable()
                                .persistent();
-    add_rule(max_motor_speed, [&od](std::span<const std::uint8_t> value) {
+    max_motor_speed.rule([&od](std::span<const std::uint8_t> value) {
         const bool brushless = od.get_as<std::uint16_t>(0x6402, 0) == 10;
         const std::int64_t pole_pairs = brushless ? od.get_as<std::uint8_t>(0x3001, 3) : 1;
         return decode<std::uint32_t>(value) > kMaxSpeedRpm / pole_pairs ? AbortCode::ValueTooHigh

@@ -1,6 +1,6 @@
 #include "analog_setpoint.hpp"
 
-#include "../write_rules.hpp"
+#include "eposp/canopen/entry_builder.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -71,11 +71,13 @@ void compute_analog_setpoints(canopen::ObjectDictionary& od) {
 void guard_analog_input_assignment(canopen::ObjectDictionary& od) {
     for (std::uint8_t input = 1; input <= 2; ++input) {
         const auto other = static_cast<std::uint8_t>(3 - input);
-        add_write_rule(*od.find(0x207B, input), [&od, other](std::span<const std::uint8_t> value) {
-            return canopen::decode<std::uint16_t>(value) == od.get_as<std::uint16_t>(0x207B, other)
-                       ? canopen::AbortCode::ParameterIncompatibility
-                       : canopen::AbortCode::None;
-        });
+        canopen::Entry(*od.find(0x207B, input))
+            .rule([&od, other](std::span<const std::uint8_t> value) {
+                return canopen::decode<std::uint16_t>(value) ==
+                               od.get_as<std::uint16_t>(0x207B, other)
+                           ? canopen::AbortCode::ParameterIncompatibility
+                           : canopen::AbortCode::None;
+            });
     }
 }
 

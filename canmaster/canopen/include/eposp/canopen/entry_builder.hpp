@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/canopen/object_dictionary.hpp"
+#include "eposp/canopen/value_codec.hpp"
 
 #include <cstdint>
 #include <initializer_list>
@@ -41,6 +42,10 @@ public:
     Entry& persistent();
     /// May be mapped into a PDO.
     Entry& pdo_mappable();
+    /// A device rule beyond the table's columns (another object's value, the device's state): it
+    /// is asked after the checks the entry already has (its range or list, the rules added
+    /// before), and the first refusal answers the write.
+    Entry& rule(SubObject::WriteHook rule);
 
     SubObject& sub() { return sub_; }
 
@@ -56,6 +61,14 @@ Entry add_var(ObjectDictionary& od, std::uint16_t index, std::string name, DataT
 /// A sub-index of an ARRAY or RECORD added with ObjectDictionary::add_object.
 Entry add_entry(ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index, std::string name,
                 DataType type, Access access, std::int64_t default_value);
+/// Makes `value` the default of an existing entry and its present value: for a default that the
+/// device's configuration (its machine, its hardware variant) decides.
+void set_default(ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index, Bytes value);
+template <typename T>
+void set_default_as(ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index, T value) {
+    set_default(od, index, sub_index, encode(value));
+}
+
 /// An entry that a canopen service added, under the device's name for it.
 Entry existing_entry(ObjectDictionary& od, std::uint16_t index, std::uint8_t sub_index,
                      std::string name);
