@@ -2,7 +2,7 @@
 
 // The typing stage's result as text: the tree of a compilation unit with the type of each
 // expression, its value when constant and what each call calls. The typing stage's snapshot
-// tests compare it (tests/compiler/typing/); it is also a way to see how a program was typed.
+// tests compare it (tests/compiler/types/snapshots/); it is also a way to see how a program was typed.
 
 #include "eposp/compiler/ast/compilation_unit.hpp"
 #include "eposp/compiler/types/typed_program.hpp"

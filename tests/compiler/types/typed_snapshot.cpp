@@ -1,6 +1,6 @@
 // Checks the typing stage against a snapshot: the typed tree of FILE.st (types::dump_typed: each
 // expression's type, constant value and call target) must equal FILE.typed beside it. ctest runs
-// this once per file of tests/compiler/typing (registered by glob when configuring). With
+// this once per file of tests/compiler/types/snapshots (registered by glob when configuring). With
 // --update it writes FILE.typed instead, to be read and committed when a change of the typing
 // stage is meant. Exit status 0 when they agree, 1 when not, 2 on bad input.
 #include "eposp/compiler/types/front_end.hpp"
