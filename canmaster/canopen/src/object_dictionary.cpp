@@ -313,8 +313,10 @@ void ObjectDictionary::set(std::uint16_t index, std::uint8_t sub_index,
     // stores its actual values every millisecond).
     if (value.size() != sub.value.size()) {
         require_fits(sub.type, value.size(), index, sub_index);
+        sub.value.assign(value.begin(), value.end());
+    } else {
+        std::copy(value.begin(), value.end(), sub.value.begin());
     }
-    sub.value.assign(value.begin(), value.end());
     notify(index, sub_index);
 }
 
