@@ -1,4 +1,5 @@
 #include "ast_builder.hpp"
+#include "eposp/compiler/ascii_case.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -8,13 +9,6 @@ namespace eposp::compiler {
 namespace {
 
 using P = generated::StructuredTextParser;
-
-bool equal_ignoring_case(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::toupper(static_cast<unsigned char>(x)) ==
-                      std::toupper(static_cast<unsigned char>(y));
-           });
-}
 
 ast::VarSectionKind section_kind(std::size_t token) {
     switch (token) {

@@ -1,5 +1,6 @@
 #include "literal_decoder.hpp"
 
+#include "eposp/compiler/ascii_case.hpp"
 #include "eposp/vm/stdlib/duration_fraction.hpp"
 #include "eposp/vm/stdlib/string_layout.hpp"
 #include "utf8.hpp"
@@ -25,19 +26,6 @@ constexpr std::int64_t kNanosecondsPerDay = 86'400 * kNanosecondsPerSecond;
 
 std::string quoted(std::string_view text) {
     return "'" + std::string(text) + "'";
-}
-
-bool equal_ignoring_case(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) {
-        return false;
-    }
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        if (std::toupper(static_cast<unsigned char>(a[i])) !=
-            std::toupper(static_cast<unsigned char>(b[i]))) {
-            return false;
-        }
-    }
-    return true;
 }
 
 int digit_value(char c) {

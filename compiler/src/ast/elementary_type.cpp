@@ -1,8 +1,8 @@
 #include "eposp/compiler/ast/elementary_type.hpp"
 
-#include <algorithm>
+#include "eposp/compiler/ascii_case.hpp"
+
 #include <array>
-#include <cctype>
 #include <limits>
 
 namespace eposp::compiler::ast {
@@ -48,13 +48,6 @@ constexpr std::array kTypeNames{
     TypeName{"CHAR", ElementaryType::Char},
     TypeName{"WCHAR", ElementaryType::Wchar},
 };
-
-bool equal_ignoring_case(std::string_view a, std::string_view b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](char x, char y) {
-        return std::toupper(static_cast<unsigned char>(x)) ==
-               std::toupper(static_cast<unsigned char>(y));
-    });
-}
 
 template <typename T>
 constexpr IntegerRange range_of() {

@@ -1,17 +1,13 @@
 #pragma once
 
+#include "eposp/compiler/ascii_case.hpp"
+
 #include <cstddef>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 
 namespace eposp::compiler::sema {
-
-/// `c` in upper case if it is an ASCII letter: IEC identifiers are ASCII and ignore its case
-/// (6.1.2), whatever the locale.
-constexpr char upper_ascii(char c) {
-    return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
-}
 
 /// Hash and equality that ignore ASCII case, so that a name is looked up as it is written,
 /// without building its folded copy first.
@@ -29,15 +25,7 @@ struct NameHash {
 struct NameEqual {
     using is_transparent = void;
     bool operator()(std::string_view a, std::string_view b) const noexcept {
-        if (a.size() != b.size()) {
-            return false;
-        }
-        for (std::size_t i = 0; i < a.size(); ++i) {
-            if (upper_ascii(a[i]) != upper_ascii(b[i])) {
-                return false;
-            }
-        }
-        return true;
+        return equal_ignoring_case(a, b);
     }
 };
 
