@@ -1,10 +1,9 @@
 #include "eposp/drives/epos2/epos2_dictionary.hpp"
 
+#include "eposp/canopen/lss_protocol.hpp"
 #include "object_areas.hpp"
 #include "verify_configuration.hpp"
 
-#include <algorithm>
-#include <array>
 #include <utility>
 #include <vector>
 
@@ -80,14 +79,13 @@ canopen::DeviceInfo epos2_device_info() {
 }
 
 std::optional<std::uint16_t> bit_rate_code(std::uint32_t bit_rate) {
-    // Codes 5 and 8 are not used (reserved; 10 kbit/s not supported).
-    static constexpr std::array<std::uint32_t, 8> kBitRates = {1'000'000, 800'000, 500'000, 250'000,
-                                                               125'000,   0,       50'000,  20'000};
-    const auto* found = std::find(kBitRates.begin(), kBitRates.end(), bit_rate);
-    if (bit_rate == 0 || found == kBitRates.end()) {
+    // Table 8-81 is CiA's bit timing table, but for code 8: "not supported (10 kbit/s)".
+    constexpr std::uint8_t kTenKbitCode = 8;
+    const auto index = canopen::lss_bit_timing_index(bit_rate);
+    if (!index || *index == kTenKbitCode) {
         return std::nullopt;
     }
-    return static_cast<std::uint16_t>(found - kBitRates.begin());
+    return *index;
 }
 
 } // namespace eposp::drives::epos2
