@@ -11,7 +11,6 @@
 #include "modes/analog_setpoint.hpp"
 #include "modes/mode_behaviour.hpp"
 #include "modes/mode_table.hpp"
-#include "sensor_supervision.hpp"
 #include "velocity_units.hpp"
 #include "write_rules.hpp"
 
@@ -48,6 +47,13 @@ constexpr std::uint16_t kSinusoidalEcMotor = 10;
 constexpr std::uint16_t kTrapezoidalEcMotor = 11;
 constexpr std::uint16_t kEncoder1WithIndex = 1;
 constexpr std::uint16_t kEncoder1WithoutIndex = 2;
+// Table 4-11: the sensor errors (4.2.23 - 4.2.26, 4.2.29, 4.2.31).
+constexpr motion::SensorErrorCodes kSensorErrorCodes{.encoder_breach = 0xFF0A,
+                                                     .index_not_found = 0xFF02,
+                                                     .encoder_resolution = 0xFF03,
+                                                     .hall_sensor_not_found = 0xFF04,
+                                                     .hall_signal = 0xFF01,
+                                                     .hall_angle = 0xFF08};
 // 8.2.41, table 8-83: "Disable sensor supervision by hardware".
 constexpr std::uint16_t kNoHardwareSupervisionBit = 1U << 1;
 constexpr std::uint16_t kInversePolarityBit = 1U << 8;
@@ -85,7 +91,6 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     read_counts_per_turn();
     read_units_and_polarity();
     io_ = std::make_unique<Epos2Io>(dictionary_.objects());
-    sensor_supervision_ = std::make_unique<SensorSupervision>();
     read_sensor_configuration();
     watch_dictionary();
     compute_measured_values();
@@ -452,9 +457,9 @@ void Epos2Drive::control_period() {
 }
 
 void Epos2Drive::watch_sensors() {
-    if (const auto error = sensor_supervision_->update(axis_.motor().state().angle,
-                                                       axis_.hall_sensors(), sensor_faults_)) {
-        raise_device_error(*error);
+    if (const auto fault = sensor_supervision_.update(axis_.motor().state().angle,
+                                                      axis_.hall_sensors(), sensor_faults_)) {
+        raise_device_error(kSensorErrorCodes.of(*fault));
     }
 }
 
@@ -470,18 +475,18 @@ void Epos2Drive::read_sensor_configuration() {
     const auto& od = dictionary_.objects();
     const auto main_sensor = static_cast<std::uint16_t>(od.get_as<std::uint16_t>(0x2210, 2) & 0xF);
     const auto motor_type = od.get_as<std::uint16_t>(0x6402, 0);
-    sensor_supervision_->configure(
+    sensor_supervision_.configure(
         {.encoder_pulses = static_cast<int>(od.get_as<std::uint32_t>(0x2210, 1)),
          .encoder = main_sensor == kEncoder1WithIndex || main_sensor == kEncoder1WithoutIndex,
          .encoder_index = main_sensor == kEncoder1WithIndex,
          .hall_sensors = motor_type == kSinusoidalEcMotor || motor_type == kTrapezoidalEcMotor,
-         .hardware_supervision =
+         .breach_supervision =
              (od.get_as<std::uint16_t>(0x2008, 0) & kNoHardwareSupervisionBit) == 0});
     restart_sensor_supervision();
 }
 
 void Epos2Drive::restart_sensor_supervision() {
-    sensor_supervision_->restart(axis_.motor().state().angle, axis_.hall_sensors(), sensor_faults_);
+    sensor_supervision_.restart(axis_.motor().state().angle, axis_.hall_sensors(), sensor_faults_);
 }
 
 // Refresh (20) and Measure Init (21) take one control period here, and so does a fault reaction

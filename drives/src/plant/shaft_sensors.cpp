@@ -1,5 +1,6 @@
 #include "eposp/drives/plant/shaft_sensors.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -7,6 +8,9 @@
 namespace eposp::drives::plant {
 
 namespace {
+
+// The hall patterns of the six sectors of an electrical revolution, for positive rotation.
+constexpr std::array<std::uint8_t, 6> kHallSequence = {1, 3, 2, 6, 4, 5};
 
 std::int64_t floor_div(std::int64_t value, std::int64_t divisor) {
     const std::int64_t quotient = value / divisor;
@@ -27,11 +31,18 @@ bool index_passed(std::int64_t before, std::int64_t after, int encoder_pulses) {
 }
 
 std::uint8_t hall_pattern(double motor_angle, int pole_pairs) {
-    static constexpr std::array<std::uint8_t, 6> kSequence = {1, 3, 2, 6, 4, 5};
     const double electrical_turns = motor_angle * pole_pairs / (2 * std::numbers::pi);
     const double fraction = electrical_turns - std::floor(electrical_turns);
-    const auto sector = static_cast<std::size_t>(fraction * 6) % kSequence.size();
-    return kSequence[sector];
+    const auto sector = static_cast<std::size_t>(fraction * 6) % kHallSequence.size();
+    return kHallSequence[sector];
+}
+
+std::optional<int> hall_sector(std::uint8_t pattern) {
+    const auto* found = std::ranges::find(kHallSequence, pattern);
+    if (found == kHallSequence.end()) {
+        return std::nullopt;
+    }
+    return static_cast<int>(found - kHallSequence.begin());
 }
 
 std::uint8_t hall_inputs(std::uint8_t pattern, const SensorFaults& faults) {

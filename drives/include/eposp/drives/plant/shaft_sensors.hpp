@@ -39,6 +39,10 @@ bool index_passed(std::int64_t before, std::int64_t after, int encoder_pulses);
 /// 1, 3, 2, 6, 4, 5 for positive rotation.
 std::uint8_t hall_pattern(double motor_angle, int pole_pairs);
 
+/// The 60° sector (0 - 5) of the electrical revolution that a hall pattern shows, as
+/// hall_pattern numbers them; none for the impossible combinations 000 and 111.
+std::optional<int> hall_sector(std::uint8_t pattern);
+
 /// Faults of the motor's sensors that a test injects (EPOS2 FW spec 4.2.23 - 4.2.31 list them as
 /// causes): what the drive's sensor inputs read instead of the shaft's angle.
 struct SensorFaults {
