@@ -76,6 +76,35 @@ TEST(DigitalInputs, MaskFiltersOnlyTheDisplayedState) {
     EXPECT_EQ(inputs.displayed(both), kNegativeLimit);
 }
 
+// The states are a table over the 64 pin levels made when configured: every level of every
+// configuration (pins carrying one functionality, two pins sharing one, low-active bits of
+// functionalities no pin carries) against table 8-88's rule, also after reconfiguring.
+TEST(DigitalInputs, EveryPinLevelGivesTheStatesOfItsConfiguration) {
+    DigitalInputs inputs;
+    std::vector<DigitalInputConfiguration> configs(4);
+    configs[1].functions = {5, 4, 3, 2, 1, 0};
+    configs[1].polarity = kHome | kQuickStop | (1U << 9);
+    configs[2].functions = {2, 2, 15, 6, 0, 1};
+    configs[2].polarity = 0xFFFF;
+    configs[3].functions = {0, 15, 14, 13, 12, 11};
+    configs[3].polarity = kNegativeLimit | (1U << 12);
+    for (const DigitalInputConfiguration& config : configs) {
+        inputs.configure(config);
+        for (unsigned pins = 0; pins < 64; ++pins) {
+            std::uint16_t expected = 0;
+            for (unsigned n = 1; n <= kDigitalInputCount; ++n) {
+                const bool high = (pins >> (n - 1) & 1U) != 0;
+                inputs.set_level(n, high);
+                const auto bit = static_cast<std::uint16_t>(1U << config.functions[n - 1]);
+                if (high != ((config.polarity & bit) != 0)) {
+                    expected |= bit;
+                }
+            }
+            EXPECT_EQ(inputs.states(kNoSwitch), expected) << "pins " << pins;
+        }
+    }
+}
+
 TEST(DigitalInputs, HeldLimitSwitchDrivesItsPinAndOutsideSourcesAddUp) {
     DigitalInputs inputs;
     inputs.hold_limit_switch(InputFunction::PositiveLimitSwitch, true);

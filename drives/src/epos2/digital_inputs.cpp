@@ -50,22 +50,24 @@ std::uint8_t DigitalInputs::levels(const plant::SwitchStates& machine) const {
 
 // 8.2.57, table 8-88: polarity 0 is high active, 1 low active. A functionality no input carries
 // stays inactive whatever its polarity.
-std::uint16_t DigitalInputs::states(const plant::SwitchStates& machine) const {
-    const std::uint8_t pins = levels(machine);
-    std::uint16_t states = 0;
-    for (unsigned n = 0; n < kDigitalInputCount; ++n) {
-        const std::uint16_t function = config_.functions[n];
-        if (function > 15) {
-            continue; // refused by the value range; kept out for safety
+void DigitalInputs::configure(const DigitalInputConfiguration& config) {
+    config_ = config;
+    for (unsigned pins = 0; pins < states_by_levels_.size(); ++pins) {
+        std::uint16_t states = 0;
+        for (unsigned n = 0; n < kDigitalInputCount; ++n) {
+            const std::uint16_t function = config_.functions[n];
+            if (function > 15) {
+                continue; // refused by the value range; kept out for safety
+            }
+            const auto bit = static_cast<std::uint16_t>(1U << function);
+            const bool high = (pins & (1U << n)) != 0;
+            const bool low_active = (config_.polarity & bit) != 0;
+            if (high != low_active) {
+                states |= bit;
+            }
         }
-        const auto bit = static_cast<std::uint16_t>(1U << function);
-        const bool high = (pins & (1U << n)) != 0;
-        const bool low_active = (config_.polarity & bit) != 0;
-        if (high != low_active) {
-            states |= bit;
-        }
+        states_by_levels_[pins] = states;
     }
-    return states;
 }
 
 } // namespace eposp::drives::epos2

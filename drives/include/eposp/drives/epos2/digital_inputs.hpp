@@ -59,7 +59,8 @@ public:
     void set_level(unsigned input, bool high);
     /// A limit switch held pressed whatever the position (fault injection), or let go.
     void hold_limit_switch(InputFunction which, bool pressed);
-    void configure(const DigitalInputConfiguration& config) { config_ = config; }
+    DigitalInputs() { configure({}); }
+    void configure(const DigitalInputConfiguration& config);
     const DigitalInputConfiguration& configuration() const { return config_; }
 
     /// The pins' levels, bit n-1 for input n, with the machine's switches as `machine` says.
@@ -67,7 +68,9 @@ public:
     /// The functionality states after the polarity (table 8-88): a pin carries the functionality
     /// 0x2070 assigns it, active when its level is the active one. The mask does not act here: it
     /// only filters the display (8.2.57), while the execution mask decides what is executed.
-    std::uint16_t states(const plant::SwitchStates& machine) const;
+    std::uint16_t states(const plant::SwitchStates& machine) const {
+        return states_by_levels_[levels(machine)];
+    }
     /// 0x2071 sub 1: the states under the mask.
     std::uint16_t displayed(const plant::SwitchStates& machine) const {
         return states(machine) & config_.mask;
@@ -75,6 +78,9 @@ public:
 
 private:
     DigitalInputConfiguration config_;
+    /// states() for each of the 64 pin levels, made when configured: the drive asks for the
+    /// states several times each control period.
+    std::array<std::uint16_t, std::size_t{1} << kDigitalInputCount> states_by_levels_{};
     std::uint8_t outside_ = 0;
     plant::SwitchStates held_;
 };
