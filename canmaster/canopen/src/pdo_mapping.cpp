@@ -134,7 +134,7 @@ std::vector<std::uint16_t> PdoMapping::mapped_indices() const {
     return indices;
 }
 
-Bytes PdoMapping::pack(const ObjectDictionary& od) const {
+PdoPayload PdoMapping::pack(const ObjectDictionary& od) const {
     std::uint64_t word = 0;
     for (const Field& field : fields_) {
         // A stored value is read in place: every TPDO packs at every SYNC.
@@ -146,8 +146,9 @@ Bytes PdoMapping::pack(const ObjectDictionary& od) const {
                            field.entry.bits);
         word |= bits << field.offset;
     }
-    Bytes payload(size());
-    store_le(word, payload);
+    PdoPayload payload;
+    payload.size = size();
+    store_le(word, std::span(payload.data).first(payload.size));
     return payload;
 }
 

@@ -133,7 +133,7 @@ void Tpdo::send_event_if_due() {
             return;
         }
     }
-    const Bytes payload = mapping_.pack(od_);
+    const PdoPayload payload = mapping_.pack(od_);
     if (!forced_pending_ && payload == last_payload_) {
         change_pending_ = false; // changed back, or a write of the same value
         return;
@@ -220,8 +220,8 @@ void Tpdo::on_remote_request() {
     }
 }
 
-void Tpdo::transmit(const Bytes& payload) {
-    port_.send(make_frame(comm_.cob_id.raw, payload));
+void Tpdo::transmit(const PdoPayload& payload) {
+    port_.send(make_frame(comm_.cob_id.raw, payload.bytes()));
     last_payload_ = payload;
     last_transmission_ = loop_.now();
     forced_pending_ = false;

@@ -5,6 +5,7 @@
 #include "eposp/canopen/object_dictionary.hpp"
 #include "eposp/canopen/value_codec.hpp"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -14,6 +15,16 @@ namespace eposp::canopen {
 
 /// A PDO carries at most one classic CAN frame's data (CiA 301 7.2.2).
 inline constexpr std::size_t kMaxPdoBits = 64;
+
+/// A PDO's payload held by value, the bytes beyond `size` zero: every TPDO packs one at every
+/// SYNC, and a vector would be an allocation each time.
+struct PdoPayload {
+    std::array<std::uint8_t, kMaxPdoBits / 8> data{};
+    std::size_t size = 0;
+
+    std::span<const std::uint8_t> bytes() const { return {data.data(), size}; }
+    friend bool operator==(const PdoPayload&, const PdoPayload&) = default;
+};
 
 /// Which way a PDO goes, seen from the device whose dictionary holds it.
 enum class PdoDirection { Receive, Transmit };
@@ -64,7 +75,7 @@ public:
     std::vector<std::uint16_t> mapped_indices() const;
 
     /// A TPDO's payload: the mapped values as the device reads them (ObjectDictionary::get).
-    Bytes pack(const ObjectDictionary& od) const;
+    PdoPayload pack(const ObjectDictionary& od) const;
     /// Stores an RPDO's payload, of at least size() bytes, with the device's own access
     /// (ObjectDictionary::set); dummy entries are skipped.
     void unpack(ObjectDictionary& od, std::span<const std::uint8_t> payload) const;

@@ -78,7 +78,7 @@ private:
     void send_event_if_due();
     void on_cyclic_sync(std::uint8_t counter);
     void on_remote_request();
-    void transmit(const Bytes& payload);
+    void transmit(const PdoPayload& payload);
     void restart_event_timer();
 
     core::EventLoop& loop_;
@@ -97,13 +97,13 @@ private:
     // last transmission.
     bool forced_pending_ = false;
     bool change_pending_ = false;
-    std::optional<Bytes> last_payload_;
+    std::optional<PdoPayload> last_payload_;
     std::optional<core::TimePoint> last_transmission_;
     core::ScopedTimer inhibit_timer_;
     core::ScopedTimer event_timer_;
 
-    std::uint8_t syncs_to_go_ = 0; ///< cyclic types; 0 until the first transmission is due
-    std::optional<Bytes> sampled_; ///< type 252: the data of the last SYNC
+    std::uint8_t syncs_to_go_ = 0;      ///< cyclic types; 0 until the first transmission is due
+    std::optional<PdoPayload> sampled_; ///< type 252: the data of the last SYNC
 };
 
 } // namespace eposp::canopen
