@@ -308,16 +308,24 @@ Bytes ObjectDictionary::get(std::uint16_t index, std::uint8_t sub_index) const {
 
 void ObjectDictionary::set(std::uint16_t index, std::uint8_t sub_index,
                            std::span<const std::uint8_t> value) {
-    auto& sub = const_cast<SubObject&>(existing(index, sub_index));
+    set(value_ref(index, sub_index), value);
+}
+
+ValueRef ObjectDictionary::value_ref(std::uint16_t index, std::uint8_t sub_index) {
+    return {index, &const_cast<SubObject&>(existing(index, sub_index))};
+}
+
+void ObjectDictionary::set(ValueRef ref, std::span<const std::uint8_t> value) {
+    SubObject& sub = *ref.sub;
     // A stored value has its type's length: only another length needs the check (a drive
     // stores its actual values every millisecond).
     if (value.size() != sub.value.size()) {
-        require_fits(sub.type, value.size(), index, sub_index);
+        require_fits(sub.type, value.size(), ref.index, sub.sub_index);
         sub.value.assign(value.begin(), value.end());
     } else {
         std::copy(value.begin(), value.end(), sub.value.begin());
     }
-    notify(index, sub_index);
+    notify(ref.index, sub.sub_index);
 }
 
 ObjectDictionary::ListenerId ObjectDictionary::on_change(std::uint16_t index,

@@ -87,6 +87,14 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
     // The machine's encoder, gains and motor data are the device's defaults (8.2.74,
     // 8.2.125 - 8.2.130); from then on the dictionary configures the plant.
     write_axis_defaults(dictionary_.objects(), machine_);
+    auto& od = dictionary_.objects();
+    published_entries_ = {.statusword = od.value_ref(0x6041, 0),
+                          .position_demand = od.value_ref(0x6062, 0),
+                          .position_actual = od.value_ref(0x6064, 0),
+                          .velocity_demand = od.value_ref(0x606B, 0),
+                          .velocity_actual = od.value_ref(0x606C, 0),
+                          .current_actual = od.value_ref(0x6078, 0),
+                          .digital_inputs = od.value_ref(0x2071, 1)};
     configure_axis();
     read_counts_per_turn();
     read_units_and_polarity();
@@ -671,19 +679,20 @@ void Epos2Drive::publish(const MotionState& demand) {
     // Compared with what was stored last, not read back: a dictionary read per object and
     // millisecond would cost more than the whole motor model.
     auto& od = dictionary_.objects();
-    const auto store = [&od, this](std::uint16_t index, std::uint8_t sub, auto value, auto last) {
+    const auto store = [&od, this](canopen::ValueRef entry, auto value, auto last) {
         if (!published_ || value != last) {
-            od.set_as(index, sub, value);
+            od.set_as(entry, value);
         }
     };
     const PublishedValues& last = published_.value_or(now);
-    store(0x6041, 0, now.statusword, last.statusword);
-    store(0x6062, 0, now.position_demand, last.position_demand);
-    store(0x6064, 0, now.position_actual, last.position_actual);
-    store(0x606B, 0, now.velocity_demand, last.velocity_demand);
-    store(0x606C, 0, now.velocity_actual, last.velocity_actual);
-    store(0x6078, 0, now.current_actual, last.current_actual);
-    store(0x2071, 1, now.digital_inputs, last.digital_inputs);
+    const PublishedEntries& at = published_entries_;
+    store(at.statusword, now.statusword, last.statusword);
+    store(at.position_demand, now.position_demand, last.position_demand);
+    store(at.position_actual, now.position_actual, last.position_actual);
+    store(at.velocity_demand, now.velocity_demand, last.velocity_demand);
+    store(at.velocity_actual, now.velocity_actual, last.velocity_actual);
+    store(at.current_actual, now.current_actual, last.current_actual);
+    store(at.digital_inputs, now.digital_inputs, last.digital_inputs);
     published_ = now;
 }
 

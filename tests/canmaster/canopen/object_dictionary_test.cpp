@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eposp::canopen {
@@ -451,10 +452,10 @@ TEST(ObjectDictionary, SetChecksOnlyTheType) {
 // find() reads a table of pages of 256 indices: indices at the edges of a page, in pages of
 // their own and missing ones next to present ones, in the dictionary, its copy and its move.
 TEST(ObjectDictionary, FindsEveryObjectByIndexAfterCopyAndMove) {
-    const std::vector<std::uint16_t> present{0x0000, 0x00FF, 0x1000, 0x10FF, 0x1100, 0x6041,
-                                             0xFFFF};
-    const std::vector<std::uint16_t> missing{0x0001, 0x0100, 0x1001, 0x10FE, 0x6040, 0x7000,
-                                             0xFFFE};
+    const std::vector<std::uint16_t> present{0x0000, 0x00FF, 0x1000, 0x10FF,
+                                             0x1100, 0x6041, 0xFFFF};
+    const std::vector<std::uint16_t> missing{0x0001, 0x0100, 0x1001, 0x10FE,
+                                             0x6040, 0x7000, 0xFFFE};
     ObjectDictionary od;
     for (const std::uint16_t index : present) {
         const auto value = encode_array(index);
@@ -509,6 +510,28 @@ TEST(ObjectDictionary, MisuseIsAProgrammingError) {
                  std::invalid_argument);
     EXPECT_THROW((void)od.get(0x3000, 0), std::out_of_range);
     EXPECT_THROW(od.set(0x3000, 0, Bytes{0}), std::out_of_range);
+}
+
+// A value looked up once is stored as set() by index stores it: the listeners hear the index and
+// sub-index, a wrong length is refused; the reference outlives a move of the dictionary.
+TEST(ObjectDictionary, SetThroughAValueRefActsAsSetByIndex) {
+    ObjectDictionary od;
+    od.add_object(0x2071, "Digital Input Functionalities", ObjectCode::Record);
+    od.add_sub(0x2071, 1, "State", DataType::Unsigned16, Access::ReadOnly,
+               encode(std::uint16_t{0}));
+    EXPECT_THROW((void)od.value_ref(0x2071, 2), std::out_of_range);
+    EXPECT_THROW((void)od.value_ref(0x2072, 0), std::out_of_range);
+    const ValueRef state = od.value_ref(0x2071, 1);
+    ObjectDictionary moved = std::move(od);
+    std::vector<std::pair<std::uint16_t, std::uint8_t>> heard;
+    moved.on_change(0x2071, [&heard](std::uint16_t index, std::uint8_t sub_index) {
+        heard.emplace_back(index, sub_index);
+    });
+    moved.set_as(state, std::uint16_t{0x1234});
+    EXPECT_EQ(moved.get_as<std::uint16_t>(0x2071, 1), 0x1234);
+    EXPECT_EQ(heard, (std::vector<std::pair<std::uint16_t, std::uint8_t>>{{0x2071, 1}}));
+    EXPECT_THROW(moved.set_as(state, std::uint32_t{1}), std::invalid_argument);
+    EXPECT_EQ(moved.get_as<std::uint16_t>(0x2071, 1), 0x1234);
 }
 
 TEST(ObjectDictionary, AccessNamesAndRightsFollowCia306) {

@@ -89,6 +89,14 @@ struct Object {
     std::map<std::uint8_t, SubObject> subs;
 };
 
+/// A value looked up once to be stored often (a drive's actual values, every millisecond):
+/// ObjectDictionary::set() through it skips the lookup. Valid as long as the dictionary it came
+/// from: objects are never removed, but a copy of a dictionary has sub-objects of its own.
+struct ValueRef {
+    std::uint16_t index = 0;
+    SubObject* sub = nullptr;
+};
+
 /// A CANopen object dictionary as plain data (CiA 301 7.4): everything a node exposes, with the
 /// exact SDO abort code for every refused access. Remote access (SDO, a service tool) goes
 /// through read()/write(), which check access rights, type length and value range; the device's
@@ -142,6 +150,9 @@ public:
     /// Stores a value without access-right, range or hook checks and tells the listeners;
     /// a wrong length for the type is a programming error (std::invalid_argument).
     void set(std::uint16_t index, std::uint8_t sub_index, std::span<const std::uint8_t> value);
+    /// As above, for a value found by value_ref() (a missing one: std::out_of_range).
+    ValueRef value_ref(std::uint16_t index, std::uint8_t sub_index);
+    void set(ValueRef ref, std::span<const std::uint8_t> value);
 
     template <typename T>
     T get_as(std::uint16_t index, std::uint8_t sub_index) const {
@@ -152,6 +163,10 @@ public:
     template <typename T>
     void set_as(std::uint16_t index, std::uint8_t sub_index, T value) {
         set(index, sub_index, encode_array(value));
+    }
+    template <typename T>
+    void set_as(ValueRef ref, T value) {
+        set(ref, encode_array(value));
     }
 
     /// Tells `listener` of every change of a value at `index` (any sub-index), by write() or set().

@@ -253,6 +253,13 @@ private:
         std::uint16_t digital_inputs;
     };
     std::optional<PublishedValues> published_;
+    /// Where publish() stores them (0x6041, 0x6062, 0x6064, 0x606B, 0x606C, 0x6078, 0x2071 sub 1),
+    /// looked up once.
+    struct PublishedEntries {
+        canopen::ValueRef statusword, position_demand, position_actual, velocity_demand,
+            velocity_actual, current_actual, digital_inputs;
+    };
+    PublishedEntries published_entries_;
     /// The drive's clock: the scheduled time of the control period running, else of the next
     /// one, where an input written between two periods takes effect. Physics and profiles run
     /// on it alone, so a loop that runs late (real-time pace on a loaded host) gives the same
