@@ -5,6 +5,7 @@
 #include "eposp/canopen/value_codec.hpp"
 #include "eposp/device/axis_process_data.hpp"
 #include "eposp/device/epos_p_dictionary.hpp"
+#include "eposp/drives/epos2/epos2_dictionary.hpp"
 #include "eposp/manager/concise_dcf.hpp"
 #include "eposp/manager/network_list.hpp"
 #include "eposp/vm/process_image.hpp"
@@ -259,7 +260,7 @@ NetworkFile read_network(Reader& in, const YAML::Node& root, const std::filesyst
     NetworkFile network;
     std::set<std::pair<std::uint8_t, canopen::NodeId>> nodes;
     std::set<std::uint8_t> axes;
-    std::vector<std::pair<canopen::NodeId, YAML::Node>> can_slaves;
+    std::vector<std::pair<NetworkSlave, YAML::Node>> can_slaves;
     std::vector<YAML::Node> wire_nodes;
     in.each_key(
         root, "network",
@@ -343,17 +344,25 @@ NetworkFile read_network(Reader& in, const YAML::Node& root, const std::filesyst
                       in.fail(node, fmt::format("axis {} is served twice", *slave.axis));
                   }
                   if (slave.port == kExternalPort) {
-                      can_slaves.emplace_back(slave.node_id, node);
+                      can_slaves.emplace_back(slave, node);
                   }
                   network.slaves.push_back(slave);
               }
           }}});
     check_wires(in, network, wire_nodes);
-    for (const auto& [node_id, node] : can_slaves) {
-        if (node_id == network.node_id) {
+    for (const auto& [slave, node] : can_slaves) {
+        if (slave.node_id == network.node_id) {
             in.fail(node, fmt::format("node {} is the EPOS P's own node-ID on the CAN bus "
                                       "(node_id)",
-                                      node_id));
+                                      slave.node_id));
+        }
+        // A real EPOS2 would never find this rate on the bus (table 8-81: 10 kbit/s "not
+        // supported"), so a simulated one does not pretend to.
+        if (slave.kind == NetworkSlave::Kind::Epos2 &&
+            !drives::epos2::bit_rate_code(network.bit_rate)) {
+            in.fail(node, fmt::format("node {} is an EPOS2, which cannot run at bit_rate {} "
+                                      "(EPOS2 firmware specification, table 8-81)",
+                                      slave.node_id, network.bit_rate));
         }
     }
     return network;

@@ -61,8 +61,14 @@ TEST(DriveCommand, BadConfigFileIsAUserErrorWithItsPlace) {
     std::ofstream(file) << "motor:\n  resistence: 2.18\n";
     const auto result = eposp("drive epos2 --config " + file.string() + " --virtual --for 1ms");
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_THAT(result.output, HasSubstr("motor.yaml:2:3: error: unknown key 'resistence'"));
-    EXPECT_EQ(eposp("drive epos2 --config /nonexistent.yaml --virtual --for 1ms").exit_code, 1);
+    EXPECT_THAT(result.output,
+                HasSubstr("eposp drive epos2: " + file.string() +
+                          ":2:3: error: unknown key 'resistence'"));
+    const auto missing = eposp("drive epos2 --config /nonexistent.yaml --virtual --for 1ms");
+    EXPECT_EQ(missing.exit_code, 1);
+    // The file names itself and says "error:" once, not "error: /nonexistent.yaml: error:".
+    EXPECT_THAT(missing.output,
+                HasSubstr("eposp drive epos2: /nonexistent.yaml: error: cannot read the file"));
 }
 
 // The drive's non-volatile memory (0x1010 / 0x1011, EPOS2 FW spec 8.2.8 / 8.2.9) lives in its

@@ -228,6 +228,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"UnknownKey", "bit_rate: 1000000\nspeed: 3\n",
                 "net.yaml:2:1: error: unknown key 'speed' in 'network'"},
         BadFile{"BitRate", "bit_rate: 300000\n", "net.yaml:1:11: error: bit_rate must be"},
+        BadFile{"BitRateAnEpos2Lacks", "bit_rate: 10000\nslaves:\n  - node: 2\n",
+                "net.yaml:3:5: error: node 2 is an EPOS2, which cannot run at bit_rate 10000"},
         BadFile{"BootTime", "boot_time: 100ms\n", "net.yaml:1:12: error: boot_time must be"},
         BadFile{"SyncPeriod", "sync_period: 500us\n", "net.yaml:1:14: error: sync_period must be"},
         BadFile{"NotADuration", "boot_time: soon\n",

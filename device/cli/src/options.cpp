@@ -11,7 +11,10 @@
 namespace eposp::device::cli {
 
 int report_user_error(std::string_view command, std::string_view message) {
-    fmt::print(stderr, "eposp {}: error: {}\n", command, terminal_text(message));
+    // A message located in a file ("machine.yaml:2:1: error: ...") carries its own "error:".
+    const bool located = message.find(": error: ") != std::string_view::npos;
+    fmt::print(stderr, "eposp {}: {}{}\n", command, located ? "" : "error: ",
+               terminal_text(message));
     return 1;
 }
 

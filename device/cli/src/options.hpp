@@ -26,8 +26,9 @@ CLI::Option* add_engine_option(CLI::App& command, vm::Engine& target);
 /// (CLI11's own ranges of doubles print hundreds of them).
 CLI::Validator whole_number_in(std::uint64_t lowest, std::uint64_t highest);
 
-/// Reports a user-facing failure as `eposp <command>: error: <message>` on stderr and returns
-/// the exit code for it, 1.
+/// Reports a user-facing failure as `eposp <command>: error: <message>` on stderr, or as
+/// `eposp <command>: <message>` when the message names its file and says "error:" itself, and
+/// returns the exit code for it, 1.
 int report_user_error(std::string_view command, std::string_view message);
 
 /// Adds the hosting options (--socketcand, --socketcan, --name, --bitrate, --log, --pcap, --for,
