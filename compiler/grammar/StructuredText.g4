@@ -122,7 +122,7 @@ enumValue : identifier (':=' expression)? ;
 statementList : statement* ;
 
 statement
-    : expression (':=' expression)? ';'                                     # expressionStatement
+    : target=expression (':=' value=expression)? ';'                        # expressionStatement
     | IF expression THEN statementList elsifClause* (ELSE statementList)? END_IF ';'?  # ifStatement
     | CASE expression OF caseBranch* (ELSE statementList)? END_CASE ';'?     # caseStatement
     | FOR identifier ':=' expression TO expression (BY expression)? DO statementList END_FOR ';'?
@@ -142,47 +142,37 @@ caseBranch : caseLabel (',' caseLabel)* ':' statementList ;
 caseLabel : expression ('..' expression)? ;
 
 // ---------------------------------------------------------------------------------------------
-// Expressions (7.3.2, table 71): one rule per precedence level, lowest first. Operators of one
-// level are a flat list so that long chains build a flat parse tree, not a deep one.
+// Expressions (7.3.2, table 71): one left-recursive rule, its alternatives from the highest
+// precedence to the lowest, so that an operand is one node of the parse tree, not one for each
+// precedence level. Operators of one precedence apply from left to right (7.3.2), `**` too
+// (`2 ** 3 ** 2` is 64), and the prefix operators bind tighter than `**` (`-2 ** 2` is 4).
 
-expression : xorExpression (OR xorExpression)* ;
-
-xorExpression : andExpression (XOR andExpression)* ;
-
-andExpression : equalityExpression ((AND | '&') equalityExpression)* ;
-
-equalityExpression : comparisonExpression (('=' | '<>') comparisonExpression)* ;
-
-comparisonExpression : additiveExpression (('<' | '>' | '<=' | '>=') additiveExpression)* ;
-
-additiveExpression : multiplicativeExpression (('+' | '-') multiplicativeExpression)* ;
-
-multiplicativeExpression : powerExpression (('*' | '/' | MOD) powerExpression)* ;
-
-powerExpression : unaryExpression ('**' unaryExpression)* ;
-
-unaryExpression : op=('-' | '+' | NOT) unaryExpression | postfixExpression ;
-
-postfixExpression : primaryExpression postfixOperator* ;
-
-postfixOperator
-    : '.' identifier                                                        # memberAccess
-    | '.' INTEGER                                                           # bitAccess
-    | '[' expression (',' expression)* ']'                                  # indexAccess
-    | '^'                                                                   # dereference
-    | '(' argumentList? ')'                                                 # callArguments
-    ;
-
-primaryExpression
-    : literal                                                               # literalExpression
-    | identifier                                                            # nameExpression
-    | '(' expression ')'                                                    # parenthesizedExpression
-    | REF '(' expression ')'                                                # refExpression
+expression
+    : value=(INTEGER | BASED_INTEGER | REAL_LITERAL | TRUE | FALSE | NULL_REFERENCE
+      | STRING_LITERAL | WSTRING_LITERAL | UNTERMINATED_STRING | TIME_LITERAL | DATE_LITERAL
+      | TIME_OF_DAY_LITERAL | DATE_AND_TIME_LITERAL | TYPED_LITERAL)         # literalExpression
+    | name=identifier                                                       # nameExpression
+    | '(' inner=expression ')'                                              # parenthesizedExpression
+    | REF '(' inner=expression ')'                                          # refExpression
     // Tables 29 and 30 list the operators MOD, AND, OR and XOR as functions as well. NOT(x)
     // needs no rule of its own: NOT applied to (x) is the same value, and a second way to read
     // it would make the parser look to the closing parenthesis at every NOT (.
-    | name=(MOD | AND | OR | XOR) '(' argumentList? ')'                     # operatorCall
-    | DIRECT_ADDRESS                                                        # directAddressExpression
+    | callee=(MOD | AND | OR | XOR) '(' arguments=argumentList? ')'         # operatorCall
+    | address=DIRECT_ADDRESS                                                # directAddressExpression
+    | base=expression '.' member=identifier                                 # memberAccess
+    | base=expression '.' bit=INTEGER                                       # bitAccess
+    | base=expression '[' indices+=expression (',' indices+=expression)* ']'  # indexAccess
+    | base=expression '^'                                                   # dereference
+    | base=expression '(' arguments=argumentList? ')'                       # callArguments
+    | op=('-' | '+' | NOT) operand=expression                               # unaryExpression
+    | left=expression op='**' right=expression                              # binaryExpression
+    | left=expression op=('*' | '/' | MOD) right=expression                 # binaryExpression
+    | left=expression op=('+' | '-') right=expression                       # binaryExpression
+    | left=expression op=('<' | '>' | '<=' | '>=') right=expression         # binaryExpression
+    | left=expression op=('=' | '<>') right=expression                      # binaryExpression
+    | left=expression op=(AND | '&') right=expression                       # binaryExpression
+    | left=expression op=XOR right=expression                               # binaryExpression
+    | left=expression op=OR right=expression                                # binaryExpression
     ;
 
 argumentList : argument (',' argument)* ;
@@ -191,23 +181,6 @@ argument
     : identifier ':=' expression                                            # inputArgument
     | NOT? identifier '=>' expression                                       # outputArgument
     | expression                                                            # positionalArgument
-    ;
-
-literal
-    : INTEGER
-    | BASED_INTEGER
-    | REAL_LITERAL
-    | TRUE
-    | FALSE
-    | NULL_REFERENCE
-    | STRING_LITERAL
-    | WSTRING_LITERAL
-    | UNTERMINATED_STRING
-    | TIME_LITERAL
-    | DATE_LITERAL
-    | TIME_OF_DAY_LITERAL
-    | DATE_AND_TIME_LITERAL
-    | TYPED_LITERAL
     ;
 
 // ON is a keyword only inside a RESOURCE declaration; elsewhere it is a name, as in CODESYS.

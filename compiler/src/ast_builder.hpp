@@ -4,6 +4,8 @@
 #include "eposp/compiler/ast/compilation_unit.hpp"
 #include "eposp/compiler/diagnostics.hpp"
 
+#include <typeinfo>
+
 namespace eposp::compiler {
 
 /// Turns a parse tree without syntax errors into our typed AST: literal values decoded, names
@@ -12,6 +14,16 @@ namespace eposp::compiler {
 ast::CompilationUnit build_ast(generated::StructuredTextParser::CompilationUnitContext& tree,
                                antlr4::BufferedTokenStream& tokens, FileId file,
                                Diagnostics& diagnostics);
+
+/// The context of one labelled alternative (`# name` in the grammar), or null. The type is
+/// compared exactly: a dynamic_cast walks the class hierarchy and costs several times as much,
+/// and the builder asks for every node.
+template <typename Alternative, typename Rule>
+Alternative* alternative(Rule* context) {
+    return context != nullptr && typeid(*context) == typeid(Alternative)
+               ? static_cast<Alternative*>(context)
+               : nullptr;
+}
 
 /// The builder's state, shared by its parts (declarations, statements, expressions), each in
 /// its own file.
@@ -60,7 +72,6 @@ public:
 
     // ast_builder_expressions.cpp
     ast::ExpressionPtr expression(P::ExpressionContext& context);
-    ast::ExpressionPtr postfix(P::PostfixExpressionContext& context);
     std::vector<ast::Argument> arguments(P::ArgumentListContext* context);
     ast::ExpressionPtr literal_expression(antlr4::Token& token);
 
@@ -71,17 +82,8 @@ public:
     void warning(DiagnosticCode code, const SourceRange& range, std::string message);
 
 private:
-    template <typename Operand>
-    ast::ExpressionPtr binary_chain(antlr4::ParserRuleContext& context);
-    ast::ExpressionPtr operand(P::XorExpressionContext& context);
-    ast::ExpressionPtr operand(P::AndExpressionContext& context);
-    ast::ExpressionPtr operand(P::EqualityExpressionContext& context);
-    ast::ExpressionPtr operand(P::ComparisonExpressionContext& context);
-    ast::ExpressionPtr operand(P::AdditiveExpressionContext& context);
-    ast::ExpressionPtr operand(P::MultiplicativeExpressionContext& context);
-    ast::ExpressionPtr operand(P::PowerExpressionContext& context);
-    ast::ExpressionPtr operand(P::UnaryExpressionContext& context);
-    ast::ExpressionPtr primary(P::PrimaryExpressionContext& context);
+    ast::ExpressionPtr unary_expression(P::UnaryExpressionContext& context);
+    ast::ExpressionPtr bit_access(P::BitAccessContext& context);
 
     antlr4::BufferedTokenStream& tokens_; ///< with the pragmas on its hidden channel
     FileId file_;

@@ -211,7 +211,7 @@ std::vector<ast::DeclarationSection>
 AstBuilder::sections(const std::vector<P::VarSectionContext*>& all) {
     std::vector<ast::DeclarationSection> result;
     for (P::VarSectionContext* section : all) {
-        if (auto* access = dynamic_cast<P::AccessSectionContext*>(section)) {
+        if (auto* access = alternative<P::AccessSectionContext>(section)) {
             ast::AccessSection built;
             built.range = range(*access);
             for (P::AccessDeclarationContext* declaration : access->accessDeclaration()) {
@@ -237,7 +237,7 @@ AstBuilder::sections(const std::vector<P::VarSectionContext*>& all) {
             result.emplace_back(std::move(built));
             continue;
         }
-        auto& variables = dynamic_cast<P::VariableSectionContext&>(*section);
+        auto& variables = static_cast<P::VariableSectionContext&>(*section);
         ast::VarSection built;
         built.kind = section_kind(variables.kind->getType());
         built.range = range(variables);
@@ -324,9 +324,9 @@ ast::InitializerPtr AstBuilder::initializer(P::InitializerContext* context) {
     }
     auto result = std::make_unique<ast::Initializer>();
     result->range = range(*context);
-    if (auto* array = dynamic_cast<P::ArrayInitializerContext*>(context)) {
+    if (auto* array = alternative<P::ArrayInitializerContext>(context)) {
         result->value = array_elements(array->arrayInitElement());
-    } else if (auto* structure = dynamic_cast<P::StructInitializerContext*>(context)) {
+    } else if (auto* structure = alternative<P::StructInitializerContext>(context)) {
         std::vector<ast::StructInitElement> elements;
         for (P::StructInitElementContext* element : structure->structInitElement()) {
             elements.push_back(
@@ -335,16 +335,16 @@ ast::InitializerPtr AstBuilder::initializer(P::InitializerContext* context) {
         result->value = std::move(elements);
     } else {
         result->value =
-            expression(*dynamic_cast<P::ExpressionInitializerContext&>(*context).expression());
+            expression(*static_cast<P::ExpressionInitializerContext&>(*context).expression());
     }
     return result;
 }
 
 ast::InitializerPtr AstBuilder::declaration_initializer(P::DeclarationInitializerContext* context) {
-    if (auto* bracketed = dynamic_cast<P::BracketedInitializerContext*>(context)) {
+    if (auto* bracketed = alternative<P::BracketedInitializerContext>(context)) {
         return initializer(bracketed->initializer());
     }
-    auto* bare = dynamic_cast<P::BareArrayInitializerContext*>(context);
+    auto* bare = alternative<P::BareArrayInitializerContext>(context);
     if (bare == nullptr) {
         return nullptr;
     }

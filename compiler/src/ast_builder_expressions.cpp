@@ -105,60 +105,76 @@ bool negate_literal(ast::Expression& operand) {
 
 } // namespace
 
-template <typename Operand>
-ast::ExpressionPtr AstBuilder::binary_chain(antlr4::ParserRuleContext& context) {
-    if (context.children.size() == 1) {
-        // No operator at this level (most operands): no type test for the child.
-        return operand(*static_cast<Operand*>(context.children.front()));
-    }
-    ast::ExpressionPtr result;
-    ast::BinaryOperator pending = ast::BinaryOperator::Or;
-    for (antlr4::tree::ParseTree* child : context.children) {
-        if (auto* terminal = dynamic_cast<antlr4::tree::TerminalNode*>(child)) {
-            pending = binary_operator(terminal->getSymbol()->getType());
-            continue;
-        }
-        ast::ExpressionPtr value = operand(*static_cast<Operand*>(child));
-        if (!result) {
-            result = std::move(value);
-            continue;
-        }
-        const SourceRange whole = span(result->range, value->range);
-        result = make(whole, ast::BinaryExpression{pending, std::move(result), std::move(value)});
-    }
-    return result;
-}
-
+// The alternatives most frequent first.
 ast::ExpressionPtr AstBuilder::expression(P::ExpressionContext& context) {
-    return binary_chain<P::XorExpressionContext>(context);
-}
-ast::ExpressionPtr AstBuilder::operand(P::XorExpressionContext& context) {
-    return binary_chain<P::AndExpressionContext>(context);
-}
-ast::ExpressionPtr AstBuilder::operand(P::AndExpressionContext& context) {
-    return binary_chain<P::EqualityExpressionContext>(context);
-}
-ast::ExpressionPtr AstBuilder::operand(P::EqualityExpressionContext& context) {
-    return binary_chain<P::ComparisonExpressionContext>(context);
-}
-ast::ExpressionPtr AstBuilder::operand(P::ComparisonExpressionContext& context) {
-    return binary_chain<P::AdditiveExpressionContext>(context);
-}
-ast::ExpressionPtr AstBuilder::operand(P::AdditiveExpressionContext& context) {
-    return binary_chain<P::MultiplicativeExpressionContext>(context);
-}
-ast::ExpressionPtr AstBuilder::operand(P::MultiplicativeExpressionContext& context) {
-    return binary_chain<P::PowerExpressionContext>(context);
-}
-ast::ExpressionPtr AstBuilder::operand(P::PowerExpressionContext& context) {
-    return binary_chain<P::UnaryExpressionContext>(context);
+    if (auto* name = alternative<P::NameExpressionContext>(&context)) {
+        ast::Identifier id = identifier(*name->name);
+        const SourceRange where = id.range;
+        return make(where, ast::NameExpression{std::move(id)});
+    }
+    if (auto* literal = alternative<P::LiteralExpressionContext>(&context)) {
+        return literal_expression(*literal->value);
+    }
+    if (auto* binary = alternative<P::BinaryExpressionContext>(&context)) {
+        ast::ExpressionPtr left = expression(*binary->left);
+        ast::ExpressionPtr right = expression(*binary->right);
+        const SourceRange whole = span(left->range, right->range);
+        return make(whole, ast::BinaryExpression{binary_operator(binary->op->getType()),
+                                                 std::move(left), std::move(right)});
+    }
+    if (auto* member = alternative<P::MemberAccessContext>(&context)) {
+        ast::ExpressionPtr base = expression(*member->base);
+        ast::Identifier name = identifier(*member->member);
+        const SourceRange whole = span(base->range, name.range);
+        return make(whole, ast::MemberExpression{std::move(base), std::move(name)});
+    }
+    if (auto* index = alternative<P::IndexAccessContext>(&context)) {
+        ast::ExpressionPtr base = expression(*index->base);
+        std::vector<ast::ExpressionPtr> indices;
+        indices.reserve(index->indices.size());
+        for (P::ExpressionContext* subscript : index->indices) {
+            indices.push_back(expression(*subscript));
+        }
+        const SourceRange whole = span(base->range, range(*index->getStop()));
+        return make(whole, ast::IndexExpression{std::move(base), std::move(indices)});
+    }
+    if (auto* call = alternative<P::CallArgumentsContext>(&context)) {
+        ast::ExpressionPtr callee = expression(*call->base);
+        const SourceRange whole = span(callee->range, range(*call->getStop()));
+        return make(whole, ast::CallExpression{std::move(callee), arguments(call->arguments)});
+    }
+    if (auto* unary = alternative<P::UnaryExpressionContext>(&context)) {
+        return unary_expression(*unary);
+    }
+    if (auto* parenthesized = alternative<P::ParenthesizedExpressionContext>(&context)) {
+        return expression(*parenthesized->inner);
+    }
+    if (auto* bit = alternative<P::BitAccessContext>(&context)) {
+        return bit_access(*bit);
+    }
+    if (auto* dereference = alternative<P::DereferenceContext>(&context)) {
+        ast::ExpressionPtr base = expression(*dereference->base);
+        const SourceRange whole = span(base->range, range(*dereference->getStop()));
+        return make(whole, ast::DereferenceExpression{std::move(base)});
+    }
+    if (auto* call = alternative<P::OperatorCallContext>(&context)) {
+        // The same call as one of a function named like the operator.
+        const SourceRange where = range(*call->callee);
+        auto callee = make(where, ast::NameExpression{{call->callee->getText(), where}});
+        return make(range(context),
+                    ast::CallExpression{std::move(callee), arguments(call->arguments)});
+    }
+    if (auto* located = alternative<P::DirectAddressExpressionContext>(&context)) {
+        std::optional<ast::DirectAddress> address = direct_address(*located->address);
+        return make(range(context),
+                    ast::DirectAddressExpression{address.value_or(ast::DirectAddress{})});
+    }
+    auto& reference = static_cast<P::RefExpressionContext&>(context);
+    return make(range(context), ast::ReferenceExpression{expression(*reference.inner)});
 }
 
-ast::ExpressionPtr AstBuilder::operand(P::UnaryExpressionContext& context) {
-    if (context.op == nullptr) {
-        return postfix(*context.postfixExpression());
-    }
-    ast::ExpressionPtr value = operand(*context.unaryExpression());
+ast::ExpressionPtr AstBuilder::unary_expression(P::UnaryExpressionContext& context) {
+    ast::ExpressionPtr value = expression(*context.operand);
     const SourceRange whole = span(range(*context.op), value->range);
     if (context.op->getType() == P::MINUS && negate_literal(*value)) {
         value->range = whole;
@@ -170,67 +186,19 @@ ast::ExpressionPtr AstBuilder::operand(P::UnaryExpressionContext& context) {
     return make(whole, ast::UnaryExpression{op, std::move(value)});
 }
 
-ast::ExpressionPtr AstBuilder::postfix(P::PostfixExpressionContext& context) {
-    ast::ExpressionPtr result = primary(*context.primaryExpression());
-    for (P::PostfixOperatorContext* op : context.postfixOperator()) {
-        const SourceRange whole = span(result->range, range(*op));
-        if (auto* member = dynamic_cast<P::MemberAccessContext*>(op)) {
-            result = make(
-                whole, ast::MemberExpression{std::move(result), identifier(*member->identifier())});
-        } else if (auto* bit = dynamic_cast<P::BitAccessContext*>(op)) {
-            const auto index = decode_literal(LiteralForm::Integer, bit->INTEGER()->getText());
-            const auto* value = index ? std::get_if<ast::IntegerLiteral>(&*index) : nullptr;
-            if (value == nullptr || value->magnitude > 63) {
-                error(DiagnosticCode::E0105, range(*bit),
-                      "bit number " + bit->INTEGER()->getText() +
-                          " is out of range; the widest bit string (LWORD) has "
-                          "bits 0 to 63");
-            }
-            const auto number = static_cast<std::uint32_t>(value != nullptr ? value->magnitude : 0);
-            result = make(whole, ast::BitAccessExpression{std::move(result), number});
-        } else if (auto* index = dynamic_cast<P::IndexAccessContext*>(op)) {
-            std::vector<ast::ExpressionPtr> indices;
-            for (P::ExpressionContext* subscript : index->expression()) {
-                indices.push_back(expression(*subscript));
-            }
-            result = make(whole, ast::IndexExpression{std::move(result), std::move(indices)});
-        } else if (dynamic_cast<P::DereferenceContext*>(op) != nullptr) {
-            result = make(whole, ast::DereferenceExpression{std::move(result)});
-        } else if (auto* call = dynamic_cast<P::CallArgumentsContext*>(op)) {
-            result = make(whole,
-                          ast::CallExpression{std::move(result), arguments(call->argumentList())});
-        }
+ast::ExpressionPtr AstBuilder::bit_access(P::BitAccessContext& context) {
+    ast::ExpressionPtr base = expression(*context.base);
+    const std::string number_text = context.bit->getText();
+    const auto index = decode_literal(LiteralForm::Integer, number_text);
+    const auto* value = index ? std::get_if<ast::IntegerLiteral>(&*index) : nullptr;
+    if (value == nullptr || value->magnitude > 63) {
+        error(DiagnosticCode::E0105, token_range(file_, *context.DOT()->getSymbol(), *context.bit),
+              "bit number " + number_text +
+                  " is out of range; the widest bit string (LWORD) has bits 0 to 63");
     }
-    return result;
-}
-
-ast::ExpressionPtr AstBuilder::primary(P::PrimaryExpressionContext& context) {
-    if (auto* literal = dynamic_cast<P::LiteralExpressionContext*>(&context)) {
-        return literal_expression(*literal->literal()->getStart());
-    }
-    if (auto* name = dynamic_cast<P::NameExpressionContext*>(&context)) {
-        ast::Identifier id = identifier(*name->identifier());
-        const SourceRange where = id.range;
-        return make(where, ast::NameExpression{std::move(id)});
-    }
-    if (auto* call = dynamic_cast<P::OperatorCallContext*>(&context)) {
-        // The same call as one of a function named like the operator.
-        const SourceRange where = range(*call->name);
-        auto callee = make(where, ast::NameExpression{{call->name->getText(), where}});
-        return make(range(context),
-                    ast::CallExpression{std::move(callee), arguments(call->argumentList())});
-    }
-    if (auto* parenthesized = dynamic_cast<P::ParenthesizedExpressionContext*>(&context)) {
-        return expression(*parenthesized->expression());
-    }
-    if (auto* located = dynamic_cast<P::DirectAddressExpressionContext*>(&context)) {
-        std::optional<ast::DirectAddress> address =
-            direct_address(*located->DIRECT_ADDRESS()->getSymbol());
-        return make(range(context),
-                    ast::DirectAddressExpression{address.value_or(ast::DirectAddress{})});
-    }
-    auto& reference = dynamic_cast<P::RefExpressionContext&>(context);
-    return make(range(context), ast::ReferenceExpression{expression(*reference.expression())});
+    const auto number = static_cast<std::uint32_t>(value != nullptr ? value->magnitude : 0);
+    const SourceRange whole = span(base->range, range(*context.bit));
+    return make(whole, ast::BitAccessExpression{std::move(base), number});
 }
 
 ast::ExpressionPtr AstBuilder::literal_expression(antlr4::Token& token) {
@@ -288,18 +256,18 @@ std::vector<ast::Argument> AstBuilder::arguments(P::ArgumentListContext* context
     for (P::ArgumentContext* argument : context->argument()) {
         ast::Argument built;
         built.range = range(*argument);
-        if (auto* input = dynamic_cast<P::InputArgumentContext*>(argument)) {
+        if (auto* input = alternative<P::InputArgumentContext>(argument)) {
             built.kind = ast::Argument::Kind::Input;
             built.name = identifier(*input->identifier());
             built.value = expression(*input->expression());
-        } else if (auto* output = dynamic_cast<P::OutputArgumentContext*>(argument)) {
+        } else if (auto* output = alternative<P::OutputArgumentContext>(argument)) {
             built.kind = ast::Argument::Kind::Output;
             built.name = identifier(*output->identifier());
             built.negated = output->NOT() != nullptr;
             built.value = expression(*output->expression());
         } else {
             built.value =
-                expression(*dynamic_cast<P::PositionalArgumentContext&>(*argument).expression());
+                expression(*static_cast<P::PositionalArgumentContext&>(*argument).expression());
         }
         result.push_back(std::move(built));
     }
@@ -307,14 +275,16 @@ std::vector<ast::Argument> AstBuilder::arguments(P::ArgumentListContext* context
 }
 
 ast::Identifier AstBuilder::identifier(P::IdentifierContext& context) {
-    if (context.ON() != nullptr && !warned_about_on_) {
+    // The rule is one token: its text, without the stream RuleContext::getText builds it in.
+    antlr4::Token& token = *context.getStart();
+    if (token.getType() == P::ON && !warned_about_on_) {
         warned_about_on_ = true; // once per file: the point is the form, not each use
         warning(DiagnosticCode::W0103, range(context),
-                "'" + context.getText() +
+                "'" + token.getText() +
                     "' is a keyword of IEC 61131-3 (RESOURCE ... ON); accepted "
                     "as a name, as CODESYS does");
     }
-    return {context.getText(), range(context)};
+    return {token.getText(), range(token)};
 }
 
 SourceRange AstBuilder::range(antlr4::ParserRuleContext& context) const {

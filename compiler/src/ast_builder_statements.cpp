@@ -47,15 +47,14 @@ ast::StatementList AstBuilder::statements(P::StatementListContext* context) {
 
 ast::Statement AstBuilder::statement(P::StatementContext& context) {
     const SourceRange where = range(context);
-    if (auto* simple = dynamic_cast<P::ExpressionStatementContext*>(&context)) {
-        ast::ExpressionPtr target = expression(*simple->expression(0));
-        if (simple->ASSIGN() != nullptr) {
+    if (auto* simple = alternative<P::ExpressionStatementContext>(&context)) {
+        ast::ExpressionPtr target = expression(*simple->target);
+        if (simple->value != nullptr) {
             if (!is_assignable(*target)) {
                 error(DiagnosticCode::E0106, target->range,
                       "the left side of ':=' must be a variable");
             }
-            return {where, ast::AssignmentStatement{std::move(target),
-                                                    expression(*simple->expression(1))}};
+            return {where, ast::AssignmentStatement{std::move(target), expression(*simple->value)}};
         }
         if (!std::holds_alternative<ast::CallExpression>(target->node)) {
             const auto* binary = std::get_if<ast::BinaryExpression>(&target->node);
@@ -71,7 +70,7 @@ ast::Statement AstBuilder::statement(P::StatementContext& context) {
         }
         return {where, ast::CallStatement{std::move(target)}};
     }
-    if (auto* if_statement = dynamic_cast<P::IfStatementContext*>(&context)) {
+    if (auto* if_statement = alternative<P::IfStatementContext>(&context)) {
         ast::IfStatement result;
         result.branches.push_back(
             {expression(*if_statement->expression()), statements(if_statement->statementList(0))});
@@ -84,7 +83,7 @@ ast::Statement AstBuilder::statement(P::StatementContext& context) {
         }
         return {where, std::move(result)};
     }
-    if (auto* case_statement = dynamic_cast<P::CaseStatementContext*>(&context)) {
+    if (auto* case_statement = alternative<P::CaseStatementContext>(&context)) {
         ast::CaseStatement result;
         result.selector = expression(*case_statement->expression());
         for (P::CaseBranchContext* branch : case_statement->caseBranch()) {
@@ -101,7 +100,7 @@ ast::Statement AstBuilder::statement(P::StatementContext& context) {
         result.else_body = statements(case_statement->statementList());
         return {where, std::move(result)};
     }
-    if (auto* for_statement = dynamic_cast<P::ForStatementContext*>(&context)) {
+    if (auto* for_statement = alternative<P::ForStatementContext>(&context)) {
         ast::ForStatement result;
         result.control_variable = identifier(*for_statement->identifier());
         result.from = expression(*for_statement->expression(0));
@@ -112,21 +111,21 @@ ast::Statement AstBuilder::statement(P::StatementContext& context) {
         result.body = statements(for_statement->statementList());
         return {where, std::move(result)};
     }
-    if (auto* while_statement = dynamic_cast<P::WhileStatementContext*>(&context)) {
+    if (auto* while_statement = alternative<P::WhileStatementContext>(&context)) {
         return {where, ast::WhileStatement{expression(*while_statement->expression()),
                                            statements(while_statement->statementList())}};
     }
-    if (auto* repeat = dynamic_cast<P::RepeatStatementContext*>(&context)) {
+    if (auto* repeat = alternative<P::RepeatStatementContext>(&context)) {
         return {where, ast::RepeatStatement{statements(repeat->statementList()),
                                             expression(*repeat->expression())}};
     }
-    if (dynamic_cast<P::ExitStatementContext*>(&context) != nullptr) {
+    if (alternative<P::ExitStatementContext>(&context) != nullptr) {
         return {where, ast::ExitStatement{}};
     }
-    if (dynamic_cast<P::ContinueStatementContext*>(&context) != nullptr) {
+    if (alternative<P::ContinueStatementContext>(&context) != nullptr) {
         return {where, ast::ContinueStatement{}};
     }
-    if (dynamic_cast<P::ReturnStatementContext*>(&context) != nullptr) {
+    if (alternative<P::ReturnStatementContext>(&context) != nullptr) {
         return {where, ast::ReturnStatement{}};
     }
     return {where, ast::EmptyStatement{}};

@@ -54,14 +54,14 @@ ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
         return ast::TypeSpec{
             where, ast::ReferenceType{kind, std::make_unique<ast::TypeSpec>(type_spec(target))}};
     };
-    if (auto* structure = dynamic_cast<P::StructTypeContext*>(&context)) {
+    if (auto* structure = alternative<P::StructTypeContext>(&context)) {
         ast::StructType result;
         for (P::VarDeclarationContext* member : structure->varDeclaration()) {
             result.members.push_back(variable(*member));
         }
         return {where, std::move(result)};
     }
-    if (auto* array = dynamic_cast<P::ArrayTypeContext*>(&context)) {
+    if (auto* array = alternative<P::ArrayTypeContext>(&context)) {
         ast::ArrayType result;
         for (P::ArrayDimensionContext* dimension : array->arrayDimension()) {
             result.dimensions.push_back(
@@ -72,24 +72,24 @@ ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
         result.element = std::make_unique<ast::TypeSpec>(type_spec(*array->typeSpec()));
         return {where, std::move(result)};
     }
-    if (auto* reference = dynamic_cast<P::ReferenceTypeContext*>(&context)) {
+    if (auto* reference = alternative<P::ReferenceTypeContext>(&context)) {
         return pointer_to(ast::ReferenceType::Kind::Reference, *reference->typeSpec());
     }
-    if (auto* pointer = dynamic_cast<P::PointerTypeContext*>(&context)) {
+    if (auto* pointer = alternative<P::PointerTypeContext>(&context)) {
         return pointer_to(ast::ReferenceType::Kind::Pointer, *pointer->typeSpec());
     }
-    if (auto* enumeration = dynamic_cast<P::EnumTypeContext*>(&context)) {
+    if (auto* enumeration = alternative<P::EnumTypeContext>(&context)) {
         return {where, enum_type(*this, enumeration->identifier(), enumeration->enumValue())};
     }
-    if (auto* typed_enum = dynamic_cast<P::TypedEnumTypeContext*>(&context)) {
+    if (auto* typed_enum = alternative<P::TypedEnumTypeContext>(&context)) {
         return {where, enum_type(*this, typed_enum->identifier(), typed_enum->enumValue())};
     }
-    if (auto* sub = dynamic_cast<P::SubrangeTypeContext*>(&context)) {
+    if (auto* sub = alternative<P::SubrangeTypeContext>(&context)) {
         return {where, ast::SubrangeType{std::make_unique<ast::TypeSpec>(
                                              named_type(identifier(*sub->identifier()))),
                                          subrange(*this, *sub->subrange())}};
     }
-    if (auto* sized = dynamic_cast<P::SizedTypeContext*>(&context)) {
+    if (auto* sized = alternative<P::SizedTypeContext>(&context)) {
         ast::Identifier base = identifier(*sized->identifier());
         ast::ExpressionPtr length = expression(*sized->expression());
         const auto elementary = ast::elementary_type_from_name(base.name);
@@ -109,7 +109,7 @@ ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
               "only STRING and WSTRING take a length; '" + base.name + "' does not");
         return named_type(std::move(base));
     }
-    return named_type(identifier(*dynamic_cast<P::NamedTypeContext&>(context).identifier()));
+    return named_type(identifier(*static_cast<P::NamedTypeContext&>(context).identifier()));
 }
 
 } // namespace eposp::compiler
