@@ -30,6 +30,12 @@ constexpr std::uint16_t kEnableOperation = 0x000F;
 constexpr std::uint32_t kCurrentControlOnly = 0x0000'0001;
 constexpr std::uint32_t kMainSensorSensor1 = 0x0001'0011;
 constexpr std::uint32_t kMainSensorSensor2 = 0x0002'0011;
+// Table 47: sensor 1 the digital Hall sensor, sensor 2 the digital incremental encoder.
+constexpr std::uint32_t kSensor1Mask = 0x00FF;
+constexpr std::uint32_t kSensor2Mask = 0xFF00;
+// Table 52: the supervision switches of 0x3000 sub 4.
+constexpr std::uint32_t kMainSensorSupervisionDisabled = 1U << 8;
+constexpr std::uint32_t kCommutationSensorSupervisionDisabled = 1U << 9;
 
 // Table 110: the errors the drive itself detects.
 constexpr std::uint16_t kOvercurrentError = 0x2310;              // 7.1.3
@@ -37,6 +43,15 @@ constexpr std::uint16_t kLoadingParameterFailedError = 0x6380;   // 7.1.17
 constexpr std::uint16_t kMissingMainSensorError = 0x7390;        // 7.1.25
 constexpr std::uint16_t kMissingCommutationSensorError = 0x7391; // 7.1.26
 constexpr std::uint16_t kModeNotSupportedError = 0xFF0D;         // 7.1.41
+// 7.1.22 - 7.1.24: the sensor supervision's errors. A Hall sensor 3 edge missing for a turn is
+// a Hall signal error (7.1.23: "incorrect wiring of Hall sensor supply voltage"); the encoder
+// has no index (6.2.16.2), so its index checks never run: a main sensor breach if they did.
+constexpr motion::SensorErrorCodes kSensorErrorCodes{.encoder_breach = 0x7380,
+                                                     .index_not_found = 0x7380,
+                                                     .encoder_resolution = 0x7380,
+                                                     .hall_sensor_not_found = 0x7388,
+                                                     .hall_signal = 0x7388,
+                                                     .hall_angle = 0x738A};
 
 std::int16_t deci_celsius(double celsius) {
     return static_cast<std::int16_t>(std::clamp(std::round(celsius * 10), -32768.0, 32767.0));
@@ -69,6 +84,7 @@ Escon2Drive::Escon2Drive(core::EventLoop& loop, Escon2DriveConfig config)
                      loop.every(kControlPeriod, control_time_, [this] { control_period(); })) {
     write_axis_defaults(dictionary_.objects(), machine_);
     configure_axis();
+    read_sensor_configuration();
     const HardwareData& hardware = dictionary_.hardware();
     const auto volts = [](std::int64_t millivolts) {
         return static_cast<double>(millivolts) / 1000.0;
@@ -101,6 +117,7 @@ bool Escon2Drive::power_disabled() const {
 void Escon2Drive::start() {
     const canopen::StoredValuesReport stored = dictionary_.power_up();
     configure_axis(); // the power-up restored values without telling the listeners
+    read_sensor_configuration();
     io_->reload();
     errors_.reset();
     device_control_.node_reset();
@@ -202,6 +219,39 @@ void Escon2Drive::supervise() {
     update_fault_condition();
 }
 
+void Escon2Drive::watch_sensors() {
+    if (const auto fault = sensor_supervision_.update(axis_.motor().state().angle,
+                                                      axis_.hall_sensors(), sensor_faults_)) {
+        raise_device_error(kSensorErrorCodes.of(*fault));
+    }
+}
+
+// 6.2.13, 6.2.14.3, 6.2.16: what the sensor supervision checks; a new configuration is a
+// start-up. The breach is the main sensor's (7.1.22), so the encoder's only as main sensor; the
+// Hall checks are the commutation sensor's (7.1.23, 7.1.24: the angle against the encoder's).
+void Escon2Drive::read_sensor_configuration() {
+    const auto& od = objects();
+    const std::uint32_t sensors = od.get_as<std::uint32_t>(0x3000, 1);
+    const std::uint32_t miscellaneous = od.get_as<std::uint32_t>(0x3000, 4);
+    const bool encoder = (sensors & kSensor2Mask) != 0;
+    const bool hall_sensors = (sensors & kSensor1Mask) != 0 &&
+                              (miscellaneous & kCommutationSensorSupervisionDisabled) == 0;
+    sensor_supervision_.configure(
+        {.encoder_pulses = static_cast<int>(od.get_as<std::uint32_t>(0x3010, 1)),
+         .encoder = encoder,
+         .encoder_index = false,
+         .hall_sensors = hall_sensors,
+         .breach_supervision = od.get_as<std::uint32_t>(0x3000, 2) == kMainSensorSensor2 &&
+                               (miscellaneous & kMainSensorSupervisionDisabled) == 0,
+         .hall_angle = hall_sensors && encoder,
+         .pole_pairs = od.get_as<std::uint8_t>(0x3001, 3)});
+    restart_sensor_supervision();
+}
+
+void Escon2Drive::restart_sensor_supervision() {
+    sensor_supervision_.restart(axis_.motor().state().angle, axis_.hall_sensors(), sensor_faults_);
+}
+
 double Escon2Drive::logic_section_temperature() const {
     return ambient_temperature_; // the logic dissipates too little to matter here
 }
@@ -265,6 +315,15 @@ void Escon2Drive::watch_dictionary() {
     for (const std::uint16_t index : {std::uint16_t{0x2201}, std::uint16_t{0x3201}}) {
         od.on_change(index, [this](std::uint16_t, std::uint8_t) { configure_axis(); });
     }
+    // The sensors, and of 0x3001 only the pole pairs: its currents change while running.
+    for (const std::uint16_t index : {std::uint16_t{0x3000}, std::uint16_t{0x3001},
+                                      std::uint16_t{0x3010}, std::uint16_t{0x6402}}) {
+        od.on_change(index, [this](std::uint16_t changed, std::uint8_t sub) {
+            if (changed != 0x3001 || sub == 3) {
+                read_sensor_configuration();
+            }
+        });
+    }
     // 6.2.13.1: a brushed motor has no Hall sensor.
     od.on_change(0x6402, [this](std::uint16_t, std::uint8_t) {
         if (objects().get_as<std::uint16_t>(0x6402, 0) == 1) {
@@ -309,7 +368,9 @@ void Escon2Drive::compute_measured_values() {
     };
     computed(0x6077, 0, [this, torque] { return torque(axis_.current_actual()); });
     computed(0x30D2, 1, [this, torque] { return torque(current_averaged_.output()); });
-    computed(0x301A, 2, [this] { return std::uint16_t{axis_.hall_sensors()}; }); // 6.2.17.2
+    computed(0x301A, 2, [this] { // 6.2.17.2
+        return std::uint16_t{plant::hall_inputs(axis_.hall_sensors(), sensor_faults_)};
+    });
     computed(0x3000, 5, [this] { // 6.2.13.5: increments per turn of the main sensor
         const std::uint32_t structure = objects().get_as<std::uint32_t>(0x3000, 2);
         if (structure == kMainSensorSensor2) {
@@ -361,6 +422,7 @@ void Escon2Drive::on_controlword(std::uint16_t controlword) {
     // Transition 15 only "if no fault is present" (a cause still there, a device reset needed).
     if (before == DriveState::Fault && device_control_.state() != DriveState::Fault) {
         errors_.fault_reset();
+        restart_sensor_supervision(); // a sensor fault still there is found again
     }
     if (before != DriveState::OperationEnable &&
         device_control_.state() == DriveState::OperationEnable) {
@@ -453,6 +515,7 @@ void Escon2Drive::control_period() {
     if (overcurrent_seen) {
         raise_device_error(kOvercurrentError);
     }
+    watch_sensors();
     supervise();
     velocity_averaged_.update(axis_.velocity_actual());
     publish();

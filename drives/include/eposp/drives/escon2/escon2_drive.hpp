@@ -9,10 +9,12 @@
 #include "eposp/drives/escon2/protection/power_supply_supervision.hpp"
 #include "eposp/drives/escon2/protection/thermal_supervision.hpp"
 #include "eposp/drives/motion/device_control.hpp"
+#include "eposp/drives/motion/sensor_supervision.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
 #include "eposp/drives/plant/low_pass_filter.hpp"
 #include "eposp/drives/plant/reference_axis.hpp"
 #include "eposp/drives/plant/servo_axis.hpp"
+#include "eposp/drives/plant/shaft_sensors.hpp"
 #include "eposp/drives/plant/thermal_model.hpp"
 
 #include <chrono>
@@ -45,7 +47,7 @@ struct Escon2DriveConfig {
 /// A simulated maxon ESCON2: its dictionary, the device control of 2.2 (StateMachine::Escon2),
 /// I/O Velocity Mode and I/O Current Mode (chapter 3) on the shared ServoAxis plant, the inputs
 /// and outputs of chapter 4, the output current limitation (3.6.2) and the error handling of
-/// 7.1, stepped by one event-loop timer
+/// 7.1 with the sensor supervision of 7.1.22 - 7.1.24, stepped by one event-loop timer
 /// every millisecond (velocity loop, then ten 0.1 ms current-loop and plant steps) on its own
 /// clock, so that a run in virtual time is exact and reproducible.
 ///
@@ -118,6 +120,10 @@ public:
     void raise_device_error(std::uint16_t code);
     /// The cause of an auto-clearing warning went away.
     void clear_warning(std::uint16_t code);
+    /// Faults of the motor's sensors from the next control period on (none: all false): the
+    /// Hall pattern 0x301A sub 2 reads as the faults make it, and the sensor supervision raises
+    /// what it finds (7.1.22 - 7.1.24, docs/escon2.md "Sensor errors").
+    void inject_sensor_faults(const plant::SensorFaults& faults) { sensor_faults_ = faults; }
 
 private:
     static Escon2DictionaryConfig with_power_disable_rule(Escon2DictionaryConfig config,
@@ -131,6 +137,9 @@ private:
     void control_period();
     void react_to_inputs(const IoReaction& reaction);
     void supervise();
+    void watch_sensors();
+    void read_sensor_configuration();
+    void restart_sensor_supervision();
     void update_fault_condition();
     double logic_section_temperature() const;
     double pwm_duty_cycle() const;
@@ -165,6 +174,8 @@ private:
     double power_stage_loss_resistance_;
     double ambient_temperature_;
     std::unique_ptr<Escon2Io> io_;
+    motion::SensorSupervision sensor_supervision_; ///< 7.1.22 - 7.1.24
+    plant::SensorFaults sensor_faults_;            ///< injected
 
     OperatingMode mode_ = OperatingMode::IoVelocity;
     std::uint16_t controlword_ = 0;
