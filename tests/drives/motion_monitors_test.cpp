@@ -1,5 +1,6 @@
 #include "eposp/drives/motion/device_error_codes.hpp"
 #include "eposp/drives/motion/following_error_monitor.hpp"
+#include "eposp/drives/motion/sensor_direction_monitor.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/standstill_monitor.hpp"
 #include "eposp/drives/motion/target_reached_monitor.hpp"
@@ -197,6 +198,23 @@ TEST(Standstill, StopCompletesAtStandstillOrAfterTheTimeout) {
     no_timeout.stop_started(0.0);
     no_timeout.update(100, 800, false);
     EXPECT_FALSE(no_timeout.stop_completed(100));
+}
+
+// EPOS2 FW spec 4.2.37: the sensor counting against the motor's turning `limit` counts in a row
+// is the error; a count with the motor, a motor at rest or no supervision starts the count over.
+TEST(SensorDirectionMonitor, CountsAgainstTheMotorInARowAreTheError) {
+    SensorDirectionMonitor monitor(10, 100);
+    EXPECT_FALSE(monitor.update(5.0, 106)) << "with the motor";
+    EXPECT_FALSE(monitor.update(5.0, 100)) << "6 against";
+    EXPECT_FALSE(monitor.update(5.0, 100)) << "no count: still 6";
+    EXPECT_FALSE(monitor.update(5.0, 101)) << "with the motor again: over";
+    EXPECT_FALSE(monitor.update(5.0, 95));
+    EXPECT_FALSE(monitor.update(0.0, 91)) << "the motor at rest (or unwatched): over";
+    EXPECT_FALSE(monitor.update(-5.0, 95));
+    EXPECT_FALSE(monitor.update(-5.0, 100)) << "9 against a motor turning negative";
+    EXPECT_TRUE(monitor.update(-5.0, 101)) << "10";
+    EXPECT_TRUE(monitor.update(-5.0, 101)) << "while it lasts";
+    EXPECT_FALSE(monitor.update(0.0, 120));
 }
 
 } // namespace

@@ -24,6 +24,8 @@ TEST(AxisFile, TheExampleDescribesItsMachine) {
     EXPECT_DOUBLE_EQ(axis->plant.gearhead.ratio, 4.8);
     EXPECT_DOUBLE_EQ(axis->plant.load.coulomb_friction, 5e-3);
     EXPECT_EQ(axis->encoder_pulses, 500);
+    EXPECT_FALSE(axis->encoder_mounting.on_gear_output);
+    EXPECT_FALSE(axis->encoder_mounting.counts_against_motor);
     EXPECT_DOUBLE_EQ(axis->gains.position.kp, 2.285);
     EXPECT_DOUBLE_EQ(axis->gains.current_limit, 3);
     EXPECT_EQ(axis->switches.negative_limit, -200000);
@@ -39,6 +41,20 @@ TEST(AxisFile, LeftOutSectionsKeepTheReferenceAxis) {
     EXPECT_TRUE(parse_axis_file("", "empty.yaml"));
 }
 
+// 8.2.74: with a gear the main sensor sits on the gear's output; either way round (table 8-104).
+TEST(AxisFile, EncoderSaysWhereItIsMountedAndWhichWayItCounts) {
+    const auto axis = parse_axis_file(
+        "encoder: {mounted_on: gear_output, counts_against_motor: true}\n", "m.yaml");
+    ASSERT_TRUE(axis) << axis.error();
+    EXPECT_TRUE(axis->encoder_mounting.on_gear_output);
+    EXPECT_TRUE(axis->encoder_mounting.counts_against_motor);
+    const auto motor_shaft = parse_axis_file("encoder: {mounted_on: motor_shaft}\n", "m.yaml");
+    ASSERT_TRUE(motor_shaft) << motor_shaft.error();
+    EXPECT_FALSE(motor_shaft->encoder_mounting.on_gear_output);
+    EXPECT_FALSE(reference_axis().encoder_mounting.on_gear_output);
+    EXPECT_FALSE(reference_axis().encoder_mounting.counts_against_motor);
+}
+
 TEST(AxisFile, BadFilesAreUserErrorsWithTheirPlace) {
     const struct {
         const char* text;
@@ -48,6 +64,9 @@ TEST(AxisFile, BadFilesAreUserErrorsWithTheirPlace) {
         {"motor:\n  type: stepper\n", "m.yaml:2:9: error: motor.type must be 'dc' or 'ec'"},
         {"encoder: {pulses: many}\n", "encoder.pulses must be an integer in 16 … 2500000"},
         {"encoder: {pulses: 8}\n", "encoder.pulses must be an integer in 16 … 2500000"},
+        {"encoder:\n  mounted_on: load\n",
+         "m.yaml:2:15: error: encoder.mounted_on must be 'motor_shaft' or 'gear_output'"},
+        {"encoder: {counts_against_motor: 2}\n", "encoder.counts_against_motor"},
         {"gains:\n  current: {p: 40000}\n",
          "m.yaml:2:16: error: gains.current.p must be an integer in 0 … 32767 (0x60F6 sub 1)"},
         {"motor: {terminal_resistance: 0}\n",

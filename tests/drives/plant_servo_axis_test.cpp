@@ -133,5 +133,65 @@ TEST(ServoAxis, SwitchesTripWhereTheAxisIs) {
     EXPECT_EQ(axis.switches(), (SwitchStates{true, false, false}));
 }
 
+// 8.2.74: with a gear configured the encoder is on the gear's output. A 3:1 gear: N output turns
+// are N × 4 × pulses counts while the motor turns 3N times, and the index pulses once per output
+// turn; the loop, reading the counts through the gear, settles as on the motor shaft.
+TEST(ServoAxis, EncoderOnTheGearOutputCountsOutputTurns) {
+    AxisParameters parameters = test::tuned_axis();
+    parameters.plant.gearhead.ratio = 3;
+    parameters.encoder_mounting.on_gear_output = true;
+    parameters.encoder_reading.gear_ratio = 3;
+    ServoAxis axis(parameters);
+    axis.set_mode(ControlMode::Position);
+    constexpr int kOutputTurns = 2;
+    axis.set_demand({.position = kOutputTurns * 2000.0});
+    int index_pulses = 0;
+    for (int i = 0; i < 20000; ++i) {
+        axis.step();
+        index_pulses += axis.index_passed() ? 1 : 0;
+    }
+    EXPECT_LE(std::abs(axis.position_actual() - kOutputTurns * 2000), 1);
+    // Within the count the reading rounds down to; a count of the output is 3 of the motor.
+    const double count = 2 * std::numbers::pi / 2000;
+    EXPECT_NEAR(axis.encoder_angle(), kOutputTurns * 2 * std::numbers::pi, 2 * count);
+    EXPECT_NEAR(axis.motor().state().angle, 3 * kOutputTurns * 2 * std::numbers::pi, 3 * 2 * count);
+    EXPECT_EQ(index_pulses, kOutputTurns);
+}
+
+// Table 8-104: an encoder mounted the other way round, read inverted, moves the axis exactly as
+// the reference axis: the same counts at every step.
+TEST(ServoAxis, EncoderCountingAgainstTheMotorReadsRightWhenInverted) {
+    AxisParameters reversed = test::tuned_axis();
+    reversed.encoder_mounting.counts_against_motor = true;
+    reversed.encoder_reading.inverted = true;
+    ServoAxis axis(reversed);
+    ServoAxis reference(test::tuned_axis());
+    for (ServoAxis* each : {&axis, &reference}) {
+        each->set_mode(ControlMode::Position);
+        each->set_demand({.position = 3000});
+    }
+    for (int i = 0; i < 10000; ++i) {
+        axis.step();
+        reference.step();
+        ASSERT_EQ(axis.position_actual(), reference.position_actual()) << i;
+    }
+    EXPECT_LE(std::abs(axis.position_actual() - 3000), 20) << "settling on the demand";
+    EXPECT_GT(axis.motor().state().angle, 0) << "the motor turned its positive way";
+}
+
+// The same encoder read as if it counted with the motor: the loop pushes the motor the way that
+// makes the reading run away from the demand (positive feedback) until the current limit.
+TEST(ServoAxis, EncoderCountingAgainstTheMotorRunsAwayWhenNotInverted) {
+    AxisParameters reversed = test::tuned_axis();
+    reversed.encoder_mounting.counts_against_motor = true;
+    ServoAxis axis(reversed);
+    axis.set_mode(ControlMode::Position);
+    axis.set_demand({.position = 100});
+    run_for(axis, 0.1);
+    EXPECT_LT(axis.position_actual(), -10000) << "away from the demand";
+    EXPECT_GT(axis.motor().state().angle, 5 * 2 * std::numbers::pi) << "the motor turned on";
+    EXPECT_NEAR(axis.current_demand(), 3, 1e-9) << "at the current limit";
+}
+
 } // namespace
 } // namespace eposp::drives::plant

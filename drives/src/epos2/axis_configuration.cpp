@@ -1,6 +1,7 @@
 #include "axis_configuration.hpp"
 
 #include "eposp/canopen/entry_builder.hpp"
+#include "velocity_units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,11 +12,17 @@ namespace {
 // Table 8-125: 1 brushed DC motor, 10 sinusoidal and 11 trapezoidal PM BL (EC) motor.
 constexpr std::uint16_t kBrushedDcMotor = 1;
 constexpr std::uint16_t kSinusoidalEcMotor = 10;
+// Table 8-104, bit 0: "inverted Enc1 polarity".
+constexpr std::uint16_t kEncoder1Inverted = 1U << 0;
 
 } // namespace
 
 void write_axis_defaults(canopen::ObjectDictionary& od, const plant::AxisParameters& machine) {
     canopen::set_default_as(od, 0x2210, 1, static_cast<std::uint32_t>(machine.encoder_pulses));
+    // Table 8-104 bit 0: an encoder mounted the other way round is read inverted.
+    canopen::set_default_as(
+        od, 0x2210, 4,
+        static_cast<std::uint16_t>(machine.encoder_mounting.counts_against_motor ? 1 : 0));
     const auto current = plant::to_parameter_set(machine.gains.current);
     canopen::set_default_as(od, 0x60F6, 1, current.p_gain);
     canopen::set_default_as(od, 0x60F6, 2, current.i_gain);
@@ -44,6 +51,9 @@ void write_axis_defaults(canopen::ObjectDictionary& od, const plant::AxisParamet
 plant::AxisParameters configured_axis(const canopen::ObjectDictionary& od,
                                       plant::AxisParameters machine) {
     machine.encoder_pulses = static_cast<int>(od.get_as<std::uint32_t>(0x2210, 1));
+    machine.encoder_reading = {.inverted =
+                                   (od.get_as<std::uint16_t>(0x2210, 4) & kEncoder1Inverted) != 0,
+                               .gear_ratio = motor_turns_per_sensor_turn(od)};
     machine.gains.current = plant::to_si(plant::CurrentControlParameterSet{
         od.get_as<std::int16_t>(0x60F6, 1), od.get_as<std::int16_t>(0x60F6, 2)});
     machine.gains.velocity = plant::to_si(plant::VelocityControlParameterSet{

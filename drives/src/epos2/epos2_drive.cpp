@@ -56,6 +56,8 @@ constexpr motion::SensorErrorCodes kSensorErrorCodes{.encoder_breach = 0xFF0A,
                                                      .hall_angle = 0xFF08};
 // 8.2.41, table 8-83: "Disable sensor supervision by hardware".
 constexpr std::uint16_t kNoHardwareSupervisionBit = 1U << 1;
+constexpr std::uint16_t kNoSoftwareSupervisionBit = 1U << 0;
+constexpr std::uint16_t kMainSensorDirectionErrorCode = 0xFF11; // 4.2.37
 constexpr std::uint16_t kInversePolarityBit = 1U << 8;
 
 // Table 4-11: CAN errors (0x81xx, 0x82xx) are "a" errors, reacting after 0x6007.
@@ -465,9 +467,15 @@ void Epos2Drive::control_period() {
 }
 
 void Epos2Drive::watch_sensors() {
-    if (const auto fault = sensor_supervision_.update(axis_.motor().state().angle,
-                                                      axis_.hall_sensors(), sensor_faults_)) {
+    if (const auto fault = sensor_supervision_.update(axis_.encoder_angle(), axis_.hall_sensors(),
+                                                      sensor_faults_)) {
         raise_device_error(kSensorErrorCodes.of(*fault));
+    }
+    // The motor's turning shows at its terminals only with the power stage on.
+    const bool watching = power_stage_on_ && software_supervision_;
+    if (sensor_direction_.update(watching ? axis_.motor().state().speed : 0,
+                                 axis_.position_actual())) {
+        raise_device_error(kMainSensorDirectionErrorCode);
     }
 }
 
@@ -490,11 +498,15 @@ void Epos2Drive::read_sensor_configuration() {
          .hall_sensors = motor_type == kSinusoidalEcMotor || motor_type == kTrapezoidalEcMotor,
          .breach_supervision =
              (od.get_as<std::uint16_t>(0x2008, 0) & kNoHardwareSupervisionBit) == 0});
+    software_supervision_ = (od.get_as<std::uint16_t>(0x2008, 0) & kNoSoftwareSupervisionBit) == 0;
+    // A quarter turn of the encoder against the motor (4.2.37; the spec gives no threshold).
+    sensor_direction_ = motion::SensorDirectionMonitor(od.get_as<std::uint32_t>(0x2210, 1),
+                                                       axis_.position_actual());
     restart_sensor_supervision();
 }
 
 void Epos2Drive::restart_sensor_supervision() {
-    sensor_supervision_.restart(axis_.motor().state().angle, axis_.hall_sensors(), sensor_faults_);
+    sensor_supervision_.restart(axis_.encoder_angle(), axis_.hall_sensors(), sensor_faults_);
 }
 
 // Refresh (20) and Measure Init (21) take one control period here, and so does a fault reaction

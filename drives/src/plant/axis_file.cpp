@@ -87,6 +87,26 @@ void read_motor(Reader& in, const YAML::Node& node, MotorParameters& motor) {
                   dictionary_value(in, motor.pole_pairs, "motor.pole_pairs", limits::kPolePairs)}});
 }
 
+void read_encoder(Reader& in, const YAML::Node& node, AxisParameters& axis) {
+    EncoderMounting& mounting = axis.encoder_mounting;
+    in.each_key(
+        node, "encoder",
+        {{"pulses",
+          dictionary_value(in, axis.encoder_pulses, "encoder.pulses", limits::kEncoderPulses)},
+         {"mounted_on",
+          [&](const YAML::Node& value) {
+              const auto shaft = in.scalar<std::string>(value, "encoder.mounted_on");
+              if (shaft != "motor_shaft" && shaft != "gear_output") {
+                  in.fail(value, "encoder.mounted_on must be 'motor_shaft' or 'gear_output'");
+              }
+              mounting.on_gear_output = shaft == "gear_output";
+          }},
+         {"counts_against_motor", [&](const YAML::Node& value) {
+              mounting.counts_against_motor =
+                  in.scalar<bool>(value, "encoder.counts_against_motor");
+          }}});
+}
+
 void read_gains(Reader& in, const YAML::Node& node, ServoGains& gains) {
     // The parameter sets in the dictionary's integer units (docs/drive-motion-and-plant.md).
     CurrentControlParameterSet current = to_parameter_set(gains.current);
@@ -187,9 +207,7 @@ AxisParameters read_axis(Reader& in, const YAML::Node& root) {
           }},
          {"encoder",
           [&](const YAML::Node& node) {
-              in.each_key(node, "encoder",
-                          {{"pulses", dictionary_value(in, axis.encoder_pulses, "encoder.pulses",
-                                                       limits::kEncoderPulses)}});
+              read_encoder(in, node, axis);
           }},
          {"load",
           [&](const YAML::Node& node) {

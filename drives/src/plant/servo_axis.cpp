@@ -7,8 +7,28 @@ namespace eposp::drives::plant {
 
 namespace {
 
-double radians_per_count(int encoder_pulses) {
-    return 2 * std::numbers::pi / static_cast<double>(counts_per_turn(encoder_pulses));
+// Motor-shaft radians per count as the firmware reads its encoder: through the gear it believes
+// in (the gains are motor-shaft quantities, 8.2.74: the encoder is on the gear's output side).
+double radians_per_count(const AxisParameters& parameters) {
+    return 2 * std::numbers::pi / static_cast<double>(counts_per_turn(parameters.encoder_pulses)) *
+           parameters.encoder_reading.gear_ratio;
+}
+
+// The mounting's direction and the reading's: an encoder mounted the other way round reads
+// right when the firmware inverts it.
+double encoder_sign(const AxisParameters& parameters) {
+    return parameters.encoder_mounting.counts_against_motor == parameters.encoder_reading.inverted
+               ? 1.0
+               : -1.0;
+}
+
+// The counts one motor-shaft radian moves the reading by: scales the velocity measurement
+// across a reconfiguration.
+double counts_per_motor_radian(const AxisParameters& parameters) {
+    const double ratio =
+        parameters.encoder_mounting.on_gear_output ? parameters.plant.gearhead.ratio : 1.0;
+    return encoder_sign(parameters) *
+           static_cast<double>(counts_per_turn(parameters.encoder_pulses)) / ratio;
 }
 
 PidController::Gains current_law(const ServoGains& gains) {
@@ -25,7 +45,7 @@ PidController::Gains position_law(const ServoGains& gains) {
 
 ServoAxis::ServoAxis(const AxisParameters& parameters)
     : parameters_(parameters), motor_(parameters.plant, kCurrentLoopPeriod),
-      radians_per_count_(radians_per_count(parameters.encoder_pulses)),
+      radians_per_count_(radians_per_count(parameters)), encoder_sign_(encoder_sign(parameters)),
       current_controller_(current_law(parameters.gains),
                           parameters.plant.power_stage.max_voltage()),
       velocity_controller_(velocity_law(parameters.gains), parameters.gains.current_limit),
@@ -35,19 +55,19 @@ ServoAxis::ServoAxis(const AxisParameters& parameters)
 
 void ServoAxis::reconfigure(const AxisParameters& parameters) {
     const MotorState state = motor_.state();
-    const double scale = static_cast<double>(counts_per_turn(parameters.encoder_pulses)) /
-                         static_cast<double>(counts_per_turn(parameters_.encoder_pulses));
+    const double scale = counts_per_motor_radian(parameters) / counts_per_motor_radian(parameters_);
     parameters_ = parameters;
     motor_ = MotorModel(parameters.plant, kCurrentLoopPeriod);
     motor_.set_state(state);
-    radians_per_count_ = radians_per_count(parameters.encoder_pulses);
+    radians_per_count_ = radians_per_count(parameters);
+    encoder_sign_ = encoder_sign(parameters);
     current_controller_.retune(current_law(parameters.gains),
                                parameters.plant.power_stage.max_voltage());
     velocity_controller_.retune(velocity_law(parameters.gains), parameters.gains.current_limit);
     position_controller_.retune(position_law(parameters.gains), parameters.gains.current_limit);
     apply_current_limit();
     // The velocity measured at the next outer loop stays in step with the new resolution.
-    const std::int64_t position = quadcounts(state.angle, parameters.encoder_pulses);
+    const std::int64_t position = quadcounts(encoder_angle(), parameters.encoder_pulses);
     position_at_outer_loop_ =
         position -
         static_cast<std::int64_t>(static_cast<double>(position_ - position_at_outer_loop_) * scale);
@@ -99,7 +119,7 @@ void ServoAxis::step() {
         const double error = current_demand_ - motor_.state().current;
         motor_.step(current_controller_.update(error, kCurrentLoopPeriod));
     }
-    position_ = quadcounts(motor_.state().angle, parameters_.encoder_pulses);
+    position_ = quadcounts(encoder_angle(), parameters_.encoder_pulses);
     index_passed_ = !revolution_.holds(position_);
     if (index_passed_) {
         revolution_ = revolution_of(position_, parameters_.encoder_pulses);

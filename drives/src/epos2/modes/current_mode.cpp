@@ -1,5 +1,6 @@
 #include "current_mode.hpp"
 
+#include "../velocity_units.hpp"
 #include "analog_setpoint.hpp"
 
 #include <algorithm>
@@ -15,7 +16,9 @@ ModeDemand CurrentMode::demand(const ModeInputs& inputs) {
     return {.motion = {static_cast<double>(inputs.position), inputs.velocity, 0},
             .loop = plant::ControlMode::Current,
             .current = std::clamp(set_value, -limit, limit) / 1000.0,
-            .speed_limit = services_.rpm_to_counts(od.get_as<std::uint32_t>(0x6410, 4))};
+            // 8.2.130: the motor's speed; the encoder turns 1 / gear ratio as fast (8.2.74).
+            .speed_limit = services_.rpm_to_counts(od.get_as<std::uint32_t>(0x6410, 4) /
+                                                   motor_turns_per_sensor_turn(od))};
 }
 
 } // namespace eposp::drives::epos2

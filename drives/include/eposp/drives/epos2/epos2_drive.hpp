@@ -10,6 +10,7 @@
 #include "eposp/drives/motion/following_error_monitor.hpp"
 #include "eposp/drives/motion/homing_procedure.hpp"
 #include "eposp/drives/motion/i2t_current_limit.hpp"
+#include "eposp/drives/motion/sensor_direction_monitor.hpp"
 #include "eposp/drives/motion/sensor_supervision.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/standstill_monitor.hpp"
@@ -214,10 +215,12 @@ private:
     motion::I2tCurrentLimit i2t_;                   ///< 5.14.1, statusword bit 11
     PowerStageTemperature power_stage_temperature_; ///< 4.2.7
     std::unique_ptr<ModeServices> mode_services_;
-    std::unique_ptr<ModeBehaviour> mode_behaviour_; ///< of mode_ (modes/)
-    std::unique_ptr<Epos2Io> io_;                   ///< digital I/O, marker, compare, brake
-    motion::SensorSupervision sensor_supervision_;  ///< 4.2.23 - 4.2.31
-    plant::SensorFaults sensor_faults_;             ///< injected
+    std::unique_ptr<ModeBehaviour> mode_behaviour_;   ///< of mode_ (modes/)
+    std::unique_ptr<Epos2Io> io_;                     ///< digital I/O, marker, compare, brake
+    motion::SensorSupervision sensor_supervision_;    ///< 4.2.23 - 4.2.31
+    motion::SensorDirectionMonitor sensor_direction_; ///< 4.2.37, 0x2008 bit 0 clear
+    bool software_supervision_ = true;                ///< 0x2008 bit 0 clear (8.2.41)
+    plant::SensorFaults sensor_faults_;               ///< injected
     /// An error with "position reset" (table 4-11) was raised: its clearing resets the position.
     bool position_reset_on_clear_ = false;
     /// 0x81FE / 0x81FF: a queue of the CAN controller lost a frame, raised at the next period.

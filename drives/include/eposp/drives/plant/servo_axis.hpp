@@ -32,11 +32,32 @@ struct ServoGains {
     double current_limit = 1; ///< A, the output current limit the outer loops may demand
 };
 
+/// Where the machine's encoder sits and which way it counts (the machine file's `encoder`).
+struct EncoderMounting {
+    /// On the gearhead's output shaft (EPOS2 FW spec 8.2.74: where the main sensor must be with a
+    /// gear configured): it turns once per gearhead ratio motor turns.
+    bool on_gear_output = false;
+    /// Mounted the other way round: it counts down while the motor turns positive (CCW).
+    bool counts_against_motor = false;
+};
+
+/// How the firmware reads its encoder, as its dictionary configures it.
+struct EncoderReading {
+    bool inverted = false; ///< 0x2210 sub 4 bit 0 (table 8-104): the counts are negated
+    /// Motor turns per encoder turn: 0x2230 sub 1 / sub 2 with a gear configured (8.2.74: the
+    /// encoder is then on the gear's output), 1 without. The loops close on motor-shaft radians.
+    double gear_ratio = 1;
+};
+
 struct AxisParameters {
     PlantParameters plant;
-    int encoder_pulses = 500; ///< 0x2210 pulses per turn, on the motor shaft
+    int encoder_pulses = 500; ///< 0x2210 pulses per turn of the encoder's shaft
     ServoGains gains;
-    SwitchLayout switches; ///< limit and home switches along the axis, in quadcounts
+    /// Limit and home switches along the axis, in quadcounts of the encoder's shaft counted in
+    /// the motor's positive direction (whichever way the encoder counts).
+    SwitchLayout switches;
+    EncoderMounting encoder_mounting; ///< the machine's
+    EncoderReading encoder_reading;   ///< the firmware's
 };
 
 /// One axis: motor model, encoder and the cascade at the EPOS2's rates. The current loop and
@@ -68,18 +89,31 @@ public:
     /// One 0.1 ms step of the current loop and the plant.
     void step();
 
+    /// The encoder's counts as the firmware reads them (EncoderReading), quadcounts.
     std::int64_t position_actual() const { return position_; }
     double velocity_actual() const { return velocity_; } ///< quadcounts/s over the last 1 ms
     double current_actual() const { return motor_.state().current; }
     double current_demand() const { return current_demand_; }
+    /// The angle the firmware's encoder reading stands for: the encoder's shaft (the motor's or
+    /// the gear output's) turned the way the encoder counts, negated when the reading inverts
+    /// it; position_actual() is its quadcounts. What the sensor supervision reads.
+    double encoder_angle() const { return encoder_sign_ * encoder_shaft_angle(); }
     bool index_passed() const { return index_passed_; } ///< during the last step
     std::uint8_t hall_sensors() const;
     /// The switches at the present position, for the digital inputs.
-    SwitchStates switches() const { return switch_states(parameters_.switches, position_); }
+    SwitchStates switches() const {
+        return switch_states(parameters_.switches,
+                             quadcounts(encoder_shaft_angle(), parameters_.encoder_pulses));
+    }
     const MotorModel& motor() const { return motor_; }
     MotorModel& motor() { return motor_; }
 
 private:
+    /// The angle of the shaft the encoder sits on, in the motor's direction.
+    double encoder_shaft_angle() const {
+        return parameters_.encoder_mounting.on_gear_output ? motor_.output_angle()
+                                                           : motor_.state().angle;
+    }
     void run_outer_loop();
     double cap_at_speed_limit(double current);
     void reset_controllers();
@@ -87,7 +121,8 @@ private:
 
     AxisParameters parameters_;
     MotorModel motor_;
-    double radians_per_count_;
+    double radians_per_count_; ///< motor-shaft radians per count, as the firmware reads them
+    double encoder_sign_;      ///< -1 where the mounting or the reading (not both) inverts
     PidController current_controller_;
     PidController velocity_controller_;
     PidController position_controller_;
