@@ -6,7 +6,32 @@ namespace eposp::canopen {
 
 void FrameRouter::add(KeySource keys, Handler handler) {
     receivers_.push_back({std::move(keys), std::move(handler)});
+    invalidate();
+}
+
+void FrameRouter::invalidate() {
     stale_ = true;
+    update_filter();
+}
+
+void FrameRouter::filter(can::Port& port) {
+    filtered_ = &port;
+    update_filter();
+}
+
+void FrameRouter::update_filter() {
+    if (filtered_ == nullptr) {
+        return;
+    }
+    if (stale_) {
+        filtered_->accept_all();
+        return;
+    }
+    can::Port::StandardIds ids;
+    for (std::size_t id = 0; id < standard_.size(); ++id) {
+        ids[id] = standard_[id] != 0;
+    }
+    filtered_->accept_only(ids);
 }
 
 void FrameRouter::rebuild() {
@@ -25,6 +50,7 @@ void FrameRouter::rebuild() {
         }
     }
     stale_ = false;
+    update_filter();
 }
 
 std::vector<std::size_t>& FrameRouter::list_of(ReceiveKey key) {

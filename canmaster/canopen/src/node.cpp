@@ -159,6 +159,7 @@ Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary,
     sync_consumer_.on_window_closed([this] { pdo_.on_window_closed(); });
     route_frames();
     port_.on_receive([this](const can::Frame& frame) { router_.dispatch(frame); });
+    router_.filter(port_);
     port_.on_error_state([this](can::ErrorState state) {
         if (state != can::ErrorState::BusOff) {
             emcy_.controller_recovered();

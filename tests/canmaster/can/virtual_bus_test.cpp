@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <ostream>
 #include <stdexcept>
+#include <vector>
 
 namespace eposp::can {
 namespace {
@@ -49,6 +50,45 @@ TEST_F(VirtualBusTest, ControllerDoesNotReceiveItsOwnFrame) {
     loop.run();
     EXPECT_TRUE(own.frames.empty());
     EXPECT_EQ(other.frames.size(), 1U);
+}
+
+// A port's acceptance filter hides frames from its handler only: the controller still counts
+// them, queues them while paused, and a new handler takes every frame again.
+TEST_F(VirtualBusTest, AnAcceptanceFilterHidesFramesFromTheHandlerOnly) {
+    auto sender = bus.connect("a");
+    auto receiver = bus.connect("b");
+    std::vector<Frame> heard;
+    receiver->on_receive([&heard](const Frame& frame) { heard.push_back(frame); });
+    Port::StandardIds ids;
+    ids.set(0x181);
+    receiver->accept_only(ids);
+    Frame extended = Frame::data_frame(0x182, {3});
+    extended.extended = true;
+    const std::vector<Frame> sent{Frame::data_frame(0x181, {1}), Frame::data_frame(0x182, {2}),
+                                  extended};
+    for (const Frame& frame : sent) {
+        ASSERT_EQ(sender->send(frame), SendStatus::Queued);
+    }
+    loop.run();
+    EXPECT_EQ(heard, (std::vector<Frame>{sent[0], sent[2]}));
+    EXPECT_EQ(receiver->statistics().rx_frames, 3U);
+    EXPECT_EQ(sender->statistics().tx_frames, 3U);
+
+    heard.clear();
+    receiver->pause_receive(true);
+    for (const Frame& frame : sent) {
+        ASSERT_EQ(sender->send(frame), SendStatus::Queued);
+    }
+    loop.run();
+    EXPECT_EQ(receiver->statistics().rx_frames, 6U) << "queued while paused, filtered or not";
+    receiver->pause_receive(false);
+    EXPECT_EQ(heard, (std::vector<Frame>{sent[0], sent[2]}));
+
+    heard.clear();
+    receiver->on_receive([&heard](const Frame& frame) { heard.push_back(frame); });
+    ASSERT_EQ(sender->send(sent[1]), SendStatus::Queued);
+    loop.run();
+    EXPECT_EQ(heard, (std::vector<Frame>{sent[1]}));
 }
 
 TEST_F(VirtualBusTest, EveryOtherPortReceivesInBusOrder) {

@@ -21,6 +21,15 @@ struct Routed {
     }
 };
 
+/// A port whose received frames the test hands in.
+class TestPort final : public can::Port {
+public:
+    can::SendStatus send(const can::Frame&) override { return can::SendStatus::Queued; }
+    can::ErrorState error_state() const override { return can::ErrorState::Active; }
+    std::string_view name() const override { return "test"; }
+    void receive(const can::Frame& frame) const { deliver(frame); }
+};
+
 can::Frame extended_frame(std::uint32_t id) {
     can::Frame frame = can::Frame::data_frame(id, {0});
     frame.extended = true;
@@ -107,6 +116,37 @@ TEST(FrameRouter, AReceiverThatInvalidatesWhileHandlingAFrameChangesTheNextFrame
     router.dispatch(can::Frame::data_frame(0x001, {}));
 
     EXPECT_EQ(heard, (std::vector<std::uint32_t>{0x000, 0x100, 0x100, 0x001}));
+}
+
+// The port's filter follows the table: every frame while the table waits to be made (the frame
+// that makes it included), then only the table's identifiers, every frame again after
+// invalidate() until the next dispatch made the table anew.
+TEST(FrameRouter, AFilteredPortHandsOverTheFramesOfTheTableAndEveryFrameWhileItIsStale) {
+    FrameRouter router;
+    TestPort port;
+    std::vector<std::uint32_t> handed;
+    port.on_receive([&](const can::Frame& frame) {
+        handed.push_back(frame.id);
+        router.dispatch(frame);
+    });
+    ReceiveKeys keys{0x080, kCobIdExtended | 0x181};
+    std::vector<std::uint32_t> heard;
+    router.add([&keys](ReceiveKeys& out) { out = keys; },
+               [&heard](const can::Frame& frame) { heard.push_back(frame.id); });
+    router.filter(port);
+
+    port.receive(can::Frame::data_frame(0x200, {})); // stale: handed over, makes the table
+    port.receive(can::Frame::data_frame(0x200, {}));
+    port.receive(can::Frame::data_frame(0x080, {}));
+    port.receive(extended_frame(0x300)); // 29-bit frames are all handed over
+    keys = {0x200};
+    router.invalidate();
+    port.receive(can::Frame::data_frame(0x080, {})); // stale again: handed over, not heard
+    port.receive(can::Frame::data_frame(0x080, {}));
+    port.receive(can::Frame::data_frame(0x200, {}));
+
+    EXPECT_EQ(handed, (std::vector<std::uint32_t>{0x200, 0x080, 0x300, 0x080, 0x200}));
+    EXPECT_EQ(heard, (std::vector<std::uint32_t>{0x080, 0x200}));
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 
 #include "eposp/can/frame.hpp"
 
+#include <bitset>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -53,12 +54,32 @@ public:
     virtual std::string_view name() const = 0;
 
     /// Called for every frame received, in bus order. A controller does not receive its own
-    /// frames.
-    void on_receive(FrameHandler handler) { receive_handler_ = std::move(handler); }
+    /// frames. A new handler takes every frame until it sets an acceptance filter.
+    void on_receive(FrameHandler handler) {
+        receive_handler_ = std::move(handler);
+        accept_all();
+    }
+
+    /// One bit per 11-bit identifier.
+    using StandardIds = std::bitset<std::size_t{1} << 11>;
+    /// An acceptance filter, as a CAN controller has one: of the frames in 11-bit format only
+    /// those whose identifier is in `ids` reach the receive handler (29-bit and error frames
+    /// all do). The controller still receives the others: it acknowledges them, counts them
+    /// and moves its error counters exactly as before; only the handler does not see them
+    /// (on a bus of n nodes, most frames concern few of them).
+    void accept_only(const StandardIds& ids) {
+        accepted_ = ids;
+        filtering_ = true;
+    }
+    void accept_all() { filtering_ = false; }
     void on_error_state(ErrorStateHandler handler) { error_state_handler_ = std::move(handler); }
 
 protected:
     void deliver(const Frame& frame) const {
+        if (filtering_ && !frame.extended && !frame.error &&
+            (frame.id >= accepted_.size() || !accepted_[frame.id])) {
+            return;
+        }
         if (receive_handler_) {
             receive_handler_(frame);
         }
@@ -71,6 +92,8 @@ protected:
 
 private:
     FrameHandler receive_handler_;
+    bool filtering_ = false;
+    StandardIds accepted_;
     ErrorStateHandler error_state_handler_;
 };
 

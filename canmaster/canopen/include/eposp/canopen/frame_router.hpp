@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/can/frame.hpp"
+#include "eposp/can/port.hpp"
 #include "eposp/canopen/cob_id.hpp"
 
 #include <array>
@@ -37,7 +38,11 @@ public:
     /// `handler` gets every frame whose key `keys` lists, once however often it lists it.
     void add(KeySource keys, Handler handler);
     /// The receivers' keys may have changed.
-    void invalidate() { stale_ = true; }
+    void invalidate();
+    /// Keeps `port`'s acceptance filter to the table's 11-bit identifiers, so that the port
+    /// hands over only frames some receiver takes: every frame while the table waits to be
+    /// made again (the next dispatch makes it), its identifiers once made.
+    void filter(can::Port& port);
     /// Hands `frame` to the receivers of its key, in the order they were added.
     void dispatch(const can::Frame& frame);
 
@@ -47,6 +52,7 @@ private:
         Handler handler;
     };
     void rebuild();
+    void update_filter();
     std::vector<std::size_t>& list_of(ReceiveKey key); ///< made empty when new
 
     std::vector<Receiver> receivers_;
@@ -57,7 +63,8 @@ private:
     std::array<std::uint16_t, std::size_t{1} << 11> standard_{};
     std::unordered_map<ReceiveKey, std::size_t> extended_; ///< 29-bit keys, positions in lists_
     bool stale_ = true;
-    int depth_ = 0; ///< dispatches in progress
+    can::Port* filtered_ = nullptr; ///< the port whose acceptance filter follows the table
+    int depth_ = 0;                 ///< dispatches in progress
 };
 
 } // namespace eposp::canopen
