@@ -51,6 +51,22 @@ TimerId EventLoop::every(Duration period, Callback fn) {
     return every(period, now() + period, std::move(fn));
 }
 
+TimerId EventLoop::add_alarm(Callback fn) {
+    return timers_->add_alarm(std::move(fn));
+}
+
+void EventLoop::arm(TimerId alarm, TimePoint when) {
+    timers_->arm(alarm, std::max(when, now()));
+}
+
+void EventLoop::disarm(TimerId alarm) {
+    timers_->disarm(alarm);
+}
+
+void EventLoop::remove_alarm(TimerId alarm) {
+    timers_->remove_alarm(alarm);
+}
+
 bool EventLoop::next_in_line() {
     if (pace_ != Pace::Virtual || io_ || stop_requested_) {
         return false;

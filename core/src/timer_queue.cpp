@@ -7,17 +7,21 @@
 
 namespace eposp::core {
 
-TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callback fn) {
-    std::size_t slot = entries_.size();
+std::size_t TimerQueue::allocate() {
     if (free_slots_.empty()) {
-        if (slot + 1 >= (std::size_t{1} << kSlotBits)) {
+        if (entries_.size() + 1 >= (std::size_t{1} << kSlotBits)) {
             throw std::length_error("EventLoop: too many pending timers");
         }
         entries_.emplace_back();
-    } else {
-        slot = free_slots_.back();
-        free_slots_.pop_back();
+        return entries_.size() - 1;
     }
+    const std::size_t slot = free_slots_.back();
+    free_slots_.pop_back();
+    return slot;
+}
+
+TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callback fn) {
+    const std::size_t slot = allocate();
     Entry& entry = entries_[slot];
     entry.fn = std::move(fn);
     entry.period = period;
@@ -28,8 +32,43 @@ TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callbac
     return TimerId{id};
 }
 
+TimerId TimerQueue::add_alarm(EventLoop::Callback fn) {
+    const std::size_t slot = allocate();
+    Entry& entry = entries_[slot];
+    entry.fn = std::move(fn);
+    entry.period = Duration::zero();
+    entry.alarm = true;
+    return TimerId{entry.generation << kSlotBits | (slot + 1)};
+}
+
+void TimerQueue::arm(TimerId alarm, TimePoint when) {
+    Entry& entry = entries_[slot_of(alarm.value)];
+    if (!entry.live) {
+        entry.live = true;
+        ++live_count_;
+    }
+    push(when, alarm.value);
+}
+
+void TimerQueue::disarm(TimerId alarm) {
+    Entry& entry = entries_[slot_of(alarm.value)];
+    if (entry.live) {
+        entry.live = false;
+        --live_count_;
+    }
+}
+
+void TimerQueue::remove_alarm(TimerId alarm) {
+    disarm(alarm);
+    Entry& entry = entries_[slot_of(alarm.value)];
+    entry.fn = nullptr;
+    entry.alarm = false;
+    ++entry.generation;
+    free_slots_.push_back(slot_of(alarm.value));
+}
+
 const TimerQueue::Entry* TimerQueue::live(std::uint64_t id) const {
-    const std::uint64_t slot = (id & ((std::uint64_t{1} << kSlotBits) - 1)) - 1;
+    const std::uint64_t slot = slot_of(id);
     if (slot >= entries_.size()) {
         return nullptr;
     }
@@ -41,9 +80,14 @@ TimerQueue::Entry* TimerQueue::live(std::uint64_t id) {
     return const_cast<Entry*>(std::as_const(*this).live(id));
 }
 
+bool TimerQueue::current(const Slot& slot) const {
+    const Entry* entry = live(slot.id);
+    return entry != nullptr && entry->sequence == slot.sequence;
+}
+
 // The slot's next timer gets a new generation, so that this id no longer names it.
 void TimerQueue::release(std::uint64_t id) {
-    const std::size_t slot = (id & ((std::uint64_t{1} << kSlotBits) - 1)) - 1;
+    const std::size_t slot = slot_of(id);
     Entry& entry = entries_[slot];
     entry.fn = nullptr;
     entry.live = false;
@@ -53,7 +97,8 @@ void TimerQueue::release(std::uint64_t id) {
 }
 
 bool TimerQueue::cancel(TimerId id) {
-    if (live(id.value) == nullptr) {
+    const Entry* entry = live(id.value);
+    if (entry == nullptr || entry->alarm) {
         return false;
     }
     release(id.value);
@@ -62,6 +107,7 @@ bool TimerQueue::cancel(TimerId id) {
 
 void TimerQueue::push(TimePoint when, std::uint64_t id) {
     const Slot slot{when, next_sequence_++, id};
+    entries_[slot_of(id)].sequence = slot.sequence;
     std::size_t hole = heap_.size();
     heap_.push_back(slot);
     while (hole > 0) {
@@ -105,7 +151,7 @@ void TimerQueue::pop() {
 }
 
 void TimerQueue::drop_cancelled() {
-    while (!heap_.empty() && live(heap_.front().id) == nullptr) {
+    while (!heap_.empty() && !current(heap_.front())) {
         pop();
     }
 }
@@ -127,7 +173,20 @@ void TimerQueue::run_next(TimePoint& now) {
 
     // The callback is moved out while it runs so that it may cancel itself or schedule more
     // timers (which may grow the entries) without destroying the function being executed.
-    EventLoop::Callback fn = std::move(live(slot.id)->fn);
+    EventLoop::Callback fn = std::move(entries_[slot_of(slot.id)].fn);
+    if (entries_[slot_of(slot.id)].alarm) {
+        // Armed while it runs, as a timer is pending until its callback returns.
+        fn();
+        Entry& entry = entries_[slot_of(slot.id)];
+        if (entry.generation != slot.id >> kSlotBits) {
+            return; // removed by its own callback
+        }
+        entry.fn = std::move(fn);
+        if (entry.sequence == slot.sequence) {
+            disarm(TimerId{slot.id}); // not armed again by its callback
+        }
+        return;
+    }
     fn();
 
     Entry* entry = live(slot.id);

@@ -26,6 +26,14 @@ public:
     bool pending(TimerId id) const { return live(id.value) != nullptr; }
     std::size_t size() const { return live_count_; }
 
+    /// An alarm: a callback kept in its slot, run once each time it is armed. Arming replaces a
+    /// pending time (the heap entry of the time before is dropped when it reaches the top); the
+    /// order among events is that of schedule(), by (time, sequence of the arming).
+    TimerId add_alarm(EventLoop::Callback fn);
+    void arm(TimerId alarm, TimePoint when);
+    void disarm(TimerId alarm);
+    void remove_alarm(TimerId alarm);
+
     /// The earliest live event, if any.
     std::optional<TimePoint> next_time();
 
@@ -46,13 +54,21 @@ private:
     struct Entry {
         EventLoop::Callback fn;
         Duration period;              // zero for one-shot timers
-        std::uint64_t generation = 0; // the id's high bits while the timer lives
-        bool live = false;
+        std::uint64_t generation = 0; // the id's high bits while the slot is in use
+        std::uint64_t sequence = 0;   // of its heap entry while pending: an older one is stale
+        bool live = false;            // pending
+        bool alarm = false;           // kept in its slot while not pending
     };
     static constexpr int kSlotBits = 24; // the id's low bits: 1 + the slot's index
 
+    static std::size_t slot_of(std::uint64_t id) {
+        return (id & ((std::uint64_t{1} << kSlotBits) - 1)) - 1;
+    }
     const Entry* live(std::uint64_t id) const;
     Entry* live(std::uint64_t id);
+    /// Whether the heap entry is the pending time of a live timer.
+    bool current(const Slot& slot) const;
+    std::size_t allocate();
     void release(std::uint64_t id);
     void push(TimePoint when, std::uint64_t id);
     void pop();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <gtest/gtest.h>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -72,6 +73,99 @@ TEST(EventLoop, ManyPendingEventsRunByTimeThenInSchedulingOrder) {
     }
     loop.run();
     EXPECT_EQ(ran, expected);
+}
+
+// An alarm runs where a timer scheduled at its arming would: by time, then in the order of
+// scheduling and arming; arming it again moves it (the earlier arming does not run). Timers,
+// alarms armed once or several times and cancelled timers on a few instants, against a stable
+// sort of what was scheduled.
+TEST(EventLoop, AlarmsRunAmongTimersInTheOrderTheyWereArmed) {
+    EventLoop loop;
+    std::mt19937 random(11);
+    std::uniform_int_distribution<std::int64_t> instant(0, 40);
+    std::uniform_int_distribution<int> kind(0, 3);
+    struct Scheduled {
+        std::int64_t when;
+        int number;
+        bool dropped;
+    };
+    std::vector<Scheduled> scheduled;
+    std::vector<int> ran;
+    std::vector<std::unique_ptr<Alarm>> alarms;
+    std::vector<std::size_t> last_arming; // of each alarm, in `scheduled`
+    for (int number = 0; number < 3000; ++number) {
+        const std::int64_t when = instant(random);
+        const int what = kind(random);
+        if (what == 0 || alarms.empty()) {
+            const int alarm_number = -static_cast<int>(alarms.size()) - 1;
+            alarms.push_back(std::make_unique<Alarm>(
+                loop, [&ran, alarm_number] { ran.push_back(alarm_number); }));
+            last_arming.push_back(scheduled.size());
+            scheduled.push_back({when, alarm_number, false});
+            alarms.back()->arm(at_ns(when));
+        } else if (what == 1) {
+            const std::size_t alarm = static_cast<std::size_t>(number) % alarms.size();
+            scheduled[last_arming[alarm]].dropped = true;
+            last_arming[alarm] = scheduled.size();
+            scheduled.push_back({when, -static_cast<int>(alarm) - 1, false});
+            alarms[alarm]->arm(at_ns(when));
+        } else {
+            const TimerId id = loop.at(at_ns(when), [&ran, number] { ran.push_back(number); });
+            scheduled.push_back({when, number, what == 3});
+            if (what == 3) {
+                EXPECT_TRUE(loop.cancel(id));
+            }
+        }
+    }
+    EXPECT_EQ(loop.pending_count(), static_cast<std::size_t>(std::count_if(
+                                        scheduled.begin(), scheduled.end(),
+                                        [](const Scheduled& event) { return !event.dropped; })));
+    std::stable_sort(scheduled.begin(), scheduled.end(),
+                     [](const Scheduled& a, const Scheduled& b) { return a.when < b.when; });
+    std::vector<int> expected;
+    for (const Scheduled& event : scheduled) {
+        if (!event.dropped) {
+            expected.push_back(event.number);
+        }
+    }
+    loop.run();
+    EXPECT_EQ(ran, expected);
+    EXPECT_EQ(loop.pending_count(), 0U);
+}
+
+// Armed until its callback returns, as a timer is pending; armed again from there it runs again;
+// disarmed it does not run; it may be destroyed from its own callback.
+TEST(EventLoop, AnAlarmIsArmedUntilItsCallbackReturns) {
+    EventLoop loop;
+    std::vector<std::int64_t> ran;
+    std::unique_ptr<Alarm> alarm;
+    alarm = std::make_unique<Alarm>(loop, [&] {
+        ran.push_back(loop.now().time_since_epoch().count());
+        EXPECT_TRUE(alarm->armed());
+        if (ran.size() < 3) {
+            alarm->arm(loop.now() + std::chrono::nanoseconds(5));
+        } else {
+            alarm.reset();
+        }
+    });
+    EXPECT_FALSE(alarm->armed());
+    alarm->arm(at_ns(10));
+    EXPECT_TRUE(alarm->armed());
+    EXPECT_EQ(loop.pending_count(), 1U);
+    loop.run();
+    EXPECT_EQ(ran, (std::vector<std::int64_t>{10, 15, 20}));
+    EXPECT_EQ(alarm, nullptr);
+
+    Alarm disarmed(loop, [&] { ran.push_back(-1); });
+    disarmed.arm(at_ns(30));
+    disarmed.disarm();
+    EXPECT_FALSE(disarmed.armed());
+    EXPECT_EQ(loop.pending_count(), 0U);
+    Alarm once(loop, [&] { ran.push_back(loop.now().time_since_epoch().count()); });
+    once.arm(at_ns(40));
+    loop.run();
+    EXPECT_FALSE(once.armed());
+    EXPECT_EQ(ran, (std::vector<std::int64_t>{10, 15, 20, 40}));
 }
 
 TEST(EventLoop, NanosecondResolution) {

@@ -101,7 +101,9 @@ void VirtualPort::Impl::report_overflow(Overflow overflow, const Frame& lost) co
 
 VirtualBus::Impl::Impl(core::EventLoop& event_loop, const BusConfig& bus_config)
     : loop(event_loop), config(bus_config), bit(bit_duration(bus_config.bitrate)),
-      created(event_loop.now()), recessive_since(created) {}
+      created(event_loop.now()), recessive_since(created),
+      arbitration(event_loop, [this] { arbitrate(); }),
+      transmission_step(event_loop, [this] { step(); }) {}
 
 core::TimePoint VirtualBus::Impl::at_bit(core::TimePoint start, std::size_t bits) const {
     return start + bit * static_cast<std::int64_t>(bits);
@@ -144,8 +146,8 @@ void VirtualBus::Impl::notify_observers(const WireEvent& event) {
 
 // Frames queued at the same instant must all compete, so arbitration is a deferred event.
 void VirtualBus::Impl::request_arbitration() {
-    if (!current && !arbitration.pending()) {
-        arbitration = core::ScopedTimer(loop, loop.post([this] { arbitrate(); }));
+    if (!current && !arbitration.armed()) {
+        arbitration.arm(loop.now());
     }
 }
 
@@ -250,8 +252,15 @@ void VirtualBus::Impl::start(VirtualPort::Impl& sender, const Frame& next) {
                            .timeline = timeline,
                            .start = now,
                            .receivers_before = next_sequence};
-    transmission_step =
-        core::ScopedTimer(loop, loop.at(at_bit(now, timeline.concluded), [this] { conclude(); }));
+    transmission_step.arm(at_bit(now, timeline.concluded));
+}
+
+void VirtualBus::Impl::step() {
+    if (current->concluded) {
+        finish();
+    } else {
+        conclude();
+    }
 }
 
 template <typename Visit>
@@ -275,6 +284,7 @@ void VirtualBus::Impl::for_each_receiver(const Transmission& transmission, Visit
 
 void VirtualBus::Impl::conclude() {
     Transmission& transmission = *current;
+    transmission.concluded = true;
     switch (transmission.outcome) {
     case Outcome::Delivered:
         ++stats.frames;
@@ -299,9 +309,7 @@ void VirtualBus::Impl::conclude() {
         conclude_with_error(transmission);
         break;
     }
-    transmission_step =
-        core::ScopedTimer(loop, loop.at(at_bit(transmission.start, transmission.timeline.bus_free),
-                                        [this] { finish(); }));
+    transmission_step.arm(at_bit(transmission.start, transmission.timeline.bus_free));
 }
 
 void VirtualBus::Impl::transmitted(Transmission& transmission) {

@@ -71,6 +71,7 @@ struct Transmission {
     Timeline timeline;
     core::TimePoint start;
     std::uint64_t receivers_before; ///< ports connected later do not receive it
+    bool concluded = false;         ///< past its end of frame (or error delimiter)
 };
 
 class VirtualBus::Impl {
@@ -117,9 +118,11 @@ public:
 
     std::optional<Transmission> current;
     core::TimePoint recessive_since;
-    core::ScopedTimer arbitration;
+    /// The deferred arbitration and the two instants of each transmission (its end of frame,
+    /// then its end of intermission): alarms, not a new timer per frame.
+    core::Alarm arbitration;
     core::ScopedTimer suspension_end;
-    core::ScopedTimer transmission_step;
+    core::Alarm transmission_step;
 
 private:
     void arbitrate();
@@ -127,6 +130,7 @@ private:
     /// A fault that shortens the frame shortens `frame` itself, which then goes on the wire.
     Outcome outcome_of(const VirtualPort::Impl& sender, Frame& frame);
     bool dominant_error_flag(const VirtualPort::Impl& sender, Outcome outcome) const;
+    void step();
     void conclude();
     void conclude_with_error(Transmission& transmission);
     void finish();

@@ -86,6 +86,12 @@ public:
     boost::asio::io_context& io();
 
 private:
+    friend class Alarm;
+    TimerId add_alarm(Callback fn);
+    void arm(TimerId alarm, TimePoint when);
+    void disarm(TimerId alarm);
+    void remove_alarm(TimerId alarm);
+
     void dispatch_next();
     void run_virtual(TimePoint end);
     void run_real_time(TimePoint end);
@@ -117,6 +123,29 @@ public:
 private:
     EventLoop* loop_ = nullptr;
     TimerId id_{};
+};
+
+/// One callback, fixed once, that runs each time it is armed: for an object whose events come
+/// one after another (the virtual bus's end of frame and end of intermission), without a new
+/// timer and its callback per event. Arming at a time is scheduling with at(): it runs in the
+/// same order among the other events; arming again while armed moves it to the new time.
+class Alarm {
+public:
+    Alarm(EventLoop& loop, EventLoop::Callback fn)
+        : loop_(loop), id_(loop.add_alarm(std::move(fn))) {}
+    ~Alarm() { loop_.remove_alarm(id_); }
+    Alarm(const Alarm&) = delete;
+    Alarm& operator=(const Alarm&) = delete;
+
+    /// Runs the callback at `when` (a time in the past: now, after what is already due).
+    void arm(TimePoint when) { loop_.arm(id_, when); }
+    void disarm() { loop_.disarm(id_); }
+    /// Armed from arm() until its callback returned (unless that armed it again) or disarm().
+    bool armed() const { return loop_.pending(id_); }
+
+private:
+    EventLoop& loop_;
+    TimerId id_;
 };
 
 } // namespace eposp::core
