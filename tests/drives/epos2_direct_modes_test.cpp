@@ -17,6 +17,8 @@ using canopen::encode;
 constexpr std::int8_t kPositionMode = -1;
 constexpr std::int8_t kVelocityMode = -2;
 constexpr std::int8_t kCurrentMode = -3;
+constexpr std::int8_t kDiagnosticMode = -4;
+constexpr std::int8_t kProfileVelocity = 3;
 constexpr std::uint16_t kQuickStopCommand = 0x000B; // table 3-6: 0xxx x01x from Operation Enable
 constexpr std::uint16_t kHalt = 0x0100;
 constexpr std::uint16_t kQuickStopActive = 0x0007; // table 3-4 under kStateMask
@@ -323,10 +325,46 @@ TEST_F(DirectModes, ModeSwitchWhileEnabledHandsTheAxisOver) {
     EXPECT_EQ(tpdos.back().statusword & kStateMask, kOperationEnabled);
 }
 
-// 8.2.90, table 8-118: the Diagnostic Mode (-4) serves maxon's GUI only and is refused.
-TEST_F(DirectModes, DiagnosticModeIsRefused) {
-    EXPECT_EQ(try_write(0x6060, 0, encode(std::int8_t{-4})), AbortCode::InvalidValue);
-    EXPECT_EQ(read<std::int8_t>(0x6061, 0), 1);
+// 8.2.90, table 8-118, 0x6502 bit 19: the Diagnostic Mode (-4) is accepted and displayed. maxon
+// documents no set value for it (5.2: "Only used for the Diagnostic Wizard"): enabled, the power
+// stage holds zero current and the axis stays where it is, with no mode bits (table 8-114).
+TEST_F(DirectModes, DiagnosticModeIsAcceptedAndAppliesNoSetValue) {
+    configure_and_enable(kDiagnosticMode);
+    EXPECT_EQ(read<std::int8_t>(0x6061, 0), kDiagnosticMode);
+    run_with_sync(200ms);
+    EXPECT_EQ(position(), 0);
+    EXPECT_EQ(current_ma(), 0);
+    EXPECT_EQ(drive.axis().current_demand(), 0);
+    EXPECT_EQ(tpdos.back().statusword & kStateMask, kOperationEnabled);
+    EXPECT_EQ(tpdos.back().statusword & kModeBits, 0);
+    EXPECT_TRUE(emcys.empty());
+}
+
+// A spinning axis switched to the Diagnostic Mode coasts: no torque, friction alone slows it. The
+// reference load's Coulomb c = 1 mN·m and viscous b = 1 µN·m·s/rad on J = 6.05 g·cm² give
+// ω(t) = (ω0 + c/b)·e^(−b·t/J) − c/b until it stands still, which it then keeps.
+TEST_F(DirectModes, DiagnosticModeLetsTheMotorCoast) {
+    configure_and_enable(kProfileVelocity);
+    write(0x60FF, 0, encode(std::int32_t{500}));
+    run_with_sync(500ms);
+    write(0x6060, 0, encode(kDiagnosticMode));
+    const double omega0 = drive.axis().motor().state().speed;
+    const double switched = now();
+    EXPECT_EQ(read<std::int8_t>(0x6061, 0), kDiagnosticMode);
+    run_with_sync(100ms);
+    const double c = 1e-3;
+    const double b = 1e-6;
+    const double j = 1.05e-6 + 5e-6;
+    const double t = now() - switched;
+    const double expected = (omega0 + c / b) * std::exp(-b * t / j) - c / b;
+    EXPECT_NEAR(drive.axis().motor().state().speed, expected, 0.02 * omega0);
+    EXPECT_NEAR(current_ma(), 0, 5);
+    run_with_sync(400ms); // beyond J/b·ln(1 + ω0·b/c) ≈ 0.31 s
+    EXPECT_EQ(drive.axis().motor().state().speed, 0);
+    const std::int32_t rest = position();
+    run_with_sync(100ms);
+    EXPECT_EQ(position(), rest);
+    EXPECT_EQ(tpdos.back().statusword & kStateMask, kOperationEnabled);
 }
 
 } // namespace

@@ -107,10 +107,10 @@ TEST_F(Epos2DriveOnBus, MeasuredValuesFollowTheMotion) {
               od.get_as<std::int32_t>(0x6062, 0) - od.get_as<std::int32_t>(0x6064, 0));
 }
 
-// 8.2.90: the modes this simulation does not run yet are refused.
-TEST_F(Epos2DriveOnBus, ModesNotYetSimulatedAreRefused) {
+// 8.2.90: a value table 8-118 does not list is refused as out of range (table 4-12).
+TEST_F(Epos2DriveOnBus, ModesTable8_118DoesNotListAreRefused) {
     std::optional<AbortCode> result;
-    client.download(kNode, 0x6060, 0, encode(std::int8_t{-4}), // Diagnostic Mode
+    client.download(kNode, 0x6060, 0, encode(std::int8_t{2}), // CiA 402 velocity mode
                     [&result](AbortCode code) { result = code; });
     loop.run_for(20ms);
     EXPECT_EQ(result, AbortCode::InvalidValue);

@@ -284,12 +284,6 @@ void Epos2Drive::watch_dictionary() {
             on_error_recorded();
         }
     });
-    // 8.2.90: the modes this simulation does not run yet are refused like a value out of range.
-    canopen::Entry(*od.find(0x6060, 0)).rule([](std::span<const std::uint8_t> value) {
-        return simulated_mode(canopen::decode<std::int8_t>(value)).has_value()
-                   ? canopen::AbortCode::None
-                   : canopen::AbortCode::InvalidValue;
-    });
 }
 
 void Epos2Drive::handle_pending_controlwords() {

@@ -1,6 +1,7 @@
 #include "mode_table.hpp"
 
 #include "current_mode.hpp"
+#include "diagnostic_mode.hpp"
 #include "digital_position_mode.hpp"
 #include "homing_mode.hpp"
 #include "interpolated_position_mode.hpp"
@@ -19,6 +20,7 @@ std::optional<OperatingMode> simulated_mode(std::int8_t modes_of_operation) {
     case OperatingMode::Position:
     case OperatingMode::Velocity:
     case OperatingMode::Current:
+    case OperatingMode::Diagnostic:
     case OperatingMode::InterpolatedPosition:
     case OperatingMode::MasterEncoder:
     case OperatingMode::StepDirection:
@@ -41,6 +43,8 @@ std::unique_ptr<ModeBehaviour> make_mode_behaviour(OperatingMode mode, ModeServi
         return std::make_unique<VelocityMode>(services);
     case OperatingMode::Current:
         return std::make_unique<CurrentMode>(services);
+    case OperatingMode::Diagnostic:
+        return std::make_unique<DiagnosticMode>();
     case OperatingMode::InterpolatedPosition:
         return std::make_unique<InterpolatedPositionMode>(services);
     case OperatingMode::MasterEncoder:

@@ -10,7 +10,7 @@
 
 namespace eposp::drives::epos2 {
 
-/// 8.2.90, table 8-118: the simulated mode a value of 0x6060 selects (none for the others).
+/// 8.2.90, table 8-118: the mode a value of 0x6060 selects (none for a value the table lacks).
 std::optional<OperatingMode> simulated_mode(std::int8_t modes_of_operation);
 
 /// The behaviour of a simulated mode.

@@ -33,9 +33,7 @@ class ModeBehaviour;
 struct ModeInputs;
 struct ModeServices;
 
-/// EPOS2 FW spec 8.2.90, table 8-118: the modes of operation this simulation runs. The others of
-/// the table (7 IPM, -4 diagnostic, -5 master encoder, -6 step/direction) are refused with "not
-/// yet" (see docs/epos2.md).
+/// EPOS2 FW spec 8.2.90, table 8-118: the modes of operation, all simulated (docs/epos2.md).
 enum class OperatingMode : std::int8_t {
     ProfilePosition = 1,
     ProfileVelocity = 3,
@@ -44,6 +42,7 @@ enum class OperatingMode : std::int8_t {
     Position = -1,
     Velocity = -2,
     Current = -3,
+    Diagnostic = -4,
     MasterEncoder = -5,
     StepDirection = -6,
 };
