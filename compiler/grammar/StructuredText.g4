@@ -159,8 +159,8 @@ expression
     // it would make the parser look to the closing parenthesis at every NOT (.
     | callee=(MOD | AND | OR | XOR) '(' arguments=argumentList? ')'         # operatorCall
     | address=DIRECT_ADDRESS                                                # directAddressExpression
-    | base=expression '.' member=identifier                                 # memberAccess
-    | base=expression '.' bit=INTEGER                                       # bitAccess
+    // One alternative for both, so that what follows a '.' is expected as "a name or an integer".
+    | base=expression '.' (member=identifier | bit=INTEGER)                 # memberAccess
     | base=expression '[' indices+=expression (',' indices+=expression)* ']'  # indexAccess
     | base=expression '^'                                                   # dereference
     | base=expression '(' arguments=argumentList? ')'                       # callArguments

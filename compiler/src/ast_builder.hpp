@@ -83,7 +83,7 @@ public:
 
 private:
     ast::ExpressionPtr unary_expression(P::UnaryExpressionContext& context);
-    ast::ExpressionPtr bit_access(P::BitAccessContext& context);
+    ast::ExpressionPtr bit_access(P::MemberAccessContext& context); ///< `x.3`
 
     antlr4::BufferedTokenStream& tokens_; ///< with the pragmas on its hidden channel
     FileId file_;

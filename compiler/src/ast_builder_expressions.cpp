@@ -123,6 +123,9 @@ ast::ExpressionPtr AstBuilder::expression(P::ExpressionContext& context) {
                                                  std::move(left), std::move(right)});
     }
     if (auto* member = alternative<P::MemberAccessContext>(&context)) {
+        if (member->bit != nullptr) {
+            return bit_access(*member);
+        }
         ast::ExpressionPtr base = expression(*member->base);
         ast::Identifier name = identifier(*member->member);
         const SourceRange whole = span(base->range, name.range);
@@ -148,9 +151,6 @@ ast::ExpressionPtr AstBuilder::expression(P::ExpressionContext& context) {
     }
     if (auto* parenthesized = alternative<P::ParenthesizedExpressionContext>(&context)) {
         return expression(*parenthesized->inner);
-    }
-    if (auto* bit = alternative<P::BitAccessContext>(&context)) {
-        return bit_access(*bit);
     }
     if (auto* dereference = alternative<P::DereferenceContext>(&context)) {
         ast::ExpressionPtr base = expression(*dereference->base);
@@ -186,7 +186,7 @@ ast::ExpressionPtr AstBuilder::unary_expression(P::UnaryExpressionContext& conte
     return make(whole, ast::UnaryExpression{op, std::move(value)});
 }
 
-ast::ExpressionPtr AstBuilder::bit_access(P::BitAccessContext& context) {
+ast::ExpressionPtr AstBuilder::bit_access(P::MemberAccessContext& context) {
     ast::ExpressionPtr base = expression(*context.base);
     const std::string number_text = context.bit->getText();
     const auto index = decode_literal(LiteralForm::Integer, number_text);

@@ -104,5 +104,11 @@ TEST(Expression, MissingOperandIsReported) {
     EXPECT_EQ(test::statement_error("x := a + ;"), "expected an expression, found ';'");
 }
 
+// What may follow a '.': a member's name or a bit number, not the postfix operators.
+TEST(Expression, MissingMemberIsReported) {
+    EXPECT_EQ(test::statement_error("x := a. ;"), "expected an integer or a name, found ';'");
+    EXPECT_EQ(test::statement_error("x := a.DO;"), "expected an integer or a name, found 'DO'");
+}
+
 } // namespace
 } // namespace eposp::compiler
