@@ -121,5 +121,80 @@ TEST_F(Escon2DriveSupervision, OverheatedPowerStageOrLogicSectionDisables) {
     EXPECT_TRUE(power_stage_error) << "109 °C is above a maximum of 100 °C";
 }
 
+
+// 7.1.36: from a critical load on (0.9, the simulation's threshold) the warning, which leaves the
+// state alone; the Clear warning command resets it, and it comes back while the load stays.
+TEST_F(Escon2DriveSupervision, CriticalSystemLoadWarns) {
+    start();
+    enable();
+    drive->set_system_load(0.85);
+    loop.run_for(2ms);
+    EXPECT_EQ(statusword() & kWarning, 0) << "below the critical load";
+    drive->set_system_load(0.95);
+    loop.run_for(2ms);
+    EXPECT_EQ(statusword() & kStateMask, kOperationEnabled);
+    EXPECT_NE(statusword() & kWarning, 0);
+    EXPECT_EQ(error_code(), 0xFF01);
+    EXPECT_EQ(drive->objects().get_as<std::uint32_t>(0x1003, 1), 0x8000'FF01u);
+    drive->set_system_load(0.5);
+    loop.run_for(2ms);
+    EXPECT_NE(statusword() & kWarning, 0) << "reset with the controlword only";
+    controlword(0x8F);
+    controlword(0x0F);
+    EXPECT_EQ(statusword() & kWarning, 0);
+    drive->set_system_load(0.95);
+    loop.run_for(2ms);
+    controlword(0x8F);
+    controlword(0x0F);
+    loop.run_for(2ms);
+    EXPECT_NE(statusword() & kWarning, 0) << "the load is still critical";
+}
+
+// 7.1.39: above a load of 1 the regulation misses its periods: disabled at once, and a fault
+// reset is refused while the load stays there.
+TEST_F(Escon2DriveSupervision, PeakOverloadDisablesUntilTheLoadFalls) {
+    start();
+    enable();
+    drive->set_system_load(1.2);
+    loop.run_for(2ms);
+    EXPECT_EQ(statusword() & kStateMask, kFault);
+    EXPECT_EQ(error_code(), 0xFF06);
+    EXPECT_EQ(drive->objects().get_as<std::uint8_t>(0x1001, 0), 0b0000'0001);
+    controlword(0x80);
+    EXPECT_EQ(statusword() & kStateMask, kFault) << "still overloaded";
+    controlword(0x00);
+    drive->set_system_load(0.5);
+    loop.run_for(2ms);
+    controlword(0x80);
+    EXPECT_EQ(statusword() & kStateMask, kSwitchOnDisabled);
+    EXPECT_EQ(error_code(), 0);
+}
+
+// 7.1.37: overloaded for 100 ms (the simulation's watchdog time) the watchdog resets the device:
+// it starts again as at power-up, so a value written but not stored is lost, and shows 0xFF02.
+TEST_F(Escon2DriveSupervision, LastingOverloadResetsTheDeviceByItsWatchdog) {
+    start();
+    ASSERT_EQ(drive->objects().write(0x60C5, 0, canopen::encode(std::uint32_t{1234})),
+              AbortCode::None);
+    enable();
+    drive->set_system_load(1.5);
+    loop.run_for(98ms);
+    EXPECT_EQ(error_code(), 0xFF06);
+    EXPECT_EQ(drive->objects().get_as<std::uint32_t>(0x60C5, 0), 1234u) << "not reset yet";
+    loop.run_for(3ms);
+    EXPECT_EQ(statusword() & kStateMask, kFault);
+    EXPECT_NE(drive->objects().get_as<std::uint32_t>(0x60C5, 0), 1234u) << "a power-up";
+    // The history starts again at the power-up: the watchdog error first, then what the load
+    // that is still there causes in the next control period.
+    EXPECT_EQ(drive->objects().get_as<std::uint8_t>(0x1003, 0), 3u);
+    EXPECT_EQ(drive->objects().get_as<std::uint32_t>(0x1003, 3), 0xFF02u);
+    EXPECT_EQ(drive->objects().get_as<std::uint32_t>(0x1003, 2), 0x8000'FF01u);
+    EXPECT_EQ(drive->objects().get_as<std::uint32_t>(0x1003, 1), 0xFF06u);
+    drive->set_system_load(0.2);
+    loop.run_for(2ms);
+    controlword(0x80);
+    EXPECT_EQ(statusword() & kStateMask, kSwitchOnDisabled);
+}
+
 } // namespace
 } // namespace eposp::drives::escon2

@@ -15,7 +15,7 @@ TEST(Escon2ProtectionErrorCodes, EveryRaisedCodeIsARowOfTable110) {
           ThermalLogicSectionOverload, NegativeLimitSwitch, PositiveLimitSwitch,
           DigitalInput1PwmFrequencyWarning, DigitalInput1PwmDutyCycleWarning, DigitalInput1PwmError,
           DigitalInput2PwmFrequencyWarning, DigitalInput2PwmDutyCycleWarning,
-          DigitalInput2PwmError}) {
+          DigitalInput2PwmError, SystemOverloadedWarning, Watchdog, SystemPeakOverloaded}) {
         const auto value = static_cast<std::uint16_t>(code);
         EXPECT_EQ(device_error(value).code, value);
     }

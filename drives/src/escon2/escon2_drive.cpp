@@ -120,6 +120,7 @@ void Escon2Drive::start() {
     read_sensor_configuration();
     io_->reload();
     errors_.reset();
+    system_load_.restart();
     device_control_.node_reset();
     device_control_.initialise();              // 0
     device_control_.initialisation_finished(); // 1
@@ -195,18 +196,25 @@ void Escon2Drive::raise_device_error(std::uint16_t code) {
 void Escon2Drive::update_fault_condition() {
     device_control_.set_fault_condition_present(
         errors_.needs_device_reset() || supply_.undervoltage() || supply_.overvoltage() ||
-        thermal_.power_stage_error() || thermal_.logic_section_error());
+        thermal_.power_stage_error() || thermal_.logic_section_error() ||
+        system_load_.peak_overloaded());
 }
 
-// 6.2.10 - 6.2.12, 6.2.56: the supply and the temperatures, every control period.
+// 6.2.10 - 6.2.12, 6.2.56, 7.1.36 - 7.1.40: the supply, the temperatures and the system
+// load, every control period.
 void Escon2Drive::supervise() {
+    if (system_load_.update()) {
+        watchdog_reset();
+        return;
+    }
     const DriveState state = device_control_.state();
     supply_.update(machine_.plant.power_stage.supply_voltage,
                    state == DriveState::OperationEnable || state == DriveState::QuickStopActive);
     thermal_.update(power_stage_.temperature(), logic_section_temperature());
     std::vector<DeviceErrorCode> conditions = supply_.conditions();
-    const std::vector<DeviceErrorCode> thermal = thermal_.conditions();
-    conditions.insert(conditions.end(), thermal.begin(), thermal.end());
+    for (const auto& more : {thermal_.conditions(), system_load_.conditions()}) {
+        conditions.insert(conditions.end(), more.begin(), more.end());
+    }
     for (const DeviceErrorCode condition : conditions) {
         raise_device_error(static_cast<std::uint16_t>(condition));
     }
@@ -217,6 +225,12 @@ void Escon2Drive::supervise() {
         clear_warning(kWarning);
     }
     update_fault_condition();
+}
+
+// 7.1.37: the device starts again as at power-up (what was not stored is lost) and says why.
+void Escon2Drive::watchdog_reset() {
+    start();
+    raise_device_error(static_cast<std::uint16_t>(DeviceErrorCode::Watchdog));
 }
 
 void Escon2Drive::watch_sensors() {

@@ -7,6 +7,7 @@
 #include "eposp/drives/escon2/io/pwm_input.hpp"
 #include "eposp/drives/escon2/protection/output_current_limitation.hpp"
 #include "eposp/drives/escon2/protection/power_supply_supervision.hpp"
+#include "eposp/drives/escon2/protection/system_load_supervision.hpp"
 #include "eposp/drives/escon2/protection/thermal_supervision.hpp"
 #include "eposp/drives/motion/device_control.hpp"
 #include "eposp/drives/motion/sensor_supervision.hpp"
@@ -113,6 +114,11 @@ public:
 
     /// The simulated power supply (0x2200 sub 1), supervised against 0x2201 (6.2.11).
     void set_supply_voltage(double volts);
+    /// The share of its processor the device's tasks would take (1: all of it), a cause set
+    /// from outside as the supply voltage is: from 0.9 on the system overloaded warning, above 1
+    /// the system peak overloaded error, and above 1 for 100 ms a watchdog reset (7.1.36 -
+    /// 7.1.40; SystemLoadSupervision).
+    void set_system_load(double share) { system_load_.set_load(share); }
     /// Raises an error or warning of table 110 as if its cause had occurred: its history entry,
     /// its register bits and error code, and its reaction ("f" quick stop, "d" disable, "w"
     /// warning only). A code the table does not list is a programming error
@@ -137,6 +143,7 @@ private:
     void control_period();
     void react_to_inputs(const IoReaction& reaction);
     void supervise();
+    void watchdog_reset();
     void watch_sensors();
     void read_sensor_configuration();
     void restart_sensor_supervision();
@@ -170,6 +177,7 @@ private:
     OutputCurrentLimitation limitation_;
     PowerSupplySupervision supply_;
     ThermalSupervision thermal_;
+    SystemLoadSupervision system_load_;
     plant::ThermalModel power_stage_;
     double power_stage_loss_resistance_;
     double ambient_temperature_;

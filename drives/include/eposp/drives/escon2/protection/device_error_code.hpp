@@ -20,6 +20,9 @@ enum class DeviceErrorCode : std::uint16_t {
     DigitalInput2PwmFrequencyWarning = 0x8A8D,
     DigitalInput2PwmDutyCycleWarning = 0x8A8E,
     DigitalInput2PwmError = 0x8A90,
+    SystemOverloadedWarning = 0xFF01,
+    Watchdog = 0xFF02,
+    SystemPeakOverloaded = 0xFF06,
 };
 
 } // namespace eposp::drives::escon2
