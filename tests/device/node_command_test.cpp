@@ -201,8 +201,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "eposp node: error: cannot read /nonexistent/dev.eds"},
         UserError{"--eds " + std::string(EPOSP_SOURCE_DIR) +
                       "/examples/bus-demo/canopen-network.log --node-id 5",
-                  "eposp node: error: " + std::string(EPOSP_SOURCE_DIR) +
-                      "/examples/bus-demo/canopen-network.log:1:"},
+                  "eposp node: " + std::string(EPOSP_SOURCE_DIR) +
+                      "/examples/bus-demo/canopen-network.log:1: error: "},
         UserError{"--eds /dev/null --node-id 5",
                   "eposp node: error: /dev/null: lists no object ([MandatoryObjects]"},
         UserError{"--eds " + kSampleEds + " --node-id 0", "--node-id: Value 0 not in range"},
