@@ -14,14 +14,22 @@ SourcePosition start_of(const antlr4::Token& token) {
 }
 
 // Tokens never span lines except EOF and hidden comments, which are reported at their start.
+// The input stream holds code points, so a token's character indices count columns; only a
+// token made up by error recovery has none, and then its text is counted.
 SourcePosition end_of(const antlr4::Token& token) {
+    const SourcePosition start = start_of(token);
+    const std::size_t first = token.getStartIndex();
+    const std::size_t last = token.getStopIndex();
+    if (first != INVALID_INDEX && last != INVALID_INDEX) {
+        return {start.line,
+                start.column + static_cast<std::uint32_t>(last > first ? last - first : 0)};
+    }
     const std::string text = token.getType() == antlr4::Token::EOF ? "" : token.getText();
     std::uint32_t code_points = 0;
     for (std::size_t i = 0; i < text.size();) {
         utf8::decode(text, i);
         ++code_points;
     }
-    const SourcePosition start = start_of(token);
     return {start.line, start.column + (code_points > 0 ? code_points - 1 : 0)};
 }
 
