@@ -74,6 +74,7 @@ TEST_F(GearedAxis, OutputTurnsAreTheCountsWhileTheMotorTurnsGearRatioTimesAsOfte
     // Within the reading's two counts and the count it rounds down to: three of the motor each.
     EXPECT_NEAR(motor_turns(), 3 * kOutputTurns, 3 * 3 / kCountsPerTurn);
     EXPECT_EQ(drive.axis().parameters().encoder_reading.gear_ratio, 3);
+    EXPECT_TRUE(emcys.empty());
 }
 
 // 5.10 on the output: 0x606C is the output's speed, the motor turns three times as fast.
@@ -86,6 +87,8 @@ TEST_F(GearedAxis, VelocityIsTheOutputsAndTheMotorTurnsGearRatioTimesAsFast) {
     EXPECT_NEAR(read<std::int32_t>(0x606C, 0), 500, 35);
     EXPECT_NEAR(read<std::int32_t>(0x2028, 0), 500, 10); // averaged
     EXPECT_NEAR(motor_rpm(), 3 * 500, 3 * 10);
+    // The index once per output turn: the sensor supervision finds the resolution configured.
+    EXPECT_TRUE(emcys.empty());
 }
 
 // 8.2.130 sub 4 is the motor's speed: through the gear it caps the output at a third of it.
