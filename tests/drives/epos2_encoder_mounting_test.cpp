@@ -6,6 +6,7 @@
 // bench, in virtual time.
 #include "epos2_bus_fixture.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -119,6 +120,39 @@ TEST_F(GearedAxis, WithoutAGearConfiguredMaximalMotorSpeedCapsTheOutput) {
 TEST_F(GearedAxis, GearIsRefusedWhileThePowerStageIsOn) {
     configure_and_enable(kProfilePosition);
     EXPECT_EQ(try_write(0x2230, 1, encode(std::uint32_t{3})), AbortCode::DeviceState);
+}
+
+// A brushless motor commutated by its hall sensors (0x6402 = 11: table 8-103 permits it a gear).
+plant::AxisParameters geared_ec_axis() {
+    plant::AxisParameters axis = geared_axis();
+    axis.plant.motor.kind = plant::MotorKind::Ec;
+    return axis;
+}
+
+class GearedEcAxis : public Epos2DriveOnBus {
+public:
+    GearedEcAxis() : Epos2DriveOnBus(geared_ec_axis()) {}
+};
+
+// 4.2.26, "No Hall sensor 3 edge found within first motor turn", through the gear: with hall
+// sensor 3 stuck, 0xFF04 comes once the output's encoder has counted one motor turn (2000 / 3
+// counts), not a turn of the output.
+TEST_F(GearedEcAxis, HallSensorNotFoundWithinTheFirstMotorTurnThroughTheGear) {
+    write(0x6402, 0, encode(std::uint16_t{11}));
+    write(0x2230, 1, encode(std::uint32_t{3}));
+    plant::SensorFaults hall_sensor_3_stuck;
+    hall_sensor_3_stuck.hall_stuck_mask = 0b100;
+    drive.inject_sensor_faults(hall_sensor_3_stuck);
+    configure_and_enable(kProfilePosition);
+    controlword_and_target(kEnableOperation | kNewSetpoint | kChangeImmediately, 20000);
+    run_with_sync(300ms);
+    expect_error(*this, 0xFF04, 0b1000'0000);
+    const auto at_error = std::find_if(tpdos.begin(), tpdos.end(), [this](const Tpdo& tpdo) {
+        return tpdo.time >= emcy_times.front();
+    });
+    ASSERT_NE(at_error, tpdos.end());
+    EXPECT_GT(at_error->position, kCountsPerTurn / 3);
+    EXPECT_LT(at_error->position, kCountsPerTurn / 3 + 100);
 }
 
 // An encoder mounted the other way round: it counts down while the motor turns CCW.

@@ -262,7 +262,7 @@ void Epos2Drive::watch_dictionary() {
         read_counts_per_turn();
         homing_.reference_lost();
     });
-    for (const std::uint16_t index : std::array<std::uint16_t, 3>{0x2008, 0x2210, 0x6402}) {
+    for (const std::uint16_t index : std::array<std::uint16_t, 4>{0x2008, 0x2210, 0x2230, 0x6402}) {
         od.on_change(index, [this](std::uint16_t, std::uint8_t) { read_sensor_configuration(); });
     }
     for (const std::uint16_t index : std::array<std::uint16_t, 2>{0x2008, 0x608B}) {
@@ -491,7 +491,8 @@ void Epos2Drive::read_sensor_configuration() {
          .encoder_index = main_sensor == kEncoder1WithIndex,
          .hall_sensors = motor_type == kSinusoidalEcMotor || motor_type == kTrapezoidalEcMotor,
          .breach_supervision =
-             (od.get_as<std::uint16_t>(0x2008, 0) & kNoHardwareSupervisionBit) == 0});
+             (od.get_as<std::uint16_t>(0x2008, 0) & kNoHardwareSupervisionBit) == 0,
+         .motor_turns_per_encoder_turn = motor_turns_per_sensor_turn(od)});
     software_supervision_ = (od.get_as<std::uint16_t>(0x2008, 0) & kNoSoftwareSupervisionBit) == 0;
     // A quarter turn of the encoder against the motor (4.2.37; the spec gives no threshold).
     sensor_direction_ = motion::SensorDirectionMonitor(od.get_as<std::uint32_t>(0x2210, 1),

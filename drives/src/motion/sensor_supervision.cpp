@@ -122,7 +122,10 @@ std::optional<SensorFault> SensorSupervision::check_hall_sensors(std::uint8_t in
     if (!hall_edge_found_) {
         // EPOS2 4.2.26: "No Hall sensor 3 edge found within first motor turn".
         hall_edge_found_ = ((previous ^ inputs) & kHallSensor3) != 0;
-        if (!hall_edge_found_ && travelled > 4 * std::int64_t{config_.encoder_pulses}) {
+        const double motor_turns = static_cast<double>(travelled) *
+                                   config_.motor_turns_per_encoder_turn /
+                                   static_cast<double>(4 * std::int64_t{config_.encoder_pulses});
+        if (!hall_edge_found_ && motor_turns > 1) {
             return SensorFault::HallSensorNotFound;
         }
         return std::nullopt;

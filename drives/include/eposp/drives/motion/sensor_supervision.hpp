@@ -40,6 +40,8 @@ struct SensorSupervisionConfig {
     /// The encoder's angle is compared with the hall sensors' (both configured).
     bool hall_angle = false;
     int pole_pairs = 1; ///< electrical revolutions per turn, for the hall angle
+    /// Motor turns per encoder turn: an encoder on a gear's output (EPOS2 8.2.74) turns slower.
+    double motor_turns_per_encoder_turn = 1;
 };
 
 /// A drive's position sensor supervision, fed every control period with the shaft's angle and
