@@ -32,6 +32,25 @@ public:
     explicit InputStream(const std::string& text) : ANTLRInputStream(text) {
         _data.shrink_to_fit();
     }
+
+    // A token's text (names, numbers, keywords: ASCII nearly always) is copied as it is; the
+    // runtime converts every text from UTF-32 through std::wstring_convert.
+    std::string getText(const antlr4::misc::Interval& interval) override {
+        if (interval.a < 0 || interval.b < interval.a ||
+            static_cast<std::size_t>(interval.b) >= _data.size()) {
+            return ANTLRInputStream::getText(interval);
+        }
+        std::string text;
+        text.reserve(static_cast<std::size_t>(interval.b - interval.a + 1));
+        for (ssize_t i = interval.a; i <= interval.b; ++i) {
+            const char32_t c = _data[static_cast<std::size_t>(i)];
+            if (c >= 0x80) {
+                return ANTLRInputStream::getText(interval);
+            }
+            text.push_back(static_cast<char>(c));
+        }
+        return text;
+    }
 };
 
 // The ANTLR runtime needs UTF-8. A file that is not, such as one exported from CODESYS with
