@@ -213,5 +213,65 @@ TEST_F(Epos2DriveErrors, HotCabinetRaises4210WhenThePowerStagePassesItsLimit) {
     EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
 }
 
+// 4.2.17: "Device has received a bad transmit PDO request (valid COB-ID without RTR bit set)":
+// a data frame on the COB-ID of the drive's TPDO 3. A remote request there is no collision
+// (0x1802 sub 1 bit 30 refuses it: nothing happens). "a": 0x6007 = 3, quickstop, then Fault;
+// a fault reset recovers.
+TEST_F(Epos2DriveErrors, DataFrameOnAnOwnTpdoCobIdRaises8150) {
+    configure_and_enable(1);
+    start_long_move(*this);
+    master->send(can::Frame::remote_frame(kTpdo3Id, 6));
+    run_with_sync(10ms);
+    ASSERT_TRUE(emcys.empty()) << "a remote request is no collision";
+
+    master->send(can::Frame::data_frame(kTpdo3Id, {1, 2, 3, 4, 5, 6}));
+    run_with_sync(20ms);
+    expect_emcy(*this, 0x8150, 0x10);
+    expect_quickstop_reaction(*this);
+
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0);
+    EXPECT_EQ(emcy_bytes(emcys.back()), (EmcyBytes{}));
+}
+
+// 4.2.36: "Control function not possible due to controller gains of zero": the power stage
+// comes on (Measure Init, table 3-3) holding the position with the position loop, whose P gain
+// 0x60FB sub 1 is zero. Fault; a fault reset with the gain back recovers.
+TEST_F(Epos2DriveErrors, ZeroPositionGainRaisesFF10WhenThePowerStageComesOn) {
+    write(0x60FB, 1, encode(std::int16_t{0}));
+    nmt(canopen::NmtCommand::Start);
+    for (const std::uint16_t word : {kShutdown, kSwitchOn}) {
+        controlword(word);
+        run_with_sync(10ms);
+    }
+    ASSERT_TRUE(emcys.empty()) << "the power stage is still off";
+    controlword(kEnableOperation);
+    run_with_sync(200ms);
+    expect_error(*this, 0xFF10, 0x20);
+    EXPECT_EQ(drive.axis().mode(), plant::ControlMode::PowerOff);
+
+    write(0x60FB, 1, encode(std::int16_t{500}));
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0);
+}
+
+// 4.2.36: a zero velocity P gain (0x60F9 sub 1) does not hinder the position loop of Profile
+// Position Mode; entering Velocity Mode, whose loop it is, raises 0xFF10 with the "f" reaction
+// (0x605E = 2 by default: quickstop ramp, then Fault).
+TEST_F(Epos2DriveErrors, ZeroVelocityGainRaisesFF10OnEnteringVelocityMode) {
+    write(0x60F9, 1, encode(std::int16_t{0}));
+    configure_and_enable(1);
+    start_long_move(*this);
+    write(0x6060, 0, encode(std::int8_t{-2}));
+    run_with_sync(5ms);
+    expect_emcy(*this, 0xFF10, 0x20);
+    run_with_sync(200ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

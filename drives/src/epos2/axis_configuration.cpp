@@ -48,6 +48,20 @@ void write_axis_defaults(canopen::ObjectDictionary& od, const plant::AxisParamet
                             static_cast<std::uint8_t>(std::clamp(motor.pole_pairs, 1, 255)));
 }
 
+bool controller_gain_missing(const plant::ServoGains& gains, plant::ControlMode loop) {
+    switch (loop) {
+    case plant::ControlMode::PowerOff:
+        return false;
+    case plant::ControlMode::Current:
+        return gains.current.kp == 0;
+    case plant::ControlMode::Velocity:
+        return gains.velocity.kp == 0 || gains.current.kp == 0;
+    case plant::ControlMode::Position:
+        return gains.position.kp == 0 || gains.current.kp == 0;
+    }
+    return false;
+}
+
 plant::AxisParameters configured_axis(const canopen::ObjectDictionary& od,
                                       plant::AxisParameters machine) {
     machine.encoder_pulses = static_cast<int>(od.get_as<std::uint32_t>(0x2210, 1));

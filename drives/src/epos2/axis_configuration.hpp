@@ -22,6 +22,11 @@ inline constexpr std::array<std::uint16_t, 7> kAxisConfigurationObjects = {
 /// defaults (and values).
 void write_axis_defaults(canopen::ObjectDictionary& od, const plant::AxisParameters& machine);
 
+/// EPOS2 FW spec 4.2.36, "control function not possible due to controller gains of zero": the
+/// loop closes through a controller whose P gain is zero (the position and velocity loops feed
+/// the current loop, so its P gain counts for them too). PowerOff needs none.
+bool controller_gain_missing(const plant::ServoGains& gains, plant::ControlMode loop);
+
 /// The machine as the dictionary configures it now.
 plant::AxisParameters configured_axis(const canopen::ObjectDictionary& od,
                                       plant::AxisParameters machine);

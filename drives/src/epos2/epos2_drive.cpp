@@ -41,6 +41,7 @@ constexpr std::uint16_t kCanBusOffErrorCode = 0x81FD;
 constexpr std::uint16_t kCanPassiveErrorCode = 0x8120;
 constexpr std::uint16_t kCanRxQueueOverflowErrorCode = 0x81FE;
 constexpr std::uint16_t kCanTxQueueOverflowErrorCode = 0x81FF;
+constexpr std::uint16_t kControllerGainErrorCode = 0xFF10; // 4.2.36
 
 // Table 8-125 and 8-102: the motor types with hall sensors, the main sensor types of encoder 1.
 constexpr std::uint16_t kSinusoidalEcMotor = 10;
@@ -429,6 +430,9 @@ void Epos2Drive::control_period() {
     index_latch_.reset();
     const MotionState demand = commanded.motion;
     axis_.set_mode(power_stage_on_ ? commanded.loop : plant::ControlMode::PowerOff);
+    if (controller_gain_missing(axis_.parameters().gains, axis_.mode())) {
+        raise_device_error(kControllerGainErrorCode);
+    }
     axis_.set_demand(
         {.position = polarity_ * (demand.position - static_cast<double>(position_offset_)),
          .velocity = polarity_ * demand.velocity,
