@@ -129,12 +129,14 @@ TEST(ReferenceEvaluator, BitOperationsAndComparisons) {
     const auto p = run("w : WORD := 16#F0F0; a, b : WORD; n : BOOL; lt, mixed, bit : BOOL; "
                        "u : UDINT := 4000000000; i : DINT := -1;",
                        "a := w AND 16#FF00; b := NOT w XOR 16#000F; n := NOT (3 > 2);"
-                       "lt := -1 < 1; mixed := i < u; bit := w.4; w.0 := TRUE; w.15 := FALSE;");
+                       "lt := -1 < 1; mixed := i < UDINT_TO_LINT(u); bit := w.4; w.0 := TRUE; "
+                       "w.15 := FALSE;");
     EXPECT_EQ(p.bits("Main.a"), 0xF000u);
     EXPECT_EQ(p.bits("Main.b"), 0x0F00u);
     EXPECT_EQ(p.bits("Main.n"), 0u);
     EXPECT_EQ(p.bits("Main.lt"), 1u);
-    // DINT and UDINT compare as LINT (figure 11): -1 < 4000000000.
+    // DINT widens to LINT (figure 11): -1 < 4000000000. A DINT and a UDINT have no common
+    // type without a conversion: neither widens to the other.
     EXPECT_EQ(p.bits("Main.mixed"), 1u);
     EXPECT_EQ(p.bits("Main.bit"), 1u);
     EXPECT_EQ(p.bits("Main.w"), 0x70F1u);

@@ -22,6 +22,74 @@ bool fits(const ast::IntegerLiteral& literal, ast::ElementaryType type) {
     return literal.magnitude <= range->max;
 }
 
+/// The integer literal without a type prefix that `expression` is (negated or not); null if
+/// it is none.
+const ast::IntegerLiteral* integer_literal(const ast::Expression& expression) {
+    const ast::Expression* inner = &expression;
+    bool negative = false;
+    while (const auto* unary = std::get_if<ast::UnaryExpression>(&inner->node)) {
+        if (unary->op == ast::UnaryOperator::Not) {
+            return nullptr;
+        }
+        negative = negative != (unary->op == ast::UnaryOperator::Negate);
+        inner = unary->operand.get();
+    }
+    const auto* literal = std::get_if<ast::LiteralExpression>(&inner->node);
+    const auto* integer =
+        literal != nullptr ? std::get_if<ast::IntegerLiteral>(&literal->value) : nullptr;
+    return integer != nullptr && !integer->type && !negative ? integer : nullptr;
+}
+
+/// Why a value of `actual` cannot be stored where `target` is expected (`what`).
+std::string mismatch(const char* what, const sema::Type& actual, const sema::Type& target) {
+    if (std::string_view(what) == "a CASE label") {
+        return fmt::format("a CASE label must be a value of {}", target.name);
+    }
+    if (std::string_view(what) == "an initial value") {
+        return fmt::format("the initial value must be a {} {}",
+                           target.kind == sema::TypeKind::Enum ? "value of" : "constant",
+                           target.name);
+    }
+    return fmt::format("a {} value cannot be used as {}{}", actual.name, target.name,
+                       actual.kind == sema::TypeKind::Elementary &&
+                               target.kind == sema::TypeKind::Elementary
+                           ? fmt::format(" (convert it with {}_TO_{})", actual.name, target.name)
+                           : "");
+}
+
+std::string in_out_mismatch(const sema::Field& field, const sema::Type& formal) {
+    if (field.type->conformant) {
+        return fmt::format("VAR_IN_OUT '{}' needs an array of {} dimension(s) of {}", field.name,
+                           formal.dimensions.size(), formal.element->name);
+    }
+    return fmt::format("VAR_IN_OUT '{}' needs a {} variable", field.name, formal.name);
+}
+
+/// Table 22: a WSTRING converts to and from WCHAR only, a STRING to and from every other
+/// elementary type; the others between scalars that are no references.
+bool converts_explicitly(const sema::Type& from, const sema::Type& to) {
+    const bool from_string = from.kind == sema::TypeKind::String;
+    const bool to_string = to.kind == sema::TypeKind::String;
+    if (from_string && to_string) {
+        return true;
+    }
+    if (from_string || to_string) {
+        const sema::Type& other = to_string ? from : to;
+        const bool wchar = other.kind == sema::TypeKind::Elementary &&
+                           other.elementary == ast::ElementaryType::Wchar;
+        return sema::is_scalar(other) && other.kind == sema::TypeKind::Elementary &&
+               (to_string ? to.wide : from.wide) == wchar;
+    }
+    return sema::is_scalar(from) && sema::is_scalar(to) && from.kind != sema::TypeKind::Reference &&
+           to.kind != sema::TypeKind::Reference;
+}
+
+/// An integer literal, typed or not (its magnitude may exceed what folding holds).
+bool is_integer_literal(const ast::Expression& expression) {
+    const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
+    return literal != nullptr && std::holds_alternative<ast::IntegerLiteral>(literal->value);
+}
+
 bool numeric_context(const sema::Type* type) {
     return type != nullptr && type->kind == sema::TypeKind::Elementary &&
            (sema::is_numeric(*type) || sema::is_bit_string(*type));
@@ -53,8 +121,35 @@ const sema::Type* ExpressionTyper::fail(DiagnosticCode code, const SourceRange& 
     return nullptr;
 }
 
+bool ExpressionTyper::is_variable(const ast::Expression& expression) const {
+    if (const auto* name = std::get_if<ast::NameExpression>(&expression.node)) {
+        const sema::Symbol* symbol = program_.model().resolved(name->name);
+        return symbol == nullptr || symbol->kind == sema::SymbolKind::Variable ||
+               (symbol->kind == sema::SymbolKind::Pou && symbol->pou == current_);
+    }
+    return std::holds_alternative<ast::MemberExpression>(expression.node) ||
+           std::holds_alternative<ast::IndexExpression>(expression.node) ||
+           std::holds_alternative<ast::DereferenceExpression>(expression.node) ||
+           std::holds_alternative<ast::DirectAddressExpression>(expression.node);
+}
+
+bool ExpressionTyper::names_program(const ast::Expression& expression) const {
+    const auto* name = std::get_if<ast::NameExpression>(&expression.node);
+    const sema::Symbol* symbol = name != nullptr ? program_.model().resolved(name->name) : nullptr;
+    return symbol != nullptr &&
+           ((symbol->kind == sema::SymbolKind::Pou && symbol->pou->kind == ast::PouKind::Program) ||
+            symbol->kind == sema::SymbolKind::ProgramInstance);
+}
+
 void ExpressionTyper::pou(const ast::Pou& pou) {
     current_ = &pou;
+    // Its instance or frame first: a declaration that refers to the POU itself (`next :
+    // REF_TO Link`) is then laid out inside it.
+    if (pou.kind == ast::PouKind::Function) {
+        program_.types().frame(pou);
+    } else {
+        program_.types().instance(pou);
+    }
     sections(pou.sections);
     statements(pou.body);
     current_ = nullptr;
@@ -68,8 +163,9 @@ void ExpressionTyper::sections(const std::vector<ast::DeclarationSection>& secti
         }
         for (const ast::VariableDeclaration& declaration : variables->variables) {
             type_spec(declaration.type);
+            const sema::Type* type = program_.types().resolve(declaration.type);
             if (declaration.initial_value) {
-                initializer(*declaration.initial_value, program_.types().resolve(declaration.type));
+                initializer(*declaration.initial_value, type);
             }
         }
     }
@@ -77,12 +173,14 @@ void ExpressionTyper::sections(const std::vector<ast::DeclarationSection>& secti
 
 void ExpressionTyper::type_declaration(const ast::TypeDeclaration& declaration) {
     type_spec(declaration.type);
+    // By its name (`Pct`), which its diagnostics say; laid out even when nothing uses it, so
+    // that its errors are reported.
+    const sema::Symbol* symbol = program_.model().global().find_member(declaration.name.name);
+    const sema::Type* type = symbol != nullptr && symbol->type == &declaration
+                                 ? program_.types().named(*symbol)
+                                 : program_.types().resolve(declaration.type);
     if (declaration.initial_value) {
-        // The type by its name (`Pct`), which its diagnostics say.
-        const sema::Symbol* symbol = program_.model().global().find_member(declaration.name.name);
-        initializer(*declaration.initial_value, symbol != nullptr && symbol->type == &declaration
-                                                    ? program_.types().named(*symbol)
-                                                    : program_.types().resolve(declaration.type));
+        initializer(*declaration.initial_value, type);
     }
 }
 
@@ -100,15 +198,56 @@ void ExpressionTyper::type_spec(const ast::TypeSpec& spec) {
     }
 }
 
+const sema::Type& ExpressionTyper::address_type(const ast::DirectAddress& address) {
+    // 6.5.5: the size prefix is the type (X or none BOOL, B BYTE, W WORD, ...).
+    static constexpr E kBySize[] = {E::Bool, E::Bool, E::Byte, E::Word, E::Dword, E::Lword};
+    return elementary(kBySize[static_cast<int>(address.size)]);
+}
+
 void ExpressionTyper::configuration(const ast::Configuration& configuration) {
+    access_paths(configuration);
     sections(configuration.sections);
     for (const ast::Resource& resource : configuration.resources) {
         sections(resource.sections);
-        // Program connections: a source or sink of its own type (checked by code generation).
         for (const ast::ProgramInstance& instance : resource.programs) {
-            for (const ast::Argument& connection : instance.connections) {
-                type(*connection.value, nullptr);
+            connections(instance);
+        }
+    }
+}
+
+const sema::Type* ExpressionTyper::program_instance(const ast::ProgramInstance& instance) {
+    const sema::Symbol* program = program_.model().resolved(instance.type);
+    return program != nullptr && program->kind == sema::SymbolKind::Pou
+               ? program_.types().instance(*program->pou)
+               : nullptr;
+}
+
+void ExpressionTyper::connections(const ast::ProgramInstance& instance) {
+    // 6.8.2: a source is stored into the program's input, an output into its sink; what they
+    // may name is the checking stage's (checks/program_connections.cpp).
+    const sema::Type* type = program_instance(instance);
+    for (const ast::Argument& connection : instance.connections) {
+        const bool output = connection.kind == ast::Argument::Kind::Output;
+        const sema::Field* field =
+            type != nullptr && connection.name ? type->field(connection.name->name) : nullptr;
+        if (field == nullptr ||
+            field->section != (output ? ast::VarSectionKind::Output : ast::VarSectionKind::Input)) {
+            if (type != nullptr) {
+                diagnostics_.error(DiagnosticCode::E0210, connection.range,
+                                   fmt::format("'{}' has no {} of that name", type->name,
+                                               output ? "output" : "input"));
             }
+            this->type(*connection.value, nullptr);
+            continue;
+        }
+        if (!output) {
+            expect(*connection.value, *field->type, "a value");
+            continue;
+        }
+        const sema::Type* sink = this->type(*connection.value, nullptr);
+        if (sink != nullptr && !sema::converts_implicitly(*field->type, *sink)) {
+            diagnostics_.error(DiagnosticCode::E0301, connection.value->range,
+                               mismatch("a value", *field->type, *sink));
         }
     }
 }
@@ -118,7 +257,17 @@ void ExpressionTyper::initializer(const ast::Initializer& initializer, const sem
         return;
     }
     if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer.value)) {
+        const std::size_t errors = diagnostics_.error_count();
         store(**expression, *target, "an initial value");
+        // An integer's initial value is folded when compiling (a constant defined through
+        // itself has none).
+        const sema::Type& plain = program_.types().unranged(*target);
+        if (errors == diagnostics_.error_count() && plain.kind == sema::TypeKind::Elementary &&
+            (sema::is_integer(plain) || sema::is_bit_string(plain)) &&
+            !is_integer_literal(**expression) && !program_.types().fold_integer(**expression)) {
+            diagnostics_.error(DiagnosticCode::E0313, (*expression)->range,
+                               mismatch("an initial value", plain, *target));
+        }
     } else if (const auto* elements =
                    std::get_if<std::vector<ast::ArrayInitElement>>(&initializer.value)) {
         for (const ast::ArrayInitElement& element : *elements) {
@@ -159,12 +308,28 @@ void ExpressionTyper::expect(const ast::Expression& expression, const sema::Type
         return;
     }
     const sema::Type& to = program_.types().unranged(target);
-    if (!sema::converts_implicitly(program_.types().unranged(*actual), to) &&
-        !sema::conforms(*actual, target)) {
-        diagnostics_.error(
-            DiagnosticCode::E0301, expression.range,
-            fmt::format("{} of type {} is expected, not {}", what, target.name, actual->name));
+    const sema::Type& from = program_.types().unranged(*actual);
+    if (sema::converts_implicitly(from, to) || sema::conforms(*actual, target)) {
+        return;
     }
+    if (const auto* integer = integer_literal(expression);
+        integer != nullptr && sema::is_integer(to) && std::string_view(what) != "a CASE label") {
+        diagnostics_.error(DiagnosticCode::E0311, expression.range,
+                           fmt::format("the value {}{} does not fit in {}",
+                                       integer->negative ? "-" : "", integer->magnitude, to.name));
+        return;
+    }
+    // An initial value is a constant of the variable's type (an enumeration value is its
+    // number where an integer is expected).
+    if (std::string_view(what) == "an initial value" && actual->kind == sema::TypeKind::Enum &&
+        sema::is_integer(to)) {
+        return;
+    }
+    diagnostics_.error(std::string_view(what) == "an initial value" &&
+                               target.kind != sema::TypeKind::Enum
+                           ? DiagnosticCode::E0313
+                           : DiagnosticCode::E0301,
+                       expression.range, mismatch(what, *actual, target));
 }
 
 void ExpressionTyper::store(const ast::Expression& expression, const sema::Type& target,
@@ -178,10 +343,28 @@ void ExpressionTyper::statement(const ast::Statement& statement) {
         [&](const auto& node) {
             using T = std::decay_t<decltype(node)>;
             if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
+                const auto* member = std::get_if<ast::MemberExpression>(&node.target->node);
+                if (member != nullptr && program_.model().enum_value(*node.target) != nullptr) {
+                    const auto* object = std::get_if<ast::NameExpression>(&member->object->node);
+                    diagnostics_.error(DiagnosticCode::E0204, member->object->range,
+                                       fmt::format("'{}' is not a variable",
+                                                   object != nullptr ? object->name.name : "?"));
+                    type(*node.value, nullptr);
+                    return;
+                }
+                if (!is_variable(*node.target) &&
+                    !std::holds_alternative<ast::BitAccessExpression>(node.target->node) &&
+                    !std::holds_alternative<ast::NameExpression>(node.target->node)) {
+                    diagnostics_.error(DiagnosticCode::E0315, node.target->range,
+                                       "this expression is not a variable");
+                    type(*node.value, nullptr);
+                    return;
+                }
                 if (const sema::Type* target = type(*node.target, nullptr)) {
                     store(*node.value, *target, "a value");
                 }
             } else if constexpr (std::is_same_v<T, ast::CallStatement>) {
+                statement_call_ = node.call.get();
                 type(*node.call, nullptr);
             } else if constexpr (std::is_same_v<T, ast::IfStatement>) {
                 for (const ast::ConditionalBlock& branch : node.branches) {
@@ -191,6 +374,15 @@ void ExpressionTyper::statement(const ast::Statement& statement) {
                 statements(node.else_body);
             } else if constexpr (std::is_same_v<T, ast::CaseStatement>) {
                 const sema::Type* selector = type(*node.selector, nullptr);
+                if (selector != nullptr && selector->kind != sema::TypeKind::Enum &&
+                    !sema::is_integer(program_.types().unranged(*selector)) &&
+                    !sema::is_bit_string(*selector)) {
+                    diagnostics_.error(
+                        DiagnosticCode::E0304, node.selector->range,
+                        fmt::format("a CASE selector must be an integer or enumeration, not {}",
+                                    selector->name));
+                    selector = nullptr;
+                }
                 for (const ast::CaseBranch& branch : node.branches) {
                     for (const ast::CaseLabel& label : branch.labels) {
                         for (const ast::ExpressionPtr* bound : {&label.low, &label.high}) {
@@ -251,7 +443,7 @@ const sema::Type* ExpressionTyper::type(const ast::Expression& expression,
                 type(*node.object, nullptr);
                 return &elementary(E::Bool);
             } else if constexpr (std::is_same_v<T, ast::IndexExpression>) {
-                return index(node);
+                return index(expression, node);
             } else if constexpr (std::is_same_v<T, ast::DereferenceExpression>) {
                 const sema::Type* reference = type(*node.reference, nullptr);
                 return reference != nullptr && reference->kind == sema::TypeKind::Reference
@@ -261,16 +453,19 @@ const sema::Type* ExpressionTyper::type(const ast::Expression& expression,
                 const sema::Type* target = type(*node.target, nullptr);
                 return target != nullptr ? &program_.types().reference(target) : nullptr;
             } else if constexpr (std::is_same_v<T, ast::CallExpression>) {
-                return call(expression, node, expected);
+                const bool statement = statement_call_ == &expression;
+                statement_call_ = nullptr;
+                const sema::Type* value = call(expression, node, expected);
+                if (value == nullptr && !statement && program_.call_target(expression) != nullptr) {
+                    return fail(DiagnosticCode::E0309, expression.range, "this call has no value");
+                }
+                return value;
             } else if constexpr (std::is_same_v<T, ast::UnaryExpression>) {
                 return unary(expression, node, expected);
             } else if constexpr (std::is_same_v<T, ast::BinaryExpression>) {
                 return binary(expression, node, expected);
             } else {
-                // 6.5.5: the size prefix is the type (X or none BOOL, B BYTE, W WORD, ...).
-                static constexpr E kBySize[] = {E::Bool, E::Bool,  E::Byte,
-                                                E::Word, E::Dword, E::Lword};
-                return &elementary(kBySize[static_cast<int>(node.address.size)]);
+                return &address_type(node.address);
             }
         },
         expression.node);
@@ -355,7 +550,12 @@ const sema::Type* ExpressionTyper::name(const ast::Expression& expression,
     if (symbol->kind == sema::SymbolKind::Pou && symbol->pou->kind == ast::PouKind::Program) {
         return program_.types().instance(*symbol->pou);
     }
-    return nullptr; // a type, POU or program instance named on its own
+    // A configuration's program instance (in a program connection, `P1.out`).
+    if (symbol->kind == sema::SymbolKind::ProgramInstance) {
+        return program_instance(*symbol->program_instance);
+    }
+    return fail(DiagnosticCode::E0204, expression.range,
+                fmt::format("'{}' is not a variable", symbol->name));
 }
 
 const sema::Type* ExpressionTyper::member(const ast::Expression& expression,
@@ -367,29 +567,52 @@ const sema::Type* ExpressionTyper::member(const ast::Expression& expression,
     if (object == nullptr) {
         return nullptr;
     }
-    if (const sema::Field* field = object->field(node.member.name)) {
-        return field->type;
+    const sema::Field* field =
+        object->kind == sema::TypeKind::Struct || object->kind == sema::TypeKind::Instance
+            ? object->field(node.member.name)
+            : nullptr;
+    if (field == nullptr) {
+        return fail(DiagnosticCode::E0206, node.member.range,
+                    fmt::format("'{}' has no member '{}'", object->name, node.member.name));
     }
-    return fail(DiagnosticCode::E0206, node.member.range,
-                fmt::format("{} has no member '{}'", object->name, node.member.name));
+    // 6.5.2.2: only inputs and outputs of an instance are visible outside it; a PROGRAM
+    // reached by its name shows all its variables but its in-outs and temporaries (CODESYS).
+    const bool program = names_program(*node.object);
+    const bool internal = program ? field->section == ast::VarSectionKind::InOut ||
+                                        field->section == ast::VarSectionKind::Temp ||
+                                        field->declaration == nullptr
+                                  : object->kind == sema::TypeKind::Instance &&
+                                        (field->section == ast::VarSectionKind::Var ||
+                                         field->section == ast::VarSectionKind::InOut);
+    if (internal) {
+        return fail(DiagnosticCode::E0212, node.member.range,
+                    fmt::format("'{}' is internal to '{}'", field->name, object->name));
+    }
+    return field->type;
 }
 
-const sema::Type* ExpressionTyper::index(const ast::IndexExpression& node) {
+const sema::Type* ExpressionTyper::index(const ast::Expression& expression,
+                                         const ast::IndexExpression& node) {
     const sema::Type* array = type(*node.array, nullptr);
     for (const ast::ExpressionPtr& index : node.indices) {
         const sema::Type* type = this->type(*index, nullptr);
         if (type != nullptr && !sema::is_integer(program_.types().unranged(*type)) &&
             type->kind != sema::TypeKind::Enum) {
-            diagnostics_.error(DiagnosticCode::E0307, index->range,
-                               fmt::format("an array index is an integer, not {}", type->name));
+            diagnostics_.error(
+                DiagnosticCode::E0307, index->range,
+                fmt::format("an array index must be an integer, not {}", type->name));
         }
     }
     if (array == nullptr) {
         return nullptr;
     }
     if (array->kind != sema::TypeKind::Array) {
-        return fail(DiagnosticCode::E0308, node.array->range,
+        return fail(DiagnosticCode::E0308, expression.range,
                     fmt::format("{} is not an array", array->name));
+    }
+    if (node.indices.size() != array->dimensions.size()) {
+        return fail(DiagnosticCode::E0308, expression.range,
+                    fmt::format("{} needs {} indices", array->name, array->dimensions.size()));
     }
     return array->element;
 }
@@ -405,13 +628,13 @@ const sema::Type* ExpressionTyper::unary(const ast::Expression& expression,
     if (node.op == ast::UnaryOperator::Not) {
         if (!sema::is_bool(plain) && !sema::is_bit_string(plain) && !sema::is_integer(plain)) {
             return fail(DiagnosticCode::E0304, expression.range,
-                        fmt::format("NOT needs BOOL or bits, not {}", plain.name));
+                        fmt::format("NOT needs a BOOL or bit string, not {}", plain.name));
         }
         return &plain;
     }
     if (!sema::is_numeric(plain) && plain.elementary != E::Time && plain.elementary != E::Ltime) {
         return fail(DiagnosticCode::E0304, expression.range,
-                    fmt::format("a sign needs a number, not {}", plain.name));
+                    fmt::format("'-' needs a number, not {}", plain.name));
     }
     return &plain;
 }
@@ -425,17 +648,36 @@ const sema::Type* ExpressionTyper::common(const sema::Type& a, const sema::Type&
     if (sema::converts_implicitly(y, x)) {
         return &x;
     }
-    for (const E e : {E::Int, E::Dint, E::Lint, E::Lreal, E::Word, E::Dword, E::Lword}) {
-        const sema::Type& candidate = elementary(e);
-        if (sema::converts_implicitly(x, candidate) && sema::converts_implicitly(y, candidate)) {
-            return &candidate;
-        }
-    }
     return nullptr;
 }
 
+const sema::Type* ExpressionTyper::time_arithmetic(ast::BinaryOperator op, const sema::Type& left,
+                                                   const sema::Type& right,
+                                                   const SourceRange& range) {
+    // 6.6.2.5.5 table 30: durations add and subtract, a point in time moves by a duration (a
+    // TIME_OF_DAY wraps around midnight), two points of one type subtract to a duration.
+    using Op = ast::BinaryOperator;
+    const auto duration = [](const sema::Type& type) {
+        return type.kind == sema::TypeKind::Elementary &&
+               (type.elementary == E::Time || type.elementary == E::Ltime);
+    };
+    const bool add_or_subtract = op == Op::Add || op == Op::Subtract;
+    if (add_or_subtract && duration(right) && left.elementary != E::Date) {
+        return &left;
+    }
+    if (op == Op::Subtract && left.kind == right.kind && left.elementary == right.elementary) {
+        return &elementary(left.elementary == E::Ltime || left.elementary == E::Ldt ? E::Ltime
+                                                                                    : E::Time);
+    }
+    return fail(DiagnosticCode::E0303, range,
+                fmt::format("this operation is not defined on {} and {} (use the functions of "
+                            "IEC 61131-3 table 30)",
+                            left.name, right.name));
+}
+
 const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression*>& operands,
-                                         const sema::Type* expected, const SourceRange& range) {
+                                         const sema::Type* expected, const SourceRange& range,
+                                         const sema::Type* first) {
     // Typed operands first; the untyped literals then take their common type.
     const sema::Type* result = nullptr;
     bool failed = false;
@@ -448,7 +690,9 @@ const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression
             if (literals && result != nullptr && !numeric_context(result)) {
                 context = nullptr;
             }
-            const sema::Type* type = this->type(*operand, context);
+            const sema::Type* type = first != nullptr && operand == operands.front()
+                                         ? first
+                                         : this->type(*operand, context);
             if (type == nullptr) {
                 failed = true;
                 continue;
@@ -462,9 +706,9 @@ const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression
             } else if (const sema::Type* both = common(*result, *type)) {
                 result = both;
             } else {
-                diagnostics_.error(
-                    DiagnosticCode::E0303, range,
-                    fmt::format("{} and {} have no common type", result->name, type->name));
+                diagnostics_.error(DiagnosticCode::E0303, range,
+                                   fmt::format("operands of types {} and {} do not match",
+                                               result->name, type->name));
                 failed = true;
             }
         }
@@ -514,35 +758,58 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
         const sema::Type* operands = unify({node.left.get(), node.right.get()}, expected, range);
         if (operands != nullptr && !sema::is_bool(*operands) && !sema::is_bit_string(*operands) &&
             !sema::is_integer(*operands)) {
-            return fail(DiagnosticCode::E0304, range,
-                        fmt::format("AND, OR and XOR need BOOL or bits, not {}", operands->name));
+            return fail(
+                DiagnosticCode::E0304, range,
+                fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", operands->name));
         }
         return operands;
     }
     default:
         break;
     }
-    // TIME * ANY_NUM and TIME / ANY_NUM (table 30).
-    if (node.op == Op::Multiply || node.op == Op::Divide) {
-        const sema::Type* left =
-            is_untyped_literal(*node.left) ? nullptr : type(*node.left, nullptr);
-        if (left != nullptr && sema::is_time_like(*left)) {
+    // The left operand decides first whether this is a TIME scaled by a number (table 30) or
+    // a pointer moved by a number of bytes.
+    const sema::Type* left = nullptr;
+    if (node.op != Op::Modulo && !is_untyped_literal(*node.left)) {
+        const bool scale = node.op == Op::Multiply || node.op == Op::Divide;
+        left = type(*node.left, scale ? nullptr : expected);
+        if (left == nullptr) {
+            type(*node.right, nullptr);
+            return nullptr;
+        }
+        if (scale && (left->elementary == E::Time || left->elementary == E::Ltime) &&
+            left->kind == sema::TypeKind::Elementary) {
             const sema::Type* factor = type(*node.right, &elementary(E::Lint));
             if (factor != nullptr && !sema::is_numeric(*factor)) {
-                return fail(DiagnosticCode::E0304, range,
-                            fmt::format("a TIME is scaled by a number, not {}", factor->name));
+                return fail(DiagnosticCode::E0304, node.right->range,
+                            fmt::format("a TIME is multiplied or divided by a number, not {}",
+                                        factor->name));
             }
-            return left;
+            return factor != nullptr ? left : nullptr;
+        }
+        if (!scale && left->kind == sema::TypeKind::Reference) {
+            const sema::Type* bytes = type(*node.right, &elementary(E::Lint));
+            if (bytes != nullptr && !sema::is_integer(program_.types().unranged(*bytes))) {
+                return fail(DiagnosticCode::E0304, node.right->range,
+                            fmt::format("a pointer moves by a whole number of bytes, not by a {}",
+                                        bytes->name));
+            }
+            return bytes != nullptr ? left : nullptr;
+        }
+        if (!scale && sema::is_time_like(*left)) {
+            const sema::Type* right = type(*node.right, nullptr);
+            return right != nullptr ? time_arithmetic(node.op, *left, *right, range) : nullptr;
         }
     }
-    const sema::Type* operands = unify({node.left.get(), node.right.get()}, expected, range);
+    const sema::Type* operands = unify({node.left.get(), node.right.get()}, expected, range, left);
     if (operands == nullptr) {
         return nullptr;
     }
-    if (sema::is_numeric(*operands) || sema::is_bit_string(*operands)) {
-        return operands;
+    if (node.op == Op::Modulo && !sema::is_integer(*operands) && !sema::is_bit_string(*operands)) {
+        return fail(DiagnosticCode::E0304, range,
+                    fmt::format("MOD needs integers, not {}", operands->name));
     }
-    if (sema::is_time_like(*operands) && (node.op == Op::Add || node.op == Op::Subtract)) {
+    if (sema::is_numeric(*operands) || sema::is_bit_string(*operands)) {
         return operands;
     }
     return fail(DiagnosticCode::E0304, range,
@@ -556,8 +823,10 @@ std::vector<const ast::Argument*> ExpressionTyper::inputs(const ast::CallExpress
                               sema::fold_case(argument.name->name) == "ENO")) {
             if (argument.kind == ast::Argument::Kind::Input) {
                 condition(*argument.value);
-            } else {
-                type(*argument.value, nullptr);
+            } else if (const sema::Type* eno = type(*argument.value, nullptr);
+                       eno != nullptr && !sema::is_bool(*eno)) {
+                diagnostics_.error(DiagnosticCode::E0301, argument.value->range,
+                                   fmt::format("ENO needs a BOOL variable, not {}", eno->name));
             }
             continue;
         }
@@ -584,11 +853,26 @@ const sema::Type* ExpressionTyper::call(const ast::Expression& expression,
             return standard_call(expression, node, upper, expected);
         }
     }
+    if (const auto* callee = std::get_if<ast::NameExpression>(&node.callee->node)) {
+        const sema::Symbol* symbol = program_.model().resolved(callee->name);
+        if (symbol != nullptr && (symbol->kind == sema::SymbolKind::StandardFunctionBlock ||
+                                  (symbol->kind == sema::SymbolKind::Pou &&
+                                   symbol->pou->kind == ast::PouKind::FunctionBlock))) {
+            inputs(node);
+            return fail(DiagnosticCode::E0204, expression.range,
+                        fmt::format("'{}' is a {} type: call an instance of it", symbol->name,
+                                    symbol->kind == sema::SymbolKind::Pou ? "FUNCTION_BLOCK"
+                                                                          : "function block"));
+        }
+    }
     const sema::Type* instance = type(*node.callee, nullptr);
-    if (instance == nullptr || instance->kind != sema::TypeKind::Instance ||
-        instance->pou == nullptr) {
+    if (instance == nullptr) {
+        return nullptr;
+    }
+    if (instance->kind != sema::TypeKind::Instance || instance->pou == nullptr) {
         return fail(DiagnosticCode::E0204, node.callee->range,
-                    "only functions and FB instances can be called");
+                    fmt::format("a {} cannot be called: it is not a function block instance",
+                                instance->name));
     }
     return pou_call(expression, node, *instance->pou, instance);
 }
@@ -608,6 +892,7 @@ const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
         }
     }
     std::size_t next = 0;
+    const std::string& callee = instance != nullptr ? instance->name : pou.name.name;
     for (const ast::Argument* argument : inputs(node)) {
         const sema::Field* field = nullptr;
         if (argument->name) {
@@ -615,13 +900,49 @@ const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
         } else if (next < positional.size()) {
             field = positional[next++];
         }
+        const bool output = argument->kind == ast::Argument::Kind::Output;
         if (field == nullptr) {
             type(*argument->value, nullptr);
-            diagnostics_.error(DiagnosticCode::E0210, argument->range,
-                               fmt::format("{} has no such parameter", pou.name.name));
+            // An FB's positional arguments are the checking stage's (E0415).
+            if (argument->name || instance == nullptr) {
+                diagnostics_.error(
+                    argument->name ? DiagnosticCode::E0210 : DiagnosticCode::E0306, argument->range,
+                    argument->name ? fmt::format("'{}' has no {} '{}'", callee,
+                                                 output ? "output" : "input", argument->name->name)
+                                   : fmt::format("too many arguments for '{}'", callee));
+            }
             continue;
         }
-        if (argument->kind == ast::Argument::Kind::Output) {
+        if (output != (field->section == ast::VarSectionKind::Output) ||
+            (field->section != ast::VarSectionKind::Input &&
+             field->section != ast::VarSectionKind::InOut &&
+             field->section != ast::VarSectionKind::Output)) {
+            type(*argument->value, nullptr);
+            diagnostics_.error(DiagnosticCode::E0210, argument->range,
+                               fmt::format("'{}' is not an {} of '{}'", field->name,
+                                           output ? "output" : "input", callee));
+            continue;
+        }
+        if ((output || field->section == ast::VarSectionKind::InOut) &&
+            !is_variable(*argument->value)) {
+            type(*argument->value, nullptr);
+            diagnostics_.error(DiagnosticCode::E0315, argument->value->range,
+                               "this expression is not a variable");
+            continue;
+        }
+        if (field->type->generic) {
+            // ANY (a native function's): an elementary value or a string, with its own type.
+            const sema::Type* actual = type(*argument->value, nullptr);
+            if (actual != nullptr && actual->kind != sema::TypeKind::Elementary &&
+                actual->kind != sema::TypeKind::Enum && actual->kind != sema::TypeKind::String) {
+                diagnostics_.error(
+                    DiagnosticCode::E0305, argument->value->range,
+                    fmt::format("ANY takes an elementary value or a string, not a {}",
+                                actual->name));
+            }
+            continue;
+        }
+        if (output) {
             const sema::Type* target = type(*argument->value, nullptr);
             if (target != nullptr && !sema::converts_implicitly(*field->type, *target)) {
                 diagnostics_.error(DiagnosticCode::E0301, argument->range,
@@ -641,8 +962,7 @@ const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
                 !sema::conforms(*actual, formal) &&
                 !(actual->kind == sema::TypeKind::String && formal.kind == actual->kind)) {
                 diagnostics_.error(DiagnosticCode::E0302, argument->range,
-                                   fmt::format("VAR_IN_OUT {} takes a {}, not a {}", field->name,
-                                               formal.name, actual->name));
+                                   in_out_mismatch(*field, formal));
             }
         } else {
             store(*argument->value, *field->type, "an input");
@@ -711,6 +1031,10 @@ const sema::Type* ExpressionTyper::conversion(const ast::Expression& expression,
     }
     if (source == nullptr) {
         return nullptr;
+    }
+    if (!converts_explicitly(program_.types().unranged(*source), *result)) {
+        return fail(DiagnosticCode::E0310, expression.range,
+                    fmt::format("{} cannot be converted to {}", source->name, result->name));
     }
     target.operand = &program_.types().unranged(*source);
     target.result = result;

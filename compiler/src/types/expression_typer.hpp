@@ -7,6 +7,8 @@
 #include "eposp/compiler/types/typed_program.hpp"
 
 #include <optional>
+#include <set>
+#include <string>
 #include <vector>
 
 namespace eposp::compiler::types {
@@ -27,6 +29,17 @@ private:
     void statements(const ast::StatementList& list);
     void statement(const ast::Statement& statement);
     void initializer(const ast::Initializer& initializer, const sema::Type* target);
+    /// A configuration's program instance: its program's instance type (null: none).
+    const sema::Type* program_instance(const ast::ProgramInstance& instance);
+    void connections(const ast::ProgramInstance& instance);
+    /// The VAR_ACCESS paths of a configuration (access_paths.cpp).
+    void access_paths(const ast::Configuration& configuration);
+    void access_path(const ast::Configuration& configuration,
+                     const ast::AccessDeclaration& declaration, std::set<std::string>& names);
+    /// The type of the variable an access path names; null (reported) when there is none.
+    const sema::Type* access_path_target(const ast::Configuration& configuration,
+                                         const ast::AccessDeclaration& declaration);
+    const sema::Type& address_type(const ast::DirectAddress& address);
     void condition(const ast::Expression& expression);
     /// Types `expression` where a value of `target` is expected, and checks that it converts.
     void expect(const ast::Expression& expression, const sema::Type& target, const char* what);
@@ -39,7 +52,7 @@ private:
                               const sema::Type* expected);
     const sema::Type* name(const ast::Expression& expression, const ast::NameExpression& node);
     const sema::Type* member(const ast::Expression& expression, const ast::MemberExpression& node);
-    const sema::Type* index(const ast::IndexExpression& node);
+    const sema::Type* index(const ast::Expression& expression, const ast::IndexExpression& node);
     const sema::Type* unary(const ast::Expression& expression, const ast::UnaryExpression& node,
                             const sema::Type* expected);
     const sema::Type* binary(const ast::Expression& expression, const ast::BinaryExpression& node,
@@ -56,11 +69,20 @@ private:
 
     /// Both operands of a binary operator (or all inputs of a generic function) typed and
     /// brought to their common type; untyped literals take the others' type.
+    /// `first`: the type of the first operand when it is already typed.
     const sema::Type* unify(const std::vector<const ast::Expression*>& operands,
-                            const sema::Type* expected, const SourceRange& range);
+                            const sema::Type* expected, const SourceRange& range,
+                            const sema::Type* first = nullptr);
+    /// A point in time or duration (`left`) added to or subtracted from `right`.
+    const sema::Type* time_arithmetic(ast::BinaryOperator op, const sema::Type& left,
+                                      const sema::Type& right, const SourceRange& range);
     /// The smallest type both convert to implicitly (figure 11); null if there is none.
     const sema::Type* common(const sema::Type& a, const sema::Type& b);
     const sema::Type* variable_type(const sema::Symbol& symbol);
+    /// Whether `expression` names a variable: what an output or a VAR_IN_OUT takes.
+    bool is_variable(const ast::Expression& expression) const;
+    /// Whether `expression` is a PROGRAM's name (`P.x`).
+    bool names_program(const ast::Expression& expression) const;
     /// The arguments of a call except EN and ENO, in order.
     std::vector<const ast::Argument*> inputs(const ast::CallExpression& node);
     void fold(const ast::Expression& expression, const sema::Type& type);
@@ -71,6 +93,8 @@ private:
     TypedProgram& program_;
     Diagnostics& diagnostics_;
     const ast::Pou* current_ = nullptr;
+    /// The call of the CallStatement being typed: it needs no value.
+    const ast::Expression* statement_call_ = nullptr;
 };
 
 /// An integer or real literal without a type prefix, or the negation of one: it takes the type

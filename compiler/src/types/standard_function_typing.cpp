@@ -64,10 +64,36 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
                                                  const sema::Type* expected) {
     inputs(node); // EN and ENO
     std::vector<const ast::Expression*> values;
-    for (const ast::Argument* argument : standard_arguments(name, node)) {
+    const auto arguments = standard_arguments(name, node);
+    for (const ast::Argument& argument : node.arguments) {
+        // An input that names no input of this function, or one past those given.
+        if (argument.name &&
+            std::find(arguments.begin(), arguments.end(), &argument) == arguments.end()) {
+            const std::string input = sema::fold_case(argument.name->name);
+            const auto same = [&](const ast::Argument& other) {
+                return &other != &argument && other.name &&
+                       sema::fold_case(other.name->name) == input;
+            };
+            if (std::any_of(node.arguments.begin(), node.arguments.end(), same)) {
+                return nullptr; // an input given twice: the checking stage's (E0414)
+            }
+            if (input != "EN" && input != "ENO") {
+                return fail(DiagnosticCode::E0210, argument.range,
+                            fmt::format("{} has no input '{}' here", name, argument.name->name));
+            }
+        }
+    }
+    for (const ast::Argument* argument : arguments) {
         if (argument == nullptr) {
-            return fail(DiagnosticCode::E0210, expression.range,
-                        fmt::format("{} has no such input", name));
+            // A gap: an input named twice (the checking stage's E0414) or one past the others.
+            const auto named = std::find_if(arguments.rbegin(), arguments.rend(),
+                                            [](const ast::Argument* a) { return a; });
+            if (named != arguments.rend()) {
+                return fail(DiagnosticCode::E0210, (*named)->range,
+                            fmt::format("{} has no input '{}' here", name,
+                                        (*named)->name ? (*named)->name->name : "?"));
+            }
+            return nullptr;
         }
         values.push_back(argument->value.get());
     }
@@ -90,8 +116,9 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
     const auto string = [&](const ast::Expression& value) {
         const sema::Type* type = this->type(value, nullptr);
         if (type != nullptr && type->kind != sema::TypeKind::String) {
-            diagnostics_.error(DiagnosticCode::E0305, value.range,
-                               fmt::format("{} needs a string, not {}", name, type->name));
+            diagnostics_.error(
+                DiagnosticCode::E0305, value.range,
+                fmt::format("{} needs a STRING or WSTRING here, not {}", name, type->name));
             return static_cast<const sema::Type*>(nullptr);
         }
         return type;
@@ -207,6 +234,11 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
             if (text == nullptr) {
                 return nullptr;
             }
+            if (i > 0 && text->wide != wide) {
+                return fail(DiagnosticCode::E0305, values[i]->range,
+                            fmt::format("{} needs a {} here, not {}", name,
+                                        wide ? "WSTRING" : "STRING", text->name));
+            }
             wide = text->wide;
             capacity = texts > 2 || name == "INSERT" || name == "REPLACE"
                            ? capacity + text->capacity
@@ -221,8 +253,20 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
         if (!count(2, 2)) {
             return nullptr;
         }
-        type(*values[0], nullptr);
-        integer(*values[1]);
+        const sema::Type* array = type(*values[0], nullptr);
+        type(*values[1], &elementary(E::Dint));
+        if (array != nullptr && array->kind != sema::TypeKind::Array) {
+            return fail(DiagnosticCode::E0305, values[0]->range,
+                        fmt::format("{} needs an array, not {}", name, array->name));
+        }
+        const auto dimension = program_.types().fold_integer(*values[1]);
+        if (array != nullptr &&
+            (!dimension || *dimension < 1 ||
+             *dimension > static_cast<std::int64_t>(array->dimensions.size()))) {
+            return fail(DiagnosticCode::E0313, values[1]->range,
+                        fmt::format("the dimension must be a constant from 1 to {}",
+                                    array->dimensions.size()));
+        }
         result = &elementary(E::Dint);
     } else if (const auto time = time_function(name)) {
         // Table 30: fixed signatures; MUL_TIME and DIV_TIME scale by any number.

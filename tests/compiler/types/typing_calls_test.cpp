@@ -84,9 +84,9 @@ PROGRAM Main
 END_PROGRAM
 )");
     EXPECT_FALSE(t->front_end->program);
-    EXPECT_NE(t->errors().find("an input of type INT is expected, not DINT"), std::string::npos)
+    EXPECT_NE(t->errors().find("a DINT value cannot be used as INT"), std::string::npos)
         << t->errors();
-    EXPECT_NE(t->errors().find("VAR_IN_OUT b takes a INT, not a DINT"), std::string::npos)
+    EXPECT_NE(t->errors().find("VAR_IN_OUT 'b' needs a INT variable [E0302]"), std::string::npos)
         << t->errors();
 }
 
