@@ -9,10 +9,9 @@ namespace eposp::compiler::checks {
 
 CallGraph::CallGraph(const types::TypedProgram& program,
                      std::span<const ast::CompilationUnit> units, std::size_t linked) {
-    std::unordered_set<const ast::Pou*> library;
     for (const ast::CompilationUnit& unit : units.last(linked)) {
         for (const ast::Pou& pou : unit.pous) {
-            library.insert(&pou);
+            library_.insert(&pou);
         }
     }
     for (const ast::CompilationUnit& unit : units.first(units.size() - linked)) {
@@ -37,7 +36,8 @@ CallGraph::CallGraph(const types::TypedProgram& program,
                 callees.push_back(callee);
             }
             // A library POU without statements is native: there is no body to check.
-            if (library.contains(callee) && !callee->body.empty() && listed.insert(callee).second) {
+            if (library_.contains(callee) && !callee->body.empty() &&
+                listed.insert(callee).second) {
                 pous_.push_back(callee);
             }
         });

@@ -8,6 +8,7 @@
 
 #include <span>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace eposp::compiler::checks {
@@ -23,10 +24,16 @@ public:
     const std::vector<const ast::Pou*>& pous() const { return pous_; }
     /// Whether `pou` is among pous().
     bool runs(const ast::Pou& pou) const { return callees_.contains(&pou); }
+    /// Whether `pou` is native: a POU without statements in a linked library, whose body the
+    /// host provides (docs/runtime.md, "Native functions", "Native function blocks").
+    bool is_native(const ast::Pou& pou) const {
+        return pou.body.empty() && library_.contains(&pou);
+    }
     /// The user FUNCTIONs, FBs and PROGRAMs `pou` calls, each once, as first called.
     const std::vector<const ast::Pou*>& callees(const ast::Pou& pou) const;
 
 private:
+    std::unordered_set<const ast::Pou*> library_;
     std::vector<const ast::Pou*> pous_;
     std::unordered_map<const ast::Pou*, std::vector<const ast::Pou*>> callees_;
 };

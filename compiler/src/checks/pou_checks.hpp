@@ -13,6 +13,7 @@ namespace eposp::compiler::checks {
 struct PouUnderCheck {
     types::TypedProgram& program;
     const ast::Pou& pou;
+    const CallGraph& calls;
     Diagnostics& diagnostics;
 };
 
@@ -65,6 +66,37 @@ void check_tasks(types::TypedProgram& program, std::span<const ast::CompilationU
 void check_program_connections(types::TypedProgram& program,
                                std::span<const ast::CompilationUnit> units,
                                Diagnostics& diagnostics);
+/// E0401: an assignment to (or ENO => binding of) what the POU cannot write: a constant, an
+/// output of another instance, a direct input address (writable_targets.hpp).
+void check_writable_targets(const PouUnderCheck& check);
+/// E0401: a READ_WRITE access path to a constant or a direct input address.
+void check_writable_access_paths(types::TypedProgram& program,
+                                 std::span<const ast::CompilationUnit> units,
+                                 Diagnostics& diagnostics);
+/// E0413: a call that leaves a VAR_IN_OUT (or a native function's ANY input) unconnected.
+void check_in_out_connections(const PouUnderCheck& check);
+/// E0414: a call that gives a parameter twice.
+void check_repeated_parameters(const PouUnderCheck& check);
+/// E0415: EN and ENO of the wrong form or in a positional call, positional arguments of an FB
+/// call, a standard function's call that names some inputs but not all.
+void check_call_forms(const PouUnderCheck& check);
+/// E0411: more initial values than an array has elements.
+void check_initial_value_counts(const ProgramUnderCheck& check,
+                                std::span<const ast::CompilationUnit> units);
+/// E0419: a native function's interface (of `linked`, the linked libraries' files) or a called
+/// native block's that the native ABI cannot pass (native_interfaces.hpp).
+void check_native_interfaces(const ProgramUnderCheck& check,
+                             std::span<const ast::CompilationUnit> linked);
+/// E0420: a located variable or a direct address in code that does not fit its address.
+void check_located_variables(const ProgramUnderCheck& check,
+                             std::span<const ast::CompilationUnit> units);
+/// E0422: a PROGRAM used by its name that the configuration gives several instances, or whose
+/// name an instance of another type has.
+void check_program_instances(const ProgramUnderCheck& check,
+                             std::span<const ast::CompilationUnit> units);
+/// W0407: no task in the image (no PROGRAM, or a configuration without TASK or instance).
+void check_runnable_programs(const types::TypedProgram& program,
+                             std::span<const ast::CompilationUnit> units, Diagnostics& diagnostics);
 /// E0407: a POU that calls itself, directly or through others (6.6.1.1).
 void check_recursion(const CallGraph& calls, Diagnostics& diagnostics);
 

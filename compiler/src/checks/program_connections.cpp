@@ -1,4 +1,4 @@
-// E0423: what a program connection (IEC 61131-3 ed. 3, 6.8.2: `PROGRAM inst WITH t : P
+// E0423, E0401: what a program connection (IEC 61131-3 ed. 3, 6.8.2: `PROGRAM inst WITH t : P
 // (in := source, out => sink)`) may name. An input reads a global variable or a part of one, a
 // constant, a direct address or an output of another program instance; an output writes a
 // global variable or a part of one, or a direct output or memory address.
@@ -7,6 +7,9 @@
 
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
+#include "writable_targets.hpp"
+
+#include <fmt/format.h>
 
 namespace eposp::compiler::checks {
 namespace {
@@ -39,6 +42,12 @@ void check_connections(types::TypedProgram& program, const ast::ProgramInstance&
                                      : "an input connects to a global variable (or a part of "
                                        "one), a constant, a direct address or an output of "
                                        "another program");
+        } else if (auto note = output ? unwritable(program, *argument.value) : std::nullopt) {
+            Diagnostic diagnostic{
+                DiagnosticCode::E0401, argument.value->range,
+                fmt::format("'{}' cannot be connected to a constant", field->name)};
+            diagnostic.notes.push_back(std::move(*note));
+            diagnostics.report(std::move(diagnostic));
         }
     }
 }

@@ -68,10 +68,7 @@ void ProgramGenerator::publish_access_path(const ast::Configuration& configurati
         return;
     }
     if (declaration.writable && !target->writable) {
-        diagnostics_.error(DiagnosticCode::E0401, declaration.range,
-                           fmt::format("the access path '{}' names a constant: it can only be "
-                                       "READ_ONLY",
-                                       declaration.name.name));
+        refused_by_checks(DiagnosticCode::E0401); // checks/writable_targets.cpp
         return;
     }
     builder_.symbol(declaration.name.name, type_descriptor(*target->type), target->operand.offset(),

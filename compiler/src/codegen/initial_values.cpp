@@ -289,8 +289,7 @@ void ProgramGenerator::apply_initializer(const sema::Type& type,
             }
             for (std::int64_t i = 0; i < repeat; ++i, ++next) {
                 if (next >= count) {
-                    diagnostics_.error(DiagnosticCode::E0411, initializer.range,
-                                       fmt::format("too many initial values for {}", type.name));
+                    refused_by_checks(DiagnosticCode::E0411); // checks/initial_value_counts.cpp
                     return;
                 }
                 if (element.value) {

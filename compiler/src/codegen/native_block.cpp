@@ -6,8 +6,6 @@
 #include "eposp/compiler/sema/type.hpp"
 #include "pou_generator.hpp"
 
-#include <fmt/format.h>
-
 namespace eposp::compiler::codegen {
 
 using vm::Operand;
@@ -17,12 +15,9 @@ void PouGenerator::call_native_block() {
     vm::NativeSignature signature{.parameters = {vm::Scalar::Ptr}};
     for (const sema::Field& field : instance.fields) {
         const bool by_reference = field.section == ast::VarSectionKind::InOut;
-        if (!by_reference && !sema::is_scalar(*field.type)) {
-            error(DiagnosticCode::E0419, field.declaration->range,
-                  fmt::format("'{}' of the native block '{}' is a {}: a native block's variables "
-                              "are elementary or VAR_IN_OUT",
-                              field.name, pou_.name.name, field.type->name));
-            continue;
+        if (!checks::is_native_block_variable(field)) {
+            program_.refused_by_checks(DiagnosticCode::E0419); // checks/native_interfaces.cpp
+            return;
         }
         signature.instance.push_back(by_reference ? vm::Scalar::Ptr : sema::scalar_of(*field.type));
     }

@@ -27,26 +27,12 @@ static_assert(static_cast<int>(vm::NativeType::String) ==
 static_assert(static_cast<int>(vm::NativeType::Wchar) ==
               static_cast<int>(ast::ElementaryType::Wchar));
 
-/// An elementary value (an enumeration, a subrange), passed by value.
-bool is_elementary_value(const sema::Type& type) {
-    return type.kind == sema::TypeKind::Elementary || type.kind == sema::TypeKind::Enum;
-}
-
-/// What an ANY input and an ARRAY[*]'s element may be.
-bool is_any_value(const sema::Type& type) {
-    return is_elementary_value(type) || type.kind == sema::TypeKind::String;
-}
-
 vm::NativeType native_type(const sema::Type& type) {
     if (type.kind == sema::TypeKind::String) {
         return type.wide ? vm::NativeType::Wstring : vm::NativeType::String;
     }
     return static_cast<vm::NativeType>(type.elementary); // an enumeration's is its base
 }
-
-constexpr std::string_view kSupported =
-    "a native function takes VAR_INPUTs of elementary types, STRING, WSTRING or ANY, and "
-    "VAR_IN_OUTs of ARRAY[*] OF an elementary type or a string";
 
 } // namespace
 
@@ -59,56 +45,33 @@ const NativeFunctionInterface* ProgramGenerator::native_function(const ast::Pou&
         return it->second ? &*it->second : nullptr;
     }
     auto& entry = native_functions_[&pou];
-    const std::size_t errors = diagnostics_.error_count();
     NativeFunctionInterface native;
     const sema::Type& frame = *types_.frame(pou);
     for (const sema::Field& field : frame.fields) {
         if (field.declaration == nullptr) { // the result
-            if (!sema::is_scalar(*field.type) || field.type->kind == sema::TypeKind::Reference) {
-                diagnostics_.error(DiagnosticCode::E0419, pou.return_type->range,
-                                   fmt::format("the native function '{}' returns a {}: a native "
-                                               "function returns an elementary value or nothing",
-                                               pou.name.name, field.type->name));
-                continue;
+            if (!checks::is_native_result(*field.type)) {
+                refused_by_checks(DiagnosticCode::E0419); // checks/native_interfaces.cpp
+                return nullptr;
             }
             native.result = field.type;
             native.signature.has_result = true;
             native.signature.result = sema::scalar_of(*field.type);
             continue;
         }
-        NativeParameter parameter{&field, NativeParameter::Kind::Value,
-                                  native.signature.parameters.size()};
-        const sema::Type& type = *field.type;
-        if (field.section == ast::VarSectionKind::Input && is_elementary_value(type)) {
-            native.signature.parameters.push_back(sema::scalar_of(type));
-        } else if (field.section == ast::VarSectionKind::Input &&
-                   type.kind == sema::TypeKind::String) {
-            parameter.kind = NativeParameter::Kind::String;
-            native.signature.parameters.push_back(vm::Scalar::Ptr);
-        } else if (field.section == ast::VarSectionKind::Input && type.generic) {
-            parameter.kind = NativeParameter::Kind::Any;
-            native.signature.parameters.push_back(vm::Scalar::Ptr);
-            native.signature.parameters.push_back(vm::Scalar::U32);
-        } else if (field.section == ast::VarSectionKind::InOut && type.conformant &&
-                   type.element->dimensions.size() == 1 && is_any_value(*type.element->element)) {
-            parameter.kind = NativeParameter::Kind::Array;
-            native.signature.parameters.push_back(vm::Scalar::Ptr);
-            native.signature.parameters.push_back(vm::Scalar::U32);
-        } else {
-            const bool in_out = field.section == ast::VarSectionKind::InOut;
-            diagnostics_.error(DiagnosticCode::E0419, field.declaration->range,
-                               fmt::format("'{}' of the native function '{}' is {}{}: {}",
-                                           field.name, pou.name.name,
-                                           field.section == ast::VarSectionKind::Input || in_out
-                                               ? (in_out ? "a VAR_IN_OUT of " : "a ")
-                                               : "not a VAR_INPUT: ",
-                                           in_out ? type.element->name : type.name, kSupported));
-            continue;
+        const auto kind = checks::native_parameter_kind(field);
+        if (!kind) {
+            refused_by_checks(DiagnosticCode::E0419);
+            return nullptr;
         }
-        native.parameters.push_back(parameter);
-    }
-    if (diagnostics_.error_count() != errors) {
-        return nullptr;
+        native.parameters.push_back({&field, *kind, native.signature.parameters.size()});
+        if (*kind == NativeParameter::Kind::Value) {
+            native.signature.parameters.push_back(sema::scalar_of(*field.type));
+        } else {
+            native.signature.parameters.push_back(vm::Scalar::Ptr);
+            if (*kind != NativeParameter::Kind::String) { // and the type's descriptor
+                native.signature.parameters.push_back(vm::Scalar::U32);
+            }
+        }
     }
     entry = std::move(native);
     return &*entry;
@@ -116,8 +79,7 @@ const NativeFunctionInterface* ProgramGenerator::native_function(const ast::Pou&
 
 std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function,
                                                         const ast::CallExpression& node,
-                                                        const Destination* dest,
-                                                        const SourceRange& range) {
+                                                        const Destination* dest) {
     const NativeFunctionInterface* native = program_.native_function(function);
     if (native == nullptr) {
         return std::nullopt; // reported at its declaration
@@ -145,8 +107,7 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
         }
         const auto& slot = given[static_cast<std::size_t>(it - parameters.begin())];
         if (slot != nullptr) {
-            error(DiagnosticCode::E0414, argument.range,
-                  fmt::format("'{}' is given twice", field->name));
+            program_.refused_by_checks(DiagnosticCode::E0414); // checks/repeated_parameters.cpp
             ok = false;
             continue;
         }
@@ -170,11 +131,7 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
             continue;
         }
         if (argument == nullptr) {
-            error(DiagnosticCode::E0413, range,
-                  fmt::format("{} '{}' of '{}' must be given",
-                              parameter.kind == NativeParameter::Kind::Any ? "the ANY input"
-                                                                           : "the VAR_IN_OUT",
-                              parameter.field->name, function.name.name));
+            program_.refused_by_checks(DiagnosticCode::E0413); // checks/in_out_connections.cpp
             return std::nullopt;
         }
         std::optional<Value> value;
@@ -219,7 +176,7 @@ std::optional<Value> PouGenerator::any_argument(const ast::Expression& expressio
     if (value && value->iec != nullptr) {
         value = value_as(*value, expression.range, *value->iec);
     }
-    if (value && !is_any_value(*value->type)) {
+    if (value && !checks::is_native_any_value(*value->type)) {
         error(
             DiagnosticCode::E0305, expression.range,
             fmt::format("ANY takes an elementary value or a string, not a {}", value->type->name));

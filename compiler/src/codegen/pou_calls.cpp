@@ -27,7 +27,7 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
         switch (symbol->kind) {
         case sema::SymbolKind::Pou:
             if (symbol->pou->kind == ast::PouKind::Function) {
-                return call_function(*symbol->pou, node, dest, range);
+                return call_function(*symbol->pou, node, dest);
             }
             if (symbol->pou->kind == ast::PouKind::Program) {
                 break; // its single instance is called, as CODESYS does
@@ -39,7 +39,7 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
         case sema::SymbolKind::StandardFunction:
             if (const ast::Pou* pou = program_.library_pou(symbol->name);
                 pou != nullptr && pou->kind == ast::PouKind::Function) {
-                return call_function(*pou, node, dest, range);
+                return call_function(*pou, node, dest);
             }
             return standard_function(sema::fold_case(symbol->name), node, hint, dest, range);
         case sema::SymbolKind::StandardFunctionBlock:
@@ -76,14 +76,13 @@ bool is_parameter(ast::VarSectionKind section) {
 
 std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                                                  const ast::CallExpression& node,
-                                                 const Destination* dest,
-                                                 const SourceRange& range) {
+                                                 const Destination* dest) {
     const sema::Type& frame = *types_.frame(function);
     if (program_.is_host_function(function)) {
         return call_host(function, frame, node, dest);
     }
     if (program_.is_native_function(function)) {
-        return call_native_function(function, node, dest, range);
+        return call_native_function(function, node, dest);
     }
     const std::uint32_t index = program_.pou_index(function);
     program_.calls(pou_, function);
@@ -152,9 +151,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
                                      [&](const Bound& b) { return b.field == &field; });
         if (it == bound.end()) {
             if (field.section == ast::VarSectionKind::InOut) {
-                error(DiagnosticCode::E0413, range,
-                      fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", field.name,
-                                  function.name.name));
+                program_.refused_by_checks(DiagnosticCode::E0413); // checks/in_out_connections.cpp
                 ok = false;
                 break;
             }
@@ -266,10 +263,12 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
         connected.push_back(field);
         if (field == nullptr) {
-            error(argument.name ? DiagnosticCode::E0210 : DiagnosticCode::E0415, argument.range,
-                  argument.name
-                      ? fmt::format("'{}' has no parameter '{}'", type.name, argument.name->name)
-                      : "a function block call needs formal arguments (IN := x)");
+            if (argument.name) {
+                error(DiagnosticCode::E0210, argument.range,
+                      fmt::format("'{}' has no parameter '{}'", type.name, argument.name->name));
+            } else {
+                program_.refused_by_checks(DiagnosticCode::E0415); // checks/call_forms.cpp
+            }
             continue;
         }
         const bool output = argument.kind == ast::Argument::Kind::Output;
@@ -307,8 +306,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
     for (const sema::Field& field : type.fields) {
         if (field.section == ast::VarSectionKind::InOut &&
             std::find(connected.begin(), connected.end(), &field) == connected.end()) {
-            error(DiagnosticCode::E0413, node.callee->range,
-                  fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", field.name, type.name));
+            program_.refused_by_checks(DiagnosticCode::E0413); // checks/in_out_connections.cpp
         }
     }
     if (instance.kind == Place::Kind::Direct) {

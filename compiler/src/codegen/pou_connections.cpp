@@ -73,8 +73,7 @@ void PouGenerator::connect_output(const sema::Field& field, const ast::Expressio
     const std::uint32_t mark = frame_top_;
     const auto target = place(sink);
     if (target && !target->writable) {
-        error(DiagnosticCode::E0401, sink.range,
-              fmt::format("'{}' cannot be connected to a constant", field.name));
+        program_.refused_by_checks(DiagnosticCode::E0401); // checks/program_connections.cpp
     } else if (target) {
         const Value output{Operand::self(field.offset), field.type};
         if (const auto value = value_as(output, sink.range, *target->type)) {

@@ -34,17 +34,14 @@ std::optional<PouGenerator::Enable> PouGenerator::enable_of(const ast::CallExpre
         const bool en = sema::fold_case(argument.name->name) == "EN";
         const auto kind = en ? ast::Argument::Kind::Input : ast::Argument::Kind::Output;
         if (argument.kind != kind) {
-            error(DiagnosticCode::E0415, argument.range,
-                  en ? "EN is an input: write EN := condition"
-                     : "ENO is an output: write ENO => variable");
+            program_.refused_by_checks(DiagnosticCode::E0415); // checks/call_forms.cpp
             ok = false;
         }
         (en ? enable.en : enable.eno) = &argument;
     }
     // EN and ENO belong to the formal form of a call (6.6.1.2.2).
     if (positional != nullptr && (enable.en != nullptr || enable.eno != nullptr)) {
-        error(DiagnosticCode::E0415, positional->range,
-              "EN and ENO need a formal call: name every input");
+        program_.refused_by_checks(DiagnosticCode::E0415);
         ok = false;
     }
     return ok ? std::optional(enable) : std::nullopt;
@@ -65,9 +62,7 @@ bool PouGenerator::with_enable(const Enable& enable, const std::function<void()>
             return false;
         }
         if (!eno->writable) {
-            error(DiagnosticCode::E0401, enable.eno->value->range,
-                  "ENO cannot be written to this variable (a constant, "
-                  "an input or an output of another instance)");
+            program_.refused_by_checks(DiagnosticCode::E0401); // checks/writable_targets.cpp
             return false;
         }
     }

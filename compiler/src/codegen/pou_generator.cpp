@@ -179,7 +179,7 @@ std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const So
         return program_.program_instance_variable(symbol.name); // a program connection's source
     }
     if (symbol.kind == sema::SymbolKind::Pou && symbol.pou->kind == ast::PouKind::Program) {
-        return program_.instance_of_program(*symbol.pou, range); // `P.x`, `P()` (CODESYS)
+        return program_.instance_of_program(*symbol.pou); // `P.x`, `P()` (CODESYS)
     }
     if (symbol.kind == sema::SymbolKind::Variable ||
         (symbol.kind == sema::SymbolKind::Pou && symbol.pou == &pou_)) {

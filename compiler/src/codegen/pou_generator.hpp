@@ -310,7 +310,7 @@ private:
     std::optional<Value> call_enabled(const ast::CallExpression& node, const sema::Type* hint,
                                       const Destination* dest, const SourceRange& range);
     std::optional<Value> call_function(const ast::Pou& function, const ast::CallExpression& node,
-                                       const Destination* dest, const SourceRange& range);
+                                       const Destination* dest);
     std::optional<Value> call_host(const ast::Pou& function, const sema::Type& frame,
                                    const ast::CallExpression& node, const Destination* dest);
     void call_instance(const Place& instance, const ast::CallExpression& node);
@@ -318,7 +318,7 @@ private:
     /// A call of a native function: one CallNative here, with its arguments in its block.
     std::optional<Value> call_native_function(const ast::Pou& function,
                                               const ast::CallExpression& node,
-                                              const Destination* dest, const SourceRange& range);
+                                              const Destination* dest);
     /// The value given to an ANY input: elementary or a string, of its own type.
     std::optional<Value> any_argument(const ast::Expression& expression);
     /// The U32 constant describing a value of `type` (vm::native_descriptor).

@@ -64,7 +64,7 @@ void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
         return;
     }
     if (!word_place->writable) {
-        error(DiagnosticCode::E0401, target.object->range, "this variable cannot be assigned here");
+        program_.refused_by_checks(DiagnosticCode::E0401); // checks/writable_targets.cpp
         return;
     }
     // word := (word AND NOT mask) OR (BOOL_TO_<word>(bit) << n)
@@ -91,9 +91,7 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
         return;
     }
     if (!target->writable) {
-        error(DiagnosticCode::E0401, node.target->range,
-              "this variable cannot be assigned here (a constant or an "
-              "output of another instance)");
+        program_.refused_by_checks(DiagnosticCode::E0401); // checks/writable_targets.cpp
         return;
     }
     if (target->type->kind == sema::TypeKind::Instance || target->type->conformant) {

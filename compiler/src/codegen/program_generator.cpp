@@ -1,12 +1,12 @@
 #include "program_generator.hpp"
 
+#include "../checks/located_variables.hpp"
 #include "constant_declarations.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "eposp/vm/image_limits.hpp"
 #include "pou_generator.hpp"
 
-#include <fmt/format.h>
-#include <fmt/ranges.h>
+#include <stdexcept>
 
 namespace eposp::compiler::codegen {
 
@@ -198,10 +198,7 @@ std::optional<vm::Image> ProgramGenerator::generate() {
     if (diagnostics_.has_errors()) {
         return std::nullopt;
     }
-    if (tasks_.empty()) {
-        diagnostics_.warning(DiagnosticCode::W0407, {},
-                             "there is no PROGRAM to run: the image has no task");
-    }
+    // No task at all (no PROGRAM) is the checks' warning W0407 (checks/runnable_programs.cpp).
     for (vm::Task& task : tasks_) {
         task.stack_size = static_cast<std::uint32_t>(stack_size()); // checked above
         builder_.task(std::move(task));
@@ -281,29 +278,20 @@ void ProgramGenerator::lay_out_global_section(
     }
 }
 
-std::optional<Place> ProgramGenerator::instance_of_program(const ast::Pou& program,
-                                                           const SourceRange& range) {
+std::optional<Place> ProgramGenerator::instance_of_program(const ast::Pou& program) {
     const auto it = instance_paths_.find(&program);
     if (it == instance_paths_.end()) {
         // Not instantiated by the configuration (or the configuration is ignored, as under
         // `eposp test`): one instance for the calls, watched by the program's name.
         if (instances_.contains(sema::fold_case(program.name.name))) {
-            diagnostics_.error(DiagnosticCode::E0422, range,
-                               fmt::format("'{}' cannot have an instance of its own name: "
-                                           "the configuration has a program instance "
-                                           "'{}' of another type",
-                                           program.name.name, program.name.name));
+            refused_by_checks(DiagnosticCode::E0422); // checks/program_instances.cpp
             return std::nullopt;
         }
         program_instance(program, program.name.name, false);
         return instances_.at(sema::fold_case(program.name.name));
     }
     if (it->second.size() > 1) {
-        diagnostics_.error(DiagnosticCode::E0422, range,
-                           fmt::format("'{}' has several instances in the configuration "
-                                       "({}): a call by the program's name needs exactly "
-                                       "one",
-                                       program.name.name, fmt::join(it->second, ", ")));
+        refused_by_checks(DiagnosticCode::E0422);
         return std::nullopt;
     }
     return instances_.at(sema::fold_case(it->second.front()));
@@ -530,36 +518,13 @@ std::optional<Place> ProgramGenerator::direct_variable(const ast::DirectAddress&
     if (const auto it = direct_variables_.find(key); it != direct_variables_.end()) {
         return it->second;
     }
-    using Size = ast::DirectAddress::Size;
-    ast::ElementaryType type = ast::ElementaryType::Bool;
-    switch (address.size) {
-    case Size::Byte:
-        type = ast::ElementaryType::Byte;
-        break;
-    case Size::Word:
-        type = ast::ElementaryType::Word;
-        break;
-    case Size::DoubleWord:
-        type = ast::ElementaryType::Dword;
-        break;
-    case Size::LongWord:
-        type = ast::ElementaryType::Lword;
-        break;
-    default:
-        break;
-    }
-    if (address.path.empty()) {
-        diagnostics_.error(DiagnosticCode::E0420, address.range,
-                           "an address used in code must be complete (not %I*)");
+    const sema::Type& variable = types_.elementary(checks::direct_address_type(address.size));
+    if (address.path.empty() || checks::location_mismatch(address, variable)) {
+        refused_by_checks(DiagnosticCode::E0420); // checks/located_variables.cpp
         return std::nullopt;
     }
-    const sema::Type& variable = types_.elementary(type);
     const std::uint32_t offset = builder_.allocate(variable.size, variable.align);
-    const std::size_t errors = diagnostics_.error_count();
     add_io_binding(address, variable, offset);
-    if (diagnostics_.error_count() != errors) {
-        return std::nullopt;
-    }
     // Inputs are read-only in code: the process image writes them.
     const Place place = Place::direct(variable, vm::Operand::global(offset),
                                       address.area != ast::DirectAddress::Area::Input);
@@ -567,14 +532,20 @@ std::optional<Place> ProgramGenerator::direct_variable(const ast::DirectAddress&
     return place;
 }
 
+void ProgramGenerator::refused_by_checks(DiagnosticCode code) const {
+    if (!diagnostics_.has_errors()) {
+        throw std::logic_error("code generation met what the checks refuse (" +
+                               std::string(describe(code).name) + "), with no error reported");
+    }
+}
+
 void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const sema::Type& type,
                                       std::uint32_t offset) {
     if (address.path.empty()) {
         return; // `%I*`: bound in the configuration (not supported yet)
     }
-    if (!sema::is_scalar(type)) {
-        diagnostics_.error(DiagnosticCode::E0420, address.range,
-                           "only elementary variables can be located");
+    if (checks::location_mismatch(address, type)) {
+        refused_by_checks(DiagnosticCode::E0420); // checks/located_variables.cpp
         return;
     }
     vm::IoBinding binding{.type = sema::scalar_of(type), .offset = offset};
@@ -590,35 +561,11 @@ void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const s
         break;
     }
     // Byte addressing as CODESYS: %IW4 is the word at byte 8, %IX1.3 bit 3 of byte 1.
-    std::uint32_t unit = 1;
-    switch (address.size) {
-    case ast::DirectAddress::Size::Word:
-        unit = 2;
-        break;
-    case ast::DirectAddress::Size::DoubleWord:
-        unit = 4;
-        break;
-    case ast::DirectAddress::Size::LongWord:
-        unit = 8;
-        break;
-    default:
-        break;
-    }
-    const bool bit = address.size == ast::DirectAddress::Size::None ||
-                     address.size == ast::DirectAddress::Size::Bit;
-    if (bit) {
-        if (address.path.size() != 2 || address.path[1] > 7 || !sema::is_bool(type)) {
-            diagnostics_.error(DiagnosticCode::E0420, address.range,
-                               "a bit address is %IX<byte>.<bit> on a BOOL");
-            return;
-        }
+    if (address.size == ast::DirectAddress::Size::None ||
+        address.size == ast::DirectAddress::Size::Bit) {
         binding.bit = static_cast<std::uint8_t>(address.path[1]);
-    } else if (vm::scalar_size(binding.type) != unit) {
-        diagnostics_.error(DiagnosticCode::E0420, address.range,
-                           fmt::format("a {}-byte address cannot hold a {}", unit, type.name));
-        return;
     }
-    binding.byte_address = address.path[0] * unit;
+    binding.byte_address = address.path[0] * checks::direct_address_unit(address.size);
     builder_.binding(binding);
 }
 

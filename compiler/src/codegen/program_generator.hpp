@@ -1,5 +1,6 @@
 #pragma once
 
+#include "../checks/native_interfaces.hpp"
 #include "eposp/compiler/ast/compilation_unit.hpp"
 #include "eposp/compiler/compile_options.hpp"
 #include "eposp/compiler/diagnostics.hpp"
@@ -37,12 +38,7 @@ struct PouSource {
 /// How one input of a native function is passed (native_function.cpp, docs/runtime.md
 /// "Native functions").
 struct NativeParameter {
-    enum class Kind {
-        Value,  ///< an elementary value, by value
-        String, ///< a STRING or WSTRING, its address
-        Any,    ///< ANY: the value's address, then its descriptor (U32)
-        Array,  ///< VAR_IN_OUT ARRAY[*]: its reference's address, then the element's descriptor
-    };
+    using Kind = checks::NativeParameterKind;
     const sema::Field* field = nullptr;
     Kind kind = Kind::Value;
     std::size_t slot = 0; ///< its first parameter in the signature
@@ -71,6 +67,10 @@ public:
     vm::Builder& builder() { return builder_; }
     sema::TypeTable& types() { return types_; }
     Diagnostics& diagnostics() { return diagnostics_; }
+    /// Where code generation meets what the checking stage refuses (a branch that a program
+    /// which passed the checks never takes): they reported it, so nothing is generated for it.
+    /// Without an error reported this is a checks' gap, a programming error (std::logic_error).
+    void refused_by_checks(DiagnosticCode code) const;
     const OpcodeTable& opcodes() const { return opcodes_; }
     bool if_conversion() const { return options_.if_conversion; }
     /// A global of a configuration or global variable list by name (VAR_EXTERNAL binds to
@@ -81,8 +81,8 @@ public:
     /// The single instance of `program` that a call `P()` or an access `P.x` by the program's
     /// name reaches (CODESYS): the configuration's instance of it, or one created for the
     /// calls, named after the program, when the configuration has none. Several instances are
-    /// an error at `range`.
-    std::optional<Place> instance_of_program(const ast::Pou& program, const SourceRange& range);
+    /// the checks' error (E0422, checks/program_instances.cpp).
+    std::optional<Place> instance_of_program(const ast::Pou& program);
     /// The variable behind an address used directly in code (`%IW4`): one hidden static
     /// variable per address, bound to it like a located variable (ed. 3, 6.5.5).
     std::optional<Place> direct_variable(const ast::DirectAddress& address);

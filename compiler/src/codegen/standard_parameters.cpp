@@ -90,8 +90,7 @@ std::optional<Arguments> PouGenerator::in_parameter_order(const std::string& nam
     Arguments ordered(arguments.size(), nullptr);
     for (const ast::Argument* argument : arguments) {
         if (!argument->name) {
-            error(DiagnosticCode::E0415, argument->range,
-                  fmt::format("a call of {} names all its inputs or none", name));
+            program_.refused_by_checks(DiagnosticCode::E0415); // checks/call_forms.cpp
             return std::nullopt;
         }
         const auto position = input_position(name, sema::fold_case(argument->name->name));
@@ -101,8 +100,7 @@ std::optional<Arguments> PouGenerator::in_parameter_order(const std::string& nam
             return std::nullopt;
         }
         if (ordered[*position] != nullptr) {
-            error(DiagnosticCode::E0414, argument->range,
-                  fmt::format("input '{}' of {} is given twice", argument->name->name, name));
+            program_.refused_by_checks(DiagnosticCode::E0414); // checks/repeated_parameters.cpp
             return std::nullopt;
         }
         ordered[*position] = argument;

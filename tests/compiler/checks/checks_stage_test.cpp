@@ -290,7 +290,88 @@ FOR c := 1 TO 3 DO n := n + 1; END_FOR;
 FOR i := 1 TO 3 DO n := n + i; END_FOR;
 END_FUNCTION_BLOCK
 )st"),
-              (Codes{"E0403", "E0403", "E0403"}));
+              (Codes{"E0403", "E0403", "E0403", "W0407"}));
+}
+
+TEST(ChecksStage, RefusesWritingWhatCannotBeWritten) {
+    Checked checked;
+    EXPECT_EQ(check(checked, R"st(
+CONFIGURATION Cell
+VAR_GLOBAL CONSTANT top : INT := 5; END_VAR
+VAR_GLOBAL g : INT; END_VAR
+VAR_ACCESS
+    TopPath : top : INT READ_WRITE;
+    TopRead : top : INT;
+    GPath : g : INT READ_WRITE;
+    InPath : %IW2 : WORD READ_WRITE;
+    MainPath : M.x : INT READ_WRITE;
+END_VAR
+RESOURCE Station ON PLC
+    TASK Cyclic (INTERVAL := T#10ms, PRIORITY := 1);
+    PROGRAM M WITH Cyclic : Main (total => top);
+END_RESOURCE
+END_CONFIGURATION
+FUNCTION_BLOCK Counter
+VAR_OUTPUT n : INT; END_VAR
+n := n + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR CONSTANT limit : INT := 10; END_VAR
+VAR_EXTERNAL CONSTANT top : INT; END_VAR
+VAR_EXTERNAL g : INT; END_VAR
+VAR_OUTPUT total : INT; END_VAR
+VAR c : Counter; w : WORD; ok : BOOL; x : INT; a : ARRAY[1..2] OF INT; END_VAR
+c();
+limit := 20;
+top := 1;
+g := top;
+c.n := 1;
+%IX0.0 := TRUE;
+%QX0.0 := TRUE;
+w.3 := TRUE;
+a[1] := limit;
+x := ABS(IN := x, ENO => ok);
+total := x;
+END_PROGRAM
+)st"),
+              (Codes{"E0401", "E0401", "E0401", "E0401", "E0401", "E0401", "E0401"}));
+    ASSERT_EQ(checked.diagnostics.all().size(), 7U);
+    // The note shows the declaration that forbids the write.
+    EXPECT_EQ(checked.diagnostics.all()[0].notes.size(), 1U);
+    EXPECT_EQ(checked.diagnostics.all()[0].notes[0].message, "'limit' is declared CONSTANT here");
+}
+
+TEST(ChecksStage, RefusesCallsOfTheWrongForm) {
+    Checked checked;
+    EXPECT_EQ(
+        check(checked, R"st(
+FUNCTION_BLOCK Accumulate
+VAR_IN_OUT total : DINT; END_VAR
+VAR_INPUT step : DINT; END_VAR
+total := total + step;
+END_FUNCTION_BLOCK
+FUNCTION AddTo : BOOL
+VAR_IN_OUT total : DINT; END_VAR
+VAR_INPUT step : DINT; END_VAR
+total := total + step;
+AddTo := TRUE;
+END_FUNCTION
+PROGRAM Main
+VAR acc : Accumulate; t : TON; sum : DINT; x : INT; ok : BOOL; END_VAR
+acc(step := 1);
+acc(total := sum, step := 1);
+ok := AddTo(step := 2);
+ok := AddTo(sum, 2);
+ok := AddTo(total := sum, step := 1, step := 2);
+x := LIMIT(MN := 0, IN := x, IN := 5, MX := 100);
+x := LIMIT(0, IN := x, MX := 100);
+t(TRUE, T#1s);
+t(IN := TRUE, PT := T#1s, EN => ok);
+x := ABS(x, EN := ok);
+x := ABS(IN := x, ENO => ok);
+END_PROGRAM
+)st"),
+        (Codes{"E0415", "E0415", "E0415", "E0415", "E0415", "E0413", "E0413", "E0414", "E0414"}));
 }
 
 } // namespace
