@@ -273,5 +273,67 @@ TEST_F(Epos2DriveErrors, ZeroVelocityGainRaisesFF10OnEnteringVelocityMode) {
     EXPECT_EQ(drive.state(), motion::DriveState::Fault);
 }
 
+// 4.2.4: "The power stage driver reports an error: short circuit of the motor winding". The
+// short shows only once the power stage drives the motor (Measure Init); "d": Fault, power stage
+// off. A fault reset is allowed (the spec names no condition); enabling trips again while the
+// short lasts, and runs once it is repaired.
+TEST_F(Epos2DriveErrors, WindingShortRaises2320WhenThePowerStageDrivesTheMotor) {
+    drive.short_motor_winding(true);
+    nmt(canopen::NmtCommand::Start);
+    const auto enable = [this] {
+        for (const std::uint16_t word : {kShutdown, kSwitchOn, kEnableOperation}) {
+            controlword(word);
+            run_with_sync(10ms);
+        }
+    };
+    enable();
+    expect_error(*this, 0x2320, 0x02);
+    EXPECT_EQ(drive.axis().mode(), plant::ControlMode::PowerOff);
+
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0);
+    enable();
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault) << "still shorted";
+    EXPECT_EQ(read<std::uint8_t>(0x1003, 0), 2U) << "a second event";
+
+    drive.short_motor_winding(false);
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    enable();
+    EXPECT_EQ(drive.state(), motion::DriveState::OperationEnable);
+}
+
+// 4.2.8: "Overload on internally generated 5 V supply at Hall sensor connector or encoder
+// connector": the drive reports the cause, 0x5113 ("d"), not what the unpowered sensors would
+// make its sensor supervision find (no 0xFF0A); the Hall inputs read low (0x2022). A fault reset
+// is refused until the supply is repaired.
+TEST_F(Epos2DriveErrors, OverloadedSensorSupplyRaises5113Alone) {
+    configure_and_enable(1);
+    start_long_move(*this);
+    plant::SensorFaults overloaded;
+    overloaded.supply_overloaded = true;
+    drive.inject_sensor_faults(overloaded);
+    run_with_sync(20ms);
+    expect_error(*this, 0x5113, 0x04);
+    EXPECT_EQ(emcys.size(), 1U) << "no sensor error besides";
+    EXPECT_EQ(drive.axis().mode(), plant::ControlMode::PowerOff);
+    EXPECT_EQ(read<std::uint16_t>(0x2022, 0), 0);
+
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault) << "the 5 V supply is still overloaded";
+
+    drive.inject_sensor_faults({});
+    controlword(0);
+    run_with_sync(2ms);
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0);
+    EXPECT_EQ(emcy_bytes(emcys.back()), (EmcyBytes{}));
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

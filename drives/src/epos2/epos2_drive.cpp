@@ -34,6 +34,8 @@ constexpr std::uint16_t kDeviceCommandBits = 0x008F;
 
 // Table 4-11: the errors of the power stage and the CAN controller (4.2.3, 4.2.5, 4.2.6, 4.2.18).
 constexpr std::uint16_t kOvercurrentErrorCode = 0x2310;
+constexpr std::uint16_t kShortCircuitErrorCode = 0x2320;      // 4.2.4
+constexpr std::uint16_t kLogicSupplyTooLowErrorCode = 0x5113; // 4.2.8
 constexpr std::uint16_t kOvervoltageErrorCode = 0x3210;
 constexpr std::uint16_t kUndervoltageErrorCode = 0x3220;
 constexpr std::uint16_t kOvertemperatureErrorCode = 0x4210;
@@ -162,10 +164,11 @@ void Epos2Drive::set_supply_voltage(double volts) {
     device_control_.set_fault_condition_present(fault_condition_present());
 }
 
-// A fault reset is refused while the supply or the power stage's temperature is out of range
-// (4.2.5 - 4.2.7: "only possible if ... in valid range").
+// A fault reset is refused while the supply, the power stage's temperature or the sensors' 5 V
+// supply is out of range (4.2.5 - 4.2.8: "only possible if ... in valid range").
 bool Epos2Drive::fault_condition_present() const {
-    return supply_error().has_value() || power_stage_temperature_.too_high();
+    return supply_error().has_value() || power_stage_temperature_.too_high() ||
+           sensor_faults_.supply_overloaded;
 }
 
 void Epos2Drive::set_analog_input(AnalogInput input, std::int16_t millivolts) {
@@ -382,7 +385,8 @@ void Epos2Drive::raise_device_error(std::uint16_t code) {
     device_control_.fault_occurred(error.reaction);
 }
 
-// 4.2.3, 4.2.5 - 4.2.7: the power stage's supervision: current, supply, temperature.
+// 4.2.3 - 4.2.8: the power stage's supervision: current, short circuit, supply, temperature, and
+// the sensors' 5 V supply.
 void Epos2Drive::watch_power_stage(bool overcurrent) {
     power_stage_temperature_.update(axis_.current_actual(), power_stage_on_,
                                     plant::ServoAxis::kOuterLoopPeriod);
@@ -392,6 +396,14 @@ void Epos2Drive::watch_power_stage(bool overcurrent) {
     }
     if (power_stage_temperature_.too_high()) {
         raise_device_error(kOvertemperatureErrorCode);
+    }
+    if (sensor_faults_.supply_overloaded) {
+        raise_device_error(kLogicSupplyTooLowErrorCode);
+    }
+    // 4.2.4: the power stage driver finds the short once it drives the winding, before the
+    // current it would let through is measured.
+    if (winding_shorted_ && power_stage_on_) {
+        raise_device_error(kShortCircuitErrorCode);
     }
     if (overcurrent) {
         raise_device_error(kOvercurrentErrorCode);
@@ -444,7 +456,7 @@ void Epos2Drive::control_period() {
     for (int step = 0; step < plant::ServoAxis::kCurrentStepsPerOuterLoop; ++step) {
         axis_.step();
         if (axis_.index_passed() && !sensor_faults_.index_missing &&
-            !sensor_faults_.encoder_broken) {
+            !sensor_faults_.encoder_silent()) {
             index_latch_ = position_actual();
             counter_at_index_ = encoder_counter();
         }
@@ -465,6 +477,11 @@ void Epos2Drive::control_period() {
 }
 
 void Epos2Drive::watch_sensors() {
+    // The sensors are unpowered: 0x5113 is the cause the drive reports, what the supervision would
+    // find without the sensors' signals is its consequence.
+    if (sensor_faults_.supply_overloaded) {
+        return;
+    }
     if (const auto fault = sensor_supervision_.update(axis_.encoder_angle(), axis_.hall_sensors(),
                                                       sensor_faults_)) {
         raise_device_error(kSensorErrorCodes.of(*fault));

@@ -51,7 +51,7 @@ void SensorSupervision::restart(double motor_angle, std::uint8_t hall_pattern,
 // A broken encoder counts nothing; a mounted encoder of other lines than configured counts its own.
 std::int64_t SensorSupervision::encoder_count(double motor_angle,
                                               const plant::SensorFaults& faults) const {
-    if (faults.encoder_broken) {
+    if (faults.encoder_silent()) {
         return count_;
     }
     return plant::quadcounts(motor_angle, faults.encoder_pulses.value_or(config_.encoder_pulses));
@@ -82,7 +82,7 @@ std::optional<SensorFault> SensorSupervision::check_encoder(std::int64_t count,
                                                             std::int64_t travelled,
                                                             const plant::SensorFaults& faults) {
     // EPOS2 4.2.31: the differential channels' supervision (0x2008 bit 1 disables it).
-    if (faults.encoder_broken) {
+    if (faults.encoder_silent()) {
         return config_.breach_supervision ? std::optional{SensorFault::EncoderBreach}
                                           : std::nullopt;
     }

@@ -46,6 +46,9 @@ std::optional<int> hall_sector(std::uint8_t pattern) {
 }
 
 std::uint8_t hall_inputs(std::uint8_t pattern, const SensorFaults& faults) {
+    if (faults.supply_overloaded) {
+        return 0;
+    }
     return static_cast<std::uint8_t>((pattern & ~faults.hall_stuck_mask) |
                                      (faults.hall_stuck_levels & faults.hall_stuck_mask));
 }

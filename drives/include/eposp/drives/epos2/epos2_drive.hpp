@@ -147,7 +147,13 @@ public:
     /// Faults of the motor's sensors from the next control period on (none: all false): the
     /// sensor inputs (0x2022, the index for homing) read as the faults make them, and the sensor
     /// supervision raises what it finds (4.2.23 - 4.2.31, docs/epos2.md "Fault injection").
+    /// `supply_overloaded` raises 0x5113 and silences both sensors; the sensor supervision rests
+    /// while it lasts, and a fault reset is refused until it is repaired (4.2.8).
     void inject_sensor_faults(const plant::SensorFaults& faults) { sensor_faults_ = faults; }
+    /// A short in the motor winding (or to earth), or repaired: while the power stage drives the
+    /// motor its driver reports it, 0x2320 (4.2.4, "d"); a fault reset is allowed, and enabling
+    /// again trips again while the short lasts.
+    void short_motor_winding(bool shorted) { winding_shorted_ = shorted; }
 
 private:
     static Epos2DictionaryConfig with_restore_rule(Epos2DictionaryConfig config, Epos2Drive& drive);
@@ -220,6 +226,7 @@ private:
     motion::SensorDirectionMonitor sensor_direction_; ///< 4.2.37, 0x2008 bit 0 clear
     bool software_supervision_ = true;                ///< 0x2008 bit 0 clear (8.2.41)
     plant::SensorFaults sensor_faults_;               ///< injected
+    bool winding_shorted_ = false;                    ///< injected (4.2.4)
     /// An error with "position reset" (table 4-11) was raised: its clearing resets the position.
     bool position_reset_on_clear_ = false;
     /// 0x81FE / 0x81FF: a queue of the CAN controller lost a frame, raised at the next period.

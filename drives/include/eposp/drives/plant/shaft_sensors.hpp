@@ -54,6 +54,12 @@ struct SensorFaults {
     /// of `hall_stuck_mask` holds sensor n + 1 at bit n of `hall_stuck_levels`.
     std::uint8_t hall_stuck_mask = 0;
     std::uint8_t hall_stuck_levels = 0;
+    /// The 5 V supply of the encoder and Hall sensor connectors overloaded (a short in a sensor
+    /// cable): neither sensor is powered, the encoder's channels and the Hall inputs read low.
+    bool supply_overloaded = false;
+
+    /// The encoder's channels carry no signal: a broken line or no supply.
+    bool encoder_silent() const { return encoder_broken || supply_overloaded; }
 
     friend bool operator==(const SensorFaults&, const SensorFaults&) = default;
 };
