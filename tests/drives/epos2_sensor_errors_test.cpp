@@ -171,5 +171,44 @@ TEST_F(Epos2SensorErrors, ClearingASensorErrorResetsTheActualPosition) {
     EXPECT_EQ(tpdos.back().statusword & kStateMask, kSwitchOnDisabled);
 }
 
+// 4.2.29: "Angle difference measured between encoder and Hall sensors is too high due to ...
+// wrong setting of encoder resolution": a 512-line encoder configured as 500 lines (no index, so
+// that 0xFF03 does not find it first) drifts against the Hall sectors by 2.4 % of an electrical
+// turn per electrical turn until it is more than 30 degrees off. "f": the 0x605E quickstop ramp,
+// then Fault; clearing it resets the actual position (table 4-11).
+TEST_F(Epos2SensorErrors, WrongEncoderResolutionRaisesFF08HallAngleDetection) {
+    use_ec_motor();
+    write(0x2210, 2, encode(std::uint16_t{2})); // encoder without index (table 8-102)
+    configure_and_enable(1);
+    drive.inject_sensor_faults(k512LineEncoder);
+    start_long_move();
+    run_with_sync(700ms);
+    expect_emcy(*this, 0xFF08, kSensorErrorRegister);
+    const double emcy = emcy_times.front();
+    const auto ramp = std::find_if(tpdos.begin(), tpdos.end(),
+                                   [emcy](const Tpdo& tpdo) { return tpdo.time > emcy + 0.0025; });
+    ASSERT_NE(ramp, tpdos.end());
+    EXPECT_EQ(ramp->statusword & 0x004F, 0x000F) << "Fault Reaction Active: the ramp runs";
+    run_with_sync(300ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+
+    drive.inject_sensor_faults({});
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
+    EXPECT_EQ(read<std::int32_t>(0x6064, 0), 0) << "position reset";
+}
+
+// The default machine's Hall sensors and encoder agree: an EC motor moving ten turns raises no
+// hall angle error (nor any other).
+TEST_F(Epos2SensorErrors, HallSensorsAndEncoderOfTheMachineAgree) {
+    use_ec_motor();
+    configure_and_enable(1);
+    start_long_move();
+    run_with_sync(1000ms);
+    EXPECT_TRUE(emcys.empty());
+    EXPECT_EQ(drive.state(), motion::DriveState::OperationEnable);
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

@@ -269,6 +269,12 @@ void Epos2Drive::watch_dictionary() {
     for (const std::uint16_t index : std::array<std::uint16_t, 4>{0x2008, 0x2210, 0x2230, 0x6402}) {
         od.on_change(index, [this](std::uint16_t, std::uint8_t) { read_sensor_configuration(); });
     }
+    // 8.2.130 sub 3: the pole pairs of the hall angle check.
+    od.on_change(0x6410, [this](std::uint16_t, std::uint8_t sub) {
+        if (sub == 3) {
+            read_sensor_configuration();
+        }
+    });
     for (const std::uint16_t index : std::array<std::uint16_t, 2>{0x2008, 0x608B}) {
         od.on_change(index, [this](std::uint16_t, std::uint8_t) { read_units_and_polarity(); });
     }
@@ -506,14 +512,22 @@ void Epos2Drive::read_sensor_configuration() {
     const auto& od = dictionary_.objects();
     const auto main_sensor = static_cast<std::uint16_t>(od.get_as<std::uint16_t>(0x2210, 2) & 0xF);
     const auto motor_type = od.get_as<std::uint16_t>(0x6402, 0);
+    const bool encoder = main_sensor == kEncoder1WithIndex || main_sensor == kEncoder1WithoutIndex;
+    const bool hall_sensors = motor_type == kSinusoidalEcMotor || motor_type == kTrapezoidalEcMotor;
+    const double motor_turns_per_encoder_turn = motor_turns_per_sensor_turn(od);
     sensor_supervision_.configure(
         {.encoder_pulses = static_cast<int>(od.get_as<std::uint32_t>(0x2210, 1)),
-         .encoder = main_sensor == kEncoder1WithIndex || main_sensor == kEncoder1WithoutIndex,
+         .encoder = encoder,
          .encoder_index = main_sensor == kEncoder1WithIndex,
-         .hall_sensors = motor_type == kSinusoidalEcMotor || motor_type == kTrapezoidalEcMotor,
+         .hall_sensors = hall_sensors,
          .breach_supervision =
              (od.get_as<std::uint16_t>(0x2008, 0) & kNoHardwareSupervisionBit) == 0,
-         .motor_turns_per_encoder_turn = motor_turns_per_sensor_turn(od)});
+         // 4.2.29: the encoder's angle against the Hall sensors', both on the motor shaft. With a
+         // gear the encoder is on its output (8.2.74): a count there spans more of the motor's
+         // electrical turn than the check's tolerance, so there is nothing to compare.
+         .hall_angle = encoder && hall_sensors && motor_turns_per_encoder_turn == 1,
+         .pole_pairs = od.get_as<std::uint8_t>(0x6410, 3),
+         .motor_turns_per_encoder_turn = motor_turns_per_encoder_turn});
     software_supervision_ = (od.get_as<std::uint16_t>(0x2008, 0) & kNoSoftwareSupervisionBit) == 0;
     // A quarter turn of the encoder against the motor (4.2.37; the spec gives no threshold).
     sensor_direction_ = motion::SensorDirectionMonitor(od.get_as<std::uint32_t>(0x2210, 1),
