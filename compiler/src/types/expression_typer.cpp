@@ -163,9 +163,8 @@ void ExpressionTyper::sections(const std::vector<ast::DeclarationSection>& secti
         }
         for (const ast::VariableDeclaration& declaration : variables->variables) {
             type_spec(declaration.type);
-            const sema::Type* type = program_.types().resolve(declaration.type);
             if (declaration.initial_value) {
-                initializer(*declaration.initial_value, type);
+                initializer(*declaration.initial_value, program_.types().resolve(declaration.type));
             }
         }
     }
