@@ -335,5 +335,34 @@ TEST_F(Epos2DriveErrors, OverloadedSensorSupplyRaises5113Alone) {
     EXPECT_EQ(emcy_bytes(emcys.back()), (EmcyBytes{}));
 }
 
+// 4.2.11: "Target Position too high with Profile Velocity too low": the simulation's planner
+// holds a move of at most (2^31 - 1) ms at the profile velocity (docs/epos2.md). At 1 rpm and
+// 4 × 0x2210 sub 1 counts per turn the longest move is 2147483.647 s × counts/s: a move of that
+// many counts (rounded down) is planned, one count more from the same target raises 0x6320 ("f":
+// quickstop, then Fault); a fault reset recovers.
+TEST_F(Epos2DriveErrors, MoveLongerThanThePlannerHoldsRaises6320) {
+    configure_and_enable(1);
+    write(0x6081, 0, encode(std::uint32_t{1})); // rpm
+    const double counts_per_second = 4.0 * read<std::uint32_t>(0x2210, 1) / 60.0;
+    const auto longest = static_cast<std::int32_t>(std::floor(2'147'483.647 * counts_per_second));
+    controlword_and_target(kEnableOperation | kNewSetpoint, longest);
+    run_with_sync(10ms);
+    controlword_and_target(kEnableOperation, longest);
+    run_with_sync(10ms);
+    ASSERT_TRUE(emcys.empty()) << "the longest move is planned";
+
+    // Change immediately, from the target `longest` back to -1: one count too far.
+    controlword_and_target(kEnableOperation | kNewSetpoint | kChangeImmediately, -1);
+    run_with_sync(10ms);
+    expect_emcy(*this, 0x6320, 0x20);
+    run_with_sync(200ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::Fault);
+
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0);
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

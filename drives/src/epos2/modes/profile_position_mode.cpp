@@ -3,7 +3,19 @@
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/statusword_bits.hpp"
 
+#include <cmath>
+
 namespace eposp::drives::epos2 {
+namespace {
+
+// 4.2.11: "Target Position too high with Profile Velocity too low". The simulation's planner
+// counts a move's time in control periods (1 ms) in a signed 32-bit number, as a firmware would:
+// a move whose cruise, distance / profile velocity, lasts longer than (2^31 - 1) ms (24.9 days)
+// cannot be planned. The spec gives no figure; this is the simulation's limit.
+constexpr double kLongestMove = 2'147'483'647e-3; // s
+constexpr std::uint16_t kSoftwareParameterErrorCode = 0x6320;
+
+} // namespace
 
 void ProfilePositionMode::start(double, std::int64_t position, bool) {
     profile_.reset(static_cast<double>(position));
@@ -40,6 +52,11 @@ bool ProfilePositionMode::new_setpoint(double now, std::uint16_t controlword) {
     if (!setpoint.endless) {
         if (const auto error = limit.check_target(end)) {
             services_.raise_device_error(*error);
+            return false;
+        }
+        if (std::abs(end - profile_.demand_target()) / setpoint.parameters.velocity >
+            kLongestMove) {
+            services_.raise_device_error(kSoftwareParameterErrorCode);
             return false;
         }
     }
