@@ -109,9 +109,9 @@ PdoMapping::Resolution PdoMapping::resolve(const ObjectDictionary& od,
             return {AbortCode::PdoLengthExceeded, {}};
         }
         const bool dummy = direction == PdoDirection::Receive && is_dummy(entry);
-        const DataType type = dummy ? static_cast<DataType>(entry.index)
-                                    : od.find(entry.index, entry.sub_index)->type;
-        mapping.fields_.push_back({entry, type, mapping.bits_, dummy});
+        const SubObject* sub = dummy ? nullptr : od.find(entry.index, entry.sub_index);
+        const DataType type = dummy ? static_cast<DataType>(entry.index) : sub->type;
+        mapping.fields_.push_back({entry, type, mapping.bits_, dummy, sub});
         mapping.bits_ += entry.bits;
     }
     return result;
@@ -134,16 +134,15 @@ std::vector<std::uint16_t> PdoMapping::mapped_indices() const {
     return indices;
 }
 
-PdoPayload PdoMapping::pack(const ObjectDictionary& od) const {
+PdoPayload PdoMapping::pack() const {
     std::uint64_t word = 0;
     for (const Field& field : fields_) {
-        // A stored value is read in place: every TPDO packs at every SYNC.
-        const SubObject* sub = od.find(field.entry.index, field.entry.sub_index);
-        const std::uint64_t bits =
-            sub != nullptr && !sub->on_read
-                ? to_field(field.type, sub->value, field.entry.bits)
-                : to_field(field.type, od.get(field.entry.index, field.entry.sub_index),
-                           field.entry.bits);
+        // Read as ObjectDictionary::get() reads, without its lookup: every TPDO packs at every
+        // SYNC. A stored value is read in place.
+        const SubObject& sub = *field.sub;
+        const std::uint64_t bits = sub.on_read
+                                       ? to_field(field.type, sub.on_read(), field.entry.bits)
+                                       : to_field(field.type, sub.value, field.entry.bits);
         word |= bits << field.offset;
     }
     PdoPayload payload;

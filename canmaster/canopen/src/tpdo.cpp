@@ -133,7 +133,7 @@ void Tpdo::send_event_if_due() {
             return;
         }
     }
-    const PdoPayload payload = mapping_.pack(od_);
+    const PdoPayload payload = mapping_.pack();
     if (!forced_pending_ && payload == last_payload_) {
         change_pending_ = false; // changed back, or a write of the same value
         return;
@@ -151,7 +151,7 @@ void Tpdo::on_sync(std::uint8_t counter) {
     } else if (type <= kSyncCyclicMax) {
         on_cyclic_sync(counter);
     } else if (type == kRtrSynchronous) {
-        sampled_ = mapping_.pack(od_);
+        sampled_ = mapping_.pack();
     }
 }
 
@@ -173,7 +173,7 @@ void Tpdo::on_cyclic_sync(std::uint8_t counter) {
         if (comm_.sync_start != 0 && counter != 0) {
             if (counter == comm_.sync_start) {
                 syncs_to_go_ = every;
-                transmit(mapping_.pack(od_));
+                transmit(mapping_.pack());
             }
             return;
         }
@@ -181,7 +181,7 @@ void Tpdo::on_cyclic_sync(std::uint8_t counter) {
     }
     if (--syncs_to_go_ == 0) {
         syncs_to_go_ = every;
-        transmit(mapping_.pack(od_));
+        transmit(mapping_.pack());
     }
 }
 
@@ -209,7 +209,7 @@ void Tpdo::on_remote_request() {
         }
         break;
     case kRtrEventDriven:
-        transmit(mapping_.pack(od_));
+        transmit(mapping_.pack());
         break;
     case kEventDrivenManufacturer:
     case kEventDrivenProfile:

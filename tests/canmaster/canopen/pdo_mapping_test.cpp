@@ -34,8 +34,8 @@ PdoMapping resolve(const ObjectDictionary& od, std::initializer_list<std::uint32
 
 // The payload's bytes; those beyond its size stay zero, so that equal payloads compare equal (a
 // TPDO compares them to skip an unchanged event).
-Bytes packed(const PdoMapping& mapping, const ObjectDictionary& od) {
-    const PdoPayload payload = mapping.pack(od);
+Bytes packed(const PdoMapping& mapping) {
+    const PdoPayload payload = mapping.pack();
     for (std::size_t i = payload.size; i < payload.data.size(); ++i) {
         EXPECT_EQ(payload.data[i], 0) << "byte " << i << " beyond the payload";
     }
@@ -72,7 +72,7 @@ TEST_F(PdoMappingTest, PacksOneSevenSixteenAndThirtyTwoBitsWithoutGaps) {
     const PdoMapping mapping = resolve(od, kPacked, PdoDirection::Transmit);
     EXPECT_EQ(mapping.bits(), 56U);
     EXPECT_EQ(mapping.size(), 7U);
-    EXPECT_EQ(packed(mapping, od), kPackedBytes);
+    EXPECT_EQ(packed(mapping), kPackedBytes);
 }
 
 TEST_F(PdoMappingTest, UnpacksOneSevenSixteenAndThirtyTwoBits) {
@@ -85,7 +85,7 @@ TEST_F(PdoMappingTest, UnpacksOneSevenSixteenAndThirtyTwoBits) {
 
 TEST_F(PdoMappingTest, TpdoSendsTheLowBitsOfAShortInteger) {
     od.set_as(0x2003, 0, std::uint16_t{0xABCD});
-    EXPECT_EQ(packed(resolve(od, {0x2003'000C}, PdoDirection::Transmit), od), (Bytes{0xCD, 0x0B}));
+    EXPECT_EQ(packed(resolve(od, {0x2003'000C}, PdoDirection::Transmit)), (Bytes{0xCD, 0x0B}));
 }
 
 TEST_F(PdoMappingTest, ShortUnsignedIntegerIsZeroExtended) {
@@ -112,7 +112,7 @@ TEST_F(PdoMappingTest, EightBooleansShareOneByte) {
                                        {0x2100'0001, 0x2101'0001, 0x2102'0001, 0x2103'0001,
                                         0x2104'0001, 0x2105'0001, 0x2106'0001, 0x2107'0001},
                                        PdoDirection::Transmit);
-    EXPECT_EQ(packed(mapping, od), (Bytes{0b0100'1001}));
+    EXPECT_EQ(packed(mapping), (Bytes{0b0100'1001}));
     resolve(od,
             {0x2100'0001, 0x2101'0001, 0x2102'0001, 0x2103'0001, 0x2104'0001, 0x2105'0001,
              0x2106'0001, 0x2107'0001},
@@ -156,7 +156,24 @@ TEST_F(PdoMappingTest, PackReadsWhatTheDeviceReads) {
     od.find(0x2003, 0)->on_read = [] {
         return encode(std::uint16_t{0x4242});
     };
-    EXPECT_EQ(packed(resolve(od, {0x2003'0010}, PdoDirection::Transmit), od), (Bytes{0x42, 0x42}));
+    EXPECT_EQ(packed(resolve(od, {0x2003'0010}, PdoDirection::Transmit)), (Bytes{0x42, 0x42}));
+}
+
+// The mapping keeps where its values are, not the values: each pack reads them anew, a read
+// hook added after the resolution included.
+TEST_F(PdoMappingTest, PackReadsTheValuesOfItsMomentNotThoseOfTheResolution) {
+    const PdoMapping mapping = resolve(od, kPacked, PdoDirection::Transmit);
+    od.set_as(0x2001, 0, true);
+    od.set_as(0x2002, 0, std::uint8_t{0x55});
+    od.set_as(0x2003, 0, std::uint16_t{0xBEEF});
+    od.set_as(0x2004, 0, std::int32_t{-2});
+    EXPECT_EQ(packed(mapping), kPackedBytes);
+    od.set_as(0x2004, 0, std::int32_t{1});
+    EXPECT_EQ(packed(mapping), (Bytes{0xAB, 0xEF, 0xBE, 0x01, 0x00, 0x00, 0x00}));
+    od.find(0x2003, 0)->on_read = [] {
+        return encode(std::uint16_t{0x4242});
+    };
+    EXPECT_EQ(packed(mapping), (Bytes{0xAB, 0x42, 0x42, 0x01, 0x00, 0x00, 0x00}));
 }
 
 TEST_F(PdoMappingTest, UnpackTellsTheChangeListeners) {
@@ -212,7 +229,7 @@ TEST_P(PdoMappingWidth, ValueRoundTripsAtAnOddBitOffset) {
     }
     const auto tx = PdoMapping::resolve(sender, mapped, PdoDirection::Transmit);
     ASSERT_EQ(tx.error, AbortCode::None);
-    const Bytes payload = packed(tx.mapping, sender);
+    const Bytes payload = packed(tx.mapping);
 
     const std::uint64_t word = behind_flag ? (pattern << 1 | 1) : pattern;
     Bytes expected(behind_flag ? size + 1 : size);

@@ -74,8 +74,9 @@ public:
     /// The distinct indices mapped (dummies left out), in mapping order.
     std::vector<std::uint16_t> mapped_indices() const;
 
-    /// A TPDO's payload: the mapped values as the device reads them (ObjectDictionary::get).
-    PdoPayload pack(const ObjectDictionary& od) const;
+    /// A TPDO's payload: the mapped values as the device reads them (ObjectDictionary::get),
+    /// from the sub-objects resolve() found: valid as long as the dictionary, as a ValueRef.
+    PdoPayload pack() const;
     /// Stores an RPDO's payload, of at least size() bytes, with the device's own access
     /// (ObjectDictionary::set); dummy entries are skipped.
     void unpack(ObjectDictionary& od, std::span<const std::uint8_t> payload) const;
@@ -86,6 +87,7 @@ private:
         DataType type = DataType::Unsigned8;
         std::size_t offset = 0;
         bool dummy = false;
+        const SubObject* sub = nullptr; ///< the mapped value; none for a dummy
     };
     std::vector<Field> fields_;
     std::size_t bits_ = 0;
