@@ -5,28 +5,59 @@
 #include "eposp/compiler/types/front_end.hpp"
 #include "lower/image_passes.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace eposp::compiler {
+namespace {
+
+struct Checked {
+    std::unique_ptr<types::FrontEnd> front_end;
+    std::unique_ptr<types::TypedProgram> program;
+};
+
+// Parse, names, types and checks: the stages that find the program's errors. Syntax and name
+// errors stop before typing; typing and the checks then both run, so that the errors come in one
+// compilation. The typing stage's diagnostics go to `typing`.
+std::optional<Checked> check_stages(SourceManager& sources, std::span<const FileId> files,
+                                    Diagnostics& diagnostics, Diagnostics& typing,
+                                    std::span<const FileId> libraries,
+                                    const CompileOptions& options) {
+    std::vector<FileId> all(files.begin(), files.end());
+    all.insert(all.end(), libraries.begin(), libraries.end());
+    auto front_end = types::resolve_names(sources, all, diagnostics, options);
+    if (diagnostics.has_errors()) {
+        return std::nullopt;
+    }
+    auto program = types::type_program(
+        front_end->units, *front_end->model,
+        [&front_end = *front_end](std::string_view name) { return front_end.library_pou(name); },
+        typing);
+    checks::check_program(*program, front_end->units, libraries.size(), options, diagnostics);
+    return Checked{std::move(front_end), std::move(program)};
+}
+
+} // namespace
+
+bool check(SourceManager& sources, std::span<const FileId> files, Diagnostics& diagnostics,
+           std::span<const FileId> libraries, const CompileOptions& options) {
+    check_stages(sources, files, diagnostics, diagnostics, libraries, options);
+    return !diagnostics.has_errors();
+}
 
 std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId> files,
                                  Diagnostics& diagnostics, std::span<const FileId> libraries,
                                  const CompileOptions& options) {
-    std::vector<FileId> all(files.begin(), files.end());
-    all.insert(all.end(), libraries.begin(), libraries.end());
-    const auto front_end = types::resolve_names(sources, all, diagnostics, options);
-    if (diagnostics.has_errors()) {
-        return std::nullopt;
-    }
     // Code generation still reports the type errors itself (issue 17): the typing stage's
     // go aside, and the checks run on what it typed.
     Diagnostics typing;
-    const auto program = types::type_program(
-        front_end->units, *front_end->model,
-        [&front_end](std::string_view name) { return front_end->library_pou(name); }, typing);
-    checks::check_program(*program, front_end->units, libraries.size(), options, diagnostics);
-    codegen::ProgramGenerator generator({*front_end->model, front_end->units, libraries.size()},
-                                        {*front_end->library_model, front_end->library_units},
+    const auto checked = check_stages(sources, files, diagnostics, typing, libraries, options);
+    if (!checked) {
+        return std::nullopt;
+    }
+    const types::FrontEnd& front_end = *checked->front_end;
+    codegen::ProgramGenerator generator({*front_end.model, front_end.units, libraries.size()},
+                                        {*front_end.library_model, front_end.library_units},
                                         diagnostics, options);
     auto image = generator.generate();
     if (image) {

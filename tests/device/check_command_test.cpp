@@ -6,6 +6,9 @@
 #include <fstream>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace eposp::device {
 namespace {
@@ -132,6 +135,40 @@ TEST(CheckCommand, BuildAndRunTakeTheErrorFormatToo) {
         EXPECT_THAT(result.output, HasSubstr("{\"code\":\"E0107\",")) << command;
         // The fix-it: ' := ' in place of ' = '.
         EXPECT_THAT(result.output, HasSubstr("\"fix_it\":{\"replacement\":\" := \",")) << command;
+    }
+}
+
+TEST(CheckCommand, StopsBeforeCodeGenerationSoALimitOnlyItMeetsPassesCheckButNotBuild) {
+    // Static data beyond what an image holds (E0502: two global arrays of 40 MB, each under
+    // the limit) is found when code generation lays the globals out
+    // (codegen/program_limits.cpp): `eposp check` runs parse, names, types and checks only
+    // (compiler::check).
+    const std::string main =
+        write_source("main.st", "VAR_GLOBAL a, b : ARRAY[1..5000000] OF LREAL; END_VAR\n"
+                                "PROGRAM Main\n"
+                                "a[1] := b[2];\n"
+                                "END_PROGRAM\n");
+    const auto checked = eposp("check " + main);
+    EXPECT_EQ(checked.exit_code, 0) << checked.output;
+    EXPECT_EQ(checked.output, "");
+    const auto built = eposp("build " + main + " -o " + scratch("main.epx").string());
+    EXPECT_EQ(built.exit_code, 1);
+    EXPECT_THAT(built.output, HasSubstr("[E0502]"));
+}
+
+TEST(CheckCommand, AnErrorOfEveryStageBeforeCodeGenerationFailsCheck) {
+    const std::vector<std::pair<std::string, std::string>> programs = {
+        {"E0107", "PROGRAM Main\nVAR x : INT; END_VAR\nx = 1;\nEND_PROGRAM\n"},         // syntax
+        {"E0201", "PROGRAM Main\nVAR x : INT; END_VAR\nx := y;\nEND_PROGRAM\n"},        // names
+        {"E0303", "PROGRAM Main\nVAR x : INT; END_VAR\nx := x + TRUE;\nEND_PROGRAM\n"}, // types
+        {"E0401", "PROGRAM Main\nVAR CONSTANT x : INT := 1; END_VAR\nx := 2;\nEND_PROGRAM\n"},
+    };
+    for (const auto& [code, program] : programs) {
+        const std::string main = write_source("main.st", program);
+        const auto result = eposp("check " + main);
+        EXPECT_EQ(result.exit_code, 1) << code;
+        EXPECT_THAT(result.output, HasSubstr("[" + code + "]")) << result.output;
+        EXPECT_THAT(result.output, HasSubstr("eposp check: error: " + main + " has errors"));
     }
 }
 

@@ -1,5 +1,6 @@
-// `eposp check FILES…`: compiles the Structured Text files of one program without writing an
-// image, and prints the diagnostics like a compiler. Quiet when all is well.
+// `eposp check FILES…`: checks the Structured Text files of one program (parse, names, types,
+// checks; no code generation, so no image) and prints the diagnostics like a compiler. Quiet
+// when all is well.
 #include "commands.hpp"
 #include "options.hpp"
 #include "program_input.hpp"
@@ -19,8 +20,8 @@ void add_check_command(CLI::App& app, int& exit_code) {
         ->required();
     add_error_format_option(*command, *format);
     command->callback([paths, format, &exit_code] {
-        const auto image = compile_sources(*paths, *format);
-        exit_code = image ? 0 : report_user_error("check", image.error());
+        const auto checked = check_sources(*paths, *format);
+        exit_code = checked ? 0 : report_user_error("check", checked.error());
     });
 }
 

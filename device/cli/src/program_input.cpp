@@ -53,9 +53,11 @@ void add_error_format_option(CLI::App& command, ErrorFormat& format) {
             CLI::ignore_case));
 }
 
-core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths, ErrorFormat format) {
-    compiler::SourceManager sources;
-    compiler::Diagnostics diagnostics;
+namespace {
+
+// The files of `paths`, loaded into `sources`; the error says which cannot be compiled.
+core::Result<std::vector<compiler::FileId>> load_sources(const std::vector<std::string>& paths,
+                                                         compiler::SourceManager& sources) {
     std::vector<compiler::FileId> files;
     for (const std::string& path : paths) {
         if (auto problem = input_file_problem(path, "a Structured Text source")) {
@@ -72,7 +74,11 @@ core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths, E
         }
         files.push_back(*file);
     }
-    auto image = compile_program(sources, files, diagnostics);
+    return files;
+}
+
+void print_diagnostics(const compiler::Diagnostics& diagnostics,
+                       const compiler::SourceManager& sources, ErrorFormat format) {
     if (format == ErrorFormat::Json) {
         // On stdout, apart from the command's own messages, for a tool to read; escaped, so no
         // terminal codes reach it.
@@ -80,11 +86,43 @@ core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths, E
     } else {
         fmt::print(stderr, "{}", terminal_text(compiler::render(diagnostics, sources)));
     }
+}
+
+core::Error has_errors(const std::vector<std::string>& paths) {
+    return core::Error{
+        fmt::format("{} has errors", paths.size() == 1 ? paths.front() : "the program")};
+}
+
+} // namespace
+
+core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths, ErrorFormat format) {
+    compiler::SourceManager sources;
+    compiler::Diagnostics diagnostics;
+    const auto files = load_sources(paths, sources);
+    if (!files) {
+        return core::Error{files.error()};
+    }
+    auto image = compile_program(sources, *files, diagnostics);
+    print_diagnostics(diagnostics, sources, format);
     if (!image) {
-        return core::Error{
-            fmt::format("{} has errors", paths.size() == 1 ? paths.front() : "the program")};
+        return has_errors(paths);
     }
     return std::move(*image);
+}
+
+core::Result<bool> check_sources(const std::vector<std::string>& paths, ErrorFormat format) {
+    compiler::SourceManager sources;
+    compiler::Diagnostics diagnostics;
+    const auto files = load_sources(paths, sources);
+    if (!files) {
+        return core::Error{files.error()};
+    }
+    const bool ok = check_program(sources, *files, diagnostics);
+    print_diagnostics(diagnostics, sources, format);
+    if (!ok) {
+        return has_errors(paths);
+    }
+    return true;
 }
 
 core::Result<vm::Image> program_image(const std::vector<std::string>& paths, ErrorFormat format) {

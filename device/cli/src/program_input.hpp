@@ -22,6 +22,12 @@ void add_error_format_option(CLI::App& command, ErrorFormat& format);
 core::Result<vm::Image> compile_sources(const std::vector<std::string>& paths,
                                         ErrorFormat format = ErrorFormat::Human);
 
+/// Checks the `.st` files of one program as `eposp check` does: the compiler's stages up to the
+/// checks, without code generation (device::check_program), printing the diagnostics as
+/// compile_sources does; the error says that there are errors.
+core::Result<bool> check_sources(const std::vector<std::string>& paths,
+                                 ErrorFormat format = ErrorFormat::Human);
+
 /// The program a command works on, from its FILES: one `.epx` image as `eposp build` writes it,
 /// or the `.st` files of one program, compiled (their diagnostics printed to stderr like
 /// `eposp check`). The error says why there is no image.

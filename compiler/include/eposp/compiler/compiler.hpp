@@ -31,4 +31,11 @@ std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId>
                                  Diagnostics& diagnostics, std::span<const FileId> libraries = {},
                                  const CompileOptions& options = {});
 
+/// The stages of compile() that find the program's errors, and not code generation: parse,
+/// names, types and checks (what `eposp check` runs). Their diagnostics go to `diagnostics`;
+/// true when there is no error. A limit that only code generation meets (E0502: data larger
+/// than an image holds) is left to compile().
+bool check(SourceManager& sources, std::span<const FileId> files, Diagnostics& diagnostics,
+           std::span<const FileId> libraries = {}, const CompileOptions& options = {});
+
 } // namespace eposp::compiler

@@ -14,4 +14,9 @@ std::optional<vm::Image> compile_program(compiler::SourceManager& sources,
                                          std::span<const compiler::FileId> files,
                                          compiler::Diagnostics& diagnostics);
 
+/// What `eposp check` runs: compile_program's stages up to the checks (compiler::check), without
+/// code generation. True when there is no error.
+bool check_program(compiler::SourceManager& sources, std::span<const compiler::FileId> files,
+                   compiler::Diagnostics& diagnostics);
+
 } // namespace eposp::device
