@@ -364,5 +364,32 @@ TEST_F(Epos2DriveErrors, MoveLongerThanThePlannerHoldsRaises6320) {
     EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0);
 }
 
+// 4.2.32: "Device has not enough free resources to process new target value": the system load
+// set from outside above 1 (motion::SystemLoad). The drive runs on while no target value comes;
+// the next target written (RPDO 3: controlword and target position) raises 0xFF0B ("d":
+// disabled at once). A fault reset recovers (the spec names no condition).
+TEST_F(Epos2DriveErrors, TargetValueWrittenWhileOverloadedRaisesFF0B) {
+    configure_and_enable(1);
+    drive.set_system_load(1.0);
+    controlword_and_target(kEnableOperation | kNewSetpoint, 1000);
+    run_with_sync(20ms);
+    ASSERT_TRUE(emcys.empty()) << "a load of 1 is all the processor has, no more";
+    controlword_and_target(kEnableOperation, 1000);
+    run_with_sync(10ms);
+    drive.set_system_load(1.2);
+    run_with_sync(20ms);
+    ASSERT_TRUE(emcys.empty()) << "no new target value";
+
+    controlword_and_target(kEnableOperation, 2000);
+    run_with_sync(10ms);
+    expect_error(*this, 0xFF0B, 0x20);
+    EXPECT_EQ(drive.axis().mode(), plant::ControlMode::PowerOff);
+
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
+    EXPECT_EQ(read<std::uint8_t>(0x1001, 0), 0);
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

@@ -43,7 +43,12 @@ constexpr std::uint16_t kCanBusOffErrorCode = 0x81FD;
 constexpr std::uint16_t kCanPassiveErrorCode = 0x8120;
 constexpr std::uint16_t kCanRxQueueOverflowErrorCode = 0x81FE;
 constexpr std::uint16_t kCanTxQueueOverflowErrorCode = 0x81FF;
-constexpr std::uint16_t kControllerGainErrorCode = 0xFF10; // 4.2.36
+constexpr std::uint16_t kControllerGainErrorCode = 0xFF10;   // 4.2.36
+constexpr std::uint16_t kSystemOverloadedErrorCode = 0xFF0B; // 4.2.32
+// The target values of the modes (table 8-118): position, velocity, the Position, Velocity and
+// Current Mode setting values, the IPM data record.
+constexpr std::array<std::uint16_t, 6> kTargetValueObjects{0x607A, 0x60FF, 0x2062,
+                                                           0x206B, 0x2030, 0x20C1};
 
 // Table 8-125 and 8-102: the motor types with hall sensors, the main sensor types of encoder 1.
 constexpr std::uint16_t kSinusoidalEcMotor = 10;
@@ -287,6 +292,14 @@ void Epos2Drive::watch_dictionary() {
     for (const std::uint16_t set_value : kSetValueObjects) {
         od.on_change(set_value, [this](std::uint16_t index, std::uint8_t sub_index) {
             mode_behaviour_->on_set_value_written(seconds(), index, sub_index);
+        });
+    }
+    // 4.2.32: "not enough free resources to process new target value".
+    for (const std::uint16_t target : kTargetValueObjects) {
+        od.on_change(target, [this](std::uint16_t, std::uint8_t) {
+            if (system_load_.overloaded() && device_control_.outputs().drive_function_enabled) {
+                raise_device_error(kSystemOverloadedErrorCode);
+            }
         });
     }
     od.on_change(0x1003, [this](std::uint16_t, std::uint8_t sub) {

@@ -9,7 +9,7 @@ bool SystemLoadSupervision::update() {
 
 std::vector<DeviceErrorCode> SystemLoadSupervision::conditions() const {
     std::vector<DeviceErrorCode> codes;
-    if (load_ >= kCriticalLoad) {
+    if (load_.critical()) {
         codes.push_back(DeviceErrorCode::SystemOverloadedWarning);
     }
     if (peak_overloaded()) {

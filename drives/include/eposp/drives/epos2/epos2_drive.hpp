@@ -14,6 +14,7 @@
 #include "eposp/drives/motion/sensor_supervision.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/standstill_monitor.hpp"
+#include "eposp/drives/motion/system_load.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
 #include "eposp/drives/plant/low_pass_filter.hpp"
 #include "eposp/drives/plant/reference_axis.hpp"
@@ -102,6 +103,10 @@ public:
         power_stage_temperature_.set_ambient_temperature(celsius);
     }
     double power_stage_temperature() const { return power_stage_temperature_.temperature(); }
+    /// The share of its processor the drive's tasks would take (motion::SystemLoad, 1: all of
+    /// it). Above 1 a target value written with the drive function enabled cannot be processed:
+    /// 0xFF0B System Overloaded (4.2.32, "d").
+    void set_system_load(double share) { system_load_.set(share); }
 
     // Digital inputs and outputs of an EPOS2 24/5 (docs/epos2.md, "Digital inputs and outputs").
 
@@ -219,6 +224,7 @@ private:
     motion::StandstillMonitor standstill_;
     motion::I2tCurrentLimit i2t_;                   ///< 5.14.1, statusword bit 11
     PowerStageTemperature power_stage_temperature_; ///< 4.2.7
+    motion::SystemLoad system_load_;                ///< set from outside (4.2.32)
     std::unique_ptr<ModeServices> mode_services_;
     std::unique_ptr<ModeBehaviour> mode_behaviour_;   ///< of mode_ (modes/)
     std::unique_ptr<Epos2Io> io_;                     ///< digital I/O, marker, compare, brake

@@ -1,17 +1,17 @@
 #pragma once
 
 #include "eposp/drives/escon2/protection/device_error_code.hpp"
+#include "eposp/drives/motion/system_load.hpp"
 
 #include <vector>
 
 namespace eposp::drives::escon2 {
 
-/// The system load supervision (ESCON2 FW spec 7.1.36 - 7.1.40). The simulated firmware never
-/// runs short of processor time itself, so the load is a cause set from outside, as the supply
-/// voltage is: the share of its processor the device's tasks would take (1: all of it). The
-/// manual gives no thresholds; the simulation's are:
-/// - from kCriticalLoad on, the system overloaded warning (0xFF01), present while the load
-///   stays there (the Clear warning command resets it; it comes back while the load does);
+/// The system load supervision (ESCON2 FW spec 7.1.36 - 7.1.40) of the load set from outside
+/// (motion::SystemLoad). The manual gives no thresholds; the simulation's are:
+/// - from motion::SystemLoad::kCritical on, the system overloaded warning (0xFF01), present
+///   while the load stays there (the Clear warning command resets it; it comes back while the
+///   load does);
 /// - above 1, the regulation misses its periods: the system peak overloaded error (0xFF06),
 ///   present (a fault reset refused) while the load stays above 1;
 /// - above 1 for kWatchdogPeriods control periods without a break, the watchdog resets the
@@ -20,21 +20,20 @@ namespace eposp::drives::escon2 {
 /// pairs apart; the simulation raises the first code of each.
 class SystemLoadSupervision {
 public:
-    static constexpr double kCriticalLoad = 0.9;
     static constexpr int kWatchdogPeriods = 100; ///< of the drive's 1 ms control period
 
-    void set_load(double share) { load_ = share; }
+    void set_load(double share) { load_.set(share); }
     /// One control period. Returns whether the watchdog resets the device now.
     bool update();
     /// The device started again: the watchdog counts anew.
     void restart() { overloaded_periods_ = 0; }
 
-    bool peak_overloaded() const { return load_ > 1; }
+    bool peak_overloaded() const { return load_.overloaded(); }
     /// The present conditions as error codes (table 110).
     std::vector<DeviceErrorCode> conditions() const;
 
 private:
-    double load_ = 0;
+    motion::SystemLoad load_;
     int overloaded_periods_ = 0;
 };
 
