@@ -18,10 +18,9 @@ struct Checked {
 
 // Parse, names, types and checks: the stages that find the program's errors. Syntax and name
 // errors stop before typing; typing and the checks then both run, so that the errors come in one
-// compilation. The typing stage's diagnostics go to `typing`.
+// compilation.
 std::optional<Checked> check_stages(SourceManager& sources, std::span<const FileId> files,
-                                    Diagnostics& diagnostics, Diagnostics& typing,
-                                    std::span<const FileId> libraries,
+                                    Diagnostics& diagnostics, std::span<const FileId> libraries,
                                     const CompileOptions& options) {
     std::vector<FileId> all(files.begin(), files.end());
     all.insert(all.end(), libraries.begin(), libraries.end());
@@ -32,7 +31,7 @@ std::optional<Checked> check_stages(SourceManager& sources, std::span<const File
     auto program = types::type_program(
         front_end->units, *front_end->model,
         [&front_end = *front_end](std::string_view name) { return front_end.library_pou(name); },
-        typing);
+        diagnostics);
     checks::check_program(*program, front_end->units, libraries.size(), options, diagnostics);
     return Checked{std::move(front_end), std::move(program)};
 }
@@ -41,18 +40,17 @@ std::optional<Checked> check_stages(SourceManager& sources, std::span<const File
 
 bool check(SourceManager& sources, std::span<const FileId> files, Diagnostics& diagnostics,
            std::span<const FileId> libraries, const CompileOptions& options) {
-    check_stages(sources, files, diagnostics, diagnostics, libraries, options);
+    check_stages(sources, files, diagnostics, libraries, options);
     return !diagnostics.has_errors();
 }
 
 std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId> files,
                                  Diagnostics& diagnostics, std::span<const FileId> libraries,
                                  const CompileOptions& options) {
-    // Code generation still reports the type errors itself (issue 17): the typing stage's
-    // go aside, and the checks run on what it typed.
-    Diagnostics typing;
-    const auto checked = check_stages(sources, files, diagnostics, typing, libraries, options);
-    if (!checked) {
+    // Code generation runs on a program without errors: it reports only the limits of the image
+    // (E05xx).
+    const auto checked = check_stages(sources, files, diagnostics, libraries, options);
+    if (!checked || diagnostics.has_errors()) {
         return std::nullopt;
     }
     const types::FrontEnd& front_end = *checked->front_end;
