@@ -6,7 +6,7 @@
 #include "eposp/vm/image_limits.hpp"
 #include "pou_generator.hpp"
 
-#include <stdexcept>
+#include <fmt/format.h>
 
 namespace eposp::compiler::codegen {
 
@@ -532,11 +532,11 @@ std::optional<Place> ProgramGenerator::direct_variable(const ast::DirectAddress&
     return place;
 }
 
-void ProgramGenerator::refused_by_checks(DiagnosticCode code) const {
-    if (!diagnostics_.has_errors()) {
-        throw std::logic_error("code generation met what the checks refuse (" +
-                               std::string(describe(code).name) + "), with no error reported");
-    }
+void ProgramGenerator::refused_by_checks(DiagnosticCode code) {
+    diagnostics_.error(DiagnosticCode::E0001, {},
+                       fmt::format("internal error: code generation met what the checks refuse "
+                                   "({}), and they did not report it",
+                                   describe(code).name));
 }
 
 void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const sema::Type& type,

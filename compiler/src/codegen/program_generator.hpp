@@ -68,9 +68,10 @@ public:
     sema::TypeTable& types() { return types_; }
     Diagnostics& diagnostics() { return diagnostics_; }
     /// Where code generation meets what the checking stage refuses (a branch that a program
-    /// which passed the checks never takes): they reported it, so nothing is generated for it.
-    /// Without an error reported this is a checks' gap, a programming error (std::logic_error).
-    void refused_by_checks(DiagnosticCode code) const;
+    /// which passed the checks never takes): nothing is generated for it. Code generation runs
+    /// only on a program without errors, so this is a gap of the checks: an internal compiler
+    /// error (E0001) that names the rule, so no image is made and the user can report it.
+    void refused_by_checks(DiagnosticCode code);
     const OpcodeTable& opcodes() const { return opcodes_; }
     bool if_conversion() const { return options_.if_conversion; }
     /// A global of a configuration or global variable list by name (VAR_EXTERNAL binds to
