@@ -9,8 +9,9 @@
 namespace eposp::drives::escon2 {
 namespace {
 
-constexpr std::uint16_t kBrushedDcMotor = 1;     // table 108
-constexpr std::uint16_t kSinusoidalEcMotor = 10; // table 108
+constexpr std::uint16_t kBrushedDcMotor = 1;        // table 108
+constexpr std::uint16_t kSinusoidalEcMotor = 10;    // table 108
+constexpr std::uint16_t kEncoderInverted = 1U << 4; // table 55: 0x3010 sub 2 "Direction"
 constexpr double kMicro = 1e-6;
 constexpr double kMicroPerMilli = 1e-3; // µV/(A·ms) in V/(A·s)
 
@@ -55,6 +56,8 @@ void write_axis_defaults(canopen::ObjectDictionary& od, const plant::AxisParamet
 plant::AxisParameters configured_axis(const canopen::ObjectDictionary& od,
                                       plant::AxisParameters machine) {
     machine.encoder_pulses = static_cast<int>(od.get_as<std::uint32_t>(0x3010, 1));
+    machine.encoder_reading.inverted =
+        (od.get_as<std::uint16_t>(0x3010, 2) & kEncoderInverted) != 0;
     plant::ServoGains& gains = machine.gains;
     gains.current = {gain(od, 0x30A0, 1, kMicro), gain(od, 0x30A0, 2, kMicroPerMilli)};
     gains.velocity = {gain(od, 0x30A2, 1, kMicro), gain(od, 0x30A2, 2, kMicro),

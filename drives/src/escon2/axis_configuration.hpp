@@ -8,7 +8,8 @@
 
 namespace eposp::drives::escon2 {
 
-// The plant as the ESCON2's dictionary configures it: encoder pulses 0x3010 sub 1 (6.2.16), the
+// The plant as the ESCON2's dictionary configures it: encoder pulses 0x3010 sub 1 and direction
+// 0x3010 sub 2 bit 4 (6.2.16; it reads right where it matches the machine's mounting), the
 // control parameter sets 0x30A0 / 0x30A2 (6.2.18, 6.2.19), the output current limit and pole
 // pairs of 0x3001 (6.2.14) and the motor type 0x6402 (6.2.80). The physical motor, load and
 // supply are the simulated machine's.

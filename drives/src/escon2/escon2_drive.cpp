@@ -42,6 +42,7 @@ constexpr std::uint16_t kOvercurrentError = 0x2310;              // 7.1.3
 constexpr std::uint16_t kLoadingParameterFailedError = 0x6380;   // 7.1.17
 constexpr std::uint16_t kMissingMainSensorError = 0x7390;        // 7.1.25
 constexpr std::uint16_t kMissingCommutationSensorError = 0x7391; // 7.1.26
+constexpr std::uint16_t kMainSensorDirectionError = 0x7392;      // 7.1.27
 constexpr std::uint16_t kModeNotSupportedError = 0xFF0D;         // 7.1.41
 // 7.1.22 - 7.1.24: the sensor supervision's errors. A Hall sensor 3 edge missing for a turn is
 // a Hall signal error (7.1.23: "incorrect wiring of Hall sensor supply voltage"); the encoder
@@ -238,6 +239,12 @@ void Escon2Drive::watch_sensors() {
                                                       axis_.hall_sensors(), sensor_faults_)) {
         raise_device_error(kSensorErrorCodes.of(*fault));
     }
+    // 7.1.27: the motor's turning shows at its terminals only with the power stage on.
+    const bool watching = power_stage_on_ && direction_supervision_;
+    if (sensor_direction_.update(watching ? axis_.motor().state().speed : 0,
+                                 axis_.position_actual())) {
+        raise_device_error(kMainSensorDirectionError);
+    }
 }
 
 // 6.2.13, 6.2.14.3, 6.2.16: what the sensor supervision checks; a new configuration is a
@@ -250,15 +257,21 @@ void Escon2Drive::read_sensor_configuration() {
     const bool encoder = (sensors & kSensor2Mask) != 0;
     const bool hall_sensors = (sensors & kSensor1Mask) != 0 &&
                               (miscellaneous & kCommutationSensorSupervisionDisabled) == 0;
+    const bool main_sensor_supervised = od.get_as<std::uint32_t>(0x3000, 2) == kMainSensorSensor2 &&
+                                        (miscellaneous & kMainSensorSupervisionDisabled) == 0;
     sensor_supervision_.configure(
         {.encoder_pulses = static_cast<int>(od.get_as<std::uint32_t>(0x3010, 1)),
          .encoder = encoder,
          .encoder_index = false,
          .hall_sensors = hall_sensors,
-         .breach_supervision = od.get_as<std::uint32_t>(0x3000, 2) == kMainSensorSensor2 &&
-                               (miscellaneous & kMainSensorSupervisionDisabled) == 0,
+         .breach_supervision = main_sensor_supervised,
          .hall_angle = hall_sensors && encoder,
          .pole_pairs = od.get_as<std::uint8_t>(0x3001, 3)});
+    // 7.1.27 is the main sensor supervision's too (table 52 bit 8); a quarter turn of the
+    // encoder against the motor is the error (the manual gives no threshold).
+    direction_supervision_ = main_sensor_supervised;
+    sensor_direction_ = motion::SensorDirectionMonitor(od.get_as<std::uint32_t>(0x3010, 1),
+                                                       axis_.position_actual());
     restart_sensor_supervision();
 }
 

@@ -10,6 +10,7 @@
 #include "eposp/drives/escon2/protection/system_load_supervision.hpp"
 #include "eposp/drives/escon2/protection/thermal_supervision.hpp"
 #include "eposp/drives/motion/device_control.hpp"
+#include "eposp/drives/motion/sensor_direction_monitor.hpp"
 #include "eposp/drives/motion/sensor_supervision.hpp"
 #include "eposp/drives/motion/trajectory.hpp"
 #include "eposp/drives/plant/low_pass_filter.hpp"
@@ -182,8 +183,10 @@ private:
     double power_stage_loss_resistance_;
     double ambient_temperature_;
     std::unique_ptr<Escon2Io> io_;
-    motion::SensorSupervision sensor_supervision_; ///< 7.1.22 - 7.1.24
-    plant::SensorFaults sensor_faults_;            ///< injected
+    motion::SensorSupervision sensor_supervision_;    ///< 7.1.22 - 7.1.24
+    motion::SensorDirectionMonitor sensor_direction_; ///< 7.1.27
+    bool direction_supervision_ = false; ///< the encoder is the main sensor and supervised
+    plant::SensorFaults sensor_faults_;  ///< injected
 
     OperatingMode mode_ = OperatingMode::IoVelocity;
     std::uint16_t controlword_ = 0;

@@ -1,0 +1,160 @@
+// The ESCON2's errors of table 110 whose causes lie in the axis and its configuration (ESCON2 FW
+// spec 7.1): each with its error code, error register, history entry, reaction and recovery,
+// in virtual time.
+#include "eposp/drives/escon2/escon2_drive.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <functional>
+#include <gtest/gtest.h>
+#include <memory>
+#include <unistd.h>
+
+namespace eposp::drives::escon2 {
+namespace {
+
+using canopen::AbortCode;
+using namespace std::chrono_literals;
+
+constexpr std::uint16_t kStateMask = 0x006F; // table 6
+constexpr std::uint16_t kSwitchOnDisabled = 0x0040;
+constexpr std::uint16_t kOperationEnabled = 0x0027;
+constexpr std::uint16_t kFault = 0x0008;
+constexpr std::uint16_t kEncoderInverted = 1U << 4;         // table 55
+constexpr std::uint32_t kNoMainSensorSupervision = 1U << 8; // table 52
+constexpr std::int32_t kRpm = 1000;
+
+class Escon2AxisErrors : public ::testing::Test {
+protected:
+    ~Escon2AxisErrors() override { std::filesystem::remove(parameter_file()); }
+
+    static std::filesystem::path parameter_file() {
+        return std::filesystem::temp_directory_path() /
+               fmt::format("escon2-axis-errors-{}-{}.bin", ::getpid(),
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    }
+
+    /// The reference axis with a brushed motor (the encoder alone, the main sensor), as the
+    /// machine is built: `machine` changes it first.
+    void start(const std::function<void(plant::AxisParameters&)>& machine = {}) {
+        Escon2DriveConfig config;
+        config.dictionary.parameter_file = parameter_file();
+        config.axis.plant.motor.kind = plant::MotorKind::BrushedDc;
+        if (machine) {
+            machine(config.axis);
+        }
+        drive = std::make_unique<Escon2Drive>(loop, config);
+        drive->start();
+    }
+    template <typename T>
+    void write(std::uint16_t index, std::uint8_t sub, T value) {
+        ASSERT_EQ(drive->objects().write(index, sub, canopen::encode(value)), AbortCode::None);
+    }
+    template <typename T>
+    T read(std::uint16_t index, std::uint8_t sub = 0) const {
+        return drive->objects().get_as<T>(index, sub);
+    }
+    std::uint16_t state() const { return read<std::uint16_t>(0x6041) & kStateMask; }
+    void controlword(std::uint16_t value) { write(0x6040, 0, value); }
+    void enable() {
+        controlword(0x06);
+        controlword(0x0F);
+    }
+    double motor_rpm() const { return drive->axis().motor().state().speed * 60 / (2 * M_PI); }
+
+    /// Table 110 "d": the error's code, register bits and history entry (the newest), and the
+    /// drive disabled at once, without the quick stop ramp.
+    void expect_disabled_with(std::uint16_t code, std::uint8_t error_register) {
+        loop.run_for(2ms);
+        EXPECT_EQ(state(), kFault);
+        EXPECT_EQ(drive->axis().mode(), plant::ControlMode::PowerOff);
+        EXPECT_EQ(read<std::uint16_t>(0x603F), code);
+        EXPECT_EQ(read<std::uint8_t>(0x1001), error_register);
+        EXPECT_GE(read<std::uint8_t>(0x1003, 0), 1u);
+        EXPECT_EQ(read<std::uint32_t>(0x1003, 1), code) << "an error: bit 31 clear";
+    }
+
+    /// "Reset fault with Controlword": the error and its register bits go.
+    void expect_fault_reset() {
+        controlword(0x80);
+        loop.run_for(2ms);
+        EXPECT_EQ(state(), kSwitchOnDisabled);
+        EXPECT_EQ(read<std::uint16_t>(0x603F), 0);
+        EXPECT_EQ(read<std::uint8_t>(0x1001), 0u);
+    }
+
+    core::EventLoop loop;
+    std::unique_ptr<Escon2Drive> drive;
+};
+
+void mounted_the_other_way_round(plant::AxisParameters& axis) {
+    axis.encoder_mounting.counts_against_motor = true;
+}
+
+// 7.1.27 "wrong setting of sensor polarity": an encoder mounted the other way round (the machine
+// file's encoder.counts_against_motor) read with the maxon direction of 0x3010 sub 2 counts
+// against the motor; the velocity loop drives it away until the supervision has seen a quarter
+// turn (500 lines: 500 quadcounts) against the motor's turning.
+TEST_F(Escon2AxisErrors, EncoderCountingAgainstTheMotorRaises7392MainSensorDirectionError) {
+    start(mounted_the_other_way_round);
+    enable();
+    drive->set_velocity_set_value(kRpm);
+    for (int ms = 0; ms < 1000 && state() == kOperationEnabled; ++ms) {
+        loop.run_for(1ms);
+    }
+    expect_disabled_with(0x7392, 0b0010'0001);
+    EXPECT_LT(std::abs(drive->axis().position_actual()), 1000) << "found within half a turn";
+    expect_fault_reset();
+    enable();
+    loop.run_for(200ms);
+    EXPECT_EQ(state(), kFault) << "the wrong setting trips again";
+    EXPECT_EQ(read<std::uint16_t>(0x603F), 0x7392);
+}
+
+// 0x3010 sub 2 bit 4 "Inverted (or encoder mounted on motor shaft)" matching the mounting: the
+// axis runs as it does with a maxon encoder, both ways.
+TEST_F(Escon2AxisErrors, EncoderDirectionMatchingTheMountingRunsNormally) {
+    start(mounted_the_other_way_round);
+    write(0x3010, 2, kEncoderInverted);
+    enable();
+    drive->set_velocity_set_value(kRpm);
+    loop.run_for(300ms);
+    EXPECT_EQ(state(), kOperationEnabled);
+    EXPECT_NEAR(read<std::int32_t>(0x606C), kRpm, 10);
+    EXPECT_NEAR(motor_rpm(), kRpm, 10) << "the motor turns positive on a positive demand";
+    drive->set_velocity_set_value(-kRpm);
+    loop.run_for(500ms);
+    EXPECT_EQ(state(), kOperationEnabled);
+    EXPECT_NEAR(motor_rpm(), -kRpm, 10);
+    EXPECT_EQ(read<std::uint8_t>(0x1003, 0), 0u);
+}
+
+// The same setting on a maxon-mounted encoder is the wrong one.
+TEST_F(Escon2AxisErrors, InvertedDirectionOnAMaxonMountedEncoderRaises7392) {
+    start();
+    write(0x3010, 2, kEncoderInverted);
+    enable();
+    drive->set_velocity_set_value(kRpm);
+    loop.run_for(200ms);
+    expect_disabled_with(0x7392, 0b0010'0001);
+}
+
+// Table 52 bit 8 switches the main sensor supervision off, and with it 7.1.27: the axis runs
+// away unsupervised, the motor ever faster the commanded way while the encoder reads it turning
+// the other.
+TEST_F(Escon2AxisErrors, WithTheMainSensorSupervisionDisabledNo7392) {
+    start(mounted_the_other_way_round);
+    write(0x3000, 4, kNoMainSensorSupervision);
+    enable();
+    drive->set_velocity_set_value(kRpm);
+    loop.run_for(200ms);
+    EXPECT_EQ(read<std::uint16_t>(0x603F), 0);
+    EXPECT_EQ(state(), kOperationEnabled);
+    EXPECT_GT(motor_rpm(), 5 * kRpm);
+    EXPECT_LT(read<std::int32_t>(0x606C), -5 * kRpm);
+}
+
+} // namespace
+} // namespace eposp::drives::escon2
