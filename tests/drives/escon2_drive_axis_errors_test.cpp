@@ -156,5 +156,58 @@ TEST_F(Escon2AxisErrors, WithTheMainSensorSupervisionDisabledNo7392) {
     EXPECT_LT(read<std::int32_t>(0x606C), -5 * kRpm);
 }
 
+// 7.1.21: the enable calibrates the current offset as the power stage comes on. Disabled at
+// 1000 rpm and enabled again at once, the motor still coasts: the warning (bit 7, bit 31 of its
+// history entry), the drive runs on. Stopped and enabled again at standstill, the calibration
+// succeeds and clears it.
+TEST_F(Escon2AxisErrors, EnablingWhileTheMotorTurnsRaises7280UntilAnEnableAtStandstill) {
+    start();
+    enable();
+    drive->set_velocity_set_value(kRpm);
+    loop.run_for(200ms);
+    controlword(0x00);
+    loop.run_for(1ms);
+    ASSERT_EQ(drive->axis().mode(), plant::ControlMode::PowerOff);
+    enable();
+    loop.run_for(2ms);
+    EXPECT_GT(motor_rpm(), 500) << "still coasting";
+    EXPECT_EQ(state(), kOperationEnabled);
+    EXPECT_EQ(drive->axis().mode(), plant::ControlMode::Velocity);
+    EXPECT_NE(read<std::uint16_t>(0x6041) & 0x80, 0) << "warning";
+    EXPECT_EQ(read<std::uint16_t>(0x603F), 0x7280);
+    EXPECT_EQ(read<std::uint8_t>(0x1001), 0b0000'0001);
+    EXPECT_EQ(read<std::uint8_t>(0x1003, 0), 1u);
+    EXPECT_EQ(read<std::uint32_t>(0x1003, 1), 0x8000'7280u) << "a warning: bit 31 set";
+
+    controlword(0x8F); // Clear warning (table 8) does not: it auto clears (table 110)
+    controlword(0x0F);
+    loop.run_for(1ms);
+    EXPECT_EQ(state(), kOperationEnabled);
+    EXPECT_EQ(read<std::uint16_t>(0x603F), 0x7280);
+
+    drive->set_velocity_set_value(0);
+    loop.run_for(300ms);
+    ASSERT_LT(std::abs(motor_rpm()), 1);
+    controlword(0x00);
+    loop.run_for(1ms);
+    enable();
+    loop.run_for(2ms);
+    EXPECT_EQ(state(), kOperationEnabled);
+    EXPECT_EQ(read<std::uint16_t>(0x6041) & 0x80, 0);
+    EXPECT_EQ(read<std::uint16_t>(0x603F), 0);
+    EXPECT_EQ(read<std::uint8_t>(0x1001), 0u);
+    EXPECT_EQ(read<std::uint8_t>(0x1003, 0), 1u) << "the history keeps the entry";
+}
+
+// An enable from rest raises nothing.
+TEST_F(Escon2AxisErrors, EnablingAtStandstillRaisesNo7280) {
+    start();
+    enable();
+    loop.run_for(2ms);
+    EXPECT_EQ(state(), kOperationEnabled);
+    EXPECT_EQ(read<std::uint16_t>(0x603F), 0);
+    EXPECT_EQ(read<std::uint8_t>(0x1003, 0), 0u);
+}
+
 } // namespace
 } // namespace eposp::drives::escon2

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 namespace eposp::drives::escon2 {
@@ -40,6 +41,7 @@ constexpr std::uint32_t kCommutationSensorSupervisionDisabled = 1U << 9;
 // Table 110: the errors the drive itself detects.
 constexpr std::uint16_t kOvercurrentError = 0x2310;              // 7.1.3
 constexpr std::uint16_t kLoadingParameterFailedError = 0x6380;   // 7.1.17
+constexpr std::uint16_t kCurrentOffsetWarning = 0x7280;          // 7.1.21
 constexpr std::uint16_t kMissingMainSensorError = 0x7390;        // 7.1.25
 constexpr std::uint16_t kMissingCommutationSensorError = 0x7391; // 7.1.26
 constexpr std::uint16_t kMainSensorDirectionError = 0x7392;      // 7.1.27
@@ -624,10 +626,25 @@ void Escon2Drive::command(std::uint16_t device_command) {
 
 void Escon2Drive::follow_power_stage() {
     const bool on = device_control_.outputs().power_stage_on;
+    if (on && !power_stage_on_) {
+        calibrate_current_offset();
+    }
     if (on != power_stage_on_) {
         power_stage_on_ = on;
         stop_.reset();
         on_mode_written(); // the mode starts over on the actual state
+    }
+}
+
+// 7.1.21: the enable calibrates the current offset as the power stage comes on; a motor already
+// turning spoils it ("Ensure the motor is stationary"), the next one at standstill clears it.
+// The manual gives no threshold: faster than 10 rpm is turning.
+void Escon2Drive::calibrate_current_offset() {
+    constexpr double kStandstill = 10.0 * 2 * std::numbers::pi / 60; // rad/s
+    if (std::abs(axis_.motor().state().speed) > kStandstill) {
+        raise_device_error(kCurrentOffsetWarning);
+    } else if (errors_.active(kCurrentOffsetWarning)) {
+        clear_warning(kCurrentOffsetWarning);
     }
 }
 

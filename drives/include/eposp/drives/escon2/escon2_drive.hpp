@@ -154,6 +154,7 @@ private:
     double max_duty_cycle() const;
     void command(std::uint16_t device_command);
     void follow_power_stage();
+    void calibrate_current_offset();
     void check_configuration();
     plant::AxisDemand stop_ramp(double now);
     plant::AxisDemand velocity_mode(double now);
