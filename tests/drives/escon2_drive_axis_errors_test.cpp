@@ -85,6 +85,14 @@ protected:
         EXPECT_EQ(read<std::uint8_t>(0x1001), 0u);
     }
 
+    /// The motor, unpowered, slows down by its friction (at most a minute).
+    void coast_to_rest() {
+        for (int step = 0; step < 6000 && std::abs(motor_rpm()) >= 1; ++step) {
+            loop.run_for(10ms);
+        }
+        ASSERT_LT(std::abs(motor_rpm()), 1);
+    }
+
     core::EventLoop loop;
     std::unique_ptr<Escon2Drive> drive;
 };
@@ -207,6 +215,31 @@ TEST_F(Escon2AxisErrors, EnablingAtStandstillRaisesNo7280) {
     EXPECT_EQ(state(), kOperationEnabled);
     EXPECT_EQ(read<std::uint16_t>(0x603F), 0);
     EXPECT_EQ(read<std::uint8_t>(0x1003, 0), 0u);
+}
+
+// 7.1.4: a short of the motor winding trips the power stage protection once the power stage
+// drives the motor: "d", register 0000 0011b. The fault reset is allowed (the disabled power
+// stage sees nothing); enabling again trips again until the winding is repaired.
+TEST_F(Escon2AxisErrors, ShortedWindingRaises2320WhenThePowerStageDrivesTheMotor) {
+    start();
+    enable();
+    drive->set_velocity_set_value(kRpm);
+    loop.run_for(200ms);
+    drive->short_motor_winding(true);
+    expect_disabled_with(0x2320, 0b0000'0011);
+    EXPECT_EQ(read<std::uint8_t>(0x1003, 0), 1u);
+    expect_fault_reset();
+    coast_to_rest(); // an enable while it turns would add 0x7280
+    EXPECT_EQ(state(), kSwitchOnDisabled) << "nothing found with the power stage off";
+    enable();
+    expect_disabled_with(0x2320, 0b0000'0011);
+    EXPECT_EQ(read<std::uint8_t>(0x1003, 0), 2u) << "a new occurrence";
+    drive->short_motor_winding(false);
+    expect_fault_reset();
+    enable();
+    loop.run_for(200ms);
+    EXPECT_EQ(state(), kOperationEnabled);
+    EXPECT_NEAR(motor_rpm(), kRpm, 10);
 }
 
 } // namespace

@@ -131,6 +131,10 @@ public:
     /// Hall pattern 0x301A sub 2 reads as the faults make it, and the sensor supervision raises
     /// what it finds (7.1.22 - 7.1.24, docs/escon2.md "Sensor errors").
     void inject_sensor_faults(const plant::SensorFaults& faults) { sensor_faults_ = faults; }
+    /// A short of the motor winding against ground (or Vcc, a damaged power stage) from now on
+    /// (false: repaired): the power stage protection finds it once the power stage drives the
+    /// motor (7.1.4, 0x2320), as on the EPOS2 (Epos2Drive::short_motor_winding).
+    void short_motor_winding(bool shorted) { winding_shorted_ = shorted; }
 
 private:
     static Escon2DictionaryConfig with_power_disable_rule(Escon2DictionaryConfig config,
@@ -188,6 +192,7 @@ private:
     motion::SensorDirectionMonitor sensor_direction_; ///< 7.1.27
     bool direction_supervision_ = false; ///< the encoder is the main sensor and supervised
     plant::SensorFaults sensor_faults_;  ///< injected
+    bool winding_shorted_ = false;       ///< injected (7.1.4)
 
     OperatingMode mode_ = OperatingMode::IoVelocity;
     std::uint16_t controlword_ = 0;
