@@ -10,6 +10,7 @@
 #include <functional>
 #include <gtest/gtest.h>
 #include <memory>
+#include <numbers>
 #include <unistd.h>
 
 namespace eposp::drives::escon2 {
@@ -62,7 +63,9 @@ protected:
         controlword(0x06);
         controlword(0x0F);
     }
-    double motor_rpm() const { return drive->axis().motor().state().speed * 60 / (2 * M_PI); }
+    double motor_rpm() const {
+        return drive->axis().motor().state().speed * 60 / (2 * std::numbers::pi);
+    }
 
     /// Table 110 "d": the error's code, register bits and history entry (the newest), and the
     /// drive disabled at once, without the quick stop ramp.
