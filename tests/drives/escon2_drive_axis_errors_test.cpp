@@ -1,82 +1,39 @@
 // The ESCON2's errors of table 110 whose causes lie in the axis and its configuration (ESCON2 FW
 // spec 7.1): each with its error code, error register, history entry, reaction and recovery,
 // in virtual time.
-#include "eposp/drives/escon2/escon2_drive.hpp"
+#include "escon2_drive_fixture.hpp"
 
 #include <chrono>
 #include <cmath>
-#include <filesystem>
-#include <fmt/format.h>
 #include <functional>
 #include <gtest/gtest.h>
-#include <memory>
 #include <numbers>
-#include <unistd.h>
 
 namespace eposp::drives::escon2 {
 namespace {
 
-using canopen::AbortCode;
 using namespace std::chrono_literals;
 
-constexpr std::uint16_t kStateMask = 0x006F; // table 6
-constexpr std::uint16_t kSwitchOnDisabled = 0x0040;
-constexpr std::uint16_t kOperationEnabled = 0x0027;
-constexpr std::uint16_t kFault = 0x0008;
+using namespace test;
+
 constexpr std::uint16_t kEncoderInverted = 1U << 4;         // table 55
 constexpr std::uint32_t kNoMainSensorSupervision = 1U << 8; // table 52
 constexpr std::int32_t kRpm = 1000;
 
-class Escon2AxisErrors : public ::testing::Test {
+class Escon2AxisErrors : public test::Escon2DriveFixture {
 protected:
-    ~Escon2AxisErrors() override { std::filesystem::remove(parameter_file()); }
-
-    static std::filesystem::path parameter_file() {
-        return std::filesystem::temp_directory_path() /
-               fmt::format("escon2-axis-errors-{}-{}.bin", ::getpid(),
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    }
-
     /// The reference axis with a brushed motor (the encoder alone, the main sensor), as the
     /// machine is built: `machine` changes it first.
     void start(const std::function<void(plant::AxisParameters&)>& machine = {}) {
         Escon2DriveConfig config;
-        config.dictionary.parameter_file = parameter_file();
         config.axis.plant.motor.kind = plant::MotorKind::BrushedDc;
         if (machine) {
             machine(config.axis);
         }
-        drive = std::make_unique<Escon2Drive>(loop, config);
-        drive->start();
-    }
-    template <typename T>
-    void write(std::uint16_t index, std::uint8_t sub, T value) {
-        ASSERT_EQ(drive->objects().write(index, sub, canopen::encode(value)), AbortCode::None);
-    }
-    template <typename T>
-    T read(std::uint16_t index, std::uint8_t sub = 0) const {
-        return drive->objects().get_as<T>(index, sub);
-    }
-    std::uint16_t state() const { return read<std::uint16_t>(0x6041) & kStateMask; }
-    void controlword(std::uint16_t value) { write(0x6040, 0, value); }
-    void enable() {
-        controlword(0x06);
-        controlword(0x0F);
+        Escon2DriveFixture::start(config);
     }
     double motor_rpm() const {
         return drive->axis().motor().state().speed * 60 / (2 * std::numbers::pi);
-    }
-
-    /// Table 110 "d": the error's code, register bits and history entry (the newest), and the
-    /// drive disabled at once, without the quick stop ramp.
-    void expect_disabled_with(std::uint16_t code, std::uint8_t error_register) {
-        loop.run_for(2ms);
-        EXPECT_EQ(state(), kFault);
-        EXPECT_EQ(drive->axis().mode(), plant::ControlMode::PowerOff);
-        EXPECT_EQ(read<std::uint16_t>(0x603F), code);
-        EXPECT_EQ(read<std::uint8_t>(0x1001), error_register);
-        EXPECT_GE(read<std::uint8_t>(0x1003, 0), 1u);
-        EXPECT_EQ(read<std::uint32_t>(0x1003, 1), code) << "an error: bit 31 clear";
     }
 
     /// "Reset fault with Controlword": the error and its register bits go.
@@ -95,9 +52,6 @@ protected:
         }
         ASSERT_LT(std::abs(motor_rpm()), 1);
     }
-
-    core::EventLoop loop;
-    std::unique_ptr<Escon2Drive> drive;
 };
 
 void mounted_the_other_way_round(plant::AxisParameters& axis) {

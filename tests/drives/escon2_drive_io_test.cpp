@@ -1,69 +1,33 @@
 // The ESCON2's inputs and outputs wired into the running drive (chapter 4, 6.2.26 - 6.2.54):
 // the I/O classes configured from the dictionary, commanding the modes and the device control,
 // raising their errors, and showing the drive's state on the outputs, in virtual time.
-#include "eposp/drives/escon2/escon2_drive.hpp"
+#include "escon2_drive_fixture.hpp"
 
 #include <chrono>
-#include <filesystem>
-#include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 namespace eposp::drives::escon2 {
 namespace {
 
-using canopen::AbortCode;
 using namespace std::chrono_literals;
 
-constexpr std::uint16_t kStateMask = 0x006F; // table 6
-constexpr std::uint16_t kSwitchOnDisabled = 0x0040;
-constexpr std::uint16_t kOperationEnabled = 0x0027;
-constexpr std::uint16_t kFault = 0x0008;
-constexpr std::uint16_t kWarning = 1U << 7;
+using namespace test;
 
-class Escon2DriveIo : public ::testing::Test {
+class Escon2DriveIo : public test::Escon2DriveFixture {
 protected:
-    static Escon2DriveConfig config() {
-        Escon2DriveConfig config;
-        config.dictionary.parameter_file =
-            std::filesystem::temp_directory_path() /
-            fmt::format("escon2-io-{}-{}.bin", ::getpid(),
-                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        return config;
-    }
-
-    Escon2DriveIo() { drive.start(); }
-
-    template <typename T>
-    void write(std::uint16_t index, std::uint8_t sub, T value) {
-        ASSERT_EQ(drive.objects().write(index, sub, canopen::encode(value)), AbortCode::None)
-            << fmt::format("0x{:04X} sub {}", index, sub);
-    }
-    template <typename T>
-    T read(std::uint16_t index, std::uint8_t sub = 0) const {
-        return drive.objects().get_as<T>(index, sub);
-    }
-    std::uint16_t state() const { return read<std::uint16_t>(0x6041) & kStateMask; }
-    void enable() {
-        write(0x6040, 0, std::uint16_t{0x06});
-        write(0x6040, 0, std::uint16_t{0x0F});
-    }
-    void run(std::chrono::milliseconds duration) { loop.run_for(duration); }
-
-    core::EventLoop loop;
-    Escon2Drive drive{loop, config()};
+    Escon2DriveIo() { start(); }
 };
 
 // Table 59 "Drive enable": the input enables and disables the drive (after its 1 ms filter).
 TEST_F(Escon2DriveIo, DriveEnableInputEnablesAndDisables) {
     write(0x3142, 3, std::uint8_t{27});
-    drive.set_digital_input(3, true);
+    drive->set_digital_input(3, true);
     run(1ms);
     EXPECT_EQ(state(), kSwitchOnDisabled) << "not held for the filter time yet";
     run(2ms);
     EXPECT_EQ(state(), kOperationEnabled);
     EXPECT_NE(read<std::uint32_t>(0x3143) & (1U << 27), 0u);
-    drive.set_digital_input(3, false);
+    drive->set_digital_input(3, false);
     run(3ms);
     EXPECT_EQ(state(), kSwitchOnDisabled);
 }
@@ -71,14 +35,14 @@ TEST_F(Escon2DriveIo, DriveEnableInputEnablesAndDisables) {
 // Table 59 "Drive enable ... or clear errors in Fault state".
 TEST_F(Escon2DriveIo, DriveEnableClearsAFault) {
     write(0x3142, 3, std::uint8_t{27});
-    drive.set_digital_input(3, true);
+    drive->set_digital_input(3, true);
     run(3ms);
-    drive.raise_device_error(0x1000);
+    drive->raise_device_error(0x1000);
     run(2ms);
     ASSERT_EQ(state(), kFault);
-    drive.set_digital_input(3, false);
+    drive->set_digital_input(3, false);
     run(3ms);
-    drive.set_digital_input(3, true);
+    drive->set_digital_input(3, true);
     run(3ms);
     EXPECT_EQ(state(), kSwitchOnDisabled);
     EXPECT_EQ(read<std::uint16_t>(0x603F), 0);
@@ -90,7 +54,7 @@ TEST_F(Escon2DriveIo, AnalogInputSetsTheTargetVelocity) {
     write(0x3161, 1, std::uint8_t{9});
     write(0x31B0, 2, std::int32_t{-2000});
     write(0x31B0, 4, std::int32_t{2000});
-    drive.set_analog_input(1, 5.0);
+    drive->set_analog_input(1, 5.0);
     enable();
     run(200ms);
     EXPECT_EQ(read<std::int32_t>(0x60FF), 1000);
@@ -104,7 +68,7 @@ TEST_F(Escon2DriveIo, PwmInputSetsTheTargetCurrent) {
     write(0x6060, 0, std::int8_t{-120});
     write(0x3142, 1, std::uint8_t{36});
     write(0x3184, 4, std::int32_t{2000});
-    drive.set_pwm_signal(1, PwmSignal{.frequency = 1000, .duty_cycle = 50});
+    drive->set_pwm_signal(1, PwmSignal{.frequency = 1000, .duty_cycle = 50});
     enable();
     run(20ms);
     EXPECT_EQ(read<std::int32_t>(0x30F0), 1000);
@@ -116,11 +80,11 @@ TEST_F(Escon2DriveIo, PwmInputSetsTheTargetCurrent) {
 // 7.1.30: a PWM frequency above 10 kHz is a warning (bit 7) that clears with its cause.
 TEST_F(Escon2DriveIo, PwmFrequencyOutOfRangeIsAWarning) {
     write(0x3142, 1, std::uint8_t{32});
-    drive.set_pwm_signal(1, PwmSignal{.frequency = 20'000, .duty_cycle = 50});
+    drive->set_pwm_signal(1, PwmSignal{.frequency = 20'000, .duty_cycle = 50});
     run(10ms);
     EXPECT_NE(read<std::uint16_t>(0x6041) & kWarning, 0);
     EXPECT_EQ(read<std::uint16_t>(0x603F), 0x8A89);
-    drive.set_pwm_signal(1, PwmSignal{.frequency = 1000, .duty_cycle = 50});
+    drive->set_pwm_signal(1, PwmSignal{.frequency = 1000, .duty_cycle = 50});
     run(10ms);
     EXPECT_EQ(read<std::uint16_t>(0x6041) & kWarning, 0);
     EXPECT_EQ(read<std::uint32_t>(0x1003, 1), 0x8000'8A89u);
@@ -135,10 +99,10 @@ TEST_F(Escon2DriveIo, SetValueSwitchesSelectTheFixedVelocities) {
     }
     run(3ms);
     EXPECT_EQ(read<std::int32_t>(0x60FF), 50);
-    drive.set_digital_input(3, true);
+    drive->set_digital_input(3, true);
     run(3ms);
     EXPECT_EQ(read<std::int32_t>(0x60FF), 150);
-    drive.set_digital_input(4, true);
+    drive->set_digital_input(4, true);
     run(3ms);
     EXPECT_EQ(read<std::int32_t>(0x60FF), 350);
 }
@@ -149,10 +113,10 @@ TEST_F(Escon2DriveIo, DirectionInputTurnsThePositiveSetValue) {
     write(0x3161, 1, std::uint8_t{9});
     write(0x31B0, 2, std::int32_t{-2000});
     write(0x31B0, 4, std::int32_t{2000});
-    drive.set_analog_input(1, 5.0);
+    drive->set_analog_input(1, 5.0);
     run(3ms);
     EXPECT_EQ(read<std::int32_t>(0x60FF), -1000);
-    drive.set_digital_input(2, true);
+    drive->set_digital_input(2, true);
     run(3ms);
     EXPECT_EQ(read<std::int32_t>(0x60FF), 1000);
 }
@@ -161,9 +125,9 @@ TEST_F(Escon2DriveIo, DirectionInputTurnsThePositiveSetValue) {
 TEST_F(Escon2DriveIo, LimitSwitchInputStopsTheDriveWithItsError) {
     write(0x3142, 4, std::uint8_t{0});
     enable();
-    drive.set_velocity_set_value(500);
+    drive->set_velocity_set_value(500);
     run(100ms);
-    drive.set_digital_input(4, true);
+    drive->set_digital_input(4, true);
     run(200ms);
     EXPECT_EQ(state(), kFault);
     EXPECT_EQ(read<std::uint16_t>(0x603F), 0x8A80);
@@ -176,13 +140,13 @@ TEST_F(Escon2DriveIo, ReadyFaultAndLimitationOutputs) {
     write(0x3151, 2, std::uint8_t{26});
     write(0x6080, 0, std::uint32_t{500});
     enable();
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     run(10ms);
-    EXPECT_TRUE(drive.digital_output(1));
-    EXPECT_TRUE(drive.digital_output(2)) << "set value above max motor speed";
-    drive.raise_device_error(0x1000);
+    EXPECT_TRUE(drive->digital_output(1));
+    EXPECT_TRUE(drive->digital_output(2)) << "set value above max motor speed";
+    drive->raise_device_error(0x1000);
     run(2ms);
-    EXPECT_FALSE(drive.digital_output(1));
+    EXPECT_FALSE(drive->digital_output(1));
 }
 
 // 6.2.43, 6.2.52: general purpose voltage and the velocity monitor (0 → 0 V, 2000 rpm → 4 V).
@@ -193,10 +157,10 @@ TEST_F(Escon2DriveIo, AnalogOutputsShowTheGeneralPurposeVoltageAndTheVelocity) {
     write(0x31C1, 3, std::int32_t{2000});
     write(0x31C1, 4, std::int32_t{4000});
     enable();
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     run(500ms);
-    EXPECT_NEAR(drive.analog_output(1), 2.0, 0.1);
-    EXPECT_NEAR(drive.analog_output(2), -1.5, 1e-9);
+    EXPECT_NEAR(drive->analog_output(1), 2.0, 0.1);
+    EXPECT_NEAR(drive->analog_output(2), -1.5, 1e-9);
     EXPECT_NEAR(read<std::int16_t>(0x3170, 1), 2000, 100);
 }
 
@@ -204,11 +168,11 @@ TEST_F(Escon2DriveIo, AnalogOutputsShowTheGeneralPurposeVoltageAndTheVelocity) {
 TEST_F(Escon2DriveIo, HostWritesGeneralPurposeOutputs) {
     write(0x60FE, 1, std::uint32_t{1U << 16});
     run(1ms);
-    EXPECT_TRUE(drive.digital_output(1));
-    EXPECT_FALSE(drive.digital_output(2));
+    EXPECT_TRUE(drive->digital_output(1));
+    EXPECT_FALSE(drive->digital_output(2));
     write(0x3150, 2, std::uint16_t{0x0002});
     run(1ms);
-    EXPECT_TRUE(drive.digital_output(2)) << "inverted";
+    EXPECT_TRUE(drive->digital_output(2)) << "inverted";
     EXPECT_EQ(read<std::uint32_t>(0x3152) & 0x0007'0000u, 0x0001'0000u);
 }
 

@@ -1,14 +1,10 @@
 // The supply and temperature supervision wired into the running ESCON2 (6.2.10 - 6.2.12,
 // 6.2.56, 7.1.6 - 7.1.10): their errors and warnings with the reactions of table 110, and the
 // fault reset refused while the cause is present.
-#include "eposp/drives/escon2/escon2_drive.hpp"
+#include "escon2_drive_fixture.hpp"
 
 #include <chrono>
-#include <filesystem>
-#include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <memory>
-#include <unistd.h>
 
 namespace eposp::drives::escon2 {
 namespace {
@@ -16,37 +12,17 @@ namespace {
 using canopen::AbortCode;
 using namespace std::chrono_literals;
 
-constexpr std::uint16_t kStateMask = 0x006F; // table 6
-constexpr std::uint16_t kSwitchOnDisabled = 0x0040;
-constexpr std::uint16_t kOperationEnabled = 0x0027;
-constexpr std::uint16_t kFault = 0x0008;
-constexpr std::uint16_t kWarning = 1U << 7;
+using namespace test;
 
-class Escon2DriveSupervision : public ::testing::Test {
+class Escon2DriveSupervision : public test::Escon2DriveFixture {
 protected:
     void start(double ambient = 25) {
         Escon2DriveConfig config;
-        config.dictionary.parameter_file =
-            std::filesystem::temp_directory_path() /
-            fmt::format("escon2-supervision-{}-{}.bin", ::getpid(),
-                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
         config.power_stage_thermal.ambient_temperature = ambient;
-        drive = std::make_unique<Escon2Drive>(loop, config);
+        Escon2DriveFixture::start(config);
         drive->set_ambient_temperature(ambient);
-        drive->start();
     }
-    void controlword(std::uint16_t value) {
-        ASSERT_EQ(drive->objects().write(0x6040, 0, canopen::encode(value)), AbortCode::None);
-    }
-    void enable() {
-        controlword(0x06);
-        controlword(0x0F);
-    }
-    std::uint16_t statusword() const { return drive->objects().get_as<std::uint16_t>(0x6041, 0); }
-    std::uint16_t error_code() const { return drive->objects().get_as<std::uint16_t>(0x603F, 0); }
-
-    core::EventLoop loop;
-    std::unique_ptr<Escon2Drive> drive;
+    std::uint16_t error_code() const { return read<std::uint16_t>(0x603F); }
 };
 
 // 7.1.7: below the undervoltage limit while enabled; the reset only above limit + hysteresis

@@ -2,15 +2,12 @@
 // device control (2.2), I/O Velocity Mode and I/O Current Mode (chapter 3) on the reference
 // axis, and the errors the drive raises (7.1).
 #include "eposp/canopen/store_restore_objects.hpp"
-#include "eposp/drives/escon2/escon2_drive.hpp"
+#include "escon2_drive_fixture.hpp"
 
 #include <chrono>
 #include <cmath>
-#include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 namespace eposp::drives::escon2 {
 namespace {
@@ -25,53 +22,24 @@ constexpr std::uint16_t kDisableOperation = 0x07;
 constexpr std::uint16_t kQuickStop = 0x02;
 constexpr std::uint16_t kFaultReset = 0x80;
 // Table 6 (bits 0 - 3, 5, 6) and table 99.
-constexpr std::uint16_t kStateMask = 0x006F;
-constexpr std::uint16_t kSwitchOnDisabled = 0x0040;
+using namespace test;
 constexpr std::uint16_t kSwitchedOn = 0x0023;
-constexpr std::uint16_t kOperationEnabled = 0x0027;
 constexpr std::uint16_t kQuickStopActive = 0x0007;
-constexpr std::uint16_t kFault = 0x0008;
-constexpr std::uint16_t kWarning = 1U << 7;
 constexpr std::uint16_t kInternalLimitActive = 1U << 11;
 constexpr std::uint16_t kFollowsCommandValue = 1U << 12;
 
-std::filesystem::path parameter_file() {
-    return std::filesystem::temp_directory_path() /
-           fmt::format("escon2-drive-{}-{}.bin", ::getpid(),
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-}
-
-class Escon2DriveTest : public ::testing::Test {
+class Escon2DriveTest : public test::Escon2DriveFixture {
 protected:
-    static Escon2DriveConfig config() {
-        Escon2DriveConfig config;
-        config.dictionary.parameter_file = parameter_file();
-        return config;
-    }
+    Escon2DriveTest() { start(); }
 
-    Escon2DriveTest() { std::filesystem::remove(parameter_file()); }
-    ~Escon2DriveTest() override { std::filesystem::remove(parameter_file()); }
-
-    template <typename T>
-    AbortCode write(std::uint16_t index, std::uint8_t sub, T value) {
-        return drive.objects().write(index, sub, canopen::encode(value));
-    }
-    template <typename T>
-    T read(std::uint16_t index, std::uint8_t sub = 0) const {
-        return drive.objects().get_as<T>(index, sub);
-    }
-    std::uint16_t statusword() const { return read<std::uint16_t>(0x6041); }
     std::int32_t velocity_demand() const { return read<std::int32_t>(0x606B); }
     std::int32_t velocity_actual() const { return read<std::int32_t>(0x606C); }
     std::int32_t current_actual() const { return read<std::int32_t>(0x30D1, 2); }
 
-    void controlword(std::uint16_t value) { ASSERT_EQ(write(0x6040, 0, value), AbortCode::None); }
     void enable() {
-        controlword(kShutdown);
-        controlword(kEnableOperation);
+        Escon2DriveFixture::enable();
         loop.run_for(1ms);
     }
-    void run(std::chrono::milliseconds duration) { loop.run_for(duration); }
     /// Runs period by period until `done`; the milliseconds it took, or -1 after `limit`.
     template <typename Done>
     int milliseconds_until(Done done, int limit = 5000) {
@@ -83,13 +51,6 @@ protected:
         }
         return -1;
     }
-
-    core::EventLoop loop;
-    Escon2Drive drive{loop, config()};
-    bool started = [this] {
-        drive.start();
-        return true;
-    }();
 };
 
 // 2.2 transitions 0, 1; table 100 default.
@@ -98,7 +59,7 @@ TEST_F(Escon2DriveTest, PowersUpInSwitchOnDisabledInIoVelocityMode) {
     EXPECT_EQ(statusword() & kStateMask, kSwitchOnDisabled);
     EXPECT_EQ(statusword() & 0x0100, 0) << "bit 8 reserved";
     EXPECT_EQ(read<std::int8_t>(0x6061), -121);
-    EXPECT_EQ(drive.axis().mode(), plant::ControlMode::PowerOff);
+    EXPECT_EQ(drive->axis().mode(), plant::ControlMode::PowerOff);
 }
 
 // Table 7 transitions 2, 3, 4: the power stage on at once, the command value followed.
@@ -107,7 +68,7 @@ TEST_F(Escon2DriveTest, ShutdownAndEnableOperationPowerTheMotor) {
     EXPECT_EQ(statusword() & kStateMask, kOperationEnabled);
     EXPECT_NE(statusword() & 0x0010, 0) << "voltage enabled";
     EXPECT_NE(statusword() & kFollowsCommandValue, 0);
-    EXPECT_EQ(drive.axis().mode(), plant::ControlMode::Velocity);
+    EXPECT_EQ(drive->axis().mode(), plant::ControlMode::Velocity);
     controlword(kDisableOperation); // 5: slows down from rest at once
     run(2ms);
     EXPECT_EQ(statusword() & kStateMask, kSwitchedOn);
@@ -118,7 +79,7 @@ TEST_F(Escon2DriveTest, ShutdownAndEnableOperationPowerTheMotor) {
 // 10'000 rpm/s in 100 ms, and the motor follows it.
 TEST_F(Escon2DriveTest, VelocityRampReachesTheSetValueWhenTheAccelerationSays) {
     enable();
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     run(1ms);
     const int ramp = milliseconds_until([this] { return velocity_demand() >= 1000; });
     EXPECT_GE(ramp, 99);
@@ -131,11 +92,11 @@ TEST_F(Escon2DriveTest, VelocityRampReachesTheSetValueWhenTheAccelerationSays) {
 
 // 3.3: slowing down takes the profile deceleration: 1000 rpm at 5000 rpm/s in 200 ms.
 TEST_F(Escon2DriveTest, VelocityRampSlowsDownWithTheProfileDeceleration) {
-    ASSERT_EQ(write(0x6084, 0, std::uint32_t{5000}), AbortCode::None);
+    ASSERT_EQ(try_write(0x6084, 0, std::uint32_t{5000}), AbortCode::None);
     enable();
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     run(200ms);
-    drive.set_velocity_set_value(0);
+    drive->set_velocity_set_value(0);
     run(1ms);
     const int ramp = milliseconds_until([this] { return velocity_demand() <= 0; });
     EXPECT_GE(ramp, 199);
@@ -144,9 +105,9 @@ TEST_F(Escon2DriveTest, VelocityRampSlowsDownWithTheProfileDeceleration) {
 
 // 6.2.75: max acceleration bounds the profile acceleration (2000 rpm/s: 500 ms to 1000 rpm).
 TEST_F(Escon2DriveTest, MaxAccelerationBoundsTheRamp) {
-    ASSERT_EQ(write(0x60C5, 0, std::uint32_t{2000}), AbortCode::None);
+    ASSERT_EQ(try_write(0x60C5, 0, std::uint32_t{2000}), AbortCode::None);
     enable();
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     run(1ms);
     const int ramp = milliseconds_until([this] { return velocity_demand() >= 1000; });
     EXPECT_GE(ramp, 499);
@@ -155,13 +116,13 @@ TEST_F(Escon2DriveTest, MaxAccelerationBoundsTheRamp) {
 
 // Table 19: the set value beyond max motor speed is limited to it, and bit 11 says so.
 TEST_F(Escon2DriveTest, MaxMotorSpeedLimitsTheSetValueWithBit11) {
-    ASSERT_EQ(write(0x6080, 0, std::uint32_t{2000}), AbortCode::None);
+    ASSERT_EQ(try_write(0x6080, 0, std::uint32_t{2000}), AbortCode::None);
     enable();
-    drive.set_velocity_set_value(3000);
+    drive->set_velocity_set_value(3000);
     run(400ms);
     EXPECT_EQ(velocity_demand(), 2000);
     EXPECT_NE(statusword() & kInternalLimitActive, 0);
-    drive.set_velocity_set_value(1500);
+    drive->set_velocity_set_value(1500);
     run(2ms);
     EXPECT_EQ(statusword() & kInternalLimitActive, 0);
 }
@@ -170,14 +131,14 @@ TEST_F(Escon2DriveTest, MaxMotorSpeedLimitsTheSetValueWithBit11) {
 // alone needs about 9.4 V, more than 95 % of 9 V); the duty cycle stays at 950 ‰ (table 97) and
 // bit 11 says so.
 TEST_F(Escon2DriveTest, LowSupplyLimitsAtThePwmMaxDutyCycleWithBit11) {
-    drive.set_supply_voltage(9);
+    drive->set_supply_voltage(9);
     enable();
-    drive.set_velocity_set_value(4000);
+    drive->set_velocity_set_value(4000);
     run(1s);
     EXPECT_LT(velocity_actual(), 3900);
     EXPECT_EQ(read<std::uint16_t>(0x3203, 1), 950u);
     EXPECT_NE(statusword() & kInternalLimitActive, 0);
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     run(1s);
     EXPECT_EQ(statusword() & kInternalLimitActive, 0);
     EXPECT_LT(read<std::uint16_t>(0x3203, 1), 950u);
@@ -186,8 +147,8 @@ TEST_F(Escon2DriveTest, LowSupplyLimitsAtThePwmMaxDutyCycleWithBit11) {
 // 6.2.74: the velocity offset is added to the target velocity.
 TEST_F(Escon2DriveTest, VelocityOffsetIsAddedToTheTarget) {
     enable();
-    drive.set_velocity_set_value(500);
-    drive.set_velocity_offset(300);
+    drive->set_velocity_set_value(500);
+    drive->set_velocity_offset(300);
     run(200ms);
     EXPECT_EQ(velocity_demand(), 800);
     EXPECT_EQ(read<std::int32_t>(0x60FF), 500);
@@ -196,9 +157,9 @@ TEST_F(Escon2DriveTest, VelocityOffsetIsAddedToTheTarget) {
 
 // 2.3, table 103: in milli rev/min the same motion reads a thousand times larger.
 TEST_F(Escon2DriveTest, MilliRpmVelocityUnits) {
-    ASSERT_EQ(write(0x60A9, 0, std::uint32_t{0xFDB4'4700}), AbortCode::None);
+    ASSERT_EQ(try_write(0x60A9, 0, std::uint32_t{0xFDB4'4700}), AbortCode::None);
     enable();
-    drive.set_velocity_set_value(1'000'000);
+    drive->set_velocity_set_value(1'000'000);
     run(300ms);
     EXPECT_EQ(velocity_demand(), 1'000'000);
     EXPECT_NEAR(read<std::int32_t>(0x30D3, 1), 1'000'000, 20'000);
@@ -207,11 +168,11 @@ TEST_F(Escon2DriveTest, MilliRpmVelocityUnits) {
 // 3.4: the current follows a step of the target current within milliseconds (the current loop
 // of the reference axis, ~800 Hz), and the motor accelerates.
 TEST_F(Escon2DriveTest, CurrentModeStepResponse) {
-    ASSERT_EQ(write(0x6060, 0, std::int8_t{-120}), AbortCode::None);
+    ASSERT_EQ(try_write(0x6060, 0, std::int8_t{-120}), AbortCode::None);
     EXPECT_EQ(read<std::int8_t>(0x6061), -120);
     enable();
-    EXPECT_EQ(drive.axis().mode(), plant::ControlMode::Current);
-    drive.set_current_set_value(500);
+    EXPECT_EQ(drive->axis().mode(), plant::ControlMode::Current);
+    drive->set_current_set_value(500);
     run(1ms); // taken at the next period
     run(5ms);
     EXPECT_EQ(read<std::int32_t>(0x30D0), 500) << "current demand value";
@@ -221,14 +182,14 @@ TEST_F(Escon2DriveTest, CurrentModeStepResponse) {
 
 // 3.4, 6.2.25, table 25: target + offset, limited to the output current limit with bit 11.
 TEST_F(Escon2DriveTest, CurrentOffsetAddsAndOutputCurrentLimitCaps) {
-    ASSERT_EQ(write(0x6060, 0, std::int8_t{-120}), AbortCode::None);
+    ASSERT_EQ(try_write(0x6060, 0, std::int8_t{-120}), AbortCode::None);
     enable();
-    drive.set_current_set_value(300);
-    drive.set_current_offset(200);
+    drive->set_current_set_value(300);
+    drive->set_current_offset(200);
     run(6ms);
     EXPECT_EQ(read<std::int32_t>(0x30D0), 500);
     EXPECT_EQ(statusword() & kInternalLimitActive, 0);
-    drive.set_current_set_value(-5000);
+    drive->set_current_set_value(-5000);
     run(6ms);
     EXPECT_EQ(read<std::int32_t>(0x30D0), -3000) << "the reference axis' 3 A limit";
     EXPECT_NE(statusword() & kInternalLimitActive, 0);
@@ -236,10 +197,10 @@ TEST_F(Escon2DriveTest, CurrentOffsetAddsAndOutputCurrentLimitCaps) {
 
 // Table 25: max motor speed caps the current mode through the velocity controller.
 TEST_F(Escon2DriveTest, CurrentModeStopsAcceleratingAtMaxMotorSpeed) {
-    ASSERT_EQ(write(0x6080, 0, std::uint32_t{1000}), AbortCode::None);
-    ASSERT_EQ(write(0x6060, 0, std::int8_t{-120}), AbortCode::None);
+    ASSERT_EQ(try_write(0x6080, 0, std::uint32_t{1000}), AbortCode::None);
+    ASSERT_EQ(try_write(0x6060, 0, std::int8_t{-120}), AbortCode::None);
     enable();
-    drive.set_current_set_value(1000);
+    drive->set_current_set_value(1000);
     run(1s);
     EXPECT_NEAR(read<std::int32_t>(0x30D3, 1), 1000, 40);
     EXPECT_NE(statusword() & kInternalLimitActive, 0);
@@ -248,9 +209,9 @@ TEST_F(Escon2DriveTest, CurrentModeStopsAcceleratingAtMaxMotorSpeed) {
 // Table 7 transition 11: quick stop ramps down with 0x6085 and stays in Quick stop active;
 // 16 enables again.
 TEST_F(Escon2DriveTest, QuickStopRampsDownWithTheQuickStopDeceleration) {
-    ASSERT_EQ(write(0x6085, 0, std::uint32_t{20'000}), AbortCode::None);
+    ASSERT_EQ(try_write(0x6085, 0, std::uint32_t{20'000}), AbortCode::None);
     enable();
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     run(300ms);
     controlword(kQuickStop);
     EXPECT_EQ(statusword() & kStateMask, kQuickStopActive);
@@ -270,7 +231,7 @@ TEST_F(Escon2DriveTest, QuickStopRampsDownWithTheQuickStopDeceleration) {
 // then Switched on.
 TEST_F(Escon2DriveTest, DisableOperationSlowsDownFirst) {
     enable();
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     run(300ms);
     controlword(kDisableOperation);
     run(50ms);
@@ -283,9 +244,9 @@ TEST_F(Escon2DriveTest, DisableOperationSlowsDownFirst) {
 // error's code, register bits and history entry; fault reset clears it (15).
 TEST_F(Escon2DriveTest, LimitSwitchErrorQuickStopsThenFaultAndResets) {
     enable();
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     run(300ms);
-    drive.raise_device_error(0x8A80);
+    drive->raise_device_error(0x8A80);
     EXPECT_EQ(statusword() & 0x007F, 0x001F) << "fault reaction active, power on";
     run(150ms);
     EXPECT_EQ(statusword() & kStateMask, kFault);
@@ -301,25 +262,25 @@ TEST_F(Escon2DriveTest, LimitSwitchErrorQuickStopsThenFaultAndResets) {
 // Table 110 "d": disabled at once; an error needing a device reset survives a fault reset.
 TEST_F(Escon2DriveTest, HardwareErrorDisablesAndNeedsADeviceReset) {
     enable();
-    drive.raise_device_error(0x5480);
+    drive->raise_device_error(0x5480);
     run(2ms);
     EXPECT_EQ(statusword() & kStateMask, kFault);
-    EXPECT_EQ(drive.axis().mode(), plant::ControlMode::PowerOff);
+    EXPECT_EQ(drive->axis().mode(), plant::ControlMode::PowerOff);
     controlword(kFaultReset);
     EXPECT_EQ(statusword() & kStateMask, kFault);
-    drive.start(); // power cycle
+    drive->start(); // power cycle
     EXPECT_EQ(statusword() & kStateMask, kSwitchOnDisabled);
 }
 
 // 7.1.41: I/O Velocity Mode needs the velocity controller.
 TEST_F(Escon2DriveTest, VelocityModeWithoutVelocityControllerIsNotSupported) {
-    ASSERT_EQ(write(0x3000, 2, std::uint32_t{0x0000'0001}), AbortCode::None);
+    ASSERT_EQ(try_write(0x3000, 2, std::uint32_t{0x0000'0001}), AbortCode::None);
     enable();
     run(2ms);
     EXPECT_EQ(statusword() & kStateMask, kFault);
     EXPECT_EQ(read<std::uint16_t>(0x603F), 0xFF0D);
     controlword(kFaultReset);
-    ASSERT_EQ(write(0x6060, 0, std::int8_t{-120}), AbortCode::None);
+    ASSERT_EQ(try_write(0x6060, 0, std::int8_t{-120}), AbortCode::None);
     enable();
     EXPECT_EQ(statusword() & kStateMask, kOperationEnabled) << "current mode runs without";
 }
@@ -328,15 +289,15 @@ TEST_F(Escon2DriveTest, VelocityModeWithoutVelocityControllerIsNotSupported) {
 // the system overload warning clears with the Clear warning command of table 8.
 TEST_F(Escon2DriveTest, WarningsSetBit7AndClear) {
     enable();
-    drive.raise_device_error(0x7280);
+    drive->raise_device_error(0x7280);
     run(1ms);
     EXPECT_NE(statusword() & kWarning, 0);
     EXPECT_EQ(statusword() & kStateMask, kOperationEnabled);
     EXPECT_EQ(read<std::uint32_t>(0x1003, 1), 0x8000'7280u);
-    drive.clear_warning(0x7280);
+    drive->clear_warning(0x7280);
     run(1ms);
     EXPECT_EQ(statusword() & kWarning, 0);
-    drive.raise_device_error(0xFF01);
+    drive->raise_device_error(0xFF01);
     run(1ms);
     controlword(kEnableOperation | kFaultReset);
     controlword(kEnableOperation);
@@ -347,22 +308,22 @@ TEST_F(Escon2DriveTest, WarningsSetBit7AndClear) {
 // «Power Disable» objects and the restore of 6.2.6 are refused while the power stage is on.
 TEST_F(Escon2DriveTest, ConfigurationIsRefusedWhileEnabled) {
     enable();
-    EXPECT_EQ(write(0x6402, 0, std::uint16_t{1}), AbortCode::DeviceState);
-    EXPECT_EQ(write(0x1011, 1, canopen::kLoadSignature), AbortCode::DeviceState);
-    EXPECT_EQ(write(0x3001, 1, std::uint32_t{1000}), AbortCode::None);
+    EXPECT_EQ(try_write(0x6402, 0, std::uint16_t{1}), AbortCode::DeviceState);
+    EXPECT_EQ(try_write(0x1011, 1, canopen::kLoadSignature), AbortCode::DeviceState);
+    EXPECT_EQ(try_write(0x3001, 1, std::uint32_t{1000}), AbortCode::None);
 }
 
 // 7.1.17: a damaged store is refused at power-up, the defaults apply and 0x6380 is raised.
 TEST_F(Escon2DriveTest, DamagedParameterStoreRaisesLoadingParameterFailed) {
-    ASSERT_EQ(write(0x210C, 1, std::uint32_t{42}), AbortCode::None);
-    ASSERT_EQ(write(0x1010, 1, canopen::kSaveSignature), AbortCode::None);
-    drive.start();
+    ASSERT_EQ(try_write(0x210C, 1, std::uint32_t{42}), AbortCode::None);
+    ASSERT_EQ(try_write(0x1010, 1, canopen::kSaveSignature), AbortCode::None);
+    drive->start();
     EXPECT_EQ(read<std::uint32_t>(0x210C, 1), 42u) << "the store applies";
     {
         std::ofstream damaged(parameter_file(), std::ios::binary | std::ios::trunc);
         damaged << "not a parameter store";
     }
-    drive.start();
+    drive->start();
     run(2ms);
     EXPECT_EQ(read<std::uint32_t>(0x210C, 1), 0u);
     EXPECT_EQ(read<std::uint16_t>(0x603F), 0x6380);
@@ -372,34 +333,33 @@ TEST_F(Escon2DriveTest, DamagedParameterStoreRaisesLoadingParameterFailed) {
 // 6.2.13.4 bit 0: inverse polarity turns the axis the other way on the same set value and
 // reports its velocity in the commanded sense.
 TEST_F(Escon2DriveTest, InversePolarityTurnsTheOtherWay) {
-    ASSERT_EQ(write(0x3000, 4, std::uint32_t{1}), AbortCode::None);
+    ASSERT_EQ(try_write(0x3000, 4, std::uint32_t{1}), AbortCode::None);
     enable();
-    drive.set_velocity_set_value(500);
+    drive->set_velocity_set_value(500);
     run(300ms);
-    EXPECT_LT(drive.axis().velocity_actual(), 0);
+    EXPECT_LT(drive->axis().velocity_actual(), 0);
     EXPECT_NEAR(velocity_actual(), 500, 40);
 }
 
 // Tables 41 - 97 on the smallest hardware: its own limits (6 A output current limit, 31 V
 // overvoltage, no power stage I²t, 90 % PWM) and the same motion.
-TEST(Escon2DriveHardware, NanoRunsTheVelocityModeWithItsOwnLimits) {
-    core::EventLoop loop;
+class Escon2DriveHardware : public test::Escon2DriveFixture {};
+
+TEST_F(Escon2DriveHardware, NanoRunsTheVelocityModeWithItsOwnLimits) {
     Escon2DriveConfig config;
     config.dictionary.hardware = Escon2Hardware::Nano24_2;
-    config.dictionary.parameter_file = parameter_file();
-    Escon2Drive drive(loop, config);
-    drive.start();
-    auto& od = drive.objects();
+    start(config);
+    auto& od = drive->objects();
     EXPECT_EQ(od.get_as<std::uint32_t>(0x1018, 2), 0x1103'1000u);
     EXPECT_EQ(od.get_as<std::uint32_t>(0x3001, 2), 3000u) << "the machine's 3 A, within 6 A";
     ASSERT_EQ(od.write(0x6040, 0, canopen::encode(kShutdown)), AbortCode::None);
     ASSERT_EQ(od.write(0x6040, 0, canopen::encode(kEnableOperation)), AbortCode::None);
-    drive.set_velocity_set_value(1000);
+    drive->set_velocity_set_value(1000);
     loop.run_for(500ms);
     EXPECT_EQ(od.get_as<std::uint16_t>(0x6041, 0) & kStateMask, kOperationEnabled);
     EXPECT_NEAR(od.get_as<std::int32_t>(0x30D3, 1), 1000, 10);
     EXPECT_EQ(od.get_as<std::uint16_t>(0x3201, 1), 0u) << "no power stage I2t on the Nano";
-    drive.set_supply_voltage(32);
+    drive->set_supply_voltage(32);
     loop.run_for(2ms);
     EXPECT_EQ(od.get_as<std::uint16_t>(0x603F, 0), 0x3210) << "above the Nano's 31 V";
 }
