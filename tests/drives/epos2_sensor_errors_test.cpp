@@ -210,5 +210,59 @@ TEST_F(Epos2SensorErrors, HallSensorsAndEncoderOfTheMachineAgree) {
     EXPECT_EQ(drive.state(), motion::DriveState::OperationEnable);
 }
 
+// 8.2.74: sinus commutation on encoder 1 needs at least 16 pulses per pole pair. 500 pulses and
+// 32 pole pairs (512) are found at the Enable Operation command: 0x7320 Position Sensor Error,
+// "d" with position reset (table 4-11); 31 pole pairs (496) enable.
+TEST_F(Epos2SensorErrors, TooFewPulsesPerPolePairRaise7320AtEnableOperation) {
+    use_ec_motor();
+    write(0x6410, 3, encode(std::uint8_t{32}));
+    nmt(canopen::NmtCommand::Start);
+    for (const std::uint16_t word : {kShutdown, kSwitchOn}) {
+        controlword(word);
+        run_with_sync(10ms);
+    }
+    ASSERT_TRUE(emcys.empty()) << "found at Enable Operation only";
+    controlword(kEnableOperation);
+    run_with_sync(10ms);
+    expect_error(*this, 0x7320, 0x20);
+    EXPECT_EQ(drive.axis().mode(), plant::ControlMode::PowerOff);
+
+    write(0x6410, 3, encode(std::uint8_t{31}));
+    controlword(kFaultReset);
+    run_with_sync(10ms);
+    EXPECT_EQ(drive.state(), motion::DriveState::SwitchOnDisabled);
+    for (const std::uint16_t word : {kShutdown, kSwitchOn, kEnableOperation}) {
+        controlword(word);
+        run_with_sync(10ms);
+    }
+    EXPECT_EQ(drive.state(), motion::DriveState::OperationEnable);
+    EXPECT_EQ(emcys.size(), 2u) << "the error and its reset only";
+}
+
+// 8.2.74: another main sensor type clears the Position Actual Value and the referenced bit;
+// another pulse number only the referenced bit ("the absolute position could be corrupt").
+TEST_F(Epos2SensorErrors, AnotherMainSensorTypeClearsTheActualPosition) {
+    write(0x6098, 0, encode(std::int8_t{35})); // homing on the actual position: referenced
+    configure_and_enable(6);
+    controlword(kEnableOperation | 0x0010);
+    run_with_sync(20ms);
+    controlword(kEnableOperation);
+    write(0x6060, 0, encode(std::int8_t{1}));
+    start_long_move();
+    run_with_sync(1000ms);
+    ASSERT_NE(tpdos.back().statusword & kReferencedBit, 0);
+    const auto moved = read<std::int32_t>(0x6064, 0);
+    ASSERT_GT(moved, 10000);
+    controlword(0); // Disable Voltage: changes only in Disable state
+    run_with_sync(10ms);
+    write(0x2210, 1, encode(std::uint32_t{500}));
+    run_with_sync(2ms);
+    EXPECT_EQ(read<std::int32_t>(0x6064, 0), moved);
+    EXPECT_EQ(tpdos.back().statusword & kReferencedBit, 0);
+    write(0x2210, 2, encode(std::uint16_t{2}));
+    run_with_sync(2ms);
+    EXPECT_EQ(read<std::int32_t>(0x6064, 0), 0);
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

@@ -43,6 +43,7 @@ constexpr std::uint16_t kCanBusOffErrorCode = 0x81FD;
 constexpr std::uint16_t kCanPassiveErrorCode = 0x8120;
 constexpr std::uint16_t kCanRxQueueOverflowErrorCode = 0x81FE;
 constexpr std::uint16_t kCanTxQueueOverflowErrorCode = 0x81FF;
+constexpr std::uint16_t kPositionSensorErrorCode = 0x7320;   // 4.2.12
 constexpr std::uint16_t kControllerGainErrorCode = 0xFF10;   // 4.2.36
 constexpr std::uint16_t kSystemOverloadedErrorCode = 0xFF0B; // 4.2.32
 // The target values of the modes (table 8-118): position, velocity, the Position, Velocity and
@@ -266,10 +267,15 @@ void Epos2Drive::watch_dictionary() {
     for (const std::uint16_t index : kAxisConfigurationObjects) {
         od.on_change(index, [this](std::uint16_t, std::uint8_t) { configure_axis(); });
     }
-    // 8.2.74: the sensor configuration changed, the position is no longer referenced.
-    od.on_change(0x2210, [this](std::uint16_t, std::uint8_t) {
+    // 8.2.74: the sensor configuration changed, the position is no longer referenced; another
+    // main sensor type also clears the actual position.
+    od.on_change(0x2210, [this](std::uint16_t, std::uint8_t sub) {
         read_counts_per_turn();
-        homing_.reference_lost();
+        if (sub == 2) {
+            reset_actual_position();
+        } else {
+            homing_.reference_lost();
+        }
     });
     for (const std::uint16_t index : std::array<std::uint16_t, 4>{0x2008, 0x2210, 0x2230, 0x6402}) {
         od.on_change(index, [this](std::uint16_t, std::uint8_t) { read_sensor_configuration(); });
@@ -357,10 +363,18 @@ void Epos2Drive::on_controlword(std::uint16_t controlword) {
     const std::uint16_t rising = controlword & ~controlword_;
     const std::uint16_t falling = controlword_ & ~controlword;
     controlword_ = controlword;
-    const bool was_fault = device_control_.state() == DriveState::Fault;
+    const DriveState before = device_control_.state();
     device_control_.write_controlword(controlword);
-    if (was_fault && device_control_.state() != DriveState::Fault) {
+    if (before == DriveState::Fault && device_control_.state() != DriveState::Fault) {
         clear_errors();
+    }
+    const auto enabled = [](DriveState state) { // the Enable Operation command's way (3.2.3)
+        return state == DriveState::Refresh || state == DriveState::MeasureInit ||
+               state == DriveState::OperationEnable;
+    };
+    if (!enabled(before) && enabled(device_control_.state()) &&
+        commutation_resolution_too_low()) {
+        raise_device_error(kPositionSensorErrorCode);
     }
     mode_behaviour_->on_controlword({.now = seconds(),
                                      .controlword = controlword,
@@ -379,10 +393,25 @@ void Epos2Drive::clear_errors() {
         motion::FollowingErrorMonitor(dictionary_.objects().get_as<std::uint32_t>(0x6065, 0));
     if (position_reset_on_clear_) {
         position_reset_on_clear_ = false;
-        position_offset_ = -encoder_counter();
-        homing_.reference_lost();
+        reset_actual_position();
         restart_sensor_supervision();
     }
+}
+
+// The actual position starts again at 0, no longer referenced.
+void Epos2Drive::reset_actual_position() {
+    position_offset_ = -encoder_counter();
+    homing_.reference_lost();
+}
+
+// 8.2.74: "The pulse number of incremental encoder 1 must be greater or equal to (16 * pole pair
+// number)" where it is the sinus commutation's encoder; checked at the Enable Operation command.
+bool Epos2Drive::commutation_resolution_too_low() const {
+    const auto& od = dictionary_.objects();
+    const auto main_sensor = od.get_as<std::uint16_t>(0x2210, 2) & 0xF;
+    return od.get_as<std::uint16_t>(0x6402, 0) == kSinusoidalEcMotor &&
+           (main_sensor == kEncoder1WithIndex || main_sensor == kEncoder1WithoutIndex) &&
+           od.get_as<std::uint32_t>(0x2210, 1) < 16U * od.get_as<std::uint8_t>(0x6410, 3);
 }
 
 // 4.2: an error recorded in 0x1003 that the node's services raised (heartbeat, guarding, PDO

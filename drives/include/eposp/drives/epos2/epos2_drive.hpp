@@ -169,6 +169,8 @@ private:
     void read_sensor_configuration();
     void restart_sensor_supervision();
     void clear_errors();
+    void reset_actual_position();
+    bool commutation_resolution_too_low() const;
     std::optional<std::uint16_t> supply_error() const;
     bool fault_condition_present() const;
     void watch_dictionary();
