@@ -48,6 +48,17 @@ public:
         EXPECT_EQ(drive.axis().current_actual(), 0.0) << "power stage off";
     }
 
+    /// Homing on the actual position (method 35) references it, then the long move starts.
+    void start_referenced_long_move() {
+        write(0x6098, 0, encode(std::int8_t{35}));
+        configure_and_enable(6);
+        controlword(kEnableOperation | 0x0010);
+        run_with_sync(20ms);
+        controlword(kEnableOperation);
+        write(0x6060, 0, encode(std::int8_t{1}));
+        start_long_move();
+    }
+
     void use_ec_motor() {
         write(0x6402, 0, encode(std::uint16_t{10})); // sinusoidal PM BL motor (table 8-125)
     }
@@ -148,13 +159,7 @@ TEST_F(Epos2SensorErrors, HallSupplyLostRaisesFF01) {
 // Table 4-11 "Position Reset": clearing the error resets the actual position, which is no longer
 // referenced; the sensors start up again (a fault still there is found again).
 TEST_F(Epos2SensorErrors, ClearingASensorErrorResetsTheActualPosition) {
-    write(0x6098, 0, encode(std::int8_t{35})); // homing on the actual position: referenced
-    configure_and_enable(6);
-    controlword(kEnableOperation | 0x0010);
-    run_with_sync(20ms);
-    controlword(kEnableOperation);
-    write(0x6060, 0, encode(std::int8_t{1}));
-    start_long_move();
+    start_referenced_long_move();
     run_with_sync(100ms);
     ASSERT_NE(tpdos.back().statusword & kReferencedBit, 0);
     ASSERT_GT(tpdos.back().position, 1000);
@@ -242,13 +247,7 @@ TEST_F(Epos2SensorErrors, TooFewPulsesPerPolePairRaise7320AtEnableOperation) {
 // 8.2.74: another main sensor type clears the Position Actual Value and the referenced bit;
 // another pulse number only the referenced bit ("the absolute position could be corrupt").
 TEST_F(Epos2SensorErrors, AnotherMainSensorTypeClearsTheActualPosition) {
-    write(0x6098, 0, encode(std::int8_t{35})); // homing on the actual position: referenced
-    configure_and_enable(6);
-    controlword(kEnableOperation | 0x0010);
-    run_with_sync(20ms);
-    controlword(kEnableOperation);
-    write(0x6060, 0, encode(std::int8_t{1}));
-    start_long_move();
+    start_referenced_long_move();
     run_with_sync(1000ms);
     ASSERT_NE(tpdos.back().statusword & kReferencedBit, 0);
     const auto moved = read<std::int32_t>(0x6064, 0);
