@@ -1,11 +1,13 @@
 // E0401: what a statement writes is a variable it may write (IEC 61131-3 ed. 3, 6.5.2.2 and
 // 7.3.3.2): not a CONSTANT, not an output of another instance (only the instance writes it), not
-// a direct input address (the process image writes it). Assignments (also to a bit of a word)
-// and ENO => bindings are checked here; program connections in program_connections.cpp.
+// a direct input address (the process image writes it). Assignments (also to a bit of a word),
+// `=>` bindings and VAR_IN_OUT connections are checked here; program connections in
+// program_connections.cpp.
 
 #include "writable_targets.hpp"
 
 #include "body_walk.hpp"
+#include "calls.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
 
@@ -111,6 +113,35 @@ std::optional<DiagnosticNote> unwritable_path(types::TypedProgram& program,
                : std::nullopt;
 }
 
+// What a call writes: every `=>` binding (ENO too) and every VAR_IN_OUT, which the callee
+// writes through the reference the call connects.
+void check_call_arguments(const PouUnderCheck& check, const ast::CallExpression& call) {
+    const Callee callee = callee_of(check.program, call);
+    std::size_t positional = 0;
+    for (const ast::Argument& argument : call.arguments) {
+        if (argument.kind == ast::Argument::Kind::Output) {
+            check_target(check, *argument.value, argument.value->range,
+                         is_enable_argument(argument)
+                             ? "ENO cannot be written to this variable (a constant, an input or "
+                               "an output of another instance)"
+                             : "this output cannot be written to this variable (a constant, an "
+                               "input address or an output of another instance)");
+            continue;
+        }
+        // An FB call's positional arguments connect nothing (E0415).
+        const bool connects = callee.frame != nullptr && !is_enable_argument(argument) &&
+                              (callee.kind != Callee::Kind::Instance || argument.name);
+        const sema::Field* formal =
+            connects ? sema::formal_parameter(*callee.frame, argument, positional) : nullptr;
+        if (formal != nullptr && formal->section == ast::VarSectionKind::InOut) {
+            check_target(check, *argument.value, argument.value->range,
+                         fmt::format("VAR_IN_OUT '{}' is written through this connection: it "
+                                     "needs a variable that can be written",
+                                     formal->name));
+        }
+    }
+}
+
 } // namespace
 
 std::optional<DiagnosticNote> unwritable(types::TypedProgram& program,
@@ -151,17 +182,8 @@ void check_writable_targets(const PouUnderCheck& check) {
         }
     });
     for_each_expression(check.pou.body, [&](const ast::Expression& expression) {
-        const auto* call = std::get_if<ast::CallExpression>(&expression.node);
-        if (call == nullptr) {
-            return;
-        }
-        for (const ast::Argument& argument : call->arguments) {
-            if (argument.kind == ast::Argument::Kind::Output && argument.name &&
-                sema::fold_case(argument.name->name) == "ENO") {
-                check_target(check, *argument.value, argument.value->range,
-                             "ENO cannot be written to this variable (a constant, an input or "
-                             "an output of another instance)");
-            }
+        if (const auto* call = std::get_if<ast::CallExpression>(&expression.node)) {
+            check_call_arguments(check, *call);
         }
     });
 }
