@@ -1,6 +1,7 @@
 #pragma once
 
 #include "../checks/native_interfaces.hpp"
+#include "../types/initial_constant.hpp"
 #include "eposp/compiler/ast/compilation_unit.hpp"
 #include "eposp/compiler/compile_options.hpp"
 #include "eposp/compiler/diagnostics.hpp"
@@ -23,7 +24,7 @@
 namespace eposp::compiler::codegen {
 
 /// An integer as VM memory holds it in `size` bytes: little-endian, two's complement truncated.
-std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size);
+using types::integer_bytes;
 
 /// The POUs of one source of declarations (the user's program or the built-in library) with
 /// the semantic model their identifiers resolve in.
@@ -114,7 +115,8 @@ public:
     /// The bytes of a variable of `type` without an initializer of its own: the type's
     /// default, its members' and elements' declared defaults included.
     const std::vector<std::uint8_t>& default_value(const sema::Type& type);
-    /// The value of a constant expression of type `type`, encoded as in memory.
+    /// The value of a constant expression of type `type`, encoded as in memory
+    /// (types::constant_bytes); what that refuses the typing stage reported.
     std::optional<std::vector<std::uint8_t>> constant_value(const ast::Expression& expression,
                                                             const sema::Type& type);
 

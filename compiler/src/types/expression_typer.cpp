@@ -2,6 +2,7 @@
 
 #include "eposp/compiler/sema/standard_library.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
+#include "initial_constant.hpp"
 
 #include <fmt/format.h>
 
@@ -82,12 +83,6 @@ bool converts_explicitly(const sema::Type& from, const sema::Type& to) {
     }
     return sema::is_scalar(from) && sema::is_scalar(to) && from.kind != sema::TypeKind::Reference &&
            to.kind != sema::TypeKind::Reference;
-}
-
-/// An integer literal, typed or not (its magnitude may exceed what folding holds).
-bool is_integer_literal(const ast::Expression& expression) {
-    const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
-    return literal != nullptr && std::holds_alternative<ast::IntegerLiteral>(literal->value);
 }
 
 bool numeric_context(const sema::Type* type) {
@@ -258,25 +253,33 @@ void ExpressionTyper::initializer(const ast::Initializer& initializer, const sem
     if (const auto* expression = std::get_if<ast::ExpressionPtr>(&initializer.value)) {
         const std::size_t errors = diagnostics_.error_count();
         store(**expression, *target, "an initial value");
-        // An integer's initial value is folded when compiling (a constant defined through
-        // itself has none).
-        const sema::Type& plain = program_.types().unranged(*target);
-        if (errors == diagnostics_.error_count() && plain.kind == sema::TypeKind::Elementary &&
-            (sema::is_integer(plain) || sema::is_bit_string(plain)) &&
-            !is_integer_literal(**expression) && !program_.types().fold_integer(**expression)) {
-            diagnostics_.error(DiagnosticCode::E0313, (*expression)->range,
-                               mismatch("an initial value", plain, *target));
+        // The image holds the value folded (a constant defined through itself has none): what
+        // code generation writes (codegen/initial_values.cpp).
+        if (errors == diagnostics_.error_count()) {
+            const auto bytes = constant_bytes(**expression, *target, program_.types());
+            if (const auto* refusal = std::get_if<ConstantRefusal>(&bytes)) {
+                diagnostics_.error(refusal->code, (*expression)->range, refusal->message);
+            }
         }
     } else if (const auto* elements =
                    std::get_if<std::vector<ast::ArrayInitElement>>(&initializer.value)) {
+        if (target->kind != sema::TypeKind::Array) {
+            diagnostics_.error(DiagnosticCode::E0301, initializer.range,
+                               fmt::format("{} is not an array", target->name));
+            return;
+        }
         for (const ast::ArrayInitElement& element : *elements) {
             if (element.repeat_count) {
+                const std::size_t errors = diagnostics_.error_count();
                 type(*element.repeat_count, &elementary(E::Dint));
+                if (errors == diagnostics_.error_count() &&
+                    program_.types().fold_integer(*element.repeat_count).value_or(-1) < 0) {
+                    diagnostics_.error(DiagnosticCode::E0313, element.repeat_count->range,
+                                       "a repetition count must be a constant >= 0");
+                }
             }
             if (element.value) {
-                this->initializer(*element.value, target->kind == sema::TypeKind::Array
-                                                      ? target->element
-                                                      : nullptr);
+                this->initializer(*element.value, target->element);
             }
         }
     } else {

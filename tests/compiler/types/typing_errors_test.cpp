@@ -154,8 +154,21 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"AccessPathNamedTwice",
              cell_with("", "a : Inst0.count : INT; a : total : DINT;"),
              {"E0202"}},
-        Case{
-            "AccessPathNamedLikeAGlobal", cell_with("", "total : Inst0.count : INT;"), {"E0202"}}));
+        Case{"AccessPathNamedLikeAGlobal", cell_with("", "total : Inst0.count : INT;"), {"E0202"}},
+        // Initial values are folded as code generation writes them (types/initial_constant.cpp).
+        Case{"ArrayInitialValueOfAScalar", main_with("i : INT := [1, 2];", "i := 1;"), {"E0301"}},
+        Case{"FoldedInitialValueTooLarge",
+             main_with("x : SINT := 100 + 100;", "x := 1;"),
+             {"E0311"}},
+        Case{"DurationTimesARealIsNoConstant",
+             main_with("t : TIME := T#1s * 1.5;", "t := t;"),
+             {"E0313"}},
+        Case{"TimeOfDayWrappingIsNoConstant",
+             main_with("t : TOD := TOD#23:00:00 + T#2h;", "t := t;"),
+             {"E0313"}},
+        Case{"RepetitionBeyondLint",
+             main_with("a : ARRAY[1..2] OF LINT := [10000000000000000000(0)];", "a[1] := 1;"),
+             {"E0313"}}));
 
 class TypingAccepts : public testing::TestWithParam<Case> {};
 

@@ -57,6 +57,12 @@ public:
     /// up to 2^64 - 1, arithmetic modulo 2^64, / and MOD unsigned.
     std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression);
 
+    const SemanticModel& model() const { return model_; }
+    /// Whether a declaration is in a CONSTANT section.
+    bool is_constant(const ast::VariableDeclaration& declaration) const {
+        return is_constant_(declaration);
+    }
+
 private:
     /// fold_integer and fold_unsigned: the result's 64 bits.
     std::optional<std::uint64_t> fold(const ast::Expression& expression, bool unsigned64);
