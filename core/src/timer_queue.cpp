@@ -27,9 +27,8 @@ TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callbac
     entry.period = period;
     entry.live = true;
     ++live_count_;
-    const std::uint64_t id = entry.generation << kSlotBits | (slot + 1);
-    push(when, id);
-    return TimerId{id};
+    push(when, slot);
+    return TimerId{entry.generation << kSlotBits | (slot + 1)};
 }
 
 TimerId TimerQueue::add_alarm(EventLoop::Callback fn) {
@@ -47,11 +46,12 @@ void TimerQueue::arm(TimerId alarm, TimePoint when) {
         entry.live = true;
         ++live_count_;
     }
-    push(when, alarm.value);
+    push(when, slot_of(alarm.value));
 }
 
 void TimerQueue::disarm(TimerId alarm) {
     Entry& entry = entries_[slot_of(alarm.value)];
+    entry.sequence = 0;
     if (entry.live) {
         entry.live = false;
         --live_count_;
@@ -80,17 +80,13 @@ TimerQueue::Entry* TimerQueue::live(std::uint64_t id) {
     return const_cast<Entry*>(std::as_const(*this).live(id));
 }
 
-bool TimerQueue::current(const Slot& slot) const {
-    const Entry* entry = live(slot.id);
-    return entry != nullptr && entry->sequence == slot.sequence;
-}
-
 // The slot's next timer gets a new generation, so that this id no longer names it.
 void TimerQueue::release(std::uint64_t id) {
     const std::size_t slot = slot_of(id);
     Entry& entry = entries_[slot];
     entry.fn = nullptr;
     entry.live = false;
+    entry.sequence = 0;
     ++entry.generation;
     --live_count_;
     free_slots_.push_back(slot);
@@ -105,9 +101,32 @@ bool TimerQueue::cancel(TimerId id) {
     return true;
 }
 
-void TimerQueue::push(TimePoint when, std::uint64_t id) {
-    const Slot slot{when, next_sequence_++, id};
-    entries_[slot_of(id)].sequence = slot.sequence;
+std::uint32_t TimerQueue::new_link(std::uint64_t sequence, std::size_t entry) {
+    const Link link{sequence, static_cast<std::uint32_t>(entry), kNoLink};
+    if (free_links_.empty()) {
+        links_.push_back(link);
+        return static_cast<std::uint32_t>(links_.size() - 1);
+    }
+    const std::uint32_t index = free_links_.back();
+    free_links_.pop_back();
+    links_[index] = link;
+    return index;
+}
+
+void TimerQueue::push(TimePoint when, std::size_t entry) {
+    const std::uint64_t sequence = next_sequence_++;
+    entries_[entry].sequence = sequence;
+    const std::uint32_t link = new_link(sequence, entry);
+    // The latest push, still queued, has the sequence before this one: at the same time, nothing
+    // can come between the two, so this event joins its run.
+    if (tail_ != kNoLink && tail_when_ == when) {
+        links_[tail_].next = link;
+        tail_ = link;
+        return;
+    }
+    tail_ = link;
+    tail_when_ = when;
+    const Slot slot{when, sequence, static_cast<std::uint32_t>(entry), link};
     std::size_t hole = heap_.size();
     heap_.push_back(slot);
     while (hole > 0) {
@@ -122,6 +141,24 @@ void TimerQueue::push(TimePoint when, std::uint64_t id) {
 }
 
 void TimerQueue::pop() {
+    Slot& top = heap_.front();
+    const std::uint32_t link = top.link;
+    const std::uint32_t next = links_[link].next;
+    free_links_.push_back(link);
+    if (link == tail_) {
+        tail_ = kNoLink;
+    }
+    if (next == kNoLink) {
+        pop_heap();
+        return;
+    }
+    // The run's next event follows the top directly in (time, sequence): still the least.
+    top.sequence = links_[next].sequence;
+    top.entry = links_[next].entry;
+    top.link = next;
+}
+
+void TimerQueue::pop_heap() {
     const Slot last = heap_.back();
     heap_.pop_back();
     const std::size_t size = heap_.size();
@@ -173,32 +210,34 @@ void TimerQueue::run_next(TimePoint& now) {
 
     // The callback is moved out while it runs so that it may cancel itself or schedule more
     // timers (which may grow the entries) without destroying the function being executed.
-    EventLoop::Callback fn = std::move(entries_[slot_of(slot.id)].fn);
-    if (entries_[slot_of(slot.id)].alarm) {
+    Entry& running = entries_[slot.entry];
+    const std::uint64_t id = running.generation << kSlotBits | (slot.entry + 1);
+    EventLoop::Callback fn = std::move(running.fn);
+    if (running.alarm) {
         // Armed while it runs, as a timer is pending until its callback returns.
         fn();
-        Entry& entry = entries_[slot_of(slot.id)];
-        if (entry.generation != slot.id >> kSlotBits) {
+        Entry& entry = entries_[slot.entry];
+        if (entry.generation != id >> kSlotBits) {
             return; // removed by its own callback
         }
         entry.fn = std::move(fn);
         if (entry.sequence == slot.sequence) {
-            disarm(TimerId{slot.id}); // not armed again by its callback
+            disarm(TimerId{id}); // not armed again by its callback
         }
         return;
     }
     fn();
 
-    Entry* entry = live(slot.id);
+    Entry* entry = live(id);
     if (entry == nullptr) {
         return; // cancelled by its own callback
     }
     if (entry->period == Duration::zero()) {
-        release(slot.id);
+        release(id);
         return;
     }
     entry->fn = std::move(fn);
-    push(slot.when + entry->period, slot.id);
+    push(slot.when + entry->period, slot.entry);
 }
 
 } // namespace eposp::core

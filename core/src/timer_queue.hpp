@@ -11,6 +11,10 @@ namespace eposp::core {
 /// with cancellation by id. Cancelled entries are dropped lazily when they reach the top. The
 /// order is total (no two entries share a sequence), so the shape of the heap cannot change
 /// which event runs next; four children a node halve the depth a removal sifts through.
+/// A heap entry is a run of events at one instant with consecutive sequences (periodic timers
+/// re-armed one after another, as the drives' control periods are): nothing scheduled later can
+/// come between them, so when the first has run the next takes its place at the top without a
+/// sift, and the run costs the heap one push and one pop.
 /// The entries live in a vector whose slots are reused; an id is the slot and the slot's
 /// generation, so that an old id never names the slot's next timer (a simulated bus schedules
 /// two events per frame: no hash table and no allocation per event).
@@ -43,21 +47,32 @@ public:
     void run_next(TimePoint& now);
 
 private:
+    static constexpr std::uint32_t kNoLink = ~std::uint32_t{0};
+    /// A heap entry: the first event of a run at `when` (its sequence and entry) and the run.
     struct Slot {
         TimePoint when;
         std::uint64_t sequence;
-        std::uint64_t id;
+        std::uint32_t entry;
+        std::uint32_t link; // in links_: this event, followed by the rest of its run
         bool operator>(const Slot& other) const {
             return when != other.when ? when > other.when : sequence > other.sequence;
         }
+    };
+    /// One event of a run: the sequence it was pushed with, its entry, the next of the run.
+    struct Link {
+        std::uint64_t sequence;
+        std::uint32_t entry;
+        std::uint32_t next;
     };
     struct Entry {
         EventLoop::Callback fn;
         Duration period;              // zero for one-shot timers
         std::uint64_t generation = 0; // the id's high bits while the slot is in use
-        std::uint64_t sequence = 0;   // of its heap entry while pending: an older one is stale
-        bool live = false;            // pending
-        bool alarm = false;           // kept in its slot while not pending
+        /// Of its latest push while pending, else 0 (sequences start at 1): a queued event whose
+        /// sequence is not its entry's is stale (cancelled, or armed again since).
+        std::uint64_t sequence = 0;
+        bool live = false;  // pending
+        bool alarm = false; // kept in its slot while not pending
     };
     static constexpr int kSlotBits = 24; // the id's low bits: 1 + the slot's index
 
@@ -67,18 +82,27 @@ private:
     const Entry* live(std::uint64_t id) const;
     Entry* live(std::uint64_t id);
     /// Whether the heap entry is the pending time of a live timer.
-    bool current(const Slot& slot) const;
+    bool current(const Slot& slot) const { return entries_[slot.entry].sequence == slot.sequence; }
     std::size_t allocate();
     void release(std::uint64_t id);
-    void push(TimePoint when, std::uint64_t id);
+    void push(TimePoint when, std::size_t entry);
+    std::uint32_t new_link(std::uint64_t sequence, std::size_t entry);
+    /// Removes the top event: the next of its run takes its place, or the heap shrinks.
     void pop();
+    void pop_heap();
     void drop_cancelled();
 
     std::vector<Slot> heap_; ///< heap_[0] is the earliest; the children of i are 4i+1..4i+4
+    std::vector<Link> links_;
+    std::vector<std::uint32_t> free_links_;
+    /// The link of the latest push while it is queued, and its time: a push at that time (the
+    /// next sequence) joins its run.
+    std::uint32_t tail_ = kNoLink;
+    TimePoint tail_when_{};
     std::vector<Entry> entries_;
     std::vector<std::size_t> free_slots_;
     std::size_t live_count_ = 0;
-    std::uint64_t next_sequence_ = 0;
+    std::uint64_t next_sequence_ = 1;
 };
 
 } // namespace eposp::core

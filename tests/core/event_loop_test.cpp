@@ -1,6 +1,8 @@
 #include "eposp/core/event_loop.hpp"
 
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <gtest/gtest.h>
 #include <memory>
 #include <random>
@@ -312,6 +314,131 @@ TEST(EventLoop, ScopedTimerMoveKeepsOneOwner) {
     outer.cancel();
     loop.run_for(3ms);
     EXPECT_EQ(runs, 3);
+}
+
+// The queue keeps a run of events pushed one after another at one instant (periodic timers
+// re-armed in turn, as the drives' control periods are) as one heap entry. Periodic timers on a
+// shared and on their own phases whose callbacks schedule one-shots (now, at the next period,
+// in between), cancel timers of the run and re-arm an alarm, against a plain model: the pending
+// events in a list, the least (time, sequence) runs next, a periodic one is scheduled again after
+// its callback.
+TEST(EventLoop, EventsPushedInTurnAtOneInstantRunAsIfEachWereScheduledAlone) {
+    constexpr std::int64_t kPeriod = 1000;
+    constexpr int kTimers = 12;
+    struct Model {
+        struct Pending {
+            std::int64_t when;
+            std::uint64_t sequence;
+            int number;
+            std::int64_t period;
+        };
+        std::vector<Pending> pending;
+        std::uint64_t next_sequence = 0;
+        void schedule(std::int64_t when, int number, std::int64_t period) {
+            pending.push_back({when, next_sequence++, number, period});
+        }
+        void cancel(int number) {
+            std::erase_if(pending, [number](const Pending& p) { return p.number == number; });
+        }
+    };
+    // What the callback of `number` does at its run `count`: the same in the loop and the model.
+    const auto actions = [](int number, int count) {
+        std::mt19937 random(static_cast<unsigned>(number * 7919 + count));
+        return std::array<int, 3>{static_cast<int>(random() % 16), static_cast<int>(random() % 5),
+                                  static_cast<int>(random() % kTimers)};
+    };
+
+    EventLoop loop;
+    std::vector<std::pair<std::int64_t, int>> ran;
+    std::vector<TimerId> ids(kTimers);
+    std::vector<int> runs(kTimers + 1);
+    int next_one_shot = 100;
+    Alarm alarm(loop, [&] { ran.emplace_back(loop.now().time_since_epoch().count(), -1); });
+    std::function<void(int)> run_timer = [&](int number) {
+        const std::int64_t now = loop.now().time_since_epoch().count();
+        ran.emplace_back(now, number);
+        const auto [what, delay, victim] = actions(number, runs[number]++);
+        const std::int64_t later[] = {0, kPeriod, kPeriod / 2, 1, 2 * kPeriod};
+        if (what == 0) {
+            const int one_shot = next_one_shot++;
+            loop.at(at_ns(now + later[delay]), [&ran, &loop, one_shot] {
+                ran.emplace_back(loop.now().time_since_epoch().count(), one_shot);
+            });
+        } else if (what == 1 && delay == 0 && victim != number) {
+            loop.cancel(ids[static_cast<std::size_t>(victim)]);
+        } else if (what == 2) {
+            alarm.arm(at_ns(now + later[delay]));
+        }
+    };
+    for (int number = 0; number < kTimers; ++number) {
+        const std::int64_t first = number < 8 ? kPeriod : kPeriod + 250 * (number - 7);
+        ids[static_cast<std::size_t>(number)] = loop.every(
+            Duration{kPeriod}, at_ns(first), [&run_timer, number] { run_timer(number); });
+    }
+    loop.run_until(at_ns(40 * kPeriod));
+
+    Model model;
+    std::vector<std::pair<std::int64_t, int>> expected;
+    std::vector<int> model_runs(kTimers + 1);
+    int model_one_shot = 100;
+    for (int number = 0; number < kTimers; ++number) {
+        model.schedule(number < 8 ? kPeriod : kPeriod + 250 * (number - 7), number, kPeriod);
+    }
+    for (;;) {
+        const auto next = std::min_element(
+            model.pending.begin(), model.pending.end(), [](const auto& a, const auto& b) {
+                return a.when != b.when ? a.when < b.when : a.sequence < b.sequence;
+            });
+        if (next == model.pending.end() || next->when > 40 * kPeriod) {
+            break;
+        }
+        const Model::Pending event = *next;
+        model.pending.erase(next);
+        expected.emplace_back(event.when, event.number);
+        if (event.number == -1 || event.number >= 100) {
+            continue;
+        }
+        const auto [what, delay, victim] = actions(event.number, model_runs[event.number]++);
+        const std::int64_t later[] = {0, kPeriod, kPeriod / 2, 1, 2 * kPeriod};
+        if (what == 0) {
+            model.schedule(event.when + later[delay], model_one_shot++, 0);
+        } else if (what == 1 && delay == 0 && victim != event.number) {
+            model.cancel(victim);
+        } else if (what == 2) {
+            model.cancel(-1); // armed again: moves
+            model.schedule(event.when + later[delay], -1, 0);
+        }
+        if (event.period > 0) {
+            model.schedule(event.when + event.period, event.number, event.period);
+        }
+    }
+    EXPECT_GT(expected.size(), 300U);
+    EXPECT_EQ(ran, expected);
+}
+
+// The latest event scheduled has run: what its callback schedules for the same instant starts a
+// run of its own and runs once.
+TEST(EventLoop, WhatTheLatestScheduledEventSchedulesForItsInstantRunsOnce) {
+    EventLoop loop;
+    std::string order;
+    loop.at(at_ns(10), [&] {
+        order += 'a';
+        loop.post([&] {
+            order += 'b';
+            loop.post([&] { order += 'c'; });
+        });
+    });
+    int rearmed = 0;
+    Alarm alarm(loop, [&] {
+        order += 'd';
+        if (rearmed++ == 0) {
+            alarm.arm(loop.now());
+        }
+    });
+    loop.run();
+    alarm.arm(loop.now() + 5ns);
+    loop.run();
+    EXPECT_EQ(order, "abcdd");
 }
 
 // A workload with timers scheduling, cancelling and re-arming each other, driven by a seeded
