@@ -5,6 +5,7 @@
 #include "eposp/drives/epos2/device_errors.hpp"
 #include "eposp/drives/epos2/epos2_io.hpp"
 #include "eposp/drives/motion/device_error_codes.hpp"
+#include "eposp/drives/motion/nearest_integer.hpp"
 #include "eposp/drives/motion/profile_planner.hpp"
 #include "eposp/drives/motion/software_position_limit.hpp"
 #include "eposp/drives/motion/statusword_bits.hpp"
@@ -749,7 +750,7 @@ bool Epos2Drive::digital_output(unsigned output) const {
 // listeners of event-driven TPDOs hear it.
 void Epos2Drive::publish(const MotionState& demand) {
     const auto to_i32 = [](double value) {
-        return static_cast<std::int32_t>(std::lround(value));
+        return static_cast<std::int32_t>(motion::nearest_integer(value));
     };
     const PublishedValues now{
         .statusword = statusword(),
@@ -757,7 +758,8 @@ void Epos2Drive::publish(const MotionState& demand) {
         .position_actual = static_cast<std::int32_t>(position_actual()),
         .velocity_demand = to_i32(counts_to_velocity(demand.velocity)),
         .velocity_actual = to_i32(counts_to_velocity(velocity_actual())),
-        .current_actual = static_cast<std::int16_t>(std::lround(current_actual() * 1000)),
+        .current_actual =
+            static_cast<std::int16_t>(motion::nearest_integer(current_actual() * 1000)),
         .digital_inputs = digital_input_states(),
     };
     // Compared with what was stored last, not read back: a dictionary read per object and
