@@ -65,9 +65,13 @@ struct Epos2DriveConfig {
 };
 
 /// A simulated maxon EPOS2 24/5 on a CAN port: a canopen::Node on the EPOS2 dictionary, the
-/// CiA 402 device control, Profile Position, Profile Velocity and Homing Mode, and the motor
-/// model, stepped on the event loop (EPOS2 FW spec 5.9: current loop every 0.1 ms, position and
-/// velocity loops every 1 ms). The master sees only the dictionary: controlword, mode and
+/// CiA 402 device control with its stop ramps, every mode of table 8-118 (Profile Position,
+/// Profile Velocity, Homing, Interpolated Position, Position, Velocity, Current, Diagnostic,
+/// Master Encoder and Step/Direction Mode, each a ModeBehaviour in src/epos2/modes/), the I²t
+/// current limitation, the analog set values, the digital inputs and outputs with the position
+/// marker, position compare and holding brake, and the motor model, stepped on the event loop
+/// (EPOS2 FW spec 5.9: current loop every 0.1 ms, position and velocity loops every 1 ms;
+/// docs/epos2.md lists each function). The master sees only the dictionary: controlword, mode and
 /// profile objects written by SDO or RPDO act through change listeners, and so do the encoder,
 /// gains and motor data, which reconfigure the running plant; the computed objects (statusword,
 /// actual values, digital inputs) are stored each millisecond when they change, so that SDO,
