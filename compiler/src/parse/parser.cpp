@@ -6,7 +6,7 @@
 #include "nesting_limit.hpp"
 #include "syntax_error_strategy.hpp"
 #include "token_range.hpp"
-#include "utf8.hpp"
+#include "../utf8.hpp"
 
 #include <ANTLRInputStream.h>
 #include <BailErrorStrategy.h>

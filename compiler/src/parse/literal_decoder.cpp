@@ -3,7 +3,7 @@
 #include "eposp/compiler/ascii_case.hpp"
 #include "eposp/vm/stdlib/duration_fraction.hpp"
 #include "eposp/vm/stdlib/string_layout.hpp"
-#include "utf8.hpp"
+#include "../utf8.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 #include "token_range.hpp"
 
-#include "utf8.hpp"
+#include "../utf8.hpp"
 
 #include <string>
 
