@@ -774,7 +774,9 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
     const sema::Type* left = nullptr;
     if (node.op != Op::Modulo && !is_untyped_literal(*node.left)) {
         const bool scale = node.op == Op::Multiply || node.op == Op::Divide;
-        left = type(*node.left, scale ? nullptr : expected);
+        // A product's left operand is typed without a TIME context, which would make a TIME of
+        // its literals; a numeric context still types them (`x := 2 * 3 * 5` with x an INT).
+        left = type(*node.left, !scale || numeric_context(expected) ? expected : nullptr);
         if (left == nullptr) {
             type(*node.right, nullptr);
             return nullptr;
