@@ -299,6 +299,23 @@ void ExpressionTyper::statements(const ast::StatementList& list) {
     }
 }
 
+void ExpressionTyper::case_label_constant(const ast::CaseLabel& label, const sema::Type& selector) {
+    // As code generation folds them: a ULINT or LWORD selector's labels as unsigned numbers.
+    sema::TypeTable& types = program_.types();
+    const bool unsigned64 = sema::scalar_of(selector) == vm::Scalar::U64;
+    const auto folds = [&](const ast::ExpressionPtr& bound, bool as_unsigned) {
+        return !bound || (as_unsigned ? types.fold_unsigned(*bound).has_value()
+                                      : types.fold_integer(*bound).has_value());
+    };
+    if (folds(label.low, unsigned64) && folds(label.high, unsigned64)) {
+        return;
+    }
+    const bool constant = folds(label.low, true) && folds(label.high, true);
+    diagnostics_.error(constant ? DiagnosticCode::E0301 : DiagnosticCode::E0313, label.range,
+                       constant ? fmt::format("a CASE label must be a value of {}", selector.name)
+                                : "a CASE label must be a constant");
+}
+
 void ExpressionTyper::condition(const ast::Expression& expression) {
     expect(expression, elementary(E::Bool), "a condition");
 }
@@ -387,10 +404,14 @@ void ExpressionTyper::statement(const ast::Statement& statement) {
                 }
                 for (const ast::CaseBranch& branch : node.branches) {
                     for (const ast::CaseLabel& label : branch.labels) {
+                        const std::size_t errors = diagnostics_.error_count();
                         for (const ast::ExpressionPtr* bound : {&label.low, &label.high}) {
                             if (*bound && selector != nullptr) {
                                 expect(**bound, *selector, "a CASE label");
                             }
+                        }
+                        if (selector != nullptr && errors == diagnostics_.error_count()) {
+                            case_label_constant(label, *selector);
                         }
                     }
                     statements(branch.body);
@@ -442,15 +463,26 @@ const sema::Type* ExpressionTyper::type(const ast::Expression& expression,
             } else if constexpr (std::is_same_v<T, ast::MemberExpression>) {
                 return member(expression, node);
             } else if constexpr (std::is_same_v<T, ast::BitAccessExpression>) {
-                type(*node.object, nullptr);
+                const sema::Type* word = type(*node.object, nullptr);
+                if (word != nullptr && !sema::is_bit_string(*word) && !sema::is_integer(*word)) {
+                    return fail(DiagnosticCode::E0304, expression.range,
+                                fmt::format("bit access needs a bit string, not {}", word->name));
+                }
+                if (word != nullptr && node.bit >= word->size * 8) {
+                    return fail(DiagnosticCode::E0105, expression.range,
+                                fmt::format("{} has no bit {}", word->name, node.bit));
+                }
                 return &elementary(E::Bool);
             } else if constexpr (std::is_same_v<T, ast::IndexExpression>) {
                 return index(expression, node);
             } else if constexpr (std::is_same_v<T, ast::DereferenceExpression>) {
                 const sema::Type* reference = type(*node.reference, nullptr);
-                return reference != nullptr && reference->kind == sema::TypeKind::Reference
-                           ? reference->element
-                           : nullptr;
+                if (reference != nullptr && (reference->kind != sema::TypeKind::Reference ||
+                                             reference->element == nullptr)) {
+                    return fail(DiagnosticCode::E0304, expression.range,
+                                fmt::format("'^' needs a reference, not {}", reference->name));
+                }
+                return reference != nullptr ? reference->element : nullptr;
             } else if constexpr (std::is_same_v<T, ast::ReferenceExpression>) {
                 const sema::Type* target = type(*node.target, nullptr);
                 return target != nullptr ? &program_.types().reference(target) : nullptr;
@@ -752,6 +784,11 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
     case Op::Equal:
     case Op::NotEqual: {
         const sema::Type* operands = unify({node.left.get(), node.right.get()}, nullptr, range);
+        if (operands != nullptr && operands->kind != sema::TypeKind::String &&
+            !sema::is_scalar(*operands)) {
+            return fail(DiagnosticCode::E0304, range,
+                        fmt::format("values of type {} cannot be compared", operands->name));
+        }
         return operands != nullptr ? &elementary(E::Bool) : nullptr;
     }
     case Op::And:

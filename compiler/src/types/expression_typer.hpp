@@ -41,6 +41,8 @@ private:
                                          const ast::AccessDeclaration& declaration);
     const sema::Type& address_type(const ast::DirectAddress& address);
     void condition(const ast::Expression& expression);
+    /// A CASE label folds to a value of the selector's type (E0313, E0301).
+    void case_label_constant(const ast::CaseLabel& label, const sema::Type& selector);
     /// Types `expression` where a value of `target` is expected, and checks that it converts.
     void expect(const ast::Expression& expression, const sema::Type& target, const char* what);
     /// expect(), for a value stored into a variable or parameter of type `target`.

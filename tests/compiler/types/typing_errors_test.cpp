@@ -166,6 +166,17 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"TimeOfDayWrappingIsNoConstant",
              main_with("t : TOD := TOD#23:00:00 + T#2h;", "t := t;"),
              {"E0313"}},
+        // What only code generation refused before (eposp check passed, eposp build failed).
+        Case{"BitBeyondTheWord", main_with("w : WORD; b : BOOL;", "b := w.16;"), {"E0105"}},
+        Case{"BitOfABool", main_with("a, b : BOOL;", "b := a.0;"), {"E0304"}},
+        Case{"DereferenceOfAnInteger", main_with("x : INT;", "x := x^;"), {"E0304"}},
+        Case{"StructuresCompared",
+             "TYPE S : STRUCT a : INT; END_STRUCT; END_TYPE\n" +
+                 main_with("s, t : S; b : BOOL;", "b := s = t;"),
+             {"E0304"}},
+        Case{"CaseLabelOfAVariable",
+             main_with("x, y : INT;", "CASE x OF y: x := 1; END_CASE;"),
+             {"E0313"}},
         Case{"RepetitionBeyondLint",
              main_with("a : ARRAY[1..2] OF LINT := [10000000000000000000(0)];", "a[1] := 1;"),
              {"E0313"}}));
