@@ -40,13 +40,11 @@ void ErrorCounters::transmit_success() {
     }
 }
 
-void ErrorCounters::receive_success() {
+void ErrorCounters::count_down_receive() {
     if (receive_ > kErrorPassiveAbove) {
         receive_ = kReceiveCounterAfterPassive;
-    } else if (receive_ > 0) {
-        --receive_;
     } else {
-        return; // the common case: nothing to count down
+        --receive_;
     }
     update_state();
 }

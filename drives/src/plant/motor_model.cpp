@@ -61,36 +61,9 @@ double MotorModel::output_angle() const {
     return state_.angle / parameters_.gearhead.ratio;
 }
 
-void MotorModel::step(double voltage) {
-    const double limit = parameters_.power_stage.max_voltage();
-    const double applied = std::clamp(voltage, -limit, limit);
-    // i' = (u − e − R·i)/L with u and e held: i → i_final exponentially with τ = L/R.
-    const double i_final =
-        (applied - back_emf_constant_ * state_.speed) / parameters_.motor.terminal_resistance;
-    const double i_start = state_.current;
-    state_.current = i_final + (i_start - i_final) * current_decay_;
-    // The exact mean of that exponential over the step drives the shaft.
-    integrate_mechanics(i_final + (i_start - i_final) * mean_current_weight_);
-}
-
 void MotorModel::step_unpowered() {
     state_.current = 0;
     integrate_mechanics(0);
-}
-
-void MotorModel::integrate_mechanics(double mean_current) {
-    const double drive = parameters_.motor.torque_constant * mean_current;
-    const double omega = state_.speed;
-    if (omega == 0 && std::abs(drive) <= coulomb_) {
-        return; // static friction holds the shaft
-    }
-    const double direction = omega != 0 ? std::copysign(1.0, omega) : std::copysign(1.0, drive);
-    double next = (omega + step_over_inertia_ * (drive - coulomb_ * direction)) * viscous_decay_;
-    if (next * direction < 0 && std::abs(drive) <= coulomb_) {
-        next = 0; // friction brings the shaft to rest, it does not reverse it
-    }
-    state_.angle += 0.5 * (omega + next) * step_;
-    state_.speed = next;
 }
 
 } // namespace eposp::drives::plant
