@@ -58,46 +58,54 @@ public:
         return {value->get(), types_.resolve(symbol->variable->type)};
     }
 
-    /// A constant REAL expression (`1.0 / 3.0`, `Ratio * 2.0`).
-    std::optional<double> real(const ast::Expression& expression) {
+    /// A constant REAL or LREAL expression (`1.0 / 3.0`, `Ratio * 2.0`); `single`: a REAL,
+    /// whose every value and operation rounds to single precision as it does at run time
+    /// (`16777216.0 + 1.0 + 1.0` is 16777216.0, not 16777218.0 rounded once at the end).
+    std::optional<double> real(const ast::Expression& expression, bool single) {
+        const auto rounded = [single](double value) {
+            return single ? static_cast<double>(static_cast<float>(value)) : value;
+        };
         if (const ast::Literal* literal = literal_of(expression)) {
             if (const auto* real = std::get_if<ast::RealLiteral>(literal)) {
-                return real->value;
+                return rounded(real->value);
             }
             if (const auto* integer = std::get_if<ast::IntegerLiteral>(literal)) {
-                return static_cast<double>(integer->magnitude) * (integer->negative ? -1 : 1);
+                return rounded(static_cast<double>(integer->magnitude) *
+                               (integer->negative ? -1 : 1));
             }
             return std::nullopt;
         }
         if (const auto [initial, type] = constant(expression); initial != nullptr) {
+            // A named constant has the value of its own type (a REAL one in an LREAL too).
             if (type != nullptr && sema::is_real(*type)) {
-                return within(expression, [&] { return real(*initial); });
+                const bool its_single = type->size == 4;
+                return within(expression, [&] { return real(*initial, its_single); });
             }
             const auto integer = types_.fold_integer(expression);
-            return integer ? std::optional(static_cast<double>(*integer)) : std::nullopt;
+            return integer ? std::optional(rounded(static_cast<double>(*integer))) : std::nullopt;
         }
         if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
-            const auto operand = real(*unary->operand);
+            const auto operand = real(*unary->operand, single);
             if (!operand || unary->op == ast::UnaryOperator::Not) {
                 return std::nullopt;
             }
             return unary->op == ast::UnaryOperator::Negate ? -*operand : *operand;
         }
         const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
-        const auto left = binary != nullptr ? real(*binary->left) : std::nullopt;
-        const auto right = left ? real(*binary->right) : std::nullopt;
+        const auto left = binary != nullptr ? real(*binary->left, single) : std::nullopt;
+        const auto right = left ? real(*binary->right, single) : std::nullopt;
         if (!right) {
             return std::nullopt;
         }
         switch (binary->op) {
         case ast::BinaryOperator::Add:
-            return *left + *right;
+            return rounded(*left + *right);
         case ast::BinaryOperator::Subtract:
-            return *left - *right;
+            return rounded(*left - *right);
         case ast::BinaryOperator::Multiply:
-            return *left * *right;
+            return rounded(*left * *right);
         case ast::BinaryOperator::Divide:
-            return *left / *right;
+            return rounded(*left / *right);
         default:
             return std::nullopt;
         }
@@ -253,7 +261,7 @@ constant_bytes(const ast::Expression& expression, const sema::Type& type, sema::
         return not_constant;
     }
     if (sema::is_real(type)) {
-        const auto value = folder.real(expression);
+        const auto value = folder.real(expression, type.size == 4);
         if (!value) {
             return not_constant;
         }
@@ -299,6 +307,14 @@ constant_bytes(const ast::Expression& expression, const sema::Type& type, sema::
         }
         const std::uint64_t bits = integer->negative ? 0 - integer->magnitude : integer->magnitude;
         return integer_bytes(static_cast<std::int64_t>(bits), type.size);
+    }
+    if (sema::scalar_of(type) == vm::Scalar::U64) {
+        // ULINT and LWORD: folded modulo 2^64, as they compute at run time, so that values
+        // above LINT's range (a constant named by another) fold too.
+        const auto value = types.fold_unsigned(expression);
+        return or_refused(value ? std::optional(integer_bytes(static_cast<std::int64_t>(*value),
+                                                              type.size))
+                                : std::nullopt);
     }
     const auto value = types.fold_integer(expression);
     if (!value) {

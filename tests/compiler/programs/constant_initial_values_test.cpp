@@ -55,5 +55,56 @@ END_PROGRAM
     EXPECT_EQ(run.get_string("Main.name"), "ab");
 }
 
+// A REAL folds in single precision at every step, as it computes at run time; an LREAL in double.
+TEST(ConstantInitialValues, RealsRoundAtEveryStepAsAtRunTime) {
+    StProgram run(R"(PROGRAM Main
+VAR CONSTANT
+    kSum : REAL := 16777216.0 + 1.0 + 1.0;
+    kTenth : REAL := 0.1;
+    kWide : LREAL := kTenth * 3.0;
+    kLongSum : LREAL := 9007199254740992.0 + 1.0 + 1.0;
+END_VAR
+VAR
+    sum : REAL := kSum; sum_now : REAL;
+    wide : LREAL := kWide; wide_now : LREAL; tenth : REAL := 0.1;
+    long_sum : LREAL := kLongSum; long_sum_now : LREAL;
+END_VAR
+sum_now := 16777216.0 + 1.0 + 1.0;
+wide_now := REAL_TO_LREAL(tenth) * 3.0;
+long_sum_now := 9007199254740992.0 + 1.0 + 1.0;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<float>("Main.sum"), 16777216.0F);
+    EXPECT_EQ(run.get<float>("Main.sum"), run.get<float>("Main.sum_now"));
+    EXPECT_EQ(run.get<double>("Main.wide"), static_cast<double>(0.1F) * 3.0);
+    EXPECT_EQ(run.get<double>("Main.wide"), run.get<double>("Main.wide_now"));
+    EXPECT_EQ(run.get<double>("Main.long_sum"), run.get<double>("Main.long_sum_now"));
+}
+
+// ULINT and LWORD constants fold modulo 2^64: one named by another above LINT's range too.
+TEST(ConstantInitialValues, UnsignedSixtyFourBitConstantsFoldAboveLintsRange) {
+    StProgram run(R"(PROGRAM Main
+VAR CONSTANT
+    kMask : LWORD := LWORD#16#FFFFFFFFFFFFFFF0;
+    kSame : LWORD := kMask;
+    kTop : ULINT := 18446744073709551615;
+    kHalf : ULINT := kTop / 2;
+END_VAR
+VAR
+    same : LWORD := kSame;
+    half : ULINT := kHalf; half_now : ULINT; top : ULINT := kTop;
+END_VAR
+half_now := top / 2;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::uint64_t>("Main.same"), 0xFFFF'FFFF'FFFF'FFF0ULL);
+    EXPECT_EQ(run.get<std::uint64_t>("Main.half"), 0x7FFF'FFFF'FFFF'FFFFULL);
+    EXPECT_EQ(run.get<std::uint64_t>("Main.half"), run.get<std::uint64_t>("Main.half_now"));
+}
+
 } // namespace
 } // namespace eposp::compiler::test
