@@ -103,4 +103,12 @@ private:
 /// of its context.
 bool is_untyped_literal(const ast::Expression& expression);
 
+/// Why a value of `actual` cannot be stored where `target` is expected (`what`: "a value", "an
+/// initial value", "a CASE label", ...).
+std::string mismatch(const char* what, const sema::Type& actual, const sema::Type& target);
+
+/// Whether `type` is an elementary number or bit string: a context whose type an untyped
+/// literal takes.
+bool numeric_context(const sema::Type* type);
+
 } // namespace eposp::compiler::types

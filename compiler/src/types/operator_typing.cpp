@@ -1,0 +1,216 @@
+// Operators typed (table 71): operands brought to their common type by the widening of figure
+// 11, time and date arithmetic (table 30), the operator's own rules.
+
+#include "expression_typer.hpp"
+
+#include <fmt/format.h>
+
+namespace eposp::compiler::types {
+
+const sema::Type* ExpressionTyper::unary(const ast::Expression& expression,
+                                         const ast::UnaryExpression& node,
+                                         const sema::Type* expected) {
+    const sema::Type* operand = type(*node.operand, expected);
+    if (operand == nullptr) {
+        return nullptr;
+    }
+    const sema::Type& plain = program_.types().unranged(*operand);
+    if (node.op == ast::UnaryOperator::Not) {
+        if (!sema::is_bool(plain) && !sema::is_bit_string(plain) && !sema::is_integer(plain)) {
+            return fail(DiagnosticCode::E0304, expression.range,
+                        fmt::format("NOT needs a BOOL or bit string, not {}", plain.name));
+        }
+        return &plain;
+    }
+    if (!sema::is_numeric(plain) && plain.elementary != E::Time && plain.elementary != E::Ltime) {
+        return fail(DiagnosticCode::E0304, expression.range,
+                    fmt::format("'-' needs a number, not {}", plain.name));
+    }
+    return &plain;
+}
+
+const sema::Type* ExpressionTyper::common(const sema::Type& a, const sema::Type& b) {
+    const sema::Type& x = program_.types().unranged(a);
+    const sema::Type& y = program_.types().unranged(b);
+    if (sema::converts_implicitly(x, y)) {
+        return &y;
+    }
+    if (sema::converts_implicitly(y, x)) {
+        return &x;
+    }
+    return nullptr;
+}
+
+const sema::Type* ExpressionTyper::time_arithmetic(ast::BinaryOperator op, const sema::Type& left,
+                                                   const sema::Type& right,
+                                                   const SourceRange& range) {
+    // 6.6.2.5.5 table 30: durations add and subtract, a point in time moves by a duration (a
+    // TIME_OF_DAY wraps around midnight), two points of one type subtract to a duration.
+    using Op = ast::BinaryOperator;
+    const auto duration = [](const sema::Type& type) {
+        return type.kind == sema::TypeKind::Elementary &&
+               (type.elementary == E::Time || type.elementary == E::Ltime);
+    };
+    const bool add_or_subtract = op == Op::Add || op == Op::Subtract;
+    if (add_or_subtract && duration(right) && left.elementary != E::Date) {
+        return &left;
+    }
+    if (op == Op::Subtract && left.kind == right.kind && left.elementary == right.elementary) {
+        return &elementary(left.elementary == E::Ltime || left.elementary == E::Ldt ? E::Ltime
+                                                                                    : E::Time);
+    }
+    return fail(DiagnosticCode::E0303, range,
+                fmt::format("this operation is not defined on {} and {} (use the functions of "
+                            "IEC 61131-3 table 30)",
+                            left.name, right.name));
+}
+
+const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression*>& operands,
+                                         const sema::Type* expected, const SourceRange& range,
+                                         const sema::Type* first) {
+    // Typed operands first; the untyped literals then take their common type.
+    const sema::Type* result = nullptr;
+    bool failed = false;
+    for (const bool literals : {false, true}) {
+        for (const ast::Expression* operand : operands) {
+            if (is_untyped_literal(*operand) != literals) {
+                continue;
+            }
+            const sema::Type* context = result != nullptr ? result : expected;
+            if (literals && result != nullptr && !numeric_context(result)) {
+                context = nullptr;
+            }
+            const sema::Type* type = first != nullptr && operand == operands.front()
+                                         ? first
+                                         : this->type(*operand, context);
+            if (type == nullptr) {
+                failed = true;
+                continue;
+            }
+            if (result == nullptr) {
+                result = &program_.types().unranged(*type);
+            } else if (result->kind == sema::TypeKind::String && type->kind == result->kind &&
+                       type->wide == result->wide) {
+                // Strings of any lengths meet in the longest, which holds each of them.
+                result = type->capacity > result->capacity ? type : result;
+            } else if (const sema::Type* both = common(*result, *type)) {
+                result = both;
+            } else {
+                diagnostics_.error(DiagnosticCode::E0303, range,
+                                   fmt::format("operands of types {} and {} do not match",
+                                               result->name, type->name));
+                failed = true;
+            }
+        }
+    }
+    if (failed) {
+        return nullptr;
+    }
+    // A literal typed before a wider one (`5 > 3000000000`) takes the common type after all;
+    // literals have no side effects, so typing one again changes nothing else.
+    for (const ast::Expression* operand : operands) {
+        if (is_untyped_literal(*operand) && numeric_context(result) &&
+            program_.type_of(*operand) != result) {
+            type(*operand, result);
+        }
+    }
+    return result;
+}
+
+const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
+                                          const ast::BinaryExpression& node,
+                                          const sema::Type* expected) {
+    using Op = ast::BinaryOperator;
+    const SourceRange& range = expression.range;
+    switch (node.op) {
+    case Op::Power: {
+        // EXPT (table 24): IN1 ANY_REAL, IN2 ANY_NUM; the result has IN1's type.
+        const sema::Type* base =
+            type(*node.left, expected != nullptr && sema::is_real(*expected) ? expected : nullptr);
+        type(*node.right, nullptr);
+        if (base == nullptr) {
+            return nullptr;
+        }
+        return sema::is_real(*base) ? base : &elementary(E::Lreal);
+    }
+    case Op::Less:
+    case Op::Greater:
+    case Op::LessEqual:
+    case Op::GreaterEqual:
+    case Op::Equal:
+    case Op::NotEqual: {
+        const sema::Type* operands = unify({node.left.get(), node.right.get()}, nullptr, range);
+        if (operands != nullptr && operands->kind != sema::TypeKind::String &&
+            !sema::is_scalar(*operands)) {
+            return fail(DiagnosticCode::E0304, range,
+                        fmt::format("values of type {} cannot be compared", operands->name));
+        }
+        return operands != nullptr ? &elementary(E::Bool) : nullptr;
+    }
+    case Op::And:
+    case Op::Or:
+    case Op::Xor: {
+        const sema::Type* operands = unify({node.left.get(), node.right.get()}, expected, range);
+        if (operands != nullptr && !sema::is_bool(*operands) && !sema::is_bit_string(*operands) &&
+            !sema::is_integer(*operands)) {
+            return fail(
+                DiagnosticCode::E0304, range,
+                fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", operands->name));
+        }
+        return operands;
+    }
+    default:
+        break;
+    }
+    // The left operand decides first whether this is a TIME scaled by a number (table 30) or
+    // a pointer moved by a number of bytes.
+    const sema::Type* left = nullptr;
+    if (node.op != Op::Modulo && !is_untyped_literal(*node.left)) {
+        const bool scale = node.op == Op::Multiply || node.op == Op::Divide;
+        // A product's left operand is typed without a TIME context, which would make a TIME of
+        // its literals; a numeric context still types them (`x := 2 * 3 * 5` with x an INT).
+        left = type(*node.left, !scale || numeric_context(expected) ? expected : nullptr);
+        if (left == nullptr) {
+            type(*node.right, nullptr);
+            return nullptr;
+        }
+        if (scale && (left->elementary == E::Time || left->elementary == E::Ltime) &&
+            left->kind == sema::TypeKind::Elementary) {
+            const sema::Type* factor = type(*node.right, &elementary(E::Lint));
+            if (factor != nullptr && !sema::is_numeric(*factor)) {
+                return fail(DiagnosticCode::E0304, node.right->range,
+                            fmt::format("a TIME is multiplied or divided by a number, not {}",
+                                        factor->name));
+            }
+            return factor != nullptr ? left : nullptr;
+        }
+        if (!scale && left->kind == sema::TypeKind::Reference) {
+            const sema::Type* bytes = type(*node.right, &elementary(E::Lint));
+            if (bytes != nullptr && !sema::is_integer(program_.types().unranged(*bytes))) {
+                return fail(DiagnosticCode::E0304, node.right->range,
+                            fmt::format("a pointer moves by a whole number of bytes, not by a {}",
+                                        bytes->name));
+            }
+            return bytes != nullptr ? left : nullptr;
+        }
+        if (!scale && sema::is_time_like(*left)) {
+            const sema::Type* right = type(*node.right, nullptr);
+            return right != nullptr ? time_arithmetic(node.op, *left, *right, range) : nullptr;
+        }
+    }
+    const sema::Type* operands = unify({node.left.get(), node.right.get()}, expected, range, left);
+    if (operands == nullptr) {
+        return nullptr;
+    }
+    if (node.op == Op::Modulo && !sema::is_integer(*operands) && !sema::is_bit_string(*operands)) {
+        return fail(DiagnosticCode::E0304, range,
+                    fmt::format("MOD needs integers, not {}", operands->name));
+    }
+    if (sema::is_numeric(*operands) || sema::is_bit_string(*operands)) {
+        return operands;
+    }
+    return fail(DiagnosticCode::E0304, range,
+                fmt::format("arithmetic needs numbers, not {}", operands->name));
+}
+
+} // namespace eposp::compiler::types
