@@ -1,63 +1,63 @@
 #include "nesting_limit.hpp"
 
-#include "StructuredTextLexer.h"
+#include "StructuredTextParser.h"
 #include "token_range.hpp"
 
 namespace eposp::compiler {
 
 namespace {
 
-using generated::StructuredTextLexer;
+using generated::StructuredTextParser;
 
 enum class Role { Other, Opens, Closes, Prefix, TypePrefix, Binary, EndsStatement };
 
 Role role_of(std::size_t type) {
     switch (type) {
-    case StructuredTextLexer::LEFT_PAREN:
-    case StructuredTextLexer::LEFT_BRACKET:
-    case StructuredTextLexer::IF:
-    case StructuredTextLexer::CASE:
-    case StructuredTextLexer::FOR:
-    case StructuredTextLexer::WHILE:
-    case StructuredTextLexer::REPEAT:
-    case StructuredTextLexer::STRUCT:
+    case StructuredTextParser::LEFT_PAREN:
+    case StructuredTextParser::LEFT_BRACKET:
+    case StructuredTextParser::IF:
+    case StructuredTextParser::CASE:
+    case StructuredTextParser::FOR:
+    case StructuredTextParser::WHILE:
+    case StructuredTextParser::REPEAT:
+    case StructuredTextParser::STRUCT:
         return Role::Opens;
-    case StructuredTextLexer::RIGHT_PAREN:
-    case StructuredTextLexer::RIGHT_BRACKET:
-    case StructuredTextLexer::END_IF:
-    case StructuredTextLexer::END_CASE:
-    case StructuredTextLexer::END_FOR:
-    case StructuredTextLexer::END_WHILE:
-    case StructuredTextLexer::END_REPEAT:
-    case StructuredTextLexer::END_STRUCT:
+    case StructuredTextParser::RIGHT_PAREN:
+    case StructuredTextParser::RIGHT_BRACKET:
+    case StructuredTextParser::END_IF:
+    case StructuredTextParser::END_CASE:
+    case StructuredTextParser::END_FOR:
+    case StructuredTextParser::END_WHILE:
+    case StructuredTextParser::END_REPEAT:
+    case StructuredTextParser::END_STRUCT:
         return Role::Closes;
-    case StructuredTextLexer::NOT:
+    case StructuredTextParser::NOT:
         return Role::Prefix;
-    case StructuredTextLexer::MINUS:
-    case StructuredTextLexer::PLUS:
+    case StructuredTextParser::MINUS:
+    case StructuredTextParser::PLUS:
         return Role::Binary; // also a prefix when it follows an operator; see below
-    case StructuredTextLexer::REF_TO:
-    case StructuredTextLexer::POINTER:
-    case StructuredTextLexer::ARRAY:
+    case StructuredTextParser::REF_TO:
+    case StructuredTextParser::POINTER:
+    case StructuredTextParser::ARRAY:
         return Role::TypePrefix;
-    case StructuredTextLexer::OR:
-    case StructuredTextLexer::XOR:
-    case StructuredTextLexer::AND:
-    case StructuredTextLexer::AMPERSAND:
-    case StructuredTextLexer::EQUAL:
-    case StructuredTextLexer::NOT_EQUAL:
-    case StructuredTextLexer::LESS:
-    case StructuredTextLexer::GREATER:
-    case StructuredTextLexer::LESS_EQUAL:
-    case StructuredTextLexer::GREATER_EQUAL:
-    case StructuredTextLexer::STAR:
-    case StructuredTextLexer::SLASH:
-    case StructuredTextLexer::MOD:
-    case StructuredTextLexer::POWER:
-    case StructuredTextLexer::DOT:
-    case StructuredTextLexer::CARET:
+    case StructuredTextParser::OR:
+    case StructuredTextParser::XOR:
+    case StructuredTextParser::AND:
+    case StructuredTextParser::AMPERSAND:
+    case StructuredTextParser::EQUAL:
+    case StructuredTextParser::NOT_EQUAL:
+    case StructuredTextParser::LESS:
+    case StructuredTextParser::GREATER:
+    case StructuredTextParser::LESS_EQUAL:
+    case StructuredTextParser::GREATER_EQUAL:
+    case StructuredTextParser::STAR:
+    case StructuredTextParser::SLASH:
+    case StructuredTextParser::MOD:
+    case StructuredTextParser::POWER:
+    case StructuredTextParser::DOT:
+    case StructuredTextParser::CARET:
         return Role::Binary;
-    case StructuredTextLexer::SEMICOLON:
+    case StructuredTextParser::SEMICOLON:
         return Role::EndsStatement;
     default:
         return Role::Other;

@@ -1,14 +1,15 @@
 #include "eposp/compiler/parser.hpp"
 
-#include "StructuredTextLexer.h"
+#include "../utf8.hpp"
 #include "StructuredTextParser.h"
 #include "ast_builder.hpp"
+#include "input_stream.hpp"
+#include "lexer.hpp"
 #include "nesting_limit.hpp"
+#include "parse_tokens.hpp"
 #include "syntax_error_strategy.hpp"
 #include "token_range.hpp"
-#include "../utf8.hpp"
 
-#include <ANTLRInputStream.h>
 #include <BailErrorStrategy.h>
 #include <CommonTokenStream.h>
 #include <Exceptions.h>
@@ -22,36 +23,7 @@ namespace eposp::compiler {
 
 namespace {
 
-using generated::StructuredTextLexer;
 using generated::StructuredTextParser;
-
-// The runtime converts the text to UTF-32 into a string sized for the longest conversion, about
-// five times what it keeps; its spare capacity would stay allocated while the file is parsed.
-class InputStream : public antlr4::ANTLRInputStream {
-public:
-    explicit InputStream(const std::string& text) : ANTLRInputStream(text) {
-        _data.shrink_to_fit();
-    }
-
-    // A token's text (names, numbers, keywords: ASCII nearly always) is copied as it is; the
-    // runtime converts every text from UTF-32 through std::wstring_convert.
-    std::string getText(const antlr4::misc::Interval& interval) override {
-        if (interval.a < 0 || interval.b < interval.a ||
-            static_cast<std::size_t>(interval.b) >= _data.size()) {
-            return ANTLRInputStream::getText(interval);
-        }
-        std::string text;
-        text.reserve(static_cast<std::size_t>(interval.b - interval.a + 1));
-        for (ssize_t i = interval.a; i <= interval.b; ++i) {
-            const char32_t c = _data[static_cast<std::size_t>(i)];
-            if (c >= 0x80) {
-                return ANTLRInputStream::getText(interval);
-            }
-            text.push_back(static_cast<char>(c));
-        }
-        return text;
-    }
-};
 
 // The ANTLR runtime needs UTF-8. A file that is not, such as one exported from CODESYS with
 // a 'ü' in a comment, is read as Windows-1252, one character a byte (so columns stay true),
@@ -86,14 +58,14 @@ bool report_lexical_errors(antlr4::CommonTokenStream& tokens, FileId file,
     const std::vector<antlr4::Token*>& all = tokens.getTokens();
     for (std::size_t i = 0; i < all.size(); ++i) {
         const std::size_t type = all[i]->getType();
-        if (type == StructuredTextLexer::UNTERMINATED_STRING) {
+        if (type == StructuredTextParser::UNTERMINATED_STRING) {
             diagnostics.error(DiagnosticCode::E0102, token_range(file, *all[i]),
                               std::string("missing closing ") + all[i]->getText().front() +
                                   " at the end of this string");
             continue;
         }
-        if ((type == StructuredTextLexer::LEFT_PAREN || type == StructuredTextLexer::SLASH) &&
-            i + 1 < all.size() && all[i + 1]->getType() == StructuredTextLexer::STAR &&
+        if ((type == StructuredTextParser::LEFT_PAREN || type == StructuredTextParser::SLASH) &&
+            i + 1 < all.size() && all[i + 1]->getType() == StructuredTextParser::STAR &&
             all[i + 1]->getStartIndex() == all[i]->getStartIndex() + 1) {
             diagnostics.error(DiagnosticCode::E0103, token_range(file, *all[i], *all[i + 1]),
                               "comment opened with '" + all[i]->getText() + "*' is never closed");
@@ -150,12 +122,9 @@ std::optional<ast::CompilationUnit> parse_with_recovery(StructuredTextParser& pa
 
 } // namespace
 
-ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
+ast::CompilationUnit parse_tokens(antlr4::TokenSource& lexer, FileId file,
+                                  Diagnostics& diagnostics) {
     const std::size_t errors_before = diagnostics.error_count();
-    const std::string text = utf8_text(sources, file, diagnostics);
-    InputStream input(text);
-    StructuredTextLexer lexer(&input);
-    lexer.removeErrorListeners(); // INVALID_CHARACTER leaves the lexer nothing to report
     antlr4::CommonTokenStream tokens(&lexer);
     tokens.fill();
     if (!report_lexical_errors(tokens, file, diagnostics) ||
@@ -177,6 +146,13 @@ ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostic
         diagnostics.report(diagnostic);
     }
     return std::move(*unit);
+}
+
+ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
+    const std::string text = utf8_text(sources, file, diagnostics);
+    InputStream input(text);
+    Lexer lexer(input);
+    return parse_tokens(lexer, file, diagnostics);
 }
 
 } // namespace eposp::compiler

@@ -1,0 +1,44 @@
+#pragma once
+
+#include "input_stream.hpp"
+
+#include <CommonToken.h>
+#include <TokenSource.h>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace eposp::compiler {
+
+/// The lexer rules of StructuredText.g4, written by hand: the same token types, channels, texts,
+/// character indices, lines and columns as the lexer ANTLR generates from them
+/// (tests/compiler/parse/lexer_equivalence_test.cpp holds the two to that), at a fraction of the
+/// cost of the 4.9 runtime's, which looks each character's DFA edge up in a hash map under a
+/// lock. Like that lexer it never fails: a character no rule takes is an INVALID_CHARACTER token,
+/// and the parser reports malformed input.
+class Lexer : public antlr4::TokenSource {
+public:
+    explicit Lexer(InputStream& input);
+
+    std::unique_ptr<antlr4::Token> nextToken() override;
+    std::size_t getLine() const override { return line_; }
+    std::size_t getCharPositionInLine() override { return column_; }
+    antlr4::CharStream* getInputStream() override { return &input_; }
+    std::string getSourceName() override { return input_.getSourceName(); }
+    /// For the tokens the parser's error recovery makes up.
+    antlr4::TokenFactory<antlr4::CommonToken>* getTokenFactory() override;
+
+private:
+    void advance_to(std::size_t end);
+
+    InputStream& input_;
+    std::u32string_view text_;
+    std::pair<antlr4::TokenSource*, antlr4::CharStream*> source_;
+    std::size_t position_ = 0;
+    std::size_t line_ = 1;   // as ANTLR counts: lines from 1,
+    std::size_t column_ = 0; // columns from 0, in code points
+};
+
+} // namespace eposp::compiler

@@ -1,0 +1,396 @@
+// The hand-written lexer (compiler/src/parse/lexer.cpp) against the one ANTLR generates from the
+// grammar's lexer rules, its oracle: the same tokens (type, channel, text, start and stop index,
+// line, column) and, parsed on from each, the same AST and diagnostics, for every ST file of the
+// repository and of the benchmarks, and for inputs generated here from a fixed seed: random
+// bytes, truncations and mutations of the files, every keyword in mixed case, nested comments,
+// pragmas and every literal form of the grammar, whole and cut short.
+#include "StructuredTextLexer.h"
+#include "eposp/compiler/ast/ast_printer.hpp"
+#include "eposp/compiler/source_manager.hpp"
+#include "parse/input_stream.hpp"
+#include "parse/lexer.hpp"
+#include "parse/parse_tokens.hpp"
+#include "utf8.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace eposp::compiler {
+namespace {
+
+using generated::StructuredTextLexer;
+
+// Every token the source yields up to and including EOF, a line each.
+std::vector<std::string> tokens_of(antlr4::TokenSource& source) {
+    std::vector<std::string> lines;
+    for (;;) {
+        const std::unique_ptr<antlr4::Token> token = source.nextToken();
+        std::ostringstream line;
+        line << static_cast<long long>(token->getType()) << " channel " << token->getChannel()
+             << " [" << static_cast<long long>(token->getStartIndex()) << ".."
+             << static_cast<long long>(token->getStopIndex()) << "] " << token->getLine() << ':'
+             << token->getCharPositionInLine() << " '" << token->getText() << "'";
+        lines.push_back(line.str());
+        if (token->getType() == antlr4::Token::EOF) {
+            return lines;
+        }
+    }
+}
+
+// The AST and every diagnostic of the file parsed from the tokens of `lexer`.
+template <typename MakeLexer>
+std::string parsed_with(const std::string& text, MakeLexer make_lexer) {
+    SourceManager sources;
+    const FileId file = sources.add("input.st", text);
+    Diagnostics diagnostics;
+    InputStream input(text);
+    auto lexer = make_lexer(input);
+    const ast::CompilationUnit unit = parse_tokens(*lexer, file, diagnostics);
+    return ast::to_sexpr(unit) + "\n" + render(diagnostics, sources);
+}
+
+std::unique_ptr<antlr4::TokenSource> generated_lexer(InputStream& input) {
+    auto lexer = std::make_unique<StructuredTextLexer>(&input);
+    lexer->removeErrorListeners(); // as the parser used it: INVALID_CHARACTER catches all
+    return lexer;
+}
+
+std::unique_ptr<antlr4::TokenSource> hand_written_lexer(InputStream& input) {
+    return std::make_unique<Lexer>(input);
+}
+
+// `bytes` as the parser reads them: UTF-8 as it is, anything else as Windows-1252.
+std::string as_text(const std::string& bytes) {
+    for (std::size_t i = 0; i < bytes.size();) {
+        if (!utf8::decode(bytes, i)) {
+            return utf8::from_windows_1252(bytes);
+        }
+    }
+    return bytes;
+}
+
+// Both lexers on one input; `parse` also compares the ASTs and diagnostics parsed from them.
+void expect_same(const std::string& bytes, const std::string& name, bool parse = true) {
+    if (::testing::Test::HasFailure()) {
+        return; // the first difference of a test says enough
+    }
+    SCOPED_TRACE(name);
+    const std::string text = as_text(bytes);
+    InputStream generated_input(text);
+    InputStream hand_written_input(text);
+    const auto expected = tokens_of(*generated_lexer(generated_input));
+    const auto actual = tokens_of(*hand_written_lexer(hand_written_input));
+    ASSERT_EQ(expected, actual) << "input: " << text;
+    if (parse) {
+        ASSERT_EQ(parsed_with(text, generated_lexer), parsed_with(text, hand_written_lexer))
+            << "input: " << text;
+    }
+}
+
+std::string read_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::filesystem::path> st_files() {
+    std::vector<std::filesystem::path> files;
+    const std::filesystem::path roots[] = {std::filesystem::path(EPOSP_SOURCE_DIR) / "tests",
+                                           std::filesystem::path(EPOSP_SOURCE_DIR) / "examples",
+                                           EPOSP_BENCH_ST_DIR};
+    for (const auto& root : roots) {
+        if (!std::filesystem::is_directory(root)) {
+            continue; // the benchmarks' folder lies outside the repository
+        }
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+            if (entry.is_regular_file() && entry.path().extension() == ".st") {
+                files.push_back(entry.path());
+            }
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// The characters that make tokens differ: openers and closers of comments, pragmas and
+// strings, '$' escapes, '#' and the letters of literal prefixes, operators, line ends.
+constexpr std::string_view kInteresting =
+    "(*)/{}'\"$#%._-+:=<>^&[],;0123456789eEtTdDlLiIxX_ab\n\r\t ";
+
+std::string random_string(std::mt19937& random, std::string_view alphabet, std::size_t length) {
+    std::string text;
+    std::uniform_int_distribution<std::size_t> pick(0, alphabet.size() - 1);
+    for (std::size_t i = 0; i < length; ++i) {
+        text.push_back(alphabet[pick(random)]);
+    }
+    return text;
+}
+
+std::string mixed_case(std::mt19937& random, std::string word) {
+    for (char& c : word) {
+        if (random() % 2 == 0) {
+            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        }
+    }
+    return word;
+}
+
+TEST(LexerEquivalence, EveryStFileOfTheRepositoryAndTheBenchmarks) {
+    const auto files = st_files();
+    ASSERT_GE(files.size(), 60U);
+    for (const auto& file : files) {
+        expect_same(read_file(file), file.string());
+    }
+}
+
+TEST(LexerEquivalence, TruncatedAndMutatedFiles) {
+    std::mt19937 random(17);
+    for (const auto& file : st_files()) {
+        const std::string text = read_file(file);
+        if (text.empty()) {
+            continue;
+        }
+        std::uniform_int_distribution<std::size_t> position(0, text.size() - 1);
+        for (int i = 0; i < 6; ++i) {
+            const std::size_t cut = position(random);
+            expect_same(text.substr(0, cut), file.string() + " cut at " + std::to_string(cut));
+        }
+        for (int i = 0; i < 6; ++i) {
+            std::string mutated = text;
+            for (int change = 0; change < 4; ++change) {
+                const std::size_t at = position(random) % mutated.size();
+                const std::string piece = random_string(random, kInteresting, 1 + random() % 3);
+                switch (random() % 3) {
+                case 0:
+                    mutated.replace(at, piece.size(), piece);
+                    break;
+                case 1:
+                    mutated.insert(at, piece);
+                    break;
+                default:
+                    mutated.erase(at, piece.size());
+                    break;
+                }
+            }
+            expect_same(mutated, file.string() + " mutation " + std::to_string(i));
+        }
+    }
+}
+
+TEST(LexerEquivalence, RandomBytes) {
+    std::mt19937 random(61131);
+    std::uniform_int_distribution<int> byte(0, 255);
+    for (int i = 0; i < 2000; ++i) {
+        std::string bytes;
+        const std::size_t length = random() % 64;
+        for (std::size_t j = 0; j < length; ++j) {
+            bytes.push_back(static_cast<char>(byte(random)));
+        }
+        expect_same(bytes, "random bytes " + std::to_string(i));
+    }
+}
+
+TEST(LexerEquivalence, RandomTextOfTheCharactersThatMatter) {
+    std::mt19937 random(3);
+    for (int i = 0; i < 20000; ++i) {
+        const std::string text = random_string(random, kInteresting, random() % 40);
+        expect_same(text, "random text " + std::to_string(i), i % 10 == 0);
+    }
+}
+
+TEST(LexerEquivalence, EveryKeywordInMixedCase) {
+    std::mt19937 random(4);
+    InputStream empty("");
+    const antlr4::dfa::Vocabulary& vocabulary = StructuredTextLexer(&empty).getVocabulary();
+    const std::string after[] = {"", " ", "1", "_", "x", "#", "#1", "#x", "#'s'", "(", ";"};
+    for (std::size_t type = StructuredTextLexer::TYPE; type <= StructuredTextLexer::NULL_REFERENCE;
+         ++type) {
+        std::string word = vocabulary.getSymbolicName(type);
+        if (type == StructuredTextLexer::NULL_REFERENCE) {
+            word = "NULL";
+        }
+        for (const std::string& suffix : after) {
+            for (const std::string& spelling :
+                 {word, mixed_case(random, word), mixed_case(random, word)}) {
+                expect_same(spelling + suffix, spelling + suffix);
+                expect_same("x" + spelling + suffix, "x" + spelling + suffix, false);
+            }
+        }
+    }
+}
+
+TEST(LexerEquivalence, EveryShortTextOfCommentCharacters) {
+    // All texts of up to five characters after an opening "(*" or "/*", of both comments'
+    // characters: nesting, closing early, closing never.
+    const std::string alphabet = "(*)/x\n";
+    for (const std::string opening : {"(*", "/*"}) {
+        std::vector<std::string> texts{""};
+        for (std::size_t length = 0; length < 5; ++length) {
+            std::vector<std::string> longer;
+            for (const std::string& text : texts) {
+                for (const char c : alphabet) {
+                    longer.push_back(text + c);
+                }
+            }
+            for (const std::string& text : longer) {
+                expect_same(opening + text, opening + text, false);
+            }
+            texts = std::move(longer);
+        }
+    }
+}
+
+TEST(LexerEquivalence, NestedCommentsAndPragmas) {
+    std::mt19937 random(5);
+    const std::string pieces[] = {"(*", "*)", "/*", "*/",   "(", ")", "*", "/",  "//",  "{",
+                                  "}",  "x",  "\n", "\r\n", " ", "'", "$", "**", "*)*)"};
+    std::uniform_int_distribution<std::size_t> pick(0, std::size(pieces) - 1);
+    for (int i = 0; i < 4000; ++i) {
+        std::string text = random() % 2 == 0 ? "(*" : "/*";
+        const std::size_t count = random() % 14;
+        for (std::size_t j = 0; j < count; ++j) {
+            text += pieces[pick(random)];
+        }
+        expect_same(text + " x := 1;", "comment " + std::to_string(i), i % 8 == 0);
+    }
+    for (const std::string text :
+         {"{attribute 'hide'} x", "{ a\nb } y", "{ never closed", "{}", "{{}}", "x{y}z",
+          "(* a (* b *) c *) d", "(* a (* b *) c", "/* a /* b */ c */ d", "/* (* */ *)",
+          "(* /* *) */", "// line (* \n x", "//\r\n", "(*)", "(**)", "(***)", "/**/", "/*/"}) {
+        expect_same(text, text);
+    }
+}
+
+TEST(LexerEquivalence, EveryLiteralFormWholeAndCutShort) {
+    const std::string literals[] = {"0",
+                                    "42",
+                                    "1_000",
+                                    "16#FF",
+                                    "2#1010_1010",
+                                    "8#777",
+                                    "16#",
+                                    "1#",
+                                    "1.5",
+                                    "1.5E10",
+                                    "1.5e-3",
+                                    "1.5e+3",
+                                    "1e5",
+                                    "1E",
+                                    "1e+",
+                                    "1.",
+                                    "1..5",
+                                    "1.e5",
+                                    "3.14_15",
+                                    "INT#16#FF",
+                                    "INT#-5",
+                                    "INT#+5",
+                                    "INT#-",
+                                    "REAL#1.5",
+                                    "REAL#1.5e-3",
+                                    "REAL#1e3",
+                                    "LREAL#-1.0E+2",
+                                    "BOOL#TRUE",
+                                    "BOOL#1",
+                                    "STRING#'x'",
+                                    "WSTRING#\"x\"",
+                                    "STRING#'",
+                                    "Color#Red",
+                                    "Color#",
+                                    "_x#y",
+                                    "T#5s",
+                                    "t#1h2m3s4ms",
+                                    "TIME#-1.5h",
+                                    "T#+1d",
+                                    "LT#1d2h",
+                                    "LTIME#5us",
+                                    "T#",
+                                    "T#s",
+                                    "TIME#1_000ms",
+                                    "T#1.5.5",
+                                    "D#2020-01-01",
+                                    "DATE#2020-1-1",
+                                    "LD#2020-01-01",
+                                    "LDATE#1970-01-01",
+                                    "D#",
+                                    "TOD#12:00:00.5",
+                                    "TIME_OF_DAY#1:2:3",
+                                    "LTOD#23:59:59.999",
+                                    "LTIME_OF_DAY#00:00",
+                                    "TOD#",
+                                    "DT#2020-01-01-12:00:00",
+                                    "DATE_AND_TIME#2020-01-01-0:0",
+                                    "LDT#1970-01-01-00:00:00.1",
+                                    "LDATE_AND_TIME#2000-2-2-2:2:2",
+                                    "DT#x",
+                                    "'a$'b'",
+                                    "'$N$L$R$T$P$$$''",
+                                    "'$41'",
+                                    "'abc",
+                                    "'$",
+                                    "'",
+                                    "''",
+                                    "\"wide$\"\"",
+                                    "\"$0041\"",
+                                    "\"open",
+                                    "\"",
+                                    "'a\"b'",
+                                    "\"a'b\"",
+                                    "'line\nbreak'",
+                                    "'dollar$\nbreak'",
+                                    "%IX1.2",
+                                    "%QW7",
+                                    "%MD3.4.5",
+                                    "%I*",
+                                    "%IX",
+                                    "%X1",
+                                    "%i1",
+                                    "%QB0.",
+                                    "%ML1..2",
+                                    "%",
+                                    "TRUE",
+                                    "FALSE",
+                                    "NULL",
+                                    "x.1",
+                                    "a.b.c",
+                                    "a..b",
+                                    "a:=b",
+                                    "a=>b",
+                                    "a<=b",
+                                    "a>=b",
+                                    "a<>b",
+                                    "a**b",
+                                    "a^",
+                                    "a&b",
+                                    "ä",
+                                    "x€y",
+                                    "\x7f",
+                                    "#",
+                                    "$",
+                                    "!",
+                                    "?",
+                                    "@",
+                                    "~",
+                                    "`",
+                                    "\\",
+                                    "|",
+                                    "\f",
+                                    "\v",
+                                    std::string("\0x", 2)};
+    for (const std::string& literal : literals) {
+        for (std::size_t length = 0; length <= literal.size(); ++length) {
+            const std::string cut = literal.substr(0, length);
+            for (const std::string& around : {cut, "x := " + cut + ";", cut + cut, cut + "#1"}) {
+                expect_same(around, around, length == literal.size());
+            }
+        }
+    }
+}
+
+} // namespace
+} // namespace eposp::compiler
