@@ -26,9 +26,6 @@ struct Destination {
     const sema::Type* type = nullptr;
 };
 
-/// Whether `name` is one of the time and date functions of table 30 (time_functions.cpp).
-bool is_time_function(std::string_view name);
-
 /// Whether `argument` is EN or ENO, which every call takes besides its parameters
 /// (pou_enable.cpp).
 bool is_enable_argument(const ast::Argument& argument);

@@ -1,15 +1,15 @@
 // The selection functions of IEC 61131-3 ed. 3, 6.6.2.5.9 (table 32): MOVE, SEL, MAX, MIN,
 // LIMIT and MUX, on every elementary type; strings compare lexicographically (6.6.2.5.10).
 
+#include "eposp/vm/stdlib/manifest.hpp"
 #include "pou_generator.hpp"
-
-#include <fmt/format.h>
 
 namespace eposp::compiler::codegen {
 
 using E = ast::ElementaryType;
 using vm::Opcode;
 using vm::Operand;
+using vm::stdlib::Family;
 
 namespace {
 
@@ -47,21 +47,18 @@ void PouGenerator::jump_if_at_most(const Value& a, const Value& b, vm::Label tar
 
 std::optional<Value> PouGenerator::selection(const std::string& name, const Arguments& arguments,
                                              const sema::Type* hint, const Destination* dest,
-                                             const SourceRange& range) {
-    const std::size_t first = name == "SEL" || name == "MUX" ? 1 : 0;
-    const std::size_t minimum = name == "MOVE" ? 1 : name == "LIMIT" ? 3 : 2;
-    if (arguments.size() < minimum + first || (name == "MOVE" && arguments.size() != 1) ||
-        (name == "LIMIT" && arguments.size() != 3) || (name == "SEL" && arguments.size() != 3)) {
-        error(DiagnosticCode::E0306, range, fmt::format("wrong number of arguments for {}", name));
-        return std::nullopt;
-    }
-    if (name == "MOVE") {
+                                             const SourceRange& /*range*/) {
+    // The inputs' count is the manifest's, checked by the typing stage.
+    const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
+    const Family family = function.family;
+    const std::size_t first = family == Family::Select || family == Family::Multiplex ? 1 : 0;
+    if (family == Family::Move) {
         return eval(*arguments[0]->value, hint, dest);
     }
     std::optional<Value> selector;
-    if (name == "SEL") {
+    if (family == Family::Select) {
         selector = value_as(*arguments[0]->value, types_.elementary(E::Bool));
-    } else if (name == "MUX") {
+    } else if (family == Family::Multiplex) {
         selector = as_dint(*arguments[0]->value);
     }
     if (first == 1 && !selector) {
@@ -81,8 +78,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
             }
             const sema::Type* both = common_type(common, *values[i]->type);
             if (both == nullptr) {
-                error(DiagnosticCode::E0303, arguments[i]->range,
-                      fmt::format("{} mixes {} and {}", name, common->name, values[i]->type->name));
+                program_.refused_by_checks(DiagnosticCode::E0303); // the typing stage's
                 return std::nullopt;
             }
             common = both;
@@ -92,11 +88,9 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
         values[i] = convert(*values[i], *common, nullptr);
     }
     const sema::Type& type = *common;
-    if (name != "SEL" && name != "MUX" &&
-        ((!sema::is_scalar(type) && type.kind != sema::TypeKind::String) ||
-         type.kind == sema::TypeKind::Reference)) {
-        error(DiagnosticCode::E0305, range,
-              fmt::format("{} needs values of an elementary type, not {}", name, type.name));
+    if (first == 0 && ((!sema::is_scalar(type) && type.kind != sema::TypeKind::String) ||
+                       type.kind == sema::TypeKind::Reference)) {
+        program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
         return std::nullopt;
     }
     // The destination when no argument lives there (so none is overwritten before it is
@@ -107,14 +101,14 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
     }
     const Value result{dest_free ? dest->operand : temp(type), &type};
     const vm::Label done = builder_.label();
-    if (name == "SEL") {
+    if (family == Family::Select) {
         const vm::Label one = builder_.label();
         builder_.jump(Opcode::Jt, one, selector->operand);
         move(result.operand, type, *values[1]);
         builder_.jump(Opcode::Jmp, done);
         bind(one);
         move(result.operand, type, *values[2]);
-    } else if (name == "MUX") {
+    } else if (family == Family::Multiplex) {
         // 6.6.2.5.9: K selects IN0..INn; out of range gives IN0 here.
         move(result.operand, type, *values[1]);
         for (std::size_t i = 2; i < arguments.size(); ++i) {
@@ -126,7 +120,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
             builder_.jump(Opcode::Jmp, done);
             bind(next);
         }
-    } else if (name == "LIMIT") {
+    } else if (family == Family::Limit) {
         const Value& low = *values[0];
         const Value& in = *values[1];
         const Value& high = *values[2];
@@ -140,7 +134,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
         move(result.operand, type, high);
     } else {
         move(result.operand, type, *values[0]);
-        const bool maximum = name == "MAX";
+        const bool maximum = function.operation == vm::stdlib::Operation::Maximum;
         for (std::size_t i = 1; i < arguments.size(); ++i) {
             const vm::Label keep = builder_.label();
             jump_if_at_most(maximum ? *values[i] : result, maximum ? result : *values[i], keep);

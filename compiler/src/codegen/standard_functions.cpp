@@ -4,9 +4,9 @@
 
 #include "eposp/compiler/sema/standard_library.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
+#include "eposp/vm/stdlib/manifest.hpp"
 #include "pou_generator.hpp"
 
-#include <array>
 #include <fmt/format.h>
 
 namespace eposp::compiler::codegen {
@@ -15,11 +15,44 @@ using E = ast::ElementaryType;
 using vm::Opcode;
 using vm::Operand;
 using S = vm::Scalar;
+using vm::stdlib::Family;
+using vm::stdlib::Operation;
 
 namespace {
 
-bool one_of(const std::string& name, std::initializer_list<std::string_view> names) {
-    return std::find(names.begin(), names.end(), name) != names.end();
+/// The operator a standard function of the arithmetic, logic or comparison family applies.
+ast::BinaryOperator binary_operator(Operation operation) {
+    using Op = ast::BinaryOperator;
+    switch (operation) {
+    case Operation::Add:
+        return Op::Add;
+    case Operation::Multiply:
+        return Op::Multiply;
+    case Operation::Subtract:
+        return Op::Subtract;
+    case Operation::Divide:
+        return Op::Divide;
+    case Operation::Modulo:
+        return Op::Modulo;
+    case Operation::And:
+        return Op::And;
+    case Operation::Or:
+        return Op::Or;
+    case Operation::Xor:
+        return Op::Xor;
+    case Operation::Greater:
+        return Op::Greater;
+    case Operation::GreaterEqual:
+        return Op::GreaterEqual;
+    case Operation::Equal:
+        return Op::Equal;
+    case Operation::LessEqual:
+        return Op::LessEqual;
+    case Operation::Less:
+        return Op::Less;
+    default:
+        return Op::NotEqual;
+    }
 }
 
 /// The spelling of a type in the names of the VM's natives (`TOD_TO_STRING`).
@@ -63,7 +96,7 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
             continue;
         }
         if (argument.kind == ast::Argument::Kind::Output) {
-            error(DiagnosticCode::E0210, argument.range, fmt::format("{} has no outputs", name));
+            program_.refused_by_checks(DiagnosticCode::E0210); // the typing stage's
             return std::nullopt;
         }
         written.push_back(&argument);
@@ -76,32 +109,38 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
     if (sema::is_conversion_function(name)) {
         return conversion(name, arguments, dest, range);
     }
-    if (one_of(name,
-               {"LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND"})) {
+    const vm::stdlib::StandardFunction* function = vm::stdlib::find_standard_function(name);
+    if (function == nullptr || arguments.size() < function->min_inputs ||
+        arguments.size() > function->max_inputs) {
+        program_.refused_by_checks(DiagnosticCode::E0306); // the typing stage's
+        return std::nullopt;
+    }
+    switch (function->family) {
+    case Family::Text:
         return string_function(name, arguments, dest, range);
-    }
-    if (name == "LOWER_BOUND" || name == "UPPER_BOUND") {
+    case Family::Bound:
         return array_bound(name, node, dest, range);
-    }
-    if (name == "ADR" || name == "SIZEOF") {
+    case Family::Address:
+    case Family::Size:
         return address_or_size(name, arguments, range);
-    }
-    if (is_time_function(name)) {
+    case Family::Time:
         return time_function(name, arguments, dest, range);
-    }
-    if (one_of(name, {"SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE"})) {
+    case Family::Select:
+    case Family::Extreme:
+    case Family::Limit:
+    case Family::Multiplex:
+    case Family::Move:
         return selection(name, arguments, hint, dest, range);
+    default:
+        return numeric_function(name, arguments, hint, dest, range);
     }
-    return numeric_function(name, arguments, hint, dest, range);
 }
 
 std::optional<Value> PouGenerator::address_or_size(const std::string& name,
                                                    const Arguments& arguments,
-                                                   const SourceRange& range) {
-    if (arguments.size() != 1) {
-        error(DiagnosticCode::E0306, range, fmt::format("{} takes one argument", name));
-        return std::nullopt;
-    }
+                                                   const SourceRange& /*range*/) {
+    const bool address =
+        vm::stdlib::find_standard_function(name)->family == Family::Address; // else SIZEOF
     const ast::Expression& argument = *arguments.front()->value;
     const sema::Type* type = nullptr;
     std::optional<Place> target;
@@ -111,14 +150,14 @@ std::optional<Value> PouGenerator::address_or_size(const std::string& name,
             type = types_.named(*symbol);
         }
     }
-    if (type == nullptr || name == "ADR") {
+    if (type == nullptr || address) {
         target = place(argument);
         if (!target) {
             return std::nullopt;
         }
         type = target->type;
     }
-    if (name == "ADR") {
+    if (address) {
         // As in CODESYS, an address goes into a POINTER TO of any type (the VM checks every
         // access through it); REF() is the typed, IEC way.
         return Value{address_of(*target), &types_.reference(nullptr)};
@@ -141,8 +180,7 @@ std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
         return std::nullopt;
     }
     if (!sema::is_integer(*value->type)) {
-        error(DiagnosticCode::E0305, expression.range,
-              fmt::format("an integer is needed here, not {}", value->type->name));
+        program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
         return std::nullopt;
     }
     if (wide_index(*value->type, true)) {
@@ -281,33 +319,11 @@ std::optional<Value> PouGenerator::conversion(const std::string& name, const Arg
 std::optional<Value> PouGenerator::string_function(const std::string& name,
                                                    const Arguments& arguments,
                                                    const Destination* dest,
-                                                   const SourceRange& range) {
+                                                   const SourceRange& /*range*/) {
     // Text arguments, then positions and lengths, in the order of the native's parameters.
-    struct Shape {
-        std::string_view name;
-        int texts;
-        int integers;
-        bool returns_text;
-    };
-    static constexpr std::array kShapes{
-        Shape{"LEN", 1, 0, false},   Shape{"FIND", 2, 0, false},   Shape{"LEFT", 1, 1, true},
-        Shape{"RIGHT", 1, 1, true},  Shape{"MID", 1, 2, true},     Shape{"INSERT", 2, 1, true},
-        Shape{"DELETE", 1, 2, true}, Shape{"REPLACE", 2, 2, true}, Shape{"CONCAT", -1, 0, true},
-    };
-    const Shape shape = *std::find_if(kShapes.begin(), kShapes.end(),
-                                      [&](const Shape& s) { return s.name == name; });
-    const std::size_t texts =
-        shape.texts < 0 ? arguments.size() : static_cast<std::size_t>(shape.texts);
-    if ((shape.texts < 0 && arguments.size() < 2) ||
-        (shape.texts >= 0 &&
-         arguments.size() != texts + static_cast<std::size_t>(shape.integers))) {
-        error(DiagnosticCode::E0306, range,
-              fmt::format("{} takes {} arguments", name,
-                          shape.texts < 0
-                              ? "two or more"
-                              : std::to_string(texts + static_cast<std::size_t>(shape.integers))));
-        return std::nullopt;
-    }
+    const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
+    const bool folded = function.max_inputs == vm::stdlib::kExtensible; // CONCAT
+    const std::size_t texts = folded ? arguments.size() : function.texts;
     // IEC 61131-3 table 43 on STRING and on WSTRING alike: the first text says which, the
     // others must agree; the WSTRING natives carry a suffix (LEFT_WSTRING).
     std::vector<Value> values;
@@ -325,52 +341,41 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
                 wide = value->type->wide;
             }
             if (!is_string || value->type->wide != wide) {
-                error(DiagnosticCode::E0305, expression.range,
-                      fmt::format("{} needs a {} here, not {}", name,
-                                  i == 0 ? "STRING or WSTRING"
-                                  : wide ? "WSTRING"
-                                         : "STRING",
-                                  value->type->name));
+                program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
                 return std::nullopt;
             }
-            capacity = shape.texts < 0 || name == "INSERT" || name == "REPLACE"
-                           ? capacity + value->type->capacity
-                           : std::max(capacity, value->type->capacity);
+            capacity =
+                vm::stdlib::text_capacity(function.text_result, capacity, value->type->capacity);
         }
         values.push_back(*value);
     }
-    const std::string native = wide ? name + "_WSTRING" : name;
-    if (!shape.returns_text) {
-        const vm::NativeSignature signature{true, S::I32, std::vector<S>(texts, S::Ptr)};
-        call_native(native, signature, values);
+    const auto native = vm::stdlib::native_binding(function, wide ? vm::stdlib::Variant::Wide
+                                                                  : vm::stdlib::Variant::Base);
+    if (function.text_result == vm::stdlib::TextResult::Count) {
+        call_native(native.name, native.signature, values);
         // LEN and FIND are INT, as in CODESYS; the natives count in DINT.
-        return native_result(signature, types_.elementary(E::Int), dest);
+        return native_result(native.signature, types_.elementary(E::Int), dest);
     }
-    const sema::Type& natural = types_.string(std::min<std::uint32_t>(capacity, 0xFFFF), wide);
+    const sema::Type& natural = types_.string(capacity, wide);
     const bool into_dest =
         dest != nullptr && dest->type->kind == sema::TypeKind::String && dest->type->wide == wide;
     Value result{into_dest ? dest->operand : temp(natural), into_dest ? dest->type : &natural};
-    if (shape.texts < 0) {
+    if (folded) {
         // CONCAT is binary in the VM: folded left to right into the result (vm/README).
         for (std::size_t i = 2; into_dest && i < values.size(); ++i) {
             if (values[i].operand.raw == result.operand.raw) {
                 result = Value{temp(natural), &natural};
             }
         }
-        const vm::NativeSignature signature{false, S::Bool, {S::Ptr, S::Ptr, S::Ptr}};
-        call_native(native, signature, {result, values[0], values[1]});
+        call_native(native.name, native.signature, {result, values[0], values[1]});
         for (std::size_t i = 2; i < values.size(); ++i) {
-            call_native(native, signature, {result, result, values[i]});
+            call_native(native.name, native.signature, {result, result, values[i]});
         }
         return result;
     }
-    std::vector<S> parameters{S::Ptr};
     std::vector<Value> all{result};
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        parameters.push_back(i < texts ? S::Ptr : S::I32);
-        all.push_back(values[i]);
-    }
-    call_native(native, {false, S::Bool, parameters}, all);
+    all.insert(all.end(), values.begin(), values.end());
+    call_native(native.name, native.signature, all);
     return result;
 }
 
@@ -378,29 +383,12 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                                                     const Arguments& arguments,
                                                     const sema::Type* hint, const Destination* dest,
                                                     const SourceRange& range) {
-    auto arity = [&](std::size_t n) {
-        if (arguments.size() != n) {
-            error(DiagnosticCode::E0306, range,
-                  fmt::format("{} takes {} argument{}", name, n, n == 1 ? "" : "s"));
-            return false;
-        }
-        return true;
-    };
+    const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
     using Op = ast::BinaryOperator;
-    static const std::vector<std::pair<std::string_view, Op>> kOperators{
-        {"ADD", Op::Add},    {"MUL", Op::Multiply},    {"SUB", Op::Subtract}, {"DIV", Op::Divide},
-        {"MOD", Op::Modulo}, {"AND", Op::And},         {"OR", Op::Or},        {"XOR", Op::Xor},
-        {"GT", Op::Greater}, {"GE", Op::GreaterEqual}, {"EQ", Op::Equal},     {"LE", Op::LessEqual},
-        {"LT", Op::Less},    {"NE", Op::NotEqual}};
-    for (const auto& [candidate, op] : kOperators) {
-        if (candidate != name) {
-            continue;
-        }
-        if (arguments.size() < 2) {
-            error(DiagnosticCode::E0306, range,
-                  fmt::format("{} takes two or more arguments", name));
-            return std::nullopt;
-        }
+    const Family family = function.family;
+    if (family == Family::Arithmetic || family == Family::Comparison ||
+        (family == Family::Logic && function.operation != Operation::Not)) {
+        const Op op = binary_operator(function.operation);
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
         // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is
         // a > b AND b > c; the other extensible functions fold left to right.
@@ -430,10 +418,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         }
         return result;
     }
-    if (name == "NOT") {
-        if (!arity(1)) {
-            return std::nullopt;
-        }
+    if (family == Family::Logic) { // NOT
         const auto value = eval(*arguments[0]->value, hint);
         if (!value) {
             return std::nullopt;
@@ -444,16 +429,12 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         } else if (sema::is_bit_string(*value->type) || sema::is_integer(*value->type)) {
             emit(op_width("Not", *value->type), result, value->operand);
         } else {
-            error(DiagnosticCode::E0304, range,
-                  fmt::format("NOT needs a BOOL or bit string, not {}", value->type->name));
+            program_.refused_by_checks(DiagnosticCode::E0304); // the typing stage's
             return std::nullopt;
         }
         return Value{result, value->type};
     }
-    if (one_of(name, {"SHL", "SHR", "ROL", "ROR"})) {
-        if (!arity(2)) {
-            return std::nullopt;
-        }
+    if (family == Family::Shift) {
         const auto value = eval(*arguments[0]->value, hint);
         const sema::Type& udint = types_.elementary(E::Udint);
         // An untyped literal count is a UDINT where it fits one, else of its own value's type.
@@ -467,20 +448,17 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         if (!count) {
             return std::nullopt;
         }
-        if (!sema::is_bit_string(*value->type) && !sema::is_integer(*value->type)) {
-            error(DiagnosticCode::E0305, range,
-                  fmt::format("{} needs a bit string, not {}", name, value->type->name));
-            return std::nullopt;
-        }
-        if (!sema::is_integer(*count->type)) {
-            error(DiagnosticCode::E0305, arguments[1]->range, "the shift count must be an integer");
+        if ((!sema::is_bit_string(*value->type) && !sema::is_integer(*value->type)) ||
+            !sema::is_integer(*count->type)) {
+            program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
             return std::nullopt;
         }
         // A count is taken as unsigned (a negative one as its two's complement): SHL and SHR
         // by one of at least the width give 0, ROL and ROR rotate by it modulo the width. The
         // VM's count is a UDINT: cut to 32 bits, a 64-bit count keeps its remainder modulo
         // every width (a divisor of 2^32), but a shift needs one beyond 32 bits kept beyond.
-        const bool shift = name == "SHL" || name == "SHR";
+        const bool shift = function.operation == Operation::ShiftLeft ||
+                           function.operation == Operation::ShiftRight;
         const vm::Scalar wide = sema::scalar_of(*count->type);
         if (shift && (wide == vm::Scalar::I64 || wide == vm::Scalar::U64)) {
             // Beyond UDINT's range, UDINT's maximum: as far beyond every width.
@@ -495,22 +473,19 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         } else {
             count = explicit_convert(*count, udint, nullptr, range);
         }
-        const std::string family = name == "SHL"   ? "Shl"
-                                   : name == "SHR" ? "Shr"
-                                   : name == "ROL" ? "Rol"
-                                                   : "Ror";
+        const char* opcode = function.operation == Operation::ShiftLeft    ? "Shl"
+                             : function.operation == Operation::ShiftRight ? "Shr"
+                             : function.operation == Operation::RotateLeft ? "Rol"
+                                                                           : "Ror";
         const Operand result = result_operand(*value->type, dest);
-        emit(op_width(family, *value->type), result, value->operand, count->operand);
+        emit(op_width(opcode, *value->type), result, value->operand, count->operand);
         return Value{result, value->type};
     }
-    if (name == "TRUNC") {
-        if (!arity(1)) {
-            return std::nullopt;
-        }
+    if (family == Family::Truncate) {
         const auto value = eval(*arguments[0]->value, &types_.elementary(E::Lreal));
         if (!value || !sema::is_real(*value->type)) {
             if (value) {
-                error(DiagnosticCode::E0305, range, "TRUNC needs a REAL or LREAL");
+                program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
             }
             return std::nullopt;
         }
@@ -523,15 +498,11 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             explicit_convert(Value{wide, &lint}, types_.elementary(E::Lreal), nullptr, range);
         return real ? explicit_convert(*real, types_.elementary(E::Dint), dest, range) : real;
     }
-    if (name == "ABS") {
-        if (!arity(1)) {
-            return std::nullopt;
-        }
+    if (family == Family::Absolute) {
         const auto value = eval(*arguments[0]->value, hint);
         if (!value || !sema::is_numeric(*value->type)) {
             if (value) {
-                error(DiagnosticCode::E0305, range,
-                      fmt::format("ABS needs a number, not {}", value->type->name));
+                program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
             }
             return std::nullopt;
         }
@@ -544,23 +515,13 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         return Value{result, value->type};
     }
     // The real functions: integer arguments are converted to the real type first.
-    const bool two = name == "ATAN2" || name == "EXPT";
-    if (!one_of(name, {"SQRT", "LN", "LOG", "EXP", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN",
-                       "ATAN2", "EXPT"})) {
-        error(DiagnosticCode::E0504, range,
-              fmt::format("the standard function {} is not supported yet", name));
-        return std::nullopt;
-    }
-    if (!arity(two ? 2 : 1)) {
-        return std::nullopt;
-    }
+    const bool two = function.max_inputs == 2;
     const sema::Type* real_hint = hint != nullptr && sema::is_real(*hint) ? hint : nullptr;
     auto first =
         eval(*arguments[0]->value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
     if (!first || !sema::is_numeric(*first->type)) {
         if (first) {
-            error(DiagnosticCode::E0305, range,
-                  fmt::format("{} needs a number, not {}", name, first->type->name));
+            program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
         }
         return std::nullopt;
     }
@@ -572,19 +533,23 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     if (two) {
         auto second = eval(*arguments[1]->value, &real);
         if (!second || !sema::is_numeric(*second->type)) {
+            if (second) {
+                program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
+            }
             return std::nullopt;
         }
         values.push_back(*explicit_convert(*second, real, nullptr, range));
     }
-    if (name == "SQRT") {
+    if (vm::stdlib::implementation(function) == vm::stdlib::Implementation::Inline) { // SQRT
         const Operand result = result_operand(real, dest);
         emit(op("Sqrt", real), result, values[0].operand);
         return Value{result, &real};
     }
-    const S scalar = sema::scalar_of(real);
-    const vm::NativeSignature signature{true, scalar, std::vector<S>(values.size(), scalar)};
-    call_native(name + (scalar == S::F32 ? "_REAL" : "_LREAL"), signature, values);
-    return native_result(signature, real, dest);
+    const auto native = vm::stdlib::native_binding(function, sema::scalar_of(real) == S::F32
+                                                                 ? vm::stdlib::Variant::Base
+                                                                 : vm::stdlib::Variant::Wide);
+    call_native(native.name, native.signature, values);
+    return native_result(native.signature, real, dest);
 }
 
 } // namespace eposp::compiler::codegen

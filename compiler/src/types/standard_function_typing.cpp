@@ -1,59 +1,23 @@
-// The standard functions of IEC 61131-3 ed. 3, tables 22-36, typed by their ANY_* signatures.
+// The standard functions of IEC 61131-3 ed. 3, tables 22-36, typed by the ANY_* signature of their
+// family in the manifest (vm/stdlib/manifest.hpp).
 
 #include "eposp/compiler/sema/symbol.hpp"
+#include "eposp/vm/stdlib/manifest.hpp"
 #include "expression_typer.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
-#include <map>
-#include <optional>
-#include <set>
 
 namespace eposp::compiler::types {
 
 namespace {
 
-const std::set<std::string> kReal1 = {"SQRT", "LN",  "LOG",  "EXP",  "SIN",
-                                      "COS",  "TAN", "ASIN", "ACOS", "ATAN"};
-const std::set<std::string> kArithmetic = {"ADD", "MUL", "SUB", "DIV", "MOD"};
-const std::set<std::string> kComparison = {"GT", "GE", "EQ", "LE", "LT", "NE"};
-const std::set<std::string> kBitwise = {"AND", "OR", "XOR"};
-const std::set<std::string> kShift = {"SHL", "SHR", "ROL", "ROR"};
+using vm::stdlib::Family;
 
-/// A time function's first input and second input (none: any number).
-std::optional<std::pair<ast::ElementaryType, std::optional<ast::ElementaryType>>>
-time_function(const std::string& name) {
-    using E = ast::ElementaryType;
-    static const std::map<std::string, std::pair<E, std::optional<E>>> functions = {
-        {"ADD_TIME", {E::Time, E::Time}},
-        {"SUB_TIME", {E::Time, E::Time}},
-        {"MUL_TIME", {E::Time, std::nullopt}},
-        {"DIV_TIME", {E::Time, std::nullopt}},
-        {"ADD_TOD_TIME", {E::TimeOfDay, E::Time}},
-        {"SUB_TOD_TIME", {E::TimeOfDay, E::Time}},
-        {"ADD_DT_TIME", {E::DateAndTime, E::Time}},
-        {"SUB_DT_TIME", {E::DateAndTime, E::Time}},
-        {"SUB_DATE_DATE", {E::Date, E::Date}},
-        {"SUB_TOD_TOD", {E::TimeOfDay, E::TimeOfDay}},
-        {"SUB_DT_DT", {E::DateAndTime, E::DateAndTime}},
-        {"CONCAT_DATE_TOD", {E::Date, E::TimeOfDay}},
-    };
-    const auto found = functions.find(name);
-    if (found == functions.end()) {
-        return std::nullopt;
-    }
-    return found->second;
-}
-
-ast::ElementaryType time_result(const std::string& name) {
-    using E = ast::ElementaryType;
-    if (name == "CONCAT_DATE_TOD" || name == "ADD_DT_TIME" || name == "SUB_DT_TIME") {
-        return E::DateAndTime;
-    }
-    if (name == "ADD_TOD_TIME" || name == "SUB_TOD_TIME") {
-        return E::TimeOfDay;
-    }
-    return E::Time;
+/// The elementary type of the manifest's `type` (vm::NativeType lists them in
+/// ast::ElementaryType's order, codegen/native_function.cpp).
+ast::ElementaryType elementary_of(vm::NativeType type) {
+    return static_cast<ast::ElementaryType>(type);
 }
 
 } // namespace
@@ -62,7 +26,19 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
                                                  const ast::CallExpression& node,
                                                  const std::string& name,
                                                  const sema::Type* expected) {
+    const vm::stdlib::StandardFunction* function = vm::stdlib::find_standard_function(name);
+    if (function == nullptr) {
+        return fail(DiagnosticCode::E0504, expression.range,
+                    fmt::format("the typing stage does not know {} yet", name));
+    }
     inputs(node); // EN and ENO
+    for (const ast::Argument& argument : node.arguments) {
+        if (argument.kind == ast::Argument::Kind::Output && argument.name &&
+            sema::fold_case(argument.name->name) != "ENO") {
+            return fail(DiagnosticCode::E0210, argument.range,
+                        fmt::format("{} has no outputs", name));
+        }
+    }
     std::vector<const ast::Expression*> values;
     const auto arguments = standard_arguments(name, node);
     for (const ast::Argument& argument : node.arguments) {
@@ -124,109 +100,114 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
         return type;
     };
     CallTarget target{.kind = CallKind::StandardFunction, .name = name};
+    if (!count(function->min_inputs, function->max_inputs)) {
+        return nullptr;
+    }
     const sema::Type* result = nullptr;
-    if (name == "ABS" || name == "MOVE" || kReal1.contains(name)) {
-        if (!count(1, 1)) {
-            return nullptr;
+    const Family family = function->family;
+    switch (family) {
+    case Family::Absolute:
+    case Family::Move:
+    case Family::Real:
+        if (family != Family::Real || function->max_inputs == 1) {
+            const bool real = family == Family::Real;
+            const sema::Type* operand =
+                type(*values[0], real && (expected == nullptr || !sema::is_real(*expected))
+                                     ? &elementary(E::Lreal)
+                                     : expected);
+            if (operand == nullptr) {
+                return nullptr;
+            }
+            operand = &program_.types().unranged(*operand);
+            if (real && !sema::is_real(*operand)) {
+                return fail(DiagnosticCode::E0305, range,
+                            fmt::format("{} needs a REAL or LREAL, not {}", name, operand->name));
+            }
+            if (family == Family::Absolute && !sema::is_numeric(*operand)) {
+                return fail(DiagnosticCode::E0305, range,
+                            fmt::format("ABS needs a number, not {}", operand->name));
+            }
+            target.operand = result = operand;
+            break;
         }
-        const bool real = kReal1.contains(name);
-        const sema::Type* operand =
-            type(*values[0], real && (expected == nullptr || !sema::is_real(*expected))
-                                 ? &elementary(E::Lreal)
-                                 : expected);
-        if (operand == nullptr) {
-            return nullptr;
-        }
-        operand = &program_.types().unranged(*operand);
-        if (real && !sema::is_real(*operand)) {
-            return fail(DiagnosticCode::E0305, range,
-                        fmt::format("{} needs a REAL or LREAL, not {}", name, operand->name));
-        }
-        if (name == "ABS" && !sema::is_numeric(*operand)) {
-            return fail(DiagnosticCode::E0305, range,
-                        fmt::format("ABS needs a number, not {}", operand->name));
-        }
-        target.operand = result = operand;
-    } else if (name == "ATAN2" || name == "EXPT") {
-        if (!count(2, 2)) {
-            return nullptr;
-        }
+        [[fallthrough]];
+    case Family::Power: {
         const sema::Type* real =
             expected != nullptr && sema::is_real(*expected) ? expected : &elementary(E::Lreal);
         const sema::Type* base =
-            name == "ATAN2" ? unify(values, real, range) : type(*values[0], real);
-        if (name == "EXPT") {
-            type(*values[1], nullptr);
+            family == Family::Real ? unify(values, real, range) : type(*values[0], real);
+        if (family == Family::Power) {
+            const sema::Type* exponent = type(*values[1], nullptr);
+            if (exponent != nullptr && !sema::is_numeric(program_.types().unranged(*exponent))) {
+                return fail(DiagnosticCode::E0305, values[1]->range,
+                            fmt::format("{} needs a number here, not {}", name, exponent->name));
+            }
         }
         if (base == nullptr) {
             return nullptr;
         }
         target.operand = result = sema::is_real(*base) ? base : &elementary(E::Lreal);
-    } else if (kArithmetic.contains(name) || kBitwise.contains(name) || name == "NOT" ||
-               name == "MAX" || name == "MIN") {
-        // SUB, DIV and MOD take two inputs, NOT one; the others are extensible (table 24).
-        const std::size_t low = name == "NOT" ? 1 : 2;
-        const bool extensible = name != "NOT" && name != "SUB" && name != "DIV" && name != "MOD";
-        if (!count(low, extensible ? 64 : low)) {
-            return nullptr;
-        }
+        break;
+    }
+    case Family::Arithmetic:
+    case Family::Logic:
+    case Family::Extreme:
+    case Family::Limit:
         result = unify(values, expected, range);
-        if (result != nullptr && (kArithmetic.contains(name)) && !sema::is_numeric(*result) &&
+        // MAX, MIN and LIMIT compare: elementary values or strings (table 28).
+        if (result != nullptr && (family == Family::Extreme || family == Family::Limit) &&
+            ((!sema::is_scalar(*result) && result->kind != sema::TypeKind::String) ||
+             result->kind == sema::TypeKind::Reference)) {
+            return fail(
+                DiagnosticCode::E0305, range,
+                fmt::format("{} needs values of an elementary type, not {}", name, result->name));
+        }
+        if (result != nullptr && family == Family::Arithmetic && !sema::is_numeric(*result) &&
             !sema::is_bit_string(*result)) {
             return fail(DiagnosticCode::E0305, range,
                         fmt::format("{} needs numbers, not {}", name, result->name));
         }
-        target.operand = result;
-    } else if (kComparison.contains(name)) {
-        if (!count(2, 64)) {
-            return nullptr;
+        // AND, OR and XOR take what the operators do; NOT an integer as well.
+        if (result != nullptr && family == Family::Logic && !sema::is_bool(*result) &&
+            !sema::is_bit_string(*result) &&
+            (function->operation != vm::stdlib::Operation::Not || !sema::is_integer(*result))) {
+            return fail(DiagnosticCode::E0304, range,
+                        function->operation == vm::stdlib::Operation::Not
+                            ? fmt::format("NOT needs a BOOL or bit string, not {}", result->name)
+                            : fmt::format("AND, OR and XOR need BOOL or bit strings, not {}",
+                                          result->name));
         }
+        target.operand = result;
+        break;
+    case Family::Comparison:
         target.operand = unify(values, nullptr, range);
         result = target.operand != nullptr ? &elementary(E::Bool) : nullptr;
-    } else if (kShift.contains(name)) {
-        if (!count(2, 2)) {
-            return nullptr;
-        }
+        break;
+    case Family::Shift:
         target.operand = result = type(*values[0], expected);
-        integer(*values[1]);
-    } else if (name == "SEL") {
-        if (!count(3, 3)) {
-            return nullptr;
+        if (result != nullptr && !sema::is_bit_string(program_.types().unranged(*result)) &&
+            !sema::is_integer(program_.types().unranged(*result))) {
+            return fail(DiagnosticCode::E0305, range,
+                        fmt::format("{} needs a bit string, not {}", name, result->name));
         }
+        integer(*values[1]);
+        break;
+    case Family::Select:
         condition(*values[0]);
         target.operand = result = unify({values[1], values[2]}, expected, range);
-    } else if (name == "MUX") {
-        if (!count(2, 64)) {
-            return nullptr;
-        }
+        break;
+    case Family::Multiplex:
         integer(*values[0]);
         target.operand = result = unify(
             std::vector<const ast::Expression*>(values.begin() + 1, values.end()), expected, range);
-    } else if (name == "LIMIT") {
-        if (!count(3, 3)) {
-            return nullptr;
-        }
-        target.operand = result = unify(values, expected, range);
-    } else if (name == "LEN" || name == "FIND" || name == "LEFT" || name == "RIGHT" ||
-               name == "MID" || name == "CONCAT" || name == "INSERT" || name == "DELETE" ||
-               name == "REPLACE") {
-        // Table 36: the texts first, then the lengths and positions (ANY_INT).
-        const std::size_t texts = name == "CONCAT"                                          ? 64
-                                  : name == "FIND" || name == "INSERT" || name == "REPLACE" ? 2
-                                                                                            : 1;
-        const std::size_t numbers = name == "LEFT" || name == "RIGHT" || name == "INSERT"    ? 1
-                                    : name == "MID" || name == "DELETE" || name == "REPLACE" ? 2
-                                                                                             : 0;
-        if (!count(name == "CONCAT" ? 1 : texts + numbers,
-                   name == "CONCAT" ? 64 : texts + numbers)) {
-            return nullptr;
-        }
-        // The result holds whatever the inputs can make: the sum of their capacities for
-        // CONCAT, INSERT and REPLACE, the largest for the others.
+        break;
+    case Family::Text: {
+        // Table 36: the texts first, then the lengths and positions (ANY_INT). The result
+        // holds whatever the inputs can make (vm::stdlib::TextResult).
         std::uint32_t capacity = 0;
         bool wide = false;
         for (std::size_t i = 0; i < values.size(); ++i) {
-            if (i >= texts && name != "CONCAT") {
+            if (i >= function->texts) {
                 integer(*values[i]);
                 continue;
             }
@@ -240,19 +221,14 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
                                         wide ? "WSTRING" : "STRING", text->name));
             }
             wide = text->wide;
-            capacity = texts > 2 || name == "INSERT" || name == "REPLACE"
-                           ? capacity + text->capacity
-                           : std::max(capacity, text->capacity);
+            capacity = vm::stdlib::text_capacity(function->text_result, capacity, text->capacity);
         }
-        if (name == "LEN" || name == "FIND") {
-            result = &elementary(E::Int);
-        } else {
-            result = &program_.types().string(std::min<std::uint32_t>(capacity, 0xFFFF), wide);
-        }
-    } else if (name == "LOWER_BOUND" || name == "UPPER_BOUND") {
-        if (!count(2, 2)) {
-            return nullptr;
-        }
+        result = function->text_result == vm::stdlib::TextResult::Count
+                     ? &elementary(E::Int)
+                     : &program_.types().string(capacity, wide);
+        break;
+    }
+    case Family::Bound: {
         const sema::Type* array = type(*values[0], nullptr);
         type(*values[1], &elementary(E::Dint));
         if (array != nullptr && array->kind != sema::TypeKind::Array) {
@@ -268,14 +244,14 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
                                     array->dimensions.size()));
         }
         result = &elementary(E::Dint);
-    } else if (const auto time = time_function(name)) {
+        break;
+    }
+    case Family::Time: {
         // Table 30: fixed signatures; MUL_TIME and DIV_TIME scale by any number.
-        if (!count(2, 2)) {
-            return nullptr;
-        }
-        expect(*values[0], elementary(time->first), "a time");
-        if (time->second) {
-            expect(*values[1], elementary(*time->second), "a time");
+        const vm::stdlib::TimeRule& time = function->time;
+        expect(*values[0], elementary(elementary_of(time.first)), "a time");
+        if (!time.scaled) {
+            expect(*values[1], elementary(elementary_of(time.second)), "a time");
         } else {
             const sema::Type* factor = type(*values[1], &elementary(E::Lint));
             if (factor != nullptr && !sema::is_numeric(*factor)) {
@@ -283,23 +259,25 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
                             fmt::format("{} scales by a number, not {}", name, factor->name));
             }
         }
-        target.operand = &elementary(time->first);
-        result = &elementary(time_result(name));
-    } else if (name == "ADR" || name == "SIZEOF") {
-        if (!count(1, 1)) {
-            return nullptr;
-        }
+        target.operand = &elementary(elementary_of(time.first));
+        result = &elementary(elementary_of(time.result));
+        break;
+    }
+    case Family::Address:
+    case Family::Size: {
         const sema::Type* object = type(*values[0], nullptr);
         if (object == nullptr) {
             return nullptr;
         }
         // ADR is an address for any POINTER TO; SIZEOF fits the smallest unsigned type
         // (docs/st-language.md, references and pointers).
-        result = name == "ADR"            ? &program_.types().reference(nullptr)
-                 : object->size <= 0xFF   ? &elementary(E::Usint)
-                 : object->size <= 0xFFFF ? &elementary(E::Uint)
-                                          : &elementary(E::Udint);
-    } else {
+        result = family == Family::Address ? &program_.types().reference(nullptr)
+                 : object->size <= 0xFF    ? &elementary(E::Usint)
+                 : object->size <= 0xFFFF  ? &elementary(E::Uint)
+                                           : &elementary(E::Udint);
+        break;
+    }
+    case Family::Truncate: // typed as a conversion (expression_typer.cpp)
         return fail(DiagnosticCode::E0504, range,
                     fmt::format("the typing stage does not know {} yet", name));
     }

@@ -6,34 +6,27 @@
 #include "library_parts.hpp"
 
 #include <cmath>
-#include <string>
 
 namespace eposp::vm::stdlib {
 namespace {
 
+/// REAL's natives are the manifest's Base variant (`SIN_REAL`), LREAL's the Wide (`SIN_LREAL`).
 template <typename F>
-constexpr Scalar real_scalar() {
-    return sizeof(F) == 4 ? Scalar::F32 : Scalar::F64;
-}
-
-template <typename F>
-std::string real_name(const char* function) {
-    return std::string(function) + (sizeof(F) == 4 ? "_REAL" : "_LREAL");
+NativeBinding real_binding(const char* function) {
+    return native_binding(function, sizeof(F) == 4 ? Variant::Base : Variant::Wide);
 }
 
 // The functions come in as captureless lambdas: taking the address of a std:: function is not
 // allowed.
 template <typename F>
 void add_unary(NativeRegistry& registry, const char* name, F (*function)(F)) {
-    constexpr auto s = real_scalar<F>();
-    registry.add(real_name<F>(name), {true, s, {s}},
+    add_standard(registry, real_binding<F>(name),
                  [function](NativeArgs& args) { args.set_result(function(args.get<F>(0))); });
 }
 
 template <typename F>
 void add_binary(NativeRegistry& registry, const char* name, F (*function)(F, F)) {
-    constexpr auto s = real_scalar<F>();
-    registry.add(real_name<F>(name), {true, s, {s, s}}, [function](NativeArgs& args) {
+    add_standard(registry, real_binding<F>(name), [function](NativeArgs& args) {
         args.set_result(function(args.get<F>(0), args.get<F>(1)));
     });
 }

@@ -63,14 +63,12 @@ std::int32_t find(std::basic_string_view<Char> haystack, std::basic_string_view<
     return at == std::basic_string_view<Char>::npos ? 0 : static_cast<std::int32_t>(at + 1);
 }
 
-/// The natives of one string type: STRING keeps the plain IEC names (`LEFT`), WSTRING's carry a
-/// suffix (`LEFT_WSTRING`); typed ones name their type (`EQ_STRING`, `EQ_WSTRING`).
+/// The natives of one string type: the standard functions' bindings come from the manifest
+/// (`LEFT`, `LEFT_WSTRING`); typed ones name their type (`EQ_STRING`, `EQ_WSTRING`).
 template <typename Char>
 struct Names {
     static constexpr bool kWide = std::is_same_v<Char, char16_t>;
-    static std::string function(std::string_view name) {
-        return std::string(name) + (kWide ? "_WSTRING" : "");
-    }
+    static constexpr Variant kVariant = kWide ? Variant::Wide : Variant::Base;
     static std::string typed(std::string_view prefix) {
         return std::string(prefix) + (kWide ? "WSTRING" : "STRING");
     }
@@ -103,7 +101,7 @@ void register_functions_of(NativeRegistry& registry) {
     using N = Names<Char>;
     using View = std::basic_string_view<Char>;
     // LEN reads the header alone: no need to copy a WSTRING's units.
-    registry.add(N::function("LEN"), {true, S::I32, {S::Ptr}}, [](NativeArgs& args) {
+    add_standard(registry, native_binding("LEN", N::kVariant), [](NativeArgs& args) {
         const auto bytes = string_bytes(args, 0, kWidthOf<Char>);
         if (!bytes.empty()) {
             args.set_result(static_cast<std::int32_t>(string_length(bytes)));
@@ -115,92 +113,82 @@ void register_functions_of(NativeRegistry& registry) {
             store_text(args, 0, text.view());
         }
     });
-    registry.add(
-        N::function("LEFT"), {false, S::Bool, {S::Ptr, S::Ptr, S::I32}}, [](NativeArgs& args) {
-            if (const StringParameter<Char> text(args, 1); text) {
-                const View in = text.view();
-                store_text(args, 0,
-                           in.substr(0, clamp_count(args.get<std::int32_t>(2), in.size())));
-            }
-        });
-    registry.add(N::function("RIGHT"), {false, S::Bool, {S::Ptr, S::Ptr, S::I32}},
-                 [](NativeArgs& args) {
-                     if (const StringParameter<Char> text(args, 1); text) {
-                         const View in = text.view();
-                         const auto count = clamp_count(args.get<std::int32_t>(2), in.size());
-                         store_text(args, 0, in.substr(in.size() - count));
-                     }
-                 });
+    add_standard(registry, native_binding("LEFT", N::kVariant), [](NativeArgs& args) {
+        if (const StringParameter<Char> text(args, 1); text) {
+            const View in = text.view();
+            store_text(args, 0, in.substr(0, clamp_count(args.get<std::int32_t>(2), in.size())));
+        }
+    });
+    add_standard(registry, native_binding("RIGHT", N::kVariant), [](NativeArgs& args) {
+        if (const StringParameter<Char> text(args, 1); text) {
+            const View in = text.view();
+            const auto count = clamp_count(args.get<std::int32_t>(2), in.size());
+            store_text(args, 0, in.substr(in.size() - count));
+        }
+    });
     // MID(IN, L, P)
-    registry.add(
-        N::function("MID"), {false, S::Bool, {S::Ptr, S::Ptr, S::I32, S::I32}},
-        [](NativeArgs& args) {
-            if (const StringParameter<Char> text(args, 1); text) {
-                store_text(args, 0,
-                           mid(text.view(), args.get<std::int32_t>(2), args.get<std::int32_t>(3)));
-            }
-        });
+    add_standard(registry, native_binding("MID", N::kVariant), [](NativeArgs& args) {
+        if (const StringParameter<Char> text(args, 1); text) {
+            store_text(args, 0,
+                       mid(text.view(), args.get<std::int32_t>(2), args.get<std::int32_t>(3)));
+        }
+    });
     // CONCAT is binary here: an n-ary call is folded left to right into its destination
     // (CONCAT(d, a, b); CONCAT(d, d, c)), which gives the same text since truncation keeps a
     // prefix.
-    registry.add(N::function("CONCAT"), {false, S::Bool, {S::Ptr, S::Ptr, S::Ptr}},
-                 [](NativeArgs& args) {
-                     const StringParameter<Char> a(args, 1);
-                     if (!a) {
-                         return;
-                     }
-                     const StringParameter<Char> b(args, 2);
-                     if (b) {
-                         TextBuffer<Char> out;
-                         out.append(a.view());
-                         out.append(b.view());
-                         store_text(args, 0, out.view());
-                     }
-                 });
+    add_standard(registry, native_binding("CONCAT", N::kVariant), [](NativeArgs& args) {
+        const StringParameter<Char> a(args, 1);
+        if (!a) {
+            return;
+        }
+        const StringParameter<Char> b(args, 2);
+        if (b) {
+            TextBuffer<Char> out;
+            out.append(a.view());
+            out.append(b.view());
+            store_text(args, 0, out.view());
+        }
+    });
     // INSERT(IN1, IN2, P): IN2 after the first P characters of IN1; P is clamped to 0..LEN(IN1).
-    registry.add(N::function("INSERT"), {false, S::Bool, {S::Ptr, S::Ptr, S::Ptr, S::I32}},
-                 [](NativeArgs& args) {
-                     const StringParameter<Char> text(args, 1);
-                     if (!text) {
-                         return;
-                     }
-                     const StringParameter<Char> insert(args, 2);
-                     if (insert) {
-                         const View in = text.view();
-                         const auto split = clamp_count(args.get<std::int32_t>(3), in.size());
-                         TextBuffer<Char> out;
-                         out.append(in.substr(0, split));
-                         out.append(insert.view());
-                         out.append(in.substr(split));
-                         store_text(args, 0, out.view());
-                     }
-                 });
+    add_standard(registry, native_binding("INSERT", N::kVariant), [](NativeArgs& args) {
+        const StringParameter<Char> text(args, 1);
+        if (!text) {
+            return;
+        }
+        const StringParameter<Char> insert(args, 2);
+        if (insert) {
+            const View in = text.view();
+            const auto split = clamp_count(args.get<std::int32_t>(3), in.size());
+            TextBuffer<Char> out;
+            out.append(in.substr(0, split));
+            out.append(insert.view());
+            out.append(in.substr(split));
+            store_text(args, 0, out.view());
+        }
+    });
     // DELETE(IN, L, P)
-    registry.add(N::function("DELETE"), {false, S::Bool, {S::Ptr, S::Ptr, S::I32, S::I32}},
-                 [](NativeArgs& args) {
-                     if (const StringParameter<Char> text(args, 1); text) {
-                         TextBuffer<Char> out;
-                         splice(out, text.view(), args.get<std::int32_t>(2),
-                                args.get<std::int32_t>(3), View{});
-                         store_text(args, 0, out.view());
-                     }
-                 });
+    add_standard(registry, native_binding("DELETE", N::kVariant), [](NativeArgs& args) {
+        if (const StringParameter<Char> text(args, 1); text) {
+            TextBuffer<Char> out;
+            splice(out, text.view(), args.get<std::int32_t>(2), args.get<std::int32_t>(3), View{});
+            store_text(args, 0, out.view());
+        }
+    });
     // REPLACE(IN1, IN2, L, P)
-    registry.add(N::function("REPLACE"), {false, S::Bool, {S::Ptr, S::Ptr, S::Ptr, S::I32, S::I32}},
-                 [](NativeArgs& args) {
-                     const StringParameter<Char> text(args, 1);
-                     if (!text) {
-                         return;
-                     }
-                     const StringParameter<Char> insert(args, 2);
-                     if (insert) {
-                         TextBuffer<Char> out;
-                         splice(out, text.view(), args.get<std::int32_t>(3),
-                                args.get<std::int32_t>(4), insert.view());
-                         store_text(args, 0, out.view());
-                     }
-                 });
-    registry.add(N::function("FIND"), {true, S::I32, {S::Ptr, S::Ptr}}, [](NativeArgs& args) {
+    add_standard(registry, native_binding("REPLACE", N::kVariant), [](NativeArgs& args) {
+        const StringParameter<Char> text(args, 1);
+        if (!text) {
+            return;
+        }
+        const StringParameter<Char> insert(args, 2);
+        if (insert) {
+            TextBuffer<Char> out;
+            splice(out, text.view(), args.get<std::int32_t>(3), args.get<std::int32_t>(4),
+                   insert.view());
+            store_text(args, 0, out.view());
+        }
+    });
+    add_standard(registry, native_binding("FIND", N::kVariant), [](NativeArgs& args) {
         const StringParameter<Char> haystack(args, 0);
         if (!haystack) {
             return;

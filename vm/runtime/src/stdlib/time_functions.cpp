@@ -37,13 +37,12 @@ std::int64_t wrapping_mul(std::int64_t a, std::int64_t b) {
 } // namespace
 
 void register_time_functions(NativeRegistry& registry) {
-    const NativeSignature two_times{true, S::I64, {S::I64, S::I64}};
     // Both operands are reduced to one day first, so that no sum overflows whatever they hold.
-    registry.add("ADD_TOD_TIME", two_times, [](NativeArgs& args) {
+    add_standard(registry, native_binding("ADD_TOD_TIME"), [](NativeArgs& args) {
         args.set_result(wrap_to_day(wrap_to_day(args.get<std::int64_t>(0)) +
                                     wrap_to_day(args.get<std::int64_t>(1))));
     });
-    registry.add("SUB_TOD_TIME", two_times, [](NativeArgs& args) {
+    add_standard(registry, native_binding("SUB_TOD_TIME"), [](NativeArgs& args) {
         args.set_result(wrap_to_day(wrap_to_day(args.get<std::int64_t>(0)) -
                                     wrap_to_day(args.get<std::int64_t>(1))));
     });
@@ -54,14 +53,14 @@ void register_time_functions(NativeRegistry& registry) {
                  [](NativeArgs& args) { args.set_result(wrap_to_day(args.get<std::int64_t>(0))); });
     // MUL_TIME / DIV_TIME (IN1: TIME, IN2: ANY_NUM): integer factors wrap like LINT arithmetic,
     // real ones round to the nanosecond.
-    registry.add("MUL_TIME", two_times, [](NativeArgs& args) {
+    add_standard(registry, native_binding("MUL_TIME"), [](NativeArgs& args) {
         args.set_result(wrapping_mul(args.get<std::int64_t>(0), args.get<std::int64_t>(1)));
     });
-    registry.add("MUL_TIME_LREAL", {true, S::I64, {S::I64, S::F64}}, [](NativeArgs& args) {
+    add_standard(registry, native_binding("MUL_TIME", Variant::Wide), [](NativeArgs& args) {
         args.set_result(
             round_to_ns(static_cast<double>(args.get<std::int64_t>(0)) * args.get<double>(1)));
     });
-    registry.add("DIV_TIME", two_times, [](NativeArgs& args) {
+    add_standard(registry, native_binding("DIV_TIME"), [](NativeArgs& args) {
         const auto divisor = args.get<std::int64_t>(1);
         if (divisor == 0) {
             args.fail("division by zero in DIV_TIME");
@@ -70,7 +69,7 @@ void register_time_functions(NativeRegistry& registry) {
         const auto time = args.get<std::int64_t>(0);
         args.set_result(divisor == -1 ? wrapping_mul(time, -1) : time / divisor);
     });
-    registry.add("DIV_TIME_LREAL", {true, S::I64, {S::I64, S::F64}}, [](NativeArgs& args) {
+    add_standard(registry, native_binding("DIV_TIME", Variant::Wide), [](NativeArgs& args) {
         const auto divisor = args.get<double>(1);
         if (divisor == 0.0) {
             args.fail("division by zero in DIV_TIME");

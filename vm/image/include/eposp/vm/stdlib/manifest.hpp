@@ -1,0 +1,196 @@
+#pragma once
+
+// The standard-library manifest: every standard function and function block of IEC 61131-3
+// ed. 3 (6.6.2.5, 6.6.3.5) described once, one row each: its formal inputs, its overload family
+// (which the typing stage turns into a type rule), how many inputs it takes, how it is
+// implemented (opcodes at the call, a native of the VM, or ST in the compiler's built-in
+// library) and, for a native, the VM binding: the native's name and signature. Name resolution,
+// typing, code generation and the VM's registration all read these rows; none keeps its own
+// list. It lives in vm_image because both the compiler (which links only vm_image) and the
+// runtime read it.
+
+#include "eposp/vm/image.hpp"
+#include "eposp/vm/native_type.hpp"
+#include "eposp/vm/stdlib/string_layout.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace eposp::vm::stdlib {
+
+/// The overload family of a standard function: the type rule of ed. 3, tables 22-36, that the
+/// typing stage applies and the emitter that code generation picks.
+enum class Family : std::uint8_t {
+    Real,       ///< ANY_REAL -> the same (an integer input is taken as LREAL): SQRT, SIN, ATAN2…
+    Power,      ///< IN1: ANY_REAL, IN2: ANY_NUM -> IN1's type: EXPT
+    Absolute,   ///< ANY_NUM -> the same: ABS
+    Move,       ///< ANY -> the same: MOVE
+    Arithmetic, ///< ANY_NUM (or ANY_BIT) inputs of one type -> it: ADD, MUL, SUB, DIV, MOD
+    Logic,      ///< ANY_BIT (or BOOL) inputs of one type -> it: AND, OR, XOR, NOT
+    Comparison, ///< inputs of one type -> BOOL, each neighbouring pair compared: GT, EQ…
+    Shift,      ///< IN: ANY_BIT, N: ANY_INT -> IN's type: SHL, SHR, ROL, ROR
+    Select,     ///< G: BOOL, IN0, IN1 of one type -> it: SEL
+    Extreme,    ///< inputs of one type -> it: MAX, MIN
+    Limit,      ///< MN, IN, MX of one type -> it: LIMIT
+    Multiplex,  ///< K: ANY_INT, IN0… of one type -> it: MUX
+    Text,       ///< texts (STRING or WSTRING alike), then ANY_INT lengths and positions: LEN…
+    Bound,      ///< an array and a constant dimension -> DINT: LOWER_BOUND, UPPER_BOUND
+    Time,       ///< table 30: operands of fixed time types (TimeRule): ADD_TIME, SUB_DT_DT…
+    Address,    ///< ADR: the address of a variable, for any POINTER TO
+    Size,       ///< SIZEOF: a constant of the smallest unsigned type holding the size
+    Truncate,   ///< TRUNC: ANY_REAL -> DINT (typed as a conversion)
+};
+
+/// How a standard function or FB is implemented.
+enum class Implementation : std::uint8_t {
+    Inline, ///< opcodes at the call site
+    Native, ///< a CallNative of the VM's standard library (native_binding)
+    St,     ///< ST in the compiler's built-in library (stdlib/standard_library_source.cpp)
+};
+
+/// How a native standard function's variants are named, one per argument type.
+enum class NativeNaming : std::uint8_t {
+    None,      ///< no native
+    Plain,     ///< one native of the function's name: ADD_TOD_TIME
+    RealWidth, ///< NAME_REAL and NAME_LREAL
+    CharWidth, ///< NAME on STRING, NAME_WSTRING on WSTRING
+    Factor,    ///< NAME by an integer (LINT), NAME_LREAL by a real
+};
+
+/// Which variant of a native: a REAL, a STRING, an integer factor (Base) or an LREAL, a WSTRING,
+/// a real factor (Wide).
+enum class Variant : std::uint8_t { Base, Wide };
+
+/// The string functions' result (table 36).
+enum class TextResult : std::uint8_t {
+    Count,   ///< an INT: LEN, FIND
+    Largest, ///< a text of the largest input capacity: LEFT, RIGHT, MID, DELETE
+    Sum,     ///< a text of the sum of the input capacities: CONCAT, INSERT, REPLACE
+};
+
+/// The capacity of a text function's result after one more text input of `capacity`, from
+/// the result's capacity `so_far` (0 before the first): what the inputs can make, at most a
+/// STRING's largest.
+constexpr std::uint32_t text_capacity(TextResult rule, std::uint32_t so_far,
+                                      std::uint32_t capacity) {
+    const std::uint32_t next = rule == TextResult::Sum ? so_far + capacity
+                               : capacity > so_far     ? capacity
+                                                       : so_far;
+    return next < kMaxStringCapacity ? next : kMaxStringCapacity;
+}
+
+/// What an arithmetic, logic, comparison, shift, MAX/MIN or time function computes, as the
+/// operator or opcode of the same name does.
+enum class Operation : std::uint8_t {
+    None,
+    Add,
+    Subtract,
+    Multiply,
+    Divide,
+    Modulo,
+    And,
+    Or,
+    Xor,
+    Not,
+    Greater,
+    GreaterEqual,
+    Equal,
+    LessEqual,
+    Less,
+    NotEqual,
+    ShiftLeft,
+    ShiftRight,
+    RotateLeft,
+    RotateRight,
+    Maximum,
+    Minimum,
+};
+
+/// A table 30 function's operand and result types; `scaled`: the second operand is any number
+/// (MUL_TIME, DIV_TIME) rather than `second`.
+struct TimeRule {
+    NativeType first = NativeType::Time;
+    NativeType second = NativeType::Time;
+    NativeType result = NativeType::Time;
+    bool scaled = false;
+};
+
+/// An extensible function takes at most this many inputs.
+inline constexpr std::uint8_t kExtensible = 64;
+
+struct StandardFunction {
+    std::string_view name;
+    Family family;
+    /// The formal inputs before the numbered ones, in the order of the signature.
+    std::array<std::string_view, 4> inputs{};
+    /// The number of the first numbered input (`IN1` of ADD, `IN0` of MUX), if any follow.
+    std::optional<std::uint8_t> numbered_from{};
+    std::uint8_t min_inputs = 1;
+    std::uint8_t max_inputs = 1;
+    Operation operation = Operation::None;
+    /// How its natives are named; None: it is Implementation::Inline.
+    NativeNaming naming = NativeNaming::None;
+    /// Text: how many inputs are texts (the rest are ANY_INT), and the result's rule.
+    std::uint8_t texts = 0;
+    TextResult text_result = TextResult::Count;
+    /// Time: the operand and result types.
+    TimeRule time{};
+};
+
+/// A standard function is a native of the VM or opcodes at the call.
+constexpr Implementation implementation(const StandardFunction& function) {
+    return function.naming == NativeNaming::None ? Implementation::Inline : Implementation::Native;
+}
+
+/// Every standard function (not the conversions `*_TO_*`, which are too many to list and follow
+/// one rule: is_conversion in the compiler, one input IN).
+std::span<const StandardFunction> standard_functions();
+/// The row of the standard function `name` (upper case), if it is one.
+const StandardFunction* find_standard_function(std::string_view name);
+
+/// The 0-based position in the signature of the formal input `input` (upper case) of
+/// `function`; nothing if it has no such input. A type conversion (`function` null) has IN.
+std::optional<std::size_t> input_position(const StandardFunction* function, std::string_view input);
+
+/// A native of the VM's standard library: its name and signature.
+struct NativeBinding {
+    std::string name;
+    NativeSignature signature;
+};
+
+/// The native that implements `function` for `variant`: CONCAT is binary (folded left to right
+/// by the caller); a text function writes its text result through its first parameter.
+NativeBinding native_binding(const StandardFunction& function, Variant variant = Variant::Base);
+/// The binding of the native of the function named `name` (a programming error if none).
+NativeBinding native_binding(std::string_view name, Variant variant = Variant::Base);
+/// Every native binding of every row, all variants: what the VM's standard library registers
+/// for the standard functions.
+std::vector<NativeBinding> standard_function_natives();
+
+struct StandardParameter {
+    std::string_view name;
+    bool output = false;
+    std::string_view type;
+};
+
+struct StandardFunctionBlock {
+    std::string_view name;
+    std::array<StandardParameter, 8> parameters{}; ///< an empty name ends the list
+    /// A counter of table 45 (PV and CV of type INT), which also comes as CTU_DINT, CTU_LINT,
+    /// CTU_UDINT and CTU_ULINT with PV and CV of that type (kCounterTypes).
+    bool counter = false;
+    Implementation implementation = Implementation::St;
+};
+
+/// The types of the typed counters besides INT, in the order of the suffixes.
+inline constexpr std::array<std::string_view, 4> kCounterTypes{"DINT", "LINT", "UDINT", "ULINT"};
+
+/// Every standard function block (tables 43-46), the typed counters as their INT row.
+std::span<const StandardFunctionBlock> standard_function_blocks();
+
+} // namespace eposp::vm::stdlib
