@@ -6,10 +6,11 @@ namespace eposp::compiler::stdlib {
 
 namespace {
 
-// Keep the parameters in step with sema/standard_library.cpp, which declares them for name
-// resolution. Counters count on rising edges (table 45); timers follow the timing diagrams of
-// table 46: a timer's ET is measured against PT at every call, so changing PT while the timer
-// runs takes effect at once, as in CODESYS.
+// The FBs' interfaces are the rows of the manifest (vm/stdlib/manifest.hpp), which name resolution
+// declares; StandardManifest.EveryFunctionBlockIsTheStOfItsRowAndNoOther holds the two equal.
+// Counters count on rising edges (table 45); timers follow the timing diagrams of table 46: a
+// timer's ET is measured against PT at every call, so changing PT while the timer runs takes effect
+// at once, as in CODESYS.
 constexpr std::string_view kSource = R"ST(
 FUNCTION CURRENT_TIME : TIME
 END_FUNCTION
