@@ -108,6 +108,9 @@ private:
     std::optional<Expr> selection(Ty type, int depth, int max_length);
     std::optional<Expr> call(Ty type, int depth, int max_length);
     Expr conversion_to(Ty type, int depth);
+    /// An operator expression over literals and the constants of the scope: one the compiler
+    /// evaluates at compile time (no call, no variable).
+    Expr constant_expr(Ty type, int depth);
     Expr real_to_integer(Ty type, int depth);
     Expr arguments_call(const Function& function, int depth);
 
@@ -134,6 +137,7 @@ private:
     void struct_types(Block& program);
     void function(Block& program);
     void function_block(Block& program);
+    std::vector<Place> declare_constants(Block& decls);
     void main_program(Block& program);
     void final_folds(Scope& scope, Block& body);
 
@@ -623,6 +627,57 @@ Expr Generator::real_to_integer(Ty type, int depth) {
                    {expr(from, depth - 1)}, one_literal(type));
 }
 
+Expr Generator::constant_expr(Ty type, int depth) {
+    const std::string r = one_literal(type);
+    // What the compiler folds in an initial value (types/initial_constant.cpp): arithmetic on
+    // integers below 2^63 and on reals; BOOL and bit string constants are literals or names.
+    const bool arithmetic =
+        is_real(type) || is_signed(type) || (is_unsigned(type) && type != Ty::Ulint);
+    if (!arithmetic || depth <= 0 || chance(25)) {
+        std::vector<const Place*> constants;
+        for (const auto& place : scope_->places) {
+            if (place.type == type) {
+                constants.push_back(&place);
+            }
+        }
+        return !constants.empty() && chance(50) ? leaf(one_of(constants)->name, r)
+                                                : leaf(literal(type), r);
+    }
+    auto sub = [&] {
+        return constant_expr(type, depth - 1);
+    };
+    if (is_real(type)) {
+        // Literals are eighths below 125 000 and products take only literals and names: far
+        // from infinity, and sums of products round twice in REAL.
+        switch (below(depth > 1 ? 3 : 4)) {
+        case 0:
+        case 1:
+            return pattern(chance(50) ? "($0 + $1)" : "($0 - $1)", {sub(), sub()}, r);
+        case 2:
+            return pattern("($0 / " + type_name(type) + "#2.5)", {sub()}, r);
+        default:
+            return pattern("($0 * $1)", {sub(), sub()}, r);
+        }
+    }
+    // Integers reduced as in signed_expr and unsigned_expr, so that no value leaves its type
+    // (the compiler refuses a constant that does not fit); divisors are never 0 nor -1.
+    const std::string k = reduction_modulus(type);
+    switch (below(4)) {
+    case 0:
+        return pattern("(($0 MOD " + k + ") * ($1 MOD " + k + "))", {sub(), sub()}, r);
+    case 1:
+        return pattern("(($0 MOD " + k + ")" + (is_signed(type) ? " - " : " + ") + "($1 MOD " + k +
+                           "))",
+                       {sub(), sub()}, r);
+    case 2:
+        return pattern("($0 " + std::string(chance(50) ? "/" : "MOD") + " (($1 MOD " + k + ") * " +
+                           (is_signed(type) ? "4 + 2))" : "2 + 1))"),
+                       {sub(), sub()}, r);
+    default:
+        return is_signed(type) ? pattern("(-($0 MOD " + k + "))", {sub()}, r) : sub();
+    }
+}
+
 // ---------------------------------------------------------------- statements
 
 Block Generator::statements(Scope& scope, int count, int depth) {
@@ -1098,6 +1153,25 @@ void Generator::final_folds(Scope& scope, Block& body) {
     }
 }
 
+std::vector<Place> Generator::declare_constants(Block& decls) {
+    std::vector<Place> constants;
+    if (!options_.constants) {
+        return constants;
+    }
+    for (int i = 0; i < 2 + below(4); ++i) {
+        Ty type = any_scalar_type();
+        while (type == Ty::String) {
+            type = any_scalar_type();
+        }
+        Place place = scalar("k" + std::to_string(names_++), type, 0, false);
+        const Expr value = constant_expr(type, 2);
+        decls.push_back(declaration(place.name, type_name(type), render(value)));
+        constants.push_back(place);
+        scope_->places.push_back(place); // the next constants may name it
+    }
+    return constants;
+}
+
 void Generator::main_program(Block& program) {
     Scope scope;
     scope.main = true;
@@ -1105,7 +1179,10 @@ void Generator::main_program(Block& program) {
     Block decls;
     decls.push_back(statement("checksum : ULINT;", {}, {}, false));
     auto places = declare_variables("v", 6 + below(6), decls, true);
+    Block constant_decls;
+    const std::vector<Place> constants = declare_constants(constant_decls);
     scope.places = places;
+    scope.places.insert(scope.places.end(), constants.begin(), constants.end());
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
         for (int n = 0; n < 1 + below(2); ++n) {
             const std::string instance = "fb" + std::to_string(names_++);
@@ -1118,7 +1195,12 @@ void Generator::main_program(Block& program) {
             }
         }
     }
-    Block body = statements(scope, options_.statements, 2);
+    Block body;
+    for (const Place& constant : constants) {
+        fold(scope, leaf(constant.name, one_literal(constant.type)), constant.type, body);
+    }
+    Block statements_of_main = statements(scope, options_.statements, 2);
+    body.insert(body.end(), statements_of_main.begin(), statements_of_main.end());
     // Every instance runs in every scan at least once, so that its state moves on.
     for (std::size_t i = 0; i < scope.fb_instances.size(); ++i) {
         Scope one = scope;
@@ -1130,8 +1212,14 @@ void Generator::main_program(Block& program) {
     for (int c = 0; c < scope.counters; ++c) {
         decls.push_back(declaration("c" + std::to_string(c), "DINT", ""));
     }
-    program.push_back(statement("PROGRAM Main\nVAR$bEND_VAR\n$bEND_PROGRAM", {},
-                                {std::move(decls), std::move(body)}, false));
+    if (constants.empty()) {
+        program.push_back(statement("PROGRAM Main\nVAR$bEND_VAR\n$bEND_PROGRAM", {},
+                                    {std::move(decls), std::move(body)}, false));
+        return;
+    }
+    program.push_back(statement("PROGRAM Main\nVAR CONSTANT$bEND_VAR\nVAR$bEND_VAR\n$bEND_PROGRAM",
+                                {}, {std::move(constant_decls), std::move(decls), std::move(body)},
+                                false));
 }
 
 GeneratedProgram Generator::run() {

@@ -175,7 +175,17 @@ Value Evaluator::make(const sema::Type& type, const ast::Initializer* initialize
         value.elements.assign(count, element);
         break;
     }
-    case Shape::Record:
+    case Shape::Record: {
+        // An instance's initial values may name its constants declared before them.
+        Frame building{.instance = &value};
+        struct Restore {
+            Frame*& slot;
+            Frame* old;
+            ~Restore() { slot = old; }
+        } restore{frame_, frame_};
+        if (type.kind == sema::TypeKind::Instance) {
+            frame_ = &building;
+        }
         for (const sema::Field& field : type.fields) {
             if (field.section == ast::VarSectionKind::InOut ||
                 field.section == ast::VarSectionKind::Temp ||
@@ -192,6 +202,7 @@ Value Evaluator::make(const sema::Type& type, const ast::Initializer* initialize
                                                            : nullptr));
         }
         break;
+    }
     case Shape::Unsupported:
         throw Unsupported("the type " + type.name);
     }

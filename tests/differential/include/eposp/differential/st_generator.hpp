@@ -36,6 +36,9 @@ struct GeneratorOptions {
     bool string_max_min_limit = true;
     /// Real-to-integer conversions of values that may lie halfway between two integers.
     bool real_ties = false;
+    /// Main's VAR CONSTANTs, whose initial values are operator expressions over literals and
+    /// the constants before them: the compiler folds them, the reference evaluates them.
+    bool constants = true;
 };
 
 /// One program; its source is render(block). Main's checksum is `Main.checksum`.
