@@ -13,6 +13,7 @@ std::size_t TimerQueue::allocate() {
             throw std::length_error("EventLoop: too many pending timers");
         }
         entries_.emplace_back();
+        callbacks_.emplace_back();
         return entries_.size() - 1;
     }
     const std::size_t slot = free_slots_.back();
@@ -23,7 +24,7 @@ std::size_t TimerQueue::allocate() {
 TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callback fn) {
     const std::size_t slot = allocate();
     Entry& entry = entries_[slot];
-    entry.fn = std::move(fn);
+    callbacks_[slot] = std::move(fn);
     entry.period = period;
     entry.live = true;
     ++live_count_;
@@ -34,7 +35,7 @@ TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callbac
 TimerId TimerQueue::add_alarm(EventLoop::Callback fn) {
     const std::size_t slot = allocate();
     Entry& entry = entries_[slot];
-    entry.fn = std::move(fn);
+    callbacks_[slot] = std::move(fn);
     entry.period = Duration::zero();
     entry.alarm = true;
     return TimerId{entry.generation << kSlotBits | (slot + 1)};
@@ -61,10 +62,19 @@ void TimerQueue::disarm(TimerId alarm) {
 void TimerQueue::remove_alarm(TimerId alarm) {
     disarm(alarm);
     Entry& entry = entries_[slot_of(alarm.value)];
-    entry.fn = nullptr;
     entry.alarm = false;
     ++entry.generation;
-    free_slots_.push_back(slot_of(alarm.value));
+    free_slot(slot_of(alarm.value));
+}
+
+// A callback that is running is destroyed, and its slot reused, once it has returned.
+void TimerQueue::free_slot(std::size_t slot) {
+    if (entries_[slot].running) {
+        entries_[slot].freed_while_running = true;
+        return;
+    }
+    callbacks_[slot] = nullptr;
+    free_slots_.push_back(slot);
 }
 
 const TimerQueue::Entry* TimerQueue::live(std::uint64_t id) const {
@@ -84,12 +94,11 @@ TimerQueue::Entry* TimerQueue::live(std::uint64_t id) {
 void TimerQueue::release(std::uint64_t id) {
     const std::size_t slot = slot_of(id);
     Entry& entry = entries_[slot];
-    entry.fn = nullptr;
     entry.live = false;
     entry.sequence = 0;
     ++entry.generation;
     --live_count_;
-    free_slots_.push_back(slot);
+    free_slot(slot);
 }
 
 bool TimerQueue::cancel(TimerId id) {
@@ -103,12 +112,12 @@ bool TimerQueue::cancel(TimerId id) {
 
 std::uint32_t TimerQueue::new_link(std::uint64_t sequence, std::size_t entry) {
     const Link link{sequence, static_cast<std::uint32_t>(entry), kNoLink};
-    if (free_links_.empty()) {
+    if (free_link_ == kNoLink) {
         links_.push_back(link);
         return static_cast<std::uint32_t>(links_.size() - 1);
     }
-    const std::uint32_t index = free_links_.back();
-    free_links_.pop_back();
+    const std::uint32_t index = free_link_;
+    free_link_ = links_[index].next;
     links_[index] = link;
     return index;
 }
@@ -144,7 +153,8 @@ void TimerQueue::pop() {
     Slot& top = heap_.front();
     const std::uint32_t link = top.link;
     const std::uint32_t next = links_[link].next;
-    free_links_.push_back(link);
+    links_[link].next = free_link_;
+    free_link_ = link;
     if (link == tail_) {
         tail_ = kNoLink;
     }
@@ -208,36 +218,39 @@ void TimerQueue::run_next(TimePoint& now) {
     pop();
     now = std::max(now, slot.when);
 
-    // The callback is moved out while it runs so that it may cancel itself or schedule more
-    // timers (which may grow the entries) without destroying the function being executed.
-    Entry& running = entries_[slot.entry];
-    const std::uint64_t id = running.generation << kSlotBits | (slot.entry + 1);
-    EventLoop::Callback fn = std::move(running.fn);
-    if (running.alarm) {
+    // The callback runs in place: callbacks_ keeps its elements where they are while the callback
+    // schedules more timers, and a callback that cancels or removes itself is destroyed only
+    // once it has returned (free_slot).
+    const std::uint64_t id = entries_[slot.entry].generation << kSlotBits | (slot.entry + 1);
+    const bool nested = std::exchange(entries_[slot.entry].running, true);
+    try {
+        callbacks_[slot.entry]();
+    } catch (...) {
+        entries_[slot.entry].running = nested; // a programming error: the caller sees it
+        throw;
+    }
+    Entry& entry = entries_[slot.entry];
+    entry.running = nested;
+    if (entry.freed_while_running && !nested) {
+        entry.freed_while_running = false;
+        free_slot(slot.entry);
+        return; // cancelled or removed by its own callback
+    }
+    if (entry.generation != id >> kSlotBits || !entry.live) {
+        return; // cancelled or removed by its own callback
+    }
+    if (entry.alarm) {
         // Armed while it runs, as a timer is pending until its callback returns.
-        fn();
-        Entry& entry = entries_[slot.entry];
-        if (entry.generation != id >> kSlotBits) {
-            return; // removed by its own callback
-        }
-        entry.fn = std::move(fn);
         if (entry.sequence == slot.sequence) {
             disarm(TimerId{id}); // not armed again by its callback
         }
         return;
     }
-    fn();
-
-    Entry* entry = live(id);
-    if (entry == nullptr) {
-        return; // cancelled by its own callback
-    }
-    if (entry->period == Duration::zero()) {
+    if (entry.period == Duration::zero()) {
         release(id);
         return;
     }
-    entry->fn = std::move(fn);
-    push(slot.when + entry->period, slot.entry);
+    push(slot.when + entry.period, slot.entry);
 }
 
 } // namespace eposp::core

@@ -2,6 +2,7 @@
 
 #include "eposp/core/event_loop.hpp"
 
+#include <deque>
 #include <optional>
 #include <vector>
 
@@ -65,14 +66,15 @@ private:
         std::uint32_t next;
     };
     struct Entry {
-        EventLoop::Callback fn;
         Duration period;              // zero for one-shot timers
         std::uint64_t generation = 0; // the id's high bits while the slot is in use
         /// Of its latest push while pending, else 0 (sequences start at 1): a queued event whose
         /// sequence is not its entry's is stale (cancelled, or armed again since).
         std::uint64_t sequence = 0;
-        bool live = false;  // pending
-        bool alarm = false; // kept in its slot while not pending
+        bool live = false;                // pending
+        bool alarm = false;               // kept in its slot while not pending
+        bool running = false;             // its callback is on the stack
+        bool freed_while_running = false; // free the slot once the callback returned
     };
     static constexpr int kSlotBits = 24; // the id's low bits: 1 + the slot's index
 
@@ -85,6 +87,7 @@ private:
     bool current(const Slot& slot) const { return entries_[slot.entry].sequence == slot.sequence; }
     std::size_t allocate();
     void release(std::uint64_t id);
+    void free_slot(std::size_t slot);
     void push(TimePoint when, std::size_t entry);
     std::uint32_t new_link(std::uint64_t sequence, std::size_t entry);
     /// Removes the top event: the next of its run takes its place, or the heap shrinks.
@@ -94,12 +97,15 @@ private:
 
     std::vector<Slot> heap_; ///< heap_[0] is the earliest; the children of i are 4i+1..4i+4
     std::vector<Link> links_;
-    std::vector<std::uint32_t> free_links_;
+    std::uint32_t free_link_ = kNoLink; ///< the free links, chained through their `next`
     /// The link of the latest push while it is queued, and its time: a push at that time (the
     /// next sequence) joins its run.
     std::uint32_t tail_ = kNoLink;
     TimePoint tail_when_{};
     std::vector<Entry> entries_;
+    /// The callback of each entry, apart: a deque does not move its elements as it grows, so a
+    /// callback runs in place while it schedules more timers.
+    std::deque<EventLoop::Callback> callbacks_;
     std::vector<std::size_t> free_slots_;
     std::size_t live_count_ = 0;
     std::uint64_t next_sequence_ = 1;

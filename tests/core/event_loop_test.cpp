@@ -5,6 +5,7 @@
 #include <functional>
 #include <gtest/gtest.h>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -439,6 +440,34 @@ TEST(EventLoop, WhatTheLatestScheduledEventSchedulesForItsInstantRunsOnce) {
     alarm.arm(loop.now() + 5ns);
     loop.run();
     EXPECT_EQ(order, "abcdd");
+}
+
+// A callback runs where it is stored: while it cancels itself and schedules a thousand timers
+// (more slots, some of them reused), it and its captures stay; once it has returned it is
+// destroyed.
+TEST(EventLoop, ACallbackThatCancelsItselfAndSchedulesMoreLivesUntilItReturns) {
+    EventLoop loop;
+    bool destroyed = false;
+    std::shared_ptr<void> token(nullptr, [&destroyed](void*) { destroyed = true; });
+    TimerId self;
+    int later = 0;
+    std::optional<bool> destroyed_while_running;
+    for (int i = 0; i < 10; ++i) {
+        loop.cancel(loop.after(1ms, [] {})); // free slots to reuse
+    }
+    self = loop.every(1ms, [&, token] {
+        loop.cancel(self);
+        for (int i = 0; i < 1000; ++i) {
+            loop.after(1ms, [&later] { ++later; });
+        }
+        destroyed_while_running = destroyed;
+    });
+    token.reset();
+    EXPECT_FALSE(destroyed);
+    loop.run();
+    EXPECT_EQ(destroyed_while_running, false);
+    EXPECT_EQ(later, 1000);
+    EXPECT_TRUE(destroyed);
 }
 
 // A workload with timers scheduling, cancelling and re-arming each other, driven by a seeded
