@@ -117,6 +117,7 @@ void VirtualBus::Impl::detach(VirtualPort& port) {
     std::ranges::replace(ports, &port, nullptr);
     has_vacancies = true;
     if (current && current->sender == port.impl_.get()) {
+        current->departed_sender_name = std::string(port.name());
         current->sender = nullptr;
     }
 }
@@ -128,7 +129,13 @@ void VirtualBus::Impl::compact_ports() {
     }
 }
 
-void VirtualBus::Impl::notify_observers(const WireEvent& event) {
+void VirtualBus::Impl::notify_observers(WireEvent event) {
+    if (observers.empty()) {
+        return;
+    }
+    // The sender's name as it is now: an observer might even disconnect the sending port.
+    const std::string sender(event.sender);
+    event.sender = sender;
     // Observers added by an observer see the next event; removed ones are erased afterwards.
     const ObserverId end = next_observer;
     notifying = true;
@@ -244,7 +251,6 @@ void VirtualBus::Impl::start(VirtualPort::Impl& sender, const Frame& next) {
     }
 
     current = Transmission{.sender = &sender,
-                           .sender_name = std::string(sender.port.name()),
                            .frame = frame,
                            .from_queue = !sender.babbled,
                            .outcome = outcome,
@@ -291,7 +297,7 @@ void VirtualBus::Impl::conclude() {
         notify_observers({.start = transmission.start,
                           .end = at_bit(transmission.start, transmission.timeline.concluded),
                           .frame = transmission.frame,
-                          .sender = transmission.sender_name});
+                          .sender = transmission.sender_name()});
         transmitted(transmission);
         for_each_receiver(transmission, [this, &transmission](VirtualPort::Impl& receiver) {
             const ErrorState before = change_counters(
@@ -345,7 +351,7 @@ void VirtualBus::Impl::conclude_with_error(Transmission& transmission) {
          .end = at_bit(transmission.start, transmission.timeline.concluded),
          .frame = ack_error ? ack_error_frame(after, state_changed)
                             : crc_sequence_bit_error_frame(sent_recessive, after, state_changed),
-         .sender = transmission.sender_name});
+         .sender = transmission.sender_name()});
 
     if (transmission.sender != nullptr) {
         VirtualPort::Impl& sender = *transmission.sender;

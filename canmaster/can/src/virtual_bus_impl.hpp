@@ -63,7 +63,11 @@ struct Timeline {
 
 struct Transmission {
     VirtualPort::Impl* sender; ///< null once that port is gone
-    std::string sender_name;
+    /// Kept when the sender disconnects during its frame; until then its port has the name.
+    std::string departed_sender_name{};
+    std::string_view sender_name() const {
+        return sender != nullptr ? sender->port.name() : departed_sender_name;
+    }
     Frame frame;
     bool from_queue; ///< false for a babbled frame, which stays
     Outcome outcome;
@@ -81,7 +85,7 @@ public:
     void attach(VirtualPort& port);
     void detach(VirtualPort& port);
     void request_arbitration();
-    void notify_observers(const WireEvent& event);
+    void notify_observers(WireEvent event);
 
     /// Applies `change` to the counters of a port that takes part in traffic; the caller then
     /// settles the state change with settle_state() once no callback can interfere.

@@ -3,6 +3,7 @@
 #include "numeric_value.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <fmt/format.h>
 #include <stdexcept>
 #include <utility>
@@ -89,6 +90,25 @@ SubObject make_sub(std::uint8_t sub_index, std::string name, DataType type, Acce
     sub.value = default_value;
     sub.default_value = std::move(default_value);
     return sub;
+}
+
+// The lengths of the basic types as copies of a known size, without a call to memmove: a drive
+// stores its actual values every millisecond.
+void copy_value(std::span<const std::uint8_t> value, std::uint8_t* to) {
+    switch (value.size()) {
+    case 1:
+        *to = value[0];
+        break;
+    case 2:
+        std::memcpy(to, value.data(), 2);
+        break;
+    case 4:
+        std::memcpy(to, value.data(), 4);
+        break;
+    default:
+        std::copy(value.begin(), value.end(), to);
+        break;
+    }
 }
 
 } // namespace
@@ -323,7 +343,7 @@ void ObjectDictionary::set(ValueRef ref, std::span<const std::uint8_t> value) {
         require_fits(sub.type, value.size(), ref.index, sub.sub_index);
         sub.value.assign(value.begin(), value.end());
     } else {
-        std::copy(value.begin(), value.end(), sub.value.begin());
+        copy_value(value, sub.value.data());
     }
     notify(ref.index, sub.sub_index);
 }

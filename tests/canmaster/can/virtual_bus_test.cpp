@@ -441,6 +441,20 @@ TEST_F(VirtualBusTest, SenderDisconnectedMidFrameStillCompletesTheFrame) {
     EXPECT_EQ(wire.events[0].sender, "a");
 }
 
+// The wire event names the sender as it was when the frame ended, also for the observers after
+// one that disconnects the sending port.
+TEST_F(VirtualBusTest, AnObserverMayDisconnectTheSenderAndTheNextStillSeesItsName) {
+    auto a = bus.connect("a");
+    auto b = bus.connect("b");
+    bus.add_observer([&](const WireEvent&) { a.reset(); });
+    std::string seen;
+    bus.add_observer([&](const WireEvent& event) { seen = std::string(event.sender); });
+    a->send(kZeroFrame);
+    loop.run();
+    EXPECT_EQ(seen, "a");
+    EXPECT_EQ(bus.statistics().frames, 1U);
+}
+
 TEST(VirtualBus, PortOutlivingItsBusIsDisconnected) {
     core::EventLoop loop;
     auto bus = std::make_unique<VirtualBus>(loop);
