@@ -8,7 +8,7 @@
 //   st_difftest --file PROGRAM.st        one program (a reduced one, edited) on every executor
 //   options: --scans K (4), --no-reduce, --ties (real-to-integer conversions of ties),
 //            --without FEATURE (reals strings arrays structs loops case in-out
-//            huge-case-labels string-max-min-limit; repeatable)
+//            huge-case-labels string-max-min-limit constants; repeatable)
 
 #include "eposp/differential/differential_check.hpp"
 #include "eposp/differential/executors.hpp"
@@ -50,6 +50,7 @@ bool switch_off(GeneratorOptions& options, const std::string& feature) {
         {"in-out", &GeneratorOptions::in_out},
         {"huge-case-labels", &GeneratorOptions::huge_case_labels},
         {"string-max-min-limit", &GeneratorOptions::string_max_min_limit},
+        {"constants", &GeneratorOptions::constants},
     };
     for (const auto& [name, member] : features) {
         if (feature == name) {
