@@ -56,7 +56,7 @@ std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId>
     const types::FrontEnd& front_end = *checked->front_end;
     codegen::ProgramGenerator generator({*front_end.model, front_end.units, libraries.size()},
                                         {*front_end.library_model, front_end.library_units},
-                                        diagnostics, options);
+                                        *checked->program, diagnostics, options);
     auto image = generator.generate();
     if (image) {
         lower::optimise_image(*image);

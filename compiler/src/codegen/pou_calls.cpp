@@ -32,9 +32,7 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
             if (symbol->pou->kind == ast::PouKind::Program) {
                 break; // its single instance is called, as CODESYS does
             }
-            error(
-                DiagnosticCode::E0204, range,
-                fmt::format("'{}' is a FUNCTION_BLOCK type: call an instance of it", symbol->name));
+            program_.refused_by_checks(DiagnosticCode::E0204); // types/call_typing.cpp
             return std::nullopt;
         case sema::SymbolKind::StandardFunction:
             if (const ast::Pou* pou = program_.library_pou(symbol->name);
@@ -43,9 +41,7 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
             }
             return standard_function(sema::fold_case(symbol->name), node, hint, dest, range);
         case sema::SymbolKind::StandardFunctionBlock:
-            error(
-                DiagnosticCode::E0204, range,
-                fmt::format("'{}' is a function block type: call an instance of it", symbol->name));
+            program_.refused_by_checks(DiagnosticCode::E0204); // types/call_typing.cpp
             return std::nullopt;
         default:
             break;
@@ -56,9 +52,7 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
         return std::nullopt;
     }
     if (instance->type->kind != sema::TypeKind::Instance) {
-        error(DiagnosticCode::E0204, node.callee->range,
-              fmt::format("a {} cannot be called: it is not a function block instance",
-                          instance->type->name));
+        program_.refused_by_checks(DiagnosticCode::E0204); // types/call_typing.cpp
         return std::nullopt;
     }
     call_instance(*instance, node);
@@ -108,10 +102,9 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
         const bool output = argument.kind == ast::Argument::Kind::Output;
         if (field == nullptr || !is_parameter(field->section) ||
             output != (field->section == ast::VarSectionKind::Output)) {
-            error(argument.name ? DiagnosticCode::E0210 : DiagnosticCode::E0306, argument.range,
-                  argument.name ? fmt::format("'{}' has no {} '{}'", function.name.name,
-                                              output ? "output" : "input", argument.name->name)
-                                : fmt::format("too many arguments for '{}'", function.name.name));
+            program_.refused_by_checks(argument.name
+                                           ? DiagnosticCode::E0210
+                                           : DiagnosticCode::E0306); // types/call_typing.cpp
             ok = false;
             continue;
         }
@@ -230,8 +223,7 @@ std::optional<Value> PouGenerator::call_host(const ast::Pou& function, const sem
     for (const ast::Argument& argument : node.arguments) {
         const sema::Field* field = sema::formal_parameter(frame, argument, positional);
         if (field == nullptr || field->section != ast::VarSectionKind::Input) {
-            error(DiagnosticCode::E0210, argument.range,
-                  fmt::format("bad argument for '{}'", function.name.name));
+            program_.refused_by_checks(DiagnosticCode::E0210); // types/call_typing.cpp
             return std::nullopt;
         }
         const auto value = value_as(*argument.value, *field->type);
@@ -264,8 +256,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         connected.push_back(field);
         if (field == nullptr) {
             if (argument.name) {
-                error(DiagnosticCode::E0210, argument.range,
-                      fmt::format("'{}' has no parameter '{}'", type.name, argument.name->name));
+                program_.refused_by_checks(DiagnosticCode::E0210); // types/call_typing.cpp
             } else {
                 program_.refused_by_checks(DiagnosticCode::E0415); // checks/call_forms.cpp
             }
@@ -274,9 +265,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         const bool output = argument.kind == ast::Argument::Kind::Output;
         if (output != (field->section == ast::VarSectionKind::Output) ||
             !is_parameter(field->section)) {
-            error(DiagnosticCode::E0210, argument.range,
-                  fmt::format("'{}' is not an {} of '{}'", field->name, output ? "output" : "input",
-                              type.name));
+            program_.refused_by_checks(DiagnosticCode::E0210); // types/call_typing.cpp
             continue;
         }
         if (output) {
@@ -326,9 +315,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             value.operand = negated;
         }
         if (!sema::converts_implicitly(*field->type, *target->type)) {
-            error(DiagnosticCode::E0301, argument->range,
-                  fmt::format("a {} output cannot be stored in a {}", field->type->name,
-                              target->type->name));
+            program_.refused_by_checks(DiagnosticCode::E0301); // types/call_typing.cpp
             continue;
         }
         store(*target, *value_as(value, argument->range, *target->type));

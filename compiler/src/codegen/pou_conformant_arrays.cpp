@@ -25,20 +25,17 @@ Operand dimension_bounds(const Place& array, std::size_t d) {
 } // namespace
 
 std::optional<Value> PouGenerator::in_out_argument(const Place& target, const sema::Field& field,
-                                                   const SourceRange& range) {
+                                                   const SourceRange& /*range*/) {
     const sema::Type& formal = *field.type->element;
     if (!field.type->conformant) {
         if (!sema::same_type(*target.type, formal)) {
-            error(DiagnosticCode::E0302, range,
-                  fmt::format("VAR_IN_OUT '{}' needs a {} variable", field.name, formal.name));
+            program_.refused_by_checks(DiagnosticCode::E0302); // types/call_typing.cpp
             return std::nullopt;
         }
         return Value{address_of(target), field.type};
     }
     if (!sema::conforms(*target.type, formal)) {
-        error(DiagnosticCode::E0302, range,
-              fmt::format("VAR_IN_OUT '{}' needs an array of {} dimension(s) of {}", field.name,
-                          formal.dimensions.size(), formal.element->name));
+        program_.refused_by_checks(DiagnosticCode::E0302); // types/call_typing.cpp
         return std::nullopt;
     }
     if (target.type->conformant) {
@@ -100,9 +97,10 @@ std::optional<Place> PouGenerator::conformant_element(const Place& array,
 
 std::optional<Value> PouGenerator::array_bound(const std::string& name,
                                                const ast::CallExpression& node,
-                                               const Destination* dest, const SourceRange& range) {
+                                               const Destination* dest,
+                                               const SourceRange& /*range*/) {
     if (node.arguments.size() != 2) {
-        error(DiagnosticCode::E0306, range, fmt::format("{} takes an array and a dimension", name));
+        program_.refused_by_checks(DiagnosticCode::E0306); // types/standard_function_typing.cpp
         return std::nullopt;
     }
     const auto array = place(*node.arguments[0].value);
@@ -111,15 +109,13 @@ std::optional<Value> PouGenerator::array_bound(const std::string& name,
     }
     const sema::Type& type = *array->type;
     if (type.kind != sema::TypeKind::Array) {
-        error(DiagnosticCode::E0305, node.arguments[0].value->range,
-              fmt::format("{} needs an array, not {}", name, type.name));
+        program_.refused_by_checks(DiagnosticCode::E0305); // types/standard_function_typing.cpp
         return std::nullopt;
     }
     const auto dimension = types_.fold_integer(*node.arguments[1].value);
     if (!dimension || *dimension < 1 ||
         *dimension > static_cast<std::int64_t>(type.dimensions.size())) {
-        error(DiagnosticCode::E0313, node.arguments[1].value->range,
-              fmt::format("the dimension must be a constant from 1 to {}", type.dimensions.size()));
+        program_.refused_by_checks(DiagnosticCode::E0313); // types/standard_function_typing.cpp
         return std::nullopt;
     }
     const auto d = static_cast<std::size_t>(*dimension - 1);

@@ -50,8 +50,7 @@ const sema::Field* PouGenerator::connected_field(const ast::Argument& argument) 
     const sema::Field* field = argument.name ? type.field(argument.name->name) : nullptr;
     if (field == nullptr ||
         field->section != (output ? ast::VarSectionKind::Output : ast::VarSectionKind::Input)) {
-        error(DiagnosticCode::E0210, argument.range,
-              fmt::format("'{}' has no {} of that name", type.name, output ? "output" : "input"));
+        program_.refused_by_checks(DiagnosticCode::E0210); // types/configuration_typing.cpp
         return nullptr;
     }
     return field;

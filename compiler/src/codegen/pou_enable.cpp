@@ -57,8 +57,7 @@ bool PouGenerator::with_enable(const Enable& enable, const std::function<void()>
             return false;
         }
         if (eno->type != &boolean) {
-            error(DiagnosticCode::E0301, enable.eno->value->range,
-                  fmt::format("ENO needs a BOOL variable, not {}", eno->type->name));
+            program_.refused_by_checks(DiagnosticCode::E0301); // types/call_typing.cpp
             return false;
         }
         if (!eno->writable) {

@@ -92,8 +92,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
                 ? type.field(node->member.name)
                 : nullptr;
         if (field == nullptr) {
-            error(DiagnosticCode::E0206, node->member.range,
-                  fmt::format("'{}' has no member '{}'", type.name, node->member.name));
+            program_.refused_by_checks(DiagnosticCode::E0206); // types/operand_typing.cpp
             return std::nullopt;
         }
         // A PROGRAM reached by its name shows all its variables (CODESYS); VAR CONSTANT are
@@ -101,8 +100,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
         if (names_program(*node->object)) {
             if (field->section == ast::VarSectionKind::InOut ||
                 field->section == ast::VarSectionKind::Temp || field->declaration == nullptr) {
-                error(DiagnosticCode::E0212, node->member.range,
-                      fmt::format("'{}' is internal to '{}'", field->name, type.name));
+                program_.refused_by_checks(DiagnosticCode::E0212); // types/operand_typing.cpp
                 return std::nullopt;
             }
             Place result = member(*object, field->offset, *field->type);
@@ -113,8 +111,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
             (field->section == ast::VarSectionKind::Var ||
              field->section == ast::VarSectionKind::InOut)) {
             // 6.5.2.2: only inputs and outputs of an instance are visible outside it.
-            error(DiagnosticCode::E0212, node->member.range,
-                  fmt::format("'{}' is internal to '{}'", field->name, type.name));
+            program_.refused_by_checks(DiagnosticCode::E0212); // types/operand_typing.cpp
             return std::nullopt;
         }
         Place result = member(*object, field->offset, *field->type);
@@ -136,15 +133,15 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
             return std::nullopt;
         }
         if (pointer->type->kind != sema::TypeKind::Reference || pointer->type->element == nullptr) {
-            error(DiagnosticCode::E0304, expression.range,
-                  fmt::format("'^' needs a reference, not {}", pointer->type->name));
+            program_.refused_by_checks(DiagnosticCode::E0304); // types/expression_typer.cpp
             return std::nullopt;
         }
         return Place{.kind = Place::Kind::Indirect,
                      .type = pointer->type->element,
                      .operand = pointer->operand};
     }
-    error(DiagnosticCode::E0315, expression.range, "this expression is not a variable");
+    program_.refused_by_checks(
+        DiagnosticCode::E0315); // types/statement_typing.cpp, call_typing.cpp
     return std::nullopt;
 }
 
@@ -229,19 +226,18 @@ PouGenerator::element_index(const ast::Expression& index, std::int64_t lower, st
 }
 
 std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
-                                         const SourceRange& range) {
+                                         const SourceRange& /*range*/) {
     auto array = place(*node.array);
     if (!array) {
         return std::nullopt;
     }
     const sema::Type& type = *array->type;
     if (type.kind != sema::TypeKind::Array) {
-        error(DiagnosticCode::E0308, range, fmt::format("{} is not an array", type.name));
+        program_.refused_by_checks(DiagnosticCode::E0308); // types/operand_typing.cpp
         return std::nullopt;
     }
     if (node.indices.size() != type.dimensions.size()) {
-        error(DiagnosticCode::E0308, range,
-              fmt::format("{} needs {} indices", type.name, type.dimensions.size()));
+        program_.refused_by_checks(DiagnosticCode::E0308); // types/operand_typing.cpp
         return std::nullopt;
     }
     if (type.conformant) {
@@ -328,8 +324,7 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
 std::optional<Value> PouGenerator::integer_index(const ast::Expression& expression) {
     const auto value = eval(expression, &types_.elementary(E::Dint));
     if (value && !sema::is_integer(*value->type) && value->type->kind != sema::TypeKind::Enum) {
-        error(DiagnosticCode::E0307, expression.range,
-              fmt::format("an array index must be an integer, not {}", value->type->name));
+        program_.refused_by_checks(DiagnosticCode::E0307); // types/operand_typing.cpp
         return std::nullopt;
     }
     return value;
@@ -350,19 +345,17 @@ PouGenerator::index_value(const ast::Expression& expression, bool negative_lower
 }
 
 std::optional<Value> PouGenerator::bit_word(const ast::BitAccessExpression& node,
-                                            const SourceRange& range) {
+                                            const SourceRange& /*range*/) {
     const auto word = eval(*node.object, nullptr);
     if (!word) {
         return std::nullopt;
     }
     if (!sema::is_bit_string(*word->type) && !sema::is_integer(*word->type)) {
-        error(DiagnosticCode::E0304, range,
-              fmt::format("bit access needs a bit string, not {}", word->type->name));
+        program_.refused_by_checks(DiagnosticCode::E0304); // types/expression_typer.cpp
         return std::nullopt;
     }
     if (node.bit >= word->type->size * 8) {
-        error(DiagnosticCode::E0105, range,
-              fmt::format("{} has no bit {}", word->type->name, node.bit));
+        program_.refused_by_checks(DiagnosticCode::E0105); // types/expression_typer.cpp
         return std::nullopt;
     }
     return word;
@@ -395,8 +388,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         }
         if (symbol->kind != sema::SymbolKind::Variable &&
             !(symbol->kind == sema::SymbolKind::Pou && symbol->pou == &pou_)) {
-            error(DiagnosticCode::E0204, expression.range,
-                  fmt::format("'{}' is not a value", symbol->name));
+            program_.refused_by_checks(DiagnosticCode::E0204); // types/operand_typing.cpp
             return std::nullopt;
         }
     }
@@ -447,7 +439,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
             result, masked);
         return Value{result, &boolean};
     }
-    error(DiagnosticCode::E0504, expression.range, "this expression is not supported");
+    program_.refused_by_checks(DiagnosticCode::E0504); // every kind of expression is above
     return std::nullopt;
 }
 
@@ -501,8 +493,7 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
     }
     auto bytes = program_.constant_value(expression, *type);
     if (!bytes) {
-        error(DiagnosticCode::E0311, expression.range,
-              fmt::format("this literal is not a valid {}", type->name));
+        // constant_value() reported it (types/operand_typing.cpp refuses such literals)
         return std::nullopt;
     }
     return Value{program_.constant(*bytes, std::max<std::uint32_t>(type->align, 1)), type};
@@ -512,8 +503,7 @@ std::optional<Value> PouGenerator::character(const ast::Expression& expression, 
     const sema::Type& character_type = types_.elementary(type);
     const auto bytes = program_.constant_value(expression, character_type);
     if (!bytes) {
-        error(DiagnosticCode::E0311, expression.range,
-              fmt::format("this literal is not a valid {}", character_type.name));
+        // constant_value() reported it (types/operand_typing.cpp refuses such literals)
         return std::nullopt;
     }
     return Value{program_.constant(*bytes, character_type.size), &character_type};
@@ -537,9 +527,9 @@ std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type&
 }
 
 std::optional<Value> PouGenerator::function_value(const std::optional<Value>& called,
-                                                  const SourceRange& range) {
+                                                  const SourceRange& /*range*/) {
     if (called && called->type == nullptr) {
-        error(DiagnosticCode::E0309, range, "this call has no value");
+        program_.refused_by_checks(DiagnosticCode::E0309); // types/expression_typer.cpp
         return std::nullopt;
     }
     return called;
@@ -554,16 +544,10 @@ std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
     return value ? value_as(*value, expression.range, want, dest) : std::nullopt;
 }
 
-std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRange& range,
+std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRange& /*range*/,
                                             const sema::Type& want, const Destination* dest) {
     if (!sema::converts_implicitly(*value.type, want)) {
-        error(DiagnosticCode::E0301, range,
-              fmt::format(
-                  "a {} value cannot be used as {}{}", value.type->name, want.name,
-                  value.type->kind == sema::TypeKind::Elementary &&
-                          want.kind == sema::TypeKind::Elementary
-                      ? fmt::format(" (convert it with {}_TO_{})", value.type->name, want.name)
-                      : ""));
+        program_.refused_by_checks(DiagnosticCode::E0301); // types/expression_typer.cpp
         return std::nullopt;
     }
     if (want.range) {
@@ -603,7 +587,7 @@ std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Express
 }
 
 std::optional<std::pair<Value, Value>> PouGenerator::unify(const Value& l, const Value& r,
-                                                           const SourceRange& range) {
+                                                           const SourceRange& /*range*/) {
     if (l.type == r.type || (sema::is_time_like(*l.type) && sema::is_time_like(*r.type)) ||
         (l.type->kind == sema::TypeKind::String && r.type->kind == sema::TypeKind::String &&
          l.type->wide == r.type->wide)) {
@@ -619,10 +603,7 @@ std::optional<std::pair<Value, Value>> PouGenerator::unify(const Value& l, const
         converted.iec = r.iec != nullptr ? r.iec : r.type;
         return std::pair(l, converted);
     }
-    error(DiagnosticCode::E0303, range,
-          fmt::format("operands of types {} and {} do not match",
-                      (l.iec != nullptr ? l.iec : l.type)->name,
-                      (r.iec != nullptr ? r.iec : r.type)->name));
+    program_.refused_by_checks(DiagnosticCode::E0303); // types/operator_typing.cpp
     return std::nullopt;
 }
 
@@ -631,7 +612,7 @@ bool PouGenerator::is_small_integer(const sema::Type& type) {
 }
 
 std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const sema::Type* hint,
-                                         const Destination* dest, const SourceRange& range) {
+                                         const Destination* dest, const SourceRange& /*range*/) {
     if (node.op == ast::UnaryOperator::Plus) {
         return eval(*node.operand, hint, dest);
     }
@@ -642,8 +623,7 @@ std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const
     const sema::Type& type = *value->type;
     if (node.op == ast::UnaryOperator::Negate) {
         if (!sema::is_numeric(type) && !(sema::is_time_like(type) && type.elementary <= E::Ltime)) {
-            error(DiagnosticCode::E0304, range,
-                  fmt::format("'-' needs a number, not {}", type.name));
+            program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
             return std::nullopt;
         }
         const Operand result = result_operand(type, dest);
@@ -656,8 +636,7 @@ std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const
     } else if (sema::is_bit_string(type) || sema::is_integer(type)) {
         emit(op_width("Not", type), result, value->operand);
     } else {
-        error(DiagnosticCode::E0304, range,
-              fmt::format("NOT needs a BOOL or bit string, not {}", type.name));
+        program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
         return std::nullopt;
     }
     return Value{result, &type};
@@ -883,9 +862,7 @@ std::optional<Value> PouGenerator::pointer_offset(bool add, const Value& pointer
         return std::nullopt;
     }
     if (!sema::is_integer(*offset->type)) {
-        error(DiagnosticCode::E0304, bytes.range,
-              fmt::format("a pointer moves by a whole number of bytes, not by a {}",
-                          offset->type->name));
+        program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
         return std::nullopt;
     }
     const auto wide = convert(*offset, lint, nullptr);
@@ -903,9 +880,7 @@ std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
     }
     const bool real = sema::is_real(*value->type);
     if (!real && !sema::is_integer(*value->type)) {
-        error(
-            DiagnosticCode::E0304, factor.range,
-            fmt::format("a TIME is multiplied or divided by a number, not {}", value->type->name));
+        program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
         return std::nullopt;
     }
     const sema::Type& wide = real ? types_.elementary(E::Lreal) : lint;
@@ -919,7 +894,7 @@ std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
 
 std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,
                                          const Value& right, const Destination* dest,
-                                         const SourceRange& range) {
+                                         const SourceRange& /*range*/) {
     using Op = ast::BinaryOperator;
     const sema::Type& type = *left.type;
     if (oper == Op::Less || oper == Op::Greater || oper == Op::LessEqual ||
@@ -927,14 +902,12 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         if (auto result = compare(oper, left, right, dest)) {
             return result;
         }
-        error(DiagnosticCode::E0304, range,
-              fmt::format("values of type {} cannot be compared", type.name));
+        program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
         return std::nullopt;
     }
     if (oper == Op::And || oper == Op::Or || oper == Op::Xor) {
         if (!sema::is_bool(type) && !sema::is_bit_string(type)) {
-            error(DiagnosticCode::E0304, range,
-                  fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", type.name));
+            program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
             return std::nullopt;
         }
         const Operand result = result_operand(type, dest);
@@ -967,21 +940,17 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         } else if (!((oper == Op::Add || oper == Op::Subtract) &&
                      (durations || point_plus_duration) && type.elementary != E::TimeOfDay &&
                      type.elementary != E::Ltod && type.elementary != E::Date)) {
-            error(DiagnosticCode::E0303, range,
-                  fmt::format("this operation is not defined on {} and {} (use the "
-                              "functions of IEC 61131-3 table 30)",
-                              type.name, right.type->name));
+            program_.refused_by_checks(DiagnosticCode::E0303); // types/operator_typing.cpp
             return std::nullopt;
         }
     } else if (!sema::is_numeric(type) && !sema::is_bit_string(type)) {
         // BYTE..LWORD count as unsigned integers of their width, as in CODESYS: libraries
         // (CRCs, hashes, OSCAT) add and multiply DWORDs.
-        error(DiagnosticCode::E0304, range,
-              fmt::format("arithmetic needs numbers, not {}", type.name));
+        program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
         return std::nullopt;
     }
     if (oper == Op::Modulo && !sema::is_integer(type) && !sema::is_bit_string(type)) {
-        error(DiagnosticCode::E0304, range, fmt::format("MOD needs integers, not {}", type.name));
+        program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
         return std::nullopt;
     }
     const Operand result = result_operand(*result_type, dest);

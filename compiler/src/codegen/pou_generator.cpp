@@ -157,7 +157,8 @@ Operand PouGenerator::native_block() const {
     return Operand::out(sema::align_up(out_pending_, 8));
 }
 
-std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const SourceRange& range) {
+std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol,
+                                            const SourceRange& /*range*/) {
     // A PROGRAM's own VAR_GLOBAL lives in its instance; other globals in the configuration.
     const auto local = locals_.find(sema::fold_case(symbol.name));
     if (symbol.kind == sema::SymbolKind::Variable &&
@@ -165,8 +166,7 @@ std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const So
          (symbol.section == ast::VarSectionKind::Global && local == locals_.end()))) {
         auto global = program_.global(symbol.name);
         if (!global) {
-            error(DiagnosticCode::E0208, range,
-                  fmt::format("no global variable '{}' in the configuration", symbol.name));
+            program_.refused_by_checks(DiagnosticCode::E0208); // sema/name_resolver.cpp
             return std::nullopt;
         }
         if (symbol.section == ast::VarSectionKind::External && symbol.variable != nullptr &&
@@ -189,7 +189,7 @@ std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol, const So
     }
     // A variable missing from the frame is one whose declaration failed, already reported.
     if (symbol.kind != sema::SymbolKind::Variable || !program_.diagnostics().has_errors()) {
-        error(DiagnosticCode::E0204, range, fmt::format("'{}' is not a variable", symbol.name));
+        program_.refused_by_checks(DiagnosticCode::E0204); // types/operand_typing.cpp
     }
     return std::nullopt;
 }

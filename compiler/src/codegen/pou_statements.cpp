@@ -216,8 +216,7 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
     const sema::Type& type = *selector->type;
     if (!sema::is_integer(type) && !sema::is_bit_string(type) &&
         type.kind != sema::TypeKind::Enum) {
-        error(DiagnosticCode::E0304, node.selector->range,
-              fmt::format("a CASE selector must be an integer or enumeration, not {}", type.name));
+        program_.refused_by_checks(DiagnosticCode::E0304); // types/statement_typing.cpp
         return;
     }
     const vm::Label end = builder_.label();
@@ -241,9 +240,9 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
             if (!low_value || !high_value) {
                 const bool constant = types_.fold_unsigned(*label.low) &&
                                       (!label.high || types_.fold_unsigned(*label.high));
-                error(constant ? DiagnosticCode::E0301 : DiagnosticCode::E0313, label.range,
-                      constant ? fmt::format("a CASE label must be a value of {}", type.name)
-                               : "a CASE label must be a constant");
+                program_.refused_by_checks(
+                    constant ? DiagnosticCode::E0301
+                             : DiagnosticCode::E0313); // types/statement_typing.cpp
                 continue;
             }
             const auto low = value_as(*label.low, type);

@@ -31,9 +31,11 @@ vm::PouKind vm_kind(ast::PouKind kind) {
 
 } // namespace
 
-ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, Diagnostics& diagnostics,
+ProgramGenerator::ProgramGenerator(PouSource program, PouSource library,
+                                   const types::TypedProgram& typed, Diagnostics& diagnostics,
                                    const CompileOptions& options)
-    : program_(program), library_(library), diagnostics_(diagnostics), options_(options),
+    : program_(program), library_(library), typed_(typed), diagnostics_(diagnostics),
+      options_(options),
       types_(
           program.model, diagnostics, [this](std::string_view name) { return library_pou(name); },
           [this](const ast::VariableDeclaration& declaration) {
@@ -534,8 +536,8 @@ std::optional<Place> ProgramGenerator::direct_variable(const ast::DirectAddress&
 
 void ProgramGenerator::refused_by_checks(DiagnosticCode code) {
     diagnostics_.error(DiagnosticCode::E0001, {},
-                       fmt::format("internal error: code generation met what the checks refuse "
-                                   "({}), and they did not report it",
+                       fmt::format("internal error: code generation met what an earlier stage "
+                                   "refuses ({}), and it did not report it",
                                    describe(code).name));
 }
 

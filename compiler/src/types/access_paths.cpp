@@ -106,6 +106,7 @@ const sema::Type* ExpressionTyper::access_path_target(const ast::Configuration& 
                    ? variable_type(*global)
                    : nullptr;
     }
+    AccessPath path{.variable = first, .members = {}};
     for (++next; type != nullptr && next < names.size(); ++next) {
         const sema::Field* field =
             type->kind == sema::TypeKind::Struct || type->kind == sema::TypeKind::Instance
@@ -113,8 +114,14 @@ const sema::Type* ExpressionTyper::access_path_target(const ast::Configuration& 
                 : nullptr;
         type = field != nullptr && field->section != ast::VarSectionKind::InOut ? field->type
                                                                                 : nullptr;
+        path.members.push_back(names[next].name);
     }
-    return type != nullptr ? type : unknown();
+    if (type == nullptr) {
+        return unknown();
+    }
+    // What code generation publishes (codegen/access_paths.cpp).
+    program_.set_access_path(declaration, std::move(path));
+    return type;
 }
 
 } // namespace eposp::compiler::types

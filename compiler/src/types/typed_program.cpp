@@ -36,6 +36,15 @@ void TypedProgram::set_constant(const ast::Expression& expression, Constant valu
     constants_.insert_or_assign(&expression, std::move(value));
 }
 
+const AccessPath* TypedProgram::access_path(const ast::AccessDeclaration& declaration) const {
+    const auto found = access_paths_.find(&declaration);
+    return found != access_paths_.end() ? &found->second : nullptr;
+}
+
+void TypedProgram::set_access_path(const ast::AccessDeclaration& declaration, AccessPath path) {
+    access_paths_.insert_or_assign(&declaration, std::move(path));
+}
+
 void TypedProgram::set_call(const ast::Expression& expression, CallTarget target) {
     calls_.insert_or_assign(&expression, std::move(target));
 }

@@ -19,11 +19,11 @@ limit := 4;
 END_PROGRAM
 )st")};
     Diagnostics diagnostics;
-    const auto front_end = types::resolve_names(sources, files, diagnostics);
+    const auto front_end = types::analyse(sources, files, diagnostics);
     ASSERT_FALSE(diagnostics.has_errors()) << render(diagnostics, sources);
     codegen::ProgramGenerator generator({*front_end->model, front_end->units, 0},
                                         {*front_end->library_model, front_end->library_units},
-                                        diagnostics, {});
+                                        *front_end->program, diagnostics, {});
     EXPECT_FALSE(generator.generate().has_value());
     ASSERT_EQ(diagnostics.all().size(), 1u) << render(diagnostics, sources);
     EXPECT_EQ(diagnostics.all().front().code, DiagnosticCode::E0001);

@@ -56,6 +56,14 @@ struct CallTarget {
     const sema::Type* result = nullptr;
 };
 
+/// A VAR_ACCESS path as the typing stage resolved it (types/access_paths.cpp): the program
+/// instance or global variable it starts at (its name, case-folded) and the members below it,
+/// a leading resource name dropped. A direct address (`%IW4`) has none: it is its own target.
+struct AccessPath {
+    std::string variable;
+    std::vector<std::string> members;
+};
+
 class TypedProgram {
 public:
     TypedProgram(const sema::SemanticModel& model,
@@ -73,6 +81,9 @@ public:
     const Constant* constant_of(const ast::Expression& expression) const;
     /// What a CallExpression calls; null for any other expression.
     const CallTarget* call_target(const ast::Expression& expression) const;
+
+    /// What a VAR_ACCESS declaration names; null for a direct address or a path refused.
+    const AccessPath* access_path(const ast::AccessDeclaration& declaration) const;
 
     /// Every value stored, in the order of the program (checks/constant_subranges.cpp).
     const std::vector<Store>& stores() const { return stores_; }
@@ -93,6 +104,7 @@ public:
     void set_constant(const ast::Expression& expression, Constant value);
     void set_call(const ast::Expression& expression, CallTarget target);
     void add_store(Store store) { stores_.push_back(store); }
+    void set_access_path(const ast::AccessDeclaration& declaration, AccessPath path);
 
 private:
     const sema::SemanticModel& model_;
@@ -103,6 +115,7 @@ private:
     std::unordered_map<const ast::Expression*, Constant> constants_;
     std::unordered_map<const ast::Expression*, CallTarget> calls_;
     std::vector<Store> stores_;
+    std::unordered_map<const ast::AccessDeclaration*, AccessPath> access_paths_;
 };
 
 /// Types every expression of `units` (POU bodies, initial values, CASE labels, FOR bounds,
