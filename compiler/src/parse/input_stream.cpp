@@ -1,11 +1,24 @@
 #include "input_stream.hpp"
 
+#include "../utf8.hpp"
+
+#include <algorithm>
+
 namespace eposp::compiler {
 
-// The runtime converts the text to UTF-32 into a string sized for the longest conversion, about
-// five times what it keeps; its spare capacity would stay allocated while the file is parsed.
-InputStream::InputStream(const std::string& text) : ANTLRInputStream(text) {
-    _data.shrink_to_fit();
+// As the runtime's load(), which drops a leading byte order mark, but decoded in one pass into a
+// string of the right size: the runtime converts through std::wstring_convert, slowly, into a
+// string sized for the longest conversion, five times what it keeps.
+InputStream::InputStream(const std::string& text) {
+    std::string_view bytes(text);
+    if (bytes.starts_with("\xEF\xBB\xBF")) {
+        bytes.remove_prefix(3);
+    }
+    _data.reserve(static_cast<std::size_t>(std::count_if(
+        bytes.begin(), bytes.end(), [](char byte) { return (byte & 0xC0) != 0x80; })));
+    for (std::size_t i = 0; i < bytes.size();) {
+        _data.push_back(utf8::decode(bytes, i).value_or(U'\uFFFD'));
+    }
 }
 
 // The runtime converts every text from UTF-32 through std::wstring_convert.

@@ -1,5 +1,7 @@
-#include "StructuredTextParser.h"
 #include "lexer.hpp"
+
+#include "StructuredTextParser.h"
+#include "source_token.hpp"
 
 #include <CommonTokenFactory.h>
 #include <algorithm>
@@ -476,8 +478,7 @@ bool is_skipped(std::size_t type) {
 
 } // namespace
 
-Lexer::Lexer(InputStream& input)
-    : input_(input), text_(input.code_points()), source_(this, &input) {}
+Lexer::Lexer(InputStream& input) : input_(input), text_(input.code_points()) {}
 
 antlr4::TokenFactory<antlr4::CommonToken>* Lexer::getTokenFactory() {
     return antlr4::CommonTokenFactory::DEFAULT.get();
@@ -488,11 +489,9 @@ std::unique_ptr<antlr4::Token> Lexer::nextToken() {
         const std::size_t start = position_;
         if (start >= text_.size()) {
             // Like ANTLR's: empty, stop index one before its start (all ones in an empty file).
-            auto eof = std::make_unique<antlr4::CommonToken>(
-                source_, antlr4::Token::EOF, antlr4::Token::DEFAULT_CHANNEL, start, start - 1);
-            eof->setLine(line_);
-            eof->setCharPositionInLine(column_);
-            return eof;
+            return std::make_unique<SourceToken>(*this, antlr4::Token::EOF,
+                                                 antlr4::Token::DEFAULT_CHANNEL, start, start - 1,
+                                                 line_, column_, tokens_++);
         }
         const Match token = match(text_, start);
         if (is_skipped(token.type)) {
@@ -502,10 +501,8 @@ std::unique_ptr<antlr4::Token> Lexer::nextToken() {
         // Pragmas stay on the hidden channel, where the AST builder reads them.
         const std::size_t channel = token.type == T::PRAGMA ? antlr4::Token::HIDDEN_CHANNEL
                                                             : antlr4::Token::DEFAULT_CHANNEL;
-        auto result = std::make_unique<antlr4::CommonToken>(source_, token.type, channel, start,
-                                                            token.end - 1);
-        result->setLine(line_);
-        result->setCharPositionInLine(column_);
+        auto result = std::make_unique<SourceToken>(*this, token.type, channel, start,
+                                                    token.end - 1, line_, column_, tokens_++);
         advance_to(token.end);
         return result;
     }

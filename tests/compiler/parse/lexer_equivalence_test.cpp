@@ -12,6 +12,7 @@
 #include "parse/parse_tokens.hpp"
 #include "utf8.hpp"
 
+#include <CommonTokenStream.h>
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -83,11 +84,21 @@ void expect_same(const std::string& bytes, const std::string& name, bool parse =
     }
     SCOPED_TRACE(name);
     const std::string text = as_text(bytes);
+    // The input stream decodes the text itself, as the runtime's would.
+    ASSERT_EQ(InputStream(text).toString(), antlr4::ANTLRInputStream(text).toString());
     InputStream generated_input(text);
     InputStream hand_written_input(text);
     const auto expected = tokens_of(*generated_lexer(generated_input));
     const auto actual = tokens_of(*hand_written_lexer(hand_written_input));
     ASSERT_EQ(expected, actual) << "input: " << text;
+    // The hand-written lexer numbers its tokens itself, as the token stream would.
+    InputStream numbered_input(text);
+    Lexer numbered(numbered_input);
+    antlr4::CommonTokenStream stream(&numbered);
+    stream.fill();
+    for (std::size_t i = 0; i < stream.size(); ++i) {
+        ASSERT_EQ(stream.get(i)->getTokenIndex(), i) << "input: " << text;
+    }
     if (parse) {
         ASSERT_EQ(parsed_with(text, generated_lexer), parsed_with(text, hand_written_lexer))
             << "input: " << text;
@@ -381,7 +392,9 @@ TEST(LexerEquivalence, EveryLiteralFormWholeAndCutShort) {
                                     "|",
                                     "\f",
                                     "\v",
-                                    std::string("\0x", 2)};
+                                    std::string("\0x", 2),
+                                    "\xEF\xBB\xBFx",
+                                    "x\xEF\xBB\xBF"};
     for (const std::string& literal : literals) {
         for (std::size_t length = 0; length <= literal.size(); ++length) {
             const std::string cut = literal.substr(0, length);
