@@ -55,16 +55,13 @@ ast::BinaryOperator binary_operator(Operation operation) {
     }
 }
 
-/// The spelling of a type in the names of the VM's natives (`TOD_TO_STRING`).
-std::string native_type_name(E type) {
-    switch (type) {
-    case E::TimeOfDay:
-        return "TOD";
-    case E::DateAndTime:
-        return "DT";
-    default:
-        return std::string(ast::name_of(type));
-    }
+/// The manifest's name of an elementary type (vm::NativeType lists them in its order).
+vm::NativeType native_of(E type) {
+    return static_cast<vm::NativeType>(type);
+}
+
+vm::stdlib::CharWidth width_of(bool wide) {
+    return wide ? vm::stdlib::CharWidth::Wide : vm::stdlib::CharWidth::Narrow;
 }
 
 /// Nanoseconds per unit when a time converts to or from a number (CODESYS: TIME and TOD in
@@ -206,8 +203,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
                                        : temp(want);
             const sema::Type& target =
                 dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
-            call_native(from.wide ? "WSTRING_TO_STRING" : "STRING_TO_WSTRING",
-                        {false, S::Bool, {S::Ptr, S::Ptr}}, {Value{result, &target}, value});
+            const auto native = vm::stdlib::text_width_binding(width_of(want.wide));
+            call_native(native.name, native.signature, {Value{result, &target}, value});
             return Value{result, &target};
         }
         // Table 22: a WSTRING converts to and from WCHAR only; a STRING to and from every
@@ -227,15 +224,15 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
                                        : temp(want);
             const sema::Type& target =
                 dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
-            call_native(native_type_name(from.elementary) + (wide ? "_TO_WSTRING" : "_TO_STRING"),
-                        {false, S::Bool, {S::Ptr, sema::scalar_of(from)}},
-                        {Value{result, &target}, value});
+            const auto native =
+                vm::stdlib::to_text_binding(native_of(from.elementary), width_of(wide));
+            call_native(native.name, native.signature, {Value{result, &target}, value});
             return Value{result, &target};
         }
-        const vm::NativeSignature signature{true, sema::scalar_of(want), {S::Ptr}};
-        call_native((wide ? "WSTRING_TO_" : "STRING_TO_") + native_type_name(want.elementary),
-                    signature, {value});
-        return native_result(signature, want, dest);
+        const auto native =
+            vm::stdlib::from_text_binding(native_of(want.elementary), width_of(wide));
+        call_native(native.name, native.signature, {value});
+        return native_result(native.signature, want, dest);
     }
     if (!sema::is_scalar(from) || !sema::is_scalar(want) ||
         from.kind == sema::TypeKind::Reference || want.kind == sema::TypeKind::Reference) {
@@ -248,10 +245,9 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     if (from_time && to_time) {
         if (from.elementary == E::DateAndTime && want.elementary != E::DateAndTime &&
             (want.elementary == E::Date || want.elementary == E::TimeOfDay)) {
-            const vm::NativeSignature signature{true, S::I64, {S::I64}};
-            call_native(want.elementary == E::Date ? "DT_TO_DATE" : "DT_TO_TOD", signature,
-                        {value});
-            return native_result(signature, want, dest);
+            const auto native = vm::stdlib::date_time_part_binding(native_of(want.elementary));
+            call_native(native.name, native.signature, {value});
+            return native_result(native.signature, want, dest);
         }
         return Value{value.operand, &want}; // the same nanoseconds
     }

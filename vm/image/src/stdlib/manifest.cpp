@@ -291,6 +291,87 @@ std::vector<NativeBinding> standard_function_natives() {
     return natives;
 }
 
+Scalar native_scalar(NativeType type) {
+    using S = Scalar;
+    switch (type) {
+    case T::Bool:
+        return S::Bool;
+    case T::Sint:
+        return S::I8;
+    case T::Int:
+        return S::I16;
+    case T::Dint:
+        return S::I32;
+    case T::Usint:
+    case T::Byte:
+    case T::Char:
+        return S::U8;
+    case T::Uint:
+    case T::Word:
+    case T::Wchar:
+        return S::U16;
+    case T::Udint:
+    case T::Dword:
+        return S::U32;
+    case T::Ulint:
+    case T::Lword:
+        return S::U64;
+    case T::Real:
+        return S::F32;
+    case T::Lreal:
+        return S::F64;
+    case T::String:
+    case T::Wstring:
+        return S::Ptr;
+    default: // LINT, the durations, dates and times of day: 64-bit counts
+        return S::I64;
+    }
+}
+
+namespace {
+
+/// A type's name in the natives' names: TOD and DT short, as CODESYS names their conversions.
+std::string conversion_name(NativeType type) {
+    switch (type) {
+    case T::TimeOfDay:
+        return "TOD";
+    case T::DateAndTime:
+        return "DT";
+    case T::Ltod:
+        return "LTIME_OF_DAY";
+    case T::Ldt:
+        return "LDATE_AND_TIME";
+    default:
+        return std::string(native_type_name(type));
+    }
+}
+
+std::string text_name(CharWidth width) {
+    return width == CharWidth::Wide ? "WSTRING" : "STRING";
+}
+
+} // namespace
+
+NativeBinding to_text_binding(NativeType from, CharWidth width) {
+    return {conversion_name(from) + "_TO_" + text_name(width),
+            {false, Scalar::Bool, {Scalar::Ptr, native_scalar(from)}}};
+}
+
+NativeBinding from_text_binding(NativeType to, CharWidth width) {
+    return {text_name(width) + "_TO_" + conversion_name(to),
+            {true, native_scalar(to), {Scalar::Ptr}}};
+}
+
+NativeBinding text_width_binding(CharWidth to) {
+    const CharWidth from = to == CharWidth::Wide ? CharWidth::Narrow : CharWidth::Wide;
+    return {text_name(from) + "_TO_" + text_name(to),
+            {false, Scalar::Bool, {Scalar::Ptr, Scalar::Ptr}}};
+}
+
+NativeBinding date_time_part_binding(NativeType part) {
+    return {"DT_TO_" + conversion_name(part), {true, Scalar::I64, {Scalar::I64}}};
+}
+
 std::span<const StandardFunctionBlock> standard_function_blocks() {
     return kFunctionBlocks;
 }

@@ -26,23 +26,24 @@ enum class TextForm : std::uint8_t {
     DateAndTime
 };
 
+/// A type the conversions to and from STRING cover; its scalar is the manifest's.
 struct ElementaryType {
-    const char* name;
-    Scalar scalar;
+    NativeType type;
     TextForm form;
+    Scalar scalar() const { return native_scalar(type); }
 };
 
 constexpr ElementaryType kTypes[] = {
-    {"BOOL", S::Bool, TextForm::Bool},     {"SINT", S::I8, TextForm::Signed},
-    {"INT", S::I16, TextForm::Signed},     {"DINT", S::I32, TextForm::Signed},
-    {"LINT", S::I64, TextForm::Signed},    {"USINT", S::U8, TextForm::Unsigned},
-    {"UINT", S::U16, TextForm::Unsigned},  {"UDINT", S::U32, TextForm::Unsigned},
-    {"ULINT", S::U64, TextForm::Unsigned}, {"BYTE", S::U8, TextForm::Unsigned},
-    {"WORD", S::U16, TextForm::Unsigned},  {"DWORD", S::U32, TextForm::Unsigned},
-    {"LWORD", S::U64, TextForm::Unsigned}, {"REAL", S::F32, TextForm::Real},
-    {"LREAL", S::F64, TextForm::Real},     {"TIME", S::I64, TextForm::Time},
-    {"LTIME", S::I64, TextForm::LongTime}, {"DATE", S::I64, TextForm::Date},
-    {"TOD", S::I64, TextForm::TimeOfDay},  {"DT", S::I64, TextForm::DateAndTime},
+    {NativeType::Bool, TextForm::Bool},           {NativeType::Sint, TextForm::Signed},
+    {NativeType::Int, TextForm::Signed},          {NativeType::Dint, TextForm::Signed},
+    {NativeType::Lint, TextForm::Signed},         {NativeType::Usint, TextForm::Unsigned},
+    {NativeType::Uint, TextForm::Unsigned},       {NativeType::Udint, TextForm::Unsigned},
+    {NativeType::Ulint, TextForm::Unsigned},      {NativeType::Byte, TextForm::Unsigned},
+    {NativeType::Word, TextForm::Unsigned},       {NativeType::Dword, TextForm::Unsigned},
+    {NativeType::Lword, TextForm::Unsigned},      {NativeType::Real, TextForm::Real},
+    {NativeType::Lreal, TextForm::Real},          {NativeType::Time, TextForm::Time},
+    {NativeType::Ltime, TextForm::LongTime},      {NativeType::Date, TextForm::Date},
+    {NativeType::TimeOfDay, TextForm::TimeOfDay}, {NativeType::DateAndTime, TextForm::DateAndTime},
 };
 
 /// Parameter `index` of an integer or BOOL scalar, zero-extended to 64 bits.
@@ -66,7 +67,7 @@ std::int64_t sign_extend(std::uint64_t raw, Scalar scalar) {
 
 void format_parameter(ValueText& out, const NativeArgs& args, const ElementaryType& type) {
     const auto raw = [&] {
-        return raw_parameter(args, 1, type.scalar);
+        return raw_parameter(args, 1, type.scalar());
     };
     const auto time = [&] {
         return args.get<std::int64_t>(1);
@@ -76,12 +77,12 @@ void format_parameter(ValueText& out, const NativeArgs& args, const ElementaryTy
         out.append(raw() != 0 ? "TRUE" : "FALSE");
         return;
     case TextForm::Signed:
-        return format_signed(out, sign_extend(raw(), type.scalar));
+        return format_signed(out, sign_extend(raw(), type.scalar()));
     case TextForm::Unsigned:
         return format_unsigned(out, raw());
     case TextForm::Real:
-        return type.scalar == S::F32 ? format_real(out, args.get<float>(1), true)
-                                     : format_real(out, args.get<double>(1), false);
+        return type.scalar() == S::F32 ? format_real(out, args.get<float>(1), true)
+                                       : format_real(out, args.get<double>(1), false);
     case TextForm::Time:
         return format_duration(out, time(), "T#");
     case TextForm::LongTime:
@@ -129,12 +130,12 @@ void set_integral_result(NativeArgs& args, Scalar scalar, std::int64_t value) {
 }
 
 void parse_into_result(NativeArgs& args, std::string_view text, const ElementaryType& type) {
-    if (type.scalar == S::F32) {
+    if (type.scalar() == S::F32) {
         args.set_result(static_cast<float>(parse_real(text)));
-    } else if (type.scalar == S::F64) {
+    } else if (type.scalar() == S::F64) {
         args.set_result(parse_real(text));
     } else {
-        set_integral_result(args, type.scalar, parse_integral(text, type.form));
+        set_integral_result(args, type.scalar(), parse_integral(text, type.form));
     }
 }
 
@@ -142,13 +143,13 @@ void parse_into_result(NativeArgs& args, std::string_view text, const Elementary
 
 void register_string_conversions(NativeRegistry& registry) {
     for (const auto& type : kTypes) {
-        registry.add(std::string(type.name) + "_TO_STRING", {false, S::Bool, {S::Ptr, type.scalar}},
+        add_standard(registry, to_text_binding(type.type, CharWidth::Narrow),
                      [&type](NativeArgs& args) {
                          ValueText text;
                          format_parameter(text, args, type);
                          store_string(args, 0, text.view());
                      });
-        registry.add("STRING_TO_" + std::string(type.name), {true, type.scalar, {S::Ptr}},
+        add_standard(registry, from_text_binding(type.type, CharWidth::Narrow),
                      [&type](NativeArgs& args) {
                          if (const auto text = string_parameter(args, 0)) {
                              parse_into_result(args, *text, type);

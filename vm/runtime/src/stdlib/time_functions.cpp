@@ -46,10 +46,10 @@ void register_time_functions(NativeRegistry& registry) {
         args.set_result(wrap_to_day(wrap_to_day(args.get<std::int64_t>(0)) -
                                     wrap_to_day(args.get<std::int64_t>(1))));
     });
-    registry.add("DT_TO_DATE", {true, S::I64, {S::I64}}, [](NativeArgs& args) {
+    add_standard(registry, date_time_part_binding(NativeType::Date), [](NativeArgs& args) {
         args.set_result(floor_to_day(args.get<std::int64_t>(0)));
     });
-    registry.add("DT_TO_TOD", {true, S::I64, {S::I64}},
+    add_standard(registry, date_time_part_binding(NativeType::TimeOfDay),
                  [](NativeArgs& args) { args.set_result(wrap_to_day(args.get<std::int64_t>(0))); });
     // MUL_TIME / DIV_TIME (IN1: TIME, IN2: ANY_NUM): integer factors wrap like LINT arithmetic,
     // real ones round to the nanosecond.

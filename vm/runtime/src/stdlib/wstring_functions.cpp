@@ -8,8 +8,7 @@
 namespace eposp::vm::stdlib {
 
 void register_wstring_functions(NativeRegistry& registry) {
-    using S = Scalar;
-    registry.add("WSTRING_TO_STRING", {false, S::Bool, {S::Ptr, S::Ptr}}, [](NativeArgs& args) {
+    add_standard(registry, text_width_binding(CharWidth::Narrow), [](NativeArgs& args) {
         const StringParameter<char16_t> source(args, 1);
         if (!source) {
             return;
@@ -21,7 +20,7 @@ void register_wstring_functions(NativeRegistry& registry) {
         }
         store_string(args, 0, text.view());
     });
-    registry.add("STRING_TO_WSTRING", {false, S::Bool, {S::Ptr, S::Ptr}}, [](NativeArgs& args) {
+    add_standard(registry, text_width_binding(CharWidth::Wide), [](NativeArgs& args) {
         const auto source = string_parameter(args, 1);
         if (!source) {
             return;

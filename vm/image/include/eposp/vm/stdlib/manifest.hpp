@@ -172,6 +172,18 @@ NativeBinding native_binding(std::string_view name, Variant variant = Variant::B
 /// for the standard functions.
 std::vector<NativeBinding> standard_function_natives();
 
+/// The natives of the type conversions that are no opcode (table 22), named after the types
+/// (TOD, DT for the times of day and dates and times): `<type>_TO_STRING(dst, value)`,
+/// `<type>_TO_WSTRING` of WCHAR; `STRING_TO_<type>(text)`, `WSTRING_TO_WCHAR`.
+NativeBinding to_text_binding(NativeType from, CharWidth width);
+NativeBinding from_text_binding(NativeType to, CharWidth width);
+/// `STRING_TO_WSTRING(dst, text)` (to Wide) and `WSTRING_TO_STRING` (to Narrow).
+NativeBinding text_width_binding(CharWidth to);
+/// `DT_TO_DATE` and `DT_TO_TOD`: the date or the time of day of a DT.
+NativeBinding date_time_part_binding(NativeType part);
+/// How a native takes a value of the elementary `type`.
+Scalar native_scalar(NativeType type);
+
 struct StandardParameter {
     std::string_view name;
     bool output = false;
