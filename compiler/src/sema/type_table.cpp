@@ -562,15 +562,41 @@ std::optional<std::int64_t> TypeTable::enumerator(const Symbol& value) {
 }
 
 std::optional<std::int64_t> TypeTable::fold_integer(const ast::Expression& expression) {
-    const auto bits = fold(expression, false);
+    const auto bits = fold(expression, Arithmetic{});
     return bits ? std::optional(static_cast<std::int64_t>(*bits)) : std::nullopt;
 }
 
 std::optional<std::uint64_t> TypeTable::fold_unsigned(const ast::Expression& expression) {
-    return fold(expression, true);
+    return fold(expression, Arithmetic{.is_unsigned = true});
 }
 
-std::optional<std::uint64_t> TypeTable::fold(const ast::Expression& expression, bool unsigned64) {
+std::optional<std::uint64_t> TypeTable::fold_as(const ast::Expression& expression,
+                                                const Type& type) {
+    switch (scalar_of(type)) {
+    case vm::Scalar::U32:
+        return fold(expression, Arithmetic{.is_unsigned = true, .bits = 32});
+    case vm::Scalar::I64:
+        return fold(expression, Arithmetic{});
+    case vm::Scalar::U64:
+        return fold(expression, Arithmetic{.is_unsigned = true});
+    default:
+        return fold(expression, Arithmetic{.bits = 32});
+    }
+}
+
+std::optional<std::uint64_t> TypeTable::fold(const ast::Expression& expression,
+                                             Arithmetic arithmetic) {
+    const bool unsigned64 = arithmetic.is_unsigned && arithmetic.bits == 64;
+    // A result as the arithmetic holds it: cut to its bits, then sign- or zero-extended.
+    const auto held = [arithmetic](std::uint64_t bits) -> std::uint64_t {
+        if (arithmetic.bits == 64) {
+            return bits;
+        }
+        return arithmetic.is_unsigned
+                   ? static_cast<std::uint32_t>(bits)
+                   : static_cast<std::uint64_t>(static_cast<std::int64_t>(
+                         static_cast<std::int32_t>(static_cast<std::uint32_t>(bits))));
+    };
     if (const Symbol* value = model_.enum_value(expression)) {
         const auto number = enumerator(*value);
         return number ? std::optional(static_cast<std::uint64_t>(*number)) : std::nullopt;
@@ -580,7 +606,7 @@ std::optional<std::uint64_t> TypeTable::fold(const ast::Expression& expression, 
             if (integer->magnitude > static_cast<std::uint64_t>(INT64_MAX) && !unsigned64) {
                 return integer->negative ? std::optional(std::uint64_t{1} << 63) : std::nullopt;
             }
-            return integer->negative ? 0ULL - integer->magnitude : integer->magnitude;
+            return held(integer->negative ? 0ULL - integer->magnitude : integer->magnitude);
         }
         return std::nullopt;
     }
@@ -598,25 +624,29 @@ std::optional<std::uint64_t> TypeTable::fold(const ast::Expression& expression, 
             if (value == nullptr || !constants_folding_.insert(symbol->variable).second) {
                 return std::nullopt;
             }
-            const auto folded = fold(**value, unsigned64);
+            // It holds the value of its own type, computed as that type computes.
+            const Type* own = resolve(symbol->variable->type);
+            const auto folded = own != nullptr && (is_integer(*own) || is_bit_string(*own))
+                                    ? fold_as(**value, *own)
+                                    : fold(**value, arithmetic);
             constants_folding_.erase(symbol->variable);
             return folded;
         }
         return std::nullopt;
     }
     if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
-        const auto operand = fold(*unary->operand, unsigned64);
+        const auto operand = fold(*unary->operand, arithmetic);
         if (!operand || unary->op == ast::UnaryOperator::Not) {
             return std::nullopt;
         }
-        return unary->op == ast::UnaryOperator::Negate ? 0ULL - *operand : *operand;
+        return unary->op == ast::UnaryOperator::Negate ? held(0ULL - *operand) : *operand;
     }
     const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
     if (binary == nullptr) {
         return std::nullopt;
     }
-    const auto left = fold(*binary->left, unsigned64);
-    const auto right = fold(*binary->right, unsigned64);
+    const auto left = fold(*binary->left, arithmetic);
+    const auto right = fold(*binary->right, arithmetic);
     if (!left || !right) {
         return std::nullopt;
     }
@@ -624,22 +654,23 @@ std::optional<std::uint64_t> TypeTable::fold(const ast::Expression& expression, 
     const std::uint64_t r = *right;
     const auto sl = static_cast<std::int64_t>(l);
     const auto sr = static_cast<std::int64_t>(r);
+    const std::int64_t minimum = arithmetic.bits == 32 ? INT32_MIN : INT64_MIN;
     switch (binary->op) {
     case ast::BinaryOperator::Add:
-        return l + r;
+        return held(l + r);
     case ast::BinaryOperator::Subtract:
-        return l - r;
+        return held(l - r);
     case ast::BinaryOperator::Multiply:
-        return l * r;
+        return held(l * r);
     case ast::BinaryOperator::Divide:
-        if (unsigned64) {
+        if (arithmetic.is_unsigned) {
             return r == 0 ? std::nullopt : std::optional(l / r);
         }
-        return sr == 0 || (sl == INT64_MIN && sr == -1)
+        return sr == 0 || (sl == minimum && sr == -1)
                    ? std::nullopt
-                   : std::optional(static_cast<std::uint64_t>(sl / sr));
+                   : std::optional(held(static_cast<std::uint64_t>(sl / sr)));
     case ast::BinaryOperator::Modulo:
-        if (unsigned64) {
+        if (arithmetic.is_unsigned) {
             return r == 0 ? std::nullopt : std::optional(l % r);
         }
         return sr == 0 || sr == -1 ? std::nullopt

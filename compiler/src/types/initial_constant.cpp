@@ -308,23 +308,18 @@ constant_bytes(const ast::Expression& expression, const sema::Type& type, sema::
         const std::uint64_t bits = integer->negative ? 0 - integer->magnitude : integer->magnitude;
         return integer_bytes(static_cast<std::int64_t>(bits), type.size);
     }
-    if (sema::scalar_of(type) == vm::Scalar::U64) {
-        // ULINT and LWORD: folded modulo 2^64, as they compute at run time, so that values
-        // above LINT's range (a constant named by another) fold too.
-        const auto value = types.fold_unsigned(expression);
-        return or_refused(value ? std::optional(integer_bytes(static_cast<std::int64_t>(*value),
-                                                              type.size))
-                                : std::nullopt);
-    }
-    const auto value = types.fold_integer(expression);
-    if (!value) {
+    const auto bits = types.fold_as(expression, type);
+    if (!bits) {
         return not_constant;
     }
-    if (!fits_integer(*value, type) && type.kind != sema::TypeKind::Enum) {
+    // ULINT and LWORD take any 64 bits; the others must hold the value their arithmetic gave.
+    const auto value = static_cast<std::int64_t>(*bits);
+    if (sema::scalar_of(type) != vm::Scalar::U64 && !fits_integer(value, type) &&
+        type.kind != sema::TypeKind::Enum) {
         return ConstantRefusal{DiagnosticCode::E0311,
-                               fmt::format("the value {} does not fit in {}", *value, type.name)};
+                               fmt::format("the value {} does not fit in {}", value, type.name)};
     }
-    return integer_bytes(*value, type.size);
+    return integer_bytes(value, type.size);
 }
 
 } // namespace eposp::compiler::types

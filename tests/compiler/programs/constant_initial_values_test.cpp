@@ -106,5 +106,37 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::uint64_t>("Main.half"), run.get<std::uint64_t>("Main.half_now"));
 }
 
+// Integers fold in the width they compute in at run time: DINT and narrower in 32 bits, UDINT
+// modulo 2^32; a constant named in a wider expression has its own type's value.
+TEST(ConstantInitialValues, IntegersWrapInTheWidthTheyComputeIn) {
+    StProgram run(R"(PROGRAM Main
+VAR CONSTANT
+    kHalf : DINT := (2147483647 + 1) / 2;
+    kWrapped : DINT := 2147483647 + 1;
+    kWide : LINT := kWrapped + 0;
+    kUnsigned : UDINT := (UDINT#4294967295 + 1) / 2;
+END_VAR
+VAR
+    big : DINT := 2147483647; top : UDINT := 4294967295;
+    half : DINT := kHalf; half_now : DINT;
+    wide : LINT := kWide; wide_now : LINT;
+    unsigned_half : UDINT := kUnsigned; unsigned_half_now : UDINT;
+END_VAR
+half_now := (big + 1) / 2;
+wide_now := DINT_TO_LINT(big + 1) + 0;
+unsigned_half_now := (top + 1) / 2;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int32_t>("Main.half"), -1'073'741'824);
+    EXPECT_EQ(run.get<std::int32_t>("Main.half"), run.get<std::int32_t>("Main.half_now"));
+    EXPECT_EQ(run.get<std::int64_t>("Main.wide"), INT32_MIN);
+    EXPECT_EQ(run.get<std::int64_t>("Main.wide"), run.get<std::int64_t>("Main.wide_now"));
+    EXPECT_EQ(run.get<std::uint32_t>("Main.unsigned_half"), 0U);
+    EXPECT_EQ(run.get<std::uint32_t>("Main.unsigned_half"),
+              run.get<std::uint32_t>("Main.unsigned_half_now"));
+}
+
 } // namespace
 } // namespace eposp::compiler::test

@@ -56,6 +56,10 @@ public:
     /// The same over the values of ULINT and LWORD (CASE labels of such a selector): literals
     /// up to 2^64 - 1, arithmetic modulo 2^64, / and MOD unsigned.
     std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression);
+    /// The same as a value of the integer `type` computes at run time (an initial value):
+    /// SINT to DINT, USINT, UINT, BYTE and WORD in DINT, UDINT and DWORD modulo 2^32, LINT in
+    /// 64 bits, ULINT and LWORD modulo 2^64; the result's bits, sign- or zero-extended.
+    std::optional<std::uint64_t> fold_as(const ast::Expression& expression, const Type& type);
 
     const SemanticModel& model() const { return model_; }
     /// Whether a declaration is in a CONSTANT section.
@@ -64,8 +68,13 @@ public:
     }
 
 private:
-    /// fold_integer and fold_unsigned: the result's 64 bits.
-    std::optional<std::uint64_t> fold(const ast::Expression& expression, bool unsigned64);
+    /// How folded arithmetic wraps: in `bits` (32 or 64), signed or not.
+    struct Arithmetic {
+        bool is_unsigned = false;
+        unsigned bits = 64;
+    };
+    /// fold_integer, fold_unsigned and fold_as: the result's 64 bits.
+    std::optional<std::uint64_t> fold(const ast::Expression& expression, Arithmetic arithmetic);
     Type& add(Type type);
     const Type* resolve_uncached(const ast::TypeSpec& spec);
     const Type* array(const ast::ArrayType& spec, const SourceRange& range);
