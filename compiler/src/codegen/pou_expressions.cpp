@@ -556,6 +556,17 @@ std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRang
     return convert(value, want, dest);
 }
 
+bool PouGenerator::of_untyped_literals(const ast::Expression& expression) {
+    if (const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node)) {
+        using Op = ast::BinaryOperator;
+        return (binary->op == Op::Add || binary->op == Op::Subtract ||
+                binary->op == Op::Multiply || binary->op == Op::Divide ||
+                binary->op == Op::Modulo) &&
+               of_untyped_literals(*binary->left) && of_untyped_literals(*binary->right);
+    }
+    return is_untyped_literal(expression);
+}
+
 std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& expression) {
     if (!is_untyped_literal(expression)) {
         return std::nullopt;
@@ -577,8 +588,10 @@ std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Express
         r = operand_value(right, hint);
         l = r ? eval(left, r->type) : std::nullopt;
     } else {
+        // Untyped literals, and arithmetic of them alone (`c AND 16#0 - 1`), take the left
+        // operand's type, as the typing stage gives them (types/operator_typing.cpp).
         l = operand_value(left, hint);
-        r = l ? operand_value(right, is_untyped_literal(right) ? l->type : hint) : std::nullopt;
+        r = l ? operand_value(right, of_untyped_literals(right) ? l->type : hint) : std::nullopt;
     }
     if (!l || !r) {
         return std::nullopt;
@@ -906,7 +919,8 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         return std::nullopt;
     }
     if (oper == Op::And || oper == Op::Or || oper == Op::Xor) {
-        if (!sema::is_bool(type) && !sema::is_bit_string(type)) {
+        // On integers too, as in conditions (pou_conditions.cpp) and as CODESYS allows.
+        if (!sema::is_bool(type) && !sema::is_bit_string(type) && !sema::is_integer(type)) {
             program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
             return std::nullopt;
         }

@@ -202,6 +202,8 @@ private:
     std::optional<Value> pointer_offset(bool add, const Value& pointer,
                                         const ast::Expression& bytes, const Destination* dest);
     static bool is_untyped_literal(const ast::Expression& expression);
+    /// An untyped literal, or + - * / MOD of such alone (`16#0 - 1`).
+    static bool of_untyped_literals(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
     /// `P` of `P.x`: a PROGRAM named as its single instance (CODESYS).
     bool names_program(const ast::Expression& expression) const;
