@@ -31,4 +31,16 @@ std::unique_ptr<Typed> type_body(const std::string& declarations, const std::str
                        "\nEND_PROGRAM\n");
 }
 
+std::vector<std::string> codes_of(const Diagnostics& diagnostics) {
+    std::vector<std::string> codes;
+    for (const Diagnostic& diagnostic : diagnostics.all()) {
+        codes.emplace_back(describe(diagnostic.code).name);
+    }
+    return codes;
+}
+
+void PrintTo(const TypingCase& c, std::ostream* out) {
+    *out << c.name;
+}
+
 } // namespace eposp::compiler::test

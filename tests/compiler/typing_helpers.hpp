@@ -6,7 +6,9 @@
 #include "eposp/compiler/types/front_end.hpp"
 
 #include <memory>
+#include <ostream>
 #include <string>
+#include <vector>
 
 namespace eposp::compiler::test {
 
@@ -29,5 +31,17 @@ std::unique_ptr<Typed> type_source(const std::string& source);
 
 /// `source` as the body of `PROGRAM Main` with `declarations` in its VAR section.
 std::unique_ptr<Typed> type_body(const std::string& declarations, const std::string& body);
+
+/// The codes of `diagnostics` ("E0301"), in the order reported.
+std::vector<std::string> codes_of(const Diagnostics& diagnostics);
+
+/// A named program (or a body) and the errors the typing stage must give it.
+struct TypingCase {
+    std::string name;
+    std::string source;
+    std::vector<std::string> codes; // in the order reported
+};
+
+void PrintTo(const TypingCase& c, std::ostream* out);
 
 } // namespace eposp::compiler::test

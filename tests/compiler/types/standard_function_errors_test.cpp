@@ -4,40 +4,23 @@
 #include "typing_helpers.hpp"
 
 #include <gtest/gtest.h>
-#include <ostream>
 #include <string>
 #include <vector>
 
 namespace eposp::compiler::test {
 namespace {
 
-struct Case {
-    std::string name;
-    std::string body;
-    std::vector<std::string> codes; // the errors, in the order reported
-};
-
-void PrintTo(const Case& c, std::ostream* out) {
-    *out << c.name;
-}
+using Case = TypingCase;
 
 const char* const kDeclarations = "n : DINT; w : WORD; x : BOOL; r : REAL; s : STRING; "
                                   "ws : WSTRING; arr : ARRAY[1..3] OF INT; p : POINTER TO INT; "
                                   "st : TON;";
 
-std::vector<std::string> codes_of(const Diagnostics& diagnostics) {
-    std::vector<std::string> codes;
-    for (const Diagnostic& diagnostic : diagnostics.all()) {
-        codes.emplace_back(describe(diagnostic.code).name);
-    }
-    return codes;
-}
-
 class StandardFunctionErrors : public testing::TestWithParam<Case> {};
 
 TEST_P(StandardFunctionErrors, AreReportedByTheTypingStage) {
     const Case& c = GetParam();
-    const auto t = type_body(kDeclarations, c.body);
+    const auto t = type_body(kDeclarations, c.source);
     EXPECT_EQ(codes_of(t->diagnostics), c.codes) << t->errors();
 }
 

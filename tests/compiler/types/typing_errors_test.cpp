@@ -4,33 +4,16 @@
 #include "typing_helpers.hpp"
 
 #include <gtest/gtest.h>
-#include <ostream>
 #include <string>
 #include <vector>
 
 namespace eposp::compiler::test {
 namespace {
 
-struct Case {
-    std::string name;
-    std::string source;
-    std::vector<std::string> codes; // the errors, in the order reported
-};
-
-void PrintTo(const Case& c, std::ostream* out) {
-    *out << c.name;
-}
+using Case = TypingCase;
 
 std::string main_with(const std::string& declarations, const std::string& body) {
     return "PROGRAM Main\nVAR " + declarations + " END_VAR\n" + body + "\nEND_PROGRAM\n";
-}
-
-std::vector<std::string> codes_of(const Diagnostics& diagnostics) {
-    std::vector<std::string> codes;
-    for (const Diagnostic& diagnostic : diagnostics.all()) {
-        codes.emplace_back(describe(diagnostic.code).name);
-    }
-    return codes;
 }
 
 /// A configuration running `Main` (a count, an output) as Inst0 and `Consumer` as declared by
