@@ -178,11 +178,7 @@ Value Evaluator::make(const sema::Type& type, const ast::Initializer* initialize
     case Shape::Record: {
         // An instance's initial values may name its constants declared before them.
         Frame building{.instance = &value};
-        struct Restore {
-            Frame*& slot;
-            Frame* old;
-            ~Restore() { slot = old; }
-        } restore{frame_, frame_};
+        Frame* const outer = frame_;
         if (type.kind == sema::TypeKind::Instance) {
             frame_ = &building;
         }
@@ -201,6 +197,7 @@ Value Evaluator::make(const sema::Type& type, const ast::Initializer* initialize
                                                            ? field.declaration->initial_value.get()
                                                            : nullptr));
         }
+        frame_ = outer;
         break;
     }
     case Shape::Unsupported:
