@@ -5,6 +5,7 @@
 #include "virtual_bus_impl.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 namespace eposp::can {
@@ -18,6 +19,8 @@ constexpr std::uint64_t kBusOffRecoveryRuns = 128;
 /// The ACK slot and the ACK delimiter follow the CRC delimiter.
 constexpr std::size_t kAckSlotAfterCrc = 1;
 constexpr std::size_t kAckDelimiterAfterCrc = 2;
+constexpr std::size_t kStandardIds = std::size_t{1} << 11;
+constexpr std::size_t kSlotsPerWord = 64;
 
 const BusConfig& validated(const BusConfig& config) {
     if (config.bitrate < kMinBitrate || config.bitrate > kMaxBitrate ||
@@ -111,6 +114,66 @@ core::TimePoint VirtualBus::Impl::at_bit(core::TimePoint start, std::size_t bits
 
 void VirtualBus::Impl::attach(VirtualPort& port) {
     ports.push_back(&port);
+    // The frame being handed out now is not for it.
+    port.impl_->rx_base = delivered + (delivering ? 1 : 0);
+    if (ports.size() > words * kSlotsPerWord) {
+        reindex();
+        return;
+    }
+    port.impl_->slot = ports.size() - 1;
+    index_filter(*port.impl_);
+    refresh_attention(*port.impl_);
+    refresh_queued(*port.impl_);
+}
+
+void VirtualBus::Impl::reindex() {
+    words = (ports.size() + kSlotsPerWord - 1) / kSlotsPerWord;
+    by_id.assign(kStandardIds * words, 0);
+    attended.assign(words, 0);
+    queued.assign(words, 0);
+    for (std::size_t slot = 0; slot < ports.size(); ++slot) {
+        if (ports[slot] != nullptr) {
+            ports[slot]->impl_->slot = slot;
+            index_filter(*ports[slot]->impl_);
+            refresh_attention(*ports[slot]->impl_);
+            refresh_queued(*ports[slot]->impl_);
+        }
+    }
+}
+
+void VirtualBus::Impl::index_filter(VirtualPort::Impl& port) {
+    const std::size_t word = port.slot / kSlotsPerWord;
+    const std::uint64_t mask = std::uint64_t{1} << (port.slot % kSlotsPerWord);
+    for (std::size_t id = 0; id < kStandardIds; ++id) {
+        std::uint64_t& accepting = by_id[id * words + word];
+        accepting = port.port.accepts(static_cast<std::uint32_t>(id)) ? accepting | mask
+                                                                      : accepting & ~mask;
+    }
+}
+
+void VirtualBus::Impl::refresh_attention(VirtualPort::Impl& port) {
+    const std::uint64_t mask = std::uint64_t{1} << (port.slot % kSlotsPerWord);
+    std::uint64_t& word = attended[port.slot / kSlotsPerWord];
+    port.attentive_indexed = port.attentive();
+    word = port.attentive_indexed ? word | mask : word & ~mask;
+}
+
+void VirtualBus::Impl::refresh_queued(VirtualPort::Impl& port) {
+    const std::uint64_t mask = std::uint64_t{1} << (port.slot % kSlotsPerWord);
+    std::uint64_t& word = queued[port.slot / kSlotsPerWord];
+    word = port.next_frame() != nullptr ? word | mask : word & ~mask;
+}
+
+bool VirtualBus::Impl::settled(const VirtualPort::Impl& port) const {
+    return delivering && (current->sender == &port || port.sequence >= current->receivers_before ||
+                          port.slot < visited_up_to);
+}
+
+std::uint64_t VirtualBus::Impl::unvisited_receptions(const VirtualPort::Impl& port) const {
+    if (port.counters.state() == ErrorState::BusOff) {
+        return 0;
+    }
+    return delivered + (settled(port) ? 1 : 0) - port.rx_base;
 }
 
 void VirtualBus::Impl::detach(VirtualPort& port) {
@@ -126,6 +189,7 @@ void VirtualBus::Impl::compact_ports() {
     if (has_vacancies) {
         std::erase(ports, nullptr);
         has_vacancies = false;
+        reindex();
     }
 }
 
@@ -160,27 +224,32 @@ void VirtualBus::Impl::request_arbitration() {
 
 // ISO 11898-1:2015, 10.4.2.3: the lowest arbitration field wins. Each controller offers the
 // head of its FIFO queue. Equal fields (the same frame from two controllers, an error on a
-// real bus) go to the controller connected first.
+// real bus) go to the controller connected first. Only those with a frame are visited, in
+// connection order.
 void VirtualBus::Impl::arbitrate() {
     compact_ports();
     const core::TimePoint now = loop.now();
     VirtualPort::Impl* winner = nullptr;
     const Frame* winning_frame = nullptr;
     std::optional<core::TimePoint> suspended_until;
-    for (VirtualPort* port : ports) {
-        VirtualPort::Impl& controller = *port->impl_;
-        const Frame* frame = controller.next_frame();
-        if (frame == nullptr || controller.counters.state() == ErrorState::BusOff) {
-            continue;
-        }
-        if (controller.suspended_until > now) {
-            suspended_until = std::min(suspended_until.value_or(controller.suspended_until),
-                                       controller.suspended_until);
-            continue;
-        }
-        if (winner == nullptr || wins_arbitration(*frame, *winning_frame)) {
-            winner = &controller;
-            winning_frame = frame;
+    for (std::size_t word = 0; word < words; ++word) {
+        for (std::uint64_t sending = queued[word]; sending != 0; sending &= sending - 1) {
+            const std::size_t slot =
+                word * kSlotsPerWord + static_cast<std::size_t>(std::countr_zero(sending));
+            VirtualPort::Impl& controller = *ports[slot]->impl_;
+            if (controller.counters.state() == ErrorState::BusOff) {
+                continue;
+            }
+            if (controller.suspended_until > now) {
+                suspended_until = std::min(suspended_until.value_or(controller.suspended_until),
+                                           controller.suspended_until);
+                continue;
+            }
+            const Frame* frame = controller.next_frame();
+            if (winner == nullptr || wins_arbitration(*frame, *winning_frame)) {
+                winner = &controller;
+                winning_frame = frame;
+            }
         }
     }
     if (winner != nullptr) {
@@ -250,6 +319,12 @@ void VirtualBus::Impl::start(VirtualPort::Impl& sender, const Frame& next) {
         }
     }
 
+    if (outcome == Outcome::Delivered) {
+        // A controller does not receive its own frame: counted as settled for it at once.
+        delivering = true;
+        visited_up_to = 0;
+        ++sender.rx_base;
+    }
     current = Transmission{.sender = &sender,
                            .frame = frame,
                            .from_queue = !sender.babbled,
@@ -270,19 +345,46 @@ void VirtualBus::Impl::step() {
 }
 
 template <typename Visit>
-void VirtualBus::Impl::for_each_receiver(const Transmission& transmission, Visit visit) {
+void VirtualBus::Impl::for_each_receiver(const Transmission& transmission, const Frame* concerning,
+                                         Visit visit) {
     // By index: a callback may connect ports (they come after `count`) or disconnect them (their
-    // slot becomes null; compaction waits for the next arbitration).
+    // slot becomes null; compaction waits for the next arbitration). The index is read as it is
+    // at each step: a callback may change a filter, as on a real bus before that frame's turn.
     const std::size_t count = ports.size();
-    for (std::size_t i = 0; i < count; ++i) {
+    // Acceptance filters pass every 29-bit frame.
+    const bool everyone = concerning == nullptr || concerning->extended;
+    const std::size_t id = everyone ? 0 : concerning->id;
+    const auto next = [this, count, everyone, id](std::size_t from) {
+        if (everyone) {
+            return from;
+        }
+        for (std::size_t word = from / kSlotsPerWord, first = from % kSlotsPerWord;
+             word * kSlotsPerWord < count; ++word, first = 0) {
+            const std::uint64_t concerned =
+                (by_id[id * words + word] | attended[word]) & (~std::uint64_t{0} << first);
+            if (concerned != 0) {
+                return std::min(count, word * kSlotsPerWord +
+                                           static_cast<std::size_t>(std::countr_zero(concerned)));
+            }
+        }
+        return count;
+    };
+    for (std::size_t i = next(0); i < count; i = next(i + 1)) {
         VirtualPort* port = ports[i];
+        visited_up_to = i + 1;
         if (port == nullptr || port->impl_.get() == transmission.sender ||
             port->impl_->sequence >= transmission.receivers_before ||
             port->impl_->counters.state() == ErrorState::BusOff) {
             continue;
         }
+        const bool attentive = port->impl_->attentive_indexed;
         const ErrorState before = visit(*port->impl_);
+        // A reception only counts the receive error counter down and empties no queue: a port
+        // that was not attentive stays so (pause_receive() refreshes itself); an error counts up.
         if (ports[i] == port) {
+            if (attentive || concerning == nullptr) {
+                refresh_attention(*port->impl_);
+            }
             settle_state(*port->impl_, before);
         }
     }
@@ -299,12 +401,16 @@ void VirtualBus::Impl::conclude() {
                           .frame = transmission.frame,
                           .sender = transmission.sender_name()});
         transmitted(transmission);
-        for_each_receiver(transmission, [this, &transmission](VirtualPort::Impl& receiver) {
-            const ErrorState before = change_counters(
-                receiver, [](ErrorCounters& counters) { counters.receive_success(); });
-            receiver.receive(transmission.frame, config.rx_queue_capacity);
-            return before;
-        });
+        for_each_receiver(
+            transmission, &transmission.frame, [this, &transmission](VirtualPort::Impl& receiver) {
+                const ErrorState before = change_counters(
+                    receiver, [](ErrorCounters& counters) { counters.receive_success(); });
+                ++receiver.rx_base; // counted in its own counts
+                receiver.receive(transmission.frame, config.rx_queue_capacity);
+                return before;
+            });
+        ++delivered;
+        delivering = false;
         break;
     case Outcome::Dropped:
         ++stats.dropped_frames;
@@ -325,6 +431,9 @@ void VirtualBus::Impl::transmitted(Transmission& transmission) {
     VirtualPort::Impl& sender = *transmission.sender;
     if (transmission.from_queue && !sender.tx_queue.empty()) {
         sender.tx_queue.pop_front();
+        if (sender.tx_queue.empty()) {
+            refresh_queued(sender);
+        }
     }
     ++sender.counts.tx_frames;
     settle_state(sender, change_counters(
@@ -358,7 +467,7 @@ void VirtualBus::Impl::conclude_with_error(Transmission& transmission) {
         settle_state(sender, change_counters(sender, transmit_error));
     }
     if (!ack_error) {
-        for_each_receiver(transmission, [this](VirtualPort::Impl& receiver) {
+        for_each_receiver(transmission, nullptr, [this](VirtualPort::Impl& receiver) {
             return change_counters(receiver,
                                    [](ErrorCounters& counters) { counters.receive_error(); });
         });
@@ -389,6 +498,12 @@ void VirtualBus::Impl::finish() {
 
 void VirtualBus::Impl::change_state(VirtualPort::Impl& port, ErrorState before) {
     const ErrorState after = port.counters.state();
+    // A bus-off controller receives nothing: its unvisited receptions stop counting meanwhile.
+    if (after == ErrorState::BusOff) {
+        port.counts.rx_frames += delivered + (settled(port) ? 1 : 0) - port.rx_base;
+    } else if (before == ErrorState::BusOff) {
+        port.rx_base = delivered + (settled(port) ? 1 : 0);
+    }
     if (before == ErrorState::BusOff) {
         port.recovering = false;
         port.recovery_timer.cancel();
@@ -429,6 +544,7 @@ void VirtualBus::Impl::schedule_recovery(VirtualPort::Impl& port) {
     port.recovery_timer = core::ScopedTimer(loop, loop.at(done, [this, &port] {
         const ErrorState before = port.counters.state();
         port.counters.reset();
+        refresh_attention(port);
         settle_state(port, before);
     }));
 }
@@ -450,6 +566,7 @@ void VirtualBus::set_bitrate(std::uint32_t bitrate) {
 VirtualBus::~VirtualBus() {
     for (VirtualPort* port : impl_->ports) {
         if (port != nullptr) {
+            port->impl_->counts.rx_frames += impl_->unvisited_receptions(*port->impl_);
             port->bus_ = nullptr;
             port->impl_->recovery_timer.cancel();
         }

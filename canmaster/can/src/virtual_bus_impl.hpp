@@ -26,15 +26,25 @@ public:
     void report_overflow(Overflow overflow, const Frame& lost) const;
     void notify(ErrorState state) const { port.notify_error_state(state); }
 
+    /// Whether the bus must hand it every frame, whatever its filter: a reception moves its
+    /// receive error counter, or the frame joins its receive queue.
+    bool attentive() const { return counters.receive() != 0 || paused || !rx_queue.empty(); }
+
     VirtualPort& port;
-    const std::uint64_t sequence; ///< connection order
+    const std::uint64_t sequence;   ///< connection order
+    std::size_t slot = 0;           ///< its place in VirtualBus::Impl::ports
+    bool attentive_indexed = false; ///< attentive() as VirtualBus::Impl's index has it
     const std::size_t tx_queue_capacity;
     std::deque<Frame> tx_queue;
     std::deque<Frame> rx_queue;
     bool paused = false;
     std::optional<Frame> babbled;
     ErrorCounters counters;
-    PortStatistics counts; ///< frame and overflow counts; counters and state are read live
+    /// Frame and overflow counts; counters and state are read live. rx_frames holds the frames
+    /// handed to it; those the bus did not hand it (its filter rejects them and nothing else
+    /// needed the visit) are VirtualBus::Impl::unvisited_receptions().
+    PortStatistics counts;
+    std::uint64_t rx_base = 0; ///< see unvisited_receptions()
     core::TimePoint suspended_until{};
     OverflowHandler overflow_handler;
 
@@ -113,6 +123,22 @@ public:
     bool has_vacancies = false;
     std::uint64_t next_sequence = 0;
 
+    // Which controllers a frame concerns: every controller receives every frame (ISO 11898-1),
+    // but one whose acceptance filter rejects it and whose receive error counter is 0 has
+    // nothing to do; the bus visits the others only. One bit per slot of `ports`.
+    void index_filter(VirtualPort::Impl& port);
+    void refresh_attention(VirtualPort::Impl& port);
+    /// After its transmit queue or babbling changed: whether it takes part in arbitration.
+    void refresh_queued(VirtualPort::Impl& port);
+
+    // The receptions of the controllers not visited: a frame counts for each controller that
+    // was not bus-off when its turn came. `delivered` frames have been handed out; while
+    // `delivering` one more is, and the controllers below slot `visited_up_to` had their turn.
+    std::uint64_t unvisited_receptions(const VirtualPort::Impl& port) const;
+    std::uint64_t delivered = 0;
+    bool delivering = false;
+    std::size_t visited_up_to = 0;
+
     std::map<ObserverId, Observer> observers; ///< empty functions are removed ones
     ObserverId next_observer = 1;
     bool notifying = false;
@@ -139,8 +165,9 @@ private:
     void conclude_with_error(Transmission& transmission);
     void finish();
     void transmitted(Transmission& transmission);
+    /// Visits the receivers of `transmission`: only those `concerning` concerns, or all.
     template <typename Visit>
-    void for_each_receiver(const Transmission& transmission, Visit visit);
+    void for_each_receiver(const Transmission& transmission, const Frame* concerning, Visit visit);
     void change_state(VirtualPort::Impl& port, ErrorState before);
     /// The runs of 11 recessive bits from `stretch_start` (or later, when the controller began
     /// counting) to a start of frame.
@@ -148,6 +175,14 @@ private:
                               core::TimePoint start_of_frame) const;
     void schedule_recovery(VirtualPort::Impl& port);
     void compact_ports();
+    /// Gives every port its slot and indexes all of them again.
+    void reindex();
+    /// Whether the frame being handed out is already counted for `port`, or not for it.
+    bool settled(const VirtualPort::Impl& port) const;
+    std::size_t words = 0;               ///< 64 slots a word
+    std::vector<std::uint64_t> by_id;    ///< per 11-bit identifier: whose filter accepts it
+    std::vector<std::uint64_t> attended; ///< whose VirtualPort::Impl::attentive() holds
+    std::vector<std::uint64_t> queued;   ///< who has a frame to send (next_frame())
     core::TimePoint at_bit(core::TimePoint start, std::size_t bits) const;
 };
 

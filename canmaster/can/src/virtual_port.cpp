@@ -32,6 +32,7 @@ SendStatus VirtualPort::send(const Frame& frame) {
         return SendStatus::TxOverflow;
     }
     impl_->tx_queue.push_back(frame);
+    bus_->impl_->refresh_queued(*impl_);
     bus_->impl_->request_arbitration();
     return SendStatus::Queued;
 }
@@ -47,6 +48,7 @@ std::size_t VirtualPort::withdraw(const std::function<bool(const Frame&)>& which
     const auto kept_end = std::remove_if(first, queue.end(), which);
     const auto withdrawn = static_cast<std::size_t>(queue.end() - kept_end);
     queue.erase(kept_end, queue.end());
+    bus_->impl_->refresh_queued(*impl_);
     return withdrawn;
 }
 
@@ -56,6 +58,9 @@ ErrorState VirtualPort::error_state() const {
 
 PortStatistics VirtualPort::statistics() const {
     PortStatistics stats = impl_->counts;
+    if (bus_ != nullptr) {
+        stats.rx_frames += bus_->impl_->unvisited_receptions(*impl_);
+    }
     stats.transmit_error_counter = impl_->counters.transmit();
     stats.receive_error_counter = impl_->counters.receive();
     stats.state = impl_->counters.state();
@@ -68,6 +73,15 @@ void VirtualPort::pause_receive(bool paused) {
         const Frame frame = impl_->rx_queue.front();
         impl_->rx_queue.pop_front();
         deliver(frame);
+    }
+    if (bus_ != nullptr) {
+        bus_->impl_->refresh_attention(*impl_);
+    }
+}
+
+void VirtualPort::filter_changed() {
+    if (bus_ != nullptr) {
+        bus_->impl_->index_filter(*impl_);
     }
 }
 
@@ -85,6 +99,7 @@ void VirtualPort::force_error_state(ErrorState state) {
     const ErrorState before = impl_->counters.state();
     impl_->counters.force(state);
     if (bus_ != nullptr) {
+        bus_->impl_->refresh_attention(*impl_);
         bus_->impl_->settle_state(*impl_, before);
     } else if (state != before) {
         notify_error_state(state);
@@ -97,12 +112,16 @@ void VirtualPort::babble(const Frame& frame) {
     }
     impl_->babbled = frame;
     if (bus_ != nullptr) {
+        bus_->impl_->refresh_queued(*impl_);
         bus_->impl_->request_arbitration();
     }
 }
 
 void VirtualPort::stop_babbling() {
     impl_->babbled.reset();
+    if (bus_ != nullptr) {
+        bus_->impl_->refresh_queued(*impl_);
+    }
 }
 
 } // namespace eposp::can

@@ -70,14 +70,24 @@ public:
     void accept_only(const StandardIds& ids) {
         accepted_ = ids;
         filtering_ = true;
+        filter_changed();
     }
-    void accept_all() { filtering_ = false; }
+    void accept_all() {
+        filtering_ = false;
+        filter_changed();
+    }
+    /// Whether the handler sees a frame in 11-bit format with identifier `id`.
+    bool accepts(std::uint32_t id) const {
+        return !filtering_ || (id < accepted_.size() && accepted_[id]);
+    }
     void on_error_state(ErrorStateHandler handler) { error_state_handler_ = std::move(handler); }
 
 protected:
+    /// After every change of the acceptance filter: a bus that hands each frame only to the
+    /// controllers it concerns indexes their filters.
+    virtual void filter_changed() {}
     void deliver(const Frame& frame) const {
-        if (filtering_ && !frame.extended && !frame.error &&
-            (frame.id >= accepted_.size() || !accepted_[frame.id])) {
+        if (!frame.extended && !frame.error && !accepts(frame.id)) {
             return;
         }
         if (receive_handler_) {

@@ -112,6 +112,7 @@ public:
 private:
     friend class VirtualBus;
     VirtualPort(VirtualBus& bus, std::string name, std::size_t tx_queue_capacity);
+    void filter_changed() override;
 
     VirtualBus* bus_;
     std::string name_;
