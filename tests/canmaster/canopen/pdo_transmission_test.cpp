@@ -513,6 +513,51 @@ TEST_F(PdoServiceDispatch, AtSyncTpdosSampleBeforeRpdosStore) {
     EXPECT_EQ(node.device_frames(), (std::vector<Sent>{first[0], second[0]}));
 }
 
+// SYNC reaches only the synchronous PDOs, listed as their parameters change: a TPDO made
+// synchronous while operational answers the next SYNC, whether a remote write or a local one
+// followed by reload() changed it.
+TEST_F(PdoServiceDispatch, TpdoMadeSynchronousAtRunTimeAnswersTheNextSync) {
+    configure_tpdo({0x185, kEventDrivenProfile, {kStatusword}});
+    ASSERT_EQ(configure_pdo(node.od, PdoDirection::Transmit, 2,
+                            {0x285, kEventDrivenProfile, {kStatusword}}),
+              AbortCode::None);
+    node.operational();
+    node.run_for(milliseconds(1)); // the transmissions of becoming active
+    const std::size_t before = node.device_frames().size();
+    ASSERT_EQ(testing::write_as(node.od, 0x1800, 2, std::uint8_t{1}), AbortCode::None);
+    node.od.set_as(0x1801, 2, std::uint8_t{2});
+    node.pdo->reload();
+    schedule_syncs(2);
+    node.run_for(milliseconds(3));
+    const auto frames = node.device_frames();
+    ASSERT_EQ(frames.size(), before + 3);
+    EXPECT_EQ(frames[before], right_after({0}, "185#0000")[0]);
+    EXPECT_EQ(frames[before + 1], right_after({1}, "185#0000")[0]);
+    EXPECT_EQ(frames[before + 2], (Sent{next_start_after(frames[before + 1]), "285#0000"}))
+        << "TPDO 2, every second SYNC, follows TPDO 1 at the second";
+}
+
+// An RPDO made synchronous after the window of the last SYNC closed discards what it receives
+// until the next SYNC (CiA 301 7.5.2.8), although it was not synchronous when the window closed.
+TEST_F(PdoServiceDispatch, RpdoMadeSynchronousWhileTheWindowIsClosedWaitsForTheNextSync) {
+    configure_rpdo({0x205, kEventDrivenProfile, {kControlword}});
+    node.operational();
+    node.sync();
+    node.run_for(milliseconds(1));
+    node.pdo->on_window_closed();
+    configure_rpdo({0x205, 1, {kControlword}});
+    node.send("205#0F00"); // after the window: discarded
+    node.run_for(milliseconds(1));
+    node.sync();
+    node.run_for(milliseconds(1));
+    EXPECT_EQ(node.od.get_as<std::uint16_t>(0x6040, 0), 0);
+    node.send("205#1F00"); // inside the window of this SYNC: stored at the next
+    node.run_for(milliseconds(1));
+    node.sync();
+    node.run_for(milliseconds(1));
+    EXPECT_EQ(node.od.get_as<std::uint16_t>(0x6040, 0), 0x001F);
+}
+
 TEST_F(PdoServiceDispatch, HasAPdoForEveryCommunicationObject) {
     EXPECT_EQ(node.pdo->rpdo_count(), 4U);
     EXPECT_EQ(node.pdo->tpdo_count(), 4U);

@@ -19,7 +19,8 @@
 namespace eposp::canopen {
 
 /// Every RPDO and TPDO whose objects a dictionary holds (add_pdo_objects()), as one service for
-/// a node to compose: frames, SYNC notifications and NMT state changes go to all of them. At a
+/// a node to compose: frames and NMT state changes go to all of them, SYNC and the end of its
+/// window to the synchronous ones (a list kept as their communication parameters change). At a
 /// SYNC the TPDOs sample before the RPDOs apply what they received, so a synchronous TPDO
 /// reports the state of the cycle that ends.
 class PdoService {
@@ -28,6 +29,7 @@ public:
     /// PDOs, 257 for the EPOS P's internal ones (0x1500, 0x1900).
     PdoService(core::EventLoop& loop, can::Port& port, ObjectDictionary& od,
                EmergencyCallback emergency = {}, std::size_t first_number = 1);
+    ~PdoService();
     PdoService(const PdoService&) = delete;
     PdoService& operator=(const PdoService&) = delete;
 
@@ -52,8 +54,16 @@ public:
     Tpdo& tpdo(std::size_t number);
 
 private:
+    /// After a PDO read its parameters again: which of them SYNC concerns now.
+    void list_synchronous();
+
+    ObjectDictionary& od_;
     std::vector<std::unique_ptr<Rpdo>> rpdos_;
     std::vector<std::unique_ptr<Tpdo>> tpdos_;
+    std::vector<ObjectDictionary::ListenerId> listeners_;
+    std::vector<Tpdo*> synchronous_tpdos_; ///< in number order, as are the RPDOs
+    std::vector<Rpdo*> synchronous_rpdos_;
+    bool window_closed_ = false; ///< since the window of the last SYNC closed
 };
 
 } // namespace eposp::canopen

@@ -56,6 +56,9 @@ public:
     void on_sync(std::uint8_t counter);
     /// The synchronous window of the last SYNC closed (SyncConsumer::on_window_closed).
     void on_window_closed();
+    /// Whether the window of the last SYNC has closed, for an RPDO that was not told of the
+    /// SYNCs while it was not synchronous (PdoService tells only the synchronous ones).
+    void set_window_closed(bool closed) { window_closed_ = closed; }
     void set_nmt_state(NmtState state);
     /// Reads the parameters from the dictionary again: for changes it was not told of
     /// (ObjectDictionary::reset_to_defaults tells no listener).
@@ -73,10 +76,11 @@ public:
     bool active() const { return active_; }
     /// The COB-ID as last read, valid or not.
     PdoCobId cob_id() const { return comm_.cob_id; }
+    /// Transmission types 0..240: applied at the SYNC; the others ignore SYNC.
+    bool synchronous() const { return comm_.transmission_type <= kSyncCyclicMax; }
 
 private:
     bool accepts(const can::Frame& frame) const;
-    bool synchronous() const { return comm_.transmission_type <= kSyncCyclicMax; }
     void restart_deadline();
     /// The errors of the last frame received, or none.
     void report_frame_errors(bool too_short, bool too_long, bool deadline_missed);

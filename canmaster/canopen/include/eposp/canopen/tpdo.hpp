@@ -65,6 +65,11 @@ public:
     bool active() const { return active_; }
     /// The COB-ID as last read, valid or not.
     PdoCobId cob_id() const { return comm_.cob_id; }
+    /// Transmission types 0..240 and 252, the only ones SYNC and its window concern.
+    bool synchronous() const {
+        return comm_.transmission_type <= kSyncCyclicMax ||
+               comm_.transmission_type == kRtrSynchronous;
+    }
 
 private:
     bool running() const { return active_ && operational_; }
