@@ -1,7 +1,6 @@
 // W0402, W0403: what a POU hands back (a function's result, the outputs of a function or FB)
 // is assigned, and a function's on every path (definite_assignment.hpp).
 
-#include "body_walk.hpp"
 #include "case_labels.hpp"
 #include "definite_assignment.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
@@ -17,16 +16,16 @@ namespace {
 
 /// Whether an assignment of the body writes the function's result or a part of it (`F.x := 1`).
 bool assigns_result(const PouUnderCheck& check) {
-    bool assigned = false;
-    for_each_statement(check.pou.body, [&](const ast::Statement& statement) {
-        const auto* assignment = std::get_if<ast::AssignmentStatement>(&statement.node);
+    for (const ast::Statement* statement : check.body.assignments()) {
         const ast::NameExpression* name =
-            assignment != nullptr ? root_variable(*assignment->target) : nullptr;
+            root_variable(*std::get<ast::AssignmentStatement>(statement->node).target);
         const sema::Symbol* symbol =
             name != nullptr ? check.program.model().resolved(name->name) : nullptr;
-        assigned = assigned || (symbol != nullptr && symbol->pou == &check.pou);
-    });
-    return assigned;
+        if (symbol != nullptr && symbol->pou == &check.pou) {
+            return true;
+        }
+    }
+    return false;
 }
 
 /// Whether `call` may write the variable given as its argument `index` as it is: a VAR_IN_OUT
@@ -126,8 +125,7 @@ bool covers_every_value(types::TypedProgram& program, const ast::CaseStatement& 
 // path that assigns none returns those, likely an oversight unless the declaration gives one.
 // An FB's outputs keep their values from the last call, so a path that leaves one is normal
 // PLC practice and is not reported. What is never assigned at all is reported before.
-void check_paths(const PouUnderCheck& check, const std::unordered_set<std::string>& written,
-                 bool result_assigned) {
+void check_paths(const PouUnderCheck& check, const WrittenNames& written, bool result_assigned) {
     const ast::Pou& pou = check.pou;
     std::vector<std::string> names;
     std::vector<const ast::Identifier*> declared;
@@ -142,8 +140,7 @@ void check_paths(const PouUnderCheck& check, const std::unordered_set<std::strin
         }
         for (const ast::VariableDeclaration& declaration : variables->variables) {
             for (const ast::Identifier& name : declaration.names) {
-                if (declaration.initial_value == nullptr &&
-                    written.contains(sema::fold_case(name.name))) {
+                if (declaration.initial_value == nullptr && written.contains(name.name)) {
                     names.push_back(sema::fold_case(name.name));
                     declared.push_back(&name);
                 }
@@ -154,12 +151,12 @@ void check_paths(const PouUnderCheck& check, const std::unordered_set<std::strin
         return;
     }
     std::unordered_set<const ast::CaseStatement*> exhaustive;
-    for_each_statement(pou.body, [&](const ast::Statement& statement) {
-        const auto* node = std::get_if<ast::CaseStatement>(&statement.node);
+    for (const ast::Statement* statement : check.body.statements()) {
+        const auto* node = std::get_if<ast::CaseStatement>(&statement->node);
         if (node != nullptr && covers_every_value(check.program, *node)) {
             exhaustive.insert(node);
         }
-    });
+    }
     const AssignmentFacts facts{[&](const ast::CallExpression& node, std::size_t index) {
                                     return may_write_argument(check.program, node, index);
                                 },
@@ -217,7 +214,7 @@ void check_assigned_results(const PouUnderCheck& check) {
         }
         for (const ast::VariableDeclaration& declaration : variables->variables) {
             for (const ast::Identifier& name : declaration.names) {
-                if (!written.contains(sema::fold_case(name.name))) {
+                if (!written.contains(name.name)) {
                     check.diagnostics.warning(
                         DiagnosticCode::W0402, name.range,
                         fmt::format("output '{}' is never assigned", name.name));

@@ -2,7 +2,6 @@
 // and ENO an output (`ENO =>`), both only in a formal call; a function block is called with
 // formal arguments; a standard function's call names all its inputs or none.
 
-#include "body_walk.hpp"
 #include "calls.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
@@ -73,13 +72,12 @@ void check_arguments(const Callee& callee, const ast::CallExpression& call,
 } // namespace
 
 void check_call_forms(const PouUnderCheck& check) {
-    for_each_expression(check.pou.body, [&](const ast::Expression& expression) {
-        if (const auto* call = std::get_if<ast::CallExpression>(&expression.node)) {
-            if (check_enable(*call, check.diagnostics)) {
-                check_arguments(callee_of(check.program, *call), *call, check.diagnostics);
-            }
+    for (const ast::Expression* expression : check.body.calls()) {
+        const auto& call = std::get<ast::CallExpression>(expression->node);
+        if (check_enable(call, check.diagnostics)) {
+            check_arguments(callee_of(check.program, call), call, check.diagnostics);
         }
-    });
+    }
 }
 
 } // namespace eposp::compiler::checks

@@ -1,7 +1,5 @@
 #include "call_graph.hpp"
 
-#include "body_walk.hpp"
-
 #include <algorithm>
 #include <unordered_set>
 
@@ -24,12 +22,13 @@ CallGraph::CallGraph(const types::TypedProgram& program,
     for (std::size_t next = 0; next < pous_.size(); ++next) {
         const ast::Pou& caller = *pous_[next];
         std::vector<const ast::Pou*>& callees = callees_[&caller];
-        for_each_expression(caller.body, [&](const ast::Expression& expression) {
-            const types::CallTarget* target = program.call_target(expression);
+        const BodyNodes& body = bodies_.try_emplace(&caller, caller.body).first->second;
+        for (const ast::Expression* call : body.calls()) {
+            const types::CallTarget* target = program.call_target(*call);
             if (target == nullptr || target->pou == nullptr ||
                 (target->kind != types::CallKind::Function &&
                  target->kind != types::CallKind::FunctionBlock)) {
-                return;
+                continue;
             }
             const ast::Pou* callee = target->pou;
             if (std::find(callees.begin(), callees.end(), callee) == callees.end()) {
@@ -40,7 +39,7 @@ CallGraph::CallGraph(const types::TypedProgram& program,
                 listed.insert(callee).second) {
                 pous_.push_back(callee);
             }
-        });
+        }
     }
 }
 

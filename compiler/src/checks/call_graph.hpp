@@ -1,8 +1,10 @@
 #pragma once
 
 // Which POU calls which, from the call targets the typing stage found: what the recursion
-// check walks and what decides which library POUs are checked at all.
+// check walks and what decides which library POUs are checked at all. The nodes of each body,
+// listed to find its calls, are kept for the checks (body_nodes.hpp).
 
+#include "body_nodes.hpp"
 #include "eposp/compiler/ast/compilation_unit.hpp"
 #include "eposp/compiler/types/typed_program.hpp"
 
@@ -31,11 +33,14 @@ public:
     }
     /// The user FUNCTIONs, FBs and PROGRAMs `pou` calls, each once, as first called.
     const std::vector<const ast::Pou*>& callees(const ast::Pou& pou) const;
+    /// The statements and expressions of the body of `pou`, one of pous().
+    const BodyNodes& body(const ast::Pou& pou) const { return bodies_.at(&pou); }
 
 private:
     std::unordered_set<const ast::Pou*> library_;
     std::vector<const ast::Pou*> pous_;
     std::unordered_map<const ast::Pou*, std::vector<const ast::Pou*>> callees_;
+    std::unordered_map<const ast::Pou*, BodyNodes> bodies_;
 };
 
 } // namespace eposp::compiler::checks

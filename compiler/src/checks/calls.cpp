@@ -32,8 +32,8 @@ bool is_enable_argument(const ast::Argument& argument) {
     if (!argument.name) {
         return false;
     }
-    const std::string name = sema::fold_case(argument.name->name);
-    return name == "EN" || name == "ENO";
+    return equal_ignoring_case(argument.name->name, "EN") ||
+           equal_ignoring_case(argument.name->name, "ENO");
 }
 
 } // namespace eposp::compiler::checks

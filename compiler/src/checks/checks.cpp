@@ -8,7 +8,7 @@ void check_program(types::TypedProgram& program, std::span<const ast::Compilatio
                    std::size_t linked, const CompileOptions& options, Diagnostics& diagnostics) {
     const CallGraph calls(program, units, linked);
     for (const ast::Pou* pou : calls.pous()) {
-        const PouUnderCheck check{program, *pou, calls, diagnostics};
+        const PouUnderCheck check{program, *pou, calls, diagnostics, calls.body(*pou)};
         check_unreachable_statements(check);
         check_written_inputs(check);
         check_unused_variables(check);

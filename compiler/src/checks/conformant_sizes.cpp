@@ -2,17 +2,17 @@
 // when running (IEC 61131-3 ed. 3, 6.5.3), and SIZEOF is a constant; LOWER_BOUND and
 // UPPER_BOUND read the bounds.
 
-#include "body_walk.hpp"
 #include "pou_checks.hpp"
 
 namespace eposp::compiler::checks {
 
 void check_conformant_sizes(const PouUnderCheck& check) {
-    for_each_expression(check.pou.body, [&](const ast::Expression& expression) {
+    for (const ast::Expression* call : check.body.calls()) {
+        const ast::Expression& expression = *call;
         const types::CallTarget* target = check.program.call_target(expression);
         if (target == nullptr || target->kind != types::CallKind::StandardFunction ||
             target->name != "SIZEOF") {
-            return;
+            continue;
         }
         const auto arguments =
             types::standard_arguments(target->name, std::get<ast::CallExpression>(expression.node));
@@ -24,7 +24,7 @@ void check_conformant_sizes(const PouUnderCheck& check) {
                                     "the size of an ARRAY[*] is known only when running: use "
                                     "LOWER_BOUND and UPPER_BOUND");
         }
-    });
+    }
 }
 
 } // namespace eposp::compiler::checks

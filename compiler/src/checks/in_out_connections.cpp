@@ -2,7 +2,6 @@
 // 6.6.1.2.2; an FB keeps the reference only for the call, as CODESYS requires), and so does a
 // native function's ANY input, which the host reads through the argument's address.
 
-#include "body_walk.hpp"
 #include "calls.hpp"
 #include "pou_checks.hpp"
 
@@ -57,11 +56,9 @@ void check_call(const PouUnderCheck& check, const ast::Expression& expression,
 } // namespace
 
 void check_in_out_connections(const PouUnderCheck& check) {
-    for_each_expression(check.pou.body, [&](const ast::Expression& expression) {
-        if (const auto* call = std::get_if<ast::CallExpression>(&expression.node)) {
-            check_call(check, expression, *call);
-        }
-    });
+    for (const ast::Expression* call : check.body.calls()) {
+        check_call(check, *call, std::get<ast::CallExpression>(call->node));
+    }
 }
 
 } // namespace eposp::compiler::checks

@@ -5,7 +5,6 @@
 
 #include "located_variables.hpp"
 
-#include "body_walk.hpp"
 #include "eposp/vm/scalar.hpp"
 #include "pou_checks.hpp"
 
@@ -132,11 +131,11 @@ void check_located_variables(const ProgramUnderCheck& check,
         }
     }
     for (const ast::Pou* pou : check.calls.pous()) {
-        for_each_expression(pou->body, [&](const ast::Expression& expression) {
-            if (const auto* direct = std::get_if<ast::DirectAddressExpression>(&expression.node)) {
+        for (const ast::Expression* expression : check.calls.body(*pou).expressions()) {
+            if (const auto* direct = std::get_if<ast::DirectAddressExpression>(&expression->node)) {
                 check_address_in_code(direct->address, check.program, check.diagnostics);
             }
-        });
+        }
     }
 }
 

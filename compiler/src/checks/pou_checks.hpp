@@ -9,12 +9,13 @@
 
 namespace eposp::compiler::checks {
 
-/// One POU under check, with the typed program it belongs to.
+/// One POU under check, with the typed program it belongs to and its body's nodes.
 struct PouUnderCheck {
     types::TypedProgram& program;
     const ast::Pou& pou;
     const CallGraph& calls;
     Diagnostics& diagnostics;
+    const BodyNodes& body;
 };
 
 /// The program under check: which POUs' values the program-wide checks look at.

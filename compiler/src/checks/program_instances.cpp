@@ -3,7 +3,6 @@
 // at most one instance of it, and when it declares none, the instance created for the calls
 // takes the program's name, which no instance of another type may have.
 
-#include "body_walk.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
 
@@ -83,15 +82,14 @@ void check_program_instances(const ProgramUnderCheck& check,
         return; // without a configuration every PROGRAM has one instance of its own name
     }
     for (const ast::Pou* pou : check.calls.pous()) {
-        for_each_expression(pou->body, [&](const ast::Expression& expression) {
-            const auto* name = std::get_if<ast::NameExpression>(&expression.node);
-            const sema::Symbol* symbol =
-                name != nullptr ? check.program.model().resolved(name->name) : nullptr;
+        for (const ast::Expression* expression : check.calls.body(*pou).names()) {
+            const auto& name = std::get<ast::NameExpression>(expression->node);
+            const sema::Symbol* symbol = check.program.model().resolved(name.name);
             if (symbol != nullptr && symbol->kind == sema::SymbolKind::Pou &&
                 symbol->pou->kind == ast::PouKind::Program) {
-                check_use(*symbol->pou, expression.range, instances, check.diagnostics);
+                check_use(*symbol->pou, expression->range, instances, check.diagnostics);
             }
-        });
+        }
     }
 }
 

@@ -1,7 +1,6 @@
 // E0414: a call gives each parameter once (IEC 61131-3 ed. 3, 6.6.1.4.2), positionally or by
 // its name: `LIMIT(MN := 0, IN := x, IN := 5, MX := 100)` would leave which IN counts to chance.
 
-#include "body_walk.hpp"
 #include "calls.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
@@ -57,11 +56,9 @@ void check_call(const PouUnderCheck& check, const ast::CallExpression& call) {
 } // namespace
 
 void check_repeated_parameters(const PouUnderCheck& check) {
-    for_each_expression(check.pou.body, [&](const ast::Expression& expression) {
-        if (const auto* call = std::get_if<ast::CallExpression>(&expression.node)) {
-            check_call(check, *call);
-        }
-    });
+    for (const ast::Expression* call : check.body.calls()) {
+        check_call(check, std::get<ast::CallExpression>(call->node));
+    }
 }
 
 } // namespace eposp::compiler::checks

@@ -1,7 +1,6 @@
 // W0404: a statement after RETURN, EXIT or CONTINUE in the same list never runs; reported once
 // per list, at the first such statement.
 
-#include "body_walk.hpp"
 #include "pou_checks.hpp"
 
 #include <variant>
@@ -27,7 +26,7 @@ void check_list(const ast::StatementList& list, Diagnostics& diagnostics) {
 
 void check_unreachable_statements(const PouUnderCheck& check) {
     check_list(check.pou.body, check.diagnostics);
-    for_each_statement(check.pou.body, [&](const ast::Statement& statement) {
+    for (const ast::Statement* statement : check.body.statements()) {
         std::visit(
             [&](const auto& node) {
                 using T = std::decay_t<decltype(node)>;
@@ -47,8 +46,8 @@ void check_unreachable_statements(const PouUnderCheck& check) {
                     check_list(node.body, check.diagnostics);
                 }
             },
-            statement.node);
-    });
+            statement->node);
+    }
 }
 
 } // namespace eposp::compiler::checks

@@ -1,6 +1,5 @@
 // W0401: a variable declared and never used is likely a leftover or a typo elsewhere.
 
-#include "body_walk.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
 
@@ -11,18 +10,19 @@ namespace eposp::compiler::checks {
 
 void check_unused_variables(const PouUnderCheck& check) {
     const ast::Pou& pou = check.pou;
-    std::unordered_set<std::string> used; // folded names the body refers to
-    for_each_expression(pou.body, [&](const ast::Expression& expression) {
-        const auto* name = std::get_if<ast::NameExpression>(&expression.node);
-        if (name != nullptr && check.program.model().resolved(name->name) != nullptr) {
-            used.insert(sema::fold_case(name->name.name));
+    // The names the body refers to, as written (compared ignoring case).
+    std::unordered_set<std::string_view, sema::NameHash, sema::NameEqual> used;
+    for (const ast::Expression* expression : check.body.names()) {
+        const auto& name = std::get<ast::NameExpression>(expression->node);
+        if (check.program.model().resolved(name.name) != nullptr) {
+            used.insert(name.name.name);
         }
-    });
-    for_each_statement(pou.body, [&](const ast::Statement& statement) {
-        if (const auto* loop = std::get_if<ast::ForStatement>(&statement.node)) {
-            used.insert(sema::fold_case(loop->control_variable.name));
+    }
+    for (const ast::Statement* statement : check.body.statements()) {
+        if (const auto* loop = std::get_if<ast::ForStatement>(&statement->node)) {
+            used.insert(loop->control_variable.name);
         }
-    });
+    }
     for (const ast::DeclarationSection& section : pou.sections) {
         const auto* variables = std::get_if<ast::VarSection>(&section);
         if (variables == nullptr || (variables->kind != ast::VarSectionKind::Var &&
@@ -36,7 +36,7 @@ void check_unused_variables(const PouUnderCheck& check) {
         }
         for (const ast::VariableDeclaration& declaration : variables->variables) {
             for (const ast::Identifier& name : declaration.names) {
-                if (!used.contains(sema::fold_case(name.name))) {
+                if (!used.contains(name.name)) {
                     check.diagnostics.warning(
                         DiagnosticCode::W0401, name.range,
                         fmt::format("variable '{}' is never used", name.name));

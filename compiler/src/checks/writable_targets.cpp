@@ -6,7 +6,6 @@
 
 #include "writable_targets.hpp"
 
-#include "body_walk.hpp"
 #include "calls.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
@@ -166,12 +165,8 @@ std::optional<DiagnosticNote> unwritable(types::TypedProgram& program,
 }
 
 void check_writable_targets(const PouUnderCheck& check) {
-    for_each_statement(check.pou.body, [&](const ast::Statement& statement) {
-        const auto* assignment = std::get_if<ast::AssignmentStatement>(&statement.node);
-        if (assignment == nullptr) {
-            return;
-        }
-        const ast::Expression& target = *assignment->target;
+    for (const ast::Statement* statement : check.body.assignments()) {
+        const ast::Expression& target = *std::get<ast::AssignmentStatement>(statement->node).target;
         if (const auto* bit = std::get_if<ast::BitAccessExpression>(&target.node)) {
             check_target(check, *bit->object, bit->object->range,
                          "this variable cannot be assigned here");
@@ -180,12 +175,10 @@ void check_writable_targets(const PouUnderCheck& check) {
                          "this variable cannot be assigned here (a constant or an output of "
                          "another instance)");
         }
-    });
-    for_each_expression(check.pou.body, [&](const ast::Expression& expression) {
-        if (const auto* call = std::get_if<ast::CallExpression>(&expression.node)) {
-            check_call_arguments(check, *call);
-        }
-    });
+    }
+    for (const ast::Expression* call : check.body.calls()) {
+        check_call_arguments(check, std::get<ast::CallExpression>(call->node));
+    }
 }
 
 void check_writable_access_paths(types::TypedProgram& program,

@@ -1,7 +1,6 @@
 // W0405: IEC 61131-3 does not let a POU write its own inputs; CODESYS does and libraries
 // written for it (OSCAT) use inputs as scratch variables, so eposp warns instead of refusing.
 
-#include "body_walk.hpp"
 #include "pou_checks.hpp"
 
 #include <fmt/format.h>
@@ -9,12 +8,9 @@
 namespace eposp::compiler::checks {
 
 void check_written_inputs(const PouUnderCheck& check) {
-    for_each_statement(check.pou.body, [&](const ast::Statement& statement) {
-        const auto* assignment = std::get_if<ast::AssignmentStatement>(&statement.node);
-        if (assignment == nullptr) {
-            return;
-        }
-        const ast::Expression* target = assignment->target.get();
+    for (const ast::Statement* statement : check.body.assignments()) {
+        const ast::Expression* target =
+            std::get<ast::AssignmentStatement>(statement->node).target.get();
         if (const auto* bit = std::get_if<ast::BitAccessExpression>(&target->node)) {
             target = bit->object.get(); // `in.3 := TRUE` writes `in`
         }
@@ -31,7 +27,7 @@ void check_written_inputs(const PouUnderCheck& check) {
                                                   "does eposp)",
                                                   name->name.name));
         }
-    });
+    }
 }
 
 } // namespace eposp::compiler::checks

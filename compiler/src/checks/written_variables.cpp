@@ -1,7 +1,5 @@
 #include "written_variables.hpp"
 
-#include "eposp/compiler/sema/symbol.hpp"
-
 #include <type_traits>
 #include <variant>
 
@@ -10,7 +8,7 @@ namespace {
 
 class WrittenVariables {
 public:
-    std::unordered_set<std::string> names;
+    WrittenNames names;
 
     void statements(const ast::StatementList& list) {
         for (const ast::Statement& statement : list) {
@@ -40,7 +38,7 @@ private:
         statements(node.else_body);
     }
     void statement(const ast::ForStatement& node) {
-        names.insert(sema::fold_case(node.control_variable.name));
+        names.insert(node.control_variable.name);
         statements(node.body);
     }
     void statement(const ast::WhileStatement& node) { statements(node.body); }
@@ -76,7 +74,7 @@ private:
 
     void written(const ast::Expression& target) {
         if (const auto* name = root_variable(target)) {
-            names.insert(sema::fold_case(name->name.name));
+            names.insert(name->name.name);
         }
     }
 };
@@ -98,7 +96,7 @@ const ast::NameExpression* root_variable(const ast::Expression& target) {
     }
 }
 
-std::unordered_set<std::string> written_variables(const ast::StatementList& body) {
+WrittenNames written_variables(const ast::StatementList& body) {
     WrittenVariables walker;
     walker.statements(body);
     return std::move(walker.names);

@@ -1,8 +1,7 @@
 // E0408: a divisor of '/', MOD, DIV or MOD() that is a constant zero: the division would fail
 // at every run, so it is refused when compiling.
 
-#include "body_walk.hpp"
-#include "eposp/compiler/sema/symbol.hpp"
+#include "calls.hpp"
 #include "pou_checks.hpp"
 
 namespace eposp::compiler::checks {
@@ -19,38 +18,39 @@ void check_divisor(const PouUnderCheck& check, bool divide, const ast::Expressio
     }
 }
 
+// DIV(a, b, ...) and MOD(a, b, ...): every input after the first divides.
+void check_call(const PouUnderCheck& check, const ast::Expression& expression,
+                const ast::CallExpression& call) {
+    const types::CallTarget* target = check.program.call_target(expression);
+    if (target == nullptr || target->kind != types::CallKind::StandardFunction ||
+        (target->name != "DIV" && target->name != "MOD")) {
+        return;
+    }
+    bool first = true;
+    for (const ast::Argument& argument : call.arguments) {
+        if (is_enable_argument(argument) || argument.value == nullptr) {
+            continue;
+        }
+        if (!first) {
+            check_divisor(check, target->name == "DIV", *argument.value);
+        }
+        first = false;
+    }
+}
+
 } // namespace
 
 void check_zero_divisors(const PouUnderCheck& check) {
-    for_each_expression(check.pou.body, [&](const ast::Expression& expression) {
-        if (const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node)) {
+    for (const ast::Expression* expression : check.body.expressions()) {
+        if (const auto* binary = std::get_if<ast::BinaryExpression>(&expression->node)) {
             if (binary->op == ast::BinaryOperator::Divide ||
                 binary->op == ast::BinaryOperator::Modulo) {
                 check_divisor(check, binary->op == ast::BinaryOperator::Divide, *binary->right);
             }
-            return;
+        } else if (const auto* call = std::get_if<ast::CallExpression>(&expression->node)) {
+            check_call(check, *expression, *call);
         }
-        // DIV(a, b, ...) and MOD(a, b, ...): every input after the first divides.
-        const types::CallTarget* target = check.program.call_target(expression);
-        const auto* call = std::get_if<ast::CallExpression>(&expression.node);
-        if (target == nullptr || call == nullptr ||
-            target->kind != types::CallKind::StandardFunction ||
-            (target->name != "DIV" && target->name != "MOD")) {
-            return;
-        }
-        bool first = true;
-        for (const ast::Argument& argument : call->arguments) {
-            const bool enable = argument.name && (sema::fold_case(argument.name->name) == "EN" ||
-                                                  sema::fold_case(argument.name->name) == "ENO");
-            if (enable || argument.value == nullptr) {
-                continue;
-            }
-            if (!first) {
-                check_divisor(check, target->name == "DIV", *argument.value);
-            }
-            first = false;
-        }
-    });
+    }
 }
 
 } // namespace eposp::compiler::checks

@@ -11,7 +11,7 @@ namespace {
 /// to resolve `a.b[i].c`, not a type system (that is the type checker's job).
 struct ValueShape {
     bool known = false;
-    std::string type_name{};             // for messages
+    std::string_view type_name{};        // for messages: a symbol's name or a fixed text
     const ast::TypeSpec* spec = nullptr; // arrays and references: indexing and `^`
     const Scope* members = nullptr;      // structs and FB instances
 };
@@ -116,10 +116,10 @@ private:
 
     ValueShape shape_of(const ast::TypeSpec& spec, int depth = 0) const {
         if (const auto* elementary = std::get_if<ast::ElementaryTypeRef>(&spec.node)) {
-            return {.known = true, .type_name = std::string(ast::name_of(elementary->type))};
+            return {.known = true, .type_name = ast::name_of(elementary->type)};
         }
         if (const auto* string = std::get_if<ast::StringTypeRef>(&spec.node)) {
-            return {.known = true, .type_name = std::string(ast::name_of(string->type))};
+            return {.known = true, .type_name = ast::name_of(string->type)};
         }
         if (const auto* named = std::get_if<ast::NamedTypeRef>(&spec.node)) {
             // Looked up rather than taken from the model: the declaration naming this type
@@ -162,10 +162,11 @@ private:
             if (symbol.variable != nullptr) {
                 return shape_of(symbol.variable->type);
             }
-            return {.known = true, .type_name = std::string(symbol.standard_type)};
+            return {.known = true, .type_name = symbol.standard_type};
         case SymbolKind::EnumValue:
             return {.known = symbol.owner != nullptr,
-                    .type_name = symbol.owner != nullptr ? symbol.owner->name : ""};
+                    .type_name =
+                        symbol.owner != nullptr ? std::string_view(symbol.owner->name) : ""};
         case SymbolKind::ProgramInstance: {
             // `Inst1.out` in a program connection: the members of its program type.
             const Symbol* program = global_.find_member(symbol.program_instance->type.name);
@@ -389,14 +390,14 @@ private:
         return symbol != nullptr && symbol->kind == SymbolKind::Pou ? symbol : nullptr;
     }
 
-    static std::string callee_name(const Symbol* pou, const ValueShape& callee) {
-        return pou != nullptr ? pou->name : callee.type_name;
+    static std::string_view callee_name(const Symbol* pou, const ValueShape& callee) {
+        return pou != nullptr ? std::string_view(pou->name) : callee.type_name;
     }
 
     /// Formal names are checked where the callee's parameters are known; standard functions
     /// (IN1, IN2… of extensible functions) are left to the type checker.
     void resolve_arguments(const std::vector<ast::Argument>& arguments, const Scope* parameters,
-                           const std::string& callee, const Scope& scope) {
+                           std::string_view callee, const Scope& scope) {
         for (const ast::Argument& argument : arguments) {
             if (argument.name && parameters != nullptr) {
                 if (const Symbol* formal = parameters->find_member(argument.name->name)) {
@@ -412,8 +413,7 @@ private:
 
     /// EN and ENO, which every function and FB call has (ed. 3, 6.6.1.8).
     static bool is_enable_parameter(std::string_view name) {
-        const std::string folded = fold_case(name);
-        return folded == "EN" || folded == "ENO";
+        return equal_ignoring_case(name, "EN") || equal_ignoring_case(name, "ENO");
     }
 
     ValueShape resolve_node(const ast::UnaryExpression& node, const Scope& scope) {

@@ -5,8 +5,7 @@ namespace eposp::compiler::sema {
 SemanticModel::SemanticModel() : global_(&scopes_.emplace_back()) {}
 
 const Symbol* SemanticModel::resolved(const ast::Identifier& identifier) const {
-    const auto it = references_.find(&identifier);
-    return it == references_.end() ? nullptr : it->second;
+    return references_.find(&identifier);
 }
 
 const Symbol* SemanticModel::enum_value(const ast::Expression& expression) const {
@@ -38,7 +37,7 @@ Scope& SemanticModel::add_scope(const Scope* parent) {
 }
 
 void SemanticModel::bind(const ast::Identifier& identifier, const Symbol& symbol) {
-    references_[&identifier] = &symbol;
+    references_.set(&identifier, &symbol);
 }
 
 void SemanticModel::set_struct_members(const ast::TypeSpec& type, const Scope& members) {

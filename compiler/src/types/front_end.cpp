@@ -11,15 +11,8 @@
 namespace eposp::compiler::types {
 
 const ast::Pou* FrontEnd::library_pou(std::string_view name) const {
-    const std::string key = sema::fold_case(name);
-    for (const ast::CompilationUnit& unit : library_units) {
-        for (const ast::Pou& pou : unit.pous) {
-            if (sema::fold_case(pou.name.name) == key) {
-                return &pou;
-            }
-        }
-    }
-    return nullptr;
+    const auto found = library_pous.find(name);
+    return found != library_pous.end() ? found->second : nullptr;
 }
 
 std::unique_ptr<FrontEnd> resolve_names(SourceManager& sources, std::span<const FileId> files,
@@ -41,6 +34,11 @@ std::unique_ptr<FrontEnd> resolve_names(SourceManager& sources, std::span<const 
     options::substitute_function_blocks(result->units, result->library_units, options, diagnostics);
     if (diagnostics.has_errors()) {
         return result;
+    }
+    for (const ast::CompilationUnit& unit : result->library_units) {
+        for (const ast::Pou& pou : unit.pous) {
+            result->library_pous.emplace(pou.name.name, &pou);
+        }
     }
     result->model.emplace(sema::resolve(result->units, diagnostics));
     result->library_model.emplace(sema::resolve_library(result->library_units, diagnostics));

@@ -14,26 +14,23 @@ TypedProgram::TypedProgram(const sema::SemanticModel& model,
       types_(model, diagnostics, std::move(library), std::move(is_constant)) {}
 
 const sema::Type* TypedProgram::type_of(const ast::Expression& expression) const {
-    const auto found = types_of_.find(&expression);
-    return found != types_of_.end() ? found->second : nullptr;
+    return types_of_.find(&expression);
 }
 
 const Constant* TypedProgram::constant_of(const ast::Expression& expression) const {
-    const auto found = constants_.find(&expression);
-    return found != constants_.end() ? &found->second : nullptr;
+    return constants_.find(&expression);
 }
 
 const CallTarget* TypedProgram::call_target(const ast::Expression& expression) const {
-    const auto found = calls_.find(&expression);
-    return found != calls_.end() ? &found->second : nullptr;
+    return calls_.find(&expression);
 }
 
 void TypedProgram::set_type(const ast::Expression& expression, const sema::Type& type) {
-    types_of_[&expression] = &type;
+    types_of_.set(&expression, &type);
 }
 
 void TypedProgram::set_constant(const ast::Expression& expression, Constant value) {
-    constants_.insert_or_assign(&expression, std::move(value));
+    constants_.set(&expression, &constant_values_.emplace_back(std::move(value)));
 }
 
 const AccessPath* TypedProgram::access_path(const ast::AccessDeclaration& declaration) const {
@@ -46,7 +43,7 @@ void TypedProgram::set_access_path(const ast::AccessDeclaration& declaration, Ac
 }
 
 void TypedProgram::set_call(const ast::Expression& expression, CallTarget target) {
-    calls_.insert_or_assign(&expression, std::move(target));
+    calls_.set(&expression, &call_targets_.emplace_back(std::move(target)));
 }
 
 namespace {

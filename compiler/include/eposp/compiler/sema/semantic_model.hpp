@@ -1,5 +1,6 @@
 #pragma once
 
+#include "eposp/compiler/sema/node_map.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 
 #include <deque>
@@ -40,7 +41,7 @@ private:
     std::deque<Symbol> symbols_; // deques: symbols and scopes never move once added
     std::deque<Scope> scopes_;
     Scope* global_;
-    std::unordered_map<const ast::Identifier*, const Symbol*> references_;
+    NodeMap<ast::Identifier, Symbol> references_;
     std::unordered_map<const ast::TypeSpec*, const Scope*> struct_scopes_;
 };
 

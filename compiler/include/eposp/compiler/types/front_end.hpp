@@ -6,6 +6,7 @@
 #include "eposp/compiler/ast/compilation_unit.hpp"
 #include "eposp/compiler/compile_options.hpp"
 #include "eposp/compiler/diagnostics.hpp"
+#include "eposp/compiler/sema/name_map.hpp"
 #include "eposp/compiler/sema/semantic_model.hpp"
 #include "eposp/compiler/source_manager.hpp"
 #include "eposp/compiler/types/typed_program.hpp"
@@ -29,6 +30,10 @@ struct FrontEnd {
     /// The POU of the built-in library named `name` (a standard FB, a host function); null
     /// when there is none.
     const ast::Pou* library_pou(std::string_view name) const;
+
+    /// library_units' POUs by name, the first of a name (resolve_names fills it once: typing
+    /// and the checks ask for every FB instance and call).
+    sema::NameMap<const ast::Pou*> library_pous;
 };
 
 /// Parses and resolves `files` and the built-in library, without typing: what code generation

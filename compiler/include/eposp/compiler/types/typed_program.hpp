@@ -8,10 +8,12 @@
 
 #include "eposp/compiler/ast/compilation_unit.hpp"
 #include "eposp/compiler/diagnostics.hpp"
+#include "eposp/compiler/sema/node_map.hpp"
 #include "eposp/compiler/sema/semantic_model.hpp"
 #include "eposp/compiler/sema/type_table.hpp"
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <span>
@@ -111,9 +113,13 @@ private:
     std::function<const ast::Pou*(std::string_view)> library_;
     std::function<bool(const ast::VariableDeclaration&)> is_constant_;
     sema::TypeTable types_;
-    std::unordered_map<const ast::Expression*, const sema::Type*> types_of_;
-    std::unordered_map<const ast::Expression*, Constant> constants_;
-    std::unordered_map<const ast::Expression*, CallTarget> calls_;
+    sema::NodeMap<ast::Expression, sema::Type> types_of_;
+    // Constants and call targets stay where they are made (deques), so that the pointers
+    // constant_of() and call_target() hand out stay valid; a value set again is made anew.
+    std::deque<Constant> constant_values_;
+    sema::NodeMap<ast::Expression, Constant> constants_;
+    std::deque<CallTarget> call_targets_;
+    sema::NodeMap<ast::Expression, CallTarget> calls_;
     std::vector<Store> stores_;
     std::unordered_map<const ast::AccessDeclaration*, AccessPath> access_paths_;
 };
