@@ -10,7 +10,6 @@
 #include "pou_generator.hpp"
 
 #include <algorithm>
-#include <fmt/format.h>
 
 namespace eposp::compiler::codegen {
 
@@ -98,10 +97,9 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
                                      [&](const NativeParameter& p) { return p.field == field; });
         if (field == nullptr || it == parameters.end() ||
             argument.kind == ast::Argument::Kind::Output) {
-            error(argument.name ? DiagnosticCode::E0210 : DiagnosticCode::E0306, argument.range,
-                  argument.name ? fmt::format("'{}' has no input '{}'", function.name.name,
-                                              argument.name->name)
-                                : fmt::format("too many arguments for '{}'", function.name.name));
+            program_.refused_by_checks(argument.name
+                                           ? DiagnosticCode::E0210
+                                           : DiagnosticCode::E0306); // types/call_typing.cpp
             ok = false;
             continue;
         }
@@ -144,7 +142,7 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
             value = eval(*argument->value, &type);
             if (value &&
                 !(value->type->kind == sema::TypeKind::String && value->type->wide == type.wide)) {
-                value = value_as(*value, argument->value->range, type);
+                value = value_as(*value, type);
             }
             break;
         case NativeParameter::Kind::Any:
@@ -155,8 +153,7 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
             break;
         case NativeParameter::Kind::Array: {
             const auto target = place(*argument->value);
-            value =
-                target ? in_out_argument(*target, *parameter.field, argument->range) : std::nullopt;
+            value = target ? in_out_argument(*target, *parameter.field) : std::nullopt;
             arguments[parameter.slot + 1] = native_descriptor(*type.element->element);
             break;
         }
@@ -174,12 +171,10 @@ std::optional<Value> PouGenerator::call_native_function(const ast::Pou& function
 std::optional<Value> PouGenerator::any_argument(const ast::Expression& expression) {
     auto value = eval(expression, nullptr);
     if (value && value->iec != nullptr) {
-        value = value_as(*value, expression.range, *value->iec);
+        value = value_as(*value, *value->iec);
     }
     if (value && !checks::is_native_any_value(*value->type)) {
-        error(
-            DiagnosticCode::E0305, expression.range,
-            fmt::format("ANY takes an elementary value or a string, not a {}", value->type->name));
+        program_.refused_by_checks(DiagnosticCode::E0305); // types/call_typing.cpp
         return std::nullopt;
     }
     return value;

@@ -17,8 +17,7 @@ using vm::Opcode;
 using vm::Operand;
 
 std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
-                                                const sema::Type* hint, const Destination* dest,
-                                                const SourceRange& range) {
+                                                const sema::Type* hint, const Destination* dest) {
     if (const auto* name = std::get_if<ast::NameExpression>(&node.callee->node)) {
         const sema::Symbol* symbol = model_.resolved(name->name);
         if (symbol == nullptr) {
@@ -39,7 +38,7 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
                 pou != nullptr && pou->kind == ast::PouKind::Function) {
                 return call_function(*pou, node, dest);
             }
-            return standard_function(sema::fold_case(symbol->name), node, hint, dest, range);
+            return standard_function(sema::fold_case(symbol->name), node, hint, dest);
         case sema::SymbolKind::StandardFunctionBlock:
             program_.refused_by_checks(DiagnosticCode::E0204); // types/call_typing.cpp
             return std::nullopt;
@@ -116,7 +115,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     for (Bound& b : bound) {
         if (b.field->section == ast::VarSectionKind::InOut) {
             const auto target = place(*b.argument->value);
-            b.value = target ? in_out_argument(*target, *b.field, b.argument->range) : std::nullopt;
+            b.value = target ? in_out_argument(*target, *b.field) : std::nullopt;
             ok = ok && b.value.has_value();
         } else if (b.field->section == ast::VarSectionKind::Input &&
                    contains_call(*b.argument->value)) {
@@ -205,8 +204,7 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     for (const auto& [b, copy] : outputs) {
         const auto target = place(*b->argument->value);
         if (target) {
-            if (const auto value =
-                    value_as(Value{copy, b->field->type}, b->argument->range, *target->type)) {
+            if (const auto value = value_as(Value{copy, b->field->type}, *target->type)) {
                 store(*target, *value);
             }
         }
@@ -275,8 +273,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
         const Place slot = member(instance, field->offset, *field->type);
         if (field->section == ast::VarSectionKind::InOut) {
             const auto target = place(*argument.value);
-            if (const auto reference =
-                    target ? in_out_argument(*target, *field, argument.range) : std::nullopt) {
+            if (const auto reference = target ? in_out_argument(*target, *field) : std::nullopt) {
                 store(slot, *reference);
             }
             continue;
@@ -318,7 +315,7 @@ void PouGenerator::call_instance(const Place& instance, const ast::CallExpressio
             program_.refused_by_checks(DiagnosticCode::E0301); // types/call_typing.cpp
             continue;
         }
-        store(*target, *value_as(value, argument->range, *target->type));
+        store(*target, *value_as(value, *target->type));
     }
 }
 

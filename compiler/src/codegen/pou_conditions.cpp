@@ -55,7 +55,7 @@ std::optional<PouGenerator::BitTest> PouGenerator::bit_test(const ast::Expressio
     }
     matched = true;
     const auto& mask = std::get<ast::BinaryExpression>(masked->node);
-    const auto pair = operands(*mask.left, *mask.right, nullptr, masked->range);
+    const auto pair = operands(*mask.left, *mask.right, nullptr);
     if (!pair) {
         return std::nullopt; // reported
     }
@@ -63,11 +63,11 @@ std::optional<PouGenerator::BitTest> PouGenerator::bit_test(const ast::Expressio
     const sema::Type& type = *x.type;
     if (!sema::is_integer(type) && !sema::is_bit_string(type)) {
         // `(a AND b) = 0` on BOOL, AND on REAL: what the general path accepts or reports.
-        const auto value = apply(Op::And, x, y, nullptr, masked->range);
+        const auto value = apply(Op::And, x, y, nullptr);
         const auto zero =
             value ? operand_value(zero_right ? *comparison->right : *comparison->left, value->type)
                   : std::nullopt;
-        if (!zero || !unify(*value, *zero, condition.range)) {
+        if (!zero || !unify(*value, *zero)) {
             return std::nullopt; // reported
         }
     }
@@ -139,7 +139,7 @@ void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label
         return;
     }
     if (binary != nullptr && is_comparison(binary->op)) {
-        const auto pair = operands(*binary->left, *binary->right, nullptr, condition.range);
+        const auto pair = operands(*binary->left, *binary->right, nullptr);
         if (!pair) {
             return;
         }
@@ -169,7 +169,7 @@ void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label
             builder_.jump(opcode, target, a.operand, b.operand);
             return;
         }
-        const auto value = apply(binary->op, left, right, nullptr, condition.range);
+        const auto value = apply(binary->op, left, right, nullptr);
         if (value) {
             builder_.jump(when ? vm::Opcode::Jt : vm::Opcode::Jf, target, value->operand);
         }
@@ -187,7 +187,7 @@ void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label
                           where->index, where->array);
             return;
         }
-        value = value_as(load(*where), condition.range, boolean);
+        value = value_as(load(*where), boolean);
     } else {
         value = value_as(condition, boolean);
     }

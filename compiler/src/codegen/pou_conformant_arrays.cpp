@@ -24,8 +24,7 @@ Operand dimension_bounds(const Place& array, std::size_t d) {
 
 } // namespace
 
-std::optional<Value> PouGenerator::in_out_argument(const Place& target, const sema::Field& field,
-                                                   const SourceRange& /*range*/) {
+std::optional<Value> PouGenerator::in_out_argument(const Place& target, const sema::Field& field) {
     const sema::Type& formal = *field.type->element;
     if (!field.type->conformant) {
         if (!sema::same_type(*target.type, formal)) {
@@ -97,8 +96,7 @@ std::optional<Place> PouGenerator::conformant_element(const Place& array,
 
 std::optional<Value> PouGenerator::array_bound(const std::string& name,
                                                const ast::CallExpression& node,
-                                               const Destination* dest,
-                                               const SourceRange& /*range*/) {
+                                               const Destination* dest) {
     if (node.arguments.size() != 2) {
         program_.refused_by_checks(DiagnosticCode::E0306); // types/standard_function_typing.cpp
         return std::nullopt;

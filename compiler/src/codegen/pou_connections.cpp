@@ -75,7 +75,7 @@ void PouGenerator::connect_output(const sema::Field& field, const ast::Expressio
         program_.refused_by_checks(DiagnosticCode::E0401); // checks/program_connections.cpp
     } else if (target) {
         const Value output{Operand::self(field.offset), field.type};
-        if (const auto value = value_as(output, sink.range, *target->type)) {
+        if (const auto value = value_as(output, *target->type)) {
             store(*target, *value);
         }
     }

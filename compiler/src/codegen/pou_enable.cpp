@@ -95,20 +95,20 @@ bool PouGenerator::with_enable(const Enable& enable, const std::function<void()>
 }
 
 std::optional<Value> PouGenerator::call(const ast::CallExpression& node, const sema::Type* hint,
-                                        const Destination* dest, const SourceRange& range) {
+                                        const Destination* dest) {
     const auto enable = enable_of(node);
     if (!enable) {
         return std::nullopt;
     }
     if (enable->en == nullptr && enable->eno == nullptr) {
-        return call_enabled(node, hint, dest, range);
+        return call_enabled(node, hint, dest);
     }
     // Inside an expression the call's value goes to a temporary that exists on both paths; a
     // skipped call leaves it at its type's zero (an empty string), so what follows reads a
     // defined value. `y := F(EN := c)` alone is an assignment() that EN skips as a whole.
     std::optional<Value> result;
     const bool ok = with_enable(
-        *enable, [&] { result = call_enabled(node, hint, nullptr, range); },
+        *enable, [&] { result = call_enabled(node, hint, nullptr); },
         [&] {
             if (result && result->type != nullptr && is_temporary(result->operand)) {
                 clear(result->operand, *result->type);

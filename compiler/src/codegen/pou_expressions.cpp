@@ -1,10 +1,9 @@
 // Expressions of IEC 61131-3 ed. 3, 7.3.2 (table 71): variables, literals, operators.
 
+#include "../types/expression_typer.hpp"
 #include "constant_declarations.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_generator.hpp"
-
-#include <fmt/format.h>
 
 namespace eposp::compiler::codegen {
 
@@ -12,22 +11,13 @@ using E = ast::ElementaryType;
 using vm::Opcode;
 using vm::Operand;
 
-bool PouGenerator::is_untyped_literal(const ast::Expression& expression) {
-    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
-        return unary->op != ast::UnaryOperator::Not && is_untyped_literal(*unary->operand);
+bool PouGenerator::context_literal(const ast::Expression& expression) {
+    if (types::is_untyped_literal(expression)) {
+        return true;
     }
     const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
-    if (literal == nullptr) {
-        return false;
-    }
-    if (const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value)) {
-        return !integer->type;
-    }
-    if (const auto* real = std::get_if<ast::RealLiteral>(&literal->value)) {
-        return !real->type;
-    }
-    return std::holds_alternative<ast::StringLiteral>(literal->value) ||
-           std::holds_alternative<ast::NullLiteral>(literal->value);
+    return literal != nullptr && (std::holds_alternative<ast::StringLiteral>(literal->value) ||
+                                  std::holds_alternative<ast::NullLiteral>(literal->value));
 }
 
 bool PouGenerator::contains_call(const ast::Expression& expression) {
@@ -79,7 +69,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
         if (symbol == nullptr) {
             return std::nullopt; // reported by the resolver
         }
-        return variable(*symbol, expression.range);
+        return variable(*symbol);
     }
     if (const auto* node = std::get_if<ast::MemberExpression>(&expression.node)) {
         auto object = place(*node->object);
@@ -122,7 +112,7 @@ std::optional<Place> PouGenerator::place(const ast::Expression& expression) {
         return result;
     }
     if (const auto* node = std::get_if<ast::IndexExpression>(&expression.node)) {
-        return index(*node, expression.range);
+        return index(*node);
     }
     if (const auto* node = std::get_if<ast::DirectAddressExpression>(&expression.node)) {
         return program_.direct_variable(node->address);
@@ -225,8 +215,7 @@ PouGenerator::element_index(const ast::Expression& index, std::int64_t lower, st
     return ElementIndex{dint_operand(*value), bound, 4};
 }
 
-std::optional<Place> PouGenerator::index(const ast::IndexExpression& node,
-                                         const SourceRange& /*range*/) {
+std::optional<Place> PouGenerator::index(const ast::IndexExpression& node) {
     auto array = place(*node.array);
     if (!array) {
         return std::nullopt;
@@ -344,8 +333,7 @@ PouGenerator::index_value(const ast::Expression& expression, bool negative_lower
     return Value{dint_operand(*value), &types_.elementary(E::Dint)};
 }
 
-std::optional<Value> PouGenerator::bit_word(const ast::BitAccessExpression& node,
-                                            const SourceRange& /*range*/) {
+std::optional<Value> PouGenerator::bit_word(const ast::BitAccessExpression& node) {
     const auto word = eval(*node.object, nullptr);
     if (!word) {
         return std::nullopt;
@@ -408,13 +396,13 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         return Value{address_of(*target), &types_.reference(target->type)};
     }
     if (const auto* node = std::get_if<ast::CallExpression>(&expression.node)) {
-        return function_value(call(*node, hint, dest, expression.range), expression.range);
+        return function_value(call(*node, hint, dest));
     }
     if (const auto* node = std::get_if<ast::UnaryExpression>(&expression.node)) {
-        return unary(*node, hint, dest, expression.range);
+        return unary(*node, hint, dest);
     }
     if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
-        auto value = binary(*node, hint, dest, expression.range, true);
+        auto value = binary(*node, hint, dest, true);
         if (value && value->iec != nullptr) {
             // Computed wider than its type (see binary): cut to the type here.
             const sema::Type& type = *value->iec;
@@ -424,7 +412,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         return value;
     }
     if (const auto* node = std::get_if<ast::BitAccessExpression>(&expression.node)) {
-        const auto word = bit_word(*node, expression.range);
+        const auto word = bit_word(*node);
         if (!word) {
             return std::nullopt;
         }
@@ -526,8 +514,7 @@ std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type&
     return Value{result, &want};
 }
 
-std::optional<Value> PouGenerator::function_value(const std::optional<Value>& called,
-                                                  const SourceRange& /*range*/) {
+std::optional<Value> PouGenerator::function_value(const std::optional<Value>& called) {
     if (called && called->type == nullptr) {
         program_.refused_by_checks(DiagnosticCode::E0309); // types/expression_typer.cpp
         return std::nullopt;
@@ -541,11 +528,11 @@ std::optional<Value> PouGenerator::value_as(const ast::Expression& expression,
         return subrange_value(expression, want);
     }
     const auto value = eval(expression, &want, dest);
-    return value ? value_as(*value, expression.range, want, dest) : std::nullopt;
+    return value ? value_as(*value, want, dest) : std::nullopt;
 }
 
-std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRange& /*range*/,
-                                            const sema::Type& want, const Destination* dest) {
+std::optional<Value> PouGenerator::value_as(const Value& value, const sema::Type& want,
+                                            const Destination* dest) {
     if (!sema::converts_implicitly(*value.type, want)) {
         program_.refused_by_checks(DiagnosticCode::E0301); // types/expression_typer.cpp
         return std::nullopt;
@@ -559,16 +546,15 @@ std::optional<Value> PouGenerator::value_as(const Value& value, const SourceRang
 bool PouGenerator::of_untyped_literals(const ast::Expression& expression) {
     if (const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node)) {
         using Op = ast::BinaryOperator;
-        return (binary->op == Op::Add || binary->op == Op::Subtract ||
-                binary->op == Op::Multiply || binary->op == Op::Divide ||
-                binary->op == Op::Modulo) &&
+        return (binary->op == Op::Add || binary->op == Op::Subtract || binary->op == Op::Multiply ||
+                binary->op == Op::Divide || binary->op == Op::Modulo) &&
                of_untyped_literals(*binary->left) && of_untyped_literals(*binary->right);
     }
-    return is_untyped_literal(expression);
+    return context_literal(expression);
 }
 
 std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& expression) {
-    if (!is_untyped_literal(expression)) {
+    if (!context_literal(expression)) {
         return std::nullopt;
     }
     const auto value = types_.fold_integer(expression);
@@ -580,11 +566,10 @@ std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& e
 
 std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Expression& left,
                                                               const ast::Expression& right,
-                                                              const sema::Type* hint,
-                                                              const SourceRange& range) {
+                                                              const sema::Type* hint) {
     std::optional<Value> l;
     std::optional<Value> r;
-    if (is_untyped_literal(left) && !is_untyped_literal(right)) {
+    if (context_literal(left) && !context_literal(right)) {
         r = operand_value(right, hint);
         l = r ? eval(left, r->type) : std::nullopt;
     } else {
@@ -596,11 +581,10 @@ std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Express
     if (!l || !r) {
         return std::nullopt;
     }
-    return unify(*l, *r, range);
+    return unify(*l, *r);
 }
 
-std::optional<std::pair<Value, Value>> PouGenerator::unify(const Value& l, const Value& r,
-                                                           const SourceRange& /*range*/) {
+std::optional<std::pair<Value, Value>> PouGenerator::unify(const Value& l, const Value& r) {
     if (l.type == r.type || (sema::is_time_like(*l.type) && sema::is_time_like(*r.type)) ||
         (l.type->kind == sema::TypeKind::String && r.type->kind == sema::TypeKind::String &&
          l.type->wide == r.type->wide)) {
@@ -625,7 +609,7 @@ bool PouGenerator::is_small_integer(const sema::Type& type) {
 }
 
 std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const sema::Type* hint,
-                                         const Destination* dest, const SourceRange& /*range*/) {
+                                         const Destination* dest) {
     if (node.op == ast::UnaryOperator::Plus) {
         return eval(*node.operand, hint, dest);
     }
@@ -706,7 +690,7 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
 std::optional<Value> PouGenerator::operand_value(const ast::Expression& expression,
                                                  const sema::Type* hint) {
     if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
-        return binary(*node, hint, nullptr, expression.range, false);
+        return binary(*node, hint, nullptr, false);
     }
     return eval(expression, hint);
 }
@@ -742,8 +726,7 @@ Value PouGenerator::widened(const Value& value) {
 }
 
 std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, const sema::Type* hint,
-                                          const Destination* dest, const SourceRange& range,
-                                          bool top) {
+                                          const Destination* dest, bool top) {
     using Op = ast::BinaryOperator;
     const bool comparison = node.op == Op::Less || node.op == Op::Greater ||
                             node.op == Op::LessEqual || node.op == Op::GreaterEqual ||
@@ -751,6 +734,7 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
     const bool arithmetic = node.op == Op::Add || node.op == Op::Subtract ||
                             node.op == Op::Multiply || node.op == Op::Divide ||
                             node.op == Op::Modulo;
+    const bool bitwise = node.op == Op::And || node.op == Op::Or || node.op == Op::Xor;
     if (node.op == Op::Power) {
         const sema::Type& lreal = types_.elementary(E::Lreal);
         const auto base = value_as(*node.left, lreal);
@@ -764,11 +748,11 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
         return native_result(signature, lreal, dest);
     }
     const auto immediate =
-        (node.op == Op::Add || node.op == Op::Subtract) && !is_untyped_literal(*node.left)
+        (node.op == Op::Add || node.op == Op::Subtract) && !context_literal(*node.left)
             ? small_literal(*node.right)
             : std::nullopt;
     std::optional<std::pair<Value, Value>> pair;
-    if ((node.op == Op::Multiply || node.op == Op::Divide) && !is_untyped_literal(*node.left)) {
+    if ((node.op == Op::Multiply || node.op == Op::Divide) && !context_literal(*node.left)) {
         // TIME * ANY_NUM and TIME / ANY_NUM (table 30) are natives; the rest is ordinary.
         const auto left = operand_value(*node.left, hint);
         if (!left) {
@@ -778,8 +762,8 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
             return scale_time(node.op == Op::Multiply, *left, *node.right, dest);
         }
         const auto right =
-            operand_value(*node.right, is_untyped_literal(*node.right) ? left->type : hint);
-        pair = right ? unify(*left, *right, range) : std::nullopt;
+            operand_value(*node.right, context_literal(*node.right) ? left->type : hint);
+        pair = right ? unify(*left, *right) : std::nullopt;
     } else if (immediate) {
         auto left = operand_value(*node.left, hint);
         if (!left) {
@@ -794,10 +778,12 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
             if (!top && l.iec == nullptr && is_small_integer(*l.type)) {
                 l = widened(l);
             }
-            if (*immediate == 0) {
+            // value_or: GCC's -O2 cannot see that `immediate` is set in this branch.
+            const std::int64_t constant = immediate.value_or(0);
+            if (constant == 0) {
                 return l; // x + 0
             }
-            const std::int64_t delta = node.op == Op::Add ? *immediate : -std::int64_t{*immediate};
+            const std::int64_t delta = node.op == Op::Add ? constant : -constant;
             const vm::Opcode add = op_width("AddI", *l.type);
             const ValueCache::Key key{ValueCache::Kind::AddImmediate, l.operand.raw,
                                       static_cast<std::uint32_t>(delta),
@@ -814,8 +800,8 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
             return Value{result, l.type, l.iec};
         }
         const auto right = eval(*node.right, left->type);
-        pair = right ? unify(*left, *right, range) : std::nullopt;
-    } else if ((node.op == Op::Add || node.op == Op::Subtract) && !is_untyped_literal(*node.left)) {
+        pair = right ? unify(*left, *right) : std::nullopt;
+    } else if ((node.op == Op::Add || node.op == Op::Subtract) && !context_literal(*node.left)) {
         const auto left = operand_value(*node.left, hint);
         if (!left) {
             return std::nullopt;
@@ -824,10 +810,10 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
             return pointer_offset(node.op == Op::Add, *left, *node.right, dest);
         }
         const auto right =
-            operand_value(*node.right, is_untyped_literal(*node.right) ? left->type : hint);
-        pair = right ? unify(*left, *right, range) : std::nullopt;
+            operand_value(*node.right, context_literal(*node.right) ? left->type : hint);
+        pair = right ? unify(*left, *right) : std::nullopt;
     } else {
-        pair = operands(*node.left, *node.right, comparison ? nullptr : hint, range);
+        pair = operands(*node.left, *node.right, comparison ? nullptr : hint);
     }
     if (!pair) {
         return std::nullopt;
@@ -835,27 +821,33 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
     auto [left, right] = *pair;
     // Small integers (SINT, INT, USINT, UINT) are computed in DINT when the result feeds
     // another operation, as CODESYS and C do: `(a * b) MOD 1000` does not overflow at INT,
-    // the value is cut to INT only where it is stored.
+    // the value is cut to INT only where it is stored. AND, OR and XOR of an operand held in
+    // DINT so are computed there too, and their result cut at once to the type the typing
+    // stage gives them (`i OR 2 * 8` is an INT), whose bits they are.
     const sema::Type* left_iec = left.iec != nullptr ? left.iec : left.type;
     const sema::Type* right_iec = right.iec != nullptr ? right.iec : right.type;
-    if (is_untyped_literal(*node.left)) {
+    if (context_literal(*node.left)) {
         left_iec = right_iec;
     }
-    if (is_untyped_literal(*node.right)) {
+    if (context_literal(*node.right)) {
         right_iec = left_iec;
     }
-    if ((arithmetic || comparison) && is_small_integer(*left_iec) && is_small_integer(*right_iec) &&
+    if ((arithmetic || comparison || bitwise) && is_small_integer(*left_iec) &&
+        is_small_integer(*right_iec) &&
         (left.iec != nullptr || right.iec != nullptr || (!top && arithmetic))) {
         const sema::Type* iec =
             sema::converts_implicitly(*left_iec, *right_iec) ? right_iec : left_iec;
         auto result = apply(node.op, widened(left, *node.left), widened(right, *node.right),
-                            comparison ? dest : nullptr, range);
+                            comparison ? dest : nullptr);
+        if (result && bitwise) {
+            return convert(*result, *iec, dest);
+        }
         if (result && arithmetic) {
             result->iec = iec;
         }
         return result;
     }
-    return apply(node.op, left, right, dest, range);
+    return apply(node.op, left, right, dest);
 }
 
 std::optional<Value> PouGenerator::pointer_offset(bool add, const Value& pointer,
@@ -897,7 +889,7 @@ std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
         return std::nullopt;
     }
     const sema::Type& wide = real ? types_.elementary(E::Lreal) : lint;
-    const auto converted = explicit_convert(*value, wide, nullptr, factor.range);
+    const auto converted = explicit_convert(*value, wide, nullptr);
     const vm::NativeSignature signature{
         true, vm::Scalar::I64, {vm::Scalar::I64, real ? vm::Scalar::F64 : vm::Scalar::I64}};
     call_native(std::string(multiply ? "MUL_TIME" : "DIV_TIME") + (real ? "_LREAL" : ""), signature,
@@ -906,8 +898,7 @@ std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
 }
 
 std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,
-                                         const Value& right, const Destination* dest,
-                                         const SourceRange& /*range*/) {
+                                         const Value& right, const Destination* dest) {
     using Op = ast::BinaryOperator;
     const sema::Type& type = *left.type;
     if (oper == Op::Less || oper == Op::Greater || oper == Op::LessEqual ||

@@ -4,7 +4,6 @@
 #include "eposp/compiler/sema/symbol.hpp"
 
 #include <algorithm>
-#include <fmt/format.h>
 
 namespace eposp::compiler::codegen {
 
@@ -36,14 +35,6 @@ std::uint32_t PouGenerator::generate() {
     const std::uint32_t out = sema::align_up(out_max_, 8);
     builder_.end_body(frame, out);
     return frame + out;
-}
-
-void PouGenerator::error(DiagnosticCode code, const SourceRange& range, std::string message) {
-    program_.diagnostics().error(code, range, std::move(message));
-}
-
-void PouGenerator::warning(DiagnosticCode code, const SourceRange& range, std::string message) {
-    program_.diagnostics().warning(code, range, std::move(message));
 }
 
 void PouGenerator::declare_locals() {
@@ -157,8 +148,7 @@ Operand PouGenerator::native_block() const {
     return Operand::out(sema::align_up(out_pending_, 8));
 }
 
-std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol,
-                                            const SourceRange& /*range*/) {
+std::optional<Place> PouGenerator::variable(const sema::Symbol& symbol) {
     // A PROGRAM's own VAR_GLOBAL lives in its instance; other globals in the configuration.
     const auto local = locals_.find(sema::fold_case(symbol.name));
     if (symbol.kind == sema::SymbolKind::Variable &&

@@ -33,7 +33,7 @@ bool is_enable_argument(const ast::Argument& argument);
 /// The arguments of a standard function call as written, without EN and ENO.
 using Arguments = std::vector<const ast::Argument*>;
 
-/// Type-checks and generates the body of one POU (IEC 61131-3 ed. 3, 7.3: ST expressions and
+/// Generates the body of one POU (IEC 61131-3 ed. 3, 7.3: ST expressions and
 /// statements). Expressions are evaluated memory to memory: a variable is its own operand,
 /// intermediate results go to temporaries on the frame, released after each statement.
 class PouGenerator {
@@ -87,9 +87,7 @@ private:
     void bind(vm::Label label);
     /// An array descriptor, remembering the bytes it covers.
     std::uint16_t array_descriptor(const vm::ArrayDescriptor& array);
-    std::optional<Place> variable(const sema::Symbol& symbol, const SourceRange& range);
-    void error(DiagnosticCode code, const SourceRange& range, std::string message);
-    void warning(DiagnosticCode code, const SourceRange& range, std::string message);
+    std::optional<Place> variable(const sema::Symbol& symbol);
     vm::Opcode op(std::string_view family, const sema::Type& type) const;
     vm::Opcode op_width(std::string_view family, const sema::Type& type) const;
     /// `dst := src` of the same type (strings of other capacities are truncated).
@@ -108,7 +106,7 @@ private:
 
     // --- pou_expressions.cpp -----------------------------------------------------------------
     std::optional<Place> place(const ast::Expression& expression);
-    std::optional<Place> index(const ast::IndexExpression& node, const SourceRange& range);
+    std::optional<Place> index(const ast::IndexExpression& node);
     /// How one array dimension is indexed: the index operand and the descriptor's lower bound
     /// and index size.
     struct ElementIndex {
@@ -144,18 +142,17 @@ private:
     std::optional<Value> eval(const ast::Expression& expression, const sema::Type* hint,
                               const Destination* dest = nullptr);
     /// `called` if it is a value (a function's), else an error: an FB call has none.
-    std::optional<Value> function_value(const std::optional<Value>& called,
-                                        const SourceRange& range);
+    std::optional<Value> function_value(const std::optional<Value>& called);
     /// The value of `expression` as `want` (implicitly widened, else an error).
     std::optional<Value> value_as(const ast::Expression& expression, const sema::Type& want,
                                   const Destination* dest = nullptr);
-    /// `value`, computed from the source at `range`, as `want`.
-    std::optional<Value> value_as(const Value& value, const SourceRange& range,
-                                  const sema::Type& want, const Destination* dest = nullptr);
+    /// `value`, already computed, as `want`.
+    std::optional<Value> value_as(const Value& value, const sema::Type& want,
+                                  const Destination* dest = nullptr);
     std::optional<Value> convert(const Value& value, const sema::Type& want,
                                  const Destination* dest);
     /// The word a bit access `w.3` reads, checked to have that bit.
-    std::optional<Value> bit_word(const ast::BitAccessExpression& node, const SourceRange& range);
+    std::optional<Value> bit_word(const ast::BitAccessExpression& node);
     /// The constant `1 << bit` (or its complement) of `type`.
     vm::Operand bit_mask(const sema::Type& type, std::uint32_t bit, bool inverted);
     /// CHAR#'A' or WCHAR#"A": the character's code as a CHAR / WCHAR constant.
@@ -163,11 +160,11 @@ private:
     std::optional<Value> literal(const ast::Expression& expression,
                                  const ast::LiteralExpression& node, const sema::Type* hint);
     std::optional<Value> unary(const ast::UnaryExpression& node, const sema::Type* hint,
-                               const Destination* dest, const SourceRange& range);
+                               const Destination* dest);
     /// `top` is false for an operand of another operator, whose small-integer result stays
     /// in DINT (Value::iec).
     std::optional<Value> binary(const ast::BinaryExpression& node, const sema::Type* hint,
-                                const Destination* dest, const SourceRange& range, bool top);
+                                const Destination* dest, bool top);
     /// An operand of an operator: like eval, but a nested operation may stay wide.
     std::optional<Value> operand_value(const ast::Expression& expression, const sema::Type* hint);
     /// A small integer value as DINT.
@@ -178,15 +175,12 @@ private:
     vm::Operand integer_constant(const sema::Type& type, std::int64_t value);
     /// The bounds IdxDim checks one index against: lower (DINT) then count (UDINT).
     vm::Operand dimension_constant(std::int64_t lower, std::uint32_t count);
-    std::optional<std::pair<Value, Value>> unify(const Value& left, const Value& right,
-                                                 const SourceRange& range);
+    std::optional<std::pair<Value, Value>> unify(const Value& left, const Value& right);
     static bool is_small_integer(const sema::Type& type);
     /// Both operands of a binary operator, widened to their common type. An untyped literal
     /// is evaluated after the other side and takes its type (literals have no side effects).
-    std::optional<std::pair<Value, Value>> operands(const ast::Expression& left,
-                                                    const ast::Expression& right,
-                                                    const sema::Type* hint,
-                                                    const SourceRange& range);
+    std::optional<std::pair<Value, Value>>
+    operands(const ast::Expression& left, const ast::Expression& right, const sema::Type* hint);
     /// The immediate of an untyped integer literal that fits 32 bits signed.
     std::optional<std::int32_t> small_literal(const ast::Expression& expression);
     /// TIME * number, TIME / number.
@@ -194,15 +188,18 @@ private:
                                     const Destination* dest);
     /// A binary operator on operands already of their common type.
     std::optional<Value> apply(ast::BinaryOperator op, const Value& left, const Value& right,
-                               const Destination* dest, const SourceRange& range);
+                               const Destination* dest);
     std::optional<Value> compare(ast::BinaryOperator op, const Value& left, const Value& right,
                                  const Destination* dest);
     vm::Operand result_operand(const sema::Type& type, const Destination* dest);
     /// `pointer + bytes`, `pointer - bytes`: CODESYS pointer arithmetic, in bytes.
     std::optional<Value> pointer_offset(bool add, const Value& pointer,
                                         const ast::Expression& bytes, const Destination* dest);
-    static bool is_untyped_literal(const ast::Expression& expression);
-    /// An untyped literal, or + - * / MOD of such alone (`16#0 - 1`).
+    /// A literal laid out as its context needs, so evaluated after the other operand: an untyped
+    /// number (types::is_untyped_literal), of the other operand's type; a string literal, at the
+    /// capacity of the string it meets; NULL, as the reference it meets.
+    static bool context_literal(const ast::Expression& expression);
+    /// A context literal, or + - * / MOD of such alone (`16#0 - 1`).
     static bool of_untyped_literals(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
     /// `P` of `P.x`: a PROGRAM named as its single instance (CODESYS).
@@ -211,13 +208,12 @@ private:
     // --- pou_conformant_arrays.cpp ------------------------------------------------------------
     /// What VAR_IN_OUT `field` is passed for `target`: its address, for an ARRAY[*] with the
     /// bounds; an error if `target` does not fit.
-    std::optional<Value> in_out_argument(const Place& target, const sema::Field& field,
-                                         const SourceRange& range);
+    std::optional<Value> in_out_argument(const Place& target, const sema::Field& field);
     /// The element of the ARRAY[*] `array` at `node`'s indices, checked against its bounds.
     std::optional<Place> conformant_element(const Place& array, const ast::IndexExpression& node);
     /// LOWER_BOUND(array, dim) and UPPER_BOUND(array, dim), as DINT.
     std::optional<Value> array_bound(const std::string& name, const ast::CallExpression& node,
-                                     const Destination* dest, const SourceRange& range);
+                                     const Destination* dest);
 
     // --- pou_subranges.cpp -------------------------------------------------------------------
     /// The value of `expression` as the subrange `want`: checked when compiling if constant,
@@ -254,9 +250,8 @@ private:
     // --- pou_statements.cpp ------------------------------------------------------------------
     void statements(const ast::StatementList& list);
     void statement(const ast::Statement& statement);
-    void assignment(const ast::AssignmentStatement& node, const SourceRange& range);
-    void bit_assignment(const ast::BitAccessExpression& target, const ast::Expression& value,
-                        const SourceRange& range);
+    void assignment(const ast::AssignmentStatement& node);
+    void bit_assignment(const ast::BitAccessExpression& target, const ast::Expression& value);
     void if_statement(const ast::IfStatement& node);
     /// The control variable of an enclosing FOR loop, which its body may not assign.
     bool is_for_variable(const Place& place) const;
@@ -302,12 +297,12 @@ private:
                      const std::function<void()>& skipped = {});
     /// A call as an expression or statement, with its EN and ENO.
     std::optional<Value> call(const ast::CallExpression& node, const sema::Type* hint,
-                              const Destination* dest, const SourceRange& range);
+                              const Destination* dest);
 
     // --- pou_calls.cpp -----------------------------------------------------------------------
     /// The call without EN/ENO.
     std::optional<Value> call_enabled(const ast::CallExpression& node, const sema::Type* hint,
-                                      const Destination* dest, const SourceRange& range);
+                                      const Destination* dest);
     std::optional<Value> call_function(const ast::Pou& function, const ast::CallExpression& node,
                                        const Destination* dest);
     std::optional<Value> call_host(const ast::Pou& function, const sema::Type& frame,
@@ -330,37 +325,33 @@ private:
 
     // --- standard_functions.cpp --------------------------------------------------------------
     std::optional<Value> standard_function(const std::string& name, const ast::CallExpression& node,
-                                           const sema::Type* hint, const Destination* dest,
-                                           const SourceRange& range);
+                                           const sema::Type* hint, const Destination* dest);
     /// The arguments of a formal call in the order of the function's inputs (an input named
     /// twice, or one the function does not have with that many arguments, is an error); a
     /// positional call's as they are (standard_parameters.cpp).
     std::optional<Arguments> in_parameter_order(const std::string& name,
                                                 const Arguments& arguments);
     std::optional<Value> conversion(const std::string& name, const Arguments& arguments,
-                                    const Destination* dest, const SourceRange& range);
+                                    const Destination* dest);
     std::optional<Value> string_function(const std::string& name, const Arguments& arguments,
-                                         const Destination* dest, const SourceRange& range);
+                                         const Destination* dest);
     /// ADR(x): the address of x as POINTER TO its type; SIZEOF(x or T): its size in bytes.
-    std::optional<Value> address_or_size(const std::string& name, const Arguments& arguments,
-                                         const SourceRange& range);
+    std::optional<Value> address_or_size(const std::string& name, const Arguments& arguments);
     /// ADD_TIME, SUB_DT_DT, CONCAT_DATE_TOD, ... (time_functions.cpp).
     std::optional<Value> time_function(const std::string& name, const Arguments& arguments,
-                                       const Destination* dest, const SourceRange& range);
+                                       const Destination* dest);
     /// The value of an integer expression as DINT (positions and lengths of the natives).
     std::optional<Value> as_dint(const ast::Expression& expression);
     /// A conversion `X_TO_Y` between any two elementary types.
     std::optional<Value> explicit_convert(const Value& value, const sema::Type& want,
-                                          const Destination* dest, const SourceRange& range);
+                                          const Destination* dest);
     std::optional<Value> numeric_function(const std::string& name, const Arguments& arguments,
-                                          const sema::Type* hint, const Destination* dest,
-                                          const SourceRange& range);
+                                          const sema::Type* hint, const Destination* dest);
 
     // --- selection_functions.cpp -------------------------------------------------------------
     /// MOVE, SEL, MAX, MIN, LIMIT, MUX.
     std::optional<Value> selection(const std::string& name, const Arguments& arguments,
-                                   const sema::Type* hint, const Destination* dest,
-                                   const SourceRange& range);
+                                   const sema::Type* hint, const Destination* dest);
     /// Jumps to `target` when a <= b (a and b of one elementary type or both strings).
     void jump_if_at_most(const Value& a, const Value& b, vm::Label target);
 

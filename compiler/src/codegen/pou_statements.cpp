@@ -25,10 +25,10 @@ void PouGenerator::statement(const ast::Statement& statement) {
         [&](const auto& node) {
             using T = std::decay_t<decltype(node)>;
             if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
-                assignment(node, statement.range);
+                assignment(node);
             } else if constexpr (std::is_same_v<T, ast::CallStatement>) {
                 const auto& call_node = std::get<ast::CallExpression>(node.call->node);
-                call(call_node, nullptr, nullptr, node.call->range);
+                call(call_node, nullptr, nullptr);
             } else if constexpr (std::is_same_v<T, ast::IfStatement>) {
                 if_statement(node);
             } else if constexpr (std::is_same_v<T, ast::CaseStatement>) {
@@ -55,9 +55,9 @@ void PouGenerator::statement(const ast::Statement& statement) {
 }
 
 void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
-                                  const ast::Expression& value, const SourceRange& range) {
+                                  const ast::Expression& value) {
     const auto word_place = place(*target.object);
-    const auto word = word_place ? bit_word(target, range) : std::nullopt;
+    const auto word = word_place ? bit_word(target) : std::nullopt;
     const auto bit =
         word ? value_as(value, types_.elementary(ast::ElementaryType::Bool)) : std::nullopt;
     if (!bit) {
@@ -77,12 +77,12 @@ void PouGenerator::bit_assignment(const ast::BitAccessExpression& target,
     const std::uint8_t count[4] = {static_cast<std::uint8_t>(target.bit), 0, 0, 0};
     emit(op_width("Shl", type), shifted_bit, shifted_bit, program_.constant({count, count + 4}, 4));
     emit(op_width("Or", type), cleared, cleared, shifted_bit);
-    store(*word_place, *value_as(Value{cleared, &type}, range, *word_place->type));
+    store(*word_place, *value_as(Value{cleared, &type}, *word_place->type));
 }
 
-void PouGenerator::assignment(const ast::AssignmentStatement& node, const SourceRange& range) {
+void PouGenerator::assignment(const ast::AssignmentStatement& node) {
     if (const auto* bit = std::get_if<ast::BitAccessExpression>(&node.target->node)) {
-        bit_assignment(*bit, *node.value, range);
+        bit_assignment(*bit, *node.value);
         return;
     }
     const auto target = place(*node.target);
@@ -113,10 +113,9 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node, const Source
     // `y := F(EN := c, ...)`: a call that EN skips leaves y as it was (IEC 61131-3 ed. 3,
     // 6.6.1.2.2), so EN guards the whole assignment.
     with_enable(*enable, [&] {
-        auto value = function_value(call_enabled(*call_node, target->type, into, node.value->range),
-                                    node.value->range);
+        auto value = function_value(call_enabled(*call_node, target->type, into));
         if (value) {
-            value = value_as(*value, node.value->range, *target->type, into);
+            value = value_as(*value, *target->type, into);
         }
         if (value) {
             store(*target, *value);
@@ -169,7 +168,7 @@ bool PouGenerator::select_statement(const ast::IfStatement& node) {
     if (!locals_.contains(sema::fold_case(symbol->name)) && !program_.global(symbol->name)) {
         return false; // the assignment reports it
     }
-    const auto target = variable(*symbol, form->target->range);
+    const auto target = variable(*symbol);
     if (!target || target->kind != Place::Kind::Direct || !target->writable ||
         !sema::is_scalar(*target->type) || target->type->range || is_for_variable(*target)) {
         return false;
@@ -338,8 +337,7 @@ bool PouGenerator::jump_table(Operand selector, const sema::Type& type,
 
 void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRange& range) {
     const sema::Symbol* symbol = model_.resolved(node.control_variable);
-    const auto control =
-        symbol != nullptr ? variable(*symbol, node.control_variable.range) : std::nullopt;
+    const auto control = symbol != nullptr ? variable(*symbol) : std::nullopt;
     if (!control) {
         return;
     }

@@ -28,7 +28,7 @@ std::optional<Value> PouGenerator::subrange_value(const ast::Expression& express
         declared != nullptr && sema::converts_implicitly(*declared, want)) {
         value->type = declared; // checked when it was stored
     }
-    return value_as(*value, expression.range, want, nullptr);
+    return value_as(*value, want, nullptr);
 }
 
 const sema::Type* PouGenerator::declared_subrange(const ast::Expression& expression) {
@@ -44,7 +44,7 @@ const sema::Type* PouGenerator::declared_subrange(const ast::Expression& express
         return nullptr;
     }
     if (call == nullptr && symbol->kind == sema::SymbolKind::Variable) {
-        const auto place = variable(*symbol, expression.range);
+        const auto place = variable(*symbol);
         type = place ? place->type : nullptr;
     } else if (call != nullptr && symbol->kind == sema::SymbolKind::Pou &&
                symbol->pou->kind == ast::PouKind::Function && symbol->pou->return_type) {

@@ -46,8 +46,7 @@ void PouGenerator::jump_if_at_most(const Value& a, const Value& b, vm::Label tar
 }
 
 std::optional<Value> PouGenerator::selection(const std::string& name, const Arguments& arguments,
-                                             const sema::Type* hint, const Destination* dest,
-                                             const SourceRange& /*range*/) {
+                                             const sema::Type* hint, const Destination* dest) {
     // The inputs' count is the manifest's, checked by the typing stage.
     const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
     const Family family = function.family;
@@ -69,7 +68,7 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
     const sema::Type* common = nullptr;
     for (bool literals : {false, true}) {
         for (std::size_t i = first; i < arguments.size(); ++i) {
-            if (is_untyped_literal(*arguments[i]->value) != literals) {
+            if (context_literal(*arguments[i]->value) != literals) {
                 continue;
             }
             values[i] = eval(*arguments[i]->value, common != nullptr ? common : hint);

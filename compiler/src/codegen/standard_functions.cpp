@@ -7,8 +7,6 @@
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "pou_generator.hpp"
 
-#include <fmt/format.h>
-
 namespace eposp::compiler::codegen {
 
 using E = ast::ElementaryType;
@@ -84,8 +82,7 @@ std::int64_t time_unit(E type) {
 std::optional<Value> PouGenerator::standard_function(const std::string& name,
                                                      const ast::CallExpression& node,
                                                      const sema::Type* hint,
-                                                     const Destination* dest,
-                                                     const SourceRange& range) {
+                                                     const Destination* dest) {
     // EN and ENO are handled around the call (pou_enable.cpp); the function sees its inputs.
     Arguments written;
     for (const ast::Argument& argument : node.arguments) {
@@ -104,7 +101,7 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
     }
     const Arguments& arguments = *ordered;
     if (sema::is_conversion_function(name)) {
-        return conversion(name, arguments, dest, range);
+        return conversion(name, arguments, dest);
     }
     const vm::stdlib::StandardFunction* function = vm::stdlib::find_standard_function(name);
     if (function == nullptr || arguments.size() < function->min_inputs ||
@@ -114,28 +111,27 @@ std::optional<Value> PouGenerator::standard_function(const std::string& name,
     }
     switch (function->family) {
     case Family::Text:
-        return string_function(name, arguments, dest, range);
+        return string_function(name, arguments, dest);
     case Family::Bound:
-        return array_bound(name, node, dest, range);
+        return array_bound(name, node, dest);
     case Family::Address:
     case Family::Size:
-        return address_or_size(name, arguments, range);
+        return address_or_size(name, arguments);
     case Family::Time:
-        return time_function(name, arguments, dest, range);
+        return time_function(name, arguments, dest);
     case Family::Select:
     case Family::Extreme:
     case Family::Limit:
     case Family::Multiplex:
     case Family::Move:
-        return selection(name, arguments, hint, dest, range);
+        return selection(name, arguments, hint, dest);
     default:
-        return numeric_function(name, arguments, hint, dest, range);
+        return numeric_function(name, arguments, hint, dest);
     }
 }
 
 std::optional<Value> PouGenerator::address_or_size(const std::string& name,
-                                                   const Arguments& arguments,
-                                                   const SourceRange& /*range*/) {
+                                                   const Arguments& arguments) {
     const bool address =
         vm::stdlib::find_standard_function(name)->family == Family::Address; // else SIZEOF
     const ast::Expression& argument = *arguments.front()->value;
@@ -183,12 +179,11 @@ std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
     if (wide_index(*value->type, true)) {
         return saturated_dint(*value);
     }
-    return explicit_convert(*value, dint, nullptr, expression.range);
+    return explicit_convert(*value, dint, nullptr);
 }
 
 std::optional<Value> PouGenerator::explicit_convert(const Value& value, const sema::Type& want,
-                                                    const Destination* dest,
-                                                    const SourceRange& range) {
+                                                    const Destination* dest) {
     const sema::Type& from = *value.type;
     if (&from == &want) {
         return value;
@@ -213,8 +208,7 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         const bool wchar = other.kind == sema::TypeKind::Elementary && other.elementary == E::Wchar;
         const bool wide = to_string ? want.wide : from.wide;
         if (!sema::is_scalar(other) || other.kind != sema::TypeKind::Elementary || wide != wchar) {
-            error(DiagnosticCode::E0310, range,
-                  fmt::format("{} cannot be converted to {}", from.name, want.name));
+            program_.refused_by_checks(DiagnosticCode::E0310); // types/call_typing.cpp
             return std::nullopt;
         }
         if (to_string) {
@@ -236,8 +230,7 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     }
     if (!sema::is_scalar(from) || !sema::is_scalar(want) ||
         from.kind == sema::TypeKind::Reference || want.kind == sema::TypeKind::Reference) {
-        error(DiagnosticCode::E0310, range,
-              fmt::format("{} cannot be converted to {}", from.name, want.name));
+        program_.refused_by_checks(DiagnosticCode::E0310); // types/call_typing.cpp
         return std::nullopt;
     }
     const bool from_time = sema::is_time_like(from);
@@ -262,7 +255,7 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     }
     if (to_time) {
         const sema::Type& lint = types_.elementary(E::Lint);
-        const auto as_lint = explicit_convert(source, lint, nullptr, range);
+        const auto as_lint = explicit_convert(source, lint, nullptr);
         const Operand result = result_operand(want, dest);
         emit(Opcode::Mul64, result, as_lint->operand,
              integer_constant(lint, time_unit(want.elementary)));
@@ -280,9 +273,9 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
 }
 
 std::optional<Value> PouGenerator::conversion(const std::string& name, const Arguments& arguments,
-                                              const Destination* dest, const SourceRange& range) {
+                                              const Destination* dest) {
     if (arguments.size() != 1) {
-        error(DiagnosticCode::E0306, range, fmt::format("{} takes one argument", name));
+        program_.refused_by_checks(DiagnosticCode::E0306); // types/call_typing.cpp
         return std::nullopt;
     }
     const auto separator = name.starts_with("TO_") ? std::string::npos : name.find("_TO_");
@@ -299,9 +292,7 @@ std::optional<Value> PouGenerator::conversion(const std::string& name, const Arg
             !(value->type->kind == sema::TypeKind::String &&
               source.kind == sema::TypeKind::String && value->type->wide == source.wide)) {
             if (!sema::converts_implicitly(*value->type, source)) {
-                error(DiagnosticCode::E0305, argument.range,
-                      fmt::format("{} needs a {} argument, not {}", name, source.name,
-                                  value->type->name));
+                program_.refused_by_checks(DiagnosticCode::E0305); // types/call_typing.cpp
                 return std::nullopt;
             }
             value = convert(*value, source, nullptr);
@@ -309,13 +300,12 @@ std::optional<Value> PouGenerator::conversion(const std::string& name, const Arg
     } else {
         value = eval(argument, nullptr);
     }
-    return value ? explicit_convert(*value, target, dest, range) : std::nullopt;
+    return value ? explicit_convert(*value, target, dest) : std::nullopt;
 }
 
 std::optional<Value> PouGenerator::string_function(const std::string& name,
                                                    const Arguments& arguments,
-                                                   const Destination* dest,
-                                                   const SourceRange& /*range*/) {
+                                                   const Destination* dest) {
     // Text arguments, then positions and lengths, in the order of the native's parameters.
     const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
     const bool folded = function.max_inputs == vm::stdlib::kExtensible; // CONCAT
@@ -377,8 +367,8 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
 
 std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                                                     const Arguments& arguments,
-                                                    const sema::Type* hint, const Destination* dest,
-                                                    const SourceRange& range) {
+                                                    const sema::Type* hint,
+                                                    const Destination* dest) {
     const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
     using Op = ast::BinaryOperator;
     const Family family = function.family;
@@ -388,13 +378,12 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
         // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is
         // a > b AND b > c; the other extensible functions fold left to right.
-        auto pair = operands(*arguments[0]->value, *arguments[1]->value,
-                             comparison ? nullptr : hint, range);
+        auto pair =
+            operands(*arguments[0]->value, *arguments[1]->value, comparison ? nullptr : hint);
         if (!pair) {
             return std::nullopt;
         }
-        auto result =
-            apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr, range);
+        auto result = apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr);
         Value previous = pair->second;
         for (std::size_t i = 2; result && i < arguments.size(); ++i) {
             auto next = value_as(*arguments[i]->value, *previous.type);
@@ -402,14 +391,14 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
                 return std::nullopt;
             }
             if (comparison) {
-                const auto step = apply(op, previous, *next, nullptr, range);
+                const auto step = apply(op, previous, *next, nullptr);
                 if (!step) {
                     return std::nullopt;
                 }
                 emit(Opcode::And8, result->operand, result->operand, step->operand);
                 previous = *next;
             } else {
-                result = apply(op, *result, *next, nullptr, range);
+                result = apply(op, *result, *next, nullptr);
             }
         }
         return result;
@@ -467,7 +456,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             emit(Opcode::CMov32, cut, beyond, top);
             count = Value{cut, &udint};
         } else {
-            count = explicit_convert(*count, udint, nullptr, range);
+            count = explicit_convert(*count, udint, nullptr);
         }
         const char* opcode = function.operation == Operation::ShiftLeft    ? "Shl"
                              : function.operation == Operation::ShiftRight ? "Shr"
@@ -491,8 +480,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         // Into DINT it saturates as the *_TO_* conversions do: through LREAL, which holds every
         // DINT exactly and keeps a larger value out of DINT's range.
         const auto real =
-            explicit_convert(Value{wide, &lint}, types_.elementary(E::Lreal), nullptr, range);
-        return real ? explicit_convert(*real, types_.elementary(E::Dint), dest, range) : real;
+            explicit_convert(Value{wide, &lint}, types_.elementary(E::Lreal), nullptr);
+        return real ? explicit_convert(*real, types_.elementary(E::Dint), dest) : real;
     }
     if (family == Family::Absolute) {
         const auto value = eval(*arguments[0]->value, hint);
@@ -524,7 +513,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     const sema::Type& real = sema::is_real(*first->type) ? *first->type
                              : real_hint != nullptr      ? *real_hint
                                                          : types_.elementary(E::Lreal);
-    first = explicit_convert(*first, real, nullptr, range);
+    first = explicit_convert(*first, real, nullptr);
     std::vector<Value> values{*first};
     if (two) {
         auto second = eval(*arguments[1]->value, &real);
@@ -534,7 +523,7 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
             }
             return std::nullopt;
         }
-        values.push_back(*explicit_convert(*second, real, nullptr, range));
+        values.push_back(*explicit_convert(*second, real, nullptr));
     }
     if (vm::stdlib::implementation(function) == vm::stdlib::Implementation::Inline) { // SQRT
         const Operand result = result_operand(real, dest);

@@ -11,8 +11,7 @@ using E = ast::ElementaryType;
 
 std::optional<Value> PouGenerator::time_function(const std::string& name,
                                                  const Arguments& arguments,
-                                                 const Destination* dest,
-                                                 const SourceRange& range) {
+                                                 const Destination* dest) {
     using vm::stdlib::Operation;
     const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
     const vm::stdlib::TimeRule& rule = function.time;
@@ -42,7 +41,7 @@ std::optional<Value> PouGenerator::time_function(const std::string& name,
     }
     return apply(function.operation == Operation::Add ? ast::BinaryOperator::Add
                                                       : ast::BinaryOperator::Subtract,
-                 *left, *right, dest, range);
+                 *left, *right, dest);
 }
 
 } // namespace eposp::compiler::codegen

@@ -43,6 +43,11 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"NestedIntArithmeticDoesNotOverflowBeforeMod", "a, b : INT := 300;",
                 "x := (a * b) MOD 1000;", 0},
         IntCase{"IntWidensToLint", "i : INT := -3;", "x := i;", -3},
+        // AND, OR and XOR of INTs give an INT, as the typing stage types them, even where an
+        // operand is computed in DINT: i * 2 is cut to 16#FFFE first, so the OR is 16#FFFF, -1.
+        IntCase{"BitOperatorOfIntsIsAnInt", "i : INT := 16#7FFF;", "x := i OR i * 2;", -1},
+        IntCase{"BitOperatorOfIntsIsAnIntInsideAnExpression", "i : INT := 16#7FFF;",
+                "x := (i OR i * 2) + 1;", 0},
         IntCase{"PowerIsLreal", "", "x := LREAL_TO_LINT(2 ** 10);", 1024},
         IntCase{"BitAnd", "w : WORD := 16#F0F0;", "w := w AND 16#FF00; x := WORD_TO_LINT(w);",
                 0xF000},
