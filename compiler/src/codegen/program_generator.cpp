@@ -31,30 +31,10 @@ vm::PouKind vm_kind(ast::PouKind kind) {
 
 } // namespace
 
-ProgramGenerator::ProgramGenerator(PouSource program, PouSource library,
-                                   const types::TypedProgram& typed, Diagnostics& diagnostics,
-                                   const CompileOptions& options)
+ProgramGenerator::ProgramGenerator(PouSource program, PouSource library, types::TypedProgram& typed,
+                                   Diagnostics& diagnostics, const CompileOptions& options)
     : program_(program), library_(library), typed_(typed), diagnostics_(diagnostics),
-      options_(options),
-      types_(
-          program.model, diagnostics, [this](std::string_view name) { return library_pou(name); },
-          [this](const ast::VariableDeclaration& declaration) {
-              return constants_declared_.contains(&declaration);
-          }) {
-    for (const PouSource* source : {&program_, &library_}) {
-        for (const ast::CompilationUnit& unit : source->units) {
-            for (const ast::Pou& pou : unit.pous) {
-                collect_constants(pou.sections);
-            }
-            collect_constants(unit.global_variable_lists);
-            for (const ast::Configuration& configuration : unit.configurations) {
-                collect_constants(configuration.sections);
-                for (const ast::Resource& resource : configuration.resources) {
-                    collect_constants(resource.sections);
-                }
-            }
-        }
-    }
+      options_(options), types_(typed.types()) {
     for (const ast::CompilationUnit& unit : library_.units) {
         for (const ast::Pou& pou : unit.pous) {
             pou_models_[&pou] = &library_.model;
@@ -68,17 +48,6 @@ ProgramGenerator::ProgramGenerator(PouSource program, PouSource library,
     for (const ast::CompilationUnit& unit : program_.units.last(program_.linked)) {
         for (const ast::Pou& pou : unit.pous) {
             linked_pous_.insert(&pou);
-        }
-    }
-}
-
-void ProgramGenerator::collect_constants(const std::vector<ast::DeclarationSection>& sections) {
-    for (const ast::DeclarationSection& section : sections) {
-        const auto* variables = std::get_if<ast::VarSection>(&section);
-        if (variables != nullptr && variables->constant) {
-            for (const ast::VariableDeclaration& declaration : variables->variables) {
-                constants_declared_.insert(&declaration);
-            }
         }
     }
 }

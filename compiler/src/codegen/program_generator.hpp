@@ -60,8 +60,9 @@ struct NativeFunctionInterface {
 class ProgramGenerator {
 public:
     /// `typed` (the typing stage's result) and `options` outlive the generator: options'
-    /// if_conversion and task_event_check apply here.
-    ProgramGenerator(PouSource program, PouSource library, const types::TypedProgram& typed,
+    /// if_conversion and task_event_check apply here. Code generation lays out in the typing
+    /// stage's TypeTable: a type typing gave is the very object code generation compares with.
+    ProgramGenerator(PouSource program, PouSource library, types::TypedProgram& typed,
                      Diagnostics& diagnostics, const CompileOptions& options);
 
     std::optional<vm::Image> generate();
@@ -139,7 +140,6 @@ private:
     /// Computes the defaults type declarations give, so that their errors are reported even
     /// when no variable uses the type.
     void check_type_defaults();
-    void collect_constants(const std::vector<ast::DeclarationSection>& sections);
     void lay_out_globals(const ast::Configuration& configuration);
     /// Globals of a configuration, resource or global variable list; symbols are named
     /// `path_prefix` + the variable's name.
@@ -177,7 +177,7 @@ private:
     const types::TypedProgram& typed_;
     Diagnostics& diagnostics_;
     const CompileOptions& options_;
-    sema::TypeTable types_;
+    sema::TypeTable& types_; ///< typed_'s
     OpcodeTable opcodes_;
     vm::Builder builder_;
     std::unordered_map<std::string, Place> globals_;   // by folded name
@@ -195,7 +195,6 @@ private:
     std::unordered_map<const sema::Type*, std::vector<std::uint8_t>> default_values_;
     std::vector<vm::Task> tasks_;
     std::uint64_t pou_frames_total_ = 0;
-    std::unordered_set<const ast::VariableDeclaration*> constants_declared_;
     std::map<std::tuple<int, int, std::vector<std::uint32_t>>, Place> direct_variables_;
     std::unordered_map<const ast::Pou*, std::unordered_set<const ast::Pou*>> calls_;
     struct Connected {
