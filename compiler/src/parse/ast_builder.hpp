@@ -3,17 +3,24 @@
 #include "StructuredTextParser.h"
 #include "eposp/compiler/ast/compilation_unit.hpp"
 #include "eposp/compiler/diagnostics.hpp"
+#include "node_builder.hpp"
 
 #include <typeinfo>
 
 namespace eposp::compiler {
 
-/// Turns a parse tree without syntax errors into our typed AST: literal values decoded, names
-/// and locations kept, everything the grammar matched loosely checked here with a precise
-/// message. The parse tree can be dropped afterwards.
+/// Turns a parse tree without syntax errors into our typed AST, with the nodes and checks of
+/// `NodeBuilder`. The product parses with the hand-written `DescentParser`; this walk of the
+/// generated parser's tree is its oracle in tests/compiler/parse/parser_equivalence_test.cpp.
 ast::CompilationUnit build_ast(generated::StructuredTextParser::CompilationUnitContext& tree,
                                antlr4::BufferedTokenStream& tokens, FileId file,
                                Diagnostics& diagnostics);
+
+/// `parse_tokens` as it was before the hand-written parser: the generated parser with SLL
+/// prediction, one library element at a time, each tree turned into its AST; on a syntax error
+/// the whole file again with LL prediction and recovery, its tree built when it has none.
+ast::CompilationUnit parse_tokens_with_tree(antlr4::TokenSource& lexer, FileId file,
+                                            Diagnostics& diagnostics);
 
 /// The context of one labelled alternative (`# name` in the grammar), or null. The type is
 /// compared exactly: a dynamic_cast walks the class hierarchy and costs several times as much,
@@ -32,7 +39,7 @@ public:
     using P = generated::StructuredTextParser;
 
     AstBuilder(antlr4::BufferedTokenStream& tokens, FileId file, Diagnostics& diagnostics)
-        : tokens_(tokens), file_(file), diagnostics_(diagnostics) {}
+        : tokens_(tokens), nodes_(file, diagnostics) {}
 
     ast::CompilationUnit compilation_unit(P::CompilationUnitContext& context);
     /// Adds a TYPE block, POU, configuration or global variable list to `unit`.
@@ -53,15 +60,10 @@ public:
     ast::ProgramInstance program_instance(P::ProgramConfigurationContext& context);
     std::vector<ast::DeclarationSection> sections(const std::vector<P::VarSectionContext*>& all);
     ast::VariableDeclaration variable(P::VarDeclarationContext& context);
-    std::optional<ast::DirectAddress> direct_address(antlr4::Token& token);
     ast::InitializerPtr initializer(P::InitializerContext* context);
     ast::InitializerPtr declaration_initializer(P::DeclarationInitializerContext* context);
     std::vector<ast::ArrayInitElement>
     array_elements(const std::vector<P::ArrayInitElementContext*>& contexts);
-
-    // ast_builder_attributes.cpp
-    /// The attribute pragmas just above `context` (other pragmas are not attributes).
-    std::vector<ast::Attribute> attributes_before(antlr4::ParserRuleContext& context);
 
     // ast_builder_types.cpp
     ast::TypeSpec type_spec(P::TypeSpecContext& context);
@@ -73,22 +75,13 @@ public:
     // ast_builder_expressions.cpp
     ast::ExpressionPtr expression(P::ExpressionContext& context);
     std::vector<ast::Argument> arguments(P::ArgumentListContext* context);
-    ast::ExpressionPtr literal_expression(antlr4::Token& token);
 
     ast::Identifier identifier(P::IdentifierContext& context);
     SourceRange range(antlr4::ParserRuleContext& context) const;
-    SourceRange range(antlr4::Token& token) const;
-    void error(DiagnosticCode code, const SourceRange& range, std::string message);
-    void warning(DiagnosticCode code, const SourceRange& range, std::string message);
 
 private:
-    ast::ExpressionPtr unary_expression(P::UnaryExpressionContext& context);
-    ast::ExpressionPtr bit_access(P::MemberAccessContext& context); ///< `x.3`
-
     antlr4::BufferedTokenStream& tokens_; ///< with the pragmas on its hidden channel
-    FileId file_;
-    Diagnostics& diagnostics_;
-    bool warned_about_on_ = false;
+    NodeBuilder nodes_;
 };
 
 } // namespace eposp::compiler

@@ -1,51 +1,15 @@
 #include "ast_builder.hpp"
-#include "eposp/compiler/ascii_case.hpp"
-
-#include <cctype>
-#include <charconv>
 
 namespace eposp::compiler {
 
-namespace {
-
-using P = generated::StructuredTextParser;
-
-ast::VarSectionKind section_kind(std::size_t token) {
-    switch (token) {
-    case P::VAR_INPUT:
-        return ast::VarSectionKind::Input;
-    case P::VAR_OUTPUT:
-        return ast::VarSectionKind::Output;
-    case P::VAR_IN_OUT:
-        return ast::VarSectionKind::InOut;
-    case P::VAR_TEMP:
-        return ast::VarSectionKind::Temp;
-    case P::VAR_GLOBAL:
-        return ast::VarSectionKind::Global;
-    case P::VAR_EXTERNAL:
-        return ast::VarSectionKind::External;
-    default:
-        return ast::VarSectionKind::Var;
-    }
-}
-
-ast::Retention retention_of(const antlr4::Token* token) {
-    if (token == nullptr) {
-        return ast::Retention::Unspecified;
-    }
-    // RETAIN, or CODESYS's PERSISTENT, which is kept the same way here.
-    return token->getType() == P::NON_RETAIN ? ast::Retention::NonRetain : ast::Retention::Retain;
-}
-
-} // namespace
-
-ast::CompilationUnit build_ast(P::CompilationUnitContext& tree, antlr4::BufferedTokenStream& tokens,
-                               FileId file, Diagnostics& diagnostics) {
+ast::CompilationUnit build_ast(generated::StructuredTextParser::CompilationUnitContext& tree,
+                               antlr4::BufferedTokenStream& tokens, FileId file,
+                               Diagnostics& diagnostics) {
     return AstBuilder(tokens, file, diagnostics).compilation_unit(tree);
 }
 
 ast::CompilationUnit AstBuilder::compilation_unit(P::CompilationUnitContext& context) {
-    ast::CompilationUnit unit{file_, {}, {}, {}, {}};
+    ast::CompilationUnit unit{nodes_.file(), {}, {}, {}, {}};
     for (P::LibraryElementContext* element : context.libraryElement()) {
         library_element(*element, unit);
     }
@@ -73,13 +37,9 @@ void AstBuilder::library_element(P::LibraryElementContext& element, ast::Compila
 void AstBuilder::global_variable_list(P::VarSectionContext& context,
                                       std::vector<ast::DeclarationSection>& lists) {
     ast::DeclarationSection section = std::move(sections({&context}).front());
-    const auto* variables = std::get_if<ast::VarSection>(&section);
-    if (variables == nullptr || variables->kind != ast::VarSectionKind::Global) {
-        error(DiagnosticCode::E0109, range(*context.getStart()),
-              "only VAR_GLOBAL can be declared outside a POU or configuration");
-        return;
+    if (nodes_.check_global_list(section, *context.getStart())) {
+        lists.push_back(std::move(section));
     }
-    lists.push_back(std::move(section));
 }
 
 ast::TypeDeclaration AstBuilder::type_declaration(P::TypeDeclarationContext& context) {
@@ -134,9 +94,11 @@ ast::Configuration AstBuilder::configuration(P::ConfigurationDeclarationContext&
     result.name = identifier(*context.identifier());
     result.sections = sections(context.varSection());
     for (P::ResourceDeclarationContext* declared : context.resourceDeclaration()) {
-        result.resources.push_back(
-            resource(*declared->resourceBody(), identifier(*declared->identifier(0)),
-                     identifier(*declared->identifier(1)), range(*declared)));
+        // The names in the order they are written (`ON` as either is warned about once).
+        ast::Identifier name = identifier(*declared->identifier(0));
+        ast::Identifier processor = identifier(*declared->identifier(1));
+        result.resources.push_back(resource(*declared->resourceBody(), std::move(name),
+                                            std::move(processor), range(*declared)));
     }
     if (auto* implicit = context.resourceBody()) {
         result.resources.push_back(resource(*implicit, result.name, std::nullopt, range(context)));
@@ -161,35 +123,19 @@ ast::Resource AstBuilder::resource(P::ResourceBodyContext& body, ast::Identifier
     return result;
 }
 
-// IEC 61131-3 ed. 3, 6.8.2, table 63: SINGLE, INTERVAL and PRIORITY, each at most once.
 ast::TaskDeclaration AstBuilder::task(P::TaskDeclarationContext& context) {
     ast::TaskDeclaration result;
-    result.attributes = attributes_before(context);
+    result.attributes =
+        nodes_.attributes_before(tokens_.getTokens(), context.getStart()->getTokenIndex());
     result.name = identifier(*context.identifier());
     result.range = range(context);
     for (P::TaskPropertyContext* property : context.taskProperty()) {
-        const ast::Identifier name = identifier(*property->identifier());
-        ast::ExpressionPtr* slot = equal_ignoring_case(name.name, "SINGLE")     ? &result.single
-                                   : equal_ignoring_case(name.name, "INTERVAL") ? &result.interval
-                                   : equal_ignoring_case(name.name, "PRIORITY") ? &result.priority
-                                                                                : nullptr;
-        if (slot == nullptr) {
-            error(DiagnosticCode::E0110, name.range,
-                  "unknown task property '" + name.name +
-                      "'; a task has SINGLE, INTERVAL and PRIORITY");
-            continue;
+        if (ast::ExpressionPtr* slot =
+                nodes_.task_property(result, identifier(*property->identifier()))) {
+            *slot = expression(*property->expression());
         }
-        if (*slot) {
-            error(DiagnosticCode::E0110, name.range,
-                  "task property '" + name.name + "' is given twice");
-            continue;
-        }
-        *slot = expression(*property->expression());
     }
-    if (!result.priority) {
-        error(DiagnosticCode::E0110, result.name.range,
-              "task '" + result.name.name + "' needs a PRIORITY");
-    }
+    nodes_.check_task(result);
     return result;
 }
 
@@ -197,7 +143,7 @@ ast::ProgramInstance AstBuilder::program_instance(P::ProgramConfigurationContext
     ast::ProgramInstance result;
     const std::vector<P::IdentifierContext*> names = context.identifier();
     result.name = identifier(*names.front());
-    result.retention = retention_of(context.retention);
+    result.retention = NodeBuilder::retention(context.retention);
     if (context.WITH() != nullptr) {
         result.task = identifier(*names[1]);
     }
@@ -222,7 +168,8 @@ AstBuilder::sections(const std::vector<P::VarSectionContext*>& all) {
                                              declaration->READ_WRITE() != nullptr,
                                              range(*declaration)};
                 if (path.DIRECT_ADDRESS() != nullptr) {
-                    if (auto address = direct_address(*path.DIRECT_ADDRESS()->getSymbol())) {
+                    if (auto address =
+                            nodes_.direct_address(*path.DIRECT_ADDRESS()->getSymbol())) {
                         entry.path = std::move(*address);
                     }
                 } else {
@@ -239,18 +186,12 @@ AstBuilder::sections(const std::vector<P::VarSectionContext*>& all) {
         }
         auto& variables = static_cast<P::VariableSectionContext&>(*section);
         ast::VarSection built;
-        built.kind = section_kind(variables.kind->getType());
+        built.kind = NodeBuilder::section_kind(variables.kind->getType());
         built.range = range(variables);
         for (P::VarQualifierContext* qualifier : variables.varQualifier()) {
-            if (qualifier->CONSTANT() != nullptr) {
-                built.constant = true;
-            } else {
-                built.retention = retention_of(qualifier->getStart());
-            }
+            NodeBuilder::qualify(built, *qualifier->getStart());
         }
-        if (built.constant && built.retention == ast::Retention::Retain) {
-            error(DiagnosticCode::E0111, built.range, "a CONSTANT section cannot be RETAIN");
-        }
+        nodes_.check_qualifiers(built);
         for (P::VarDeclarationContext* declaration : variables.varDeclaration()) {
             built.variables.push_back(variable(*declaration));
         }
@@ -269,53 +210,9 @@ ast::VariableDeclaration AstBuilder::variable(P::VarDeclarationContext& context)
         result.names.push_back(identifier(*name));
     }
     if (context.AT() != nullptr) {
-        if (result.names.size() > 1) {
-            error(DiagnosticCode::E0112, result.names[1].range,
-                  "AT locates a single variable; declare '" + result.names[1].name +
-                      "' separately");
-        }
-        result.address = direct_address(*context.DIRECT_ADDRESS()->getSymbol());
+        nodes_.locate(result, *context.DIRECT_ADDRESS()->getSymbol());
     }
     return result;
-}
-
-// IEC 61131-3 ed. 3, 6.5.5, table 16: %, I/Q/M, an optional size X/B/W/D/L, then a
-// hierarchical address `0.0` or `*` for a location assigned in VAR_CONFIG.
-std::optional<ast::DirectAddress> AstBuilder::direct_address(antlr4::Token& token) {
-    const std::string text = token.getText();
-    ast::DirectAddress address;
-    address.range = range(token);
-    const char area = static_cast<char>(std::toupper(static_cast<unsigned char>(text[1])));
-    address.area = area == 'I'   ? ast::DirectAddress::Area::Input
-                   : area == 'Q' ? ast::DirectAddress::Area::Output
-                                 : ast::DirectAddress::Area::Memory;
-    std::size_t position = 2;
-    static constexpr std::pair<char, ast::DirectAddress::Size> kSizes[] = {
-        {'X', ast::DirectAddress::Size::Bit},      {'B', ast::DirectAddress::Size::Byte},
-        {'W', ast::DirectAddress::Size::Word},     {'D', ast::DirectAddress::Size::DoubleWord},
-        {'L', ast::DirectAddress::Size::LongWord},
-    };
-    for (const auto& [letter, size] : kSizes) {
-        if (position < text.size() &&
-            std::toupper(static_cast<unsigned char>(text[position])) == letter) {
-            address.size = size;
-            ++position;
-            break;
-        }
-    }
-    while (position < text.size() && text[position] != '*') {
-        std::uint32_t part = 0;
-        const auto [end, status] =
-            std::from_chars(text.data() + position, text.data() + text.size(), part);
-        if (status != std::errc{}) {
-            error(DiagnosticCode::E0113, address.range,
-                  "address part in '" + text + "' is too large");
-            return std::nullopt;
-        }
-        address.path.push_back(part);
-        position = static_cast<std::size_t>(end - text.data()) + 1; // past the '.'
-    }
-    return address;
 }
 
 ast::InitializerPtr AstBuilder::initializer(P::InitializerContext* context) {
@@ -348,13 +245,7 @@ ast::InitializerPtr AstBuilder::declaration_initializer(P::DeclarationInitialize
     if (bare == nullptr) {
         return nullptr;
     }
-    auto result = std::make_unique<ast::Initializer>();
-    result->range = range(*bare);
-    result->value = array_elements(bare->arrayInitElement());
-    warning(DiagnosticCode::W0101, result->range,
-            "array initial values without brackets are a CODESYS V2 form; IEC "
-            "61131-3 (6.4.4.5) writes them in brackets: [1, 2, 3]");
-    return result;
+    return nodes_.bare_array_initializer(array_elements(bare->arrayInitElement()), range(*bare));
 }
 
 std::vector<ast::ArrayInitElement>
@@ -362,7 +253,7 @@ AstBuilder::array_elements(const std::vector<P::ArrayInitElementContext*>& conte
     std::vector<ast::ArrayInitElement> elements;
     for (P::ArrayInitElementContext* element : contexts) {
         ast::ExpressionPtr count = element->INTEGER() != nullptr
-                                       ? literal_expression(*element->INTEGER()->getSymbol())
+                                       ? nodes_.literal(*element->INTEGER()->getSymbol())
                                        : nullptr;
         elements.push_back({std::move(count), initializer(element->initializer())});
     }

@@ -2,38 +2,6 @@
 
 namespace eposp::compiler {
 
-namespace {
-
-using P = generated::StructuredTextParser;
-
-bool is_assignable(const ast::Expression& target) {
-    return std::holds_alternative<ast::NameExpression>(target.node) ||
-           std::holds_alternative<ast::DirectAddressExpression>(target.node) ||
-           std::holds_alternative<ast::MemberExpression>(target.node) ||
-           std::holds_alternative<ast::BitAccessExpression>(target.node) ||
-           std::holds_alternative<ast::IndexExpression>(target.node) ||
-           std::holds_alternative<ast::DereferenceExpression>(target.node);
-}
-
-// `x = 1;` meant `x := 1;`: the '=' between the operands (with a blank on each side, or none),
-// when nothing else stands there, becomes ':='.
-std::optional<FixIt> assignment_instead_of(const ast::BinaryExpression& comparison) {
-    const SourceRange& left = comparison.left->range;
-    const SourceRange& right = comparison.right->range;
-    if (left.end.line != right.begin.line || right.begin.column <= left.end.column + 1) {
-        return std::nullopt;
-    }
-    const std::uint32_t gap = right.begin.column - left.end.column - 1;
-    if (gap != 1 && gap != 3) {
-        return std::nullopt;
-    }
-    return FixIt{
-        {left.file, {left.end.line, left.end.column + 1}, {left.end.line, right.begin.column - 1}},
-        gap == 1 ? ":=" : " := "};
-}
-
-} // namespace
-
 ast::StatementList AstBuilder::statements(P::StatementListContext* context) {
     ast::StatementList result;
     if (context == nullptr) {
@@ -50,25 +18,10 @@ ast::Statement AstBuilder::statement(P::StatementContext& context) {
     if (auto* simple = alternative<P::ExpressionStatementContext>(&context)) {
         ast::ExpressionPtr target = expression(*simple->target);
         if (simple->value != nullptr) {
-            if (!is_assignable(*target)) {
-                error(DiagnosticCode::E0106, target->range,
-                      "the left side of ':=' must be a variable");
-            }
+            nodes_.check_assignment_target(*target);
             return {where, ast::AssignmentStatement{std::move(target), expression(*simple->value)}};
         }
-        if (!std::holds_alternative<ast::CallExpression>(target->node)) {
-            const auto* binary = std::get_if<ast::BinaryExpression>(&target->node);
-            const bool comparison = binary != nullptr && binary->op == ast::BinaryOperator::Equal;
-            Diagnostic diagnostic(
-                DiagnosticCode::E0107, target->range,
-                comparison ? "this statement does nothing; did you mean ':=' instead of '='?"
-                           : "this statement does nothing; expected an assignment ':=' or a call");
-            if (comparison) {
-                diagnostic.fix_it = assignment_instead_of(*binary);
-            }
-            diagnostics_.report(std::move(diagnostic));
-        }
-        return {where, ast::CallStatement{std::move(target)}};
+        return nodes_.call_statement(where, std::move(target));
     }
     if (auto* if_statement = alternative<P::IfStatementContext>(&context)) {
         ast::IfStatement result;

@@ -6,22 +6,6 @@ namespace {
 
 using P = generated::StructuredTextParser;
 
-bool is_string_type(ast::ElementaryType type) {
-    return type == ast::ElementaryType::String || type == ast::ElementaryType::Wstring;
-}
-
-// A type by name: an elementary type keyword, or a derived/FB type to resolve later.
-ast::TypeSpec named_type(ast::Identifier name) {
-    const SourceRange where = name.range;
-    if (const auto elementary = ast::elementary_type_from_name(name.name)) {
-        if (is_string_type(*elementary)) {
-            return {where, ast::StringTypeRef{*elementary, nullptr}};
-        }
-        return {where, ast::ElementaryTypeRef{*elementary}};
-    }
-    return {where, ast::NamedTypeRef{std::move(name)}};
-}
-
 std::vector<ast::EnumValue> enum_values(AstBuilder& builder,
                                         const std::vector<P::EnumValueContext*>& values) {
     std::vector<ast::EnumValue> result;
@@ -36,7 +20,8 @@ std::vector<ast::EnumValue> enum_values(AstBuilder& builder,
 // `(a, b)`, `UDINT (a, b)` (IEC) or `(a, b) UDINT` (TwinCAT): `base` is null for the first.
 ast::EnumType enum_type(AstBuilder& builder, P::IdentifierContext* base,
                         const std::vector<P::EnumValueContext*>& values) {
-    return {base != nullptr ? std::make_unique<ast::TypeSpec>(named_type(builder.identifier(*base)))
+    return {base != nullptr ? std::make_unique<ast::TypeSpec>(
+                                  NodeBuilder::named_type(builder.identifier(*base)))
                             : nullptr,
             enum_values(builder, values)};
 }
@@ -85,31 +70,18 @@ ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
         return {where, enum_type(*this, typed_enum->identifier(), typed_enum->enumValue())};
     }
     if (auto* sub = alternative<P::SubrangeTypeContext>(&context)) {
-        return {where, ast::SubrangeType{std::make_unique<ast::TypeSpec>(
-                                             named_type(identifier(*sub->identifier()))),
+        return {where, ast::SubrangeType{std::make_unique<ast::TypeSpec>(NodeBuilder::named_type(
+                                             identifier(*sub->identifier()))),
                                          subrange(*this, *sub->subrange())}};
     }
     if (auto* sized = alternative<P::SizedTypeContext>(&context)) {
         ast::Identifier base = identifier(*sized->identifier());
         ast::ExpressionPtr length = expression(*sized->expression());
-        const auto elementary = ast::elementary_type_from_name(base.name);
-        if (elementary && is_string_type(*elementary)) {
-            return {where, ast::StringTypeRef{*elementary, std::move(length)}};
-        }
-        // `DWORD (Red)`: a typed enumeration with one value reads like a length in parentheses.
-        if (auto* name = std::get_if<ast::NameExpression>(&length->node);
-            name != nullptr && sized->LEFT_PAREN() != nullptr) {
-            std::vector<ast::EnumValue> values;
-            values.push_back({std::move(name->name), nullptr});
-            return {where,
-                    ast::EnumType{std::make_unique<ast::TypeSpec>(named_type(std::move(base))),
-                                  std::move(values)}};
-        }
-        error(DiagnosticCode::E0108, base.range,
-              "only STRING and WSTRING take a length; '" + base.name + "' does not");
-        return named_type(std::move(base));
+        return nodes_.sized_type(where, std::move(base), std::move(length),
+                                 sized->LEFT_PAREN() != nullptr);
     }
-    return named_type(identifier(*static_cast<P::NamedTypeContext&>(context).identifier()));
+    return NodeBuilder::named_type(
+        identifier(*static_cast<P::NamedTypeContext&>(context).identifier()));
 }
 
 } // namespace eposp::compiler

@@ -1,8 +1,7 @@
 #include "eposp/compiler/parser.hpp"
 
 #include "../utf8.hpp"
-#include "StructuredTextParser.h"
-#include "ast_builder.hpp"
+#include "descent_parser.hpp"
 #include "input_stream.hpp"
 #include "lexer.hpp"
 #include "nesting_limit.hpp"
@@ -10,14 +9,12 @@
 #include "syntax_error_strategy.hpp"
 #include "token_range.hpp"
 
-#include <BailErrorStrategy.h>
-#include <CommonTokenStream.h>
-#include <Exceptions.h>
 #include <atn/ParserATNSimulator.h>
 #include <atn/PredictionMode.h>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace eposp::compiler {
 
@@ -53,9 +50,8 @@ std::string utf8_text(const SourceManager& sources, FileId file, Diagnostics& di
 // Lexical errors, reported before parsing. An unclosed comment lexes as '(' '*' (or '/' '*')
 // with nothing between, a pair that no ST construct contains; everything after it is comment
 // text, so the file is not parsed further. An unclosed string ends at the end of its line.
-bool report_lexical_errors(antlr4::CommonTokenStream& tokens, FileId file,
+bool report_lexical_errors(const std::vector<antlr4::Token*>& all, FileId file,
                            Diagnostics& diagnostics) {
-    const std::vector<antlr4::Token*>& all = tokens.getTokens();
     for (std::size_t i = 0; i < all.size(); ++i) {
         const std::size_t type = all[i]->getType();
         if (type == StructuredTextParser::UNTERMINATED_STRING) {
@@ -75,71 +71,59 @@ bool report_lexical_errors(antlr4::CommonTokenStream& tokens, FileId file,
     return true;
 }
 
-void set_prediction_mode(StructuredTextParser& parser, antlr4::atn::PredictionMode mode) {
-    parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(mode);
-}
-
-// Correct input (nearly all) parses with the fast SLL prediction, bailing out on the first
-// error. It is parsed one library element at a time, each element's parse tree turned into its
-// AST and freed before the next: the tree of a whole file takes many times the memory of its
-// AST. The builder reports to `built`, kept apart until the file is known to parse.
-std::optional<ast::CompilationUnit> parse_elements(StructuredTextParser& parser,
-                                                   antlr4::CommonTokenStream& tokens, FileId file,
-                                                   Diagnostics& built) {
-    parser.removeErrorListeners();
-    parser.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
-    set_prediction_mode(parser, antlr4::atn::PredictionMode::SLL);
-    AstBuilder builder(tokens, file, built);
-    ast::CompilationUnit unit{file, {}, {}, {}, {}};
-    try {
-        while (tokens.LA(1) != antlr4::Token::EOF) {
-            builder.library_element(*parser.libraryElement(), unit);
-            parser.getTreeTracker().reset();
-        }
-    } catch (const antlr4::ParseCancellationException&) {
-        return std::nullopt;
+// The file's tokens have been parsed up to `refused` by the hand-written parser; the generated
+// one reports the syntax error there (none after an unterminated string, already reported).
+// Should the file have no error at all, the hand-written parser refused what the grammar
+// accepts: a fault of ours, reported as such rather than left without a message.
+void report_syntax_errors(antlr4::CommonTokenStream& tokens, const antlr4::Token& refused,
+                          FileId file, Diagnostics& diagnostics, std::size_t errors_before) {
+    StructuredTextParser parser(&tokens);
+    parse_with_recovery(parser, file, diagnostics);
+    if (diagnostics.error_count() == errors_before) {
+        diagnostics.error(DiagnosticCode::E0001, token_range(file, refused),
+                          "internal error: the parser refused this token, which the grammar "
+                          "accepts here (the generated parser found no syntax error)");
     }
-    return unit;
-}
-
-// Only when the fast parse fails is the file parsed again, whole, with full LL prediction and
-// error recovery, which also decides whether the error is real. No AST when it is.
-std::optional<ast::CompilationUnit> parse_with_recovery(StructuredTextParser& parser,
-                                                        antlr4::CommonTokenStream& tokens,
-                                                        FileId file, Diagnostics& diagnostics,
-                                                        Diagnostics& built) {
-    const std::size_t errors_before = diagnostics.error_count();
-    tokens.seek(0);
-    parser.reset();
-    parser.setErrorHandler(std::make_shared<SyntaxErrorStrategy>(file, diagnostics));
-    set_prediction_mode(parser, antlr4::atn::PredictionMode::LL);
-    StructuredTextParser::CompilationUnitContext* tree = parser.compilationUnit();
-    if (diagnostics.error_count() != errors_before) {
-        return std::nullopt;
-    }
-    return build_ast(*tree, tokens, file, built);
 }
 
 } // namespace
 
+bool check_tokens(const std::vector<antlr4::Token*>& tokens, FileId file,
+                  Diagnostics& diagnostics) {
+    return report_lexical_errors(tokens, file, diagnostics) &&
+           check_nesting(tokens, file, diagnostics);
+}
+
+StructuredTextParser::CompilationUnitContext*
+parse_with_recovery(StructuredTextParser& parser, FileId file, Diagnostics& diagnostics) {
+    parser.reset(); // from the first token
+    parser.removeErrorListeners();
+    parser.setErrorHandler(std::make_shared<SyntaxErrorStrategy>(file, diagnostics));
+    parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(
+        antlr4::atn::PredictionMode::LL);
+    return parser.compilationUnit();
+}
+
+// The whole file's tokens are read first: the lexical checks and limits see them all before
+// anything is parsed.
 ast::CompilationUnit parse_tokens(antlr4::TokenSource& lexer, FileId file,
                                   Diagnostics& diagnostics) {
     const std::size_t errors_before = diagnostics.error_count();
     antlr4::CommonTokenStream tokens(&lexer);
     tokens.fill();
-    if (!report_lexical_errors(tokens, file, diagnostics) ||
-        !check_nesting(tokens.getTokens(), file, diagnostics)) {
+    const std::vector<antlr4::Token*> all = tokens.getTokens(); // a copy: the stream makes one
+    if (!check_tokens(all, file, diagnostics)) {
         return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
-    StructuredTextParser parser(&tokens);
-    const auto unlimited = std::numeric_limits<std::size_t>::max();
-    Diagnostics built(unlimited);
-    std::optional<ast::CompilationUnit> unit = parse_elements(parser, tokens, file, built);
+    // What the parser says is kept apart until the file is known to parse.
+    Diagnostics built(std::numeric_limits<std::size_t>::max());
+    DescentParser parser(all, file, built);
+    std::optional<ast::CompilationUnit> unit = parser.compilation_unit();
     if (!unit) {
-        built = Diagnostics(unlimited); // what the builder said before the syntax error
-        unit = parse_with_recovery(parser, tokens, file, diagnostics, built);
+        report_syntax_errors(tokens, *parser.refused_at(), file, diagnostics, errors_before);
+        return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
-    if (!unit || diagnostics.error_count() != errors_before) {
+    if (diagnostics.error_count() != errors_before) {
         return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
     for (const Diagnostic& diagnostic : built.all()) {

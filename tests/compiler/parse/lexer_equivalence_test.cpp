@@ -10,13 +10,9 @@
 #include "parse/input_stream.hpp"
 #include "parse/lexer.hpp"
 #include "parse/parse_tokens.hpp"
-#include "utf8.hpp"
+#include "st_corpus.hpp"
 
 #include <CommonTokenStream.h>
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
-#include <fstream>
 #include <gtest/gtest.h>
 #include <random>
 #include <sstream>
@@ -67,23 +63,13 @@ std::unique_ptr<antlr4::TokenSource> hand_written_lexer(InputStream& input) {
     return std::make_unique<Lexer>(input);
 }
 
-// `bytes` as the parser reads them: UTF-8 as it is, anything else as Windows-1252.
-std::string as_text(const std::string& bytes) {
-    for (std::size_t i = 0; i < bytes.size();) {
-        if (!utf8::decode(bytes, i)) {
-            return utf8::from_windows_1252(bytes);
-        }
-    }
-    return bytes;
-}
-
 // Both lexers on one input; `parse` also compares the ASTs and diagnostics parsed from them.
 void expect_same(const std::string& bytes, const std::string& name, bool parse = true) {
     if (::testing::Test::HasFailure()) {
         return; // the first difference of a test says enough
     }
     SCOPED_TRACE(name);
-    const std::string text = as_text(bytes);
+    const std::string text = corpus::as_text(bytes);
     // The input stream decodes the text itself, as the runtime's would.
     ASSERT_EQ(InputStream(text).toString(), antlr4::ANTLRInputStream(text).toString());
     InputStream generated_input(text);
@@ -105,92 +91,22 @@ void expect_same(const std::string& bytes, const std::string& name, bool parse =
     }
 }
 
-std::string read_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::vector<std::filesystem::path> st_files() {
-    std::vector<std::filesystem::path> files;
-    const std::filesystem::path roots[] = {std::filesystem::path(EPOSP_SOURCE_DIR) / "tests",
-                                           std::filesystem::path(EPOSP_SOURCE_DIR) / "examples",
-                                           EPOSP_BENCH_ST_DIR};
-    for (const auto& root : roots) {
-        if (!std::filesystem::is_directory(root)) {
-            continue; // the benchmarks' folder lies outside the repository
-        }
-        for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
-            if (entry.is_regular_file() && entry.path().extension() == ".st") {
-                files.push_back(entry.path());
-            }
-        }
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-// The characters that make tokens differ: openers and closers of comments, pragmas and
-// strings, '$' escapes, '#' and the letters of literal prefixes, operators, line ends.
-constexpr std::string_view kInteresting =
-    "(*)/{}'\"$#%._-+:=<>^&[],;0123456789eEtTdDlLiIxX_ab\n\r\t ";
-
-std::string random_string(std::mt19937& random, std::string_view alphabet, std::size_t length) {
-    std::string text;
-    std::uniform_int_distribution<std::size_t> pick(0, alphabet.size() - 1);
-    for (std::size_t i = 0; i < length; ++i) {
-        text.push_back(alphabet[pick(random)]);
-    }
-    return text;
-}
-
-std::string mixed_case(std::mt19937& random, std::string word) {
-    for (char& c : word) {
-        if (random() % 2 == 0) {
-            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        }
-    }
-    return word;
-}
-
 TEST(LexerEquivalence, EveryStFileOfTheRepositoryAndTheBenchmarks) {
-    const auto files = st_files();
+    const auto files = corpus::st_files();
     ASSERT_GE(files.size(), 60U);
     for (const auto& file : files) {
-        expect_same(read_file(file), file.string());
+        expect_same(corpus::read_file(file), file.string());
     }
 }
 
 TEST(LexerEquivalence, TruncatedAndMutatedFiles) {
     std::mt19937 random(17);
-    for (const auto& file : st_files()) {
-        const std::string text = read_file(file);
-        if (text.empty()) {
-            continue;
-        }
-        std::uniform_int_distribution<std::size_t> position(0, text.size() - 1);
-        for (int i = 0; i < 6; ++i) {
-            const std::size_t cut = position(random);
-            expect_same(text.substr(0, cut), file.string() + " cut at " + std::to_string(cut));
-        }
-        for (int i = 0; i < 6; ++i) {
-            std::string mutated = text;
-            for (int change = 0; change < 4; ++change) {
-                const std::size_t at = position(random) % mutated.size();
-                const std::string piece = random_string(random, kInteresting, 1 + random() % 3);
-                switch (random() % 3) {
-                case 0:
-                    mutated.replace(at, piece.size(), piece);
-                    break;
-                case 1:
-                    mutated.insert(at, piece);
-                    break;
-                default:
-                    mutated.erase(at, piece.size());
-                    break;
-                }
-            }
-            expect_same(mutated, file.string() + " mutation " + std::to_string(i));
-        }
+    for (const auto& file : corpus::st_files()) {
+        corpus::for_each_variant(corpus::read_file(file), file.string(), random,
+                                 corpus::kInteresting,
+                                 [](const std::string& text, const std::string& name) {
+                                     expect_same(text, name);
+                                 });
     }
 }
 
@@ -210,7 +126,7 @@ TEST(LexerEquivalence, RandomBytes) {
 TEST(LexerEquivalence, RandomTextOfTheCharactersThatMatter) {
     std::mt19937 random(3);
     for (int i = 0; i < 20000; ++i) {
-        const std::string text = random_string(random, kInteresting, random() % 40);
+        const std::string text = corpus::random_string(random, corpus::kInteresting, random() % 40);
         expect_same(text, "random text " + std::to_string(i), i % 10 == 0);
     }
 }
@@ -228,7 +144,7 @@ TEST(LexerEquivalence, EveryKeywordInMixedCase) {
         }
         for (const std::string& suffix : after) {
             for (const std::string& spelling :
-                 {word, mixed_case(random, word), mixed_case(random, word)}) {
+                 {word, corpus::mixed_case(random, word), corpus::mixed_case(random, word)}) {
                 expect_same(spelling + suffix, spelling + suffix);
                 expect_same("x" + spelling + suffix, "x" + spelling + suffix, false);
             }

@@ -1,7 +1,7 @@
 // CODESYS attribute pragmas: `{attribute 'name'}` and `{attribute 'name' := 'value'}` above a
 // declaration. Other pragmas ({info ...}, {warning ...}) mean nothing here and are passed over.
 
-#include "ast_builder.hpp"
+#include "node_builder.hpp"
 #include "token_range.hpp"
 
 #include <cctype>
@@ -90,10 +90,17 @@ PragmaKind read_attribute(std::string_view pragma, ast::Attribute& attribute) {
 
 } // namespace
 
-std::vector<ast::Attribute> AstBuilder::attributes_before(antlr4::ParserRuleContext& context) {
+std::vector<ast::Attribute>
+NodeBuilder::attributes_before(const std::vector<antlr4::Token*>& tokens, std::size_t index) {
+    // The hidden tokens back to the previous token on the default channel, as
+    // BufferedTokenStream::getHiddenTokensToLeft finds them.
+    std::size_t first = index;
+    while (first > 0 && tokens[first - 1]->getChannel() != antlr4::Token::DEFAULT_CHANNEL) {
+        --first;
+    }
     std::vector<ast::Attribute> attributes;
-    for (antlr4::Token* pragma :
-         tokens_.getHiddenTokensToLeft(context.getStart()->getTokenIndex())) {
+    for (std::size_t i = first; i < index; ++i) {
+        const antlr4::Token* pragma = tokens[i];
         ast::Attribute attribute;
         attribute.range = token_range(file_, *pragma);
         switch (read_attribute(pragma->getText(), attribute)) {
