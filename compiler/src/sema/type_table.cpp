@@ -574,14 +574,36 @@ std::optional<std::uint64_t> TypeTable::fold_as(const ast::Expression& expressio
                                                 const Type& type) {
     switch (scalar_of(type)) {
     case vm::Scalar::U32:
-        return fold(expression, Arithmetic{.is_unsigned = true, .bits = 32});
+        return fold(expression, Arithmetic{.is_unsigned = true, .bits = 32, .type = &type});
     case vm::Scalar::I64:
-        return fold(expression, Arithmetic{});
+        return fold(expression, Arithmetic{.type = &type});
     case vm::Scalar::U64:
-        return fold(expression, Arithmetic{.is_unsigned = true});
+        return fold(expression, Arithmetic{.is_unsigned = true, .type = &type});
     default:
-        return fold(expression, Arithmetic{.bits = 32});
+        return fold(expression, Arithmetic{.bits = 32, .type = &type});
     }
+}
+
+bool TypeTable::computes_in(const ast::Expression& expression, const Type& type) {
+    if (const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node)) {
+        const auto* integer = std::get_if<ast::IntegerLiteral>(&literal->value);
+        return integer != nullptr && (!integer->type || *integer->type == type.elementary);
+    }
+    if (const auto* name = std::get_if<ast::NameExpression>(&expression.node)) {
+        const Symbol* symbol = model_.resolved(name->name);
+        const Type* declared = symbol != nullptr && symbol->kind == SymbolKind::Variable &&
+                                       symbol->variable != nullptr
+                                   ? resolve(symbol->variable->type)
+                                   : nullptr;
+        return declared != nullptr && declared->size == type.size &&
+               is_signed(*declared) == is_signed(type);
+    }
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        return computes_in(*unary->operand, type);
+    }
+    const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
+    return binary != nullptr && computes_in(*binary->left, type) &&
+           computes_in(*binary->right, type);
 }
 
 std::optional<std::uint64_t> TypeTable::fold(const ast::Expression& expression,
@@ -636,10 +658,27 @@ std::optional<std::uint64_t> TypeTable::fold(const ast::Expression& expression,
     }
     if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
         const auto operand = fold(*unary->operand, arithmetic);
-        if (!operand || unary->op == ast::UnaryOperator::Not) {
+        if (!operand) {
             return std::nullopt;
         }
-        return unary->op == ast::UnaryOperator::Negate ? held(0ULL - *operand) : *operand;
+        switch (unary->op) {
+        case ast::UnaryOperator::Negate:
+            return held(0ULL - *operand);
+        case ast::UnaryOperator::Not: {
+            // At run time NOT flips its operand type's bits: a BYTE's eight (NOT 16#0F is
+            // 16#F0), also where the result widens. Folded only where that type is known.
+            const Type* type = arithmetic.type;
+            if (type == nullptr || !computes_in(*unary->operand, *type)) {
+                return std::nullopt;
+            }
+            const std::uint64_t flipped = held(~*operand);
+            return is_signed(*type) || type->size >= 4
+                       ? flipped
+                       : flipped & ((std::uint64_t{1} << (8 * type->size)) - 1);
+        }
+        default:
+            return *operand;
+        }
     }
     const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
     if (binary == nullptr) {
@@ -669,6 +708,12 @@ std::optional<std::uint64_t> TypeTable::fold(const ast::Expression& expression,
         return sr == 0 || (sl == minimum && sr == -1)
                    ? std::nullopt
                    : std::optional(held(static_cast<std::uint64_t>(sl / sr)));
+    case ast::BinaryOperator::And:
+        return l & r;
+    case ast::BinaryOperator::Or:
+        return l | r;
+    case ast::BinaryOperator::Xor:
+        return l ^ r;
     case ast::BinaryOperator::Modulo:
         if (arithmetic.is_unsigned) {
             return r == 0 ? std::nullopt : std::optional(l % r);

@@ -171,6 +171,40 @@ public:
         }
     }
 
+    /// A BOOL constant: TRUE, FALSE, a BOOL CONSTANT, and NOT, AND, OR, XOR of those.
+    std::optional<bool> boolean(const ast::Expression& expression) {
+        if (const ast::Literal* literal = literal_of(expression)) {
+            const auto* boolean = std::get_if<ast::BoolLiteral>(literal);
+            return boolean != nullptr ? std::optional(boolean->value) : std::nullopt;
+        }
+        if (const auto [initial, type] = constant(expression); initial != nullptr) {
+            return type != nullptr && sema::is_bool(*type)
+                       ? within(expression, [&] { return boolean(*initial); })
+                       : std::nullopt;
+        }
+        if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+            const auto operand = boolean(*unary->operand);
+            return operand && unary->op == ast::UnaryOperator::Not ? std::optional(!*operand)
+                                                                   : std::nullopt;
+        }
+        const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
+        const auto left = binary != nullptr ? boolean(*binary->left) : std::nullopt;
+        const auto right = left ? boolean(*binary->right) : std::nullopt;
+        if (!right) {
+            return std::nullopt;
+        }
+        switch (binary->op) {
+        case ast::BinaryOperator::And:
+            return *left && *right;
+        case ast::BinaryOperator::Or:
+            return *left || *right;
+        case ast::BinaryOperator::Xor:
+            return *left != *right;
+        default:
+            return std::nullopt;
+        }
+    }
+
     /// A BOOL, CHAR or STRING constant: the literal it is or a CONSTANT names.
     const ast::Literal* literal(const ast::Expression& expression) {
         if (const ast::Literal* literal = literal_of(expression)) {
@@ -272,6 +306,11 @@ constant_bytes(const ast::Expression& expression, const sema::Type& type, sema::
             folder.time(expression, type.elementary == ast::ElementaryType::TimeOfDay ||
                                         type.elementary == ast::ElementaryType::Ltod);
         return or_refused(value ? std::optional(bytes_of(*value)) : std::nullopt);
+    }
+    if (sema::is_bool(type)) {
+        if (const auto value = folder.boolean(expression)) {
+            return integer_bytes(*value ? 1 : 0, type.size);
+        }
     }
     const ast::Literal* literal = folder.literal(expression);
     if (literal != nullptr) {

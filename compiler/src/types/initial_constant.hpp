@@ -24,7 +24,8 @@ struct ConstantRefusal {
 
 /// The bytes of `expression` as a constant of `type`: literals, enumeration values, CONSTANTs
 /// (VAR CONSTANT, VAR_GLOBAL CONSTANT) with a plain initial value, signs, + - * / (and MOD on
-/// integers) of those; durations and dates (but TIME_OF_DAY, which wraps at midnight) plus or
+/// integers) of those, NOT AND OR XOR on BOOLs and integers (NOT on literals and constants of
+/// the variable's type); durations and dates (but TIME_OF_DAY, which wraps at midnight) plus or
 /// minus a duration, a duration times or divided by an integer (`T#1ms * 4`), as the VM
 /// computes them (a REAL factor rounds at run time and is no constant here).
 std::variant<std::vector<std::uint8_t>, ConstantRefusal>

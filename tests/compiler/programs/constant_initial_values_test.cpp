@@ -138,5 +138,85 @@ END_PROGRAM
               run.get<std::uint32_t>("Main.unsigned_half_now"));
 }
 
+// NOT, AND, OR and XOR fold as they compute at run time: NOT flips the bits of its operand's
+// type (a BYTE's eight, a UINT's sixteen), a BOOL expression gives TRUE or FALSE. They gave
+// E0313 ("the initial value must be a constant") before.
+TEST(ConstantInitialValues, LogicOperatorsFoldAsAtRunTime) {
+    StProgram run(R"(PROGRAM Main
+VAR CONSTANT
+    kLow : BYTE := 16#0F;
+    kOn : BOOL := TRUE;
+    kCount : UINT := 3;
+END_VAR
+VAR
+    low : BYTE := 16#0F; count : UINT := 3; five : INT := 5; on : BOOL := TRUE;
+    flipped : BYTE := NOT 16#0F; flipped_now : BYTE;
+    named : BYTE := NOT kLow; named_now : BYTE;
+    mixed : BYTE := kLow OR 16#30; mixed_now : BYTE;
+    masked : DWORD := 16#FF00 AND 16#0FF0; masked_now : DWORD;
+    toggled : WORD := 16#F0F0 XOR 16#FFFF; toggled_now : WORD;
+    negative : INT := NOT 5; negative_now : INT;
+    sixteen : UINT := NOT kCount; sixteen_now : UINT;
+    off : BOOL := NOT kOn; off_now : BOOL;
+    both : BOOL := kOn AND NOT FALSE; both_now : BOOL;
+    either : BOOL := FALSE XOR kOn OR FALSE; either_now : BOOL;
+END_VAR
+flipped_now := NOT low;
+named_now := NOT low;
+mixed_now := low OR 16#30;
+masked_now := DWORD#16#FF00 AND 16#0FF0;
+toggled_now := WORD#16#F0F0 XOR 16#FFFF;
+negative_now := NOT five;
+sixteen_now := NOT count;
+off_now := NOT on;
+both_now := on AND NOT FALSE;
+either_now := FALSE XOR on OR FALSE;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::uint8_t>("Main.flipped"), 0xF0);
+    EXPECT_EQ(run.get<std::uint8_t>("Main.named"), 0xF0);
+    EXPECT_EQ(run.get<std::uint8_t>("Main.mixed"), 0x3F);
+    EXPECT_EQ(run.get<std::uint32_t>("Main.masked"), 0x0F00U);
+    EXPECT_EQ(run.get<std::uint16_t>("Main.toggled"), 0x0F0F);
+    EXPECT_EQ(run.get<std::int16_t>("Main.negative"), -6);
+    EXPECT_EQ(run.get<std::uint16_t>("Main.sixteen"), 0xFFFC);
+    EXPECT_FALSE(run.get<bool>("Main.off"));
+    EXPECT_TRUE(run.get<bool>("Main.both"));
+    EXPECT_TRUE(run.get<bool>("Main.either"));
+    for (const char* name : {"flipped", "named", "mixed"}) {
+        EXPECT_EQ(run.get<std::uint8_t>(std::string("Main.") + name),
+                  run.get<std::uint8_t>(std::string("Main.") + name + "_now"))
+            << name;
+    }
+    EXPECT_EQ(run.get<std::uint32_t>("Main.masked"), run.get<std::uint32_t>("Main.masked_now"));
+    EXPECT_EQ(run.get<std::uint16_t>("Main.toggled"), run.get<std::uint16_t>("Main.toggled_now"));
+    EXPECT_EQ(run.get<std::int16_t>("Main.negative"), run.get<std::int16_t>("Main.negative_now"));
+    EXPECT_EQ(run.get<std::uint16_t>("Main.sixteen"), run.get<std::uint16_t>("Main.sixteen_now"));
+    for (const char* name : {"off", "both", "either"}) {
+        EXPECT_EQ(run.get<bool>(std::string("Main.") + name),
+                  run.get<bool>(std::string("Main.") + name + "_now"))
+            << name;
+    }
+}
+
+// NOT of a constant of a narrower type in a wider variable flips the narrower type's bits at
+// run time (NOT kLow is 16#F0 in a DWORD too); that is not folded in the variable's width,
+// which would give 16#FFFFFFF0, but refused as no constant of the variable's type.
+TEST(ConstantInitialValues, NotOfANarrowerConstantIsRefusedRatherThanFoldedWide) {
+    StProgram run(R"(PROGRAM Main
+VAR CONSTANT
+    kLow : BYTE := 16#0F;
+END_VAR
+VAR
+    wide : DWORD := NOT kLow;
+END_VAR
+END_PROGRAM
+)");
+    EXPECT_FALSE(run.ok());
+    EXPECT_NE(run.errors().find("E0313"), std::string::npos) << run.errors();
+}
+
 } // namespace
 } // namespace eposp::compiler::test

@@ -630,10 +630,11 @@ Expr Generator::real_to_integer(Ty type, int depth) {
 Expr Generator::constant_expr(Ty type, int depth) {
     const std::string r = one_literal(type);
     // What the compiler folds in an initial value (types/initial_constant.cpp): arithmetic on
-    // integers below 2^63 and on reals; BOOL and bit string constants are literals or names.
+    // integers below 2^63 and on reals; NOT, AND, OR and XOR on BOOLs and integers.
     const bool arithmetic =
         is_real(type) || is_signed(type) || (is_unsigned(type) && type != Ty::Ulint);
-    if (!arithmetic || depth <= 0 || chance(25)) {
+    const bool logic = type == Ty::Bool || is_integer(type);
+    if ((!arithmetic && !logic) || depth <= 0 || chance(25)) {
         std::vector<const Place*> constants;
         for (const auto& place : scope_->places) {
             if (place.type == type) {
@@ -646,6 +647,19 @@ Expr Generator::constant_expr(Ty type, int depth) {
     auto sub = [&] {
         return constant_expr(type, depth - 1);
     };
+    if (logic && (!arithmetic || chance(40))) {
+        // NOT flips the bits of the type (a BYTE's eight), which keeps every value in it.
+        switch (below(4)) {
+        case 0:
+            return pattern("(NOT $0)", {sub()}, r);
+        case 1:
+            return pattern("($0 AND $1)", {sub(), sub()}, r);
+        case 2:
+            return pattern("($0 OR $1)", {sub(), sub()}, r);
+        default:
+            return pattern("($0 XOR $1)", {sub(), sub()}, r);
+        }
+    }
     if (is_real(type)) {
         // Literals are eighths below 125 000 and products take only literals and names: far
         // from infinity, and sums of products round twice in REAL.

@@ -51,14 +51,16 @@ public:
     std::optional<std::int64_t> enumerator(const Symbol& value);
 
     /// Folds a constant integer expression: literals, enumeration values, constants, + - * /
-    /// MOD and parentheses (ed. 3, 6.4.2). Nothing when the expression is not constant.
+    /// MOD, AND OR XOR and parentheses (ed. 3, 6.4.2). Nothing when the expression is not
+    /// constant.
     std::optional<std::int64_t> fold_integer(const ast::Expression& expression);
     /// The same over the values of ULINT and LWORD (CASE labels of such a selector): literals
     /// up to 2^64 - 1, arithmetic modulo 2^64, / and MOD unsigned.
     std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression);
     /// The same as a value of the integer `type` computes at run time (an initial value):
     /// SINT to DINT, USINT, UINT, BYTE and WORD in DINT, UDINT and DWORD modulo 2^32, LINT in
-    /// 64 bits, ULINT and LWORD modulo 2^64; the result's bits, sign- or zero-extended.
+    /// 64 bits, ULINT and LWORD modulo 2^64; the result's bits, sign- or zero-extended. NOT folds
+    /// here alone, where the width it flips is known: on literals and constants of `type`.
     std::optional<std::uint64_t> fold_as(const ast::Expression& expression, const Type& type);
 
     const SemanticModel& model() const { return model_; }
@@ -68,11 +70,16 @@ public:
     }
 
 private:
-    /// How folded arithmetic wraps: in `bits` (32 or 64), signed or not.
+    /// How folded arithmetic wraps: in `bits` (32 or 64), signed or not; `type`: the integer
+    /// type computed for (fold_as), whose own bits NOT flips.
     struct Arithmetic {
         bool is_unsigned = false;
         unsigned bits = 64;
+        const Type* type = nullptr;
     };
+    /// Whether `expression` has `type` at run time: its literals untyped or of that type, its
+    /// constants declared with it, so that NOT flips that type's bits.
+    bool computes_in(const ast::Expression& expression, const Type& type);
     /// fold_integer, fold_unsigned and fold_as: the result's 64 bits.
     std::optional<std::uint64_t> fold(const ast::Expression& expression, Arithmetic arithmetic);
     Type& add(Type type);
