@@ -2,8 +2,6 @@
 
 #include "../utf8.hpp"
 
-#include <algorithm>
-
 namespace eposp::compiler {
 
 // As the runtime's load(), which drops a leading byte order mark, but decoded in one pass into a
@@ -14,11 +12,19 @@ InputStream::InputStream(const std::string& text) {
     if (bytes.starts_with("\xEF\xBB\xBF")) {
         bytes.remove_prefix(3);
     }
-    _data.reserve(static_cast<std::size_t>(std::count_if(
-        bytes.begin(), bytes.end(), [](char byte) { return (byte & 0xC0) != 0x80; })));
+    // At most one code point a byte; cut to what the text holds at the end.
+    _data.resize(bytes.size());
+    char32_t* next = _data.data();
     for (std::size_t i = 0; i < bytes.size();) {
-        _data.push_back(utf8::decode(bytes, i).value_or(U'\uFFFD'));
+        const auto byte = static_cast<unsigned char>(bytes[i]);
+        if (byte < 0x80) { // ASCII, nearly every byte: no call
+            *next++ = byte;
+            ++i;
+        } else {
+            *next++ = utf8::decode(bytes, i).value_or(U'\uFFFD');
+        }
     }
+    _data.resize(static_cast<std::size_t>(next - _data.data()));
 }
 
 // The runtime converts every text from UTF-32 through std::wstring_convert.

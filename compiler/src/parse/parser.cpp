@@ -30,7 +30,11 @@ std::string utf8_text(const SourceManager& sources, FileId file, Diagnostics& di
     std::uint32_t line = 1;
     std::uint32_t column = 1;
     for (std::size_t position = 0; position < text.size();) {
-        const std::optional<char32_t> code_point = utf8::decode(text, position);
+        // ASCII, nearly every byte, needs no call.
+        const std::optional<char32_t> code_point =
+            static_cast<unsigned char>(text[position]) < 0x80
+                ? std::optional<char32_t>(static_cast<char32_t>(text[position++]))
+                : utf8::decode(text, position);
         if (!code_point) {
             diagnostics.warning(DiagnosticCode::W0104, {file, {line, column}, {line, column}},
                                 "the file is not valid UTF-8 text here; it is read as "
