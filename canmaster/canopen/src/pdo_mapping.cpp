@@ -1,16 +1,40 @@
 #include "eposp/canopen/pdo_mapping.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 
 namespace eposp::canopen {
 namespace {
+
+template <typename Word>
+Word load_native(const std::uint8_t* bytes) {
+    Word word;
+    std::memcpy(&word, bytes, sizeof word);
+    return word;
+}
 
 std::uint64_t low_bits_mask(std::size_t bits) {
     return bits >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1;
 }
 
 // A payload of up to 8 bytes as one little-endian word, so that a field is a shift and a mask.
+// Every TPDO loads its mapped values at every SYNC: the common sizes are one load each.
 std::uint64_t load_le(std::span<const std::uint8_t> bytes) {
+    if constexpr (std::endian::native == std::endian::little) {
+        switch (bytes.size()) {
+        case 1:
+            return bytes[0];
+        case 2:
+            return load_native<std::uint16_t>(bytes.data());
+        case 4:
+            return load_native<std::uint32_t>(bytes.data());
+        default:
+            if (bytes.size() >= 8) {
+                return load_native<std::uint64_t>(bytes.data());
+            }
+        }
+    }
     std::uint64_t word = 0;
     for (std::size_t i = 0; i < bytes.size() && i < 8; ++i) {
         word |= std::uint64_t{bytes[i]} << (8 * i);
@@ -147,7 +171,12 @@ PdoPayload PdoMapping::pack() const {
     }
     PdoPayload payload;
     payload.size = size();
-    store_le(word, std::span(payload.data).first(payload.size));
+    // The fields end within size() bytes, so the word's bytes beyond it are the payload's zeros.
+    if constexpr (std::endian::native == std::endian::little) {
+        std::memcpy(payload.data.data(), &word, sizeof word);
+    } else {
+        store_le(word, std::span(payload.data).first(payload.size));
+    }
     return payload;
 }
 
