@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <numbers>
 
 namespace eposp::drives::plant {
 namespace {
@@ -131,6 +132,29 @@ TEST(ServoAxis, SwitchesTripWhereTheAxisIs) {
     axis.set_demand({.position = -800});
     run_for(axis, 0.3);
     EXPECT_EQ(axis.switches(), (SwitchStates{true, false, false}));
+}
+
+// switches() keeps its result for the shaft's angle: a new layout at the same angle, and the
+// shaft turned from outside without a step, each show at once; ±0 rad is count 0 either way.
+TEST(ServoAxis, SwitchesFollowANewLayoutAndAShaftTurnedFromOutside) {
+    AxisParameters parameters = test::tuned_axis();
+    parameters.switches = {-500, 4000, 1000, true, std::nullopt};
+    ServoAxis axis(parameters);
+    EXPECT_EQ(axis.switches(), (SwitchStates{false, false, false}));
+    parameters.switches.home = 0;
+    axis.reconfigure(parameters);
+    EXPECT_EQ(axis.switches(), (SwitchStates{false, false, true}));
+    axis.motor().set_state({.angle = -0.0});
+    EXPECT_EQ(axis.switches(), (SwitchStates{false, false, true}));
+    // A count is 2π / 2000 rad with 500 pulses: -600 counts and 4100 counts.
+    const double radians_per_count = 2 * std::numbers::pi / 2000;
+    axis.motor().set_state({.angle = -600 * radians_per_count});
+    EXPECT_EQ(axis.switches(), (SwitchStates{true, false, false}));
+    axis.motor().set_state({.angle = 4100.5 * radians_per_count});
+    EXPECT_EQ(axis.switches(), (SwitchStates{false, true, true}));
+    parameters.switches.positive_limit.reset();
+    axis.reconfigure(parameters);
+    EXPECT_EQ(axis.switches(), (SwitchStates{false, false, true}));
 }
 
 // 8.2.74: with a gear configured the encoder is on the gear's output. A 3:1 gear: N output turns

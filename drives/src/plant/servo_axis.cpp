@@ -1,6 +1,7 @@
 #include "eposp/drives/plant/servo_axis.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numbers>
 
 namespace eposp::drives::plant {
@@ -57,6 +58,7 @@ void ServoAxis::reconfigure(const AxisParameters& parameters) {
     const MotorState state = motor_.state();
     const double scale = counts_per_motor_radian(parameters) / counts_per_motor_radian(parameters_);
     parameters_ = parameters;
+    switches_angle_ = std::numeric_limits<double>::quiet_NaN();
     motor_ = MotorModel(parameters.plant, kCurrentLoopPeriod);
     motor_.set_state(state);
     radians_per_count_ = radians_per_count(parameters);

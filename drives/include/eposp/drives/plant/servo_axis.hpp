@@ -6,6 +6,7 @@
 #include "eposp/drives/plant/shaft_sensors.hpp"
 
 #include <cstdint>
+#include <limits>
 
 namespace eposp::drives::plant {
 
@@ -100,10 +101,18 @@ public:
     double encoder_angle() const { return encoder_sign_ * encoder_shaft_angle(); }
     bool index_passed() const { return index_passed_; } ///< during the last step
     std::uint8_t hall_sensors() const;
-    /// The switches at the present position, for the digital inputs.
+    /// The switches at the present position, for the digital inputs. A function of the shaft's
+    /// angle and the parameters alone, read several times per control period between two steps:
+    /// kept for the angle it was computed at (equal doubles are one value, or ±0, which both
+    /// quantise to count 0), forgotten when the parameters change.
     SwitchStates switches() const {
-        return switch_states(parameters_.switches,
-                             quadcounts(encoder_shaft_angle(), parameters_.encoder_pulses));
+        const double angle = encoder_shaft_angle();
+        if (angle != switches_angle_) {
+            switches_ =
+                switch_states(parameters_.switches, quadcounts(angle, parameters_.encoder_pulses));
+            switches_angle_ = angle;
+        }
+        return switches_;
     }
     const MotorModel& motor() const { return motor_; }
     MotorModel& motor() { return motor_; }
@@ -133,6 +142,9 @@ private:
     double reduced_current_limit_ = 0; ///< reduce_current_limit(), 0: none
     double current_limit_ = 0;         ///< in force: the smaller of the two
     std::int64_t position_ = 0;
+    /// switches() at switches_angle_; NaN equals no angle, so that the first call computes.
+    mutable double switches_angle_ = std::numeric_limits<double>::quiet_NaN();
+    mutable SwitchStates switches_;
     /// The revolution position_ lies in: the index test of every step is two comparisons, the
     /// divisions only when the shaft enters another revolution.
     Revolution revolution_;
