@@ -375,10 +375,7 @@ void ObjectDictionary::reset_to_defaults() {
     }
 }
 
-void ObjectDictionary::notify(std::uint16_t index, std::uint8_t sub_index) const {
-    if (!watched_.test(index)) {
-        return;
-    }
+void ObjectDictionary::notify_listeners(std::uint16_t index, std::uint8_t sub_index) const {
     // A listener may add or remove listeners: call copies, and skip one removed meanwhile.
     std::vector<std::pair<ListenerId, ChangeListener>> to_call;
     const auto [first, last] = listeners_.equal_range(index);

@@ -182,7 +182,14 @@ private:
     Object& insert(Object object);
     void index_object(Object& object);
     void index_objects();
-    void notify(std::uint16_t index, std::uint8_t sub_index) const;
+    /// Inline: most stored values have no listener, and the bit is all a drive's publishing
+    /// should pay for them.
+    void notify(std::uint16_t index, std::uint8_t sub_index) const {
+        if (watched_.test(index)) {
+            notify_listeners(index, sub_index);
+        }
+    }
+    void notify_listeners(std::uint16_t index, std::uint8_t sub_index) const;
 
     std::map<std::uint16_t, Object> objects_;
     /// The objects by index in pages of 256 indices, made for the pages in use: find() runs
