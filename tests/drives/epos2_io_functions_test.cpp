@@ -140,6 +140,28 @@ TEST(DigitalOutputs, PinFollowsItsFunctionalityUnderMaskAndPolarity) {
     EXPECT_EQ(outputs.levels(), 0b0011);
 }
 
+// The same states under a new configuration drive the pins anew (update() skips only states it
+// has applied under the configuration in force).
+TEST(DigitalOutputs, SameStatesUnderANewConfigurationDriveThePinsAnew) {
+    DigitalOutputs outputs;
+    DigitalOutputConfiguration config;
+    config.functions = {0, 1, 2, 15};
+    config.mask = 0x8007;
+    outputs.configure(config);
+    outputs.update(0x0001);
+    EXPECT_EQ(outputs.levels(), 0b0001);
+    outputs.update(0x0001);
+    EXPECT_EQ(outputs.levels(), 0b0001);
+    config.polarity = 0x8001; // ready/fault and A low active
+    outputs.configure(config);
+    outputs.update(0x0001);
+    EXPECT_EQ(outputs.levels(), 0b1000);
+    config.functions = {15, 1, 2, 0}; // A on output 1, ready/fault on output 4
+    outputs.configure(config);
+    outputs.update(0x0001);
+    EXPECT_EQ(outputs.levels(), 0b0001);
+}
+
 TEST(DigitalOutputs, UnusedConfigurationDrivesNothing) {
     DigitalOutputs outputs;
     DigitalOutputConfiguration config;

@@ -13,13 +13,6 @@ constexpr std::uint8_t kNegativeLimitPin = 1U << 5;
 
 } // namespace
 
-InputEdges EdgeDetector::update(std::uint16_t states) {
-    const InputEdges edges{.rising = static_cast<std::uint16_t>(states & ~before_),
-                           .falling = static_cast<std::uint16_t>(before_ & ~states)};
-    before_ = states;
-    return edges;
-}
-
 void DigitalInputs::set_level(unsigned input, bool high) {
     if (input < 1 || input > kDigitalInputCount) {
         throw std::invalid_argument("EPOS2 24/5 digital input " + std::to_string(input) +

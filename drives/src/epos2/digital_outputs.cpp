@@ -17,6 +17,10 @@ bool DigitalOutputConfiguration::has(OutputFunction function) const {
 }
 
 void DigitalOutputs::update(std::uint16_t states) {
+    if (applied_ == states) {
+        return;
+    }
+    applied_ = states;
     for (unsigned n = 0; n < kDigitalOutputCount; ++n) {
         const std::uint16_t function = config_.functions[n];
         if (!drives_pin(function)) {

@@ -42,7 +42,12 @@ struct InputEdges {
 /// Remembers the last states and reports what changed.
 class EdgeDetector {
 public:
-    InputEdges update(std::uint16_t states);
+    InputEdges update(std::uint16_t states) {
+        const InputEdges edges{.rising = static_cast<std::uint16_t>(states & ~before_),
+                               .falling = static_cast<std::uint16_t>(before_ & ~states)};
+        before_ = states;
+        return edges;
+    }
 
 private:
     std::uint16_t before_ = 0;

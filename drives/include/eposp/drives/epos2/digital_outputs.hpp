@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 namespace eposp::drives::epos2 {
 
@@ -36,7 +37,10 @@ struct DigitalOutputConfiguration {
 /// configurations (3 … 10) drive nothing; such a pin stays low. Pins start low (power-on).
 class DigitalOutputs {
 public:
-    void configure(const DigitalOutputConfiguration& config) { config_ = config; }
+    void configure(const DigitalOutputConfiguration& config) {
+        config_ = config;
+        applied_.reset();
+    }
     const DigitalOutputConfiguration& configuration() const { return config_; }
 
     /// The functionality states (0x2078 sub 1) applied to the pins.
@@ -47,6 +51,9 @@ public:
 private:
     DigitalOutputConfiguration config_;
     std::uint8_t levels_ = 0;
+    /// The states last applied under config_: applying them again sets each driven pin to the
+    /// level it has and leaves the others, so update() has nothing to do (it runs every period).
+    std::optional<std::uint16_t> applied_;
 };
 
 } // namespace eposp::drives::epos2
