@@ -178,6 +178,7 @@ std::uint64_t VirtualBus::Impl::unvisited_receptions(const VirtualPort::Impl& po
 
 void VirtualBus::Impl::detach(VirtualPort& port) {
     std::ranges::replace(ports, &port, nullptr);
+    recovering_ports -= port.impl_->recovering ? 1 : 0;
     has_vacancies = true;
     if (current && current->sender == port.impl_.get()) {
         current->departed_sender_name = std::string(port.name());
@@ -312,10 +313,12 @@ void VirtualBus::Impl::start(VirtualPort::Impl& sender, const Frame& next) {
     // A recovering controller counts the recessive stretch this frame ends and waits on the next.
     const core::TimePoint stretch_start = recessive_since;
     recessive_since = at_bit(now, timeline.recessive_from);
-    for (VirtualPort* port : ports) {
-        if (port->impl_->recovering) {
-            count_recessive_runs(*port->impl_, stretch_start, now);
-            schedule_recovery(*port->impl_);
+    if (recovering_ports > 0) {
+        for (VirtualPort* port : ports) {
+            if (port->impl_->recovering) {
+                count_recessive_runs(*port->impl_, stretch_start, now);
+                schedule_recovery(*port->impl_);
+            }
         }
     }
 
@@ -505,6 +508,7 @@ void VirtualBus::Impl::change_state(VirtualPort::Impl& port, ErrorState before) 
         port.rx_base = delivered + (settled(port) ? 1 : 0);
     }
     if (before == ErrorState::BusOff) {
+        recovering_ports -= port.recovering ? 1 : 0;
         port.recovering = false;
         port.recovery_timer.cancel();
         if (port.next_frame() != nullptr) {
@@ -518,6 +522,7 @@ void VirtualBus::Impl::change_state(VirtualPort::Impl& port, ErrorState before) 
 }
 
 void VirtualBus::Impl::start_recovery(VirtualPort::Impl& port) {
+    recovering_ports += port.recovering ? 0 : 1;
     port.recovering = true;
     port.counting_from = loop.now();
     port.recessive_runs = 0;

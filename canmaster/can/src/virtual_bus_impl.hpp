@@ -121,6 +121,9 @@ public:
 
     std::vector<VirtualPort*> ports; ///< connection order; null where a port left
     bool has_vacancies = false;
+    /// The connected ports recovering from bus-off: a start of frame visits the ports for
+    /// their count only when there are any.
+    std::size_t recovering_ports = 0;
     std::uint64_t next_sequence = 0;
 
     // Which controllers a frame concerns: every controller receives every frame (ISO 11898-1),

@@ -260,6 +260,33 @@ TEST_F(VirtualBusFaultsTest, BusOffRecoveryCountsOneRunPerFrameUnderFullLoad) {
     EXPECT_EQ(states.changes[1], std::pair(at_us(128 * 53), ErrorState::Active));
 }
 
+// The recovering controllers count their runs at each start of frame: one leaving in the middle
+// of its recovery stops nobody else's count, and a controller bus-off a second time counts anew.
+TEST_F(VirtualBusFaultsTest, RecoveryCountsOnWhenAnotherRecoveringControllerLeaves) {
+    auto c = bus.connect("c");
+    auto d = bus.connect("d");
+    c->on_receive([&](const Frame& frame) { c->send(frame); });
+    d->on_receive([&](const Frame& frame) { d->send(frame); });
+    auto leaving = bus.connect("leaving");
+    StateLog states(*a, loop);
+    leaving->force_error_state(ErrorState::BusOff);
+    a->force_error_state(ErrorState::BusOff);
+    c->send(kZeroFrame);
+    loop.run_for(microseconds(64 * 53));
+    leaving.reset();
+    loop.run_for(milliseconds(10) - microseconds(64 * 53));
+    ASSERT_EQ(states.changes.size(), 2U);
+    EXPECT_EQ(states.changes[1], std::pair(at_us(128 * 53), ErrorState::Active));
+
+    // Bus-off again at 10 ms, 36 bits into a frame: the first run counted ends at the next
+    // start of frame, 10017 us, the 128th 127 frames later.
+    a->force_error_state(ErrorState::BusOff);
+    loop.run_for(milliseconds(10));
+    ASSERT_EQ(states.changes.size(), 4U);
+    EXPECT_EQ(states.changes[2], std::pair(at_us(10'000), ErrorState::BusOff));
+    EXPECT_EQ(states.changes[3], std::pair(at_us(10'017 + 127 * 53), ErrorState::Active));
+}
+
 TEST(VirtualBusFaults, BusOffRecoveryOnRequestWaitsForRecover) {
     core::EventLoop loop;
     VirtualBus bus(loop, BusConfig{.bus_off_recovery = BusOffRecovery::OnRequest});
