@@ -29,13 +29,6 @@ Frame Frame::remote_frame(std::uint32_t id, std::uint8_t dlc, bool extended) {
     return frame;
 }
 
-std::span<const std::uint8_t> Frame::payload() const {
-    if (remote) {
-        return {};
-    }
-    return {data.data(), std::min<std::size_t>(dlc, kMaxDataLength)};
-}
-
 bool Frame::valid() const {
     return !error && dlc <= kMaxDataLength && id <= (extended ? kMaxExtendedId : kMaxStandardId);
 }

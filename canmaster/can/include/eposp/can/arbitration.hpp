@@ -12,7 +12,26 @@ namespace eposp::can {
 /// identifier extension and RTR. A dominant bit (0) wins over a recessive one, so a standard
 /// data frame beats an extended frame with the same base identifier through RTR/SRR, a standard
 /// remote frame beats it through IDE, and a data frame beats a remote frame with its identifier.
-std::uint32_t arbitration_field(const Frame& frame);
+/// Inline: arbitration compares the heads of the queues for every frame on the bus.
+inline std::uint32_t arbitration_field(const Frame& frame) {
+    // Layout, most significant bit first: base id (11) | RTR or SRR | IDE | id extension (18) |
+    // RTR.
+    constexpr unsigned kBaseIdShift = 21;
+    constexpr unsigned kTwelfthBitShift = 20;
+    constexpr unsigned kIdeShift = 19;
+    constexpr unsigned kExtensionShift = 1;
+    constexpr std::uint32_t kExtensionMask = 0x3FFFF;
+    const std::uint32_t remote = frame.remote ? 1U : 0U;
+    if (!frame.extended) {
+        // Standard frames end their arbitration at RTR; IDE (dominant) still decides against
+        // an extended frame with the same base identifier.
+        return frame.id << kBaseIdShift | remote << kTwelfthBitShift;
+    }
+    const std::uint32_t srr = 1U << kTwelfthBitShift;
+    const std::uint32_t ide = 1U << kIdeShift;
+    return (frame.id >> 18) << kBaseIdShift | srr | ide |
+           (frame.id & kExtensionMask) << kExtensionShift | remote;
+}
 
 /// True when `a` wins arbitration against `b`.
 inline bool wins_arbitration(const Frame& a, const Frame& b) {

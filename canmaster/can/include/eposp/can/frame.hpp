@@ -30,7 +30,13 @@ struct Frame {
     static Frame remote_frame(std::uint32_t id, std::uint8_t dlc, bool extended = false);
 
     /// The bytes carried on the wire: `dlc` bytes of a data frame, none for a remote frame.
-    std::span<const std::uint8_t> payload() const;
+    /// Inline: the bus reads it for every frame.
+    std::span<const std::uint8_t> payload() const {
+        if (remote) {
+            return {};
+        }
+        return {data.data(), dlc < kMaxDataLength ? dlc : kMaxDataLength};
+    }
 
     /// A frame a node may send: identifier within its format, DLC 0..8, not an error frame.
     bool valid() const;
