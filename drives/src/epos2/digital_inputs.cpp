@@ -4,15 +4,6 @@
 #include <string>
 
 namespace eposp::drives::epos2 {
-namespace {
-
-// Table 8-85, column EPOS2 24/5: where the machine's switches are wired (bit n-1 = input n).
-constexpr std::uint8_t kHomeSwitchPin = 1U << 3;
-constexpr std::uint8_t kPositiveLimitPin = 1U << 4;
-constexpr std::uint8_t kNegativeLimitPin = 1U << 5;
-
-} // namespace
-
 void DigitalInputs::set_level(unsigned input, bool high) {
     if (input < 1 || input > kDigitalInputCount) {
         throw std::invalid_argument("EPOS2 24/5 digital input " + std::to_string(input) +
@@ -25,20 +16,6 @@ void DigitalInputs::set_level(unsigned input, bool high) {
 void DigitalInputs::hold_limit_switch(InputFunction which, bool pressed) {
     (which == InputFunction::NegativeLimitSwitch ? held_.negative_limit : held_.positive_limit) =
         pressed;
-}
-
-std::uint8_t DigitalInputs::levels(const plant::SwitchStates& machine) const {
-    std::uint8_t levels = outside_;
-    if (machine.home) {
-        levels |= kHomeSwitchPin;
-    }
-    if (machine.positive_limit || held_.positive_limit) {
-        levels |= kPositiveLimitPin;
-    }
-    if (machine.negative_limit || held_.negative_limit) {
-        levels |= kNegativeLimitPin;
-    }
-    return levels;
 }
 
 // 8.2.57, table 8-88: polarity 0 is high active, 1 low active. A functionality no input carries

@@ -266,11 +266,4 @@ bool Epos2Io::output(unsigned output) const {
     return (outputs_.levels() & (1U << (output - 1))) != 0;
 }
 
-plant::SwitchStates Epos2Io::switch_functions(const plant::SwitchStates& machine) const {
-    const std::uint16_t states = inputs_.states(machine);
-    return {.negative_limit = (states & function_bit(InputFunction::NegativeLimitSwitch)) != 0,
-            .positive_limit = (states & function_bit(InputFunction::PositiveLimitSwitch)) != 0,
-            .home = (states & function_bit(InputFunction::HomeSwitch)) != 0};
-}
-
 } // namespace eposp::drives::epos2

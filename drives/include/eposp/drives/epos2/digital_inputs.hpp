@@ -69,7 +69,25 @@ public:
     const DigitalInputConfiguration& configuration() const { return config_; }
 
     /// The pins' levels, bit n-1 for input n, with the machine's switches as `machine` says.
-    std::uint8_t levels(const plant::SwitchStates& machine) const;
+    /// Inline, as states(): the drive reads its inputs several times each control period.
+    std::uint8_t levels(const plant::SwitchStates& machine) const {
+        // Table 8-85, column EPOS2 24/5: where the machine's switches are wired (bit n-1 =
+        // input n).
+        constexpr std::uint8_t kHomeSwitchPin = 1U << 3;
+        constexpr std::uint8_t kPositiveLimitPin = 1U << 4;
+        constexpr std::uint8_t kNegativeLimitPin = 1U << 5;
+        std::uint8_t levels = outside_;
+        if (machine.home) {
+            levels |= kHomeSwitchPin;
+        }
+        if (machine.positive_limit || held_.positive_limit) {
+            levels |= kPositiveLimitPin;
+        }
+        if (machine.negative_limit || held_.negative_limit) {
+            levels |= kNegativeLimitPin;
+        }
+        return levels;
+    }
     /// The functionality states after the polarity (table 8-88): a pin carries the functionality
     /// 0x2070 assigns it, active when its level is the active one. The mask does not act here: it
     /// only filters the display (8.2.57), while the execution mask decides what is executed.

@@ -70,7 +70,13 @@ public:
         return inputs_.displayed(machine);
     }
     /// The limit and home switch functionalities (polarity applied, not masked): homing's view.
-    plant::SwitchStates switch_functions(const plant::SwitchStates& machine) const;
+    /// Inline: the mode reads it twice each control period.
+    plant::SwitchStates switch_functions(const plant::SwitchStates& machine) const {
+        const std::uint16_t states = inputs_.states(machine);
+        return {.negative_limit = (states & function_bit(InputFunction::NegativeLimitSwitch)) != 0,
+                .positive_limit = (states & function_bit(InputFunction::PositiveLimitSwitch)) != 0,
+                .home = (states & function_bit(InputFunction::HomeSwitch)) != 0};
+    }
 
 private:
     void read_inputs();
