@@ -54,6 +54,13 @@ std::optional<vm::Image> compile(SourceManager& sources, std::span<const FileId>
         return std::nullopt;
     }
     const types::FrontEnd& front_end = *checked->front_end;
+    // The library's POUs are generated like the program's: typed first, checked never (they
+    // are the project's own code).
+    types::type_library(*checked->program, front_end.library_units, *front_end.library_model,
+                        diagnostics);
+    if (diagnostics.has_errors()) {
+        return std::nullopt;
+    }
     codegen::ProgramGenerator generator({*front_end.model, front_end.units, libraries.size()},
                                         {*front_end.library_model, front_end.library_units},
                                         *checked->program, diagnostics, options);

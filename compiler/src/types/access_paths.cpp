@@ -50,7 +50,7 @@ void ExpressionTyper::access_path(const ast::Configuration& configuration,
     const std::string name = sema::fold_case(declaration.name.name);
     // Globals share the configuration's names, and a global variable list's are even published
     // under the same bare names.
-    const sema::Symbol* global = program_.model().global().find_member(name);
+    const sema::Symbol* global = model_.global().find_member(name);
     if (global != nullptr && global->kind == sema::SymbolKind::Variable) {
         diagnostics_.error(
             DiagnosticCode::E0202, declaration.name.range,
@@ -101,7 +101,7 @@ const sema::Type* ExpressionTyper::access_path_target(const ast::Configuration& 
         }
     }
     if (type == nullptr) {
-        const sema::Symbol* global = program_.model().global().find_member(first);
+        const sema::Symbol* global = model_.global().find_member(first);
         type = global != nullptr && global->kind == sema::SymbolKind::Variable
                    ? variable_type(*global)
                    : nullptr;

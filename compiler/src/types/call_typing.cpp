@@ -63,7 +63,7 @@ const sema::Type* ExpressionTyper::call(const ast::Expression& expression,
                                         const ast::CallExpression& node,
                                         const sema::Type* expected) {
     if (const auto* callee = std::get_if<ast::NameExpression>(&node.callee->node)) {
-        const sema::Symbol* symbol = program_.model().resolved(callee->name);
+        const sema::Symbol* symbol = model_.resolved(callee->name);
         if (symbol != nullptr && symbol->kind == sema::SymbolKind::Pou &&
             symbol->pou->kind == ast::PouKind::Function) {
             return pou_call(expression, node, *symbol->pou, nullptr);
@@ -78,7 +78,7 @@ const sema::Type* ExpressionTyper::call(const ast::Expression& expression,
         }
     }
     if (const auto* callee = std::get_if<ast::NameExpression>(&node.callee->node)) {
-        const sema::Symbol* symbol = program_.model().resolved(callee->name);
+        const sema::Symbol* symbol = model_.resolved(callee->name);
         if (symbol != nullptr && (symbol->kind == sema::SymbolKind::StandardFunctionBlock ||
                                   (symbol->kind == sema::SymbolKind::Pou &&
                                    symbol->pou->kind == ast::PouKind::FunctionBlock))) {
@@ -197,7 +197,7 @@ const sema::Type* ExpressionTyper::pou_call(const ast::Expression& expression,
     if (instance != nullptr) {
         const ast::Pou* library = nullptr;
         target.kind = CallKind::FunctionBlock;
-        if (const sema::Symbol* symbol = program_.model().global().find(pou.name.name);
+        if (const sema::Symbol* symbol = model_.global().find(pou.name.name);
             symbol != nullptr && symbol->kind == sema::SymbolKind::StandardFunctionBlock) {
             library = &pou;
         }

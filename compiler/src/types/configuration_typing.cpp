@@ -26,7 +26,7 @@ void ExpressionTyper::configuration(const ast::Configuration& configuration) {
 }
 
 const sema::Type* ExpressionTyper::program_instance(const ast::ProgramInstance& instance) {
-    const sema::Symbol* program = program_.model().resolved(instance.type);
+    const sema::Symbol* program = model_.resolved(instance.type);
     return program != nullptr && program->kind == sema::SymbolKind::Pou
                ? program_.types().instance(*program->pou)
                : nullptr;

@@ -21,7 +21,7 @@ bool is_constant(const sema::Symbol& symbol) {
 
 void ExpressionTyper::fold(const ast::Expression& expression, const sema::Type& type) {
     const bool is_signed = sema::is_signed(type) || sema::is_time_like(type);
-    if (const sema::Symbol* value = program_.model().enum_value(expression)) {
+    if (const sema::Symbol* value = model_.enum_value(expression)) {
         if (const auto number = program_.types().enumerator(*value)) {
             program_.set_constant(expression, *number);
         }
@@ -67,7 +67,7 @@ void ExpressionTyper::fold(const ast::Expression& expression, const sema::Type& 
         return;
     }
     if (const auto* name = std::get_if<ast::NameExpression>(&expression.node)) {
-        const sema::Symbol* symbol = program_.model().resolved(name->name);
+        const sema::Symbol* symbol = model_.resolved(name->name);
         if (symbol == nullptr || !is_constant(*symbol)) {
             return;
         }

@@ -42,7 +42,7 @@ void ExpressionTyper::type_declaration(const ast::TypeDeclaration& declaration) 
     type_spec(declaration.type);
     // By its name (`Pct`), which its diagnostics say; laid out even when nothing uses it, so
     // that its errors are reported.
-    const sema::Symbol* symbol = program_.model().global().find_member(declaration.name.name);
+    const sema::Symbol* symbol = model_.global().find_member(declaration.name.name);
     const sema::Type* type = symbol != nullptr && symbol->type == &declaration
                                  ? program_.types().named(*symbol)
                                  : program_.types().resolve(declaration.type);

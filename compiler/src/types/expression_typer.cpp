@@ -68,8 +68,9 @@ bool is_untyped_literal(const ast::Expression& expression) {
     return real != nullptr && !real->type;
 }
 
-ExpressionTyper::ExpressionTyper(TypedProgram& program, Diagnostics& diagnostics)
-    : program_(program), diagnostics_(diagnostics) {}
+ExpressionTyper::ExpressionTyper(TypedProgram& program, const sema::SemanticModel& model,
+                                 Diagnostics& diagnostics)
+    : program_(program), model_(model), diagnostics_(diagnostics) {}
 
 const sema::Type* ExpressionTyper::fail(DiagnosticCode code, const SourceRange& range,
                                         std::string message) {

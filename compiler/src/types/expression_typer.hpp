@@ -15,7 +15,10 @@ namespace eposp::compiler::types {
 
 class ExpressionTyper {
 public:
-    ExpressionTyper(TypedProgram& program, Diagnostics& diagnostics);
+    /// `model` resolves the names of what is typed: the program's, or the built-in library's
+    /// for its POUs (type_library).
+    ExpressionTyper(TypedProgram& program, const sema::SemanticModel& model,
+                    Diagnostics& diagnostics);
 
     void pou(const ast::Pou& pou);
     void sections(const std::vector<ast::DeclarationSection>& sections);
@@ -93,6 +96,7 @@ private:
     const sema::Type* fail(DiagnosticCode code, const SourceRange& range, std::string message);
 
     TypedProgram& program_;
+    const sema::SemanticModel& model_;
     Diagnostics& diagnostics_;
     const ast::Pou* current_ = nullptr;
     /// The call of the CallStatement being typed: it needs no value.

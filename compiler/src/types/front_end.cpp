@@ -56,6 +56,9 @@ std::unique_ptr<FrontEnd> analyse(SourceManager& sources, std::span<const FileId
         result->units, *result->model,
         [front_end](std::string_view name) { return front_end->library_pou(name); }, diagnostics);
     if (!diagnostics.has_errors()) {
+        type_library(*program, result->library_units, *result->library_model, diagnostics);
+    }
+    if (!diagnostics.has_errors()) {
         result->program = std::move(program);
     }
     return result;

@@ -27,7 +27,7 @@ bool fits(const ast::IntegerLiteral& literal, ast::ElementaryType type) {
 
 bool ExpressionTyper::is_variable(const ast::Expression& expression) const {
     if (const auto* name = std::get_if<ast::NameExpression>(&expression.node)) {
-        const sema::Symbol* symbol = program_.model().resolved(name->name);
+        const sema::Symbol* symbol = model_.resolved(name->name);
         return symbol == nullptr || symbol->kind == sema::SymbolKind::Variable ||
                (symbol->kind == sema::SymbolKind::Pou && symbol->pou == current_);
     }
@@ -39,7 +39,7 @@ bool ExpressionTyper::is_variable(const ast::Expression& expression) const {
 
 bool ExpressionTyper::names_program(const ast::Expression& expression) const {
     const auto* name = std::get_if<ast::NameExpression>(&expression.node);
-    const sema::Symbol* symbol = name != nullptr ? program_.model().resolved(name->name) : nullptr;
+    const sema::Symbol* symbol = name != nullptr ? model_.resolved(name->name) : nullptr;
     return symbol != nullptr &&
            ((symbol->kind == sema::SymbolKind::Pou && symbol->pou->kind == ast::PouKind::Program) ||
             symbol->kind == sema::SymbolKind::ProgramInstance);
@@ -104,7 +104,7 @@ const sema::Type* ExpressionTyper::literal(const ast::Expression& expression,
                                         text->type == E::Wstring);
     }
     if (std::holds_alternative<ast::EnumValueLiteral>(literal)) {
-        const sema::Symbol* value = program_.model().enum_value(expression);
+        const sema::Symbol* value = model_.enum_value(expression);
         return value != nullptr ? program_.types().enumeration_of(*value) : nullptr;
     }
     return &program_.types().null();
@@ -112,10 +112,10 @@ const sema::Type* ExpressionTyper::literal(const ast::Expression& expression,
 
 const sema::Type* ExpressionTyper::name(const ast::Expression& expression,
                                         const ast::NameExpression& node) {
-    if (const sema::Symbol* value = program_.model().enum_value(expression)) {
+    if (const sema::Symbol* value = model_.enum_value(expression)) {
         return program_.types().enumeration_of(*value);
     }
-    const sema::Symbol* symbol = program_.model().resolved(node.name);
+    const sema::Symbol* symbol = model_.resolved(node.name);
     if (symbol == nullptr) {
         return nullptr; // reported by name resolution
     }
@@ -141,7 +141,7 @@ const sema::Type* ExpressionTyper::name(const ast::Expression& expression,
 
 const sema::Type* ExpressionTyper::member(const ast::Expression& expression,
                                           const ast::MemberExpression& node) {
-    if (const sema::Symbol* value = program_.model().enum_value(expression)) {
+    if (const sema::Symbol* value = model_.enum_value(expression)) {
         return program_.types().enumeration_of(*value);
     }
     const sema::Type* object = type(*node.object, nullptr);

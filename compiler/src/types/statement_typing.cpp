@@ -37,7 +37,7 @@ void ExpressionTyper::statement(const ast::Statement& statement) {
             using T = std::decay_t<decltype(node)>;
             if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
                 const auto* member = std::get_if<ast::MemberExpression>(&node.target->node);
-                if (member != nullptr && program_.model().enum_value(*node.target) != nullptr) {
+                if (member != nullptr && model_.enum_value(*node.target) != nullptr) {
                     const auto* object = std::get_if<ast::NameExpression>(&member->object->node);
                     diagnostics_.error(DiagnosticCode::E0204, member->object->range,
                                        fmt::format("'{}' is not a variable",
@@ -92,7 +92,7 @@ void ExpressionTyper::statement(const ast::Statement& statement) {
                 }
                 statements(node.else_body);
             } else if constexpr (std::is_same_v<T, ast::ForStatement>) {
-                const sema::Symbol* symbol = program_.model().resolved(node.control_variable);
+                const sema::Symbol* symbol = model_.resolved(node.control_variable);
                 const sema::Type* control = symbol != nullptr ? variable_type(*symbol) : nullptr;
                 if (control != nullptr) {
                     expect(*node.from, *control, "a FOR bound");

@@ -85,7 +85,7 @@ std::unique_ptr<TypedProgram> type_program(std::span<const ast::CompilationUnit>
             return constants->contains(&declaration);
         },
         diagnostics);
-    ExpressionTyper typer(*program, diagnostics);
+    ExpressionTyper typer(*program, model, diagnostics);
     // Declarations first, so that a constant's value is known wherever it is used.
     for (const ast::CompilationUnit& unit : units) {
         for (const ast::TypeDeclaration& declaration : unit.types) {
@@ -104,6 +104,16 @@ std::unique_ptr<TypedProgram> type_program(std::span<const ast::CompilationUnit>
         }
     }
     return program;
+}
+
+void type_library(TypedProgram& program, std::span<const ast::CompilationUnit> units,
+                  const sema::SemanticModel& model, Diagnostics& diagnostics) {
+    ExpressionTyper typer(program, model, diagnostics);
+    for (const ast::CompilationUnit& unit : units) {
+        for (const ast::Pou& pou : unit.pous) {
+            typer.pou(pou);
+        }
+    }
 }
 
 } // namespace eposp::compiler::types

@@ -96,5 +96,21 @@ TEST(TypingCalls, MaxMinAndLimitAcceptStrings) {
     EXPECT_EQ(t->type_of(0), "STRING[80]");
 }
 
+TEST(TypingCalls, TheBuiltInLibraryPousAreTypedToo) {
+    // Code generation generates TON's body from the library source and reads its types here.
+    const auto t = type_body("t : TON;", "t(IN := TRUE, PT := T#1s);");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    const ast::Pou* ton = t->front_end->library_pou("TON");
+    ASSERT_NE(ton, nullptr);
+    const auto& outer = std::get<ast::IfStatement>(ton->body[0].node).branches[0];
+    EXPECT_EQ(t->program().type_of(*outer.condition)->name, "BOOL"); // IN
+    const auto& elapsed = std::get<ast::AssignmentStatement>(outer.body[1].node);
+    EXPECT_EQ(t->program().type_of(*elapsed.value)->name, "TIME"); // CURRENT_TIME() - start
+    const auto& difference = std::get<ast::BinaryExpression>(elapsed.value->node);
+    const types::CallTarget* now = t->program().call_target(*difference.left);
+    ASSERT_NE(now, nullptr);
+    EXPECT_EQ(now->pou->name.name, "CURRENT_TIME");
+}
+
 } // namespace
 } // namespace eposp::compiler::test

@@ -132,6 +132,13 @@ std::unique_ptr<TypedProgram> type_program(std::span<const ast::CompilationUnit>
                                            std::function<const ast::Pou*(std::string_view)> library,
                                            Diagnostics& diagnostics);
 
+/// Types the POUs of the built-in library (stdlib/standard_library_source.cpp), whose names
+/// `model` resolves, into `program`: code generation generates their bodies like the program's
+/// and reads their types here. Their layouts are the program's TypeTable's, where code
+/// generation lays them out.
+void type_library(TypedProgram& program, std::span<const ast::CompilationUnit> units,
+                  const sema::SemanticModel& model, Diagnostics& diagnostics);
+
 } // namespace eposp::compiler::types
 
 namespace eposp::compiler::types {
