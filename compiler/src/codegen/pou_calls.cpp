@@ -16,8 +16,9 @@ namespace eposp::compiler::codegen {
 using vm::Opcode;
 using vm::Operand;
 
-std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
+std::optional<Value> PouGenerator::call_enabled(const ast::Expression& expression,
                                                 const sema::Type* hint, const Destination* dest) {
+    const auto& node = std::get<ast::CallExpression>(expression.node);
     if (const auto* name = std::get_if<ast::NameExpression>(&node.callee->node)) {
         const sema::Symbol* symbol = model_.resolved(name->name);
         if (symbol == nullptr) {
@@ -38,7 +39,11 @@ std::optional<Value> PouGenerator::call_enabled(const ast::CallExpression& node,
                 pou != nullptr && pou->kind == ast::PouKind::Function) {
                 return call_function(*pou, node, dest);
             }
-            return standard_function(sema::fold_case(symbol->name), node, hint, dest);
+            if (const types::CallTarget* target = program_.typed().call_target(expression)) {
+                return standard_function(*target, node, hint, dest);
+            }
+            program_.refused_by_checks(DiagnosticCode::E0306); // types/call_typing.cpp
+            return std::nullopt;
         case sema::SymbolKind::StandardFunctionBlock:
             program_.refused_by_checks(DiagnosticCode::E0204); // types/call_typing.cpp
             return std::nullopt;

@@ -94,21 +94,21 @@ bool PouGenerator::with_enable(const Enable& enable, const std::function<void()>
     return true;
 }
 
-std::optional<Value> PouGenerator::call(const ast::CallExpression& node, const sema::Type* hint,
+std::optional<Value> PouGenerator::call(const ast::Expression& expression, const sema::Type* hint,
                                         const Destination* dest) {
-    const auto enable = enable_of(node);
+    const auto enable = enable_of(std::get<ast::CallExpression>(expression.node));
     if (!enable) {
         return std::nullopt;
     }
     if (enable->en == nullptr && enable->eno == nullptr) {
-        return call_enabled(node, hint, dest);
+        return call_enabled(expression, hint, dest);
     }
     // Inside an expression the call's value goes to a temporary that exists on both paths; a
     // skipped call leaves it at its type's zero (an empty string), so what follows reads a
     // defined value. `y := F(EN := c)` alone is an assignment() that EN skips as a whole.
     std::optional<Value> result;
     const bool ok = with_enable(
-        *enable, [&] { result = call_enabled(node, hint, nullptr); },
+        *enable, [&] { result = call_enabled(expression, hint, nullptr); },
         [&] {
             if (result && result->type != nullptr && is_temporary(result->operand)) {
                 clear(result->operand, *result->type);

@@ -395,8 +395,8 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         }
         return Value{address_of(*target), &types_.reference(target->type)};
     }
-    if (const auto* node = std::get_if<ast::CallExpression>(&expression.node)) {
-        return function_value(call(*node, hint, dest));
+    if (std::holds_alternative<ast::CallExpression>(expression.node)) {
+        return function_value(call(expression, hint, dest));
     }
     if (const auto* node = std::get_if<ast::UnaryExpression>(&expression.node)) {
         return unary(*node, hint, dest);

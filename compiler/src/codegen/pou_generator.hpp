@@ -296,12 +296,12 @@ private:
     bool with_enable(const Enable& enable, const std::function<void()>& body,
                      const std::function<void()>& skipped = {});
     /// A call as an expression or statement, with its EN and ENO.
-    std::optional<Value> call(const ast::CallExpression& node, const sema::Type* hint,
+    std::optional<Value> call(const ast::Expression& expression, const sema::Type* hint,
                               const Destination* dest);
 
     // --- pou_calls.cpp -----------------------------------------------------------------------
     /// The call without EN/ENO.
-    std::optional<Value> call_enabled(const ast::CallExpression& node, const sema::Type* hint,
+    std::optional<Value> call_enabled(const ast::Expression& expression, const sema::Type* hint,
                                       const Destination* dest);
     std::optional<Value> call_function(const ast::Pou& function, const ast::CallExpression& node,
                                        const Destination* dest);
@@ -324,14 +324,12 @@ private:
                                        const Destination* dest);
 
     // --- standard_functions.cpp --------------------------------------------------------------
-    std::optional<Value> standard_function(const std::string& name, const ast::CallExpression& node,
-                                           const sema::Type* hint, const Destination* dest);
-    /// The arguments of a formal call in the order of the function's inputs (an input named
-    /// twice, or one the function does not have with that many arguments, is an error); a
-    /// positional call's as they are (standard_parameters.cpp).
-    std::optional<Arguments> in_parameter_order(const std::string& name,
-                                                const Arguments& arguments);
-    std::optional<Value> conversion(const std::string& name, const Arguments& arguments,
+    /// A call of the standard function `target` (the typing stage's CallTarget).
+    std::optional<Value> standard_function(const types::CallTarget& target,
+                                           const ast::CallExpression& node, const sema::Type* hint,
+                                           const Destination* dest);
+    /// `<T>_TO_<U>` and `TO_<U>`: from the typing stage's operand type to its result type.
+    std::optional<Value> conversion(const types::CallTarget& target, const Arguments& arguments,
                                     const Destination* dest);
     std::optional<Value> string_function(const std::string& name, const Arguments& arguments,
                                          const Destination* dest);

@@ -27,8 +27,7 @@ void PouGenerator::statement(const ast::Statement& statement) {
             if constexpr (std::is_same_v<T, ast::AssignmentStatement>) {
                 assignment(node);
             } else if constexpr (std::is_same_v<T, ast::CallStatement>) {
-                const auto& call_node = std::get<ast::CallExpression>(node.call->node);
-                call(call_node, nullptr, nullptr);
+                call(*node.call, nullptr, nullptr);
             } else if constexpr (std::is_same_v<T, ast::IfStatement>) {
                 if_statement(node);
             } else if constexpr (std::is_same_v<T, ast::CaseStatement>) {
@@ -113,7 +112,7 @@ void PouGenerator::assignment(const ast::AssignmentStatement& node) {
     // `y := F(EN := c, ...)`: a call that EN skips leaves y as it was (IEC 61131-3 ed. 3,
     // 6.6.1.2.2), so EN guards the whole assignment.
     with_enable(*enable, [&] {
-        auto value = function_value(call_enabled(*call_node, target->type, into));
+        auto value = function_value(call_enabled(*node.value, target->type, into));
         if (value) {
             value = value_as(*value, *target->type, into);
         }

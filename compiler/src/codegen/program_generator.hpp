@@ -71,6 +71,8 @@ public:
     vm::Builder& builder() { return builder_; }
     sema::TypeTable& types() { return types_; }
     Diagnostics& diagnostics() { return diagnostics_; }
+    /// The typing stage's result: the types, constants and call targets code generation reads.
+    const types::TypedProgram& typed() const { return typed_; }
     /// Where code generation meets what an earlier stage refuses, the names (sema/), the
     /// typing (types/) or the checking stage (checks/): a branch that a program without errors
     /// never takes, so nothing is generated for it. Code generation runs only on a program

@@ -7,6 +7,8 @@
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "pou_generator.hpp"
 
+#include <algorithm>
+
 namespace eposp::compiler::codegen {
 
 using E = ast::ElementaryType;
@@ -79,29 +81,26 @@ std::int64_t time_unit(E type) {
 
 } // namespace
 
-std::optional<Value> PouGenerator::standard_function(const std::string& name,
+std::optional<Value> PouGenerator::standard_function(const types::CallTarget& target,
                                                      const ast::CallExpression& node,
                                                      const sema::Type* hint,
                                                      const Destination* dest) {
-    // EN and ENO are handled around the call (pou_enable.cpp); the function sees its inputs.
-    Arguments written;
+    const std::string& name = target.name;
+    // EN and ENO are handled around the call (pou_enable.cpp); the function sees its inputs, in
+    // the order of its signature, as the typing stage took them.
     for (const ast::Argument& argument : node.arguments) {
-        if (is_enable_argument(argument)) {
-            continue;
-        }
-        if (argument.kind == ast::Argument::Kind::Output) {
+        if (!is_enable_argument(argument) && argument.kind == ast::Argument::Kind::Output) {
             program_.refused_by_checks(DiagnosticCode::E0210); // the typing stage's
             return std::nullopt;
         }
-        written.push_back(&argument);
     }
-    const auto ordered = in_parameter_order(name, written);
-    if (!ordered) {
+    const Arguments arguments = types::standard_arguments(name, node);
+    if (std::find(arguments.begin(), arguments.end(), nullptr) != arguments.end()) {
+        program_.refused_by_checks(DiagnosticCode::E0210); // types/standard_function_typing.cpp
         return std::nullopt;
     }
-    const Arguments& arguments = *ordered;
     if (sema::is_conversion_function(name)) {
-        return conversion(name, arguments, dest);
+        return conversion(target, arguments, dest);
     }
     const vm::stdlib::StandardFunction* function = vm::stdlib::find_standard_function(name);
     if (function == nullptr || arguments.size() < function->min_inputs ||
@@ -272,35 +271,26 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     return Value{result, &want};
 }
 
-std::optional<Value> PouGenerator::conversion(const std::string& name, const Arguments& arguments,
-                                              const Destination* dest) {
-    if (arguments.size() != 1) {
+std::optional<Value> PouGenerator::conversion(const types::CallTarget& target,
+                                              const Arguments& arguments, const Destination* dest) {
+    if (arguments.size() != 1 || target.operand == nullptr || target.result == nullptr) {
         program_.refused_by_checks(DiagnosticCode::E0306); // types/call_typing.cpp
         return std::nullopt;
     }
-    const auto separator = name.starts_with("TO_") ? std::string::npos : name.find("_TO_");
-    const std::string target_name =
-        separator == std::string::npos ? name.substr(3) : name.substr(separator + 4);
-    const sema::Type& target = types_.elementary(*ast::elementary_type_from_name(target_name));
-    const ast::Expression& argument = *arguments.front()->value;
-    std::optional<Value> value;
-    if (separator != std::string::npos) {
-        const sema::Type& source =
-            types_.elementary(*ast::elementary_type_from_name(name.substr(0, separator)));
-        value = eval(argument, &source);
-        if (value && value->type != &source &&
-            !(value->type->kind == sema::TypeKind::String &&
-              source.kind == sema::TypeKind::String && value->type->wide == source.wide)) {
-            if (!sema::converts_implicitly(*value->type, source)) {
-                program_.refused_by_checks(DiagnosticCode::E0305); // types/call_typing.cpp
-                return std::nullopt;
-            }
-            value = convert(*value, source, nullptr);
+    // The input as the conversion's source type (`INT_TO_REAL(b)` of a BYTE b widens it first),
+    // then converted explicitly.
+    const sema::Type& source = *target.operand;
+    auto value = eval(*arguments.front()->value, &source);
+    if (value && value->type != &source &&
+        !(value->type->kind == sema::TypeKind::String && source.kind == sema::TypeKind::String &&
+          value->type->wide == source.wide)) {
+        if (!sema::converts_implicitly(*value->type, source)) {
+            program_.refused_by_checks(DiagnosticCode::E0305); // types/call_typing.cpp
+            return std::nullopt;
         }
-    } else {
-        value = eval(argument, nullptr);
+        value = convert(*value, source, nullptr);
     }
-    return value ? explicit_convert(*value, target, dest) : std::nullopt;
+    return value ? explicit_convert(*value, *target.result, dest) : std::nullopt;
 }
 
 std::optional<Value> PouGenerator::string_function(const std::string& name,
