@@ -434,29 +434,17 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
 std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
                                            const ast::LiteralExpression& node,
                                            const sema::Type* hint) {
-    const sema::Type* type = nullptr;
-    const bool numeric_hint =
-        hint != nullptr && (sema::is_numeric(*hint) || sema::is_bit_string(*hint));
-    if (const auto* integer = std::get_if<ast::IntegerLiteral>(&node.value)) {
-        if (integer->type) {
-            type = &types_.elementary(*integer->type);
-        } else if (numeric_hint) {
-            type = hint;
-        } else {
-            const bool fits = integer->negative ? integer->magnitude <= 0x80000000ULL
-                                                : integer->magnitude <= 0x7FFFFFFFULL;
-            type = &types_.elementary(fits ? E::Dint : E::Lint);
-        }
-    } else if (const auto* real = std::get_if<ast::RealLiteral>(&node.value)) {
-        type = real->type                                ? &types_.elementary(*real->type)
-               : hint != nullptr && sema::is_real(*hint) ? hint
-                                                         : &types_.elementary(E::Lreal);
-    } else if (std::holds_alternative<ast::BoolLiteral>(node.value)) {
-        type = &types_.elementary(E::Bool);
-    } else if (const auto* duration = std::get_if<ast::DurationLiteral>(&node.value)) {
-        type = &types_.elementary(duration->type);
-    } else if (const auto* date = std::get_if<ast::DateTimeLiteral>(&node.value)) {
-        type = &types_.elementary(date->type);
+    // The typing stage's type: an untyped number has the one its context gave it.
+    const sema::Type* type = program_.typed().type_of(expression);
+    if (type == nullptr) {
+        program_.refused_by_checks(DiagnosticCode::E0311); // types/operand_typing.cpp
+        return std::nullopt;
+    }
+    if (types::is_untyped_literal(expression) && sema::is_integer(*type) && hint != nullptr &&
+        types::numeric_context(hint) && sema::converts_implicitly(*type, *hint)) {
+        // An integer laid out as the operation that takes it computes (a small integer's in
+        // DINT), so that it needs no conversion; the value is the same.
+        type = hint;
     } else if (const auto* text = std::get_if<ast::StringLiteral>(&node.value)) {
         if (text->type == E::Char || text->type == E::Wchar) {
             return character(expression, text->type);
@@ -470,13 +458,7 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
                    ? hint
                    : &types_.string(static_cast<std::uint32_t>(std::max<std::size_t>(length, 1)),
                                     wide);
-    } else if (const auto* enumerated = std::get_if<ast::EnumValueLiteral>(&node.value)) {
-        const sema::Symbol* symbol = model_.resolved(enumerated->value);
-        type = symbol != nullptr ? types_.enumeration_of(*symbol) : nullptr;
-        if (type == nullptr) {
-            return std::nullopt;
-        }
-    } else {
+    } else if (std::holds_alternative<ast::NullLiteral>(node.value)) {
         type = hint != nullptr && hint->kind == sema::TypeKind::Reference ? hint : &types_.null();
     }
     auto bytes = program_.constant_value(expression, *type);

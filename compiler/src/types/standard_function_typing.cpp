@@ -82,8 +82,9 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
         }
         return true;
     };
-    const auto integer = [&](const ast::Expression& value) {
-        const sema::Type* type = this->type(value, &elementary(E::Dint));
+    // `context`: the type an untyped literal takes where it fits (else its own, DINT or wider).
+    const auto integer = [&](const ast::Expression& value, E context = E::Dint) {
+        const sema::Type* type = this->type(value, &elementary(context));
         if (type != nullptr && !sema::is_integer(program_.types().unranged(*type))) {
             diagnostics_.error(DiagnosticCode::E0305, value.range,
                                fmt::format("{} needs an integer here, not {}", name, type->name));
@@ -190,7 +191,8 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
             return fail(DiagnosticCode::E0305, range,
                         fmt::format("{} needs a bit string, not {}", name, result->name));
         }
-        integer(*values[1]);
+        // The count is taken unsigned (codegen: the VM's count is a UDINT).
+        integer(*values[1], E::Udint);
         break;
     case Family::Select:
         condition(*values[0]);
