@@ -343,8 +343,10 @@ private:
     /// A conversion `X_TO_Y` between any two elementary types.
     std::optional<Value> explicit_convert(const Value& value, const sema::Type& want,
                                           const Destination* dest);
-    std::optional<Value> numeric_function(const std::string& name, const Arguments& arguments,
-                                          const sema::Type* hint, const Destination* dest);
+    /// The arithmetic, comparison, logic, shift, ABS, TRUNC and real functions of `target`.
+    std::optional<Value> numeric_function(const types::CallTarget& target,
+                                          const Arguments& arguments, const sema::Type* hint,
+                                          const Destination* dest);
 
     // --- selection_functions.cpp -------------------------------------------------------------
     /// MOVE, SEL, MAX, MIN, LIMIT, MUX.

@@ -125,7 +125,7 @@ std::optional<Value> PouGenerator::standard_function(const types::CallTarget& ta
     case Family::Move:
         return selection(name, arguments, hint, dest);
     default:
-        return numeric_function(name, arguments, hint, dest);
+        return numeric_function(target, arguments, hint, dest);
     }
 }
 
@@ -355,11 +355,11 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
     return result;
 }
 
-std::optional<Value> PouGenerator::numeric_function(const std::string& name,
+std::optional<Value> PouGenerator::numeric_function(const types::CallTarget& target,
                                                     const Arguments& arguments,
                                                     const sema::Type* hint,
                                                     const Destination* dest) {
-    const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
+    const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(target.name);
     using Op = ast::BinaryOperator;
     const Family family = function.family;
     if (family == Family::Arithmetic || family == Family::Comparison ||
@@ -412,14 +412,8 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
     if (family == Family::Shift) {
         const auto value = eval(*arguments[0]->value, hint);
         const sema::Type& udint = types_.elementary(E::Udint);
-        // An untyped literal count is a UDINT where it fits one, else of its own value's type.
-        const auto* written = std::get_if<ast::LiteralExpression>(&arguments[1]->value->node);
-        const auto* integer =
-            written != nullptr ? std::get_if<ast::IntegerLiteral>(&written->value) : nullptr;
-        const bool udint_literal =
-            integer == nullptr || (!integer->negative && integer->magnitude <= 0xFFFF'FFFF);
-        auto count =
-            value ? eval(*arguments[1]->value, udint_literal ? &udint : nullptr) : std::nullopt;
+        // An untyped literal count is a UDINT where it fits one (the typing stage's).
+        auto count = value ? eval(*arguments[1]->value, nullptr) : std::nullopt;
         if (!count) {
             return std::nullopt;
         }
@@ -489,20 +483,20 @@ std::optional<Value> PouGenerator::numeric_function(const std::string& name,
         }
         return Value{result, value->type};
     }
-    // The real functions: integer arguments are converted to the real type first.
+    // The real functions: the inputs converted to the real type the typing stage chose first.
     const bool two = function.max_inputs == 2;
-    const sema::Type* real_hint = hint != nullptr && sema::is_real(*hint) ? hint : nullptr;
-    auto first =
-        eval(*arguments[0]->value, real_hint != nullptr ? real_hint : &types_.elementary(E::Lreal));
+    if (target.operand == nullptr || !sema::is_real(*target.operand)) {
+        program_.refused_by_checks(DiagnosticCode::E0305); // types/standard_function_typing.cpp
+        return std::nullopt;
+    }
+    const sema::Type& real = *target.operand;
+    auto first = eval(*arguments[0]->value, &real);
     if (!first || !sema::is_numeric(*first->type)) {
         if (first) {
             program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
         }
         return std::nullopt;
     }
-    const sema::Type& real = sema::is_real(*first->type) ? *first->type
-                             : real_hint != nullptr      ? *real_hint
-                                                         : types_.elementary(E::Lreal);
     first = explicit_convert(*first, real, nullptr);
     std::vector<Value> values{*first};
     if (two) {

@@ -121,6 +121,9 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"Mux", "k : INT := 2;", "x := MUX(k, 10, 20, 30);", 30},
         IntCase{"Abs", "d : DINT := -5;", "x := ABS(d);", 5},
         IntCase{"Sqrt", "", "x := LREAL_TO_LINT(SQRT(16.0));", 4},
+        // The inputs' common type, LREAL, as the typing stage gives it (was computed in REAL).
+        IntCase{"Atan2OfARealAndAnLrealIsAnLreal", "y : REAL := 1.0; t : LREAL := 3.0;",
+                "x := BOOL_TO_LINT(ATAN2(y, t) = ATAN2(REAL_TO_LREAL(y), t));", 1},
         IntCase{"ExtensibleComparison", "", "x := BOOL_TO_LINT(GT(5, 4, 3) AND NOT GT(5, 6, 3));",
                 1},
         IntCase{"AddFunction", "", "x := ADD(1, 2, 3, 4);", 10},
