@@ -754,8 +754,12 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
         if (left->type->kind == sema::TypeKind::Reference) {
             return pointer_offset(node.op == Op::Add, *left, *node.right, dest);
         }
-        if (sema::is_integer(*left->type) || sema::is_bit_string(*left->type)) {
-            // A small constant right operand of + and - is the immediate of AddI.
+        const sema::Type& left_iec =
+            types_.unranged(left->iec != nullptr ? *left->iec : *left->type);
+        if ((sema::is_integer(*left->type) || sema::is_bit_string(*left->type)) &&
+            program_.typed().type_of(*node.right) == &left_iec) {
+            // A small constant right operand of + and - is the immediate of AddI, where it has
+            // the left operand's type (`i + 100000` of an INT i is a DINT: not in INT).
             Value l = *left;
             if (!top && l.iec == nullptr && is_small_integer(*l.type)) {
                 l = widened(l);
@@ -806,14 +810,15 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
     // the value is cut to INT only where it is stored. AND, OR and XOR of an operand held in
     // DINT so are computed there too, and their result cut at once to the type the typing
     // stage gives them (`i OR 2 * 8` is an INT), whose bits they are.
-    const sema::Type* left_iec = left.iec != nullptr ? left.iec : left.type;
-    const sema::Type* right_iec = right.iec != nullptr ? right.iec : right.type;
-    if (context_literal(*node.left)) {
-        left_iec = right_iec;
-    }
-    if (context_literal(*node.right)) {
-        right_iec = left_iec;
-    }
+    // An untyped literal's IEC type is the typing stage's: the other operand's where it fits it
+    // (`i + 1`), else wider (`i + 100000` is a DINT).
+    const sema::Type* left_iec = context_literal(*node.left) ? program_.typed().type_of(*node.left)
+                                 : left.iec != nullptr       ? left.iec
+                                                             : left.type;
+    const sema::Type* right_iec = context_literal(*node.right)
+                                      ? program_.typed().type_of(*node.right)
+                                  : right.iec != nullptr ? right.iec
+                                                         : right.type;
     if ((arithmetic || comparison || bitwise) && is_small_integer(*left_iec) &&
         is_small_integer(*right_iec) &&
         (left.iec != nullptr || right.iec != nullptr || (!top && arithmetic))) {

@@ -121,6 +121,12 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"Mux", "k : INT := 2;", "x := MUX(k, 10, 20, 30);", 30},
         IntCase{"Abs", "d : DINT := -5;", "x := ABS(d);", 5},
         IntCase{"Sqrt", "", "x := LREAL_TO_LINT(SQRT(16.0));", 4},
+        // An untyped literal that does not fit the other operand's type makes the operation
+        // wider, as the typing stage types it (was computed and cut in SINT and INT).
+        IntCase{"LiteralBeyondASmallIntegerWidensTheOperation", "s : SINT := 1;", "x := s + 200;",
+                201},
+        IntCase{"LiteralBeyondAnIntWidensTheOperation", "i : INT := 1;", "x := i + 100000;",
+                100001},
         // The inputs' common type, LREAL, as the typing stage gives it (was computed in REAL).
         IntCase{"Atan2OfARealAndAnLrealIsAnLreal", "y : REAL := 1.0; t : LREAL := 3.0;",
                 "x := BOOL_TO_LINT(ATAN2(y, t) = ATAN2(REAL_TO_LREAL(y), t));", 1},
