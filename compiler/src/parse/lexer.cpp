@@ -485,13 +485,26 @@ antlr4::TokenFactory<antlr4::CommonToken>* Lexer::getTokenFactory() {
 }
 
 std::unique_ptr<antlr4::Token> Lexer::nextToken() {
+    return std::make_unique<SourceToken>(next());
+}
+
+std::vector<SourceToken> Lexer::all_tokens() {
+    std::vector<SourceToken> tokens;
+    // About four characters a token in ST: one allocation or two for the whole file.
+    tokens.reserve((text_.size() - std::min(position_, text_.size())) / 4 + 1);
+    do {
+        tokens.push_back(next());
+    } while (tokens.back().getType() != antlr4::Token::EOF);
+    return tokens;
+}
+
+SourceToken Lexer::next() {
     for (;;) {
         const std::size_t start = position_;
         if (start >= text_.size()) {
             // Like ANTLR's: empty, stop index one before its start (all ones in an empty file).
-            return std::make_unique<SourceToken>(*this, antlr4::Token::EOF,
-                                                 antlr4::Token::DEFAULT_CHANNEL, start, start - 1,
-                                                 line_, column_, tokens_++);
+            return SourceToken(*this, antlr4::Token::EOF, antlr4::Token::DEFAULT_CHANNEL, start,
+                               start - 1, line_, column_, tokens_++);
         }
         const Match token = match(text_, start);
         if (is_skipped(token.type)) {
@@ -501,8 +514,8 @@ std::unique_ptr<antlr4::Token> Lexer::nextToken() {
         // Pragmas stay on the hidden channel, where the AST builder reads them.
         const std::size_t channel = token.type == T::PRAGMA ? antlr4::Token::HIDDEN_CHANNEL
                                                             : antlr4::Token::DEFAULT_CHANNEL;
-        auto result = std::make_unique<SourceToken>(*this, token.type, channel, start,
-                                                    token.end - 1, line_, column_, tokens_++);
+        SourceToken result(*this, token.type, channel, start, token.end - 1, line_, column_,
+                           tokens_++);
         advance_to(token.end);
         return result;
     }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "input_stream.hpp"
+#include "source_token.hpp"
 
 #include <CommonToken.h>
 #include <TokenSource.h>
@@ -8,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace eposp::compiler {
 
@@ -23,6 +25,10 @@ public:
     explicit Lexer(InputStream& input);
 
     std::unique_ptr<antlr4::Token> nextToken() override;
+    /// The tokens from here to EOF (included) in one array: what the token stream would hold,
+    /// without a heap object a token.
+    std::vector<SourceToken> all_tokens();
+    InputStream& input() const { return input_; }
     std::size_t getLine() const override { return line_; }
     std::size_t getCharPositionInLine() override { return column_; }
     antlr4::CharStream* getInputStream() override { return &input_; }
@@ -31,6 +37,7 @@ public:
     antlr4::TokenFactory<antlr4::CommonToken>* getTokenFactory() override;
 
 private:
+    SourceToken next();
     void advance_to(std::size_t end);
 
     InputStream& input_;

@@ -6,11 +6,13 @@
 #include "lexer.hpp"
 #include "nesting_limit.hpp"
 #include "parse_tokens.hpp"
+#include "source_token.hpp"
 #include "syntax_error_strategy.hpp"
 #include "token_range.hpp"
 
 #include <atn/ParserATNSimulator.h>
 #include <atn/PredictionMode.h>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -108,14 +110,15 @@ parse_with_recovery(StructuredTextParser& parser, FileId file, Diagnostics& diag
     return parser.compilationUnit();
 }
 
+namespace {
+
 // The whole file's tokens are read first: the lexical checks and limits see them all before
-// anything is parsed.
-ast::CompilationUnit parse_tokens(antlr4::TokenSource& lexer, FileId file,
-                                  Diagnostics& diagnostics) {
+// anything is parsed. `stream` makes the token stream of the same tokens that the generated
+// parser reports syntax errors from, when the hand-written parser refuses them.
+ast::CompilationUnit parse_all(const std::vector<antlr4::Token*>& all, FileId file,
+                               Diagnostics& diagnostics,
+                               const std::function<antlr4::CommonTokenStream&()>& stream) {
     const std::size_t errors_before = diagnostics.error_count();
-    antlr4::CommonTokenStream tokens(&lexer);
-    tokens.fill();
-    const std::vector<antlr4::Token*> all = tokens.getTokens(); // a copy: the stream makes one
     if (!check_tokens(all, file, diagnostics)) {
         return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
@@ -124,7 +127,7 @@ ast::CompilationUnit parse_tokens(antlr4::TokenSource& lexer, FileId file,
     DescentParser parser(all, file, built);
     std::optional<ast::CompilationUnit> unit = parser.compilation_unit();
     if (!unit) {
-        report_syntax_errors(tokens, *parser.refused_at(), file, diagnostics, errors_before);
+        report_syntax_errors(stream(), *parser.refused_at(), file, diagnostics, errors_before);
         return ast::CompilationUnit{file, {}, {}, {}, {}};
     }
     if (diagnostics.error_count() != errors_before) {
@@ -136,11 +139,43 @@ ast::CompilationUnit parse_tokens(antlr4::TokenSource& lexer, FileId file,
     return std::move(*unit);
 }
 
+// The hand-written lexer's tokens are made into one array, as values: the token stream would
+// make each a heap object, find its type with a dynamic_cast and free it at the end, which cost
+// as much as lexing itself. The stream is made, by lexing again, only for the generated parser.
+ast::CompilationUnit parse_lexed(Lexer& lexer, FileId file, Diagnostics& diagnostics) {
+    std::vector<SourceToken> tokens = lexer.all_tokens();
+    std::vector<antlr4::Token*> all;
+    all.reserve(tokens.size());
+    for (SourceToken& token : tokens) {
+        all.push_back(&token);
+    }
+    std::optional<Lexer> again;
+    std::optional<antlr4::CommonTokenStream> stream;
+    return parse_all(all, file, diagnostics, [&]() -> antlr4::CommonTokenStream& {
+        again.emplace(lexer.input());
+        stream.emplace(&*again);
+        return *stream;
+    });
+}
+
+} // namespace
+
+ast::CompilationUnit parse_tokens(antlr4::TokenSource& source, FileId file,
+                                  Diagnostics& diagnostics) {
+    if (auto* lexer = dynamic_cast<Lexer*>(&source)) {
+        return parse_lexed(*lexer, file, diagnostics);
+    }
+    antlr4::CommonTokenStream tokens(&source);
+    tokens.fill();
+    return parse_all(tokens.getTokens(), file, diagnostics,
+                     [&]() -> antlr4::CommonTokenStream& { return tokens; });
+}
+
 ast::CompilationUnit parse(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
     const std::string text = utf8_text(sources, file, diagnostics);
     InputStream input(text);
     Lexer lexer(input);
-    return parse_tokens(lexer, file, diagnostics);
+    return parse_lexed(lexer, file, diagnostics);
 }
 
 } // namespace eposp::compiler

@@ -17,10 +17,6 @@ std::string SourceToken::getText() const {
     return "<EOF>";
 }
 
-std::size_t SourceToken::getType() const {
-    return type_ == UINT16_MAX ? antlr4::Token::EOF : type_;
-}
-
 std::string SourceToken::toString() const {
     return "[@" + std::to_string(index_) + "," + std::to_string(start_) + ":" +
            std::to_string(stop_) + "='" + getText() + "',<" + std::to_string(getType()) + ">" +

@@ -23,7 +23,9 @@ public:
           type_(static_cast<std::uint16_t>(type)), channel_(static_cast<std::uint8_t>(channel)) {}
 
     std::string getText() const override;
-    std::size_t getType() const override;
+    std::size_t getType() const override {
+        return type_ == UINT16_MAX ? antlr4::Token::EOF : type_;
+    }
     std::size_t getLine() const override { return line_; }
     std::size_t getCharPositionInLine() const override { return column_; }
     std::size_t getChannel() const override { return channel_; }
