@@ -1,22 +1,30 @@
 #include "byte_stream.hpp"
 
-namespace eposp::vm::detail {
+#include <algorithm>
 
-void ByteWriter::put(std::uint64_t v, int n) {
-    for (int i = 0; i < n; ++i) {
-        bytes_.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-    }
-}
+namespace eposp::vm::detail {
 
 void ByteWriter::string(std::string_view s) {
     u32(static_cast<std::uint32_t>(s.size()));
-    bytes_.insert(bytes_.end(), s.begin(), s.end());
+    raw({reinterpret_cast<const std::uint8_t*>(s.data()), s.size()});
+}
+
+void ByteWriter::raw(std::span<const std::uint8_t> data) {
+    if (bytes_.size() - size_ < data.size()) {
+        grow(data.size());
+    }
+    std::copy(data.begin(), data.end(), bytes_.begin() + static_cast<std::ptrdiff_t>(size_));
+    size_ += data.size();
 }
 
 void ByteWriter::patch_u32(std::size_t at, std::uint32_t v) {
     for (std::size_t i = 0; i < 4; ++i) {
         bytes_[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
     }
+}
+
+void ByteWriter::grow(std::size_t n) {
+    bytes_.resize(std::max(2 * bytes_.size(), size_ + n + 256));
 }
 
 std::uint64_t ByteReader::get(int n) {

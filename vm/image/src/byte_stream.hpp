@@ -12,26 +12,44 @@
 
 namespace eposp::vm::detail {
 
+// Writes through a pointer into bytes already allocated, the fields of fixed size inline: a large
+// image has millions of fields, and a push_back a byte reloads the vector's end after each store.
 class ByteWriter {
 public:
-    void u8(std::uint8_t v) { bytes_.push_back(v); }
-    void u16(std::uint16_t v) { put(v, 2); }
-    void u32(std::uint32_t v) { put(v, 4); }
-    void u64(std::uint64_t v) { put(v, 8); }
+    void u8(std::uint8_t v) { put<1>(v); }
+    void u16(std::uint16_t v) { put<2>(v); }
+    void u32(std::uint32_t v) { put<4>(v); }
+    void u64(std::uint64_t v) { put<8>(v); }
     void i32(std::int32_t v) { u32(static_cast<std::uint32_t>(v)); }
     void string(std::string_view s);
-    void raw(std::span<const std::uint8_t> data) {
-        bytes_.insert(bytes_.end(), data.begin(), data.end());
-    }
+    void raw(std::span<const std::uint8_t> data);
     /// Overwrites 4 bytes at `at` (a length written after its contents).
     void patch_u32(std::size_t at, std::uint32_t v);
 
-    std::size_t size() const { return bytes_.size(); }
-    std::vector<std::uint8_t>& bytes() { return bytes_; }
+    std::size_t size() const { return size_; }
+    /// What has been written.
+    std::vector<std::uint8_t>& bytes() {
+        bytes_.resize(size_);
+        return bytes_;
+    }
 
 private:
-    void put(std::uint64_t v, int n);
-    std::vector<std::uint8_t> bytes_;
+    template <std::size_t N>
+    void put(std::uint64_t v) {
+        if (bytes_.size() - size_ < N) {
+            grow(N);
+        }
+        std::uint8_t* at = bytes_.data() + size_;
+        for (std::size_t i = 0; i < N; ++i) {
+            at[i] = static_cast<std::uint8_t>(v >> (8 * i));
+        }
+        size_ += N;
+    }
+    /// Room for `n` bytes more.
+    void grow(std::size_t n);
+
+    std::vector<std::uint8_t> bytes_; // written up to size_, then room
+    std::size_t size_ = 0;
 };
 
 class ByteReader {
