@@ -178,7 +178,6 @@ struct Keyword {
     std::size_t type;
 };
 
-// Sorted, for a binary search.
 constexpr std::array kKeywords{
     Keyword{"AND", T::AND},
     Keyword{"ARRAY", T::ARRAY},
@@ -251,6 +250,48 @@ constexpr std::array kKeywords{
 };
 constexpr std::size_t kLongestKeyword = 18; // END_FUNCTION_BLOCK, longer than any literal prefix
 
+// FNV-1a: a name's few characters mixed in a few instructions each.
+constexpr std::uint32_t hash(std::string_view word) {
+    std::uint32_t h = 2166136261U;
+    for (const char c : word) {
+        h = (h ^ static_cast<std::uint8_t>(c)) * 16777619U;
+    }
+    return h;
+}
+
+// The keywords by hash, open addressing with linear probing, kNoKeyword where there is none: a
+// name is looked up with one string comparison at most where a binary search made seven.
+constexpr std::size_t kKeywordSlots = 256;
+constexpr std::uint8_t kNoKeyword = 0xFF;
+static_assert(kKeywords.size() < kKeywordSlots / 2 && kKeywords.size() < kNoKeyword);
+
+constexpr std::array<std::uint8_t, kKeywordSlots> make_keyword_slots() {
+    std::array<std::uint8_t, kKeywordSlots> slots{};
+    slots.fill(kNoKeyword);
+    for (std::size_t k = 0; k < kKeywords.size(); ++k) {
+        std::size_t slot = hash(kKeywords[k].word) % kKeywordSlots;
+        while (slots[slot] != kNoKeyword) {
+            slot = (slot + 1) % kKeywordSlots;
+        }
+        slots[slot] = static_cast<std::uint8_t>(k);
+    }
+    return slots;
+}
+constexpr std::array<std::uint8_t, kKeywordSlots> kKeywordSlotsTable = make_keyword_slots();
+
+// The keyword's token type, or IDENTIFIER. `word` is in upper case.
+std::size_t keyword_type(std::string_view word) {
+    for (std::size_t slot = hash(word) % kKeywordSlots; kKeywordSlotsTable[slot] != kNoKeyword;
+         slot = (slot + 1) % kKeywordSlots) {
+        const Keyword& keyword = kKeywords[kKeywordSlotsTable[slot]];
+        if (keyword.word.size() == word.size() && keyword.word[0] == word[0] &&
+            keyword.word == word) {
+            return keyword.type;
+        }
+    }
+    return T::IDENTIFIER;
+}
+
 // A name, or a keyword (the same length: the keyword rules come first), or a literal that starts
 // with a name and a '#' (longer).
 Match name_or_literal(std::u32string_view s, std::size_t start) {
@@ -269,13 +310,7 @@ Match name_or_literal(std::u32string_view s, std::size_t start) {
             return literal;
         }
     }
-    const auto* keyword = std::lower_bound(
-        kKeywords.begin(), kKeywords.end(), word,
-        [](const Keyword& entry, std::string_view key) { return entry.word < key; });
-    if (keyword != kKeywords.end() && keyword->word == word) {
-        return {keyword->type, end};
-    }
-    return {T::IDENTIFIER, end};
+    return {keyword_type(word), end};
 }
 
 // REAL_LITERAL, BASED_INTEGER or INTEGER.
