@@ -1,6 +1,7 @@
 #include "code_rewriter.hpp"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <optional>
 
@@ -27,26 +28,15 @@ std::optional<std::vector<std::uint32_t>> pous_in_code_order(const vm::Image& im
 
 } // namespace
 
-void retarget(vm::Instruction& ins, const std::function<std::uint32_t(std::uint32_t)>& to) {
-    const vm::OpcodeInfo& info = vm::opcode_info(ins.opcode);
-    std::uint32_t* fields[3] = {&ins.a, &ins.b, &ins.c};
-    const vm::FieldSpec* specs[3] = {&info.a, &info.b, &info.c};
-    for (int f = 0; f < 3; ++f) {
-        if (specs[f]->field == vm::Field::Target) {
-            *fields[f] = to(*fields[f]);
+bool jumps_through_table(vm::Opcode opcode) {
+    static const auto kJumpsThroughTable = [] {
+        std::array<bool, vm::kOpcodeCount> table{};
+        for (std::size_t op = 0; op < table.size(); ++op) {
+            table[op] = vm::opcode_info(static_cast<vm::Opcode>(op)).name.starts_with("JTab");
         }
-    }
-}
-
-void retarget(vm::Instruction& ins, std::vector<vm::JumpTable>& tables,
-              const std::function<std::uint32_t(std::uint32_t)>& to) {
-    retarget(ins, to);
-    // Each table belongs to one JTab: it moves with its instruction.
-    if (vm::opcode_info(ins.opcode).name.starts_with("JTab")) {
-        for (std::uint32_t& target : tables[ins.b].targets) {
-            target = to(target);
-        }
-    }
+        return table;
+    }();
+    return kJumpsThroughTable[static_cast<std::size_t>(opcode)];
 }
 
 void CodeSink::keep(const vm::Instruction& ins) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/vm/image.hpp"
+#include "eposp/vm/opcodes.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -41,10 +42,35 @@ using Expand = std::function<void(const CodeBefore& before, vm::Pou& pou, std::u
 /// it is if its POU bodies do not tile the code.
 void rewrite_code(vm::Image& image, const Expand& expand);
 
-/// Applies `to` to every jump target field of `ins`.
-void retarget(vm::Instruction& ins, const std::function<std::uint32_t(std::uint32_t)>& to);
+/// Applies `to` to every jump target field of `ins`. A template, not a std::function: every
+/// pass runs it on every instruction.
+template <typename To>
+void retarget(vm::Instruction& ins, const To& to) {
+    const vm::OpcodeInfo& info = vm::opcode_info(ins.opcode);
+    if (info.a.field == vm::Field::Target) {
+        ins.a = to(ins.a);
+    }
+    if (info.b.field == vm::Field::Target) {
+        ins.b = to(ins.b);
+    }
+    if (info.c.field == vm::Field::Target) {
+        ins.c = to(ins.c);
+    }
+}
+
+/// Whether `opcode` is a JTab, whose jump table (field B) holds targets too.
+bool jumps_through_table(vm::Opcode opcode);
+
 /// The same, and to every target of the jump table of a JTab (`tables`: the image's).
-void retarget(vm::Instruction& ins, std::vector<vm::JumpTable>& tables,
-              const std::function<std::uint32_t(std::uint32_t)>& to);
+template <typename To>
+void retarget(vm::Instruction& ins, std::vector<vm::JumpTable>& tables, const To& to) {
+    retarget(ins, to);
+    // Each table belongs to one JTab: it moves with its instruction.
+    if (jumps_through_table(ins.opcode)) {
+        for (std::uint32_t& target : tables[ins.b].targets) {
+            target = to(target);
+        }
+    }
+}
 
 } // namespace eposp::compiler::lower
