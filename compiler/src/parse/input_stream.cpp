@@ -1,6 +1,7 @@
 #include "input_stream.hpp"
 
 #include "../utf8.hpp"
+#include "ascii_prefix.hpp"
 
 namespace eposp::compiler {
 
@@ -14,8 +15,12 @@ InputStream::InputStream(const std::string& text) {
     }
     // At most one code point a byte; cut to what the text holds at the end.
     _data.resize(bytes.size());
+    const std::size_t ascii = ascii_prefix(bytes);
     char32_t* next = _data.data();
-    for (std::size_t i = 0; i < bytes.size();) {
+    for (std::size_t i = 0; i < ascii; ++i) {
+        *next++ = static_cast<unsigned char>(bytes[i]);
+    }
+    for (std::size_t i = ascii; i < bytes.size();) {
         const auto byte = static_cast<unsigned char>(bytes[i]);
         if (byte < 0x80) { // ASCII, nearly every byte: no call
             *next++ = byte;
@@ -33,14 +38,13 @@ std::string InputStream::getText(const antlr4::misc::Interval& interval) {
         static_cast<std::size_t>(interval.b) >= _data.size()) {
         return ANTLRInputStream::getText(interval);
     }
-    std::string text;
-    text.reserve(static_cast<std::size_t>(interval.b - interval.a + 1));
-    for (ssize_t i = interval.a; i <= interval.b; ++i) {
-        const char32_t c = _data[static_cast<std::size_t>(i)];
-        if (c >= 0x80) {
+    const char32_t* from = _data.data() + interval.a;
+    std::string text(static_cast<std::size_t>(interval.b - interval.a + 1), '\0');
+    for (char& c : text) {
+        if (*from >= 0x80) {
             return ANTLRInputStream::getText(interval);
         }
-        text.push_back(static_cast<char>(c));
+        c = static_cast<char>(*from++);
     }
     return text;
 }

@@ -1,6 +1,7 @@
 #include "eposp/compiler/parser.hpp"
 
 #include "../utf8.hpp"
+#include "ascii_prefix.hpp"
 #include "descent_parser.hpp"
 #include "input_stream.hpp"
 #include "lexer.hpp"
@@ -29,6 +30,9 @@ using generated::StructuredTextParser;
 // with one warning where the first byte that is not UTF-8 is.
 std::string utf8_text(const SourceManager& sources, FileId file, Diagnostics& diagnostics) {
     const std::string& text = sources.text(file);
+    if (ascii_prefix(text) == text.size()) {
+        return text;
+    }
     std::uint32_t line = 1;
     std::uint32_t column = 1;
     for (std::size_t position = 0; position < text.size();) {
