@@ -523,14 +523,20 @@ std::unique_ptr<antlr4::Token> Lexer::nextToken() {
     return std::make_unique<SourceToken>(next());
 }
 
-std::vector<SourceToken> Lexer::all_tokens() {
-    std::vector<SourceToken> tokens;
-    // About four characters a token in ST: one allocation or two for the whole file.
-    tokens.reserve((text_.size() - std::min(position_, text_.size())) / 4 + 1);
-    do {
-        tokens.push_back(next());
-    } while (tokens.back().getType() != antlr4::Token::EOF);
-    return tokens;
+std::vector<std::vector<SourceToken>> Lexer::all_tokens() {
+    // 96 KiB a block: below the size from which malloc maps memory of its own.
+    constexpr std::size_t kTokensABlock = 2048;
+    std::vector<std::vector<SourceToken>> blocks;
+    for (;;) {
+        std::vector<SourceToken>& block = blocks.emplace_back();
+        block.reserve(kTokensABlock);
+        while (block.size() < kTokensABlock) {
+            block.push_back(next());
+            if (block.back().getType() == antlr4::Token::EOF) {
+                return blocks;
+            }
+        }
+    }
 }
 
 SourceToken Lexer::next() {

@@ -25,9 +25,12 @@ public:
     explicit Lexer(InputStream& input);
 
     std::unique_ptr<antlr4::Token> nextToken() override;
-    /// The tokens from here to EOF (included) in one array: what the token stream would hold,
-    /// without a heap object a token.
-    std::vector<SourceToken> all_tokens();
+    /// The tokens from here to EOF (included) as values: what the token stream would hold,
+    /// without a heap object a token. In blocks of the heap rather than one array of tens of
+    /// megabytes, which malloc would map apart and give back to the system when freed, so that
+    /// the stages after parsing would fault their memory in afresh (34.8k page faults instead
+    /// of 29.4k in `eposp build` of large 70000, at about 2 µs each).
+    std::vector<std::vector<SourceToken>> all_tokens();
     InputStream& input() const { return input_; }
     std::size_t getLine() const override { return line_; }
     std::size_t getCharPositionInLine() override { return column_; }

@@ -143,15 +143,17 @@ ast::CompilationUnit parse_all(const std::vector<antlr4::Token*>& all, FileId fi
     return std::move(*unit);
 }
 
-// The hand-written lexer's tokens are made into one array, as values: the token stream would
+// The hand-written lexer's tokens are made as values: the token stream would
 // make each a heap object, find its type with a dynamic_cast and free it at the end, which cost
 // as much as lexing itself. The stream is made, by lexing again, only for the generated parser.
 ast::CompilationUnit parse_lexed(Lexer& lexer, FileId file, Diagnostics& diagnostics) {
-    std::vector<SourceToken> tokens = lexer.all_tokens();
+    std::vector<std::vector<SourceToken>> blocks = lexer.all_tokens();
     std::vector<antlr4::Token*> all;
-    all.reserve(tokens.size());
-    for (SourceToken& token : tokens) {
-        all.push_back(&token);
+    all.reserve(blocks.size() * blocks.front().capacity());
+    for (std::vector<SourceToken>& block : blocks) {
+        for (SourceToken& token : block) {
+            all.push_back(&token);
+        }
     }
     std::optional<Lexer> again;
     std::optional<antlr4::CommonTokenStream> stream;
