@@ -168,32 +168,6 @@ TEST(ImageFormat, TruncationIsRefusedWithTheSizeMismatch) {
     EXPECT_EQ(read.error().rfind("image size mismatch", 0), 0U) << read.error();
 }
 
-// The checksum is computed eight bytes a step; payloads of every length modulo 8, and a random
-// one with every byte value, must give Boost's CRC-32 as before.
-TEST(ImageFormat, TheHeaderChecksumIsTheCrc32OfThePayload) {
-    std::mt19937 random(32);
-    for (std::size_t length = 0; length < 24; ++length) {
-        auto image = sample_image();
-        TypeDescriptor named;
-        named.name = std::string(length, 'n');
-        for (char& c : named.name) {
-            c = static_cast<char>(random());
-        }
-        named.scalar = Scalar::I16;
-        named.size = 2;
-        image.types.push_back(named);
-        const auto bytes = write_image(image);
-        boost::crc_32_type crc;
-        crc.process_bytes(bytes.data() + kImageHeaderSize, bytes.size() - kImageHeaderSize);
-        const std::uint32_t in_header = static_cast<std::uint32_t>(bytes[12]) |
-                                        static_cast<std::uint32_t>(bytes[13]) << 8 |
-                                        static_cast<std::uint32_t>(bytes[14]) << 16 |
-                                        static_cast<std::uint32_t>(bytes[15]) << 24;
-        EXPECT_EQ(in_header, crc.checksum()) << "type name of " << length << " bytes";
-        EXPECT_TRUE(read_image(bytes));
-    }
-}
-
 TEST(ImageFormat, EveryPrefixOfAnImageIsRefused) {
     const auto bytes = write_image(sample_image());
     for (std::size_t n = 0; n < bytes.size(); ++n) {

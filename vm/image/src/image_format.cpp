@@ -1,9 +1,9 @@
 #include "eposp/vm/image_format.hpp"
 
 #include "byte_stream.hpp"
-#include "crc32.hpp"
 
 #include <array>
+#include <boost/crc.hpp>
 #include <string>
 #include <string_view>
 
@@ -12,9 +12,14 @@ namespace {
 
 using detail::ByteReader;
 using detail::ByteWriter;
-using detail::crc32;
 
 constexpr std::array<std::uint8_t, 4> kMagic{'E', 'P', 'X', 'I'};
+
+std::uint32_t crc32(std::span<const std::uint8_t> bytes) {
+    boost::crc_32_type crc;
+    crc.process_bytes(bytes.data(), bytes.size());
+    return crc.checksum();
+}
 
 // The layout is described once, by the `describe_*` functions below, against either of these
 // two adapters: one writes each field, the other reads it back into the same place.
