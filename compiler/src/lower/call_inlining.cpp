@@ -46,7 +46,7 @@ bool is_memory_operand(Field field) {
 /// instruction and cannot be shared by a copy.
 bool keeps_body_in_place(Opcode op) {
     return op == Opcode::Call || op == Opcode::CallFb || op == Opcode::CallFbP ||
-           vm::opcode_info(op).name.starts_with("JTab");
+           jumps_through_table(op);
 }
 
 /// The POU `call` enters, when its body may replace the call: short, without calls or jump

@@ -1,7 +1,6 @@
 #include "code_rewriter.hpp"
 
 #include <algorithm>
-#include <array>
 #include <numeric>
 #include <optional>
 
@@ -28,16 +27,6 @@ std::optional<std::vector<std::uint32_t>> pous_in_code_order(const vm::Image& im
 
 } // namespace
 
-bool jumps_through_table(vm::Opcode opcode) {
-    static const auto kJumpsThroughTable = [] {
-        std::array<bool, vm::kOpcodeCount> table{};
-        for (std::size_t op = 0; op < table.size(); ++op) {
-            table[op] = vm::opcode_info(static_cast<vm::Opcode>(op)).name.starts_with("JTab");
-        }
-        return table;
-    }();
-    return kJumpsThroughTable[static_cast<std::size_t>(opcode)];
-}
 
 void CodeSink::keep(const vm::Instruction& ins) {
     old_targets_.push_back(code_.size());

@@ -59,7 +59,9 @@ void retarget(vm::Instruction& ins, const To& to) {
 }
 
 /// Whether `opcode` is a JTab, whose jump table (field B) holds targets too.
-bool jumps_through_table(vm::Opcode opcode);
+inline bool jumps_through_table(vm::Opcode opcode) {
+    return vm::opcode_info(opcode).b.field == vm::Field::JumpTable;
+}
 
 /// The same, and to every target of the jump table of a JTab (`tables`: the image's).
 template <typename To>

@@ -10,7 +10,7 @@ namespace {
 constexpr std::uint32_t kNowhere = std::numeric_limits<std::uint32_t>::max();
 
 bool is_jump_table(Opcode op) {
-    return op == Opcode::JTabI16 || op == Opcode::JTabU16 || op == Opcode::JTab32;
+    return opcode_info(op).b.field == Field::JumpTable;
 }
 
 // A branch point: a jump table (one outcome per entry and one past its end), or a conditional
