@@ -75,6 +75,19 @@ bool EventLoop::next_in_line() {
     return !next || *next > now_;
 }
 
+bool EventLoop::advance_to(TimePoint when) {
+    if (!dispatching_ || when > run_end_ || pace_ != Pace::Virtual || io_ || stop_requested_) {
+        return false;
+    }
+    const std::optional<TimePoint> next = timers_->next_time();
+    if (next && *next <= when) {
+        return false;
+    }
+    now_ = std::max(now_, when);
+    ++dispatched_;
+    return true;
+}
+
 bool EventLoop::cancel(TimerId id) {
     return timers_->cancel(id);
 }
@@ -109,11 +122,14 @@ void EventLoop::dispatch_next() {
 std::uint64_t EventLoop::run_until(TimePoint end) {
     stop_requested_ = false;
     const std::uint64_t before = dispatched_;
+    // A callback may run the loop itself: its run's end holds again when that returns.
+    const TimePoint outer_end = std::exchange(run_end_, end);
     if (pace_ == Pace::Virtual) {
         run_virtual(end);
     } else {
         run_real_time(end);
     }
+    run_end_ = outer_end;
     return dispatched_ - before;
 }
 

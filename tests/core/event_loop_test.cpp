@@ -284,6 +284,48 @@ TEST(EventLoop, APostedCallIsNextInLineOnlyWhenNothingElseIsDueNow) {
     EXPECT_EQ(seen, (std::vector<bool>{false, true, false, true, false}));
 }
 
+// The virtual bus goes on to a frame's next instant in the same event when the loop would run
+// that instant's event next: only when no other event is due by then, within the run.
+TEST(EventLoop, ACallbackAdvancesOnlyWhenNothingElseIsDueByThen) {
+    EventLoop loop;
+    std::vector<bool> seen;
+    std::vector<TimePoint> times;
+    loop.at(TimePoint{1ms}, [&] {
+        seen.push_back(loop.advance_to(TimePoint{3ms})); // an event is due at 3 ms
+        seen.push_back(loop.advance_to(TimePoint{2ms}));
+        times.push_back(loop.now());
+        seen.push_back(loop.advance_to(TimePoint{2ms})); // now itself: nothing else is due
+        loop.post([] {});
+        seen.push_back(loop.advance_to(TimePoint{2ms} + 1ns)); // the posted call comes first
+    });
+    loop.at(TimePoint{3ms}, [&] {
+        times.push_back(loop.now());
+        seen.push_back(loop.advance_to(TimePoint{5ms})); // past the run's end
+        seen.push_back(loop.advance_to(TimePoint{4ms})); // the run's end is inclusive
+        times.push_back(loop.now());
+        loop.stop();
+        seen.push_back(loop.advance_to(TimePoint{4ms})); // the loop returns first
+    });
+    // Six callbacks run: the three scheduled and the three advances; none when it refuses.
+    EXPECT_EQ(loop.run_until(TimePoint{4ms}), 6U);
+    EXPECT_EQ(seen, (std::vector<bool>{false, true, true, false, false, true, false}));
+    EXPECT_EQ(times, (std::vector<TimePoint>{TimePoint{2ms}, TimePoint{3ms}, TimePoint{4ms}}));
+    EXPECT_FALSE(loop.advance_to(TimePoint{5ms})); // outside a callback
+    EXPECT_EQ(loop.now(), TimePoint{4ms});
+}
+
+// A callback that runs the loop itself: its own run's end holds again afterwards.
+TEST(EventLoop, AnInnerRunLeavesTheOuterRunsEnd) {
+    EventLoop loop;
+    std::vector<bool> seen;
+    loop.at(TimePoint{1ms}, [&] {
+        loop.run_until(TimePoint{1ms}); // nothing more is due: returns at once
+        seen.push_back(loop.advance_to(TimePoint{3ms}));
+    });
+    loop.run_until(TimePoint{4ms});
+    EXPECT_EQ(seen, std::vector<bool>{true});
+}
+
 TEST(EventLoop, RunReturnsWhenNoEventIsLeft) {
     EventLoop loop;
     loop.after(3s, [] {});

@@ -105,8 +105,15 @@ void VirtualPort::Impl::report_overflow(Overflow overflow, const Frame& lost) co
 VirtualBus::Impl::Impl(core::EventLoop& event_loop, const BusConfig& bus_config)
     : loop(event_loop), config(bus_config), bit(bit_duration(bus_config.bitrate)),
       created(event_loop.now()), recessive_since(created),
-      arbitration(event_loop, [this] { arbitrate(); }),
-      transmission_step(event_loop, [this] { step(); }) {}
+      arbitration(event_loop,
+                  [this] {
+                      arbitrate();
+                      carry_on();
+                  }),
+      transmission_step(event_loop, [this] {
+          step();
+          carry_on();
+      }) {}
 
 core::TimePoint VirtualBus::Impl::at_bit(core::TimePoint start, std::size_t bits) const {
     return start + bit * static_cast<std::int64_t>(bits);
@@ -336,7 +343,11 @@ void VirtualBus::Impl::start(VirtualPort::Impl& sender, const Frame& next) {
                            .timeline = timeline,
                            .start = now,
                            .receivers_before = next_sequence};
-    transmission_step.arm(at_bit(now, timeline.concluded));
+}
+
+core::TimePoint VirtualBus::Impl::next_instant() const {
+    return at_bit(current->start,
+                  current->concluded ? current->timeline.bus_free : current->timeline.concluded);
 }
 
 void VirtualBus::Impl::step() {
@@ -344,6 +355,19 @@ void VirtualBus::Impl::step() {
         finish();
     } else {
         conclude();
+    }
+}
+
+// Each instant of a transmission (its end of frame, its end of intermission with the next
+// arbitration and start of frame) is an event of the loop, unless the loop would run that event
+// next anyway: then no event, handler, statistics read or caller of run_until() can come
+// between, and this event goes on with it.
+void VirtualBus::Impl::carry_on() {
+    while (current && loop.advance_to(next_instant())) {
+        step();
+    }
+    if (current) {
+        transmission_step.arm(next_instant());
     }
 }
 
@@ -424,7 +448,6 @@ void VirtualBus::Impl::conclude() {
         conclude_with_error(transmission);
         break;
     }
-    transmission_step.arm(at_bit(transmission.start, transmission.timeline.bus_free));
 }
 
 void VirtualBus::Impl::transmitted(Transmission& transmission) {

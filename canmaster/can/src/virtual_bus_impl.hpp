@@ -152,7 +152,8 @@ public:
     std::optional<Transmission> current;
     core::TimePoint recessive_since;
     /// The deferred arbitration and the two instants of each transmission (its end of frame,
-    /// then its end of intermission): alarms, not a new timer per frame.
+    /// then its end of intermission): alarms, not a new timer per frame. An instant that the
+    /// loop would run next anyway runs in the event before it (carry_on()).
     core::Alarm arbitration;
     core::ScopedTimer suspension_end;
     core::Alarm transmission_step;
@@ -163,7 +164,11 @@ private:
     /// A fault that shortens the frame shortens `frame` itself, which then goes on the wire.
     Outcome outcome_of(const VirtualPort::Impl& sender, Frame& frame);
     bool dominant_error_flag(const VirtualPort::Impl& sender, Outcome outcome) const;
+    /// Its instant after the one that has run: its end of frame or its end of intermission.
+    core::TimePoint next_instant() const;
     void step();
+    /// After an event of the bus: the next instant of the transmission, if one is under way.
+    void carry_on();
     void conclude();
     void conclude_with_error(Transmission& transmission);
     void finish();

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <ostream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace eposp::can {
@@ -360,6 +361,39 @@ TEST_F(VirtualBusTest, StatisticsCountFramesBitsAndLoad) {
     EXPECT_DOUBLE_EQ(stats.load(), 0.5);
     EXPECT_EQ(a->statistics().tx_frames, 2U);
     EXPECT_EQ(b->statistics().rx_frames, 2U);
+}
+
+// A frame's end of frame, its end of intermission and the next start of frame run in one event
+// when the loop would run them next anyway (EventLoop::advance_to). What can come between sees
+// the bus as it did with an event per instant: an event due at an instant runs before the bus's
+// (it was scheduled first), and a run that ends between two instants leaves the bus between them.
+TEST_F(VirtualBusTest, EventsAndRunEndsBetweenAFramesInstantsSeeTheBusAsBefore) {
+    auto a = bus.connect("a");
+    auto b = bus.connect("b");
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> seen; // frames and bits counted
+    const auto look = [&] {
+        seen.emplace_back(bus.statistics().frames, bus.statistics().bits);
+    };
+    a->send(kZeroFrame); // on the wire 0 .. 50 us, the bus free at 53 us
+    a->send(kZeroFrame); // 53 .. 103 us, free at 106 us
+    loop.at(at_us(50), look);
+    b->on_receive([&](const Frame&) {
+        if (seen.size() == 1) {
+            loop.at(at_us(53), look); // scheduled at the end of frame, before its intermission ends
+        }
+    });
+    // The loop counts a callback for each instant: the arbitration at 0 us, the two looks, the
+    // first frame's end, its intermission's end with the second start of frame.
+    EXPECT_EQ(loop.run_until(at_us(101)), 5U);
+    look();
+    EXPECT_EQ(loop.run_until(at_us(104)), 1U); // the second end of frame
+    look();
+    EXPECT_EQ(loop.run(), 1U);
+    look();
+    EXPECT_EQ(seen, (std::vector<std::pair<std::uint64_t, std::uint64_t>>{
+                        {0, 0}, {1, 0}, {1, 53}, {2, 53}, {2, 106}}));
+    ASSERT_EQ(wire.events.size(), 2U);
+    EXPECT_EQ(wire.events[1].start, at_us(53));
 }
 
 TEST_F(VirtualBusTest, ContinuousTrafficLoadsTheBusFully) {

@@ -59,6 +59,12 @@ public:
     /// between (virtual pace, no other event due now, no I/O to poll, no stop() pending). The
     /// callback may then make the call itself and save an event (the virtual bus arbitrates so).
     bool next_in_line();
+    /// From a callback: whether an event armed now for `when` would be the next to run (virtual
+    /// pace, no I/O to poll, no stop() pending, no other event due by `when`, `when` within the
+    /// running run_until()). If so the clock moves to `when` and the callback goes on as that
+    /// event would, counted as one callback run: nothing else can act in between, so nothing
+    /// can tell the difference (the virtual bus carries a frame to its end and on so).
+    bool advance_to(TimePoint when);
 
     /// Cancels a pending timer; safe from within its own callback. Returns false when the timer
     /// already ran (one-shot) or was cancelled before.
@@ -100,6 +106,7 @@ private:
     Pace pace_;
     mutable TimePoint now_{};
     bool dispatching_ = false;
+    TimePoint run_end_{}; ///< the running run_until()'s end
     std::atomic<bool> stop_requested_{false};
     std::uint64_t dispatched_ = 0;
     std::unique_ptr<TimerQueue> timers_;
