@@ -203,14 +203,6 @@ void TimerQueue::drop_cancelled() {
     }
 }
 
-std::optional<TimePoint> TimerQueue::next_time() {
-    drop_cancelled();
-    if (heap_.empty()) {
-        return std::nullopt;
-    }
-    return heap_.front().when;
-}
-
 void TimerQueue::run_next(TimePoint& now) {
     drop_cancelled();
     assert(!heap_.empty());

@@ -39,8 +39,17 @@ public:
     void disarm(TimerId alarm);
     void remove_alarm(TimerId alarm);
 
-    /// The earliest live event, if any.
-    std::optional<TimePoint> next_time();
+    /// The earliest live event, if any. Inline: the loop asks before each event, and the
+    /// virtual bus at each instant of a frame (EventLoop::advance_to).
+    std::optional<TimePoint> next_time() {
+        if (!heap_.empty() && !current(heap_.front())) {
+            drop_cancelled();
+        }
+        if (heap_.empty()) {
+            return std::nullopt;
+        }
+        return heap_.front().when;
+    }
 
     /// Runs the earliest live event, `now` first advanced to its time (never back). A periodic
     /// event is re-armed one period after its scheduled time unless its callback cancelled it.
