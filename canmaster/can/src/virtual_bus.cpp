@@ -188,7 +188,7 @@ void VirtualBus::Impl::detach(VirtualPort& port) {
     recovering_ports -= port.impl_->recovering ? 1 : 0;
     has_vacancies = true;
     if (current && current->sender == port.impl_.get()) {
-        current->departed_sender_name = std::string(port.name());
+        departed_sender_name = std::string(port.name());
         current->sender = nullptr;
     }
 }
@@ -314,7 +314,10 @@ void VirtualBus::Impl::start(VirtualPort::Impl& sender, const Frame& next) {
     Frame frame = next;
     const Outcome outcome = outcome_of(sender, frame);
     const FrameLength length = frame_length(frame);
-    const Timeline timeline = timeline_of(outcome, length, dominant_error_flag(sender, outcome));
+    // Only an error frame has a flag whose kind matters.
+    const bool error = outcome == Outcome::Corrupted || outcome == Outcome::NotAcknowledged;
+    const Timeline timeline =
+        timeline_of(outcome, length, error && dominant_error_flag(sender, outcome));
     const core::TimePoint now = loop.now();
 
     // A recovering controller counts the recessive stretch this frame ends and waits on the next.
@@ -426,7 +429,7 @@ void VirtualBus::Impl::conclude() {
         notify_observers({.start = transmission.start,
                           .end = at_bit(transmission.start, transmission.timeline.concluded),
                           .frame = transmission.frame,
-                          .sender = transmission.sender_name()});
+                          .sender = sender_name(transmission)});
         transmitted(transmission);
         for_each_receiver(
             transmission, &transmission.frame, [this, &transmission](VirtualPort::Impl& receiver) {
@@ -486,7 +489,7 @@ void VirtualBus::Impl::conclude_with_error(Transmission& transmission) {
          .end = at_bit(transmission.start, transmission.timeline.concluded),
          .frame = ack_error ? ack_error_frame(after, state_changed)
                             : crc_sequence_bit_error_frame(sent_recessive, after, state_changed),
-         .sender = transmission.sender_name()});
+         .sender = sender_name(transmission)});
 
     if (transmission.sender != nullptr) {
         VirtualPort::Impl& sender = *transmission.sender;

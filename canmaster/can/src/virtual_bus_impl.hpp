@@ -8,6 +8,9 @@
 #include <deque>
 #include <map>
 #include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 // Internal: the state behind VirtualBus and VirtualPort, shared by their two sources.
@@ -71,13 +74,10 @@ struct Timeline {
     std::optional<std::size_t> error_flag; ///< start of the error flag, if any
 };
 
+/// Plain data, copied as such once per frame (the sender's name, should it leave during its
+/// frame, is kept by the bus: VirtualBus::Impl::departed_sender_name).
 struct Transmission {
     VirtualPort::Impl* sender; ///< null once that port is gone
-    /// Kept when the sender disconnects during its frame; until then its port has the name.
-    std::string departed_sender_name{};
-    std::string_view sender_name() const {
-        return sender != nullptr ? sender->port.name() : departed_sender_name;
-    }
     Frame frame;
     bool from_queue; ///< false for a babbled frame, which stays
     Outcome outcome;
@@ -87,6 +87,7 @@ struct Transmission {
     std::uint64_t receivers_before; ///< ports connected later do not receive it
     bool concluded = false;         ///< past its end of frame (or error delimiter)
 };
+static_assert(std::is_trivially_copyable_v<Transmission>);
 
 class VirtualBus::Impl {
 public:
@@ -150,6 +151,12 @@ public:
     BusStatistics stats;
 
     std::optional<Transmission> current;
+    /// The name of the current transmission's sender once it has disconnected during its frame.
+    std::string departed_sender_name;
+    std::string_view sender_name(const Transmission& transmission) const {
+        return transmission.sender != nullptr ? transmission.sender->port.name()
+                                              : std::string_view(departed_sender_name);
+    }
     core::TimePoint recessive_since;
     /// The deferred arbitration and the two instants of each transmission (its end of frame,
     /// then its end of intermission): alarms, not a new timer per frame. An instant that the

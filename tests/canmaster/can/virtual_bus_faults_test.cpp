@@ -69,6 +69,22 @@ protected:
     Inbox at_b{*b, loop};
 };
 
+// The bus keeps the name of a sender that leaves during its frame for that frame alone: the
+// error frame is named after it, the next frame after its own sender.
+TEST_F(VirtualBusFaultsTest, AnErrorFrameNamesTheSenderThatLeftDuringItsFrame) {
+    auto c = bus.connect("c");
+    bus.corrupt_frames(with_id(0x000), 1);
+    a->send(Frame::data_frame(0x000, {}));
+    c->send(Frame::data_frame(0x100, {}));
+    loop.at(at_us(10), [&] { a.reset(); });
+    loop.run();
+    ASSERT_EQ(wire.events.size(), 2U);
+    EXPECT_TRUE(wire.events[0].frame.error);
+    EXPECT_EQ(wire.events[0].sender, "a");
+    EXPECT_EQ(wire.events[1].frame.id, 0x100U);
+    EXPECT_EQ(wire.events[1].sender, "c");
+}
+
 TEST_F(VirtualBusFaultsTest, DroppedFramesAreLostForReceiversAndCounted) {
     bus.drop_frames(with_id(0x181), 2);
     for (int i = 0; i < 3; ++i) {
