@@ -111,7 +111,7 @@ VirtualBus::Impl::Impl(core::EventLoop& event_loop, const BusConfig& bus_config)
                       carry_on();
                   }),
       transmission_step(event_loop, [this] {
-          step();
+          step(false);
           carry_on();
       }) {}
 
@@ -353,9 +353,9 @@ core::TimePoint VirtualBus::Impl::next_instant() const {
                   current->concluded ? current->timeline.bus_free : current->timeline.concluded);
 }
 
-void VirtualBus::Impl::step() {
+void VirtualBus::Impl::step(bool advanced) {
     if (current->concluded) {
-        finish();
+        finish(advanced || loop.next_in_line());
     } else {
         conclude();
     }
@@ -367,7 +367,7 @@ void VirtualBus::Impl::step() {
 // between, and this event goes on with it.
 void VirtualBus::Impl::carry_on() {
     while (current && loop.advance_to(next_instant())) {
-        step();
+        step(true);
     }
     if (current) {
         transmission_step.arm(next_instant());
@@ -503,7 +503,7 @@ void VirtualBus::Impl::conclude_with_error(Transmission& transmission) {
     }
 }
 
-void VirtualBus::Impl::finish() {
+void VirtualBus::Impl::finish(bool next_in_line) {
     const Transmission transmission = std::move(*current);
     current.reset();
     const std::size_t bits = transmission.timeline.bus_free;
@@ -516,7 +516,7 @@ void VirtualBus::Impl::finish() {
     }
     // The deferred arbitration would run next anyway when nothing else is due now: the frames
     // that compete are the same, and the bus saves an event per frame.
-    if (loop.next_in_line()) {
+    if (next_in_line) {
         arbitrate();
     } else {
         request_arbitration();

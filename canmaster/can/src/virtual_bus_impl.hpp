@@ -173,12 +173,16 @@ private:
     bool dominant_error_flag(const VirtualPort::Impl& sender, Outcome outcome) const;
     /// Its instant after the one that has run: its end of frame or its end of intermission.
     core::TimePoint next_instant() const;
-    void step();
+    /// `advanced`: the loop has just moved to this instant (EventLoop::advance_to()), so nothing
+    /// else is due now and a call posted now would be next in line without asking.
+    void step(bool advanced);
     /// After an event of the bus: the next instant of the transmission, if one is under way.
     void carry_on();
     void conclude();
     void conclude_with_error(Transmission& transmission);
-    void finish();
+    /// `next_in_line`: EventLoop::next_in_line() as it is at the end of intermission; finish()
+    /// runs no callback before it arbitrates, so the answer holds there.
+    void finish(bool next_in_line);
     void transmitted(Transmission& transmission);
     /// Visits the receivers of `transmission`: only those `concerning` concerns, or all.
     template <typename Visit>
