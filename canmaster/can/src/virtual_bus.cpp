@@ -202,9 +202,6 @@ void VirtualBus::Impl::compact_ports() {
 }
 
 void VirtualBus::Impl::notify_observers(WireEvent event) {
-    if (observers.empty()) {
-        return;
-    }
     // The sender's name as it is now: an observer might even disconnect the sending port.
     const std::string sender(event.sender);
     event.sender = sender;
@@ -239,6 +236,7 @@ void VirtualBus::Impl::arbitrate() {
     const core::TimePoint now = loop.now();
     VirtualPort::Impl* winner = nullptr;
     const Frame* winning_frame = nullptr;
+    std::uint32_t winning_field = 0; // the winner's arbitration field (wins_arbitration)
     std::optional<core::TimePoint> suspended_until;
     for (std::size_t word = 0; word < words; ++word) {
         for (std::uint64_t sending = queued[word]; sending != 0; sending &= sending - 1) {
@@ -254,14 +252,18 @@ void VirtualBus::Impl::arbitrate() {
                 continue;
             }
             const Frame* frame = controller.next_frame();
-            if (winner == nullptr || wins_arbitration(*frame, *winning_frame)) {
+            const std::uint32_t field = arbitration_field(*frame);
+            if (winner == nullptr || field < winning_field) {
                 winner = &controller;
                 winning_frame = frame;
+                winning_field = field;
             }
         }
     }
     if (winner != nullptr) {
-        suspension_end.cancel();
+        if (suspension_end.id()) { // mostly none: an out-of-line call saved per frame
+            suspension_end.cancel();
+        }
         start(*winner, *winning_frame);
     } else if (suspended_until) {
         suspension_end =
@@ -426,10 +428,13 @@ void VirtualBus::Impl::conclude() {
     switch (transmission.outcome) {
     case Outcome::Delivered:
         ++stats.frames;
-        notify_observers({.start = transmission.start,
-                          .end = at_bit(transmission.start, transmission.timeline.concluded),
-                          .frame = transmission.frame,
-                          .sender = sender_name(transmission)});
+        // The event (with the sender's name, a virtual call) is made only for observers.
+        if (!observers.empty()) {
+            notify_observers({.start = transmission.start,
+                              .end = at_bit(transmission.start, transmission.timeline.concluded),
+                              .frame = transmission.frame,
+                              .sender = sender_name(transmission)});
+        }
         transmitted(transmission);
         for_each_receiver(
             transmission, &transmission.frame, [this, &transmission](VirtualPort::Impl& receiver) {
@@ -484,12 +489,14 @@ void VirtualBus::Impl::conclude_with_error(Transmission& transmission) {
     }
     const bool state_changed = after.state() != before;
     const bool sent_recessive = transmission.length.trailing_recessive > 0;
-    notify_observers(
-        {.start = at_bit(transmission.start, *transmission.timeline.error_flag),
-         .end = at_bit(transmission.start, transmission.timeline.concluded),
-         .frame = ack_error ? ack_error_frame(after, state_changed)
-                            : crc_sequence_bit_error_frame(sent_recessive, after, state_changed),
-         .sender = sender_name(transmission)});
+    if (!observers.empty()) {
+        notify_observers(
+            {.start = at_bit(transmission.start, *transmission.timeline.error_flag),
+             .end = at_bit(transmission.start, transmission.timeline.concluded),
+             .frame = ack_error ? ack_error_frame(after, state_changed)
+                                : crc_sequence_bit_error_frame(sent_recessive, after, state_changed),
+             .sender = sender_name(transmission)});
+    }
 
     if (transmission.sender != nullptr) {
         VirtualPort::Impl& sender = *transmission.sender;

@@ -96,6 +96,7 @@ public:
     void attach(VirtualPort& port);
     void detach(VirtualPort& port);
     void request_arbitration();
+    /// Precondition: some observer (callers make the event only then).
     void notify_observers(WireEvent event);
 
     /// Applies `change` to the counters of a port that takes part in traffic; the caller then
