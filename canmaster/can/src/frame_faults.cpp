@@ -16,7 +16,7 @@ bool FrameFaults::cancel(std::uint64_t id) {
     return std::erase_if(entries_, [id](const Entry& entry) { return entry.id == id; }) > 0;
 }
 
-std::optional<FrameFault> FrameFaults::take(const Frame& frame) {
+std::optional<FrameFault> FrameFaults::take_matching(const Frame& frame) {
     const auto entry = std::ranges::find_if(entries_, [&frame](const Entry& candidate) {
         return !candidate.filter || candidate.filter(frame);
     });
