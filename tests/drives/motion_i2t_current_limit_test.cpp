@@ -45,5 +45,36 @@ TEST(I2tCurrentLimit, ContinuousCurrentNeverLimitsAndALowerCurrentReleases) {
     EXPECT_EQ(i2t.limit(), 3);
 }
 
+// The level is the thermal model of a winding with ambient 0 and R_th 1 under the power
+// (I / I_continuous)², bit for bit: the limitation steps towards the power itself, which is that
+// body's steady state. Currents of both signs and zero, a step of another length and new
+// parameters (which keep the level) on the way.
+TEST(I2tCurrentLimit, LevelIsTheNormalisedThermalModelBitForBit) {
+    const I2tParameters first{
+        .continuous_current = 1.3, .output_current_limit = 4, .time_constant = 0.7};
+    const I2tParameters second{
+        .continuous_current = 0.9, .output_current_limit = 3, .time_constant = 1.9};
+    I2tCurrentLimit i2t(first);
+    plant::ThermalModel winding(
+        {.ambient_temperature = 0, .thermal_resistance = 1, .time_constant = first.time_constant});
+    const auto step = [&](double current, double dt, double continuous) {
+        i2t.update(current, dt);
+        const double ratio = current / continuous;
+        winding.step(ratio * ratio, dt);
+        ASSERT_EQ(i2t.level(), winding.temperature()) << current << " A for " << dt << " s";
+    };
+    for (int n = 0; n < 5000; ++n) {
+        step(3.7 * std::sin(n * 0.013) - 0.2, n < 2500 ? kStep : 1e-3, first.continuous_current);
+    }
+    step(0, kStep, first.continuous_current);
+    step(-0.0, kStep, first.continuous_current);
+    i2t.set_parameters(second);
+    winding.set_parameters(
+        {.ambient_temperature = 0, .thermal_resistance = 1, .time_constant = second.time_constant});
+    for (int n = 0; n < 5000; ++n) {
+        step(-2.5 * std::cos(n * 0.007), kStep, second.continuous_current);
+    }
+}
+
 } // namespace
 } // namespace eposp::drives::motion

@@ -36,7 +36,9 @@ public:
             return;
         }
         const double ratio = current / parameters_.continuous_current;
-        winding_.step(ratio * ratio, dt);
+        // The normalised winding's steady state is its power: 0 + p · 1 is p, bit for bit (a
+        // square is never −0).
+        winding_.step_towards(ratio * ratio, dt);
         if (level() >= 1) {
             limiting_ = true;
         } else if (level() < parameters_.release_level) {

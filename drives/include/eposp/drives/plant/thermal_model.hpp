@@ -33,11 +33,14 @@ public:
 
     /// `power` W dissipated during the last `dt` s. Inline: an I²t limitation steps its winding
     /// every 0.1 ms.
-    void step(double power, double dt) {
+    void step(double power, double dt) { step_towards(steady_state_temperature(power), dt); }
+    /// `dt` s on the way to `steady_state` °C: step() for a power whose steady-state temperature
+    /// the caller knows (a normalised body: ambient 0 and R_th 1 make it the power itself).
+    void step_towards(double steady_state, double dt) {
         if (dt != gain_dt_) {
             set_step(dt);
         }
-        temperature_ += (steady_state_temperature(power) - temperature_) * gain_;
+        temperature_ += (steady_state - temperature_) * gain_;
     }
     double temperature() const { return temperature_; }
     /// The temperature `power` W would hold the body at in the end.
