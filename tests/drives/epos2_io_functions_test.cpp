@@ -416,5 +416,29 @@ TEST(HoldingBrake, WithoutBrakeOutputThePowerStageFollowsAtOnce) {
     EXPECT_FALSE(brake.power_stage(kMs, false, false, 0));
 }
 
+// A configuration starts the standstill watch afresh, with a brake before or without one (which
+// therefore need not watch): an axis at rest for 20 ms before it is disabled still coasts until
+// it has stood still for the window time after the configuration.
+TEST(HoldingBrake, ConfigurationStartsTheStandstillWatchAfresh) {
+    const motion::StandstillWindow window{.window = 30, .time_ms = 5, .timeout_ms = 1000};
+    const HoldingBrakeTiming timing{.rise_time = 20, .fall_time = 0, .timeout = 65535};
+    for (const bool brake_before : {true, false}) {
+        HoldingBrake brake;
+        brake.configure(brake_before, timing, window);
+        double now = 0;
+        for (; now < 20 * kMs; now += kMs) {
+            EXPECT_TRUE(brake.power_stage(now, true, false, 0));
+        }
+        brake.configure(true, timing, window);
+        EXPECT_FALSE(brake.power_stage(now, false, false, 0)) << brake_before;
+        EXPECT_FALSE(brake.engaged())
+            << "coasting until standstill, brake before: " << brake_before;
+        for (int ms = 1; ms <= 5; ++ms) {
+            brake.power_stage(now + ms * kMs, false, false, 0);
+        }
+        EXPECT_TRUE(brake.engaged()) << "standstill for 5 ms, brake before: " << brake_before;
+    }
+}
+
 } // namespace
 } // namespace eposp::drives::epos2

@@ -26,13 +26,15 @@ void HoldingBrake::enter(Phase phase, double now) {
 }
 
 bool HoldingBrake::power_stage(double now, bool requested, bool fault, double velocity_averaged) {
-    // 8.2.73: with the window off (65535), standstill is the end of the trajectory, which a
-    // power stage no longer asked for has reached.
-    const bool standstill = standstill_.update(now, velocity_averaged, !requested);
     if (!present_) {
+        // The standstill is read only with a brake, and configure(), which alone brings one,
+        // starts a new monitor: without a brake there is nothing to watch.
         phase_ = requested ? Phase::Released : Phase::Off;
         return requested;
     }
+    // 8.2.73: with the window off (65535), standstill is the end of the trajectory, which a
+    // power stage no longer asked for has reached.
+    const bool standstill = standstill_.update(now, velocity_averaged, !requested);
     switch (phase_) {
     case Phase::Off:
     case Phase::Coasting:

@@ -27,6 +27,7 @@ struct HoldingBrakeTiming {
 /// when the brake timeout elapses.
 class HoldingBrake {
 public:
+    /// The standstill watch starts afresh (the brake's standstill is watched only while present).
     void configure(bool present, HoldingBrakeTiming timing, motion::StandstillWindow window);
 
     /// One control period: whether the power stage is on, given whether the device control wants
