@@ -91,7 +91,11 @@ Epos2Drive::Epos2Drive(core::EventLoop& loop, can::Port& port, Epos2DriveConfig 
           .digital_position_counter = digital_position_counter_,
           .raise_device_error = [this](std::uint16_t code) { raise_device_error(code); },
           .homing = homing_,
-          .standstill = standstill_})),
+          .standstill = standstill_,
+          .switches =
+              [this] {
+                  return switches();
+              }})),
       mode_behaviour_(make_mode_behaviour(OperatingMode::ProfilePosition, *mode_services_)),
       control_time_(loop.now() + kControlPeriod),
       control_timer_(loop,
@@ -658,7 +662,6 @@ ModeInputs Epos2Drive::mode_inputs() const {
             .position = position_actual(),
             .velocity = velocity_actual(),
             .current = current_actual(),
-            .switches = switches(),
             .index_position = index_latch_};
 }
 

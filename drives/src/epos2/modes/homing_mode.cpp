@@ -20,11 +20,12 @@ void HomingMode::on_controlword(const ControlwordChange& change) {
 }
 
 ModeDemand HomingMode::demand(const ModeInputs& inputs) {
+    const plant::SwitchStates switches = services_.switches();
     const motion::HomingStep step =
         services_.homing.update(inputs.now, {.position = inputs.position,
-                                             .negative_limit = inputs.switches.negative_limit,
-                                             .positive_limit = inputs.switches.positive_limit,
-                                             .home_switch = inputs.switches.home,
+                                             .negative_limit = switches.negative_limit,
+                                             .positive_limit = switches.positive_limit,
+                                             .home_switch = switches.home,
                                              .index_position = inputs.index_position,
                                              .current = inputs.current});
     return {.motion = step.demand, .position_offset = step.position_offset};

@@ -32,6 +32,9 @@ struct ModeServices {
     std::function<void(std::uint16_t)> raise_device_error;
     motion::HomingProcedure& homing;       ///< its reference (bit 15) survives mode changes
     motion::StandstillMonitor& standstill; ///< shared with the stop ramps (8.2.73)
+    /// The limit and home switch functionalities now (polarity applied, not masked): asked for
+    /// by the modes that use them (homing), when they do, not computed each period for all.
+    std::function<plant::SwitchStates()> switches;
 
     /// rpm (0x6410 sub 4, 0x2101) or rpm/s (the acceleration unit, 3.3) to qc/s or qc/s².
     double rpm_to_counts(double rpm) const { return rpm * counts_per_turn / 60.0; }
@@ -59,7 +62,6 @@ struct ModeInputs {
     std::int64_t position = 0; ///< Position Actual Value, quadcounts
     double velocity = 0;       ///< quadcounts/s, measured over the last millisecond
     double current = 0;        ///< A
-    plant::SwitchStates switches{};
     std::optional<std::int64_t> index_position{}; ///< an index pulse since the last period
 };
 
