@@ -321,6 +321,11 @@ void Epos2Drive::watch_dictionary() {
 }
 
 void Epos2Drive::handle_pending_controlwords() {
+    // Nothing pending, nothing posted: the handler is posted with the first controlword queued
+    // and cancelled with the queue drained (every control period asks).
+    if (pending_controlwords_.empty()) {
+        return;
+    }
     controlword_timer_.cancel();
     while (!pending_controlwords_.empty()) {
         on_controlword(pending_controlwords_.front());

@@ -131,30 +131,6 @@ std::uint16_t DeviceControl::statusword() const {
     return static_cast<std::uint16_t>(bits | (warning_ ? kWarningBit : 0U));
 }
 
-DriveOutputs DeviceControl::outputs() const {
-    switch (state_) {
-    case DriveState::MeasureInit:
-        return {true, false, StopRamp::None};
-    case DriveState::OperationEnable:
-        return {true, true, slowing_down_ ? StopRamp::SlowDown : StopRamp::None};
-    case DriveState::QuickStopActive:
-        return {true, true, StopRamp::QuickStop};
-    case DriveState::FaultReactionActiveEnabled:
-        switch (reaction_) {
-        case FaultReaction::SlowDown:
-            return {true, true, StopRamp::SlowDown};
-        case FaultReaction::QuickStop:
-            return {true, true, StopRamp::QuickStop};
-        case FaultReaction::SignalOnly:
-        case FaultReaction::DisableDrive:
-            break;
-        }
-        return {};
-    default:
-        return {};
-    }
-}
-
 void DeviceControl::write_controlword(std::uint16_t controlword) {
     if (busy()) {
         has_held_controlword_ = true;

@@ -93,7 +93,30 @@ public:
     DriveState state() const { return state_; }
     /// Bits 0…8 and 14 of the statusword; mode-specific bits are the operating mode's.
     std::uint16_t statusword() const;
-    DriveOutputs outputs() const;
+    /// Inline: a drive asks several times each control period.
+    DriveOutputs outputs() const {
+        switch (state_) {
+        case DriveState::MeasureInit:
+            return {true, false, StopRamp::None};
+        case DriveState::OperationEnable:
+            return {true, true, slowing_down_ ? StopRamp::SlowDown : StopRamp::None};
+        case DriveState::QuickStopActive:
+            return {true, true, StopRamp::QuickStop};
+        case DriveState::FaultReactionActiveEnabled:
+            switch (reaction_) {
+            case FaultReaction::SlowDown:
+                return {true, true, StopRamp::SlowDown};
+            case FaultReaction::QuickStop:
+                return {true, true, StopRamp::QuickStop};
+            case FaultReaction::SignalOnly:
+            case FaultReaction::DisableDrive:
+                break;
+            }
+            return {};
+        default:
+            return {};
+        }
+    }
 
     void set_option_codes(const OptionCodes& codes) { codes_ = codes; }
 
