@@ -67,7 +67,9 @@ std::optional<SensorFault> SensorSupervision::update(double motor_angle, std::ui
     // encoder's counts, whatever the encoder mounted (EPOS2 4.2.26: "encoder resolution too low").
     travelled_ += std::abs(count - count_);
     std::optional<SensorFault> fault;
-    if (config_.encoder) {
+    // Once the index checks are done (or without an index) only a breach is left to find.
+    const bool index_checks = config_.encoder_index && !resolution_checked_;
+    if (config_.encoder && (index_checks || faults.encoder_silent())) {
         fault = check_encoder(count, travelled_, faults);
     }
     count_ = count;
@@ -78,6 +80,7 @@ std::optional<SensorFault> SensorSupervision::update(double motor_angle, std::ui
     return fault;
 }
 
+// Only while a breach can be found or the index checks are pending (update() asks).
 std::optional<SensorFault> SensorSupervision::check_encoder(std::int64_t count,
                                                             std::int64_t travelled,
                                                             const plant::SensorFaults& faults) {
@@ -85,9 +88,6 @@ std::optional<SensorFault> SensorSupervision::check_encoder(std::int64_t count,
     if (faults.encoder_silent()) {
         return config_.breach_supervision ? std::optional{SensorFault::EncoderBreach}
                                           : std::nullopt;
-    }
-    if (!config_.encoder_index || resolution_checked_) {
-        return std::nullopt;
     }
     const std::int64_t configured_turn = 4 * std::int64_t{config_.encoder_pulses};
     const std::int64_t turn =
