@@ -448,11 +448,15 @@ void Epos2Drive::raise_device_error(std::uint16_t code) {
 void Epos2Drive::watch_power_stage(bool overcurrent) {
     power_stage_temperature_.update(axis_.current_actual(), power_stage_on_,
                                     plant::ServoAxis::kOuterLoopPeriod);
-    device_control_.set_fault_condition_present(fault_condition_present());
-    if (const std::optional<std::uint16_t> supply = supply_error()) {
+    // fault_condition_present(), each cause read once.
+    const std::optional<std::uint16_t> supply = supply_error();
+    const bool too_hot = power_stage_temperature_.too_high();
+    device_control_.set_fault_condition_present(supply.has_value() || too_hot ||
+                                                sensor_faults_.supply_overloaded);
+    if (supply) {
         raise_device_error(*supply);
     }
-    if (power_stage_temperature_.too_high()) {
+    if (too_hot) {
         raise_device_error(kOvertemperatureErrorCode);
     }
     if (sensor_faults_.supply_overloaded) {
