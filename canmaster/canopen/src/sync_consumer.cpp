@@ -44,7 +44,9 @@ void SyncConsumer::on_frame(const can::Frame& frame) {
     if (frame.dlc == 1) {
         event.counter = frame.data[0];
     }
-    window_timer_.cancel();
+    if (window_timer_.id()) { // none without a window: an out-of-line call saved per SYNC
+        window_timer_.cancel();
+    }
     window_open_ = true;
     if (event.window != core::Duration::zero()) {
         window_timer_ =
