@@ -125,11 +125,12 @@ constexpr std::array<std::uint16_t, 256> kCrc15Table = [] {
 
 constexpr unsigned kStuffStates = 10;
 
-/// Per stuffing state and chunk of `Bits` bits: the state after the chunk (low 4 bits) and the
-/// stuff bits it took.
+/// Per stuffing state and chunk of `Bits` bits: the state after the chunk and the stuff bits it
+/// took, as (state << 8) | stuff bits. The state is then already the row offset of the 8-bit
+/// table, and the entries of a frame add up to its stuff bits in the low byte (fewer than 256).
 template <unsigned Bits>
-constexpr std::array<std::uint8_t, (kStuffStates << Bits)> stuff_table() {
-    std::array<std::uint8_t, (kStuffStates << Bits)> table{};
+constexpr std::array<std::uint16_t, (kStuffStates << Bits)> stuff_table() {
+    std::array<std::uint16_t, (kStuffStates << Bits)> table{};
     for (unsigned code = 0; code < kStuffStates; ++code) {
         for (unsigned chunk = 0; chunk < (1U << Bits); ++chunk) {
             StuffState state{.last = code >= 5, .run = code % 5};
@@ -137,7 +138,7 @@ constexpr std::array<std::uint8_t, (kStuffStates << Bits)> stuff_table() {
             for (unsigned bit = Bits; bit-- > 0;) {
                 stuffed += state.send(((chunk >> bit) & 1U) != 0) ? 1U : 0U;
             }
-            table[(code << Bits) + chunk] = static_cast<std::uint8_t>(state.code() | stuffed << 4);
+            table[(code << Bits) + chunk] = static_cast<std::uint16_t>(state.code() << 8 | stuffed);
         }
     }
     return table;
@@ -148,6 +149,8 @@ constexpr auto kStuffTable8 = stuff_table<8>();
 constexpr auto kStuffTable7 = stuff_table<7>();
 constexpr auto kStuffTable3 = stuff_table<3>();
 
+constexpr unsigned kStateMask = 0x0F00;
+
 /// The CRC register and the stuffing state over the bits sent so far.
 class WireCounter {
 public:
@@ -156,44 +159,47 @@ public:
     /// 0 unchanged, so the CRC takes the value as whole bytes while it is still 0 (the header).
     void send(std::uint64_t value, unsigned width, bool covered_by_crc) {
         const unsigned lead = width % 8;
+        const unsigned code = state_ >> 8;
         if (lead == 7) {
-            stuff(kStuffTable7[(code_ << 7) + (value >> (width - 7) & 0x7FU)]);
+            stuff(kStuffTable7[(code << 7) + (value >> (width - 7) & 0x7FU)]);
         } else if (lead == 3) {
-            stuff(kStuffTable3[(code_ << 3) + (value >> (width - 3) & 0x7U)]);
+            stuff(kStuffTable3[(code << 3) + (value >> (width - 3) & 0x7U)]);
         }
         for (unsigned bit = width - lead; bit > 0; bit -= 8) {
-            stuff(kStuffTable8[(code_ << 8) + (value >> (bit - 8) & 0xFFU)]);
+            stuff(kStuffTable8[state_ + (value >> (bit - 8) & 0xFFU)]);
         }
         if (covered_by_crc) {
             for (unsigned bit = width + (8 - lead) % 8; bit > 0; bit -= 8) {
                 crc_byte(static_cast<std::uint8_t>(value >> (bit - 8)));
             }
         }
-        sent_ += width;
     }
 
-    std::uint16_t crc() const { return crc_; }
-    FrameLength length() const {
-        return {.stuffed = sent_ + stuff_bits_,
-                .stuff_bits = stuff_bits_,
+    std::uint16_t crc() const { return static_cast<std::uint16_t>(crc_ & kCrc15Mask); }
+    /// `sent`: the bits sent, before stuffing.
+    FrameLength length(std::size_t sent) const {
+        const unsigned code = state_ >> 8;
+        const std::size_t stuff_bits = entries_ & 0xFFU;
+        return {.stuffed = sent + stuff_bits,
+                .stuff_bits = stuff_bits,
                 // The run that ends the output is the trailing one; recessive bits are 1.
-                .trailing_recessive = code_ >= 5 ? code_ % 5 : 0};
+                .trailing_recessive = code >= 5 ? code % 5 : 0};
     }
 
 private:
-    void stuff(std::uint8_t entry) {
-        code_ = entry & 0x0FU;
-        stuff_bits_ += entry >> 4;
+    void stuff(std::uint16_t entry) {
+        state_ = entry & kStateMask;
+        entries_ += entry;
     }
+    // The register's bits above the 15th are left as they come: only bits 7..14 pick the table
+    // entry, and crc() masks them off.
     void crc_byte(std::uint8_t byte) {
-        crc_ = static_cast<std::uint16_t>(((crc_ << 8) & kCrc15Mask) ^
-                                          kCrc15Table[((crc_ >> 7) ^ byte) & 0xFFU]);
+        crc_ = (crc_ << 8) ^ kCrc15Table[((crc_ >> 7) ^ byte) & 0xFFU];
     }
 
-    std::uint16_t crc_ = 0;
-    unsigned code_ = 0; ///< StuffState::code()
-    std::size_t stuff_bits_ = 0;
-    std::size_t sent_ = 0; ///< bits before stuffing
+    std::uint32_t crc_ = 0;
+    unsigned state_ = 0;   ///< StuffState::code() << 8: the row of the 8-bit table
+    unsigned entries_ = 0; ///< the sum of the table entries taken: the stuff bits in its low byte
 };
 
 } // namespace
@@ -204,8 +210,10 @@ FrameLength frame_length(const Frame& frame) {
     assert(frame.valid());
     const std::uint64_t rtr = frame.remote ? 1 : 0;
     WireCounter wire;
+    std::size_t header = 19;
     if (frame.extended) {
         // SOF 0, base identifier, SRR 1, IDE 1, identifier extension, RTR, r1 0, r0 0, DLC.
+        header = 39;
         wire.send(std::uint64_t{frame.id >> 18} << 27 | std::uint64_t{3} << 25 |
                       std::uint64_t{frame.id & 0x3FFFF} << 7 | rtr << 6 | frame.dlc,
                   39, true);
@@ -213,11 +221,12 @@ FrameLength frame_length(const Frame& frame) {
         // SOF 0, identifier, RTR, IDE 0, r0 0, DLC.
         wire.send(std::uint64_t{frame.id} << 7 | rtr << 6 | frame.dlc, 19, true);
     }
-    for (const std::uint8_t byte : frame.payload()) {
+    const std::span<const std::uint8_t> payload = frame.payload();
+    for (const std::uint8_t byte : payload) {
         wire.send(byte, 8, true);
     }
     wire.send(wire.crc(), 15, false);
-    return wire.length();
+    return wire.length(header + 8 * payload.size() + 15);
 }
 
 core::Duration bit_duration(std::uint32_t bitrate) {
