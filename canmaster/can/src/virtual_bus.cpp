@@ -20,7 +20,6 @@ constexpr std::uint64_t kBusOffRecoveryRuns = 128;
 constexpr std::size_t kAckSlotAfterCrc = 1;
 constexpr std::size_t kAckDelimiterAfterCrc = 2;
 constexpr std::size_t kStandardIds = std::size_t{1} << 11;
-constexpr std::size_t kSlotsPerWord = 64;
 
 const BusConfig& validated(const BusConfig& config) {
     if (config.bitrate < kMinBitrate || config.bitrate > kMaxBitrate ||
@@ -71,13 +70,6 @@ Timeline timeline_of(Outcome outcome, const FrameLength& length, bool dominant_f
 } // namespace
 
 // --- the controller's side ----------------------------------------------------------------
-
-const Frame* VirtualPort::Impl::next_frame() const {
-    if (babbled) {
-        return &*babbled;
-    }
-    return tx_queue.empty() ? nullptr : &tx_queue.front();
-}
 
 void VirtualPort::Impl::receive(const Frame& frame, std::size_t capacity) {
     if (!paused && rx_queue.empty()) {
@@ -163,12 +155,6 @@ void VirtualBus::Impl::refresh_attention(VirtualPort::Impl& port) {
     std::uint64_t& word = attended[port.slot / kSlotsPerWord];
     port.attentive_indexed = port.attentive();
     word = port.attentive_indexed ? word | mask : word & ~mask;
-}
-
-void VirtualBus::Impl::refresh_queued(VirtualPort::Impl& port) {
-    const std::uint64_t mask = std::uint64_t{1} << (port.slot % kSlotsPerWord);
-    std::uint64_t& word = queued[port.slot / kSlotsPerWord];
-    word = port.next_frame() != nullptr ? word | mask : word & ~mask;
 }
 
 bool VirtualBus::Impl::settled(const VirtualPort::Impl& port) const {

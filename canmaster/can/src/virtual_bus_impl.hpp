@@ -16,6 +16,9 @@
 // Internal: the state behind VirtualBus and VirtualPort, shared by their two sources.
 namespace eposp::can {
 
+/// The bus's indexes of its controllers keep one bit per slot of its ports in 64-bit words.
+inline constexpr std::size_t kSlotsPerWord = 64;
+
 /// The controller behind a VirtualPort: queues, error counters, bus-off recovery.
 class VirtualPort::Impl {
 public:
@@ -23,7 +26,12 @@ public:
         : port(owner), sequence(connection), tx_queue_capacity(tx_capacity) {}
 
     /// What the controller wants to send next: the babbled frame or the head of its queue.
-    const Frame* next_frame() const;
+    const Frame* next_frame() const {
+        if (babbled) {
+            return &*babbled;
+        }
+        return tx_queue.empty() ? nullptr : &tx_queue.front();
+    }
     /// A frame taken from the wire: delivered now, or queued while paused or behind others.
     void receive(const Frame& frame, std::size_t capacity);
     void report_overflow(Overflow overflow, const Frame& lost) const;
@@ -134,7 +142,12 @@ public:
     void index_filter(VirtualPort::Impl& port);
     void refresh_attention(VirtualPort::Impl& port);
     /// After its transmit queue or babbling changed: whether it takes part in arbitration.
-    void refresh_queued(VirtualPort::Impl& port);
+    /// Inline: every frame sent and every frame carried asks.
+    void refresh_queued(VirtualPort::Impl& port) {
+        const std::uint64_t mask = std::uint64_t{1} << (port.slot % kSlotsPerWord);
+        std::uint64_t& word = queued[port.slot / kSlotsPerWord];
+        word = port.next_frame() != nullptr ? word | mask : word & ~mask;
+    }
 
     // The receptions of the controllers not visited: a frame counts for each controller that
     // was not bus-off when its turn came. `delivered` frames have been handed out; while
