@@ -80,5 +80,26 @@ TEST_F(HallAngleCheck, AFrozenEncoderIsFoundWithinAnElectricalTurn) {
     EXPECT_EQ(move(kTurn, kTurn + kTurn / kPolePairs, kTurn / 360), SensorFault::HallAngle);
 }
 
+// An encoder with index: the resolution is checked at the second index pulse, after which only a
+// breach is left to find; a line broken then is still found, and a wrong resolution at the
+// second index is still an error (the index checks run while they are pending).
+TEST(EncoderSupervision, ABreachAfterTheIndexChecksIsStillFound) {
+    const auto run = [](std::optional<int> mounted_pulses) {
+        SensorSupervision supervision;
+        supervision.configure({.encoder_pulses = 500, .encoder = true, .encoder_index = true});
+        plant::SensorFaults faults{.encoder_pulses = mounted_pulses};
+        supervision.restart(0.1, 0, faults);
+        for (double angle = 0.1; angle < 3.5 * kTurn; angle += 0.01) {
+            if (const auto fault = supervision.update(angle, 0, faults)) {
+                return std::optional{*fault};
+            }
+        }
+        faults.encoder_broken = true;
+        return supervision.update(3.5 * kTurn, 0, faults);
+    };
+    EXPECT_EQ(run(std::nullopt), SensorFault::EncoderBreach) << "past two index pulses";
+    EXPECT_EQ(run(512), SensorFault::EncoderResolution) << "found at the second index";
+}
+
 } // namespace
 } // namespace eposp::drives::motion
