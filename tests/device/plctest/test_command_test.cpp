@@ -567,7 +567,7 @@ TEST(EpospTestJunit, ReportMatchesTheJunitSchemaOfJenkinsAndGitlab) {
     const auto result = eposp("test" + joined(suites_of_every_outcome()) +
                               " --timeout 1s --junit " + report.string());
     EXPECT_EQ(last_line(result), "2 passed, 3 failed, 1 skipped") << result.output;
-    const auto schema = std::filesystem::path(__FILE__).parent_path() / "junit.xsd";
+    const std::filesystem::path schema = EPOSP_JUNIT_SCHEMA;
     const auto valid = test::run_command("xmllint --noout --schema " + schema.string() + " " +
                                          report.string() + " 2>&1");
     EXPECT_EQ(valid.exit_code, 0) << valid.output << read_file(report);
