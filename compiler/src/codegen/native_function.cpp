@@ -15,26 +15,6 @@ namespace eposp::compiler::codegen {
 
 using vm::Operand;
 
-namespace {
-
-// vm::NativeType lists the elementary types in ast::ElementaryType's order.
-static_assert(static_cast<int>(vm::NativeType::Bool) ==
-              static_cast<int>(ast::ElementaryType::Bool));
-static_assert(static_cast<int>(vm::NativeType::Ldt) == static_cast<int>(ast::ElementaryType::Ldt));
-static_assert(static_cast<int>(vm::NativeType::String) ==
-              static_cast<int>(ast::ElementaryType::String));
-static_assert(static_cast<int>(vm::NativeType::Wchar) ==
-              static_cast<int>(ast::ElementaryType::Wchar));
-
-vm::NativeType native_type(const sema::Type& type) {
-    if (type.kind == sema::TypeKind::String) {
-        return type.wide ? vm::NativeType::Wstring : vm::NativeType::String;
-    }
-    return static_cast<vm::NativeType>(type.elementary); // an enumeration's is its base
-}
-
-} // namespace
-
 bool ProgramGenerator::is_native_function(const ast::Pou& pou) const {
     return linked_pous_.contains(&pou) && pou.kind == ast::PouKind::Function && pou.body.empty();
 }
@@ -181,7 +161,7 @@ std::optional<Value> PouGenerator::any_argument(const ast::Expression& expressio
 }
 
 Value PouGenerator::native_descriptor(const sema::Type& type) {
-    const std::uint32_t descriptor = vm::native_descriptor(native_type(type), type.size);
+    const std::uint32_t descriptor = vm::native_descriptor(sema::native_type(type), type.size);
     return Value{program_.constant(integer_bytes(descriptor, 4), 4),
                  &types_.elementary(ast::ElementaryType::Udint)};
 }

@@ -3,6 +3,7 @@
 #include "../types/expression_typer.hpp"
 #include "constant_declarations.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
+#include "eposp/vm/stdlib/manifest.hpp"
 #include "pou_generator.hpp"
 
 namespace eposp::compiler::codegen {
@@ -626,17 +627,20 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
     const sema::Type& boolean = types_.elementary(E::Bool);
     const sema::Type& type = *left.type;
     if (type.kind == sema::TypeKind::String) {
-        static constexpr std::pair<ast::BinaryOperator, const char*> kPrefixes[] = {
-            {ast::BinaryOperator::Less, "LT_"},      {ast::BinaryOperator::Greater, "GT_"},
-            {ast::BinaryOperator::LessEqual, "LE_"}, {ast::BinaryOperator::GreaterEqual, "GE_"},
-            {ast::BinaryOperator::Equal, "EQ_"},     {ast::BinaryOperator::NotEqual, "NE_"}};
-        for (const auto& [candidate, prefix] : kPrefixes) {
+        using Operation = vm::stdlib::Operation;
+        static constexpr std::pair<ast::BinaryOperator, Operation> kOperations[] = {
+            {ast::BinaryOperator::Less, Operation::Less},
+            {ast::BinaryOperator::Greater, Operation::Greater},
+            {ast::BinaryOperator::LessEqual, Operation::LessEqual},
+            {ast::BinaryOperator::GreaterEqual, Operation::GreaterEqual},
+            {ast::BinaryOperator::Equal, Operation::Equal},
+            {ast::BinaryOperator::NotEqual, Operation::NotEqual}};
+        for (const auto& [candidate, operation] : kOperations) {
             if (candidate == op) {
-                const vm::NativeSignature signature{
-                    true, vm::Scalar::Bool, {vm::Scalar::Ptr, vm::Scalar::Ptr}};
-                call_native(std::string(prefix) + (type.wide ? "WSTRING" : "STRING"), signature,
-                            {left, right});
-                return native_result(signature, boolean, dest);
+                const auto native =
+                    vm::stdlib::text_comparison_binding(operation, sema::char_width(type));
+                call_native(native.name, native.signature, {left, right});
+                return native_result(native.signature, boolean, dest);
             }
         }
     }
@@ -724,10 +728,9 @@ std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, con
         if (!exponent) {
             return std::nullopt;
         }
-        const vm::NativeSignature signature{
-            true, vm::Scalar::F64, {vm::Scalar::F64, vm::Scalar::F64}};
-        call_native("EXPT_LREAL", signature, {*base, *exponent});
-        return native_result(signature, lreal, dest);
+        const auto native = vm::stdlib::native_binding("EXPT", vm::stdlib::Variant::Wide);
+        call_native(native.name, native.signature, {*base, *exponent});
+        return native_result(native.signature, lreal, dest);
     }
     const auto immediate =
         (node.op == Op::Add || node.op == Op::Subtract) && !context_literal(*node.left)
@@ -877,11 +880,11 @@ std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
     }
     const sema::Type& wide = real ? types_.elementary(E::Lreal) : lint;
     const auto converted = explicit_convert(*value, wide, nullptr);
-    const vm::NativeSignature signature{
-        true, vm::Scalar::I64, {vm::Scalar::I64, real ? vm::Scalar::F64 : vm::Scalar::I64}};
-    call_native(std::string(multiply ? "MUL_TIME" : "DIV_TIME") + (real ? "_LREAL" : ""), signature,
-                {time, *converted});
-    return native_result(signature, *time.type, dest);
+    const auto native =
+        vm::stdlib::native_binding(multiply ? "MUL_TIME" : "DIV_TIME",
+                                   real ? vm::stdlib::Variant::Wide : vm::stdlib::Variant::Base);
+    call_native(native.name, native.signature, {time, *converted});
+    return native_result(native.signature, *time.type, dest);
 }
 
 std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,
@@ -912,10 +915,10 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
     if (time_of_day && (oper == Op::Add || oper == Op::Subtract) &&
         (right.type->elementary == E::Time || right.type->elementary == E::Ltime)) {
         // Wraps around midnight: a native (vm/README).
-        const vm::NativeSignature signature{
-            true, vm::Scalar::I64, {vm::Scalar::I64, vm::Scalar::I64}};
-        call_native(oper == Op::Add ? "ADD_TOD_TIME" : "SUB_TOD_TIME", signature, {left, right});
-        return native_result(signature, type, dest);
+        const auto native =
+            vm::stdlib::native_binding(oper == Op::Add ? "ADD_TOD_TIME" : "SUB_TOD_TIME");
+        call_native(native.name, native.signature, {left, right});
+        return native_result(native.signature, type, dest);
     }
     if (sema::is_time_like(type) || sema::is_time_like(*right.type)) {
         // 6.6.2.5.5 table 30: ADD/SUB of durations and points in time, all in nanoseconds.

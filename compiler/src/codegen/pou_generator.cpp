@@ -2,6 +2,7 @@
 
 #include "constant_declarations.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
+#include "eposp/vm/stdlib/manifest.hpp"
 
 #include <algorithm>
 
@@ -223,9 +224,8 @@ void PouGenerator::move(Operand dst, const sema::Type& dst_type, const Value& sr
         return;
     }
     if (dst_type.kind == sema::TypeKind::String && src.type != &dst_type) {
-        call_native(dst_type.wide ? "ASSIGN_WSTRING" : "ASSIGN_STRING",
-                    {false, vm::Scalar::Bool, {vm::Scalar::Ptr, vm::Scalar::Ptr}},
-                    {Value{dst, &dst_type}, src});
+        const auto assign = vm::stdlib::text_assignment_binding(sema::char_width(dst_type));
+        call_native(assign.name, assign.signature, {Value{dst, &dst_type}, src});
         return;
     }
     emit(Opcode::MovN, dst, src.operand, Operand::imm(dst_type.size));
@@ -280,8 +280,8 @@ void PouGenerator::store(const Place& place, const Value& value) {
         emit(program_.opcodes().get("Stp", width_suffix(sema::scalar_of(type))), place.operand,
              value.operand, Operand::imm(place.offset));
     } else if (type.kind == sema::TypeKind::String && value.type != &type) {
-        call_native(type.wide ? "ASSIGN_WSTRING" : "ASSIGN_STRING",
-                    {false, vm::Scalar::Bool, {vm::Scalar::Ptr, vm::Scalar::Ptr}},
+        const auto assign = vm::stdlib::text_assignment_binding(sema::char_width(type));
+        call_native(assign.name, assign.signature,
                     {Value{address_of(place), &types_.reference(&type)}, value});
     } else {
         emit(Opcode::StpN, address_of(place), value.operand, Operand::imm(type.size));

@@ -12,22 +12,21 @@ bool is_elementary_name(std::string_view name) {
     return ast::elementary_type_from_name(name).has_value();
 }
 
-/// Declares the FB `name` with the parameters of `block`, the counters' INT as `counter_type`.
-void declare_block(SemanticModel& model, std::string name,
-                   const vm::stdlib::StandardFunctionBlock& block, std::string_view counter_type) {
+/// Declares the FB `variant` with its parameters.
+void declare_block(SemanticModel& model, const vm::stdlib::StandardBlockVariant& variant) {
     Scope& members = model.add_scope(nullptr);
-    for (const vm::stdlib::StandardParameter& parameter : block.parameters) {
+    for (const vm::stdlib::StandardParameter& parameter : variant.block->parameters) {
         if (parameter.name.empty()) {
             break;
         }
-        members.declare(model.add(Symbol{
-            .kind = SymbolKind::Variable,
-            .name = std::string(parameter.name),
-            .section = parameter.output ? ast::VarSectionKind::Output : ast::VarSectionKind::Input,
-            .standard_type = parameter.type == "INT" ? counter_type : parameter.type}));
+        members.declare(model.add(Symbol{.kind = SymbolKind::Variable,
+                                         .name = std::string(parameter.name),
+                                         .section = parameter.output ? ast::VarSectionKind::Output
+                                                                     : ast::VarSectionKind::Input,
+                                         .standard_type = variant.type_of(parameter)}));
     }
     model.global_scope().declare(model.add(Symbol{
-        .kind = SymbolKind::StandardFunctionBlock, .name = std::move(name), .members = &members}));
+        .kind = SymbolKind::StandardFunctionBlock, .name = variant.name, .members = &members}));
 }
 
 } // namespace
@@ -40,18 +39,8 @@ void declare_standard_library(SemanticModel& model, bool function_blocks) {
     if (!function_blocks) {
         return;
     }
-    const auto blocks = vm::stdlib::standard_function_blocks();
-    for (const vm::stdlib::StandardFunctionBlock& block : blocks) {
-        declare_block(model, std::string(block.name), block, "INT");
-    }
-    // The typed counters of table 45 (CTU_DINT…), after all the others.
-    for (const std::string_view type : vm::stdlib::kCounterTypes) {
-        for (const vm::stdlib::StandardFunctionBlock& block : blocks) {
-            if (block.counter) {
-                declare_block(model, std::string(block.name) + "_" + std::string(type), block,
-                              type);
-            }
-        }
+    for (const vm::stdlib::StandardBlockVariant& variant : vm::stdlib::standard_block_variants()) {
+        declare_block(model, variant);
     }
 }
 

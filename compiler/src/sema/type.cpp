@@ -105,43 +105,28 @@ bool is_scalar(const Type& type) {
            type.kind == TypeKind::Reference || type.kind == TypeKind::Null;
 }
 
+// vm::NativeType lists the elementary types in ast::ElementaryType's order.
+static_assert(static_cast<int>(vm::NativeType::Bool) == static_cast<int>(E::Bool));
+static_assert(static_cast<int>(vm::NativeType::Ldt) == static_cast<int>(E::Ldt));
+static_assert(static_cast<int>(vm::NativeType::String) == static_cast<int>(E::String));
+static_assert(static_cast<int>(vm::NativeType::Wchar) == static_cast<int>(E::Wchar));
+
+vm::stdlib::CharWidth char_width(const Type& type) {
+    return type.wide ? vm::stdlib::CharWidth::Wide : vm::stdlib::CharWidth::Narrow;
+}
+
+vm::NativeType native_type(const Type& type) {
+    if (type.kind == TypeKind::String) {
+        return type.wide ? vm::NativeType::Wstring : vm::NativeType::String;
+    }
+    return static_cast<vm::NativeType>(type.elementary); // an enumeration's is its base
+}
+
 vm::Scalar scalar_of(const Type& type) {
-    using S = vm::Scalar;
     if (type.kind == TypeKind::Reference || type.kind == TypeKind::Null) {
-        return S::Ptr;
+        return vm::Scalar::Ptr;
     }
-    switch (type.elementary) {
-    case E::Bool:
-        return S::Bool;
-    case E::Sint:
-        return S::I8;
-    case E::Int:
-        return S::I16;
-    case E::Dint:
-        return S::I32;
-    case E::Lint:
-        return S::I64;
-    case E::Usint:
-    case E::Byte:
-    case E::Char:
-        return S::U8;
-    case E::Uint:
-    case E::Word:
-    case E::Wchar:
-        return S::U16;
-    case E::Udint:
-    case E::Dword:
-        return S::U32;
-    case E::Ulint:
-    case E::Lword:
-        return S::U64;
-    case E::Real:
-        return S::F32;
-    case E::Lreal:
-        return S::F64;
-    default:
-        return S::I64; // the time and date types: nanoseconds
-    }
+    return vm::native_scalar(native_type(type));
 }
 
 bool same_type(const Type& a, const Type& b) {

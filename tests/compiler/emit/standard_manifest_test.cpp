@@ -2,11 +2,12 @@
 // function row is typed by the typing stage, emitted by code generation (a native row as a
 // CallNative of its binding) and bound in the VM's standard library with the same signature;
 // every FB row is ST of the built-in library with the row's interface, and the built-in library
-// has no FB without a row.
+// has no FB without a row; every runtime helper is called and bound by its binding.
 
 #include "codegen_harness.hpp"
 #include "eposp/compiler/ast/elementary_type.hpp"
 #include "eposp/compiler/parser.hpp"
+#include "eposp/vm/stdlib/clock.hpp"
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "eposp/vm/stdlib/standard_library.hpp"
 #include "stdlib/standard_library_source.hpp"
@@ -15,7 +16,6 @@
 #include <algorithm>
 #include <gtest/gtest.h>
 #include <map>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -125,6 +125,52 @@ TEST(StandardManifest, EveryFunctionIsTypedEmittedAndBound) {
     }
 }
 
+/// The runtime helpers and the CHAR and WCHAR conversions: natives for what is no call of a
+/// standard function row.
+std::vector<vm::stdlib::NativeBinding> helpers_and_character_conversions() {
+    using vm::stdlib::CharWidth;
+    std::vector<vm::stdlib::NativeBinding> natives = vm::stdlib::helper_natives();
+    for (const auto& [character, width] : {std::pair{vm::NativeType::Char, CharWidth::Narrow},
+                                           std::pair{vm::NativeType::Wchar, CharWidth::Wide}}) {
+        natives.push_back(vm::stdlib::to_text_binding(character, width));
+        natives.push_back(vm::stdlib::from_text_binding(character, width));
+    }
+    return natives;
+}
+
+TEST(StandardManifest, EveryHelperIsCalledAndBoundByItsBinding) {
+    vm::NativeRegistry registry;
+    vm::stdlib::register_standard_library(registry);
+    vm::stdlib::register_clock(registry, [] { return std::int64_t{0}; });
+    const auto natives = helpers_and_character_conversions();
+    for (const vm::stdlib::NativeBinding& native : natives) {
+        const vm::NativeRegistry::Entry* entry = registry.find(native.name);
+        ASSERT_NE(entry, nullptr) << native.name;
+        EXPECT_EQ(entry->signature, native.signature) << native.name;
+    }
+    std::string body;
+    for (const std::string text : {"s", "w"}) {
+        body += text + "10 := " + text + "; "; // an assignment between capacities
+        for (const char* op : {"=", "<>", "<", "<=", ">", ">="}) {
+            body += "x := " + text + " " + op + " " + text + "10; ";
+        }
+    }
+    const StProgram program(
+        "PROGRAM Main\nVAR s : STRING; s10 : STRING[10]; w : WSTRING; w10 : WSTRING[10]; c : CHAR; "
+        "wc : WCHAR; "
+        "x : BOOL; timer : TON; END_VAR\n" +
+        body +
+        "s := CHAR_TO_STRING(c); c := STRING_TO_CHAR(s); w := WCHAR_TO_WSTRING(wc); "
+        "wc := WSTRING_TO_WCHAR(w); timer(IN := x, PT := T#1s);\nEND_PROGRAM\n");
+    ASSERT_TRUE(program.ok()) << program.errors();
+    const auto& imports = program.image().imports;
+    for (const vm::stdlib::NativeBinding& native : natives) {
+        EXPECT_TRUE(std::any_of(imports.begin(), imports.end(), [&](const vm::NativeImport& i) {
+            return i.name == native.name && i.signature == native.signature;
+        })) << native.name;
+    }
+}
+
 std::string parameter(bool output, const std::string& name, ast::ElementaryType type) {
     return (output ? "out " : "in ") + name + " : " + std::string(ast::name_of(type));
 }
@@ -165,23 +211,13 @@ std::map<std::string, std::vector<std::string>> library_blocks() {
 
 TEST(StandardManifest, EveryFunctionBlockIsTheStOfItsRowAndNoOther) {
     std::map<std::string, std::vector<std::string>> rows;
-    for (const vm::stdlib::StandardFunctionBlock& block : vm::stdlib::standard_function_blocks()) {
-        const auto add = [&](const std::string& name, std::string_view counter_type) {
-            auto& parameters = rows[name];
-            for (const vm::stdlib::StandardParameter& p : block.parameters) {
-                if (!p.name.empty()) {
-                    const auto type =
-                        ast::elementary_type_from_name(p.type == "INT" ? counter_type : p.type);
-                    parameters.push_back(parameter(p.output, std::string(p.name), *type));
-                }
+    for (const vm::stdlib::StandardBlockVariant& variant : vm::stdlib::standard_block_variants()) {
+        auto& parameters = rows[variant.name];
+        for (const vm::stdlib::StandardParameter& p : variant.block->parameters) {
+            if (!p.name.empty()) {
+                const auto type = ast::elementary_type_from_name(variant.type_of(p));
+                parameters.push_back(parameter(p.output, std::string(p.name), *type));
             }
-        };
-        add(std::string(block.name), "INT");
-        const auto typed = block.counter
-                               ? std::span<const std::string_view>(vm::stdlib::kCounterTypes)
-                               : std::span<const std::string_view>{};
-        for (const std::string_view type : typed) {
-            add(std::string(block.name) + "_" + std::string(type), type);
         }
     }
     EXPECT_EQ(library_blocks(), rows);

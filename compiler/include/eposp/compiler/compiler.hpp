@@ -14,7 +14,7 @@ namespace eposp::compiler {
 /// Diagnostics (errors and warnings) go to `diagnostics`; nullopt when there are errors.
 ///
 /// The image imports the natives of vm::stdlib::register_standard_library and, when the program
-/// uses a timer or RTC, vm::stdlib::kClockNative (vm::stdlib::register_clock). Symbols: a
+/// uses a timer or RTC, vm::stdlib::clock_binding (vm::stdlib::register_clock). Symbols: a
 /// configuration global as `Config0.name`, a global variable list's variable by its name alone
 /// (`name`), a program instance as its instance name (`Inst0`, or the program's name when there
 /// is no configuration) with its variables below it (`Inst0.x`). A program without a configuration

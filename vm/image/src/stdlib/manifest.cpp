@@ -291,43 +291,6 @@ std::vector<NativeBinding> standard_function_natives() {
     return natives;
 }
 
-Scalar native_scalar(NativeType type) {
-    using S = Scalar;
-    switch (type) {
-    case T::Bool:
-        return S::Bool;
-    case T::Sint:
-        return S::I8;
-    case T::Int:
-        return S::I16;
-    case T::Dint:
-        return S::I32;
-    case T::Usint:
-    case T::Byte:
-    case T::Char:
-        return S::U8;
-    case T::Uint:
-    case T::Word:
-    case T::Wchar:
-        return S::U16;
-    case T::Udint:
-    case T::Dword:
-        return S::U32;
-    case T::Ulint:
-    case T::Lword:
-        return S::U64;
-    case T::Real:
-        return S::F32;
-    case T::Lreal:
-        return S::F64;
-    case T::String:
-    case T::Wstring:
-        return S::Ptr;
-    default: // LINT, the durations, dates and times of day: 64-bit counts
-        return S::I64;
-    }
-}
-
 namespace {
 
 /// A type's name in the natives' names: TOD and DT short, as CODESYS names their conversions.
@@ -372,8 +335,61 @@ NativeBinding date_time_part_binding(NativeType part) {
     return {"DT_TO_" + conversion_name(part), {true, Scalar::I64, {Scalar::I64}}};
 }
 
+NativeBinding text_assignment_binding(CharWidth width) {
+    return {"ASSIGN_" + text_name(width), {false, Scalar::Bool, {Scalar::Ptr, Scalar::Ptr}}};
+}
+
+NativeBinding text_comparison_binding(Operation operation, CharWidth width) {
+    const auto row = std::find_if(kFunctions.begin(), kFunctions.end(), [&](const auto& f) {
+        return f.family == F::Comparison && f.operation == operation;
+    });
+    if (row == kFunctions.end()) {
+        throw std::logic_error("no comparison for the operation");
+    }
+    return {std::string(row->name) + "_" + text_name(width),
+            {true, Scalar::Bool, {Scalar::Ptr, Scalar::Ptr}}};
+}
+
+NativeBinding clock_binding() {
+    return {"CURRENT_TIME", {true, native_scalar(T::Time), {}}};
+}
+
+std::vector<NativeBinding> helper_natives() {
+    std::vector<NativeBinding> natives;
+    for (const CharWidth width : {CharWidth::Narrow, CharWidth::Wide}) {
+        natives.push_back(text_assignment_binding(width));
+        for (const StandardFunction& function : kFunctions) {
+            if (function.family == F::Comparison) {
+                natives.push_back(text_comparison_binding(function.operation, width));
+            }
+        }
+    }
+    natives.push_back(clock_binding());
+    return natives;
+}
+
 std::span<const StandardFunctionBlock> standard_function_blocks() {
     return kFunctionBlocks;
+}
+
+std::string_view StandardBlockVariant::type_of(const StandardParameter& parameter) const {
+    return block->counter && parameter.type == "INT" ? counter_type : parameter.type;
+}
+
+std::vector<StandardBlockVariant> standard_block_variants() {
+    std::vector<StandardBlockVariant> variants;
+    for (const StandardFunctionBlock& block : kFunctionBlocks) {
+        variants.push_back({std::string(block.name), &block, "INT"});
+    }
+    for (const std::string_view type : kCounterTypes) {
+        for (const StandardFunctionBlock& block : kFunctionBlocks) {
+            if (block.counter) {
+                variants.push_back(
+                    {std::string(block.name) + "_" + std::string(type), &block, type});
+            }
+        }
+    }
+    return variants;
 }
 
 } // namespace eposp::vm::stdlib

@@ -1,12 +1,13 @@
 #include "eposp/vm/stdlib/clock.hpp"
 
-#include <string>
+#include "library_parts.hpp"
+
 #include <utility>
 
 namespace eposp::vm::stdlib {
 
 void register_clock(NativeRegistry& registry, std::function<std::int64_t()> now_ns) {
-    registry.add(std::string(kClockNative), {true, Scalar::I64, {}},
+    add_standard(registry, clock_binding(),
                  [now = std::move(now_ns)](NativeArgs& args) { args.set_result(now()); });
 }
 

@@ -16,8 +16,6 @@
 namespace eposp::vm::stdlib {
 namespace {
 
-using S = Scalar;
-
 /// `count` clamped to 0..limit.
 std::size_t clamp_count(std::int32_t count, std::size_t limit) {
     return count <= 0 ? 0 : std::min<std::size_t>(static_cast<std::size_t>(count), limit);
@@ -63,17 +61,14 @@ std::int32_t find(std::basic_string_view<Char> haystack, std::basic_string_view<
     return at == std::basic_string_view<Char>::npos ? 0 : static_cast<std::int32_t>(at + 1);
 }
 
-/// The natives of one string type: the standard functions' bindings come from the manifest
-/// (`LEFT`, `LEFT_WSTRING`); typed ones name their type (`EQ_STRING`, `EQ_WSTRING`).
+/// The natives of one string type, all bound as the manifest describes them: the standard
+/// functions (`LEFT`, `LEFT_WSTRING`), the helpers (`EQ_STRING`, `ASSIGN_WSTRING`) and the
+/// character conversions (`CHAR_TO_STRING`, `WSTRING_TO_WCHAR`).
 template <typename Char>
 struct Names {
     static constexpr bool kWide = std::is_same_v<Char, char16_t>;
     static constexpr Variant kVariant = kWide ? Variant::Wide : Variant::Base;
-    static std::string typed(std::string_view prefix) {
-        return std::string(prefix) + (kWide ? "WSTRING" : "STRING");
-    }
-    static constexpr const char* kCharacter = kWide ? "WCHAR" : "CHAR";
-    static constexpr Scalar kCharacterScalar = kWide ? S::U16 : S::U8;
+    static constexpr NativeType kCharacter = kWide ? NativeType::Wchar : NativeType::Char;
     /// How a CHAR / WCHAR is passed: its unsigned code.
     using CharacterCode = std::conditional_t<kWide, std::uint16_t, std::uint8_t>;
 };
@@ -81,10 +76,10 @@ struct Names {
 // Lexicographic order of the character codes as unsigned numbers, as CODESYS compares
 // (char_traits compares char as unsigned char and char16_t as an unsigned 16-bit code).
 template <typename Char>
-void add_comparison(NativeRegistry& registry, std::string_view prefix,
+void add_comparison(NativeRegistry& registry, Operation operation,
                     bool (*holds)(std::strong_ordering)) {
-    registry.add(
-        Names<Char>::typed(prefix), {true, S::Bool, {S::Ptr, S::Ptr}}, [holds](NativeArgs& args) {
+    add_standard(
+        registry, text_comparison_binding(operation, kWidthOf<Char>), [holds](NativeArgs& args) {
             const StringParameter<Char> a(args, 0);
             if (!a) {
                 return;
@@ -108,7 +103,7 @@ void register_functions_of(NativeRegistry& registry) {
         }
     });
     // ASSIGN_STRING(dst, src): `dst := src` between strings of different capacities.
-    registry.add(N::typed("ASSIGN_"), {false, S::Bool, {S::Ptr, S::Ptr}}, [](NativeArgs& args) {
+    add_standard(registry, text_assignment_binding(kWidthOf<Char>), [](NativeArgs& args) {
         if (const StringParameter<Char> text(args, 1); text) {
             store_text(args, 0, text.view());
         }
@@ -200,26 +195,23 @@ void register_functions_of(NativeRegistry& registry) {
     });
     // Table 22: CHAR_TO_STRING(dst, c) is the string of that one character, STRING_TO_CHAR(s)
     // its first character, or 0 when it is empty (as CODESYS); the same for WCHAR and WSTRING.
-    registry.add(N::typed(std::string(N::kCharacter) + "_TO_"),
-                 {false, S::Bool, {S::Ptr, N::kCharacterScalar}}, [](NativeArgs& args) {
-                     const auto character =
-                         static_cast<Char>(args.get<typename N::CharacterCode>(1));
-                     store_text(args, 0, View{&character, 1});
-                 });
-    registry.add(N::typed("") + "_TO_" + N::kCharacter, {true, N::kCharacterScalar, {S::Ptr}},
-                 [](NativeArgs& args) {
-                     if (const StringParameter<Char> text(args, 0); text) {
-                         using Code = typename N::CharacterCode;
-                         args.set_result(text.view().empty() ? Code{0}
-                                                             : static_cast<Code>(text.view()[0]));
-                     }
-                 });
-    add_comparison<Char>(registry, "EQ_", [](std::strong_ordering o) { return o == 0; });
-    add_comparison<Char>(registry, "NE_", [](std::strong_ordering o) { return o != 0; });
-    add_comparison<Char>(registry, "LT_", [](std::strong_ordering o) { return o < 0; });
-    add_comparison<Char>(registry, "LE_", [](std::strong_ordering o) { return o <= 0; });
-    add_comparison<Char>(registry, "GT_", [](std::strong_ordering o) { return o > 0; });
-    add_comparison<Char>(registry, "GE_", [](std::strong_ordering o) { return o >= 0; });
+    add_standard(registry, to_text_binding(N::kCharacter, kWidthOf<Char>), [](NativeArgs& args) {
+        const auto character = static_cast<Char>(args.get<typename N::CharacterCode>(1));
+        store_text(args, 0, View{&character, 1});
+    });
+    add_standard(registry, from_text_binding(N::kCharacter, kWidthOf<Char>), [](NativeArgs& args) {
+        if (const StringParameter<Char> text(args, 0); text) {
+            using Code = typename N::CharacterCode;
+            args.set_result(text.view().empty() ? Code{0} : static_cast<Code>(text.view()[0]));
+        }
+    });
+    using Op = Operation;
+    add_comparison<Char>(registry, Op::Equal, [](std::strong_ordering o) { return o == 0; });
+    add_comparison<Char>(registry, Op::NotEqual, [](std::strong_ordering o) { return o != 0; });
+    add_comparison<Char>(registry, Op::Less, [](std::strong_ordering o) { return o < 0; });
+    add_comparison<Char>(registry, Op::LessEqual, [](std::strong_ordering o) { return o <= 0; });
+    add_comparison<Char>(registry, Op::Greater, [](std::strong_ordering o) { return o > 0; });
+    add_comparison<Char>(registry, Op::GreaterEqual, [](std::strong_ordering o) { return o >= 0; });
 }
 
 } // namespace

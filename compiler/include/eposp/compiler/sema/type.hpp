@@ -2,7 +2,9 @@
 
 #include "eposp/compiler/ast/declarations.hpp"
 #include "eposp/compiler/sema/name_map.hpp"
+#include "eposp/vm/native_type.hpp"
 #include "eposp/vm/scalar.hpp"
+#include "eposp/vm/stdlib/string_layout.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -99,7 +101,12 @@ bool is_time_like(const Type& type); ///< TIME, LTIME, DATE, TOD, DT and long fo
 bool is_signed(const Type& type);
 /// Types held in one VM scalar (elementary, enum, reference).
 bool is_scalar(const Type& type);
-/// The VM representation of a scalar type.
+/// How wide the characters of a STRING (Narrow) or WSTRING (Wide) type are.
+vm::stdlib::CharWidth char_width(const Type& type);
+/// The VM's name of an elementary, enumeration (its base) or text type.
+vm::NativeType native_type(const Type& type);
+/// The VM representation of a scalar type (vm::native_scalar of its native_type; a reference is
+/// an address).
 vm::Scalar scalar_of(const Type& type);
 
 /// Whether two types are the same: the same object (or one renames the other), arrays of the same

@@ -4,6 +4,8 @@
 // of the elements of an ARRAY[*]: a U32 descriptor after the pointer in its argument block, which
 // the compiler writes and the runtime reads (native_values.hpp).
 
+#include "eposp/vm/scalar.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -46,6 +48,9 @@ inline constexpr std::size_t kNativeTypeCount = static_cast<std::size_t>(NativeT
 
 /// The name of `type` as IEC 61131-3 spells it (`TIME_OF_DAY`).
 std::string_view native_type_name(NativeType type);
+/// The scalar a value of `type` is held in: how an opcode, a native and the compiler take it
+/// (the times and dates are 64-bit nanosecond counts, a text is passed by address).
+Scalar native_scalar(NativeType type);
 
 /// The U32 descriptor that follows the pointer of an ANY or ARRAY[*] argument: the type in the
 /// low byte, the size in bytes of the value (of one element) above it.

@@ -181,8 +181,23 @@ NativeBinding from_text_binding(NativeType to, CharWidth width);
 NativeBinding text_width_binding(CharWidth to);
 /// `DT_TO_DATE` and `DT_TO_TOD`: the date or the time of day of a DT.
 NativeBinding date_time_part_binding(NativeType part);
-/// How a native takes a value of the elementary `type`.
-Scalar native_scalar(NativeType type);
+
+// The runtime helpers: natives code generation calls for what is no call of a standard function
+// (an assignment or comparison of texts, the standard timers' clock). Each is described here
+// once; code generation calls it and the VM registers it by this binding.
+
+/// `ASSIGN_STRING(dst, src)`, `ASSIGN_WSTRING`: `dst := src` between texts of different
+/// capacities (the source cut to the destination's).
+NativeBinding text_assignment_binding(CharWidth width);
+/// `EQ_STRING(a, b)`, `LT_WSTRING`…: the comparison row of `operation` (Greater … NotEqual) on
+/// two texts -> BOOL.
+NativeBinding text_comparison_binding(Operation operation, CharWidth width);
+/// `CURRENT_TIME()` -> TIME, nanoseconds of a monotonic clock: what the timers of the standard
+/// library (TP, TON, TOF, RTC; IEC 61131-3 ed. 3, 6.6.3.5.5) read. The host supplies it
+/// (vm::stdlib::register_clock), so a simulated run reads the event loop's virtual time.
+NativeBinding clock_binding();
+/// Every runtime helper's binding, each width of a text helper.
+std::vector<NativeBinding> helper_natives();
 
 struct StandardParameter {
     std::string_view name;
@@ -204,5 +219,19 @@ inline constexpr std::array<std::string_view, 4> kCounterTypes{"DINT", "LINT", "
 
 /// Every standard function block (tables 43-46), the typed counters as their INT row.
 std::span<const StandardFunctionBlock> standard_function_blocks();
+
+/// A standard FB as programs name it: a row, or a typed counter of a counter row (CTU_DINT).
+struct StandardBlockVariant {
+    std::string name;
+    const StandardFunctionBlock* block = nullptr;
+    /// What the row's INT parameters (PV, CV) are: INT, or the typed counter's type.
+    std::string_view counter_type;
+    /// The type of `parameter`, a parameter of `block`, in this variant.
+    std::string_view type_of(const StandardParameter& parameter) const;
+};
+
+/// Every standard FB by the name programs call it: the rows (the counters on INT), then the
+/// typed counters of each of kCounterTypes in turn.
+std::vector<StandardBlockVariant> standard_block_variants();
 
 } // namespace eposp::vm::stdlib
