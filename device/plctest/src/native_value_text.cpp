@@ -66,28 +66,6 @@ Kind kind_of(NativeType type) {
     return Kind::Unsigned;
 }
 
-vm::Scalar scalar_of(NativeType type, std::size_t size) {
-    switch (kind_of(type)) {
-    case Kind::Boolean:
-        return vm::Scalar::Bool;
-    case Kind::Signed:
-        return size == 1   ? vm::Scalar::I8
-               : size == 2 ? vm::Scalar::I16
-               : size == 4 ? vm::Scalar::I32
-                           : vm::Scalar::I64;
-    case Kind::Unsigned:
-    case Kind::Character:
-        return size == 1   ? vm::Scalar::U8
-               : size == 2 ? vm::Scalar::U16
-               : size == 4 ? vm::Scalar::U32
-                           : vm::Scalar::U64;
-    case Kind::Real:
-        return size == 4 ? vm::Scalar::F32 : vm::Scalar::F64;
-    default:
-        return vm::Scalar::I64; // times and dates: nanoseconds
-    }
-}
-
 std::int64_t signed_value(const vm::NativeValue& v) {
     switch (v.bytes.size()) {
     case 1:
@@ -155,7 +133,7 @@ std::string literal(const vm::NativeValue& value) {
     if (value.is_string()) {
         type.kind = vm::TypeKind::String;
     } else {
-        type.scalar = scalar_of(value.type, value.bytes.size());
+        type.scalar = vm::native_scalar(value.type);
         type.size = static_cast<std::uint32_t>(value.bytes.size());
     }
     if (value.bytes.size() < (value.is_string() ? 4U : vm::scalar_size(type.scalar))) {
