@@ -350,7 +350,7 @@ private:
 
     // --- selection_functions.cpp -------------------------------------------------------------
     /// MOVE, SEL, MAX, MIN, LIMIT, MUX.
-    std::optional<Value> selection(const std::string& name, const Arguments& arguments,
+    std::optional<Value> selection(const types::CallTarget& target, const Arguments& arguments,
                                    const sema::Type* hint, const Destination* dest);
     /// Jumps to `target` when a <= b (a and b of one elementary type or both strings).
     void jump_if_at_most(const Value& a, const Value& b, vm::Label target);

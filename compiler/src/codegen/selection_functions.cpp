@@ -11,27 +11,6 @@ using vm::Opcode;
 using vm::Operand;
 using vm::stdlib::Family;
 
-namespace {
-
-/// The type two inputs of a selection share: the wider of the two (a string of the larger
-/// capacity, so that no input is cut short), or null when they do not mix.
-const sema::Type* common_type(const sema::Type* common, const sema::Type& next) {
-    if (common == nullptr) {
-        return &next;
-    }
-    if (common->kind == sema::TypeKind::String && next.kind == sema::TypeKind::String) {
-        return common->wide != next.wide          ? nullptr
-               : next.capacity > common->capacity ? &next
-                                                  : common;
-    }
-    if (sema::converts_implicitly(*common, next)) {
-        return &next;
-    }
-    return sema::converts_implicitly(next, *common) ? common : nullptr;
-}
-
-} // namespace
-
 void PouGenerator::jump_if_at_most(const Value& a, const Value& b, vm::Label target) {
     if (a.type->kind == sema::TypeKind::String) {
         const auto at_most = compare(ast::BinaryOperator::LessEqual, a, b, nullptr);
@@ -45,14 +24,19 @@ void PouGenerator::jump_if_at_most(const Value& a, const Value& b, vm::Label tar
     builder_.jump(program_.opcodes().get("JLe", suffix), target, a.operand, b.operand);
 }
 
-std::optional<Value> PouGenerator::selection(const std::string& name, const Arguments& arguments,
-                                             const sema::Type* hint, const Destination* dest) {
+std::optional<Value> PouGenerator::selection(const types::CallTarget& target,
+                                             const Arguments& arguments, const sema::Type* hint,
+                                             const Destination* dest) {
     // The inputs' count is the manifest's, checked by the typing stage.
-    const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
+    const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(target.name);
     const Family family = function.family;
     const std::size_t first = family == Family::Select || family == Family::Multiplex ? 1 : 0;
     if (family == Family::Move) {
         return eval(*arguments[0]->value, hint, dest);
+    }
+    if (target.operand == nullptr) {
+        program_.refused_by_checks(DiagnosticCode::E0303); // types/standard_function_typing.cpp
+        return std::nullopt;
     }
     std::optional<Value> selector;
     if (family == Family::Select) {
@@ -63,34 +47,16 @@ std::optional<Value> PouGenerator::selection(const std::string& name, const Argu
     if (first == 1 && !selector) {
         return std::nullopt;
     }
-    // The values, widened to their common type: non-literals first, so literals take it.
+    // The values as the common type the typing stage gave the inputs: a literal laid out in
+    // it, a string kept at its own capacity (it is copied into the result's).
+    const sema::Type& type = *target.operand;
     std::vector<std::optional<Value>> values(arguments.size());
-    const sema::Type* common = nullptr;
-    for (bool literals : {false, true}) {
-        for (std::size_t i = first; i < arguments.size(); ++i) {
-            if (context_literal(*arguments[i]->value) != literals) {
-                continue;
-            }
-            values[i] = eval(*arguments[i]->value, common != nullptr ? common : hint);
-            if (!values[i]) {
-                return std::nullopt;
-            }
-            const sema::Type* both = common_type(common, *values[i]->type);
-            if (both == nullptr) {
-                program_.refused_by_checks(DiagnosticCode::E0303); // the typing stage's
-                return std::nullopt;
-            }
-            common = both;
-        }
-    }
     for (std::size_t i = first; i < arguments.size(); ++i) {
-        values[i] = convert(*values[i], *common, nullptr);
-    }
-    const sema::Type& type = *common;
-    if (first == 0 && ((!sema::is_scalar(type) && type.kind != sema::TypeKind::String) ||
-                       type.kind == sema::TypeKind::Reference)) {
-        program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
-        return std::nullopt;
+        values[i] = eval(*arguments[i]->value, &type);
+        if (!values[i]) {
+            return std::nullopt;
+        }
+        values[i] = convert(*values[i], type, nullptr);
     }
     // The destination when no argument lives there (so none is overwritten before it is
     // read), else a temporary of its own (an argument's may be shared with the value cache).

@@ -123,7 +123,7 @@ std::optional<Value> PouGenerator::standard_function(const types::CallTarget& ta
     case Family::Limit:
     case Family::Multiplex:
     case Family::Move:
-        return selection(name, arguments, hint, dest);
+        return selection(target, arguments, hint, dest);
     default:
         return numeric_function(target, arguments, hint, dest);
     }

@@ -4,6 +4,7 @@
 #include "eposp/compiler/sema/symbol.hpp"
 #include "expression_typer.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace eposp::compiler::types {
@@ -98,10 +99,12 @@ const sema::Type* ExpressionTyper::literal(const ast::Expression& expression,
         if (text->type == E::Char || text->type == E::Wchar) {
             return &elementary(text->type);
         }
+        // No value is a STRING[0] (a declaration refuses it): '' is a STRING[1], as code
+        // generation lays it out.
         const std::size_t length =
             std::visit([](const auto& value) { return value.size(); }, text->value);
-        return &program_.types().string(static_cast<std::uint32_t>(length),
-                                        text->type == E::Wstring);
+        return &program_.types().string(
+            static_cast<std::uint32_t>(std::max<std::size_t>(length, 1)), text->type == E::Wstring);
     }
     if (std::holds_alternative<ast::EnumValueLiteral>(literal)) {
         const sema::Symbol* value = model_.enum_value(expression);

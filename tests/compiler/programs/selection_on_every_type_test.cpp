@@ -62,6 +62,32 @@ END_PROGRAM
     EXPECT_EQ(run.get_wstring("Main.wmax"), u"bc");
 }
 
+// Inputs that are all literals, empty ones included, take the longest literal's capacity from
+// the typing stage (at least 1: no value is a STRING[0]).
+TEST(SelectionOnStrings, EmptyLiteralsAlone) {
+    StProgram run(R"(
+PROGRAM Main
+VAR b : BOOL; i : INT := 2; j : INT := 1; s1, s2, s3, s4, s5, s6 : STRING; w : WSTRING; END_VAR
+s1 := SEL(b, '', '');
+s2 := MAX('', '');
+s3 := MUX(i, 'a', '', 'abc');
+s4 := MUX(j, 'a', '', 'abc');
+s5 := CONCAT(MIN('', ''), 'x', LIMIT('', 'q', ''));
+s6 := MUX(0, 'a', '', 'abc');
+w := SEL(NOT b, "", "");
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get_string("Main.s1"), "");
+    EXPECT_EQ(run.get_string("Main.s2"), "");
+    EXPECT_EQ(run.get_string("Main.s3"), "abc");
+    EXPECT_EQ(run.get_string("Main.s4"), "");
+    EXPECT_EQ(run.get_string("Main.s5"), "x");
+    EXPECT_EQ(run.get_string("Main.s6"), "a");
+    EXPECT_EQ(run.get_wstring("Main.w"), u"");
+}
+
 // Every input position holds a string function once, for each selection function.
 TEST(SelectionOnStrings, StringFunctionsInEveryPosition) {
     StProgram run(R"(

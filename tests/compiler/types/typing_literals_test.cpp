@@ -41,6 +41,20 @@ TEST(TypingLiterals, ATypedLiteralKeepsItsTypeAndIsFolded) {
     EXPECT_EQ(std::get<std::string>(*t->program().constant_of(t->value(2))), "abc");
 }
 
+// No value is a STRING[0] (issue 17): an empty literal is a STRING[1], and a selection of
+// empty literals alone has a type code generation can lay out.
+TEST(TypingLiterals, AnEmptyStringIsAStringOfOne) {
+    const auto t = type_body("s : STRING; w : WSTRING; b : BOOL; i : INT;",
+                             "s := ''; w := \"\"; s := SEL(b, '', ''); s := MAX('', ''); "
+                             "s := MUX(i, 'a', '', 'abc');");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    EXPECT_EQ(t->type_of(0), "STRING[1]");
+    EXPECT_EQ(t->type_of(1), "WSTRING[1]");
+    EXPECT_EQ(t->type_of(2), "STRING[1]");
+    EXPECT_EQ(t->type_of(3), "STRING[1]");
+    EXPECT_EQ(t->type_of(4), "STRING[3]");
+}
+
 TEST(TypingLiterals, AConstantIsFoldedWhereItIsUsed) {
     const auto t = type_source("PROGRAM Main\nVAR CONSTANT k : INT := 42; END_VAR\n"
                                "VAR x : INT; END_VAR\nx := k;\nEND_PROGRAM\n");
