@@ -40,7 +40,7 @@ std::optional<Value> PouGenerator::call_enabled(const ast::Expression& expressio
                 return call_function(*pou, node, dest);
             }
             if (const types::CallTarget* target = program_.typed().call_target(expression)) {
-                return standard_function(*target, node, hint, dest);
+                return standard_function(*target, expression, hint, dest);
             }
             program_.refused_by_checks(DiagnosticCode::E0306); // types/call_typing.cpp
             return std::nullopt;

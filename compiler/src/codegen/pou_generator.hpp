@@ -325,16 +325,18 @@ private:
 
     // --- standard_functions.cpp --------------------------------------------------------------
     /// A call of the standard function `target` (the typing stage's CallTarget).
+    /// `call`: the CallExpression.
     std::optional<Value> standard_function(const types::CallTarget& target,
-                                           const ast::CallExpression& node, const sema::Type* hint,
+                                           const ast::Expression& call, const sema::Type* hint,
                                            const Destination* dest);
     /// `<T>_TO_<U>` and `TO_<U>`: from the typing stage's operand type to its result type.
     std::optional<Value> conversion(const types::CallTarget& target, const Arguments& arguments,
                                     const Destination* dest);
-    std::optional<Value> string_function(const std::string& name, const Arguments& arguments,
-                                         const Destination* dest);
+    std::optional<Value> string_function(const types::CallTarget& target,
+                                         const Arguments& arguments, const Destination* dest);
     /// ADR(x): the address of x as POINTER TO its type; SIZEOF(x or T): its size in bytes.
-    std::optional<Value> address_or_size(const std::string& name, const Arguments& arguments);
+    std::optional<Value> address_or_size(const types::CallTarget& target,
+                                         const ast::Expression& call, const Arguments& arguments);
     /// ADD_TIME, SUB_DT_DT, CONCAT_DATE_TOD, ... (time_functions.cpp).
     std::optional<Value> time_function(const std::string& name, const Arguments& arguments,
                                        const Destination* dest);

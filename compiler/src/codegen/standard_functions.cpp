@@ -82,10 +82,11 @@ std::int64_t time_unit(E type) {
 } // namespace
 
 std::optional<Value> PouGenerator::standard_function(const types::CallTarget& target,
-                                                     const ast::CallExpression& node,
+                                                     const ast::Expression& call,
                                                      const sema::Type* hint,
                                                      const Destination* dest) {
     const std::string& name = target.name;
+    const auto& node = std::get<ast::CallExpression>(call.node);
     // EN and ENO are handled around the call (pou_enable.cpp); the function sees its inputs, in
     // the order of its signature, as the typing stage took them.
     for (const ast::Argument& argument : node.arguments) {
@@ -110,12 +111,12 @@ std::optional<Value> PouGenerator::standard_function(const types::CallTarget& ta
     }
     switch (function->family) {
     case Family::Text:
-        return string_function(name, arguments, dest);
+        return string_function(target, arguments, dest);
     case Family::Bound:
         return array_bound(name, node, dest);
     case Family::Address:
     case Family::Size:
-        return address_or_size(name, arguments);
+        return address_or_size(target, call, arguments);
     case Family::Time:
         return time_function(name, arguments, dest);
     case Family::Select:
@@ -129,40 +130,24 @@ std::optional<Value> PouGenerator::standard_function(const types::CallTarget& ta
     }
 }
 
-std::optional<Value> PouGenerator::address_or_size(const std::string& name,
+std::optional<Value> PouGenerator::address_or_size(const types::CallTarget& target,
+                                                   const ast::Expression& call,
                                                    const Arguments& arguments) {
-    const bool address =
-        vm::stdlib::find_standard_function(name)->family == Family::Address; // else SIZEOF
-    const ast::Expression& argument = *arguments.front()->value;
-    const sema::Type* type = nullptr;
-    std::optional<Place> target;
-    if (const auto* type_name = std::get_if<ast::NameExpression>(&argument.node)) {
-        const sema::Symbol* symbol = model_.resolved(type_name->name);
-        if (symbol != nullptr && symbol->kind != sema::SymbolKind::Variable) {
-            type = types_.named(*symbol);
-        }
-    }
-    if (type == nullptr || address) {
-        target = place(argument);
-        if (!target) {
-            return std::nullopt;
-        }
-        type = target->type;
-    }
-    if (address) {
+    if (vm::stdlib::find_standard_function(target.name)->family == Family::Address) {
         // As in CODESYS, an address goes into a POINTER TO of any type (the VM checks every
         // access through it); REF() is the typed, IEC way.
-        return Value{address_of(*target), &types_.reference(nullptr)};
+        const auto object = place(*arguments.front()->value);
+        return object ? std::optional(Value{address_of(*object), target.result}) : std::nullopt;
     }
-    if (type->conformant) {
-        return std::nullopt; // refused by the checks (E0417, checks/conformant_sizes.cpp)
+    // SIZEOF: the typing stage's constant, of the type it chose for it.
+    const types::Constant* size = program_.typed().constant_of(call);
+    if (size == nullptr || target.result == nullptr) {
+        program_.refused_by_checks(DiagnosticCode::E0417); // checks/conformant_sizes.cpp
+        return std::nullopt;
     }
-    // SIZEOF: a constant of the smallest unsigned type that holds the size (CODESYS), so that
-    // it fits a UINT parameter as well as a DINT.
-    const sema::Type& size_type = types_.elementary(type->size < 0x100     ? E::Usint
-                                                    : type->size < 0x10000 ? E::Uint
-                                                                           : E::Udint);
-    return Value{integer_constant(size_type, type->size), &size_type};
+    return Value{
+        integer_constant(*target.result, static_cast<std::int64_t>(std::get<std::uint64_t>(*size))),
+        target.result};
 }
 
 std::optional<Value> PouGenerator::as_dint(const ast::Expression& expression) {
@@ -293,17 +278,16 @@ std::optional<Value> PouGenerator::conversion(const types::CallTarget& target,
     return value ? explicit_convert(*value, *target.result, dest) : std::nullopt;
 }
 
-std::optional<Value> PouGenerator::string_function(const std::string& name,
+std::optional<Value> PouGenerator::string_function(const types::CallTarget& target,
                                                    const Arguments& arguments,
                                                    const Destination* dest) {
     // Text arguments, then positions and lengths, in the order of the native's parameters.
-    const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(name);
+    const vm::stdlib::StandardFunction& function = *vm::stdlib::find_standard_function(target.name);
     const bool folded = function.max_inputs == vm::stdlib::kExtensible; // CONCAT
     const std::size_t texts = folded ? arguments.size() : function.texts;
     // IEC 61131-3 table 43 on STRING and on WSTRING alike: the first text says which, the
     // others must agree; the WSTRING natives carry a suffix (LEFT_WSTRING).
     std::vector<Value> values;
-    std::uint32_t capacity = 0;
     bool wide = false;
     for (std::size_t i = 0; i < arguments.size(); ++i) {
         const ast::Expression& expression = *arguments[i]->value;
@@ -320,8 +304,6 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
                 program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
                 return std::nullopt;
             }
-            capacity =
-                vm::stdlib::text_capacity(function.text_result, capacity, value->type->capacity);
         }
         values.push_back(*value);
     }
@@ -330,9 +312,10 @@ std::optional<Value> PouGenerator::string_function(const std::string& name,
     if (function.text_result == vm::stdlib::TextResult::Count) {
         call_native(native.name, native.signature, values);
         // LEN and FIND are INT, as in CODESYS; the natives count in DINT.
-        return native_result(native.signature, types_.elementary(E::Int), dest);
+        return native_result(native.signature, *target.result, dest);
     }
-    const sema::Type& natural = types_.string(capacity, wide);
+    // The string that holds whatever the inputs make: the typing stage's (text_capacity).
+    const sema::Type& natural = *target.result;
     const bool into_dest =
         dest != nullptr && dest->type->kind == sema::TypeKind::String && dest->type->wide == wide;
     Value result{into_dest ? dest->operand : temp(natural), into_dest ? dest->type : &natural};

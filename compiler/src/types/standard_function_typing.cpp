@@ -271,12 +271,17 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
         if (object == nullptr) {
             return nullptr;
         }
-        // ADR is an address for any POINTER TO; SIZEOF fits the smallest unsigned type
-        // (docs/st-language.md, references and pointers).
+        // ADR is an address for any POINTER TO; SIZEOF is a constant of the smallest unsigned
+        // type that holds it, as in CODESYS, so that it fits a UINT parameter as well as a DINT
+        // (docs/st-language.md, references and pointers). An ARRAY[*] has no size here: the
+        // checking stage refuses its SIZEOF (E0417).
         result = family == Family::Address ? &program_.types().reference(nullptr)
                  : object->size <= 0xFF    ? &elementary(E::Usint)
                  : object->size <= 0xFFFF  ? &elementary(E::Uint)
                                            : &elementary(E::Udint);
+        if (family == Family::Size && !object->conformant) {
+            program_.set_constant(expression, std::uint64_t{object->size});
+        }
         break;
     }
     case Family::Truncate: // typed as a conversion (expression_typer.cpp)

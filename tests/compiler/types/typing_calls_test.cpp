@@ -27,6 +27,25 @@ TEST(TypingCalls, GenericFunctionsTakeTheCommonTypeOfTheirInputs) {
     EXPECT_EQ(t->type_of(5), "STRING[7]");  // the longest input, not the last
 }
 
+// SIZEOF is a constant the typing stage knows, of the smallest unsigned type holding it
+// (CODESYS); a string function's result holds what its inputs make (issue 17).
+TEST(TypingCalls, SizeofIsAConstantAndTextResultsHoldTheirInputs) {
+    const auto t = type_body("a : ARRAY[1..10] OF DINT; b : ARRAY[0..99] OF LREAL; "
+                             "c : ARRAY[0..9999] OF LREAL; x : UDINT; s : STRING[5]; "
+                             "y : STRING[80];",
+                             "x := SIZEOF(a); x := SIZEOF(b); x := SIZEOF(c); "
+                             "y := CONCAT(s, ''); y := LEFT(s, 2);");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    EXPECT_EQ(t->type_of(0), "USINT");
+    EXPECT_EQ(std::get<std::uint64_t>(*t->program().constant_of(t->value(0))), 40U);
+    EXPECT_EQ(t->type_of(1), "UINT");
+    EXPECT_EQ(std::get<std::uint64_t>(*t->program().constant_of(t->value(1))), 800U);
+    EXPECT_EQ(t->type_of(2), "UDINT");
+    EXPECT_EQ(std::get<std::uint64_t>(*t->program().constant_of(t->value(2))), 80000U);
+    EXPECT_EQ(t->type_of(3), "STRING[6]");
+    EXPECT_EQ(t->type_of(4), "STRING[5]");
+}
+
 TEST(TypingCalls, ConversionsNameTheirSourceAndResult) {
     const auto t = type_body("d : DINT; ud : UDINT; r : REAL; x : DINT; l : LINT;",
                              "ud := DINT_TO_UDINT(d); x := TRUNC(r); l := TO_LINT(ud);");
