@@ -75,7 +75,7 @@ void ExpressionTyper::initializer(const ast::Initializer& initializer, const sem
         // The image holds the value folded (a constant defined through itself has none): what
         // code generation writes (codegen/initial_values.cpp).
         if (errors == diagnostics_.error_count()) {
-            const auto bytes = constant_bytes(**expression, *target, program_.types());
+            const auto bytes = constant_bytes(**expression, *target, program_.constants());
             if (const auto* refusal = std::get_if<ConstantRefusal>(&bytes)) {
                 diagnostics_.error(refusal->code, (*expression)->range, refusal->message);
             }

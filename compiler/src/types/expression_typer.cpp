@@ -5,6 +5,8 @@
 
 #include "expression_typer.hpp"
 
+#include "constant_evaluator.hpp"
+
 #include <fmt/format.h>
 
 namespace eposp::compiler::types {
@@ -173,7 +175,9 @@ const sema::Type* ExpressionTyper::type(const ast::Expression& expression,
         expression.node);
     if (result != nullptr) {
         program_.set_type(expression, *result);
-        fold(expression, *result);
+        if (auto constant = program_.constants().value(expression, *result)) {
+            program_.set_constant(expression, std::move(*constant));
+        }
     }
     return result;
 }

@@ -90,7 +90,6 @@ private:
     bool names_program(const ast::Expression& expression) const;
     /// The arguments of a call except EN and ENO, in order.
     std::vector<const ast::Argument*> inputs(const ast::CallExpression& node);
-    void fold(const ast::Expression& expression, const sema::Type& type);
 
     const sema::Type& elementary(E e) { return program_.types().elementary(e); }
     const sema::Type* fail(DiagnosticCode code, const SourceRange& range, std::string message);

@@ -1,5 +1,6 @@
 #include "eposp/compiler/types/typed_program.hpp"
 
+#include "constant_evaluator.hpp"
 #include "expression_typer.hpp"
 
 #include <unordered_set>
@@ -11,7 +12,10 @@ TypedProgram::TypedProgram(const sema::SemanticModel& model,
                            std::function<bool(const ast::VariableDeclaration&)> is_constant,
                            Diagnostics& diagnostics)
     : model_(model), library_(library), is_constant_(is_constant),
-      types_(model, diagnostics, std::move(library), std::move(is_constant)) {}
+      evaluator_(std::make_unique<ConstantEvaluator>(*this, types_)),
+      types_(model, diagnostics, std::move(library), std::move(is_constant), *evaluator_) {}
+
+TypedProgram::~TypedProgram() = default;
 
 const sema::Type* TypedProgram::type_of(const ast::Expression& expression) const {
     return types_of_.find(&expression);

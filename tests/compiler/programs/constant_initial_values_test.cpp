@@ -201,6 +201,86 @@ END_PROGRAM
     }
 }
 
+// Division by -1 folds as it computes at run time: MIN / -1 wraps to MIN, MOD -1 is 0 (also of
+// MIN), in array bounds, CONSTANTs and initial values alike. The type table's folder refused
+// both as no constant: "array bounds must be constants", E0313 on the initial values (issue 17).
+TEST(ConstantInitialValues, DivisionByMinusOneFoldsAsAtRunTime) {
+    StProgram run(R"(PROGRAM Main
+VAR CONSTANT
+    kMin : DINT := -2147483647 - 1;
+    kNone : DINT := 7 MOD -1;
+    kLongMin : LINT := -9223372036854775807 - 1;
+END_VAR
+VAR
+    min : DINT := -2147483647 - 1; long_min : LINT := -9223372036854775807 - 1; minus : DINT := -1;
+    long_minus : LINT := -1;
+    table : ARRAY[0..5 MOD -1] OF INT;
+    none : DINT := kNone; none_now : DINT;
+    wrapped : DINT := kMin / -1; wrapped_now : DINT;
+    rest : DINT := kMin MOD -1; rest_now : DINT;
+    long_wrapped : LINT := kLongMin / -1; long_wrapped_now : LINT;
+    long_rest : LINT := kLongMin MOD -1; long_rest_now : LINT;
+END_VAR
+none_now := 7 MOD minus;
+wrapped_now := min / minus;
+rest_now := min MOD minus;
+long_wrapped_now := long_min / long_minus;
+long_rest_now := long_min MOD long_minus;
+table[0] := 1;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<std::int32_t>("Main.none"), 0);
+    EXPECT_EQ(run.get<std::int32_t>("Main.wrapped"), INT32_MIN);
+    EXPECT_EQ(run.get<std::int32_t>("Main.rest"), 0);
+    EXPECT_EQ(run.get<std::int64_t>("Main.long_wrapped"), INT64_MIN);
+    EXPECT_EQ(run.get<std::int64_t>("Main.long_rest"), 0);
+    for (const char* name : {"none", "wrapped", "rest"}) {
+        EXPECT_EQ(run.get<std::int32_t>(std::string("Main.") + name),
+                  run.get<std::int32_t>(std::string("Main.") + name + "_now"))
+            << name;
+    }
+    for (const char* name : {"long_wrapped", "long_rest"}) {
+        EXPECT_EQ(run.get<std::int64_t>(std::string("Main.") + name),
+                  run.get<std::int64_t>(std::string("Main.") + name + "_now"))
+            << name;
+    }
+}
+
+// A part of a REAL initial value typed as an integer computes as that integer, then converts:
+// `kSeven / 2` is INT division, 3.0 as at run time. The initial-value folder computed every part
+// in reals and gave 3.5 (issue 17).
+TEST(ConstantInitialValues, IntegerPartsOfARealComputeAsIntegers) {
+    StProgram run(R"(PROGRAM Main
+VAR CONSTANT
+    kSeven : INT := 7;
+    kBig : INT := 20000;
+END_VAR
+VAR
+    seven : INT := 7; big : INT := 20000;
+    half : REAL := kSeven / 2; half_now : REAL;
+    wide : LREAL := DINT#7 / 2; wide_now : LREAL;
+    mixed : LREAL := kSeven / 2 + 0.5; mixed_now : LREAL;
+    wrapped : REAL := kBig * 2; wrapped_now : REAL;
+END_VAR
+half_now := seven / 2;
+wide_now := DINT#7 / 2;
+mixed_now := seven / 2 + 0.5;
+wrapped_now := big * 2;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<float>("Main.half"), 3.0F);
+    EXPECT_EQ(run.get<float>("Main.half"), run.get<float>("Main.half_now"));
+    EXPECT_EQ(run.get<double>("Main.wide"), 3.0);
+    EXPECT_EQ(run.get<double>("Main.wide"), run.get<double>("Main.wide_now"));
+    EXPECT_EQ(run.get<double>("Main.mixed"), 3.5);
+    EXPECT_EQ(run.get<double>("Main.mixed"), run.get<double>("Main.mixed_now"));
+    EXPECT_EQ(run.get<float>("Main.wrapped"), run.get<float>("Main.wrapped_now"));
+}
+
 // NOT of a constant of a narrower type in a wider variable flips the narrower type's bits at
 // run time (NOT kLow is 16#F0 in a DWORD too); that is not folded in the variable's width,
 // which would give 16#FFFFFFF0, but refused as no constant of the variable's type.

@@ -16,12 +16,27 @@ struct Conversion {
 
 class ImplicitConversion : public testing::TestWithParam<Conversion> {};
 
+/// Elementary types only: no constant expression to evaluate.
+class NoConstants final : public IntegerConstants {
+public:
+    std::optional<std::int64_t> fold_integer(const ast::Expression&) const override {
+        return std::nullopt;
+    }
+    std::optional<std::uint64_t> fold_unsigned(const ast::Expression&) const override {
+        return std::nullopt;
+    }
+    std::optional<std::uint64_t> fold_as(const ast::Expression&, const Type&) const override {
+        return std::nullopt;
+    }
+};
+
 TEST_P(ImplicitConversion, FollowsFigure11) {
     SemanticModel model;
     Diagnostics diagnostics;
+    const NoConstants constants;
     TypeTable types(
         model, diagnostics, [](std::string_view) { return nullptr; },
-        [](const ast::VariableDeclaration&) { return false; });
+        [](const ast::VariableDeclaration&) { return false; }, constants);
     const Conversion& c = GetParam();
     EXPECT_EQ(converts_implicitly(types.elementary(c.from), types.elementary(c.to)), c.implicit)
         << ast::name_of(c.from) << " -> " << ast::name_of(c.to);

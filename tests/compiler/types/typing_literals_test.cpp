@@ -62,6 +62,24 @@ TEST(TypingLiterals, AConstantIsFoldedWhereItIsUsed) {
     EXPECT_EQ(std::get<std::int64_t>(*t->program().constant_of(t->value(0))), 42);
 }
 
+// A CONSTANT has the value its own type computes for its initial value, by the one evaluator
+// that gives initial values and bounds theirs: a REAL one in single precision (it was the
+// LREAL 0.1), one defined by arithmetic too (it had none), a DINT sum wrapped (issue 17).
+TEST(TypingLiterals, AConstantHasTheValueItsOwnTypeComputes) {
+    const auto t = type_source("PROGRAM Main\nVAR CONSTANT r : REAL := 0.1; k : INT := 2 * 3;\n"
+                               "w : DINT := 2147483647 + 1; END_VAR\n"
+                               "VAR x : LREAL; i : INT; d : DINT; y : REAL; END_VAR\n"
+                               "x := r; i := k; d := w; y := 0.1;\nEND_PROGRAM\n");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    for (int i = 0; i < 4; ++i) {
+        ASSERT_NE(t->program().constant_of(t->value(i)), nullptr) << i;
+    }
+    EXPECT_EQ(std::get<double>(*t->program().constant_of(t->value(0))), static_cast<double>(0.1F));
+    EXPECT_EQ(std::get<std::int64_t>(*t->program().constant_of(t->value(1))), 6);
+    EXPECT_EQ(std::get<std::int64_t>(*t->program().constant_of(t->value(2))), INT32_MIN);
+    EXPECT_EQ(std::get<double>(*t->program().constant_of(t->value(3))), static_cast<double>(0.1F));
+}
+
 TEST(TypingLiterals, ADirectAddressHasTheTypeOfItsSize) {
     const auto t =
         type_body("w : WORD; b : BOOL; d : DWORD;", "w := %IW4; b := %IX0.1; d := %MD8;");

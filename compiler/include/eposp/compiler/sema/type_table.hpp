@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eposp/compiler/diagnostics.hpp"
+#include "eposp/compiler/sema/integer_constants.hpp"
 #include "eposp/compiler/sema/semantic_model.hpp"
 #include "eposp/compiler/sema/type.hpp"
 
@@ -16,14 +17,17 @@ namespace eposp::compiler::sema {
 /// Owns every type of a program and gives each declaration its type and layout (IEC 61131-3
 /// ed. 3, 6.4): elementary, STRING[n] and REF_TO types are interned, so two of them are the
 /// same type exactly when they are the same object. Constant expressions in types (array
-/// bounds, string lengths, enumeration values) are folded here.
+/// bounds, string lengths, enumeration values) are the typing stage's constant evaluator's
+/// (types/constant_evaluator.cpp), which the table is handed as `constants`.
 class TypeTable {
 public:
     /// `library` finds the POU implementing a standard FB (`TON`) in the built-in library;
-    /// `is_constant` tells whether a declaration is in a CONSTANT section (only those fold).
+    /// `is_constant` tells whether a declaration is in a CONSTANT section (only those fold);
+    /// `constants` evaluates constant integer expressions (it may ask this table back).
     TypeTable(const SemanticModel& model, Diagnostics& diagnostics,
               std::function<const ast::Pou*(std::string_view)> library,
-              std::function<bool(const ast::VariableDeclaration&)> is_constant);
+              std::function<bool(const ast::VariableDeclaration&)> is_constant,
+              const IntegerConstants& constants);
 
     const Type& elementary(ast::ElementaryType type);
     const Type& string(std::uint32_t capacity, bool wide);
@@ -50,18 +54,18 @@ public:
     const Type* enumeration_of(const Symbol& value);
     std::optional<std::int64_t> enumerator(const Symbol& value);
 
-    /// Folds a constant integer expression: literals, enumeration values, constants, + - * /
-    /// MOD, AND OR XOR and parentheses (ed. 3, 6.4.2). Nothing when the expression is not
-    /// constant.
-    std::optional<std::int64_t> fold_integer(const ast::Expression& expression);
-    /// The same over the values of ULINT and LWORD (CASE labels of such a selector): literals
-    /// up to 2^64 - 1, arithmetic modulo 2^64, / and MOD unsigned.
-    std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression);
-    /// The same as a value of the integer `type` computes at run time (an initial value):
-    /// SINT to DINT, USINT, UINT, BYTE and WORD in DINT, UDINT and DWORD modulo 2^32, LINT in
-    /// 64 bits, ULINT and LWORD modulo 2^64; the result's bits, sign- or zero-extended. NOT folds
-    /// here alone, where the width it flips is known: on literals and constants of `type`.
-    std::optional<std::uint64_t> fold_as(const ast::Expression& expression, const Type& type);
+    /// The value of a constant integer expression (IntegerConstants): what bounds, CASE labels,
+    /// FOR steps and constant indices are.
+    std::optional<std::int64_t> fold_integer(const ast::Expression& expression) const {
+        return constants_.fold_integer(expression);
+    }
+    std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression) const {
+        return constants_.fold_unsigned(expression);
+    }
+    std::optional<std::uint64_t> fold_as(const ast::Expression& expression,
+                                         const Type& type) const {
+        return constants_.fold_as(expression, type);
+    }
 
     const SemanticModel& model() const { return model_; }
     /// Whether a declaration is in a CONSTANT section.
@@ -70,18 +74,6 @@ public:
     }
 
 private:
-    /// How folded arithmetic wraps: in `bits` (32 or 64), signed or not; `type`: the integer
-    /// type computed for (fold_as), whose own bits NOT flips.
-    struct Arithmetic {
-        bool is_unsigned = false;
-        unsigned bits = 64;
-        const Type* type = nullptr;
-    };
-    /// Whether `expression` has `type` at run time: its literals untyped or of that type, its
-    /// constants declared with it, so that NOT flips that type's bits.
-    bool computes_in(const ast::Expression& expression, const Type& type);
-    /// fold_integer, fold_unsigned and fold_as: the result's 64 bits.
-    std::optional<std::uint64_t> fold(const ast::Expression& expression, Arithmetic arithmetic);
     Type& add(Type type);
     const Type* resolve_uncached(const ast::TypeSpec& spec);
     const Type* array(const ast::ArrayType& spec, const SourceRange& range);
@@ -100,6 +92,7 @@ private:
     Diagnostics& diagnostics_;
     std::function<const ast::Pou*(std::string_view)> library_;
     std::function<bool(const ast::VariableDeclaration&)> is_constant_;
+    const IntegerConstants& constants_;
     std::deque<Type> types_;
     std::map<ast::ElementaryType, const Type*> elementary_;
     std::map<std::pair<std::uint32_t, bool>, const Type*> strings_;
@@ -117,7 +110,6 @@ private:
     std::unordered_set<const ast::Pou*> instances_in_progress_;
     /// Whether the type being resolved is the target of a reference, which needs no size.
     bool through_reference_ = false;
-    std::unordered_set<const ast::VariableDeclaration*> constants_folding_;
     std::unordered_map<const ast::EnumValue*, std::pair<const Type*, std::int64_t>> enum_values_;
 };
 

@@ -24,6 +24,8 @@
 
 namespace eposp::compiler::types {
 
+class ConstantEvaluator;
+
 /// A folded constant: BOOL, a signed or unsigned integer (also bit strings, TIME and dates in
 /// ns, enumeration values), a real number, or a string's characters.
 using Constant = std::variant<bool, std::int64_t, std::uint64_t, double, std::string>;
@@ -72,6 +74,7 @@ public:
                  std::function<const ast::Pou*(std::string_view)> library,
                  std::function<bool(const ast::VariableDeclaration&)> is_constant,
                  Diagnostics& diagnostics);
+    ~TypedProgram();
     TypedProgram(const TypedProgram&) = delete;
     TypedProgram& operator=(const TypedProgram&) = delete;
 
@@ -100,6 +103,8 @@ public:
     const ast::Pou* library_pou(std::string_view name) const { return library_(name); }
     sema::TypeTable& types() { return types_; }
     const sema::TypeTable& types() const { return types_; }
+    /// The one evaluator of constant expressions (types/constant_evaluator.hpp).
+    const ConstantEvaluator& constants() const { return *evaluator_; }
 
     // Construction, used by the typing pass.
     void set_type(const ast::Expression& expression, const sema::Type& type);
@@ -112,6 +117,9 @@ private:
     const sema::SemanticModel& model_;
     std::function<const ast::Pou*(std::string_view)> library_;
     std::function<bool(const ast::VariableDeclaration&)> is_constant_;
+    // Before types_, which it is handed: the evaluator asks the table for constants' types and
+    // the table asks it for bounds.
+    std::unique_ptr<ConstantEvaluator> evaluator_;
     sema::TypeTable types_;
     sema::NodeMap<ast::Expression, sema::Type> types_of_;
     // Constants and call targets stay where they are made (deques), so that the pointers
