@@ -200,13 +200,17 @@ std::optional<std::uint64_t> ConstantEvaluator::integer(const ast::Expression& e
 
 std::optional<double> ConstantEvaluator::real(const ast::Expression& expression,
                                               bool single) const {
+    // A part the typing stage typed computes in its own type, and converts after: a REAL
+    // product in single precision also inside an LREAL (`kTenth * kThird`), an integer
+    // division as one (`kSeven / 2`, `DINT#7 / 2`).
+    const sema::Type* part = program_.type_of(expression);
+    if (part != nullptr && sema::is_real(*part)) {
+        single = part->size == 4;
+    }
     const auto rounded = [single](double value) {
         return single ? static_cast<double>(static_cast<float>(value)) : value;
     };
-    // A part the typing stage typed as an integer (`kSeven / 2`, `DINT#7 / 2`) divides as
-    // one, and converts to a real number after.
-    if (const sema::Type* part = program_.type_of(expression);
-        part != nullptr && (sema::is_integer(*part) || sema::is_bit_string(*part))) {
+    if (part != nullptr && (sema::is_integer(*part) || sema::is_bit_string(*part))) {
         const auto bits = fold_as(expression, *part);
         if (!bits) {
             return std::nullopt;

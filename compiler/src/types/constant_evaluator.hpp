@@ -28,8 +28,9 @@ public:
     std::optional<std::uint64_t> fold_as(const ast::Expression& expression,
                                          const sema::Type& type) const override;
 
-    /// A constant REAL or LREAL expression (`1.0 / 3.0`, `Ratio * 2.0`), a part of it typed as
-    /// an integer computed as that integer (`kSeven / 2` is 3.0); `single`: a REAL,
+    /// A constant REAL or LREAL expression (`1.0 / 3.0`, `Ratio * 2.0`), each part the typing
+    /// stage typed computed in its type (`kSeven / 2` is 3.0, `kTenth * kThird` a REAL product
+    /// in an LREAL too); `single`: a REAL (where the part is not typed),
     /// whose every value and operation rounds to single precision as it does at run time
     /// (`16777216.0 + 1.0 + 1.0` is 16777216.0, not 16777218.0 rounded once at the end).
     std::optional<double> real(const ast::Expression& expression, bool single) const;

@@ -56,21 +56,29 @@ END_PROGRAM
 }
 
 // A REAL folds in single precision at every step, as it computes at run time; an LREAL in double.
+// `kTenth * 3.0` is a REAL product (the literal takes kTenth's type) also inside an LREAL, as
+// `tenth * 3.0` computes at run time (MulF32, then widened); the initial-value folder computed
+// it in the variable's double precision, and this test compared it with another expression,
+// REAL_TO_LREAL(tenth) * 3.0 (issue 17). With an LREAL operand the product is an LREAL one.
 TEST(ConstantInitialValues, RealsRoundAtEveryStepAsAtRunTime) {
     StProgram run(R"(PROGRAM Main
 VAR CONSTANT
     kSum : REAL := 16777216.0 + 1.0 + 1.0;
     kTenth : REAL := 0.1;
     kWide : LREAL := kTenth * 3.0;
+    kThree : LREAL := 3.0;
+    kWider : LREAL := kTenth * kThree;
     kLongSum : LREAL := 9007199254740992.0 + 1.0 + 1.0;
 END_VAR
 VAR
     sum : REAL := kSum; sum_now : REAL;
     wide : LREAL := kWide; wide_now : LREAL; tenth : REAL := 0.1;
+    wider : LREAL := kWider; wider_now : LREAL; three : LREAL := 3.0;
     long_sum : LREAL := kLongSum; long_sum_now : LREAL;
 END_VAR
 sum_now := 16777216.0 + 1.0 + 1.0;
-wide_now := REAL_TO_LREAL(tenth) * 3.0;
+wide_now := tenth * 3.0;
+wider_now := tenth * three;
 long_sum_now := 9007199254740992.0 + 1.0 + 1.0;
 END_PROGRAM
 )");
@@ -78,8 +86,10 @@ END_PROGRAM
     ASSERT_TRUE(run.scans(1)) << run.fault();
     EXPECT_EQ(run.get<float>("Main.sum"), 16777216.0F);
     EXPECT_EQ(run.get<float>("Main.sum"), run.get<float>("Main.sum_now"));
-    EXPECT_EQ(run.get<double>("Main.wide"), static_cast<double>(0.1F) * 3.0);
+    EXPECT_EQ(run.get<double>("Main.wide"), static_cast<double>(0.1F * 3.0F));
     EXPECT_EQ(run.get<double>("Main.wide"), run.get<double>("Main.wide_now"));
+    EXPECT_EQ(run.get<double>("Main.wider"), static_cast<double>(0.1F) * 3.0);
+    EXPECT_EQ(run.get<double>("Main.wider"), run.get<double>("Main.wider_now"));
     EXPECT_EQ(run.get<double>("Main.long_sum"), run.get<double>("Main.long_sum_now"));
 }
 
