@@ -55,22 +55,17 @@ std::optional<PouGenerator::BitTest> PouGenerator::bit_test(const ast::Expressio
     }
     matched = true;
     const auto& mask = std::get<ast::BinaryExpression>(masked->node);
-    const auto pair = operands(*mask.left, *mask.right, nullptr);
+    const sema::Type* type = program_.typed().operands_of(*masked);
+    if (type == nullptr || (!sema::is_integer(*type) && !sema::is_bit_string(*type))) {
+        // `(a AND b) = 0` on BOOL does not type (types/operator_typing.cpp).
+        program_.refused_by_checks(DiagnosticCode::E0303);
+        return std::nullopt;
+    }
+    const auto pair = operands(*mask.left, *mask.right, *type);
     if (!pair) {
         return std::nullopt; // reported
     }
     const auto& [x, y] = *pair;
-    const sema::Type& type = *x.type;
-    if (!sema::is_integer(type) && !sema::is_bit_string(type)) {
-        // `(a AND b) = 0` on BOOL, AND on REAL: what the general path accepts or reports.
-        const auto value = apply(Op::And, x, y, nullptr);
-        const auto zero =
-            value ? operand_value(zero_right ? *comparison->right : *comparison->left, value->type)
-                  : std::nullopt;
-        if (!zero || !unify(*value, *zero)) {
-            return std::nullopt; // reported
-        }
-    }
     return BitTest{x, y, comparison->op == Op::NotEqual};
 }
 
@@ -138,8 +133,11 @@ void PouGenerator::branch(const ast::Expression& condition, bool when, vm::Label
     if (binary != nullptr && branch_on_bits(condition, when, target)) {
         return;
     }
-    if (binary != nullptr && is_comparison(binary->op)) {
-        const auto pair = operands(*binary->left, *binary->right, nullptr);
+    const sema::Type* compared = binary != nullptr && is_comparison(binary->op)
+                                     ? program_.typed().operands_of(condition)
+                                     : nullptr;
+    if (compared != nullptr) {
+        const auto pair = operands(*binary->left, *binary->right, *compared);
         if (!pair) {
             return;
         }

@@ -403,7 +403,7 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
         return unary(*node, hint, dest);
     }
     if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
-        auto value = binary(*node, hint, dest, true);
+        auto value = binary(expression, *node, hint, dest);
         if (value && value->iec != nullptr) {
             // Computed wider than its type (see binary): cut to the type here.
             const sema::Type& type = *value->iec;
@@ -454,8 +454,9 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
         const std::size_t length = wide ? std::get<std::u16string>(text->value).size()
                                         : std::get<std::string>(text->value).size();
         // Laid out at the capacity of the string it goes to, so that assigning it is one copy.
+        // Never at a capacity of 0: the typing stage gives `'' = ''` a STRING of none.
         type = hint != nullptr && hint->kind == sema::TypeKind::String && hint->wide == wide &&
-                       hint->capacity >= length
+                       hint->capacity >= std::max<std::size_t>(length, 1)
                    ? hint
                    : &types_.string(static_cast<std::uint32_t>(std::max<std::size_t>(length, 1)),
                                     wide);
@@ -526,16 +527,6 @@ std::optional<Value> PouGenerator::value_as(const Value& value, const sema::Type
     return convert(value, want, dest);
 }
 
-bool PouGenerator::of_untyped_literals(const ast::Expression& expression) {
-    if (const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node)) {
-        using Op = ast::BinaryOperator;
-        return (binary->op == Op::Add || binary->op == Op::Subtract || binary->op == Op::Multiply ||
-                binary->op == Op::Divide || binary->op == Op::Modulo) &&
-               of_untyped_literals(*binary->left) && of_untyped_literals(*binary->right);
-    }
-    return context_literal(expression);
-}
-
 std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& expression) {
     if (!context_literal(expression)) {
         return std::nullopt;
@@ -549,46 +540,28 @@ std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& e
 
 std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Expression& left,
                                                               const ast::Expression& right,
-                                                              const sema::Type* hint) {
+                                                              const sema::Type& type) {
+    // An untyped literal is evaluated after the other side (literals have no side effects).
     std::optional<Value> l;
     std::optional<Value> r;
     if (context_literal(left) && !context_literal(right)) {
-        r = operand_value(right, hint);
-        l = r ? eval(left, r->type) : std::nullopt;
+        r = operand_as(right, type);
+        l = r ? operand_as(left, type) : std::nullopt;
     } else {
-        // Untyped literals, and arithmetic of them alone (`c AND 16#0 - 1`), take the left
-        // operand's type, as the typing stage gives them (types/operator_typing.cpp).
-        l = operand_value(left, hint);
-        r = l ? operand_value(right, of_untyped_literals(right) ? l->type : hint) : std::nullopt;
+        l = operand_as(left, type);
+        r = l ? operand_as(right, type) : std::nullopt;
     }
     if (!l || !r) {
         return std::nullopt;
     }
-    return unify(*l, *r);
+    return std::pair(*l, *r);
 }
 
-std::optional<std::pair<Value, Value>> PouGenerator::unify(const Value& l, const Value& r) {
-    if (l.type == r.type || (sema::is_time_like(*l.type) && sema::is_time_like(*r.type)) ||
-        (l.type->kind == sema::TypeKind::String && r.type->kind == sema::TypeKind::String &&
-         l.type->wide == r.type->wide)) {
-        return std::pair(l, r);
-    }
-    if (sema::converts_implicitly(*l.type, *r.type)) {
-        Value converted = *convert(l, *r.type, nullptr);
-        converted.iec = l.iec != nullptr ? l.iec : l.type;
-        return std::pair(converted, r);
-    }
-    if (sema::converts_implicitly(*r.type, *l.type)) {
-        Value converted = *convert(r, *l.type, nullptr);
-        converted.iec = r.iec != nullptr ? r.iec : r.type;
-        return std::pair(l, converted);
-    }
-    program_.refused_by_checks(DiagnosticCode::E0303); // types/operator_typing.cpp
-    return std::nullopt;
-}
-
-bool PouGenerator::is_small_integer(const sema::Type& type) {
-    return sema::is_integer(type) && type.size < 4;
+std::optional<Value> PouGenerator::operand_as(const ast::Expression& expression,
+                                              const sema::Type& type) {
+    // A literal is laid out as `type` at once, a constant rather than a conversion.
+    const auto value = operand_value(expression, &type);
+    return value ? convert(*value, type, nullptr) : std::nullopt;
 }
 
 std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const sema::Type* hint,
@@ -676,18 +649,9 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
 std::optional<Value> PouGenerator::operand_value(const ast::Expression& expression,
                                                  const sema::Type* hint) {
     if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
-        return binary(*node, hint, nullptr, false);
+        return binary(expression, *node, hint, nullptr);
     }
     return eval(expression, hint);
-}
-
-Value PouGenerator::widened(const Value& value, const ast::Expression& expression) {
-    // A literal is a DINT constant at once rather than a conversion at run time.
-    if (const auto constant = small_literal(expression)) {
-        const sema::Type& dint = types_.elementary(E::Dint);
-        return Value{integer_constant(dint, *constant), &dint, value.type};
-    }
-    return widened(value);
 }
 
 Operand PouGenerator::dimension_constant(std::int64_t lower, std::uint32_t count) {
@@ -701,143 +665,106 @@ Operand PouGenerator::integer_constant(const sema::Type& type, std::int64_t valu
     return program_.constant(integer_bytes(value, type.size), type.align);
 }
 
-Value PouGenerator::widened(const Value& value) {
-    const sema::Type& dint = types_.elementary(E::Dint);
-    if (value.type == &dint) {
-        return value;
-    }
-    Value wide = *convert(value, dint, nullptr);
-    wide.iec = value.iec != nullptr ? value.iec : value.type;
-    return wide;
-}
-
-std::optional<Value> PouGenerator::binary(const ast::BinaryExpression& node, const sema::Type* hint,
-                                          const Destination* dest, bool top) {
+std::optional<Value> PouGenerator::binary(const ast::Expression& expression,
+                                          const ast::BinaryExpression& node, const sema::Type* hint,
+                                          const Destination* dest) {
     using Op = ast::BinaryOperator;
-    const bool comparison = node.op == Op::Less || node.op == Op::Greater ||
-                            node.op == Op::LessEqual || node.op == Op::GreaterEqual ||
-                            node.op == Op::Equal || node.op == Op::NotEqual;
-    const bool arithmetic = node.op == Op::Add || node.op == Op::Subtract ||
-                            node.op == Op::Multiply || node.op == Op::Divide ||
-                            node.op == Op::Modulo;
-    const bool bitwise = node.op == Op::And || node.op == Op::Or || node.op == Op::Xor;
     if (node.op == Op::Power) {
-        const sema::Type& lreal = types_.elementary(E::Lreal);
-        const auto base = value_as(*node.left, lreal);
-        const auto exponent = base ? value_as(*node.right, lreal) : std::nullopt;
+        // `**` is EXPT (table 24): computed in the real type the typing stage gives it, the
+        // base's (was always in LREAL, which a REAL base's REAL result did not take).
+        const sema::Type* real = program_.typed().type_of(expression);
+        if (real == nullptr || !sema::is_real(*real)) {
+            program_.refused_by_checks(DiagnosticCode::E0305); // types/operator_typing.cpp
+            return std::nullopt;
+        }
+        const auto base = eval(*node.left, real);
+        const auto exponent = base ? eval(*node.right, real) : std::nullopt;
         if (!exponent) {
             return std::nullopt;
         }
-        const auto native = vm::stdlib::native_binding("EXPT", vm::stdlib::Variant::Wide);
-        call_native(native.name, native.signature, {*base, *exponent});
-        return native_result(native.signature, lreal, dest);
+        if (!sema::is_numeric(*base->type) || !sema::is_numeric(*exponent->type)) {
+            program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
+            return std::nullopt;
+        }
+        const auto native = vm::stdlib::native_binding(
+            "EXPT", sema::scalar_of(*real) == vm::Scalar::F32 ? vm::stdlib::Variant::Base
+                                                              : vm::stdlib::Variant::Wide);
+        call_native(native.name, native.signature,
+                    {*explicit_convert(*base, *real, nullptr),
+                     *explicit_convert(*exponent, *real, nullptr)});
+        return native_result(native.signature, *real, dest);
     }
-    const auto immediate =
-        (node.op == Op::Add || node.op == Op::Subtract) && !context_literal(*node.left)
-            ? small_literal(*node.right)
-            : std::nullopt;
-    std::optional<std::pair<Value, Value>> pair;
-    if ((node.op == Op::Multiply || node.op == Op::Divide) && !context_literal(*node.left)) {
-        // TIME * ANY_NUM and TIME / ANY_NUM (table 30) are natives; the rest is ordinary.
+    // The typing stage's type both operands are brought to; none for TIME * n (table 30), a
+    // pointer moved by bytes and time arithmetic, whose operands keep their types.
+    const sema::Type* computed = program_.typed().operands_of(expression);
+    const sema::Type* typed = program_.typed().type_of(expression);
+    if (computed == nullptr || typed == nullptr) {
         const auto left = operand_value(*node.left, hint);
         if (!left) {
             return std::nullopt;
         }
-        if (left->type->elementary == E::Time || left->type->elementary == E::Ltime) {
+        if ((node.op == Op::Multiply || node.op == Op::Divide) &&
+            (left->type->elementary == E::Time || left->type->elementary == E::Ltime)) {
             return scale_time(node.op == Op::Multiply, *left, *node.right, dest);
         }
-        const auto right =
-            operand_value(*node.right, context_literal(*node.right) ? left->type : hint);
-        pair = right ? unify(*left, *right) : std::nullopt;
-    } else if (immediate) {
-        auto left = operand_value(*node.left, hint);
-        if (!left) {
-            return std::nullopt;
-        }
         if (left->type->kind == sema::TypeKind::Reference) {
             return pointer_offset(node.op == Op::Add, *left, *node.right, dest);
         }
-        const sema::Type& left_iec =
-            types_.unranged(left->iec != nullptr ? *left->iec : *left->type);
-        if ((sema::is_integer(*left->type) || sema::is_bit_string(*left->type)) &&
-            program_.typed().type_of(*node.right) == &left_iec) {
-            // A small constant right operand of + and - is the immediate of AddI, where it has
-            // the left operand's type (`i + 100000` of an INT i is a DINT: not in INT).
-            Value l = *left;
-            if (!top && l.iec == nullptr && is_small_integer(*l.type)) {
-                l = widened(l);
-            }
-            // value_or: GCC's -O2 cannot see that `immediate` is set in this branch.
-            const std::int64_t constant = immediate.value_or(0);
-            if (constant == 0) {
-                return l; // x + 0
-            }
-            const std::int64_t delta = node.op == Op::Add ? constant : -constant;
-            const vm::Opcode add = op_width("AddI", *l.type);
-            const ValueCache::Key key{ValueCache::Kind::AddImmediate, l.operand.raw,
-                                      static_cast<std::uint32_t>(delta),
-                                      static_cast<std::uint32_t>(add)};
-            const bool into_dest = dest != nullptr && dest->type == l.type && l.iec == nullptr;
-            if (const auto hit = into_dest ? std::nullopt : cache_.find(key)) {
-                return Value{*hit, l.type, l.iec}; // `a[j + 1]` after `a[j + 1]`
-            }
-            const Operand result = result_operand(*l.type, into_dest ? dest : nullptr);
-            emit(add, result, l.operand, Operand::imm(static_cast<std::uint32_t>(delta)));
-            if (!into_dest) {
-                cache_.add(key, result, l.type->size, {{l.operand, l.type->size}});
-            }
-            return Value{result, l.type, l.iec};
-        }
-        const auto right = eval(*node.right, left->type);
-        pair = right ? unify(*left, *right) : std::nullopt;
-    } else if ((node.op == Op::Add || node.op == Op::Subtract) && !context_literal(*node.left)) {
-        const auto left = operand_value(*node.left, hint);
-        if (!left) {
-            return std::nullopt;
-        }
-        if (left->type->kind == sema::TypeKind::Reference) {
-            return pointer_offset(node.op == Op::Add, *left, *node.right, dest);
-        }
-        const auto right =
-            operand_value(*node.right, context_literal(*node.right) ? left->type : hint);
-        pair = right ? unify(*left, *right) : std::nullopt;
-    } else {
-        pair = operands(*node.left, *node.right, comparison ? nullptr : hint);
+        const auto right = operand_value(*node.right, nullptr);
+        return right ? apply(node.op, *left, *right, dest) : std::nullopt;
     }
+    const sema::Type& type = *computed;
+    const bool comparison = node.op == Op::Less || node.op == Op::Greater ||
+                            node.op == Op::LessEqual || node.op == Op::GreaterEqual ||
+                            node.op == Op::Equal || node.op == Op::NotEqual;
+    // An arithmetic result computed wider than its type is held so (Value::iec) while it
+    // feeds another operation; eval() cuts it where it is stored.
+    const sema::Type* iec = !comparison && typed != &type ? typed : nullptr;
+    const bool bitwise = node.op == Op::And || node.op == Op::Or || node.op == Op::Xor;
+    const auto immediate = (node.op == Op::Add || node.op == Op::Subtract) &&
+                                   !context_literal(*node.left) &&
+                                   (sema::is_integer(type) || sema::is_bit_string(type))
+                               ? small_literal(*node.right)
+                               : std::nullopt;
+    if (immediate) {
+        // A small constant right operand of + and - is the immediate of AddI.
+        const auto l = operand_as(*node.left, type);
+        if (!l) {
+            return std::nullopt;
+        }
+        // value_or: GCC's -O2 cannot see that `immediate` is set in this branch.
+        const std::int64_t constant = immediate.value_or(0);
+        if (constant == 0) {
+            return Value{l->operand, &type, iec}; // x + 0
+        }
+        const std::int64_t delta = node.op == Op::Add ? constant : -constant;
+        const vm::Opcode add = op_width("AddI", type);
+        const ValueCache::Key key{ValueCache::Kind::AddImmediate, l->operand.raw,
+                                  static_cast<std::uint32_t>(delta),
+                                  static_cast<std::uint32_t>(add)};
+        const bool into_dest = dest != nullptr && dest->type == &type && iec == nullptr;
+        if (const auto hit = into_dest ? std::nullopt : cache_.find(key)) {
+            return Value{*hit, &type, iec}; // `a[j + 1]` after `a[j + 1]`
+        }
+        const Operand result = result_operand(type, into_dest ? dest : nullptr);
+        emit(add, result, l->operand, Operand::imm(static_cast<std::uint32_t>(delta)));
+        if (!into_dest) {
+            cache_.add(key, result, type.size, {{l->operand, type.size}});
+        }
+        return Value{result, &type, iec};
+    }
+    const auto pair = operands(*node.left, *node.right, type);
     if (!pair) {
         return std::nullopt;
     }
-    auto [left, right] = *pair;
-    // Small integers (SINT, INT, USINT, UINT) are computed in DINT when the result feeds
-    // another operation, as CODESYS and C do: `(a * b) MOD 1000` does not overflow at INT,
-    // the value is cut to INT only where it is stored. AND, OR and XOR of an operand held in
-    // DINT so are computed there too, and their result cut at once to the type the typing
-    // stage gives them (`i OR 2 * 8` is an INT), whose bits they are.
-    // An untyped literal's IEC type is the typing stage's: the other operand's where it fits it
-    // (`i + 1`), else wider (`i + 100000` is a DINT).
-    const sema::Type* left_iec = context_literal(*node.left) ? program_.typed().type_of(*node.left)
-                                 : left.iec != nullptr       ? left.iec
-                                                             : left.type;
-    const sema::Type* right_iec = context_literal(*node.right)
-                                      ? program_.typed().type_of(*node.right)
-                                  : right.iec != nullptr ? right.iec
-                                                         : right.type;
-    if ((arithmetic || comparison || bitwise) && is_small_integer(*left_iec) &&
-        is_small_integer(*right_iec) &&
-        (left.iec != nullptr || right.iec != nullptr || (!top && arithmetic))) {
-        const sema::Type* iec =
-            sema::converts_implicitly(*left_iec, *right_iec) ? right_iec : left_iec;
-        auto result = apply(node.op, widened(left, *node.left), widened(right, *node.right),
-                            comparison ? dest : nullptr);
-        if (result && bitwise) {
-            return convert(*result, *iec, dest);
-        }
-        if (result && arithmetic) {
-            result->iec = iec;
-        }
-        return result;
+    auto result = apply(node.op, pair->first, pair->second, iec == nullptr ? dest : nullptr);
+    if (result && iec != nullptr && bitwise) {
+        return convert(*result, *typed, dest); // the bits of its type
     }
-    return apply(node.op, left, right, dest);
+    if (result && iec != nullptr) {
+        result->iec = typed;
+    }
+    return result;
 }
 
 std::optional<Value> PouGenerator::pointer_offset(bool add, const Value& pointer,

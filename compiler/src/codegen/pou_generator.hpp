@@ -161,26 +161,24 @@ private:
                                  const ast::LiteralExpression& node, const sema::Type* hint);
     std::optional<Value> unary(const ast::UnaryExpression& node, const sema::Type* hint,
                                const Destination* dest);
-    /// `top` is false for an operand of another operator, whose small-integer result stays
-    /// in DINT (Value::iec).
-    std::optional<Value> binary(const ast::BinaryExpression& node, const sema::Type* hint,
-                                const Destination* dest, bool top);
+    /// A binary operator computed in the type the typing stage gives its operands
+    /// (types::TypedProgram::operands_of); an arithmetic result computed wider than its type
+    /// is held so while it is an operand (Value::iec).
+    std::optional<Value> binary(const ast::Expression& expression,
+                                const ast::BinaryExpression& node, const sema::Type* hint,
+                                const Destination* dest);
     /// An operand of an operator: like eval, but a nested operation may stay wide.
     std::optional<Value> operand_value(const ast::Expression& expression, const sema::Type* hint);
-    /// A small integer value as DINT.
-    Value widened(const Value& value);
-    /// `value` of `expression` widened: a literal becomes a DINT constant, not a conversion.
-    Value widened(const Value& value, const ast::Expression& expression);
     /// `value` as a constant of the integer (or bit string, enumeration) type `type`.
     vm::Operand integer_constant(const sema::Type& type, std::int64_t value);
     /// The bounds IdxDim checks one index against: lower (DINT) then count (UDINT).
     vm::Operand dimension_constant(std::int64_t lower, std::uint32_t count);
-    std::optional<std::pair<Value, Value>> unify(const Value& left, const Value& right);
-    static bool is_small_integer(const sema::Type& type);
-    /// Both operands of a binary operator, widened to their common type. An untyped literal
-    /// is evaluated after the other side and takes its type (literals have no side effects).
+    /// Both operands of a binary operator brought to `type`, which the typing stage chose. An
+    /// untyped literal is evaluated after the other side.
     std::optional<std::pair<Value, Value>>
-    operands(const ast::Expression& left, const ast::Expression& right, const sema::Type* hint);
+    operands(const ast::Expression& left, const ast::Expression& right, const sema::Type& type);
+    /// An operand of an operator brought to `type`.
+    std::optional<Value> operand_as(const ast::Expression& expression, const sema::Type& type);
     /// The immediate of an untyped integer literal that fits 32 bits signed.
     std::optional<std::int32_t> small_literal(const ast::Expression& expression);
     /// TIME * number, TIME / number.
@@ -199,8 +197,6 @@ private:
     /// number (types::is_untyped_literal), of the other operand's type; a string literal, at the
     /// capacity of the string it meets; NULL, as the reference it meets.
     static bool context_literal(const ast::Expression& expression);
-    /// A context literal, or + - * / MOD of such alone (`16#0 - 1`).
-    static bool of_untyped_literals(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
     /// `P` of `P.x`: a PROGRAM named as its single instance (CODESYS).
     bool names_program(const ast::Expression& expression) const;

@@ -349,17 +349,24 @@ std::optional<Value> PouGenerator::numeric_function(const types::CallTarget& tar
         (family == Family::Logic && function.operation != Operation::Not)) {
         const Op op = binary_operator(function.operation);
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
+        // The inputs brought to the overload the typing stage chose; an input stores its
+        // argument, so a small integer computed in DINT is cut to its type first.
         // Extensible comparisons hold for each neighbouring pair (table 28): GT(a, b, c) is
         // a > b AND b > c; the other extensible functions fold left to right.
-        auto pair =
-            operands(*arguments[0]->value, *arguments[1]->value, comparison ? nullptr : hint);
-        if (!pair) {
+        if (target.operand == nullptr) {
+            program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
             return std::nullopt;
         }
-        auto result = apply(op, pair->first, pair->second, arguments.size() == 2 ? dest : nullptr);
-        Value previous = pair->second;
+        const sema::Type& type = *target.operand;
+        const auto first = value_as(*arguments[0]->value, type);
+        const auto second = first ? value_as(*arguments[1]->value, type) : std::nullopt;
+        if (!second) {
+            return std::nullopt;
+        }
+        auto result = apply(op, *first, *second, arguments.size() == 2 ? dest : nullptr);
+        Value previous = *second;
         for (std::size_t i = 2; result && i < arguments.size(); ++i) {
-            auto next = value_as(*arguments[i]->value, *previous.type);
+            auto next = value_as(*arguments[i]->value, type);
             if (!next) {
                 return std::nullopt;
             }

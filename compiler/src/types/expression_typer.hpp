@@ -78,6 +78,10 @@ private:
     const sema::Type* unify(const std::vector<const ast::Expression*>& operands,
                             const sema::Type* expected, const SourceRange& range,
                             const sema::Type* first = nullptr);
+    /// Records the type `expression`'s operands are computed in (TypedProgram::operands_of),
+    /// `common` or DINT, and holds its arithmetic operands of small integers in DINT.
+    void computed_in(const ast::Expression& expression, const ast::BinaryExpression& node,
+                     const sema::Type& common);
     /// A point in time or duration (`left`) added to or subtracted from `right`.
     const sema::Type* time_arithmetic(ast::BinaryOperator op, const sema::Type& left,
                                       const sema::Type& right, const SourceRange& range);

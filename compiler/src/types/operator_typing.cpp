@@ -7,6 +7,47 @@
 
 namespace eposp::compiler::types {
 
+namespace {
+
+bool is_small_integer(const sema::Type& type) {
+    return sema::is_integer(type) && type.size < 4;
+}
+
+bool is_arithmetic(ast::BinaryOperator op) {
+    using Op = ast::BinaryOperator;
+    return op == Op::Add || op == Op::Subtract || op == Op::Multiply || op == Op::Divide ||
+           op == Op::Modulo;
+}
+
+} // namespace
+
+void ExpressionTyper::computed_in(const ast::Expression& expression,
+                                  const ast::BinaryExpression& node, const sema::Type& common) {
+    // SINT, INT, USINT and UINT are computed in DINT inside an expression and cut to their type
+    // where the result is stored, as CODESYS and C do (docs/st-language.md): `(a * b) MOD 1000`
+    // does not overflow at INT. An arithmetic operand of small integers is held in DINT, and an
+    // operation on one is computed in DINT too; AND, OR and XOR then cut their result at once
+    // to their type, whose bits they are. An input of a function stores its argument, so the
+    // operands of ADD, GT, ... are not held (standard_function_typing.cpp).
+    const sema::Type& dint = elementary(E::Dint);
+    const auto small = [&](const ast::Expression& operand) {
+        const sema::Type* type = program_.type_of(operand);
+        return type != nullptr && is_small_integer(program_.types().unranged(*type));
+    };
+    const auto held = [&](const ast::Expression& operand) {
+        const auto* inner = std::get_if<ast::BinaryExpression>(&operand.node);
+        return inner != nullptr && is_arithmetic(inner->op) && small(operand);
+    };
+    const bool wide =
+        small(*node.left) && small(*node.right) && (held(*node.left) || held(*node.right));
+    for (const ast::Expression* operand : {node.left.get(), node.right.get()}) {
+        if (held(*operand)) {
+            program_.set_operands(*operand, dint);
+        }
+    }
+    program_.set_operands(expression, wide ? dint : common);
+}
+
 const sema::Type* ExpressionTyper::unary(const ast::Expression& expression,
                                          const ast::UnaryExpression& node,
                                          const sema::Type* expected) {
@@ -127,9 +168,15 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
         // EXPT (table 24): IN1 ANY_REAL, IN2 ANY_NUM; the result has IN1's type.
         const sema::Type* base =
             type(*node.left, expected != nullptr && sema::is_real(*expected) ? expected : nullptr);
-        type(*node.right, nullptr);
-        if (base == nullptr) {
+        const sema::Type* exponent = type(*node.right, nullptr);
+        if (base == nullptr || exponent == nullptr) {
             return nullptr;
+        }
+        for (const sema::Type* operand : {base, exponent}) {
+            if (!sema::is_numeric(program_.types().unranged(*operand))) {
+                return fail(DiagnosticCode::E0304, range,
+                            fmt::format("'**' needs numbers, not {}", operand->name));
+            }
         }
         return sema::is_real(*base) ? base : &elementary(E::Lreal);
     }
@@ -145,7 +192,11 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
             return fail(DiagnosticCode::E0304, range,
                         fmt::format("values of type {} cannot be compared", operands->name));
         }
-        return operands != nullptr ? &elementary(E::Bool) : nullptr;
+        if (operands == nullptr) {
+            return nullptr;
+        }
+        computed_in(expression, node, *operands);
+        return &elementary(E::Bool);
     }
     case Op::And:
     case Op::Or:
@@ -156,6 +207,9 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
             return fail(
                 DiagnosticCode::E0304, range,
                 fmt::format("AND, OR and XOR need BOOL or bit strings, not {}", operands->name));
+        }
+        if (operands != nullptr) {
+            computed_in(expression, node, *operands);
         }
         return operands;
     }
@@ -207,6 +261,7 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
                     fmt::format("MOD needs integers, not {}", operands->name));
     }
     if (sema::is_numeric(*operands) || sema::is_bit_string(*operands)) {
+        computed_in(expression, node, *operands);
         return operands;
     }
     return fail(DiagnosticCode::E0304, range,

@@ -33,6 +33,14 @@ void TypedProgram::set_type(const ast::Expression& expression, const sema::Type&
     types_of_.set(&expression, &type);
 }
 
+const sema::Type* TypedProgram::operands_of(const ast::Expression& expression) const {
+    return operands_of_.find(&expression);
+}
+
+void TypedProgram::set_operands(const ast::Expression& expression, const sema::Type& type) {
+    operands_of_.set(&expression, &type);
+}
+
 void TypedProgram::set_constant(const ast::Expression& expression, Constant value) {
     constants_.set(&expression, &constant_values_.emplace_back(std::move(value)));
 }

@@ -3,6 +3,7 @@
 // structures and references. Each case is a PROGRAM Main run for one scan.
 #include "codegen_harness.hpp"
 
+#include <cmath>
 #include <gtest/gtest.h>
 
 namespace eposp::compiler::test {
@@ -133,6 +134,16 @@ INSTANTIATE_TEST_SUITE_P(
         IntCase{"ExtensibleComparison", "", "x := BOOL_TO_LINT(GT(5, 4, 3) AND NOT GT(5, 6, 3));",
                 1},
         IntCase{"AddFunction", "", "x := ADD(1, 2, 3, 4);", 10},
+        // An input of ADD, GT, ... stores its argument (docs/st-language.md): INT a * b is cut
+        // to INT, 90000 to 24464, before the function computes on INTs (ADD failed to compile,
+        // GT compared 90000).
+        IntCase{"AddOfAnIntProductIsAnInt", "a, b : INT := 300; c : INT := 1; i : INT;",
+                "i := ADD(a * b, c); x := i;", 24465},
+        IntCase{"ComparisonFunctionCutsAnIntProduct", "a, b : INT := 300; c : INT := 25000;",
+                "x := BOOL_TO_LINT(GT(a * b, c));", 0},
+        // The operator keeps a product of INTs in DINT as an operand (CODESYS).
+        IntCase{"ComparisonOperatorKeepsAnIntProductInDint", "a, b : INT := 300; c : INT := 25000;",
+                "x := BOOL_TO_LINT(a * b > c);", 1},
         IntCase{"Move", "", "x := MOVE(42);", 42},
         IntCase{"ArrayElement", "a : ARRAY[1..5] OF INT := [1, 2(7), 3];", "x := a[3] + a[4];", 10},
         IntCase{"ArrayIndexedByVariable",
@@ -271,6 +282,22 @@ END_PROGRAM
     EXPECT_DOUBLE_EQ(run.get<double>("Main.b"), 6.0);
     EXPECT_DOUBLE_EQ(run.get<double>("Main.c"), 9.25);
     EXPECT_DOUBLE_EQ(run.get<double>("Main.third"), -1.0 / 3.0 * 2);
+}
+
+// `**` is EXPT (table 24): on a REAL base a REAL, as the typing stage types it (was computed
+// in LREAL, and storing it into a REAL failed to compile).
+TEST(Reals, PowerOfARealIsAReal) {
+    StProgram run(R"(
+PROGRAM Main
+VAR r : REAL := 3.0; q : REAL; x : LREAL; END_VAR
+q := r ** 2.0;
+x := r ** 0.5;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get<float>("Main.q"), 9.0F);
+    EXPECT_EQ(run.get<double>("Main.x"), static_cast<double>(std::pow(3.0F, 0.5F)));
 }
 
 // Ed. 3, 6.5.4: a POU's own constants size its arrays and strings.

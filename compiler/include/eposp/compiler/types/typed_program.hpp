@@ -86,6 +86,10 @@ public:
     const Constant* constant_of(const ast::Expression& expression) const;
     /// What a CallExpression calls; null for any other expression.
     const CallTarget* call_target(const ast::Expression& expression) const;
+    /// The type a BinaryExpression's operands are both brought to and the operation computed
+    /// in: their common type, or DINT for small integers inside an expression (CODESYS, see
+    /// docs/st-language.md). Null for `**`, time arithmetic, `TIME * n` and pointer moves.
+    const sema::Type* operands_of(const ast::Expression& expression) const;
 
     /// What a VAR_ACCESS declaration names; null for a direct address or a path refused.
     const AccessPath* access_path(const ast::AccessDeclaration& declaration) const;
@@ -110,6 +114,7 @@ public:
     void set_type(const ast::Expression& expression, const sema::Type& type);
     void set_constant(const ast::Expression& expression, Constant value);
     void set_call(const ast::Expression& expression, CallTarget target);
+    void set_operands(const ast::Expression& expression, const sema::Type& type);
     void add_store(Store store) { stores_.push_back(store); }
     void set_access_path(const ast::AccessDeclaration& declaration, AccessPath path);
 
@@ -122,6 +127,7 @@ private:
     std::unique_ptr<ConstantEvaluator> evaluator_;
     sema::TypeTable types_;
     sema::NodeMap<ast::Expression, sema::Type> types_of_;
+    sema::NodeMap<ast::Expression, sema::Type> operands_of_;
     // Constants and call targets stay where they are made (deques), so that the pointers
     // constant_of() and call_target() hand out stay valid; a value set again is made anew.
     std::deque<Constant> constant_values_;
