@@ -55,15 +55,6 @@ ast::BinaryOperator binary_operator(Operation operation) {
     }
 }
 
-/// The manifest's name of an elementary type (vm::NativeType lists them in its order).
-vm::NativeType native_of(E type) {
-    return static_cast<vm::NativeType>(type);
-}
-
-vm::stdlib::CharWidth width_of(bool wide) {
-    return wide ? vm::stdlib::CharWidth::Wide : vm::stdlib::CharWidth::Narrow;
-}
-
 /// Nanoseconds per unit when a time converts to or from a number (CODESYS: TIME and TOD in
 /// milliseconds, DATE and DT in seconds, the long forms in nanoseconds).
 std::int64_t time_unit(E type) {
@@ -182,7 +173,7 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
                                        : temp(want);
             const sema::Type& target =
                 dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
-            const auto native = vm::stdlib::text_width_binding(width_of(want.wide));
+            const auto native = vm::stdlib::text_width_binding(sema::char_width(want));
             call_native(native.name, native.signature, {Value{result, &target}, value});
             return Value{result, &target};
         }
@@ -203,12 +194,12 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
             const sema::Type& target =
                 dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
             const auto native =
-                vm::stdlib::to_text_binding(native_of(from.elementary), width_of(wide));
+                vm::stdlib::to_text_binding(sema::native_type(from), sema::char_width(want));
             call_native(native.name, native.signature, {Value{result, &target}, value});
             return Value{result, &target};
         }
         const auto native =
-            vm::stdlib::from_text_binding(native_of(want.elementary), width_of(wide));
+            vm::stdlib::from_text_binding(sema::native_type(want), sema::char_width(from));
         call_native(native.name, native.signature, {value});
         return native_result(native.signature, want, dest);
     }
@@ -222,7 +213,7 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     if (from_time && to_time) {
         if (from.elementary == E::DateAndTime && want.elementary != E::DateAndTime &&
             (want.elementary == E::Date || want.elementary == E::TimeOfDay)) {
-            const auto native = vm::stdlib::date_time_part_binding(native_of(want.elementary));
+            const auto native = vm::stdlib::date_time_part_binding(sema::native_type(want));
             call_native(native.name, native.signature, {value});
             return native_result(native.signature, want, dest);
         }
