@@ -178,8 +178,12 @@ void Epos2Drive::set_supply_voltage(double volts) {
 // A fault reset is refused while the supply, the power stage's temperature or the sensors' 5 V
 // supply is out of range (4.2.5 - 4.2.8: "only possible if ... in valid range").
 bool Epos2Drive::fault_condition_present() const {
-    return supply_error().has_value() || power_stage_temperature_.too_high() ||
-           sensor_faults_.supply_overloaded;
+    return fault_condition_present(supply_error(), power_stage_temperature_.too_high());
+}
+
+bool Epos2Drive::fault_condition_present(const std::optional<std::uint16_t>& supply,
+                                         bool too_hot) const {
+    return supply.has_value() || too_hot || sensor_faults_.supply_overloaded;
 }
 
 void Epos2Drive::set_analog_input(AnalogInput input, std::int16_t millivolts) {
@@ -448,11 +452,10 @@ void Epos2Drive::raise_device_error(std::uint16_t code) {
 void Epos2Drive::watch_power_stage(bool overcurrent) {
     power_stage_temperature_.update(axis_.current_actual(), power_stage_on_,
                                     plant::ServoAxis::kOuterLoopPeriod);
-    // fault_condition_present(), each cause read once.
+    // Each cause read once, for the fault condition and the errors.
     const std::optional<std::uint16_t> supply = supply_error();
     const bool too_hot = power_stage_temperature_.too_high();
-    device_control_.set_fault_condition_present(supply.has_value() || too_hot ||
-                                                sensor_faults_.supply_overloaded);
+    device_control_.set_fault_condition_present(fault_condition_present(supply, too_hot));
     if (supply) {
         raise_device_error(*supply);
     }

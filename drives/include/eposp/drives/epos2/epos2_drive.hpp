@@ -177,6 +177,8 @@ private:
     bool commutation_resolution_too_low() const;
     std::optional<std::uint16_t> supply_error() const;
     bool fault_condition_present() const;
+    /// The same, with the supply error and the power stage's temperature already read.
+    bool fault_condition_present(const std::optional<std::uint16_t>& supply, bool too_hot) const;
     void watch_dictionary();
     void compute_measured_values();
     void reset_application();
