@@ -21,12 +21,6 @@ bool cob_id_acceptable(std::uint32_t cob_id) {
     return unused_bits_clear && !restricted(can_id(cob_id));
 }
 
-bool matches(std::uint32_t cob_id, const can::Frame& frame) {
-    const bool extended = (cob_id & kCobIdExtended) != 0;
-    return !frame.remote && !frame.error && frame.extended == extended &&
-           frame.id == can_id(cob_id);
-}
-
 can::Frame make_frame(std::uint32_t cob_id, std::span<const std::uint8_t> data) {
     return can::Frame::data_frame(can_id(cob_id), data, (cob_id & kCobIdExtended) != 0);
 }

@@ -4,8 +4,8 @@
 
 namespace eposp::canopen {
 
-void FrameRouter::add(KeySource keys, Handler handler) {
-    receivers_.push_back({std::move(keys), std::move(handler)});
+void FrameRouter::add(KeySource keys, void* target, Call call) {
+    receivers_.push_back({std::move(keys), target, call});
     invalidate();
 }
 
@@ -91,8 +91,9 @@ void FrameRouter::dispatch(const can::Frame& frame) {
         return;
     }
     ++depth_;
-    for (const std::size_t receiver : lists_[position - 1]) {
-        receivers_[receiver].handler(frame);
+    for (const std::size_t index : lists_[position - 1]) {
+        const Receiver& receiver = receivers_[index];
+        receiver.call(receiver.target, frame);
     }
     --depth_;
 }

@@ -111,7 +111,7 @@ std::uint8_t error_register_bits(std::uint16_t emcy_error_code) {
 }
 
 Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary, NodeConfig config)
-    : port_(port), services_port_(port, [this] { return !lss_.silent(); }),
+    : port_(port), services_port_(port, lss_),
       config_(with_stored_lss_configuration(std::move(config), refused_store_to_report_)),
       od_(add_missing_communication_objects(dictionary, config_)),
       nmt_(services_port_, config_.node_id,
@@ -154,9 +154,7 @@ Node::Node(core::EventLoop& loop, can::Port& port, ObjectDictionary& dictionary,
     nmt_.on_state_change([this](NmtState state) { set_nmt_state(state); });
     // A node does not receive its own frames: its own SYNCs reach its PDOs this way.
     sync_producer_.on_sent([this](const can::Frame& frame) { sync_consumer_.on_frame(frame); });
-    sync_consumer_.on_sync(
-        [this](const SyncEvent& sync) { pdo_.on_sync(sync.counter.value_or(0)); });
-    sync_consumer_.on_window_closed([this] { pdo_.on_window_closed(); });
+    sync_consumer_.synchronise(pdo_);
     route_frames();
     port_.on_receive([this](const can::Frame& frame) { router_.dispatch(frame); });
     router_.filter(port_);
@@ -210,20 +208,14 @@ void Node::on_reset_application(std::function<void()> handler) {
 }
 
 void Node::route_frames() {
-    router_.add([](ReceiveKeys& keys) { keys.push_back(kLssMasterCobId); },
-                [this](const can::Frame& frame) { lss_.on_frame(frame); });
-    router_.add([](ReceiveKeys& keys) { keys.push_back(kNmtCanId); },
-                [this](const can::Frame& frame) { nmt_.on_frame(frame); });
-    router_.add([this](ReceiveKeys& keys) { sync_consumer_.receive_keys(keys); },
-                [this](const can::Frame& frame) { sync_consumer_.on_frame(frame); });
-    router_.add([this](ReceiveKeys& keys) { sdo_.receive_keys(keys); },
-                [this](const can::Frame& frame) { sdo_.on_frame(frame); });
-    router_.add([this](ReceiveKeys& keys) { pdo_.receive_keys(keys); },
-                [this](const can::Frame& frame) { pdo_.on_frame(frame); });
+    router_.add([](ReceiveKeys& keys) { keys.push_back(kLssMasterCobId); }, lss_);
+    router_.add([](ReceiveKeys& keys) { keys.push_back(kNmtCanId); }, nmt_);
+    router_.add([this](ReceiveKeys& keys) { sync_consumer_.receive_keys(keys); }, sync_consumer_);
+    router_.add([this](ReceiveKeys& keys) { sdo_.receive_keys(keys); }, sdo_);
+    router_.add([this](ReceiveKeys& keys) { pdo_.receive_keys(keys); }, pdo_);
     router_.add([this](ReceiveKeys& keys) { heartbeat_consumer_.receive_keys(keys); },
-                [this](const can::Frame& frame) { heartbeat_consumer_.on_frame(frame); });
-    router_.add([this](ReceiveKeys& keys) { guarding_.receive_keys(keys); },
-                [this](const can::Frame& frame) { guarding_.on_frame(frame); });
+                heartbeat_consumer_);
+    router_.add([this](ReceiveKeys& keys) { guarding_.receive_keys(keys); }, guarding_);
     // The objects the identifiers come from; reset communication (where a new node-ID takes
     // effect) invalidates too.
     std::vector<std::uint16_t> indices{kCobIdSyncIndex, kConsumerHeartbeatTimeIndex};

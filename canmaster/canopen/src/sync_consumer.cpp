@@ -1,6 +1,7 @@
 #include "eposp/canopen/sync_consumer.hpp"
 
 #include "eposp/canopen/cob_id.hpp"
+#include "eposp/canopen/pdo_service.hpp"
 #include "eposp/canopen/sync_objects.hpp"
 
 #include <chrono>
@@ -40,18 +41,23 @@ void SyncConsumer::on_frame(const can::Frame& frame) {
     if (wrong_length) {
         return;
     }
-    SyncEvent event{.counter = std::nullopt, .window = window_length_};
-    if (frame.dlc == 1) {
-        event.counter = frame.data[0];
-    }
     if (window_timer_.id()) { // none without a window: an out-of-line call saved per SYNC
         window_timer_.cancel();
     }
     window_open_ = true;
-    if (event.window != core::Duration::zero()) {
-        window_timer_ =
-            core::ScopedTimer(loop_, loop_.after(event.window, [this] { close_window(); }));
+    const core::Duration window = window_length_;
+    if (window != core::Duration::zero()) {
+        window_timer_ = core::ScopedTimer(loop_, loop_.after(window, [this] { close_window(); }));
     }
+    const std::optional<std::uint8_t> counter =
+        frame.dlc == 1 ? std::optional<std::uint8_t>(frame.data[0]) : std::nullopt;
+    if (pdos_ != nullptr) {
+        pdos_->on_sync(counter.value_or(0));
+    }
+    if (sync_listeners_.empty()) {
+        return;
+    }
+    const SyncEvent event{.counter = counter, .window = window};
     for (std::size_t i = 0; i < sync_listeners_.size(); ++i) {
         sync_listeners_[i](event);
     }
@@ -100,6 +106,9 @@ void SyncConsumer::read_parameters() {
 
 void SyncConsumer::close_window() {
     window_open_ = false;
+    if (pdos_ != nullptr) {
+        pdos_->on_window_closed();
+    }
     for (std::size_t i = 0; i < window_listeners_.size(); ++i) {
         window_listeners_[i]();
     }

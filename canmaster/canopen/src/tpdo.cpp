@@ -3,6 +3,20 @@
 #include "eposp/canopen/cob_id.hpp"
 
 namespace eposp::canopen {
+namespace {
+
+// make_frame() for a PDO: the payload's bytes beyond its size are zero, as a frame's are, so
+// the eight are copied at once (every synchronous TPDO sends one at every SYNC).
+can::Frame pdo_frame(std::uint32_t cob_id, const PdoPayload& payload) {
+    can::Frame frame;
+    frame.id = can_id(cob_id);
+    frame.extended = (cob_id & kCobIdExtended) != 0;
+    frame.dlc = static_cast<std::uint8_t>(payload.size);
+    frame.data = payload.data;
+    return frame;
+}
+
+} // namespace
 
 Tpdo::Tpdo(core::EventLoop& loop, can::Port& port, ObjectDictionary& od, std::size_t number,
            EmergencyCallback emergency)
@@ -221,7 +235,7 @@ void Tpdo::on_remote_request() {
 }
 
 void Tpdo::transmit(const PdoPayload& payload) {
-    port_.send(make_frame(comm_.cob_id.raw, payload.bytes()));
+    port_.send(pdo_frame(comm_.cob_id.raw, payload));
     last_payload_ = payload;
     last_transmission_ = loop_.now();
     forced_pending_ = false;

@@ -1,6 +1,8 @@
 // FrameRouter: a received frame reaches only the receivers of its identifier.
 #include "eposp/canopen/frame_router.hpp"
 
+#include <deque>
+#include <functional>
 #include <gtest/gtest.h>
 #include <string>
 #include <vector>
@@ -8,16 +10,24 @@
 namespace eposp::canopen {
 namespace {
 
+/// A service as the router sees it: what it does with a frame is the test's.
+struct Receiver {
+    std::function<void(const can::Frame&)> handle;
+    void on_frame(const can::Frame& frame) { handle(frame); }
+};
+
 struct Routed {
+    std::deque<Receiver> receivers; ///< outlive the router, and stay put
     FrameRouter router;
     std::vector<std::string> heard;
 
     /// A receiver named `name` that takes `keys` (which the test may change).
     void add(const std::string& name, ReceiveKeys& keys) {
+        receivers.push_back({[this, name](const can::Frame& frame) {
+            heard.push_back(name + ":" + std::to_string(frame.id));
+        }});
         router.add([&keys](ReceiveKeys& out) { out.insert(out.end(), keys.begin(), keys.end()); },
-                   [this, name](const can::Frame& frame) {
-                       heard.push_back(name + ":" + std::to_string(frame.id));
-                   });
+                   receivers.back());
     }
 };
 
@@ -99,17 +109,19 @@ TEST(FrameRouter, ErrorFramesReachNoReceiver) {
 }
 
 TEST(FrameRouter, AReceiverThatInvalidatesWhileHandlingAFrameChangesTheNextFrameOnly) {
-    FrameRouter router;
     ReceiveKeys keys{0x000};
     std::vector<std::uint32_t> heard;
-    router.add([&keys](ReceiveKeys& out) { out = keys; },
-               [&](const can::Frame& frame) {
-                   heard.push_back(frame.id);
-                   keys = {0x001}; // e.g. a reset communication that moves the node's identifiers
-                   router.invalidate();
-               });
-    router.add([](ReceiveKeys& out) { out.push_back(0x000); },
-               [&](const can::Frame& frame) { heard.push_back(0x100 + frame.id); });
+    FrameRouter router;
+    Receiver moving{[&](const can::Frame& frame) {
+        heard.push_back(frame.id);
+        keys = {0x001}; // e.g. a reset communication that moves the node's identifiers
+        router.invalidate();
+    }};
+    Receiver staying{[&](const can::Frame& frame) {
+        heard.push_back(0x100 + frame.id);
+    }};
+    router.add([&keys](ReceiveKeys& out) { out = keys; }, moving);
+    router.add([](ReceiveKeys& out) { out.push_back(0x000); }, staying);
 
     router.dispatch(can::Frame::data_frame(0x000, {1, 0}));
     router.dispatch(can::Frame::data_frame(0x000, {1, 0}));
@@ -131,8 +143,10 @@ TEST(FrameRouter, AFilteredPortHandsOverTheFramesOfTheTableAndEveryFrameWhileItI
     });
     ReceiveKeys keys{0x080, kCobIdExtended | 0x181};
     std::vector<std::uint32_t> heard;
-    router.add([&keys](ReceiveKeys& out) { out = keys; },
-               [&heard](const can::Frame& frame) { heard.push_back(frame.id); });
+    Receiver receiver{[&heard](const can::Frame& frame) {
+        heard.push_back(frame.id);
+    }};
+    router.add([&keys](ReceiveKeys& out) { out = keys; }, receiver);
     router.filter(port);
 
     port.receive(can::Frame::data_frame(0x200, {})); // stale: handed over, makes the table

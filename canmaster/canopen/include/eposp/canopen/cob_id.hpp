@@ -29,8 +29,13 @@ constexpr std::uint32_t can_id(std::uint32_t cob_id) {
 /// control. (0x080 is reserved for SYNC and EMCY alike, so it is allowed here.)
 bool cob_id_acceptable(std::uint32_t cob_id);
 
-/// Whether `frame` is a data frame with the identifier and format the entry names.
-bool matches(std::uint32_t cob_id, const can::Frame& frame);
+/// Whether `frame` is a data frame with the identifier and format the entry names. Inline: the
+/// SYNC consumer of every node asks it for every SYNC.
+inline bool matches(std::uint32_t cob_id, const can::Frame& frame) {
+    const bool extended = (cob_id & kCobIdExtended) != 0;
+    return !frame.remote && !frame.error && frame.extended == extended &&
+           frame.id == can_id(cob_id);
+}
 
 /// A data frame with the identifier and format the entry names.
 can::Frame make_frame(std::uint32_t cob_id, std::span<const std::uint8_t> data);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace eposp::canopen {
@@ -29,14 +30,21 @@ constexpr ReceiveKey receive_key(const can::Frame& frame) {
 /// keeps its receivers, so a received frame reaches only the services that take its identifier
 /// instead of every one of them. A receiver says which keys it takes now; the table asks again
 /// before the next frame after invalidate() (a COB-ID or the node-ID changed). Error frames
-/// reach no receiver.
+/// reach no receiver. A receiver is a service whose on_frame() the table calls directly, as
+/// CANopenNode's receive buffers call their service's function: every SYNC passes here on every
+/// node, and a std::function would add a hop to each.
 class FrameRouter {
 public:
     using KeySource = std::function<void(ReceiveKeys& keys)>;
-    using Handler = std::function<void(const can::Frame& frame)>;
 
-    /// `handler` gets every frame whose key `keys` lists, once however often it lists it.
-    void add(KeySource keys, Handler handler);
+    /// `receiver.on_frame(frame)` gets every frame whose key `keys` lists, once however often it
+    /// lists it. The receiver must outlive the router.
+    template <typename Receiver>
+    void add(KeySource keys, Receiver& receiver) {
+        add(std::move(keys), &receiver, [](void* target, const can::Frame& frame) {
+            static_cast<Receiver*>(target)->on_frame(frame);
+        });
+    }
     /// The receivers' keys may have changed.
     void invalidate();
     /// Keeps `port`'s acceptance filter to the table's 11-bit identifiers, so that the port
@@ -47,10 +55,13 @@ public:
     void dispatch(const can::Frame& frame);
 
 private:
+    using Call = void (*)(void* receiver, const can::Frame& frame);
     struct Receiver {
         KeySource keys;
-        Handler handler;
+        void* target;
+        Call call;
     };
+    void add(KeySource keys, void* target, Call call);
     void rebuild();
     void update_filter();
     std::vector<std::size_t>& list_of(ReceiveKey key); ///< made empty when new

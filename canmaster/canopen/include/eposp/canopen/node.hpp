@@ -1,7 +1,6 @@
 #pragma once
 
 #include "eposp/can/frame.hpp"
-#include "eposp/can/gated_port.hpp"
 #include "eposp/can/port.hpp"
 #include "eposp/canopen/emcy_producer.hpp"
 #include "eposp/canopen/error_history.hpp"
@@ -18,6 +17,7 @@
 #include "eposp/canopen/pdo_objects.hpp"
 #include "eposp/canopen/pdo_service.hpp"
 #include "eposp/canopen/sdo_server.hpp"
+#include "eposp/canopen/services_port.hpp"
 #include "eposp/canopen/store_restore_objects.hpp"
 #include "eposp/canopen/sync_consumer.hpp"
 #include "eposp/canopen/sync_objects.hpp"
@@ -163,7 +163,7 @@ private:
 
     can::Port& port_;
     /// What the services send through: closed while the LSS slave is silent.
-    can::GatedPort services_port_;
+    ServicesPort services_port_;
     /// Stored values or the stored LSS configuration were refused, and no EMCY told it yet.
     bool refused_store_to_report_ = false;
     NodeConfig config_;    ///< with the stored LSS configuration applied

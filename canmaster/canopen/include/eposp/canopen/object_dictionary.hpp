@@ -8,6 +8,7 @@
 #include <bitset>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <memory>
@@ -166,7 +167,15 @@ public:
     }
     template <typename T>
     void set_as(ValueRef ref, T value) {
-        set(ref, encode_array(value));
+        // In place and inline when the stored value has T's length, as set() would store it: a
+        // drive stores its actual values through here every millisecond.
+        const auto bytes = encode_array(value);
+        if (ref.sub->value.size() != bytes.size()) {
+            set(ref, bytes);
+            return;
+        }
+        std::memcpy(ref.sub->value.data(), bytes.data(), bytes.size());
+        notify(ref.index, ref.sub->sub_index);
     }
 
     /// Tells `listener` of every change of a value at `index` (any sub-index), by write() or set().

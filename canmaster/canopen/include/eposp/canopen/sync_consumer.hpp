@@ -14,6 +14,8 @@
 
 namespace eposp::canopen {
 
+class PdoService;
+
 /// One SYNC as the consumer's listeners get it.
 struct SyncEvent {
     std::optional<std::uint8_t> counter; ///< present when the SYNC carries a counter
@@ -46,6 +48,10 @@ public:
     void receive_keys(ReceiveKeys& keys) const;
     void set_nmt_state(NmtState state);
 
+    /// The PDOs this consumer synchronises: told of every SYNC (the counter, 0 without one) and
+    /// of the end of its window before the listeners, by a plain call (every SYNC reaches every
+    /// node's PDOs, and a listener's std::function would add a hop). `pdos` must outlive it.
+    void synchronise(PdoService& pdos) { pdos_ = &pdos; }
     void on_sync(SyncListener listener);
     void on_window_closed(WindowListener listener);
     /// Told when the SYNC length error has ended.
@@ -72,6 +78,7 @@ private:
     NmtState state_ = NmtState::Initialising;
     bool window_open_ = false;
     core::ScopedTimer window_timer_;
+    PdoService* pdos_ = nullptr;
     std::vector<SyncListener> sync_listeners_;
     std::vector<WindowListener> window_listeners_;
 };
