@@ -2,11 +2,8 @@
 
 namespace eposp::canopen {
 
-void ErrorCondition::set(bool present, const EmergencyCallback& raise,
-                         const ErrorResolvedCallback& resolve) {
-    if (present == present_) {
-        return;
-    }
+void ErrorCondition::change(bool present, const EmergencyCallback& raise,
+                            const ErrorResolvedCallback& resolve) {
     present_ = present;
     const auto& tell = present ? raise : resolve;
     if (tell) {

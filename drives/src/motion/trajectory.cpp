@@ -9,7 +9,9 @@ Trajectory::Trajectory(double start_position, std::vector<RampSegment> segments)
     // Rounding can leave a cruise of -1e-17 s; empty pieces carry no motion.
     std::erase_if(segments, [](const RampSegment& s) { return s.duration <= 0; });
     segments_ = std::move(segments);
+    segment_starts_.reserve(segments_.size());
     for (const RampSegment& segment : segments_) {
+        segment_starts_.push_back(final_position_);
         duration_ += segment.duration;
         final_position_ += sample_segment(segment, segment.duration).position;
     }
@@ -20,19 +22,18 @@ double Trajectory::final_velocity() const {
 }
 
 MotionState Trajectory::sample(double t) const {
-    double position = start_position_;
     double remaining = std::max(t, 0.0);
-    for (const RampSegment& segment : segments_) {
+    for (std::size_t i = 0; i < segments_.size(); ++i) {
+        const RampSegment& segment = segments_[i];
         if (remaining <= segment.duration) {
             MotionState state = sample_segment(segment, remaining);
-            state.position += position;
+            state.position += segment_starts_[i];
             return state;
         }
-        position += sample_segment(segment, segment.duration).position;
         remaining -= segment.duration;
     }
     const double velocity = final_velocity();
-    return {position + velocity * remaining, velocity, 0};
+    return {final_position_ + velocity * remaining, velocity, 0};
 }
 
 } // namespace eposp::drives::motion

@@ -20,11 +20,17 @@ public:
     explicit ErrorCondition(std::uint16_t code) : code_(code) {}
 
     /// Whether the cause holds now; a change is reported to `raise` or `resolve` (either may be
-    /// empty).
-    void set(bool present, const EmergencyCallback& raise, const ErrorResolvedCallback& resolve);
+    /// empty). Inline when nothing changes: every SYNC and every RPDO asks.
+    void set(bool present, const EmergencyCallback& raise, const ErrorResolvedCallback& resolve) {
+        if (present != present_) {
+            change(present, raise, resolve);
+        }
+    }
     bool present() const { return present_; }
 
 private:
+    void change(bool present, const EmergencyCallback& raise, const ErrorResolvedCallback& resolve);
+
     std::uint16_t code_;
     bool present_ = false;
 };

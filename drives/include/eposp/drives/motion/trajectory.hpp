@@ -24,6 +24,9 @@ public:
 private:
     double start_position_ = 0;
     std::vector<RampSegment> segments_;
+    /// Where each segment starts, summed once in segment order as sample() summed them at every
+    /// sample (the same additions, so the same bits): a drive samples every millisecond.
+    std::vector<double> segment_starts_;
     double duration_ = 0;
     double final_position_ = 0;
 };
