@@ -1,5 +1,7 @@
 #include "case_labels.hpp"
 
+#include "../types/constant_evaluator.hpp"
+
 namespace eposp::compiler::checks {
 
 CaseLabels case_labels(types::TypedProgram& program, const ast::CaseStatement& node,
@@ -8,9 +10,9 @@ CaseLabels case_labels(types::TypedProgram& program, const ast::CaseStatement& n
     labels.unsigned64 = sema::scalar_of(selector) == vm::Scalar::U64;
     const auto fold = [&](const ast::Expression& bound) -> std::optional<std::int64_t> {
         if (!labels.unsigned64) {
-            return program.types().fold_integer(bound);
+            return program.constants().fold_integer(bound);
         }
-        const auto bits = program.types().fold_unsigned(bound);
+        const auto bits = program.constants().fold_unsigned(bound);
         return bits ? std::optional(static_cast<std::int64_t>(*bits)) : std::nullopt;
     };
     for (const ast::CaseBranch& branch : node.branches) {

@@ -1,6 +1,7 @@
 // E0409: an array index known when compiling lies inside the array's bounds; code generation
 // then needs no run-time check for it.
 
+#include "../types/constant_evaluator.hpp"
 #include "pou_checks.hpp"
 
 #include <fmt/format.h>
@@ -16,7 +17,7 @@ void check_index(const PouUnderCheck& check, const ast::IndexExpression& node) {
     }
     // Up to the first index that is not constant, as code generation folds them.
     for (std::size_t d = 0; d < node.indices.size(); ++d) {
-        const auto folded = check.program.types().fold_integer(*node.indices[d]);
+        const auto folded = check.program.constants().fold_integer(*node.indices[d]);
         if (!folded) {
             return;
         }

@@ -1,6 +1,7 @@
 // E0410: a constant stored into a subrange variable or parameter lies inside its bounds
 // (IEC 61131-3 ed. 3, 6.4.4.4); other values are checked at run time by code generation.
 
+#include "../types/constant_evaluator.hpp"
 #include "pou_checks.hpp"
 
 #include <fmt/format.h>
@@ -12,7 +13,7 @@ void check_constant_subranges(const ProgramUnderCheck& check) {
         if (!check.includes(store.pou) || !store.into->range) {
             continue;
         }
-        const auto value = check.program.types().fold_integer(*store.value);
+        const auto value = check.program.constants().fold_integer(*store.value);
         if (value && !store.into->range->contains(*value)) {
             check.diagnostics.error(DiagnosticCode::E0410, store.value->range,
                                     fmt::format("the value {} is outside {} ({}..{})", *value,

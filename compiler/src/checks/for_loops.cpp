@@ -3,6 +3,7 @@
 // its body does not assign it, and a constant step is not 0 (the loop would never end) nor
 // negative on an unsigned control variable.
 
+#include "../types/constant_evaluator.hpp"
 #include "pou_checks.hpp"
 
 #include <cstdint>
@@ -66,7 +67,7 @@ private:
             return; // not a local integer: E0403, and the body is not looked at further
         }
         if (node.by) {
-            const auto step = check_.program.types().fold_integer(*node.by);
+            const auto step = check_.program.constants().fold_integer(*node.by);
             if (step && *step == 0) {
                 check_.diagnostics.error(DiagnosticCode::E0404, node.by->range, "BY must not be 0");
                 return;

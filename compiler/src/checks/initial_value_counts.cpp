@@ -3,6 +3,7 @@
 // Every initial value is looked at: of variables (in the POUs whose code runs), globals, and
 // the members and defaults of declared types.
 
+#include "../types/constant_evaluator.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
 
@@ -71,9 +72,10 @@ private:
                 type->size / std::max<std::uint32_t>(type->element->size, 1);
             std::uint64_t values = 0;
             for (const ast::ArrayInitElement& element : *elements) {
-                const auto repeat = element.repeat_count
-                                        ? check_.program.types().fold_integer(*element.repeat_count)
-                                        : std::optional<std::int64_t>(1);
+                const auto repeat =
+                    element.repeat_count
+                        ? check_.program.constants().fold_integer(*element.repeat_count)
+                        : std::optional<std::int64_t>(1);
                 if (!repeat || *repeat < 0) {
                     return; // E0313
                 }

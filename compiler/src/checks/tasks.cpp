@@ -3,6 +3,7 @@
 // at least one tick; and the `{attribute 'event' := '…'}` that releases a task on an event of the
 // host instead (docs/st-language.md, "Tasks").
 
+#include "../types/constant_evaluator.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "eposp/vm/image_limits.hpp"
 #include "pou_checks.hpp"
@@ -15,7 +16,7 @@ namespace {
 
 void check_priority(const ast::Expression& priority, types::TypedProgram& program,
                     Diagnostics& diagnostics) {
-    const auto value = program.types().fold_integer(priority);
+    const auto value = program.constants().fold_integer(priority);
     if (!value || *value < 0 || *value > UINT32_MAX) {
         diagnostics.error(DiagnosticCode::E0421, priority.range,
                           "PRIORITY must be a constant from 0 upwards");

@@ -1,6 +1,7 @@
 // E0408: a divisor of '/', MOD, DIV or MOD() that is a constant zero: the division would fail
 // at every run, so it is refused when compiling.
 
+#include "../types/constant_evaluator.hpp"
 #include "calls.hpp"
 #include "pou_checks.hpp"
 
@@ -12,7 +13,7 @@ void check_divisor(const PouUnderCheck& check, bool divide, const ast::Expressio
     const auto* real =
         literal != nullptr ? std::get_if<ast::RealLiteral>(&literal->value) : nullptr;
     if ((real != nullptr && real->value == 0.0) ||
-        check.program.types().fold_integer(divisor) == 0) {
+        check.program.constants().fold_integer(divisor) == 0) {
         check.diagnostics.error(DiagnosticCode::E0408, divisor.range,
                                 divide ? "division by zero" : "MOD by zero");
     }

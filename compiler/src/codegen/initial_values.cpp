@@ -93,7 +93,7 @@ bool ProgramGenerator::is_enumerator_of(const ast::Expression& expression,
         const sema::Type* owner = types_.enumeration_of(*value);
         return owner != nullptr && sema::same_type(*owner, enumeration);
     }
-    const auto number = types_.fold_integer(expression);
+    const auto number = typed_.constants().fold_integer(expression);
     return number && std::ranges::any_of(enumeration.enumerators, [&](const auto& enumerator) {
                return enumerator.second == *number;
            });
@@ -124,7 +124,7 @@ void ProgramGenerator::apply_initializer(const sema::Type& type,
         for (const ast::ArrayInitElement& element : *elements) {
             std::int64_t repeat = 1;
             if (element.repeat_count) {
-                repeat = types_.fold_integer(*element.repeat_count).value_or(-1);
+                repeat = typed_.constants().fold_integer(*element.repeat_count).value_or(-1);
                 if (repeat < 0) {
                     refused_by_checks(DiagnosticCode::E0313); // types/initializers.cpp
                     return;

@@ -110,7 +110,7 @@ std::optional<Value> PouGenerator::array_bound(const std::string& name,
         program_.refused_by_checks(DiagnosticCode::E0305); // types/standard_function_typing.cpp
         return std::nullopt;
     }
-    const auto dimension = types_.fold_integer(*node.arguments[1].value);
+    const auto dimension = program_.typed().constants().fold_integer(*node.arguments[1].value);
     if (!dimension || *dimension < 1 ||
         *dimension > static_cast<std::int64_t>(type.dimensions.size())) {
         program_.refused_by_checks(DiagnosticCode::E0313); // types/standard_function_typing.cpp

@@ -240,7 +240,7 @@ std::optional<Place> PouGenerator::index(const ast::IndexExpression& node) {
     std::int64_t constant = 0;
     bool all_constant = true;
     for (std::size_t d = 0; d < node.indices.size(); ++d) {
-        const auto folded = types_.fold_integer(*node.indices[d]);
+        const auto folded = program_.typed().constants().fold_integer(*node.indices[d]);
         const auto& dimension = type.dimensions[d];
         if (!folded || *folded < dimension.lower ||
             *folded >= dimension.lower + static_cast<std::int64_t>(dimension.count)) {
@@ -531,7 +531,7 @@ std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& e
     if (!context_literal(expression)) {
         return std::nullopt;
     }
-    const auto value = types_.fold_integer(expression);
+    const auto value = program_.typed().constants().fold_integer(expression);
     if (!value || *value < INT32_MIN || *value > INT32_MAX) {
         return std::nullopt;
     }

@@ -225,9 +225,9 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
     const bool unsigned64 = sema::scalar_of(type) == vm::Scalar::U64;
     const auto fold = [&](const ast::Expression& label) -> std::optional<std::int64_t> {
         if (!unsigned64) {
-            return types_.fold_integer(label);
+            return program_.typed().constants().fold_integer(label);
         }
-        const auto bits = types_.fold_unsigned(label);
+        const auto bits = program_.typed().constants().fold_unsigned(label);
         return bits ? std::optional(static_cast<std::int64_t>(*bits)) : std::nullopt;
     };
     for (const ast::CaseBranch& branch_node : node.branches) {
@@ -236,8 +236,9 @@ void PouGenerator::case_statement(const ast::CaseStatement& node) {
             const auto low_value = fold(*label.low);
             const auto high_value = label.high ? fold(*label.high) : low_value;
             if (!low_value || !high_value) {
-                const bool constant = types_.fold_unsigned(*label.low) &&
-                                      (!label.high || types_.fold_unsigned(*label.high));
+                const bool constant =
+                    program_.typed().constants().fold_unsigned(*label.low) &&
+                    (!label.high || program_.typed().constants().fold_unsigned(*label.high));
                 program_.refused_by_checks(
                     constant ? DiagnosticCode::E0301
                              : DiagnosticCode::E0313); // types/statement_typing.cpp
@@ -348,7 +349,7 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
     std::int64_t step = 1;
     bool constant_step = true;
     if (node.by) {
-        const auto folded = types_.fold_integer(*node.by);
+        const auto folded = program_.typed().constants().fold_integer(*node.by);
         constant_step = folded && *folded >= INT16_MIN && *folded <= INT16_MAX;
         step = folded.value_or(0);
         if ((folded && *folded == 0) || (constant_step && !sema::is_signed(type) && step < 0)) {
@@ -405,7 +406,7 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
     bind(body);
     // A subrange control variable is checked on entering the body, unless a constant limit
     // inside the range keeps every value the body sees inside it.
-    const auto constant_limit = types_.fold_integer(*node.to);
+    const auto constant_limit = program_.typed().constants().fold_integer(*node.to);
     if (type.range && !(constant_step && constant_limit &&
                         (step > 0 ? *constant_limit <= type.range->upper
                                   : *constant_limit >= type.range->lower))) {

@@ -15,7 +15,7 @@ using vm::Operand;
 std::optional<Value> PouGenerator::subrange_value(const ast::Expression& expression,
                                                   const sema::Type& want) {
     const sema::Type& base = types_.unranged(want);
-    if (const auto constant = types_.fold_integer(expression);
+    if (const auto constant = program_.typed().constants().fold_integer(expression);
         constant && want.range->contains(*constant)) {
         const auto value = value_as(expression, base);
         return value ? std::optional(Value{value->operand, &want}) : std::nullopt;

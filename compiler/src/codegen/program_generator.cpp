@@ -313,7 +313,7 @@ void ProgramGenerator::lay_out_programs(const ast::Configuration& configuration)
             task.name = declaration.name.name;
             // The checks refused the properties the controller cannot run (checks/tasks.cpp).
             if (declaration.priority) {
-                const auto priority = types_.fold_integer(*declaration.priority);
+                const auto priority = typed_.constants().fold_integer(*declaration.priority);
                 if (priority && *priority >= 0 && *priority <= UINT32_MAX) {
                     task.priority = static_cast<std::uint32_t>(*priority);
                 }

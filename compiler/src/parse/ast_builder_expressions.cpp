@@ -47,6 +47,14 @@ ast::ExpressionPtr AstBuilder::expression(P::ExpressionContext& context) {
     if (auto* call = alternative<P::OperatorCallContext>(&context)) {
         return nodes_.operator_call(*call->callee, arguments(call->arguments), range(context));
     }
+    if (auto* call = alternative<P::FormalNotContext>(&context)) {
+        std::vector<ast::Argument> input(1);
+        input[0].kind = ast::Argument::Kind::Input;
+        input[0].range = range(*call->input);
+        input[0].name = identifier(*call->input->identifier());
+        input[0].value = expression(*call->input->expression());
+        return nodes_.operator_call(*call->callee, std::move(input), range(context));
+    }
     if (auto* located = alternative<P::DirectAddressExpressionContext>(&context)) {
         return nodes_.direct_address_expression(*located->address);
     }

@@ -102,6 +102,16 @@ ast::ExpressionPtr DescentParser::expression(int lowest_precedence) {
 
 ast::ExpressionPtr DescentParser::prefixed() {
     const std::size_t type = cursor_.type();
+    if (type == P::NOT && cursor_.type(1) == P::LEFT_PAREN && at_identifier(2) &&
+        cursor_.type(3) == P::ASSIGN) {
+        // NOT(IN := x): the formal call of the function NOT (grammar: formalNot).
+        const antlr4::Token& callee = cursor_.take();
+        cursor_.take();
+        std::vector<ast::Argument> input;
+        input.push_back(argument());
+        cursor_.expect(P::RIGHT_PAREN);
+        return postfixed(nodes_.operator_call(callee, std::move(input), range_from(callee)));
+    }
     if (type == P::MINUS || type == P::PLUS || type == P::NOT) {
         const antlr4::Token& op = cursor_.take();
         return nodes_.unary(op, prefixed());

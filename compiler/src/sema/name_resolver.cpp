@@ -377,11 +377,29 @@ private:
 
     ValueShape resolve_node(const ast::CallExpression& node, const Scope& scope) {
         const ValueShape callee = resolve_callee(*node.callee, scope);
+        if (sizes_elementary_type(node, scope)) {
+            return {}; // SIZEOF(INT): the typing stage sizes the type it names
+        }
         const Symbol* pou = called_pou(*node.callee);
         // Formal names belong to the called POU, or to the FB type of the called instance.
         const Scope* parameters = pou != nullptr ? pou->members : callee.members;
         resolve_arguments(node.arguments, parameters, callee_name(pou, callee), scope);
         return pou != nullptr ? callee : ValueShape{};
+    }
+
+    /// Whether `node` is SIZEOF of an elementary type's name (`SIZEOF(LREAL)`), which is no
+    /// name in scope; SIZEOF of a declared type's name resolves as a name.
+    bool sizes_elementary_type(const ast::CallExpression& node, const Scope& scope) const {
+        const auto* callee = std::get_if<ast::NameExpression>(&node.callee->node);
+        const Symbol* function = callee != nullptr ? model_.resolved(callee->name) : nullptr;
+        if (function == nullptr || function->kind != SymbolKind::StandardFunction ||
+            function->name != "SIZEOF" || node.arguments.size() != 1 ||
+            node.arguments.front().name) {
+            return false;
+        }
+        const auto* name = std::get_if<ast::NameExpression>(&node.arguments.front().value->node);
+        return name != nullptr && scope.find(name->name.name) == nullptr &&
+               ast::elementary_type_from_name(name->name.name).has_value();
     }
 
     const Symbol* called_pou(const ast::Expression& callee) const {

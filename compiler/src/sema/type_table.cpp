@@ -156,7 +156,7 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
     if (const auto* node = std::get_if<ast::StringTypeRef>(&spec.node)) {
         std::int64_t capacity = vm::stdlib::kDefaultStringCapacity;
         if (node->length) {
-            const auto folded = fold_integer(*node->length);
+            const auto folded = constants_.fold_integer(*node->length);
             if (!folded || *folded < 1 || *folded > vm::stdlib::kMaxStringCapacity) {
                 diagnostics_.error(DiagnosticCode::E0313, node->length->range,
                                    "a string length must be a constant from 1 to 65535");
@@ -221,8 +221,8 @@ const Type* TypeTable::array(const ast::ArrayType& spec, const SourceRange& rang
                                "an array has either bounds or '*' in every dimension");
             return nullptr;
         }
-        const auto low = fold_integer(*dimension.bounds->low);
-        const auto high = fold_integer(*dimension.bounds->high);
+        const auto low = constants_.fold_integer(*dimension.bounds->low);
+        const auto high = constants_.fold_integer(*dimension.bounds->high);
         if (!low || !high) {
             diagnostics_.error(DiagnosticCode::E0313, dimension.bounds->low->range,
                                "array bounds must be constants");
@@ -357,7 +357,7 @@ const Type* TypeTable::enumeration(const ast::EnumType& spec, std::string name) 
     std::int64_t next = 0;
     for (const ast::EnumValue& value : spec.values) {
         if (value.value) {
-            if (const auto folded = fold_integer(*value.value)) {
+            if (const auto folded = constants_.fold_integer(*value.value)) {
                 next = *folded;
             } else {
                 diagnostics_.error(DiagnosticCode::E0313, value.value->range,
@@ -382,8 +382,8 @@ const Type* TypeTable::subrange(const ast::SubrangeType& spec) {
             fmt::format("a subrange needs an integer base type, not {}", base->name));
         return nullptr;
     }
-    const auto lower = fold_integer(*spec.range.low);
-    const auto upper = fold_integer(*spec.range.high);
+    const auto lower = constants_.fold_integer(*spec.range.low);
+    const auto upper = constants_.fold_integer(*spec.range.high);
     if (!lower || !upper) {
         diagnostics_.error(DiagnosticCode::E0313, spec.range.low->range,
                            "subrange bounds must be constants");

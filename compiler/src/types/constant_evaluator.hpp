@@ -12,6 +12,7 @@
 #include "eposp/compiler/types/typed_program.hpp"
 
 #include <optional>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace eposp::compiler::types {
@@ -42,11 +43,22 @@ public:
     /// The literal an expression is or a CONSTANT names (a STRING's, a CHAR's, NULL).
     const ast::Literal* literal(const ast::Expression& expression) const;
 
-    /// The constant of an expression of `type` as the typing stage records it: literals,
-    /// enumeration values, CONSTANTs (their value as their own type computes it), and a sign
-    /// or NOT on one of those. Operations on variables' constants are left to the engines that
-    /// run them.
+    /// The constant of an expression of `type` as the typing stage records it, bottom up from
+    /// its operands' (constant_operations.cpp): literals, enumeration values, CONSTANTs (their
+    /// value as their own type computes it), operators, conversions and the pure standard
+    /// functions (ABS, MOVE, ADD..., AND..., GT..., SHL..., SEL, MUX, MIN, MAX, LIMIT), each
+    /// computed as the VM computes it.
     std::optional<Constant> value(const ast::Expression& expression, const sema::Type& type) const;
+    /// The constant the typing stage recorded for `expression` (constant_of), as a value of
+    /// `type`; none where it recorded none or it does not convert.
+    std::optional<Constant> typed_as(const ast::Expression& expression,
+                                     const sema::Type& type) const;
+    /// Whether that constant, an integer, is a value of `type` unchanged (no bits cut).
+    bool typed_fits(const ast::Expression& expression, const sema::Type& type) const;
+    /// `constant`, a value of `from`, as a value of `to`, converted as the VM converts
+    /// (integers wrap, reals round to nearest and saturate); none between other kinds of value.
+    std::optional<Constant> convert(const Constant& constant, const sema::Type& from,
+                                    const sema::Type& to) const;
 
 private:
     /// How folded integer arithmetic wraps: in `bits` (32 or 64), signed or not; `type`: the
@@ -67,8 +79,11 @@ private:
     static const ast::Expression& initial_value(const ast::VariableDeclaration& declaration) {
         return *std::get<ast::ExpressionPtr>(declaration.initial_value->value);
     }
-    /// value() of a CONSTANT's initial value, as its declared type `own` computes it.
+    /// value() of a CONSTANT's initial value, as its declared type `own` computes it: folded
+    /// (folded_value), else the typing stage's constant of it (typed_as).
     std::optional<Constant> own_value(const ast::Expression& initial, const sema::Type& own) const;
+    std::optional<Constant> folded_value(const ast::Expression& initial,
+                                         const sema::Type& own) const;
     /// `evaluate()` with the constant `declaration` marked as being evaluated.
     template <typename Evaluate>
     auto within(const ast::VariableDeclaration& declaration, Evaluate evaluate) const
@@ -79,8 +94,31 @@ private:
         return value;
     }
 
+    /// A constant with the type the VM holds it in.
+    struct Held {
+        Constant value;
+        const sema::Type* type = nullptr;
+    };
+    /// An operand's constant as its operator reads it (codegen's operand_value): an
+    /// arithmetic operation on small integers as computed, in DINT; else its constant.
+    std::optional<Held> held(const ast::Expression& expression) const;
+    /// A binary operator's operands, as held, converted to `computed` and operated on there.
+    std::optional<Constant> operation(const ast::BinaryExpression& node,
+                                      const sema::Type& computed) const;
+    std::optional<Constant> unary_value(const ast::UnaryExpression& node) const;
+    std::optional<Constant> binary_value(const ast::Expression& expression,
+                                         const ast::BinaryExpression& node,
+                                         const sema::Type& type) const;
+    /// Time and date arithmetic (table 30), which has no operands_of.
+    std::optional<Constant> time_value(const ast::BinaryExpression& node,
+                                       const sema::Type& type) const;
+    std::optional<Constant> call_value(const ast::Expression& expression,
+                                       const ast::CallExpression& node) const;
+
     const TypedProgram& program_;
     sema::TypeTable& types_;
+    /// The values of arithmetic on small integers computed wider than their type (held()).
+    mutable std::unordered_map<const ast::Expression*, Constant> held_;
     mutable std::unordered_set<const ast::VariableDeclaration*> evaluating_;
 };
 

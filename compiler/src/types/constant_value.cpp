@@ -56,6 +56,44 @@ std::optional<Constant> as_constant(const std::optional<T>& value) {
 
 std::optional<Constant> ConstantEvaluator::own_value(const ast::Expression& initial,
                                                      const sema::Type& own) const {
+    if (auto folded = folded_value(initial, own)) {
+        return folded;
+    }
+    // What the folding above does not cover (a standard function, `SHL(WORD#1, 4)`): the
+    // constant the typing stage gave the initial value, stored into the constant's type.
+    return typed_as(initial, own);
+}
+
+std::optional<Constant> ConstantEvaluator::typed_as(const ast::Expression& expression,
+                                                    const sema::Type& type) const {
+    const Constant* constant = program_.constant_of(expression);
+    const sema::Type* from = program_.type_of(expression);
+    return constant != nullptr && from != nullptr ? convert(*constant, types_.unranged(*from), type)
+                                                  : std::nullopt;
+}
+
+bool ConstantEvaluator::typed_fits(const ast::Expression& expression,
+                                   const sema::Type& type) const {
+    const Constant* constant = program_.constant_of(expression);
+    const sema::Type* from = program_.type_of(expression);
+    const auto into = constant != nullptr && from != nullptr
+                          ? convert(*constant, types_.unranged(*from), type)
+                          : std::nullopt;
+    // The same number, whether held signed or unsigned.
+    const auto number = [](const Constant& c) -> std::optional<std::pair<bool, std::uint64_t>> {
+        if (const auto* i = std::get_if<std::int64_t>(&c)) {
+            return std::pair{*i < 0, static_cast<std::uint64_t>(*i)};
+        }
+        if (const auto* u = std::get_if<std::uint64_t>(&c)) {
+            return std::pair{false, *u};
+        }
+        return std::nullopt;
+    };
+    return into && number(*into) && number(*into) == number(*constant);
+}
+
+std::optional<Constant> ConstantEvaluator::folded_value(const ast::Expression& initial,
+                                                        const sema::Type& own) const {
     if (sema::is_real(own)) {
         return as_constant(real(initial, own.size == 4));
     }
@@ -91,20 +129,14 @@ std::optional<Constant> ConstantEvaluator::value(const ast::Expression& expressi
             return own_value(initial_value(*declaration), *own);
         });
     }
-    const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node);
-    const auto operand = unary != nullptr ? value(*unary->operand, type) : std::nullopt;
-    if (!operand || unary->op == ast::UnaryOperator::Plus) {
-        return operand;
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        return unary_value(*unary);
     }
-    if (unary->op == ast::UnaryOperator::Not) {
-        const bool* b = std::get_if<bool>(&*operand);
-        return b != nullptr ? std::optional<Constant>(!*b) : std::nullopt;
+    if (const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node)) {
+        return binary_value(expression, *binary, type);
     }
-    if (const auto* i = std::get_if<std::int64_t>(&*operand)) {
-        return static_cast<std::int64_t>(0 - static_cast<std::uint64_t>(*i));
-    }
-    if (const auto* d = std::get_if<double>(&*operand)) {
-        return -*d;
+    if (const auto* call = std::get_if<ast::CallExpression>(&expression.node)) {
+        return call_value(expression, *call);
     }
     return std::nullopt;
 }

@@ -1,6 +1,7 @@
 // Declarations typed: a POU's sections, TYPE declarations, STRUCT members, and every initial
 // value checked against its variable's type and folded as the image holds it (ed. 3, 6.5.1.3).
 
+#include "constant_evaluator.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "expression_typer.hpp"
 #include "initial_constant.hpp"
@@ -92,7 +93,7 @@ void ExpressionTyper::initializer(const ast::Initializer& initializer, const sem
                 const std::size_t errors = diagnostics_.error_count();
                 type(*element.repeat_count, &elementary(E::Dint));
                 if (errors == diagnostics_.error_count() &&
-                    program_.types().fold_integer(*element.repeat_count).value_or(-1) < 0) {
+                    program_.constants().fold_integer(*element.repeat_count).value_or(-1) < 0) {
                     diagnostics_.error(DiagnosticCode::E0313, element.repeat_count->range,
                                        "a repetition count must be a constant >= 0");
                 }

@@ -38,10 +38,8 @@ std::string mismatch(const char* what, const sema::Type& actual, const sema::Typ
     if (std::string_view(what) == "a CASE label") {
         return fmt::format("a CASE label must be a value of {}", target.name);
     }
-    if (std::string_view(what) == "an initial value") {
-        return fmt::format("the initial value must be a {} {}",
-                           target.kind == sema::TypeKind::Enum ? "value of" : "constant",
-                           target.name);
+    if (std::string_view(what) == "an initial value" && target.kind == sema::TypeKind::Enum) {
+        return fmt::format("the initial value must be a value of {}", target.name);
     }
     return fmt::format("a {} value cannot be used as {}{}", actual.name, target.name,
                        actual.kind == sema::TypeKind::Elementary &&
@@ -108,11 +106,9 @@ void ExpressionTyper::expect(const ast::Expression& expression, const sema::Type
         sema::is_integer(to)) {
         return;
     }
-    diagnostics_.error(std::string_view(what) == "an initial value" &&
-                               target.kind != sema::TypeKind::Enum
-                           ? DiagnosticCode::E0313
-                           : DiagnosticCode::E0301,
-                       expression.range, mismatch(what, *actual, target));
+    // A value of another type is E0301 also as an initial value (figure 11, the catalogue):
+    // `x : REAL := kDint` names both types, where E0313 said it was no constant.
+    diagnostics_.error(DiagnosticCode::E0301, expression.range, mismatch(what, *actual, target));
 }
 
 void ExpressionTyper::store(const ast::Expression& expression, const sema::Type& target,

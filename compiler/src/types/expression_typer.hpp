@@ -71,6 +71,9 @@ private:
                                     const sema::Type* expected);
     const sema::Type* conversion(const ast::Expression& expression, const ast::CallExpression& node,
                                  const std::string& name);
+    /// The type `expression` names where SIZEOF sizes one (`SIZEOF(Axis)`, `SIZEOF(LREAL)`):
+    /// a declared type, an FB, an elementary type; null if it names none.
+    const sema::Type* named_type(const ast::Expression& expression);
 
     /// Both operands of a binary operator (or all inputs of a generic function) typed and
     /// brought to their common type; untyped literals take the others' type.

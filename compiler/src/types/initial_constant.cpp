@@ -51,6 +51,12 @@ std::optional<std::vector<std::uint8_t>> text_bytes(const ast::Literal* literal,
     return integer_bytes(code, type.size);
 }
 
+/// The bytes of the typing stage's constant of `expression` (a standard function's,
+/// `SHL(WORD#1, 4)`) as a value of the scalar `type`; E0311 for an integer it does not hold.
+std::optional<std::variant<std::vector<std::uint8_t>, ConstantRefusal>>
+typed_bytes(const ast::Expression& expression, const sema::Type& type,
+            const ConstantEvaluator& constants);
+
 } // namespace
 
 std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) {
@@ -62,9 +68,41 @@ std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) 
     return bytes;
 }
 
+namespace {
+
+std::optional<std::variant<std::vector<std::uint8_t>, ConstantRefusal>>
+typed_bytes(const ast::Expression& expression, const sema::Type& type,
+            const ConstantEvaluator& constants) {
+    const auto value = constants.typed_as(expression, type);
+    if (!value || !sema::is_scalar(type) || type.kind == sema::TypeKind::Reference) {
+        return std::nullopt;
+    }
+    if ((sema::is_integer(type) || sema::is_bit_string(type)) &&
+        !constants.typed_fits(expression, type)) {
+        return ConstantRefusal{DiagnosticCode::E0311,
+                               fmt::format("the value does not fit in {}", type.name)};
+    }
+    return std::visit(
+        [&](const auto& v)
+            -> std::optional<std::variant<std::vector<std::uint8_t>, ConstantRefusal>> {
+            using V = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<V, bool>) {
+                return integer_bytes(v ? 1 : 0, type.size);
+            } else if constexpr (std::is_same_v<V, double>) {
+                return type.size == 4 ? bytes_of(static_cast<float>(v)) : bytes_of(v);
+            } else if constexpr (std::is_same_v<V, std::string>) {
+                return std::nullopt;
+            } else {
+                return integer_bytes(static_cast<std::int64_t>(v), type.size);
+            }
+        },
+        *value);
+}
+
+/// constant_bytes() as the evaluator folds the expression itself.
 std::variant<std::vector<std::uint8_t>, ConstantRefusal>
-constant_bytes(const ast::Expression& expression, const sema::Type& type,
-               const ConstantEvaluator& constants) {
+folded_bytes(const ast::Expression& expression, const sema::Type& type,
+             const ConstantEvaluator& constants) {
     const ConstantRefusal not_constant{
         DiagnosticCode::E0313, fmt::format("the initial value must be a constant {}", type.name)};
     const auto or_refused = [&](std::optional<std::vector<std::uint8_t>> bytes)
@@ -147,7 +185,37 @@ constant_bytes(const ast::Expression& expression, const sema::Type& type,
         return ConstantRefusal{DiagnosticCode::E0311,
                                fmt::format("the value {} does not fit in {}", value, type.name)};
     }
+    // Nor a value that the 32 bits of DINT's, UDINT's or DWORD's own arithmetic wrapped: out
+    // of the type's range as much as 100 + 100 in a SINT. The value in 64 bits tells (a
+    // LINT's or ULINT's own overflow is not seen: their constants are 64-bit patterns there).
+    const auto exact = type.kind != sema::TypeKind::Enum &&
+                               sema::scalar_of(type) != vm::Scalar::I64 &&
+                               sema::scalar_of(type) != vm::Scalar::U64
+                           ? constants.fold_integer(expression)
+                           : std::nullopt;
+    // value_or: GCC's -O2 cannot see that `exact` is set where it is read.
+    const std::int64_t wide = exact.value_or(0);
+    const bool wrapped = exact.has_value() && wide != value;
+    if (wrapped) {
+        return ConstantRefusal{DiagnosticCode::E0311,
+                               fmt::format("the value {} does not fit in {}", wide, type.name)};
+    }
     return integer_bytes(value, type.size);
+}
+
+} // namespace
+
+std::variant<std::vector<std::uint8_t>, ConstantRefusal>
+constant_bytes(const ast::Expression& expression, const sema::Type& type,
+               const ConstantEvaluator& constants) {
+    auto bytes = folded_bytes(expression, type, constants);
+    const auto* refusal = std::get_if<ConstantRefusal>(&bytes);
+    if (refusal != nullptr && refusal->code == DiagnosticCode::E0313) {
+        if (auto typed = typed_bytes(expression, type, constants)) {
+            return std::move(*typed);
+        }
+    }
+    return bytes;
 }
 
 } // namespace eposp::compiler::types

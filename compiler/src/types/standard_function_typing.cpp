@@ -1,6 +1,7 @@
 // The standard functions of IEC 61131-3 ed. 3, tables 22-36, typed by the ANY_* signature of their
 // family in the manifest (vm/stdlib/manifest.hpp).
 
+#include "constant_evaluator.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "expression_typer.hpp"
@@ -21,6 +22,28 @@ ast::ElementaryType elementary_of(vm::NativeType type) {
 }
 
 } // namespace
+
+const sema::Type* ExpressionTyper::named_type(const ast::Expression& expression) {
+    const auto* name = std::get_if<ast::NameExpression>(&expression.node);
+    if (name == nullptr) {
+        return nullptr;
+    }
+    if (const sema::Symbol* symbol = model_.resolved(name->name)) {
+        const bool type = symbol->kind == sema::SymbolKind::Type ||
+                          symbol->kind == sema::SymbolKind::StandardFunctionBlock ||
+                          (symbol->kind == sema::SymbolKind::Pou &&
+                           symbol->pou->kind == ast::PouKind::FunctionBlock);
+        return type ? program_.types().named(*symbol) : nullptr;
+    }
+    // An elementary type's name, which name resolution left unbound.
+    const auto elementary = ast::elementary_type_from_name(name->name.name);
+    if (!elementary) {
+        return nullptr;
+    }
+    return *elementary == E::String || *elementary == E::Wstring
+               ? &program_.types().string(80, *elementary == E::Wstring)
+               : &this->elementary(*elementary);
+}
 
 const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expression,
                                                  const ast::CallExpression& node,
@@ -237,7 +260,7 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
             return fail(DiagnosticCode::E0305, values[0]->range,
                         fmt::format("{} needs an array, not {}", name, array->name));
         }
-        const auto dimension = program_.types().fold_integer(*values[1]);
+        const auto dimension = program_.constants().fold_integer(*values[1]);
         if (array != nullptr &&
             (!dimension || *dimension < 1 ||
              *dimension > static_cast<std::int64_t>(array->dimensions.size()))) {
@@ -267,7 +290,8 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
     }
     case Family::Address:
     case Family::Size: {
-        const sema::Type* object = type(*values[0], nullptr);
+        const sema::Type* named = family == Family::Size ? named_type(*values[0]) : nullptr;
+        const sema::Type* object = named != nullptr ? named : type(*values[0], nullptr);
         if (object == nullptr) {
             return nullptr;
         }

@@ -1,6 +1,7 @@
 // Statements typed (ed. 3, 7.3.3): assignments, calls, conditions, CASE selectors and labels,
 // FOR bounds.
 
+#include "constant_evaluator.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "expression_typer.hpp"
 
@@ -16,11 +17,11 @@ void ExpressionTyper::statements(const ast::StatementList& list) {
 
 void ExpressionTyper::case_label_constant(const ast::CaseLabel& label, const sema::Type& selector) {
     // As code generation folds them: a ULINT or LWORD selector's labels as unsigned numbers.
-    sema::TypeTable& types = program_.types();
+    const ConstantEvaluator& constants = program_.constants();
     const bool unsigned64 = sema::scalar_of(selector) == vm::Scalar::U64;
     const auto folds = [&](const ast::ExpressionPtr& bound, bool as_unsigned) {
-        return !bound || (as_unsigned ? types.fold_unsigned(*bound).has_value()
-                                      : types.fold_integer(*bound).has_value());
+        return !bound || (as_unsigned ? constants.fold_unsigned(*bound).has_value()
+                                      : constants.fold_integer(*bound).has_value());
     };
     if (folds(label.low, unsigned64) && folds(label.high, unsigned64)) {
         return;

@@ -42,6 +42,10 @@ std::string dump_typed(const TypedProgram& program, const ast::CompilationUnit& 
         if (const sema::Type* type = program.type_of(expression)) {
             note = ":" + type->name;
         }
+        // The type a binary operator's operands are computed in (DINT for small integers).
+        if (const sema::Type* operands = program.operands_of(expression)) {
+            note += "@" + operands->name;
+        }
         if (const Constant* value = program.constant_of(expression)) {
             note += "=" + constant_text(*value);
         }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <gtest/gtest.h>
+#include <string>
 
 namespace eposp::compiler::test {
 namespace {
@@ -116,36 +117,45 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::uint64_t>("Main.half"), run.get<std::uint64_t>("Main.half_now"));
 }
 
-// Integers fold in the width they compute in at run time: DINT and narrower in 32 bits, UDINT
-// modulo 2^32; a constant named in a wider expression has its own type's value.
-TEST(ConstantInitialValues, IntegersWrapInTheWidthTheyComputeIn) {
-    StProgram run(R"(PROGRAM Main
+// A constant whose value is out of its type's range is refused in DINT and UDINT as in SINT
+// and INT (E0311, issue 17): they wrapped silently at 32 bits before, as the same expression
+// wraps at run time. A DINT constant in a wider expression still has its own type's value.
+TEST(ConstantInitialValues, IntegersOutOfTheirTypesRangeAreRefused) {
+    const std::string errors = diagnostics_of(R"(PROGRAM Main
 VAR CONSTANT
     kHalf : DINT := (2147483647 + 1) / 2;
     kWrapped : DINT := 2147483647 + 1;
-    kWide : LINT := kWrapped + 0;
     kUnsigned : UDINT := (UDINT#4294967295 + 1) / 2;
+    kMin : DINT := -2147483647 - 1;
 END_VAR
 VAR
-    big : DINT := 2147483647; top : UDINT := 4294967295;
-    half : DINT := kHalf; half_now : DINT;
-    wide : LINT := kWide; wide_now : LINT;
-    unsigned_half : UDINT := kUnsigned; unsigned_half_now : UDINT;
+    half : DINT := kHalf; unsigned_half : UDINT := kUnsigned; wrapped : DINT := kMin / -1;
 END_VAR
-half_now := (big + 1) / 2;
-wide_now := DINT_TO_LINT(big + 1) + 0;
-unsigned_half_now := (top + 1) / 2;
+half := 1;
+END_PROGRAM
+)");
+    std::size_t refused = 0;
+    for (auto at = errors.find("E0311"); at != std::string::npos;
+         at = errors.find("E0311", at + 1)) {
+        ++refused;
+    }
+    EXPECT_EQ(refused, 4U) << errors;
+    StProgram run(R"(PROGRAM Main
+VAR CONSTANT
+    kTop : DINT := 2147483647;
+    kWide : LINT := kTop + 1;
+END_VAR
+VAR
+    big : DINT := 2147483647;
+    wide : LINT := kWide; wide_now : LINT;
+END_VAR
+wide_now := DINT_TO_LINT(big) + 1;
 END_PROGRAM
 )");
     ASSERT_TRUE(run.ok()) << run.errors();
     ASSERT_TRUE(run.scans(1)) << run.fault();
-    EXPECT_EQ(run.get<std::int32_t>("Main.half"), -1'073'741'824);
-    EXPECT_EQ(run.get<std::int32_t>("Main.half"), run.get<std::int32_t>("Main.half_now"));
-    EXPECT_EQ(run.get<std::int64_t>("Main.wide"), INT32_MIN);
+    EXPECT_EQ(run.get<std::int64_t>("Main.wide"), 2'147'483'648);
     EXPECT_EQ(run.get<std::int64_t>("Main.wide"), run.get<std::int64_t>("Main.wide_now"));
-    EXPECT_EQ(run.get<std::uint32_t>("Main.unsigned_half"), 0U);
-    EXPECT_EQ(run.get<std::uint32_t>("Main.unsigned_half"),
-              run.get<std::uint32_t>("Main.unsigned_half_now"));
 }
 
 // NOT, AND, OR and XOR fold as they compute at run time: NOT flips the bits of its operand's
@@ -211,8 +221,9 @@ END_PROGRAM
     }
 }
 
-// Division by -1 folds as it computes at run time: MIN / -1 wraps to MIN, MOD -1 is 0 (also of
-// MIN), in array bounds, CONSTANTs and initial values alike. The type table's folder refused
+// Division by -1 folds as it computes at run time: LINT's MIN / -1 wraps to MIN (DINT's is out
+// of its range, E0311 above), MOD -1 is 0 (also of MIN), in array bounds, CONSTANTs and initial
+// values alike. The type table's folder refused
 // both as no constant: "array bounds must be constants", E0313 on the initial values (issue 17).
 TEST(ConstantInitialValues, DivisionByMinusOneFoldsAsAtRunTime) {
     StProgram run(R"(PROGRAM Main
@@ -226,13 +237,11 @@ VAR
     long_minus : LINT := -1;
     table : ARRAY[0..5 MOD -1] OF INT;
     none : DINT := kNone; none_now : DINT;
-    wrapped : DINT := kMin / -1; wrapped_now : DINT;
     rest : DINT := kMin MOD -1; rest_now : DINT;
     long_wrapped : LINT := kLongMin / -1; long_wrapped_now : LINT;
     long_rest : LINT := kLongMin MOD -1; long_rest_now : LINT;
 END_VAR
 none_now := 7 MOD minus;
-wrapped_now := min / minus;
 rest_now := min MOD minus;
 long_wrapped_now := long_min / long_minus;
 long_rest_now := long_min MOD long_minus;
@@ -242,11 +251,10 @@ END_PROGRAM
     ASSERT_TRUE(run.ok()) << run.errors();
     ASSERT_TRUE(run.scans(1)) << run.fault();
     EXPECT_EQ(run.get<std::int32_t>("Main.none"), 0);
-    EXPECT_EQ(run.get<std::int32_t>("Main.wrapped"), INT32_MIN);
     EXPECT_EQ(run.get<std::int32_t>("Main.rest"), 0);
     EXPECT_EQ(run.get<std::int64_t>("Main.long_wrapped"), INT64_MIN);
     EXPECT_EQ(run.get<std::int64_t>("Main.long_rest"), 0);
-    for (const char* name : {"none", "wrapped", "rest"}) {
+    for (const char* name : {"none", "rest"}) {
         EXPECT_EQ(run.get<std::int32_t>(std::string("Main.") + name),
                   run.get<std::int32_t>(std::string("Main.") + name + "_now"))
             << name;
@@ -292,20 +300,94 @@ END_PROGRAM
 }
 
 // NOT of a constant of a narrower type in a wider variable flips the narrower type's bits at
-// run time (NOT kLow is 16#F0 in a DWORD too); that is not folded in the variable's width,
-// which would give 16#FFFFFFF0, but refused as no constant of the variable's type.
-TEST(ConstantInitialValues, NotOfANarrowerConstantIsRefusedRatherThanFoldedWide) {
+// run time (NOT kLow is 16#F0 in a DWORD too); its initial value is that value, the typing
+// stage's constant of the expression (it was refused as no constant before, E0313).
+TEST(ConstantInitialValues, NotOfANarrowerConstantFlipsItsOwnBits) {
     StProgram run(R"(PROGRAM Main
 VAR CONSTANT
     kLow : BYTE := 16#0F;
 END_VAR
 VAR
-    wide : DWORD := NOT kLow;
+    wide : DWORD := NOT kLow; wide_now : DWORD;
 END_VAR
+wide_now := NOT kLow;
 END_PROGRAM
 )");
-    EXPECT_FALSE(run.ok());
-    EXPECT_NE(run.errors().find("E0313"), std::string::npos) << run.errors();
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1));
+    EXPECT_EQ(run.get<std::uint32_t>("Main.wide"), 0xF0U);
+    EXPECT_EQ(run.get<std::uint32_t>("Main.wide"), run.get<std::uint32_t>("Main.wide_now"));
+}
+
+// The pure standard functions in initial values and constants (issue 17): `SHL(WORD#1, 4)`
+// was E0313 (missing support). Each initial value is the value the same expression has at run
+// time.
+TEST(ConstantInitialValues, StandardFunctionsFoldAsTheyComputeAtRunTime) {
+    StProgram run(R"(PROGRAM Main
+VAR CONSTANT
+    kMask : WORD := SHL(WORD#1, 4);
+    kLimit : INT := LIMIT(0, 500, 100);
+END_VAR
+VAR
+    w : WORD := SHL(WORD#1, 4); w_now : WORD;
+    masked : WORD := kMask OR 1; masked_now : WORD;
+    limited : DINT := kLimit * 2; limited_now : DINT;
+    biggest : DINT := MAX(3, 7, -2); biggest_now : DINT;
+    rotated : BYTE := ROL(BYTE#1, -1); rotated_now : BYTE;
+    chosen : INT := MUX(2, 10, 20, 30); chosen_now : INT;
+    narrowed : INT := DINT_TO_INT(70000); narrowed_now : INT;
+    rounded : INT := REAL_TO_INT(2.5); rounded_now : INT;
+    half : REAL := INT_TO_REAL(3) / 2.0; half_now : REAL;
+    cut : DINT := TRUNC(-3.7); cut_now : DINT;
+    ok : BOOL := GT(3, 2, 1); ok_now : BOOL;
+    flipped : WORD := NOT(IN := kMask); flipped_now : WORD;
+END_VAR
+w_now := SHL(WORD#1, 4);
+masked_now := kMask OR 1;
+limited_now := kLimit * 2;
+biggest_now := MAX(3, 7, -2);
+rotated_now := ROL(BYTE#1, -1);
+chosen_now := MUX(2, 10, 20, 30);
+narrowed_now := DINT_TO_INT(70000);
+rounded_now := REAL_TO_INT(2.5);
+half_now := INT_TO_REAL(3) / 2.0;
+cut_now := TRUNC(-3.7);
+ok_now := GT(3, 2, 1);
+flipped_now := NOT(IN := kMask);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1));
+    EXPECT_EQ(run.get<std::uint16_t>("Main.w"), 16);
+    EXPECT_EQ(run.get<std::uint16_t>("Main.masked"), 17);
+    EXPECT_EQ(run.get<std::int32_t>("Main.limited"), 200);
+    EXPECT_EQ(run.get<std::int32_t>("Main.biggest"), 7);
+    EXPECT_EQ(run.get<std::uint8_t>("Main.rotated"), 0x80);
+    EXPECT_EQ(run.get<std::int16_t>("Main.chosen"), 30);
+    EXPECT_EQ(run.get<std::int16_t>("Main.narrowed"), 4464);
+    EXPECT_EQ(run.get<std::int16_t>("Main.rounded"), 2);
+    EXPECT_EQ(run.get<float>("Main.half"), 1.5F);
+    EXPECT_EQ(run.get<std::int32_t>("Main.cut"), -3);
+    EXPECT_EQ(run.get<std::uint8_t>("Main.ok"), 1);
+    EXPECT_EQ(run.get<std::uint16_t>("Main.flipped"), 0xFFEF);
+    for (const char* name : {"w", "masked", "flipped"}) {
+        EXPECT_EQ(run.get<std::uint16_t>(std::string("Main.") + name),
+                  run.get<std::uint16_t>(std::string("Main.") + name + "_now"))
+            << name;
+    }
+    for (const char* name : {"limited", "biggest", "cut"}) {
+        EXPECT_EQ(run.get<std::int32_t>(std::string("Main.") + name),
+                  run.get<std::int32_t>(std::string("Main.") + name + "_now"))
+            << name;
+    }
+    for (const char* name : {"chosen", "narrowed", "rounded"}) {
+        EXPECT_EQ(run.get<std::int16_t>(std::string("Main.") + name),
+                  run.get<std::int16_t>(std::string("Main.") + name + "_now"))
+            << name;
+    }
+    EXPECT_EQ(run.get<std::uint8_t>("Main.rotated"), run.get<std::uint8_t>("Main.rotated_now"));
+    EXPECT_EQ(run.get<float>("Main.half"), run.get<float>("Main.half_now"));
+    EXPECT_EQ(run.get<std::uint8_t>("Main.ok"), run.get<std::uint8_t>("Main.ok_now"));
 }
 
 } // namespace

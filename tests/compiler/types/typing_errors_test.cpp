@@ -120,9 +120,10 @@ INSTANTIATE_TEST_SUITE_P(
              "FUNCTION Show : INT\nVAR_INPUT v : ANY; END_VAR\nEND_FUNCTION\n" +
                  main_with("a : ARRAY[1..2] OF INT; i : INT;", "i := Show(a);"),
              {"E0305"}},
+        // A value of another type is E0301 as an initial value too (was E0313, issue 17).
         Case{"RealInitialValueOfAnInteger",
              "TYPE S : STRUCT m : INT := 1.5; END_STRUCT END_TYPE\n",
-             {"E0313"}},
+             {"E0301"}},
         Case{"SubrangeOfAReal", "TYPE T : REAL(1..5); END_TYPE\n", {"E0312"}},
         Case{"EmptySubrange", "TYPE T : INT(5..1); END_TYPE\n", {"E0314"}},
         Case{"ConstantDefinedThroughItself",

@@ -64,10 +64,11 @@ TEST(TypingLiterals, AConstantIsFoldedWhereItIsUsed) {
 
 // A CONSTANT has the value its own type computes for its initial value, by the one evaluator
 // that gives initial values and bounds theirs: a REAL one in single precision (it was the
-// LREAL 0.1), one defined by arithmetic too (it had none), a DINT sum wrapped (issue 17).
+// LREAL 0.1), one defined by arithmetic too (it had none), a DINT's least value as a sum (issue
+// 17; one beyond DINT's range is E0311, types_initial_value_ranges.st).
 TEST(TypingLiterals, AConstantHasTheValueItsOwnTypeComputes) {
     const auto t = type_source("PROGRAM Main\nVAR CONSTANT r : REAL := 0.1; k : INT := 2 * 3;\n"
-                               "w : DINT := 2147483647 + 1; END_VAR\n"
+                               "w : DINT := -2147483647 - 1; END_VAR\n"
                                "VAR x : LREAL; i : INT; d : DINT; y : REAL; END_VAR\n"
                                "x := r; i := k; d := w; y := 0.1;\nEND_PROGRAM\n");
     ASSERT_TRUE(t->front_end->program) << t->errors();

@@ -4,7 +4,7 @@
 #include "eposp/vm/instruction.hpp"
 #include "eposp/vm/program.hpp"
 #include "eposp/vm/task_state.hpp"
-#include "value_semantics.hpp"
+#include "eposp/vm/value_semantics.hpp"
 
 #include <cmath>
 #include <cstdint>

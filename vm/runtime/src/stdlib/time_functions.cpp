@@ -3,7 +3,7 @@
 // so ADD_TIME, SUB_TIME, ADD_DT_TIME, SUB_DT_TIME, SUB_DATE_DATE, SUB_TOD_TOD, SUB_DT_DT and
 // CONCAT_DATE_TOD are the Add64/Sub64 opcodes; only what needs more than one add is here.
 
-#include "../value_semantics.hpp"
+#include "eposp/vm/value_semantics.hpp"
 #include "library_parts.hpp"
 #include "time_units.hpp"
 

@@ -54,19 +54,6 @@ public:
     const Type* enumeration_of(const Symbol& value);
     std::optional<std::int64_t> enumerator(const Symbol& value);
 
-    /// The value of a constant integer expression (IntegerConstants): what bounds, CASE labels,
-    /// FOR steps and constant indices are.
-    std::optional<std::int64_t> fold_integer(const ast::Expression& expression) const {
-        return constants_.fold_integer(expression);
-    }
-    std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression) const {
-        return constants_.fold_unsigned(expression);
-    }
-    std::optional<std::uint64_t> fold_as(const ast::Expression& expression,
-                                         const Type& type) const {
-        return constants_.fold_as(expression, type);
-    }
-
     const SemanticModel& model() const { return model_; }
     /// Whether a declaration is in a CONSTANT section.
     bool is_constant(const ast::VariableDeclaration& declaration) const {

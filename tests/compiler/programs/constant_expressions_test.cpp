@@ -1,0 +1,210 @@
+// The typing stage's constant of an expression (TypedProgram::constant_of) is the value the VM
+// computes for it at run time (issue 17): operators (small integers in DINT inside an
+// expression, each operation wrapping at its width), conversions and the pure standard
+// functions. Each expression is assigned in a program that runs, and its constant compared with
+// the value the scan stored.
+
+#include "codegen_harness.hpp"
+#include "typing_helpers.hpp"
+
+#include <cstdint>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+namespace eposp::compiler::test {
+namespace {
+
+/// What an expression's value is read back as: stored into a LINT, ULINT, LWORD, LREAL, BOOL
+/// or TIME variable, which every type of its kind widens into exactly.
+enum class Kind { Signed, Unsigned, Bits, Real, Bool, Time };
+
+struct Folded {
+    Kind kind;
+    std::string expression;
+};
+
+const char* variable_type(Kind kind) {
+    switch (kind) {
+    case Kind::Signed:
+        return "LINT";
+    case Kind::Unsigned:
+        return "ULINT";
+    case Kind::Bits:
+        return "LWORD";
+    case Kind::Real:
+        return "LREAL";
+    case Kind::Bool:
+        return "BOOL";
+    default:
+        return "TIME";
+    }
+}
+
+const std::vector<Folded> kExpressions = {
+    // INT arithmetic: one operation wraps at INT, an operand inside an expression is DINT.
+    {Kind::Signed, "kI + kI"},
+    {Kind::Signed, "(kI + kI) / 2"},
+    {Kind::Signed, "kI * 3 MOD 1000"},
+    {Kind::Signed, "INT_TO_DINT(kI + kI)"},
+    {Kind::Signed, "-kI - kI"},
+    {Kind::Signed, "kMinD / -1"},
+    {Kind::Signed, "kMinD MOD -1"},
+    {Kind::Signed, "-kMinD"},
+    {Kind::Signed, "-7 MOD 3"},
+    {Kind::Signed, "7 / -2"},
+    {Kind::Signed, "kMaxD + 1"},
+    {Kind::Signed, "NOT kI"},
+    {Kind::Signed, "kI OR kI * 2"},
+    {Kind::Signed, "SINT#100 + SINT#100"},
+    {Kind::Signed, "ABS(kMinI)"},
+    {Kind::Signed, "ABS(-5)"},
+    {Kind::Signed, "MIN(3, -2, 5)"},
+    {Kind::Signed, "MAX(kI, 5)"},
+    {Kind::Signed, "LIMIT(0, 500, 100)"},
+    {Kind::Signed, "LIMIT(0, -5, 100)"},
+    {Kind::Signed, "SEL(TRUE, 1, 2)"},
+    {Kind::Signed, "MUX(2, 10, 20, 30)"},
+    {Kind::Signed, "MUX(7, 10, 20, 30)"},
+    {Kind::Signed, "MUX(-1, 10, 20, 30)"},
+    {Kind::Signed, "ADD(kI, kI, 1)"},
+    {Kind::Signed, "MUL(kI, 2)"},
+    {Kind::Signed, "SUB(1, 2)"},
+    {Kind::Signed, "DIV(-7, 2)"},
+    {Kind::Signed, "MOD(-7, 2)"},
+    {Kind::Signed, "MOVE(kI)"},
+    {Kind::Signed, "REAL_TO_INT(2.5)"},
+    {Kind::Signed, "REAL_TO_INT(3.5)"},
+    {Kind::Signed, "REAL_TO_INT(-2.5)"},
+    {Kind::Signed, "LREAL_TO_INT(1.0E30)"},
+    {Kind::Signed, "LREAL_TO_DINT(1234566.5)"},
+    {Kind::Signed, "TRUNC(-3.7)"},
+    {Kind::Signed, "TRUNC(1.0E10)"},
+    {Kind::Signed, "DINT_TO_INT(70000)"},
+    {Kind::Signed, "UDINT_TO_LINT(DINT_TO_UDINT(-1))"},
+    {Kind::Signed, "TO_SINT(200)"},
+    {Kind::Signed, "BOOL_TO_INT(TRUE)"},
+    {Kind::Signed, "SHL(INT#1, 15)"},
+    {Kind::Signed, "SHR(INT#-1, 1)"},
+    {Kind::Signed, "ROL(SINT#-128, 1)"},
+    {Kind::Signed, "SHL(DINT#1, kI)"},
+    {Kind::Unsigned, "UINT#65535 + 1"},
+    {Kind::Unsigned, "UDINT#0 - 1"},
+    {Kind::Unsigned, "(kU * kU) / 2"},
+    {Kind::Unsigned, "MAX(USINT#3, USINT#200)"},
+    {Kind::Unsigned, "ULINT#18446744073709551615 / 3"},
+    {Kind::Bits, "SHL(WORD#1, 4)"},
+    {Kind::Bits, "SHL(DWORD#1, 32)"},
+    {Kind::Bits, "SHL(DWORD#1, 4294967297)"},
+    {Kind::Bits, "SHL(kB, -1)"},
+    {Kind::Bits, "ROL(DWORD#1, 33)"},
+    {Kind::Bits, "ROL(DWORD#1, 4294967297)"},
+    {Kind::Bits, "ROL(BYTE#1, -1)"},
+    {Kind::Bits, "ROR(BYTE#1, 1)"},
+    {Kind::Bits, "SHR(LWORD#16#8000000000000000, 63)"},
+    {Kind::Bits, "NOT kB"},
+    {Kind::Bits, "NOT(IN := kB)"},
+    {Kind::Bits, "kB XOR 16#FF"},
+    {Kind::Bits, "DWORD#16#F0 AND 16#3C OR 1"},
+    {Kind::Bits, "AND(kB, 16#3, 16#7)"},
+    {Kind::Bits, "WORD_TO_BYTE(16#1234)"},
+    {Kind::Bits, "INT_TO_WORD(-1)"},
+    {Kind::Bits, "kB * 32"},
+    {Kind::Real, "1.0 / 3.0"},
+    {Kind::Real, "REAL#1.0 / 3.0"},
+    {Kind::Real, "REAL#16777216.0 + 1.0 + 1.0"},
+    {Kind::Real, "INT_TO_REAL(kI)"},
+    {Kind::Real, "DINT_TO_REAL(16777217)"},
+    {Kind::Real, "LINT_TO_REAL(kBig)"},
+    {Kind::Real, "ABS(-2.5)"},
+    {Kind::Real, "-kR * 2.0"},
+    {Kind::Real, "MAX(1.5, 2.5, -1.0)"},
+    {Kind::Real, "LIMIT(0.0, 7.5, 5.0)"},
+    {Kind::Real, "DINT_TO_LREAL(7) / 2.0"},
+    {Kind::Real, "DINT_TO_LREAL(kSeven / 2)"},
+    {Kind::Bool, "kI > 5"},
+    {Kind::Bool, "kI + kI > 0"},
+    {Kind::Bool, "GT(3, 2, 1)"},
+    {Kind::Bool, "GT(3, 2, 2)"},
+    {Kind::Bool, "EQ(kI, 30000)"},
+    {Kind::Bool, "NOT TRUE"},
+    {Kind::Bool, "NOT(IN := FALSE)"},
+    {Kind::Bool, "TRUE XOR FALSE"},
+    {Kind::Bool, "TRUE AND NOT FALSE OR FALSE"},
+    {Kind::Bool, "SEL(FALSE, TRUE, FALSE)"},
+    {Kind::Bool, "INT_TO_BOOL(5)"},
+    {Kind::Bool, "T#1s < T#2s"},
+    {Kind::Bool, "'abc' < 'abd'" /* strings are not folded: not in the table */},
+    {Kind::Time, "T#1ms * 4"},
+    {Kind::Time, "kT / -1"},
+    {Kind::Time, "T#1s - T#1500ms"},
+    {Kind::Time, "MAX(T#1s, T#2s)"},
+    {Kind::Time, "DT#2020-01-01-00:00:00 - DT#2019-12-31-23:00:00"},
+};
+
+const char* kConstants = R"(VAR CONSTANT
+    kI : INT := 30000; kMinI : INT := -32768; kMinD : DINT := -2147483648;
+    kMaxD : DINT := 2147483647; kU : UINT := 60000; kB : BYTE := 16#0F;
+    kR : REAL := 1.1; kSeven : DINT := 7; kBig : LINT := 9007199254740993; kT : TIME := T#5ms;
+END_VAR
+)";
+
+TEST(ConstantExpressions, TheTypingStagesConstantIsTheValueTheVmComputes) {
+    std::string declarations = "VAR\n";
+    std::string body;
+    for (std::size_t i = 0; i < kExpressions.size(); ++i) {
+        declarations +=
+            "    x" + std::to_string(i) + " : " + variable_type(kExpressions[i].kind) + ";\n";
+        body += "x" + std::to_string(i) + " := " + kExpressions[i].expression + ";\n";
+    }
+    const std::string source = "PROGRAM Main\n" + std::string(kConstants) + declarations +
+                               "END_VAR\n" + body + "END_PROGRAM\n";
+    const auto typed = type_source(source);
+    ASSERT_TRUE(typed->front_end->program) << typed->errors();
+    StProgram run(source);
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1));
+    for (std::size_t i = 0; i < kExpressions.size(); ++i) {
+        const Folded& folded = kExpressions[i];
+        const std::string path = "Main.x" + std::to_string(i);
+        const types::Constant* constant = typed->program().constant_of(typed->value(i));
+        if (folded.expression.starts_with("'")) {
+            EXPECT_EQ(constant, nullptr) << folded.expression;
+            continue;
+        }
+        ASSERT_NE(constant, nullptr) << folded.expression;
+        switch (folded.kind) {
+        case Kind::Signed:
+        case Kind::Time:
+            ASSERT_TRUE(std::holds_alternative<std::int64_t>(*constant)) << folded.expression;
+            EXPECT_EQ(std::get<std::int64_t>(*constant), run.get<std::int64_t>(path))
+                << folded.expression;
+            break;
+        case Kind::Unsigned:
+        case Kind::Bits:
+            ASSERT_TRUE(std::holds_alternative<std::uint64_t>(*constant)) << folded.expression;
+            EXPECT_EQ(std::get<std::uint64_t>(*constant), run.get<std::uint64_t>(path))
+                << folded.expression;
+            break;
+        case Kind::Real:
+            ASSERT_TRUE(std::holds_alternative<double>(*constant)) << folded.expression;
+            EXPECT_EQ(std::get<double>(*constant), run.get<double>(path)) << folded.expression;
+            break;
+        case Kind::Bool:
+            ASSERT_TRUE(std::holds_alternative<bool>(*constant)) << folded.expression;
+            EXPECT_EQ(std::get<bool>(*constant), run.get<std::uint8_t>(path) != 0)
+                << folded.expression;
+            break;
+        }
+    }
+}
+
+// A division by zero is no constant: it stops the task at run time.
+TEST(ConstantExpressions, ADivisionByZeroIsNoConstant) {
+    const auto typed = type_body("x : DINT; k : DINT;", "x := 1 / (k - k); x := DIV(1, 0);");
+    ASSERT_TRUE(typed->front_end->program) << typed->errors();
+    EXPECT_EQ(typed->program().constant_of(typed->value(1)), nullptr);
+}
+
+} // namespace
+} // namespace eposp::compiler::test
