@@ -390,16 +390,17 @@ private:
     /// Whether `node` is SIZEOF of an elementary type's name (`SIZEOF(LREAL)`), which is no
     /// name in scope; SIZEOF of a declared type's name resolves as a name.
     bool sizes_elementary_type(const ast::CallExpression& node, const Scope& scope) const {
-        const auto* callee = std::get_if<ast::NameExpression>(&node.callee->node);
-        const Symbol* function = callee != nullptr ? model_.resolved(callee->name) : nullptr;
-        if (function == nullptr || function->kind != SymbolKind::StandardFunction ||
-            function->name != "SIZEOF" || node.arguments.size() != 1 ||
-            node.arguments.front().name) {
+        if (node.arguments.size() != 1 || node.arguments.front().name) {
             return false;
         }
         const auto* name = std::get_if<ast::NameExpression>(&node.arguments.front().value->node);
-        return name != nullptr && scope.find(name->name.name) == nullptr &&
-               ast::elementary_type_from_name(name->name.name).has_value();
+        const auto* callee = std::get_if<ast::NameExpression>(&node.callee->node);
+        const Symbol* function =
+            name != nullptr && callee != nullptr ? model_.resolved(callee->name) : nullptr;
+        return function != nullptr && function->kind == SymbolKind::StandardFunction &&
+               function->name == "SIZEOF" &&
+               ast::elementary_type_from_name(name->name.name).has_value() &&
+               scope.find(name->name.name) == nullptr;
     }
 
     const Symbol* called_pou(const ast::Expression& callee) const {

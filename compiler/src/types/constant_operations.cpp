@@ -374,11 +374,6 @@ std::optional<Constant> ConstantEvaluator::unary_value(const ast::UnaryExpressio
 std::optional<Constant> ConstantEvaluator::binary_value(const ast::Expression& expression,
                                                         const ast::BinaryExpression& node,
                                                         const sema::Type& type) const {
-    // Most operations are on variables: no constant, looked up first.
-    if (program_.constant_of(*node.left) == nullptr ||
-        program_.constant_of(*node.right) == nullptr) {
-        return std::nullopt;
-    }
     const sema::Type* computed = program_.operands_of(expression);
     if (computed == nullptr) {
         return time_value(node, type);

@@ -133,6 +133,11 @@ std::optional<Constant> ConstantEvaluator::value(const ast::Expression& expressi
         return unary_value(*unary);
     }
     if (const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node)) {
+        // Most operations are on variables: no constant, and nothing more to look at.
+        if (program_.constant_of(*binary->left) == nullptr ||
+            program_.constant_of(*binary->right) == nullptr) {
+            return std::nullopt;
+        }
         return binary_value(expression, *binary, type);
     }
     if (const auto* call = std::get_if<ast::CallExpression>(&expression.node)) {

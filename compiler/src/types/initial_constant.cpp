@@ -188,7 +188,9 @@ folded_bytes(const ast::Expression& expression, const sema::Type& type,
     // Nor a value that the 32 bits of DINT's, UDINT's or DWORD's own arithmetic wrapped: out
     // of the type's range as much as 100 + 100 in a SINT. The value in 64 bits tells (a
     // LINT's or ULINT's own overflow is not seen: their constants are 64-bit patterns there).
-    const auto exact = type.kind != sema::TypeKind::Enum &&
+    const bool computed = std::holds_alternative<ast::BinaryExpression>(expression.node) ||
+                          std::holds_alternative<ast::UnaryExpression>(expression.node);
+    const auto exact = computed && type.kind != sema::TypeKind::Enum &&
                                sema::scalar_of(type) != vm::Scalar::I64 &&
                                sema::scalar_of(type) != vm::Scalar::U64
                            ? constants.fold_integer(expression)
