@@ -42,6 +42,12 @@ public:
         : tokens_(tokens), nodes_(file, diagnostics) {}
 
     ast::CompilationUnit compilation_unit(P::CompilationUnitContext& context);
+    /// A unit without declarations yet, whose arena the nodes made from now on go into.
+    ast::CompilationUnit unit() { return nodes_.unit(); }
+    template <typename Node, typename... Args>
+    ast::NodePtr<Node> make(Args&&... args) {
+        return nodes_.make<Node>(std::forward<Args>(args)...);
+    }
     /// Adds a TYPE block, POU, configuration or global variable list to `unit`.
     void library_element(P::LibraryElementContext& context, ast::CompilationUnit& unit);
 

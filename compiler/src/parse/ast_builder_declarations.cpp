@@ -9,7 +9,7 @@ ast::CompilationUnit build_ast(generated::StructuredTextParser::CompilationUnitC
 }
 
 ast::CompilationUnit AstBuilder::compilation_unit(P::CompilationUnitContext& context) {
-    ast::CompilationUnit unit{nodes_.file(), {}, {}, {}, {}};
+    ast::CompilationUnit unit = nodes_.unit();
     for (P::LibraryElementContext* element : context.libraryElement()) {
         library_element(*element, unit);
     }
@@ -219,7 +219,7 @@ ast::InitializerPtr AstBuilder::initializer(P::InitializerContext* context) {
     if (context == nullptr) {
         return nullptr;
     }
-    auto result = std::make_unique<ast::Initializer>();
+    auto result = make<ast::Initializer>();
     result->range = range(*context);
     if (auto* array = alternative<P::ArrayInitializerContext>(context)) {
         result->value = array_elements(array->arrayInitElement());

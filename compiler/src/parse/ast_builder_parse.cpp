@@ -25,7 +25,7 @@ std::optional<ast::CompilationUnit> parse_elements(StructuredTextParser& parser,
     parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(
         antlr4::atn::PredictionMode::SLL);
     AstBuilder builder(tokens, file, built);
-    ast::CompilationUnit unit{file, {}, {}, {}, {}};
+    ast::CompilationUnit unit = builder.unit();
     try {
         while (tokens.LA(1) != antlr4::Token::EOF) {
             builder.library_element(*parser.libraryElement(), unit);
@@ -45,7 +45,7 @@ ast::CompilationUnit parse_tokens_with_tree(antlr4::TokenSource& lexer, FileId f
     antlr4::CommonTokenStream tokens(&lexer);
     tokens.fill();
     if (!check_tokens(tokens.getTokens(), file, diagnostics)) {
-        return ast::CompilationUnit{file, {}, {}, {}, {}};
+        return ast::CompilationUnit{file, nullptr, {}, {}, {}, {}};
     }
     StructuredTextParser parser(&tokens);
     const auto unlimited = std::numeric_limits<std::size_t>::max();
@@ -61,7 +61,7 @@ ast::CompilationUnit parse_tokens_with_tree(antlr4::TokenSource& lexer, FileId f
         }
     }
     if (!unit || diagnostics.error_count() != errors_before) {
-        return ast::CompilationUnit{file, {}, {}, {}, {}};
+        return ast::CompilationUnit{file, nullptr, {}, {}, {}, {}};
     }
     for (const Diagnostic& diagnostic : built.all()) {
         diagnostics.report(diagnostic);

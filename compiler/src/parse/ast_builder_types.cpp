@@ -20,9 +20,9 @@ std::vector<ast::EnumValue> enum_values(AstBuilder& builder,
 // `(a, b)`, `UDINT (a, b)` (IEC) or `(a, b) UDINT` (TwinCAT): `base` is null for the first.
 ast::EnumType enum_type(AstBuilder& builder, P::IdentifierContext* base,
                         const std::vector<P::EnumValueContext*>& values) {
-    return {base != nullptr ? std::make_unique<ast::TypeSpec>(
-                                  NodeBuilder::named_type(builder.identifier(*base)))
-                            : nullptr,
+    return {base != nullptr
+                ? builder.make<ast::TypeSpec>(NodeBuilder::named_type(builder.identifier(*base)))
+                : nullptr,
             enum_values(builder, values)};
 }
 
@@ -36,8 +36,8 @@ ast::Subrange subrange(AstBuilder& builder, P::SubrangeContext& context) {
 ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
     const SourceRange where = range(context);
     const auto pointer_to = [&](ast::ReferenceType::Kind kind, P::TypeSpecContext& target) {
-        return ast::TypeSpec{
-            where, ast::ReferenceType{kind, std::make_unique<ast::TypeSpec>(type_spec(target))}};
+        return ast::TypeSpec{where,
+                             ast::ReferenceType{kind, make<ast::TypeSpec>(type_spec(target))}};
     };
     if (auto* structure = alternative<P::StructTypeContext>(&context)) {
         ast::StructType result;
@@ -54,7 +54,7 @@ ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
                      ? std::optional<ast::Subrange>(subrange(*this, *dimension->subrange()))
                      : std::nullopt});
         }
-        result.element = std::make_unique<ast::TypeSpec>(type_spec(*array->typeSpec()));
+        result.element = make<ast::TypeSpec>(type_spec(*array->typeSpec()));
         return {where, std::move(result)};
     }
     if (auto* reference = alternative<P::ReferenceTypeContext>(&context)) {
@@ -70,7 +70,7 @@ ast::TypeSpec AstBuilder::type_spec(P::TypeSpecContext& context) {
         return {where, enum_type(*this, typed_enum->identifier(), typed_enum->enumValue())};
     }
     if (auto* sub = alternative<P::SubrangeTypeContext>(&context)) {
-        return {where, ast::SubrangeType{std::make_unique<ast::TypeSpec>(NodeBuilder::named_type(
+        return {where, ast::SubrangeType{make<ast::TypeSpec>(NodeBuilder::named_type(
                                              identifier(*sub->identifier()))),
                                          subrange(*this, *sub->subrange())}};
     }

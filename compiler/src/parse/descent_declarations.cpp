@@ -34,7 +34,7 @@ bool is_qualifier(std::size_t token) {
 } // namespace
 
 std::optional<ast::CompilationUnit> DescentParser::compilation_unit() {
-    ast::CompilationUnit unit{nodes_.file(), {}, {}, {}, {}};
+    ast::CompilationUnit unit = nodes_.unit();
     try {
         while (!cursor_.at(antlr4::Token::EOF)) {
             library_element(unit);

@@ -52,7 +52,7 @@ ast::InitializerPtr DescentParser::declaration_initializer() {
 
 ast::InitializerPtr DescentParser::initializer() {
     const antlr4::Token& start = cursor_.peek();
-    auto result = std::make_unique<ast::Initializer>();
+    auto result = nodes_.make<ast::Initializer>();
     if (cursor_.accept(P::LEFT_BRACKET)) {
         result->value = array_elements();
         cursor_.expect(P::RIGHT_BRACKET);

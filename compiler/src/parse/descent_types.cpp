@@ -28,7 +28,7 @@ ast::TypeSpec DescentParser::type_spec(TypePlace place) {
         } while (cursor_.accept(P::COMMA));
         cursor_.expect(P::RIGHT_BRACKET);
         cursor_.expect(P::OF);
-        result.element = std::make_unique<ast::TypeSpec>(type_spec(place));
+        result.element = nodes_.make<ast::TypeSpec>(type_spec(place));
         return {range_from(start), std::move(result)};
     }
     case P::REF_TO:
@@ -39,7 +39,7 @@ ast::TypeSpec DescentParser::type_spec(TypePlace place) {
         if (kind == ast::ReferenceType::Kind::Pointer) {
             cursor_.expect(P::TO);
         }
-        auto target = std::make_unique<ast::TypeSpec>(type_spec(place));
+        auto target = nodes_.make<ast::TypeSpec>(type_spec(place));
         return {range_from(start), ast::ReferenceType{kind, std::move(target)}};
     }
     case P::LEFT_PAREN:
@@ -58,7 +58,7 @@ ast::TypeSpec DescentParser::type_spec(TypePlace place) {
     }
     // `DWORD (Red)` reads as a length in parentheses, the earlier alternative.
     if (at_identifier() && (cursor_.type(1) == P::COMMA || cursor_.type(1) == P::ASSIGN)) {
-        ast::EnumType result{std::make_unique<ast::TypeSpec>(NodeBuilder::named_type(std::move(base))),
+        ast::EnumType result{nodes_.make<ast::TypeSpec>(NodeBuilder::named_type(std::move(base))),
                              enum_values()};
         cursor_.expect(P::RIGHT_PAREN);
         return {range_from(start), std::move(result)};
@@ -67,10 +67,9 @@ ast::TypeSpec DescentParser::type_spec(TypePlace place) {
     if (cursor_.accept(P::RANGE)) {
         ast::ExpressionPtr high = expression();
         cursor_.expect(P::RIGHT_PAREN);
-        return {range_from(start),
-                ast::SubrangeType{std::make_unique<ast::TypeSpec>(
-                                      NodeBuilder::named_type(std::move(base))),
-                                  {std::move(value), std::move(high)}}};
+        return {range_from(start), ast::SubrangeType{nodes_.make<ast::TypeSpec>(
+                                                         NodeBuilder::named_type(std::move(base))),
+                                                     {std::move(value), std::move(high)}}};
     }
     cursor_.expect(P::RIGHT_PAREN);
     return nodes_.sized_type(range_from(start), std::move(base), std::move(value), true);
@@ -80,9 +79,9 @@ ast::TypeSpec DescentParser::type_spec(TypePlace place) {
 ast::TypeSpec DescentParser::enum_type(TypePlace place) {
     const antlr4::Token& start = cursor_.peek();
     const std::size_t close = cursor_.closing(0);
-    std::unique_ptr<ast::TypeSpec> base;
+    ast::TypeSpecPtr base;
     if (close != 0 && takes_enum_base(close + 1, place)) {
-        base = std::make_unique<ast::TypeSpec>(
+        base = nodes_.make<ast::TypeSpec>(
             NodeBuilder::named_type(nodes_.identifier(cursor_.peek(close + 1))));
     }
     cursor_.take();

@@ -15,11 +15,6 @@ namespace {
 
 using P = generated::StructuredTextParser;
 
-template <typename Node>
-ast::ExpressionPtr make(SourceRange range, Node node) {
-    return std::make_unique<ast::Expression>(ast::Expression{range, std::move(node)});
-}
-
 SourceRange span(const SourceRange& first, const SourceRange& last) {
     return {first.file, first.begin, last.end};
 }
@@ -140,6 +135,12 @@ bool is_string_type(ast::ElementaryType type) {
 
 } // namespace
 
+ast::CompilationUnit NodeBuilder::unit() {
+    ast::CompilationUnit unit{file_, std::make_unique<ast::NodeArena>(), {}, {}, {}, {}};
+    arena_ = unit.nodes.get();
+    return unit;
+}
+
 SourceRange NodeBuilder::range(const antlr4::Token& token) const {
     return token_range(file_, token);
 }
@@ -165,7 +166,7 @@ ast::Identifier NodeBuilder::identifier(const antlr4::Token& token) {
 ast::ExpressionPtr NodeBuilder::literal(const antlr4::Token& token) {
     const SourceRange where = range(token);
     const auto literal = [&](ast::Literal value) {
-        return make(where, ast::LiteralExpression{std::move(value)});
+        return expression(where, ast::LiteralExpression{std::move(value)});
     };
     switch (token.getType()) {
     case P::TRUE:
@@ -250,14 +251,14 @@ std::optional<ast::DirectAddress> NodeBuilder::direct_address(const antlr4::Toke
 ast::ExpressionPtr NodeBuilder::name(const antlr4::Token& token) {
     ast::Identifier id = identifier(token);
     const SourceRange where = id.range;
-    return make(where, ast::NameExpression{std::move(id)});
+    return expression(where, ast::NameExpression{std::move(id)});
 }
 
 ast::ExpressionPtr NodeBuilder::binary(std::size_t op, ast::ExpressionPtr left,
                                        ast::ExpressionPtr right) {
     const SourceRange whole = span(left->range, right->range);
-    return make(whole,
-                ast::BinaryExpression{binary_operator(op), std::move(left), std::move(right)});
+    return expression(
+        whole, ast::BinaryExpression{binary_operator(op), std::move(left), std::move(right)});
 }
 
 ast::ExpressionPtr NodeBuilder::unary(const antlr4::Token& op, ast::ExpressionPtr value) {
@@ -269,12 +270,12 @@ ast::ExpressionPtr NodeBuilder::unary(const antlr4::Token& op, ast::ExpressionPt
     const ast::UnaryOperator kind = op.getType() == P::MINUS  ? ast::UnaryOperator::Negate
                                     : op.getType() == P::PLUS ? ast::UnaryOperator::Plus
                                                               : ast::UnaryOperator::Not;
-    return make(whole, ast::UnaryExpression{kind, std::move(value)});
+    return expression(whole, ast::UnaryExpression{kind, std::move(value)});
 }
 
 ast::ExpressionPtr NodeBuilder::member(ast::ExpressionPtr base, ast::Identifier name) {
     const SourceRange whole = span(base->range, name.range);
-    return make(whole, ast::MemberExpression{std::move(base), std::move(name)});
+    return expression(whole, ast::MemberExpression{std::move(base), std::move(name)});
 }
 
 ast::ExpressionPtr NodeBuilder::bit_access(ast::ExpressionPtr base, const antlr4::Token& dot,
@@ -289,43 +290,44 @@ ast::ExpressionPtr NodeBuilder::bit_access(ast::ExpressionPtr base, const antlr4
     }
     const auto number = static_cast<std::uint32_t>(value != nullptr ? value->magnitude : 0);
     const SourceRange whole = span(base->range, range(bit));
-    return make(whole, ast::BitAccessExpression{std::move(base), number});
+    return expression(whole, ast::BitAccessExpression{std::move(base), number});
 }
 
 ast::ExpressionPtr NodeBuilder::index(ast::ExpressionPtr base,
                                       std::vector<ast::ExpressionPtr> indices,
                                       const antlr4::Token& close) {
     const SourceRange whole = span(base->range, range(close));
-    return make(whole, ast::IndexExpression{std::move(base), std::move(indices)});
+    return expression(whole, ast::IndexExpression{std::move(base), std::move(indices)});
 }
 
 ast::ExpressionPtr NodeBuilder::call(ast::ExpressionPtr callee,
                                      std::vector<ast::Argument> arguments,
                                      const antlr4::Token& close) {
     const SourceRange whole = span(callee->range, range(close));
-    return make(whole, ast::CallExpression{std::move(callee), std::move(arguments)});
+    return expression(whole, ast::CallExpression{std::move(callee), std::move(arguments)});
 }
 
 ast::ExpressionPtr NodeBuilder::dereference(ast::ExpressionPtr base, const antlr4::Token& caret) {
     const SourceRange whole = span(base->range, range(caret));
-    return make(whole, ast::DereferenceExpression{std::move(base)});
+    return expression(whole, ast::DereferenceExpression{std::move(base)});
 }
 
 ast::ExpressionPtr NodeBuilder::operator_call(const antlr4::Token& callee,
                                               std::vector<ast::Argument> arguments,
                                               SourceRange whole) {
     const SourceRange where = range(callee);
-    auto name = make(where, ast::NameExpression{{callee.getText(), where}});
-    return make(whole, ast::CallExpression{std::move(name), std::move(arguments)});
+    auto name = expression(where, ast::NameExpression{{callee.getText(), where}});
+    return expression(whole, ast::CallExpression{std::move(name), std::move(arguments)});
 }
 
 ast::ExpressionPtr NodeBuilder::direct_address_expression(const antlr4::Token& token) {
     std::optional<ast::DirectAddress> address = direct_address(token);
-    return make(range(token), ast::DirectAddressExpression{address.value_or(ast::DirectAddress{})});
+    return expression(range(token),
+                      ast::DirectAddressExpression{address.value_or(ast::DirectAddress{})});
 }
 
 ast::ExpressionPtr NodeBuilder::reference(ast::ExpressionPtr inner, SourceRange whole) {
-    return make(whole, ast::ReferenceExpression{std::move(inner)});
+    return expression(whole, ast::ReferenceExpression{std::move(inner)});
 }
 
 void NodeBuilder::check_assignment_target(const ast::Expression& target) {
@@ -442,7 +444,7 @@ void NodeBuilder::locate(ast::VariableDeclaration& declaration, const antlr4::To
 
 ast::InitializerPtr NodeBuilder::bare_array_initializer(std::vector<ast::ArrayInitElement> elements,
                                                         SourceRange whole) {
-    auto result = std::make_unique<ast::Initializer>();
+    auto result = make<ast::Initializer>();
     result->range = whole;
     result->value = std::move(elements);
     warning(DiagnosticCode::W0101, result->range,
@@ -474,8 +476,8 @@ ast::TypeSpec NodeBuilder::sized_type(SourceRange whole, ast::Identifier base,
         name != nullptr && parenthesized) {
         std::vector<ast::EnumValue> values;
         values.push_back({std::move(name->name), nullptr});
-        return {whole, ast::EnumType{std::make_unique<ast::TypeSpec>(named_type(std::move(base))),
-                                     std::move(values)}};
+        return {whole,
+                ast::EnumType{make<ast::TypeSpec>(named_type(std::move(base))), std::move(values)}};
     }
     error(DiagnosticCode::E0108, base.range,
           "only STRING and WSTRING take a length; '" + base.name + "' does not");

@@ -5,6 +5,7 @@
 
 #include <Token.h>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace eposp::compiler {
@@ -18,6 +19,13 @@ public:
     NodeBuilder(FileId file, Diagnostics& diagnostics) : file_(file), diagnostics_(&diagnostics) {}
 
     FileId file() const { return file_; }
+    /// A unit without declarations yet, whose arena the nodes made from now on go into.
+    ast::CompilationUnit unit();
+    /// A node in the arena of the last `unit()`.
+    template <typename Node, typename... Args>
+    ast::NodePtr<Node> make(Args&&... args) {
+        return arena_->make<Node>(std::forward<Args>(args)...);
+    }
     SourceRange range(const antlr4::Token& token) const;
     /// From `first` to `last`; only `first` when the rule matched nothing (`last` before it).
     SourceRange range(const antlr4::Token& first, const antlr4::Token* last) const;
@@ -90,8 +98,13 @@ public:
 private:
     void error(DiagnosticCode code, const SourceRange& range, std::string message);
     void warning(DiagnosticCode code, const SourceRange& range, std::string message);
+    template <typename Node>
+    ast::ExpressionPtr expression(SourceRange range, Node node) {
+        return make<ast::Expression>(range, std::move(node));
+    }
 
     FileId file_;
+    ast::NodeArena* arena_ = nullptr;
     Diagnostics* diagnostics_;
     bool warned_about_on_ = false;
 };

@@ -124,7 +124,7 @@ ast::CompilationUnit parse_all(const std::vector<antlr4::Token*>& all, FileId fi
                                const std::function<antlr4::CommonTokenStream&()>& stream) {
     const std::size_t errors_before = diagnostics.error_count();
     if (!check_tokens(all, file, diagnostics)) {
-        return ast::CompilationUnit{file, {}, {}, {}, {}};
+        return ast::CompilationUnit{file, nullptr, {}, {}, {}, {}};
     }
     // What the parser says is kept apart until the file is known to parse.
     Diagnostics built(std::numeric_limits<std::size_t>::max());
@@ -132,10 +132,10 @@ ast::CompilationUnit parse_all(const std::vector<antlr4::Token*>& all, FileId fi
     std::optional<ast::CompilationUnit> unit = parser.compilation_unit();
     if (!unit) {
         report_syntax_errors(stream(), *parser.refused_at(), file, diagnostics, errors_before);
-        return ast::CompilationUnit{file, {}, {}, {}, {}};
+        return ast::CompilationUnit{file, nullptr, {}, {}, {}, {}};
     }
     if (diagnostics.error_count() != errors_before) {
-        return ast::CompilationUnit{file, {}, {}, {}, {}};
+        return ast::CompilationUnit{file, nullptr, {}, {}, {}, {}};
     }
     for (const Diagnostic& diagnostic : built.all()) {
         diagnostics.report(diagnostic);

@@ -3,10 +3,10 @@
 #include "eposp/compiler/ast/direct_address.hpp"
 #include "eposp/compiler/ast/expressions.hpp"
 #include "eposp/compiler/ast/identifier.hpp"
+#include "eposp/compiler/ast/node_arena.hpp"
 #include "eposp/compiler/ast/statements.hpp"
 #include "eposp/compiler/ast/types.hpp"
 
-#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -18,7 +18,7 @@ namespace eposp::compiler::ast {
 // (6.8).
 
 struct Initializer;
-using InitializerPtr = std::unique_ptr<Initializer>;
+using InitializerPtr = NodePtr<Initializer>;
 
 /// `3(0)` repeats its value three times; `3()` leaves three elements at their defaults.
 struct ArrayInitElement {

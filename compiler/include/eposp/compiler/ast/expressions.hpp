@@ -3,8 +3,8 @@
 #include "eposp/compiler/ast/direct_address.hpp"
 #include "eposp/compiler/ast/identifier.hpp"
 #include "eposp/compiler/ast/literals.hpp"
+#include "eposp/compiler/ast/node_arena.hpp"
 
-#include <memory>
 #include <optional>
 #include <variant>
 #include <vector>
@@ -12,7 +12,7 @@
 namespace eposp::compiler::ast {
 
 struct Expression;
-using ExpressionPtr = std::unique_ptr<Expression>;
+using ExpressionPtr = NodePtr<Expression>;
 
 /// Operators of IEC 61131-3 ed. 3, table 71.
 enum class UnaryOperator { Negate, Plus, Not };

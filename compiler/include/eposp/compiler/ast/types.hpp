@@ -3,8 +3,8 @@
 #include "eposp/compiler/ast/elementary_type.hpp"
 #include "eposp/compiler/ast/expressions.hpp"
 #include "eposp/compiler/ast/identifier.hpp"
+#include "eposp/compiler/ast/node_arena.hpp"
 
-#include <memory>
 #include <variant>
 #include <vector>
 
@@ -13,7 +13,7 @@ namespace eposp::compiler::ast {
 // Type specifications (IEC 61131-3 ed. 3, 6.4), as written in a TYPE block or a declaration.
 
 struct TypeSpec;
-using TypeSpecPtr = std::unique_ptr<TypeSpec>;
+using TypeSpecPtr = NodePtr<TypeSpec>;
 struct VariableDeclaration; // declarations.hpp: structure members are declared like variables
 
 struct ElementaryTypeRef {
