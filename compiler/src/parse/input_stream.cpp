@@ -3,6 +3,8 @@
 #include "../utf8.hpp"
 #include "ascii_prefix.hpp"
 
+#include <misc/Interval.h>
+
 namespace eposp::compiler {
 
 // As the runtime's load(), which drops a leading byte order mark, but decoded in one pass into a
@@ -32,21 +34,28 @@ InputStream::InputStream(const std::string& text) {
     _data.resize(static_cast<std::size_t>(next - _data.data()));
 }
 
-// The runtime converts every text from UTF-32 through std::wstring_convert.
+// The runtime converts every text from UTF-32 through std::wstring_convert. The copy has no
+// branch a character, so that it vectorises; whether all were ASCII is looked at after it.
+std::string InputStream::text(std::size_t start, std::size_t stop) {
+    const char32_t* from = _data.data() + start;
+    std::string text(stop - start + 1, '\0');
+    char32_t all = 0;
+    for (char& c : text) {
+        all |= *from;
+        c = static_cast<char>(*from++);
+    }
+    if (all >= 0x80) {
+        return ANTLRInputStream::getText(antlr4::misc::Interval(start, stop));
+    }
+    return text;
+}
+
 std::string InputStream::getText(const antlr4::misc::Interval& interval) {
     if (interval.a < 0 || interval.b < interval.a ||
         static_cast<std::size_t>(interval.b) >= _data.size()) {
         return ANTLRInputStream::getText(interval);
     }
-    const char32_t* from = _data.data() + interval.a;
-    std::string text(static_cast<std::size_t>(interval.b - interval.a + 1), '\0');
-    for (char& c : text) {
-        if (*from >= 0x80) {
-            return ANTLRInputStream::getText(interval);
-        }
-        c = static_cast<char>(*from++);
-    }
-    return text;
+    return text(static_cast<std::size_t>(interval.a), static_cast<std::size_t>(interval.b));
 }
 
 } // namespace eposp::compiler

@@ -16,8 +16,9 @@ public:
     /// The code points the lexer reads.
     std::u32string_view code_points() const { return _data; }
 
-    /// A token's text: ASCII (names, numbers, keywords: nearly always) copied as it is, anything
-    /// else converted to UTF-8.
+    /// The text of the code points `start` to `stop`, both inside the input: ASCII (names,
+    /// numbers, keywords: nearly always) copied as it is, anything else converted to UTF-8.
+    std::string text(std::size_t start, std::size_t stop);
     std::string getText(const antlr4::misc::Interval& interval) override;
 };
 

@@ -99,8 +99,8 @@ private:
     void error(DiagnosticCode code, const SourceRange& range, std::string message);
     void warning(DiagnosticCode code, const SourceRange& range, std::string message);
     template <typename Node>
-    ast::ExpressionPtr expression(SourceRange range, Node node) {
-        return make<ast::Expression>(range, std::move(node));
+    ast::ExpressionPtr expression(SourceRange range, Node&& node) {
+        return make<ast::Expression>(range, std::forward<Node>(node));
     }
 
     FileId file_;

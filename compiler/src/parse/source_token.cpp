@@ -1,7 +1,6 @@
 #include "source_token.hpp"
 
-#include <CharStream.h>
-#include <misc/Interval.h>
+#include "lexer.hpp"
 
 namespace eposp::compiler {
 
@@ -9,12 +8,20 @@ static_assert(sizeof(SourceToken) == 48);
 
 // As CommonToken::getText: the input's text, "<EOF>" past its end.
 std::string SourceToken::getText() const {
-    antlr4::CharStream* input = getInputStream();
-    const std::size_t size = input->size();
+    InputStream& input = source_->input();
+    const std::size_t size = input.code_points().size();
     if (start_ < size && stop_ < size) {
-        return input->getText(antlr4::misc::Interval(start_, stop_));
+        return input.text(start_, stop_);
     }
     return "<EOF>";
+}
+
+antlr4::TokenSource* SourceToken::getTokenSource() const {
+    return source_;
+}
+
+antlr4::CharStream* SourceToken::getInputStream() const {
+    return &source_->input();
 }
 
 std::string SourceToken::toString() const {
