@@ -695,23 +695,27 @@ std::optional<Value> PouGenerator::binary(const ast::Expression& expression,
         return native_result(native.signature, *real, dest);
     }
     // The typing stage's type both operands are brought to; none for TIME * n (table 30), a
-    // pointer moved by bytes and time arithmetic, whose operands keep their types.
+    // pointer moved by bytes and time arithmetic, whose operands keep their types and whose
+    // result type is the typing stage's too.
     const sema::Type* computed = program_.typed().operands_of(expression);
     const sema::Type* typed = program_.typed().type_of(expression);
-    if (computed == nullptr || typed == nullptr) {
+    if (typed == nullptr) {
+        program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
+        return std::nullopt;
+    }
+    if (computed == nullptr) {
         const auto left = operand_value(*node.left, hint);
         if (!left) {
             return std::nullopt;
         }
-        if ((node.op == Op::Multiply || node.op == Op::Divide) &&
-            (left->type->elementary == E::Time || left->type->elementary == E::Ltime)) {
-            return scale_time(node.op == Op::Multiply, *left, *node.right, dest);
+        if (node.op == Op::Multiply || node.op == Op::Divide) {
+            return scale_time(node.op == Op::Multiply, *left, *node.right, *typed, dest);
         }
-        if (left->type->kind == sema::TypeKind::Reference) {
+        if (typed->kind == sema::TypeKind::Reference) {
             return pointer_offset(node.op == Op::Add, *left, *node.right, dest);
         }
         const auto right = operand_value(*node.right, nullptr);
-        return right ? apply(node.op, *left, *right, dest) : std::nullopt;
+        return right ? time_arithmetic(node.op, *left, *right, *typed, dest) : std::nullopt;
     }
     const sema::Type& type = *computed;
     const bool comparison = node.op == Op::Less || node.op == Op::Greater ||
@@ -792,28 +796,6 @@ std::optional<Value> PouGenerator::pointer_offset(bool add, const Value& pointer
     return Value{result, pointer.type};
 }
 
-std::optional<Value> PouGenerator::scale_time(bool multiply, const Value& time,
-                                              const ast::Expression& factor,
-                                              const Destination* dest) {
-    const sema::Type& lint = types_.elementary(E::Lint);
-    const auto value = eval(factor, &lint);
-    if (!value) {
-        return std::nullopt;
-    }
-    const bool real = sema::is_real(*value->type);
-    if (!real && !sema::is_integer(*value->type)) {
-        program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
-        return std::nullopt;
-    }
-    const sema::Type& wide = real ? types_.elementary(E::Lreal) : lint;
-    const auto converted = explicit_convert(*value, wide, nullptr);
-    const auto native =
-        vm::stdlib::native_binding(multiply ? "MUL_TIME" : "DIV_TIME",
-                                   real ? vm::stdlib::Variant::Wide : vm::stdlib::Variant::Base);
-    call_native(native.name, native.signature, {time, *converted});
-    return native_result(native.signature, *time.type, dest);
-}
-
 std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& left,
                                          const Value& right, const Destination* dest) {
     using Op = ast::BinaryOperator;
@@ -837,37 +819,10 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         emit(op_width(family, type), result, left.operand, right.operand);
         return Value{result, &type};
     }
-    const sema::Type* result_type = &type;
-    const bool time_of_day = type.elementary == E::TimeOfDay || type.elementary == E::Ltod;
-    if (time_of_day && (oper == Op::Add || oper == Op::Subtract) &&
-        (right.type->elementary == E::Time || right.type->elementary == E::Ltime)) {
-        // Wraps around midnight: a native (vm/README).
-        const auto native =
-            vm::stdlib::native_binding(oper == Op::Add ? "ADD_TOD_TIME" : "SUB_TOD_TIME");
-        call_native(native.name, native.signature, {left, right});
-        return native_result(native.signature, type, dest);
-    }
-    if (sema::is_time_like(type) || sema::is_time_like(*right.type)) {
-        // 6.6.2.5.5 table 30: ADD/SUB of durations and points in time, all in nanoseconds.
-        const bool durations =
-            (type.elementary == E::Time || type.elementary == E::Ltime) &&
-            (right.type->elementary == E::Time || right.type->elementary == E::Ltime);
-        const bool point_plus_duration =
-            sema::is_time_like(*right.type) &&
-            (right.type->elementary == E::Time || right.type->elementary == E::Ltime);
-        if (oper == Op::Subtract && !point_plus_duration &&
-            type.elementary == right.type->elementary) {
-            result_type = &types_.elementary(
-                type.elementary == E::Ltime || type.elementary == E::Ldt ? E::Ltime : E::Time);
-        } else if (!((oper == Op::Add || oper == Op::Subtract) &&
-                     (durations || point_plus_duration) && type.elementary != E::TimeOfDay &&
-                     type.elementary != E::Ltod && type.elementary != E::Date)) {
-            program_.refused_by_checks(DiagnosticCode::E0303); // types/operator_typing.cpp
-            return std::nullopt;
-        }
-    } else if (!sema::is_numeric(type) && !sema::is_bit_string(type)) {
+    if (!sema::is_numeric(type) && !sema::is_bit_string(type)) {
         // BYTE..LWORD count as unsigned integers of their width, as in CODESYS: libraries
-        // (CRCs, hashes, OSCAT) add and multiply DWORDs.
+        // (CRCs, hashes, OSCAT) add and multiply DWORDs. Times are time_arithmetic's, with the
+        // typing stage's result type.
         program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
         return std::nullopt;
     }
@@ -875,7 +830,7 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
         return std::nullopt;
     }
-    const Operand result = result_operand(*result_type, dest);
+    const Operand result = result_operand(type, dest);
     switch (oper) {
     case Op::Add:
         emit(op_width("Add", type), result, left.operand, right.operand);
@@ -893,7 +848,7 @@ std::optional<Value> PouGenerator::apply(ast::BinaryOperator oper, const Value& 
         emit(op("Mod", type), result, left.operand, right.operand);
         break;
     }
-    return Value{result, result_type};
+    return Value{result, &type};
 }
 
 } // namespace eposp::compiler::codegen

@@ -181,10 +181,8 @@ private:
     std::optional<Value> operand_as(const ast::Expression& expression, const sema::Type& type);
     /// The immediate of an untyped integer literal that fits 32 bits signed.
     std::optional<std::int32_t> small_literal(const ast::Expression& expression);
-    /// TIME * number, TIME / number.
-    std::optional<Value> scale_time(bool multiply, const Value& time, const ast::Expression& factor,
-                                    const Destination* dest);
-    /// A binary operator on operands already of their common type.
+    /// A binary operator on operands already of their common type, a number or bit string
+    /// (time arithmetic is time_arithmetic's).
     std::optional<Value> apply(ast::BinaryOperator op, const Value& left, const Value& right,
                                const Destination* dest);
     std::optional<Value> compare(ast::BinaryOperator op, const Value& left, const Value& right,
@@ -333,18 +331,31 @@ private:
     /// ADR(x): the address of x as POINTER TO its type; SIZEOF(x or T): its size in bytes.
     std::optional<Value> address_or_size(const types::CallTarget& target,
                                          const ast::Expression& call, const Arguments& arguments);
-    /// ADD_TIME, SUB_DT_DT, CONCAT_DATE_TOD, ... (time_functions.cpp).
-    std::optional<Value> time_function(const std::string& name, const Arguments& arguments,
-                                       const Destination* dest);
     /// The value of an integer expression as DINT (positions and lengths of the natives).
     std::optional<Value> as_dint(const ast::Expression& expression);
-    /// A conversion `X_TO_Y` between any two elementary types.
+    /// A conversion `X_TO_Y` between two types that convert explicitly (table 22: the typing
+    /// stage refuses the others, E0310, types/call_typing.cpp), or an internal one between
+    /// numbers and times.
     std::optional<Value> explicit_convert(const Value& value, const sema::Type& want,
                                           const Destination* dest);
     /// The arithmetic, comparison, logic, shift, ABS, TRUNC and real functions of `target`.
     std::optional<Value> numeric_function(const types::CallTarget& target,
                                           const Arguments& arguments, const sema::Type* hint,
                                           const Destination* dest);
+
+    // --- time_functions.cpp ------------------------------------------------------------------
+    /// ADD_TIME, SUB_DT_DT, CONCAT_DATE_TOD, ...: the row's operand types, the typing stage's
+    /// result.
+    std::optional<Value> time_function(const types::CallTarget& target, const Arguments& arguments,
+                                       const Destination* dest);
+    /// `+` or `-` on durations and points in time (table 30) giving `result`, the typing
+    /// stage's type of the operation.
+    std::optional<Value> time_arithmetic(ast::BinaryOperator op, const Value& left,
+                                         const Value& right, const sema::Type& result,
+                                         const Destination* dest);
+    /// TIME * number, TIME / number giving `result`, the typing stage's type.
+    std::optional<Value> scale_time(bool multiply, const Value& time, const ast::Expression& factor,
+                                    const sema::Type& result, const Destination* dest);
 
     // --- selection_functions.cpp -------------------------------------------------------------
     /// MOVE, SEL, MAX, MIN, LIMIT, MUX.

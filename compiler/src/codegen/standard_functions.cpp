@@ -109,7 +109,7 @@ std::optional<Value> PouGenerator::standard_function(const types::CallTarget& ta
     case Family::Size:
         return address_or_size(target, call, arguments);
     case Family::Time:
-        return time_function(name, arguments, dest);
+        return time_function(target, arguments, dest);
     case Family::Select:
     case Family::Extreme:
     case Family::Limit:
@@ -177,15 +177,8 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
             call_native(native.name, native.signature, {Value{result, &target}, value});
             return Value{result, &target};
         }
-        // Table 22: a WSTRING converts to and from WCHAR only; a STRING to and from every
-        // other elementary type.
-        const sema::Type& other = to_string ? from : want;
-        const bool wchar = other.kind == sema::TypeKind::Elementary && other.elementary == E::Wchar;
-        const bool wide = to_string ? want.wide : from.wide;
-        if (!sema::is_scalar(other) || other.kind != sema::TypeKind::Elementary || wide != wchar) {
-            program_.refused_by_checks(DiagnosticCode::E0310); // types/call_typing.cpp
-            return std::nullopt;
-        }
+        // Table 22 (types/call_typing.cpp): a WSTRING to and from WCHAR only, a STRING to and
+        // from every other elementary type.
         if (to_string) {
             const Operand result = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
                                            dest->type->wide == want.wide
@@ -202,11 +195,6 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
             vm::stdlib::from_text_binding(sema::native_type(want), sema::char_width(from));
         call_native(native.name, native.signature, {value});
         return native_result(native.signature, want, dest);
-    }
-    if (!sema::is_scalar(from) || !sema::is_scalar(want) ||
-        from.kind == sema::TypeKind::Reference || want.kind == sema::TypeKind::Reference) {
-        program_.refused_by_checks(DiagnosticCode::E0310); // types/call_typing.cpp
-        return std::nullopt;
     }
     const bool from_time = sema::is_time_like(from);
     const bool to_time = sema::is_time_like(want);

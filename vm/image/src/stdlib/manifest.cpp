@@ -1,5 +1,5 @@
-// The rows of the standard-library manifest (manifest.hpp): IEC 61131-3 ed. 3, tables 22-36
-// (functions) and 43-46 (function blocks).
+// The standard-library manifest (manifest.hpp): the rows of the function blocks (IEC 61131-3
+// ed. 3, tables 43-46; those of the functions are manifest.hpp's, constant) and the bindings.
 
 #include "eposp/vm/stdlib/manifest.hpp"
 
@@ -13,139 +13,6 @@ namespace {
 using F = Family;
 using N = NativeNaming;
 using T = NativeType;
-using Op = Operation;
-constexpr std::uint8_t X = kExtensible;
-
-constexpr StandardFunction one(std::string_view name, Family family,
-                               NativeNaming naming = N::None) {
-    return {.name = name, .family = family, .inputs = {"IN"}, .naming = naming};
-}
-
-/// IN1, IN2, … from `min` to `max` inputs.
-constexpr StandardFunction numbered(std::string_view name, Family family, std::uint8_t min,
-                                    std::uint8_t max, Operation operation = Op::None) {
-    return {.name = name,
-            .family = family,
-            .numbered_from = 1,
-            .min_inputs = min,
-            .max_inputs = max,
-            .operation = operation};
-}
-
-constexpr StandardFunction fixed(std::string_view name, Family family,
-                                 std::array<std::string_view, 4> inputs, std::uint8_t count,
-                                 Operation operation = Op::None) {
-    return {.name = name,
-            .family = family,
-            .inputs = inputs,
-            .min_inputs = count,
-            .max_inputs = count,
-            .operation = operation};
-}
-
-constexpr StandardFunction real2(StandardFunction row) {
-    row.naming = N::RealWidth;
-    return row;
-}
-
-constexpr StandardFunction text(StandardFunction row, std::uint8_t texts, TextResult result) {
-    row.naming = N::CharWidth;
-    row.texts = texts;
-    row.text_result = result;
-    return row;
-}
-
-/// A table 30 function: IN1, IN2; a native where one add is not all it does.
-constexpr StandardFunction time(std::string_view name, Operation operation, TimeRule rule,
-                                NativeNaming naming = N::None) {
-    StandardFunction row = numbered(name, F::Time, 2, 2, operation);
-    row.time = rule;
-    row.naming = naming;
-    return row;
-}
-
-constexpr std::array kFunctions{
-    // Table 23-24 (numeric): SQRT is an opcode, the others natives per real type.
-    one("ABS", F::Absolute),
-    one("SQRT", F::Real),
-    one("LN", F::Real, N::RealWidth),
-    one("LOG", F::Real, N::RealWidth),
-    one("EXP", F::Real, N::RealWidth),
-    one("SIN", F::Real, N::RealWidth),
-    one("COS", F::Real, N::RealWidth),
-    one("TAN", F::Real, N::RealWidth),
-    one("ASIN", F::Real, N::RealWidth),
-    one("ACOS", F::Real, N::RealWidth),
-    one("ATAN", F::Real, N::RealWidth),
-    real2(fixed("ATAN2", F::Real, {"Y", "X"}, 2)),
-    real2(numbered("EXPT", F::Power, 2, 2)),
-    // Table 24 (arithmetic): ADD and MUL extensible.
-    numbered("ADD", F::Arithmetic, 2, X, Op::Add),
-    numbered("MUL", F::Arithmetic, 2, X, Op::Multiply),
-    numbered("SUB", F::Arithmetic, 2, 2, Op::Subtract),
-    numbered("DIV", F::Arithmetic, 2, 2, Op::Divide),
-    numbered("MOD", F::Arithmetic, 2, 2, Op::Modulo),
-    one("MOVE", F::Move),
-    // Tables 26-27 (bit shift, bitwise).
-    fixed("SHL", F::Shift, {"IN", "N"}, 2, Op::ShiftLeft),
-    fixed("SHR", F::Shift, {"IN", "N"}, 2, Op::ShiftRight),
-    fixed("ROL", F::Shift, {"IN", "N"}, 2, Op::RotateLeft),
-    fixed("ROR", F::Shift, {"IN", "N"}, 2, Op::RotateRight),
-    numbered("AND", F::Logic, 2, X, Op::And),
-    numbered("OR", F::Logic, 2, X, Op::Or),
-    numbered("XOR", F::Logic, 2, X, Op::Xor),
-    StandardFunction{.name = "NOT", .family = F::Logic, .inputs = {"IN"}, .operation = Op::Not},
-    // Table 28 (selection).
-    fixed("SEL", F::Select, {"G", "IN0", "IN1"}, 3),
-    numbered("MAX", F::Extreme, 2, X, Op::Maximum),
-    numbered("MIN", F::Extreme, 2, X, Op::Minimum),
-    fixed("LIMIT", F::Limit, {"MN", "IN", "MX"}, 3),
-    StandardFunction{.name = "MUX",
-                     .family = F::Multiplex,
-                     .inputs = {"K"},
-                     .numbered_from = 0,
-                     .min_inputs = 3,
-                     .max_inputs = X},
-    // Table 29 (comparison).
-    numbered("GT", F::Comparison, 2, X, Op::Greater),
-    numbered("GE", F::Comparison, 2, X, Op::GreaterEqual),
-    numbered("EQ", F::Comparison, 2, X, Op::Equal),
-    numbered("LE", F::Comparison, 2, X, Op::LessEqual),
-    numbered("LT", F::Comparison, 2, X, Op::Less),
-    numbered("NE", F::Comparison, 2, X, Op::NotEqual),
-    // Table 36 (character strings): texts first, then lengths and positions.
-    text(one("LEN", F::Text), 1, TextResult::Count),
-    text(fixed("LEFT", F::Text, {"IN", "L"}, 2), 1, TextResult::Largest),
-    text(fixed("RIGHT", F::Text, {"IN", "L"}, 2), 1, TextResult::Largest),
-    text(fixed("MID", F::Text, {"IN", "L", "P"}, 3), 1, TextResult::Largest),
-    text(numbered("CONCAT", F::Text, 2, X), X, TextResult::Sum),
-    text(fixed("INSERT", F::Text, {"IN1", "IN2", "P"}, 3), 2, TextResult::Sum),
-    text(fixed("DELETE", F::Text, {"IN", "L", "P"}, 3), 1, TextResult::Largest),
-    text(fixed("REPLACE", F::Text, {"IN1", "IN2", "L", "P"}, 4), 2, TextResult::Sum),
-    text(numbered("FIND", F::Text, 2, 2), 2, TextResult::Count),
-    // Table 22 (TRUNC) and the CODESYS pointer functions.
-    one("TRUNC", F::Truncate),
-    one("ADR", F::Address),
-    one("SIZEOF", F::Size),
-    // 6.5.3: the bounds of an array; positional only (code generation reads them in order).
-    StandardFunction{.name = "LOWER_BOUND", .family = F::Bound, .min_inputs = 2, .max_inputs = 2},
-    StandardFunction{.name = "UPPER_BOUND", .family = F::Bound, .min_inputs = 2, .max_inputs = 2},
-    // Table 30: all nanoseconds; TOD wraps around midnight (a native), a TIME scaled by a
-    // number is a native per factor type.
-    time("ADD_TIME", Op::Add, {T::Time, T::Time, T::Time}),
-    time("ADD_TOD_TIME", Op::Add, {T::TimeOfDay, T::Time, T::TimeOfDay}, N::Plain),
-    time("ADD_DT_TIME", Op::Add, {T::DateAndTime, T::Time, T::DateAndTime}),
-    time("SUB_TIME", Op::Subtract, {T::Time, T::Time, T::Time}),
-    time("SUB_DATE_DATE", Op::Subtract, {T::Date, T::Date, T::Time}),
-    time("SUB_TOD_TIME", Op::Subtract, {T::TimeOfDay, T::Time, T::TimeOfDay}, N::Plain),
-    time("SUB_TOD_TOD", Op::Subtract, {T::TimeOfDay, T::TimeOfDay, T::Time}),
-    time("SUB_DT_TIME", Op::Subtract, {T::DateAndTime, T::Time, T::DateAndTime}),
-    time("SUB_DT_DT", Op::Subtract, {T::DateAndTime, T::DateAndTime, T::Time}),
-    time("MUL_TIME", Op::Multiply, {T::Time, T::Time, T::Time, true}, N::Factor),
-    time("DIV_TIME", Op::Divide, {T::Time, T::Time, T::Time, true}, N::Factor),
-    // DATE and TOD are nanoseconds since 1970 and since midnight: their sum is the DT.
-    time("CONCAT_DATE_TOD", Op::Add, {T::Date, T::TimeOfDay, T::DateAndTime}),
-};
 
 constexpr StandardParameter in(std::string_view name, std::string_view type) {
     return {name, false, type};
@@ -196,18 +63,18 @@ std::optional<std::size_t> input_number(std::string_view input) {
     return number;
 }
 
-constexpr StandardFunction kConversion = one("TO", F::Truncate); // IN
+constexpr StandardFunction kConversion = rows::one("TO", F::Truncate); // IN
 
 } // namespace
 
 std::span<const StandardFunction> standard_functions() {
-    return kFunctions;
+    return rows::kFunctions;
 }
 
 const StandardFunction* find_standard_function(std::string_view name) {
-    const auto found = std::find_if(kFunctions.begin(), kFunctions.end(),
+    const auto found = std::find_if(rows::kFunctions.begin(), rows::kFunctions.end(),
                                     [&](const StandardFunction& row) { return row.name == name; });
-    return found != kFunctions.end() ? &*found : nullptr;
+    return found != rows::kFunctions.end() ? &*found : nullptr;
 }
 
 std::optional<std::size_t> input_position(const StandardFunction* function,
@@ -269,17 +136,13 @@ NativeBinding native_binding(const StandardFunction& function, Variant variant) 
     return binding;
 }
 
-NativeBinding native_binding(std::string_view name, Variant variant) {
-    const StandardFunction* function = find_standard_function(name);
-    if (function == nullptr) {
-        throw std::logic_error("no standard function " + std::string(name));
-    }
-    return native_binding(*function, variant);
+NativeBinding native_binding(NativeFunctionName name, Variant variant) {
+    return native_binding(name.row(), variant);
 }
 
 std::vector<NativeBinding> standard_function_natives() {
     std::vector<NativeBinding> natives;
-    for (const StandardFunction& function : kFunctions) {
+    for (const StandardFunction& function : rows::kFunctions) {
         if (function.naming == N::None) {
             continue;
         }
@@ -340,10 +203,11 @@ NativeBinding text_assignment_binding(CharWidth width) {
 }
 
 NativeBinding text_comparison_binding(Operation operation, CharWidth width) {
-    const auto row = std::find_if(kFunctions.begin(), kFunctions.end(), [&](const auto& f) {
-        return f.family == F::Comparison && f.operation == operation;
-    });
-    if (row == kFunctions.end()) {
+    const auto row =
+        std::find_if(rows::kFunctions.begin(), rows::kFunctions.end(), [&](const auto& f) {
+            return f.family == F::Comparison && f.operation == operation;
+        });
+    if (row == rows::kFunctions.end()) {
         throw std::logic_error("no comparison for the operation");
     }
     return {std::string(row->name) + "_" + text_name(width),
@@ -358,7 +222,7 @@ std::vector<NativeBinding> helper_natives() {
     std::vector<NativeBinding> natives;
     for (const CharWidth width : {CharWidth::Narrow, CharWidth::Wide}) {
         natives.push_back(text_assignment_binding(width));
-        for (const StandardFunction& function : kFunctions) {
+        for (const StandardFunction& function : rows::kFunctions) {
             if (function.family == F::Comparison) {
                 natives.push_back(text_comparison_binding(function.operation, width));
             }

@@ -12,20 +12,20 @@ namespace {
 
 /// REAL's natives are the manifest's Base variant (`SIN_REAL`), LREAL's the Wide (`SIN_LREAL`).
 template <typename F>
-NativeBinding real_binding(const char* function) {
+NativeBinding real_binding(NativeFunctionName function) {
     return native_binding(function, sizeof(F) == 4 ? Variant::Base : Variant::Wide);
 }
 
 // The functions come in as captureless lambdas: taking the address of a std:: function is not
 // allowed.
 template <typename F>
-void add_unary(NativeRegistry& registry, const char* name, F (*function)(F)) {
+void add_unary(NativeRegistry& registry, NativeFunctionName name, F (*function)(F)) {
     add_standard(registry, real_binding<F>(name),
                  [function](NativeArgs& args) { args.set_result(function(args.get<F>(0))); });
 }
 
 template <typename F>
-void add_binary(NativeRegistry& registry, const char* name, F (*function)(F, F)) {
+void add_binary(NativeRegistry& registry, NativeFunctionName name, F (*function)(F, F)) {
     add_standard(registry, real_binding<F>(name), [function](NativeArgs& args) {
         args.set_result(function(args.get<F>(0), args.get<F>(1)));
     });

@@ -147,6 +147,177 @@ constexpr Implementation implementation(const StandardFunction& function) {
     return function.naming == NativeNaming::None ? Implementation::Inline : Implementation::Native;
 }
 
+/// The rows of the standard functions: IEC 61131-3 ed. 3, tables 22-36.
+namespace rows {
+
+using F = Family;
+using N = NativeNaming;
+using T = NativeType;
+using Op = Operation;
+inline constexpr std::uint8_t X = kExtensible;
+
+constexpr StandardFunction one(std::string_view name, Family family,
+                               NativeNaming naming = N::None) {
+    return {.name = name, .family = family, .inputs = {"IN"}, .naming = naming};
+}
+
+/// IN1, IN2, … from `min` to `max` inputs.
+constexpr StandardFunction numbered(std::string_view name, Family family, std::uint8_t min,
+                                    std::uint8_t max, Operation operation = Op::None) {
+    return {.name = name,
+            .family = family,
+            .numbered_from = 1,
+            .min_inputs = min,
+            .max_inputs = max,
+            .operation = operation};
+}
+
+constexpr StandardFunction fixed(std::string_view name, Family family,
+                                 std::array<std::string_view, 4> inputs, std::uint8_t count,
+                                 Operation operation = Op::None) {
+    return {.name = name,
+            .family = family,
+            .inputs = inputs,
+            .min_inputs = count,
+            .max_inputs = count,
+            .operation = operation};
+}
+
+constexpr StandardFunction real2(StandardFunction row) {
+    row.naming = N::RealWidth;
+    return row;
+}
+
+constexpr StandardFunction text(StandardFunction row, std::uint8_t texts, TextResult result) {
+    row.naming = N::CharWidth;
+    row.texts = texts;
+    row.text_result = result;
+    return row;
+}
+
+/// A table 30 function: IN1, IN2; a native where one add is not all it does.
+constexpr StandardFunction time(std::string_view name, Operation operation, TimeRule rule,
+                                NativeNaming naming = N::None) {
+    StandardFunction row = numbered(name, F::Time, 2, 2, operation);
+    row.time = rule;
+    row.naming = naming;
+    return row;
+}
+
+/// Every standard function's row (standard_functions()), constant so that a row named in code is
+/// found when it is compiled (NativeFunctionName).
+inline constexpr std::array kFunctions{
+    // Table 23-24 (numeric): SQRT is an opcode, the others natives per real type.
+    one("ABS", F::Absolute),
+    one("SQRT", F::Real),
+    one("LN", F::Real, N::RealWidth),
+    one("LOG", F::Real, N::RealWidth),
+    one("EXP", F::Real, N::RealWidth),
+    one("SIN", F::Real, N::RealWidth),
+    one("COS", F::Real, N::RealWidth),
+    one("TAN", F::Real, N::RealWidth),
+    one("ASIN", F::Real, N::RealWidth),
+    one("ACOS", F::Real, N::RealWidth),
+    one("ATAN", F::Real, N::RealWidth),
+    real2(fixed("ATAN2", F::Real, {"Y", "X"}, 2)),
+    real2(numbered("EXPT", F::Power, 2, 2)),
+    // Table 24 (arithmetic): ADD and MUL extensible.
+    numbered("ADD", F::Arithmetic, 2, X, Op::Add),
+    numbered("MUL", F::Arithmetic, 2, X, Op::Multiply),
+    numbered("SUB", F::Arithmetic, 2, 2, Op::Subtract),
+    numbered("DIV", F::Arithmetic, 2, 2, Op::Divide),
+    numbered("MOD", F::Arithmetic, 2, 2, Op::Modulo),
+    one("MOVE", F::Move),
+    // Tables 26-27 (bit shift, bitwise).
+    fixed("SHL", F::Shift, {"IN", "N"}, 2, Op::ShiftLeft),
+    fixed("SHR", F::Shift, {"IN", "N"}, 2, Op::ShiftRight),
+    fixed("ROL", F::Shift, {"IN", "N"}, 2, Op::RotateLeft),
+    fixed("ROR", F::Shift, {"IN", "N"}, 2, Op::RotateRight),
+    numbered("AND", F::Logic, 2, X, Op::And),
+    numbered("OR", F::Logic, 2, X, Op::Or),
+    numbered("XOR", F::Logic, 2, X, Op::Xor),
+    StandardFunction{.name = "NOT", .family = F::Logic, .inputs = {"IN"}, .operation = Op::Not},
+    // Table 28 (selection).
+    fixed("SEL", F::Select, {"G", "IN0", "IN1"}, 3),
+    numbered("MAX", F::Extreme, 2, X, Op::Maximum),
+    numbered("MIN", F::Extreme, 2, X, Op::Minimum),
+    fixed("LIMIT", F::Limit, {"MN", "IN", "MX"}, 3),
+    StandardFunction{.name = "MUX",
+                     .family = F::Multiplex,
+                     .inputs = {"K"},
+                     .numbered_from = 0,
+                     .min_inputs = 3,
+                     .max_inputs = X},
+    // Table 29 (comparison).
+    numbered("GT", F::Comparison, 2, X, Op::Greater),
+    numbered("GE", F::Comparison, 2, X, Op::GreaterEqual),
+    numbered("EQ", F::Comparison, 2, X, Op::Equal),
+    numbered("LE", F::Comparison, 2, X, Op::LessEqual),
+    numbered("LT", F::Comparison, 2, X, Op::Less),
+    numbered("NE", F::Comparison, 2, X, Op::NotEqual),
+    // Table 36 (character strings): texts first, then lengths and positions.
+    text(one("LEN", F::Text), 1, TextResult::Count),
+    text(fixed("LEFT", F::Text, {"IN", "L"}, 2), 1, TextResult::Largest),
+    text(fixed("RIGHT", F::Text, {"IN", "L"}, 2), 1, TextResult::Largest),
+    text(fixed("MID", F::Text, {"IN", "L", "P"}, 3), 1, TextResult::Largest),
+    text(numbered("CONCAT", F::Text, 2, X), X, TextResult::Sum),
+    text(fixed("INSERT", F::Text, {"IN1", "IN2", "P"}, 3), 2, TextResult::Sum),
+    text(fixed("DELETE", F::Text, {"IN", "L", "P"}, 3), 1, TextResult::Largest),
+    text(fixed("REPLACE", F::Text, {"IN1", "IN2", "L", "P"}, 4), 2, TextResult::Sum),
+    text(numbered("FIND", F::Text, 2, 2), 2, TextResult::Count),
+    // Table 22 (TRUNC) and the CODESYS pointer functions.
+    one("TRUNC", F::Truncate),
+    one("ADR", F::Address),
+    one("SIZEOF", F::Size),
+    // 6.5.3: the bounds of an array; positional only (code generation reads them in order).
+    StandardFunction{.name = "LOWER_BOUND", .family = F::Bound, .min_inputs = 2, .max_inputs = 2},
+    StandardFunction{.name = "UPPER_BOUND", .family = F::Bound, .min_inputs = 2, .max_inputs = 2},
+    // Table 30: all nanoseconds; TOD wraps around midnight (a native), a TIME scaled by a
+    // number is a native per factor type.
+    time("ADD_TIME", Op::Add, {T::Time, T::Time, T::Time}),
+    time("ADD_TOD_TIME", Op::Add, {T::TimeOfDay, T::Time, T::TimeOfDay}, N::Plain),
+    time("ADD_DT_TIME", Op::Add, {T::DateAndTime, T::Time, T::DateAndTime}),
+    time("SUB_TIME", Op::Subtract, {T::Time, T::Time, T::Time}),
+    time("SUB_DATE_DATE", Op::Subtract, {T::Date, T::Date, T::Time}),
+    time("SUB_TOD_TIME", Op::Subtract, {T::TimeOfDay, T::Time, T::TimeOfDay}, N::Plain),
+    time("SUB_TOD_TOD", Op::Subtract, {T::TimeOfDay, T::TimeOfDay, T::Time}),
+    time("SUB_DT_TIME", Op::Subtract, {T::DateAndTime, T::Time, T::DateAndTime}),
+    time("SUB_DT_DT", Op::Subtract, {T::DateAndTime, T::DateAndTime, T::Time}),
+    time("MUL_TIME", Op::Multiply, {T::Time, T::Time, T::Time, true}, N::Factor),
+    time("DIV_TIME", Op::Divide, {T::Time, T::Time, T::Time, true}, N::Factor),
+    // DATE and TOD are nanoseconds since 1970 and since midnight: their sum is the DT.
+    time("CONCAT_DATE_TOD", Op::Add, {T::Date, T::TimeOfDay, T::DateAndTime}),
+};
+
+} // namespace rows
+
+/// The name of a standard function that has a native, checked when compiled: a string literal
+/// that names no row, or a row without a native (`native_binding("MUL_TIM")`,
+/// `native_binding("ADD")`), is no constant expression, so the program does not compile. A name
+/// known only at run time goes through find_standard_function.
+class NativeFunctionName {
+public:
+    // NOLINTNEXTLINE(google-explicit-constructor): a literal stands for its row at the call.
+    consteval NativeFunctionName(const char* name) : row_(find(name)) {}
+
+    constexpr const StandardFunction& row() const { return *row_; }
+
+private:
+    static consteval const StandardFunction* find(std::string_view name) {
+        for (const StandardFunction& row : rows::kFunctions) {
+            if (row.name == name && row.naming != NativeNaming::None) {
+                return &row;
+            }
+        }
+        no_standard_function_with_a_native_of_this_name();
+        return nullptr;
+    }
+    /// Not constexpr, never defined: reaching it in find() is the compile-time error.
+    static void no_standard_function_with_a_native_of_this_name();
+
+    const StandardFunction* row_;
+};
+
 /// Every standard function (not the conversions `*_TO_*`, which are too many to list and follow
 /// one rule: is_conversion in the compiler, one input IN).
 std::span<const StandardFunction> standard_functions();
@@ -166,8 +337,8 @@ struct NativeBinding {
 /// The native that implements `function` for `variant`: CONCAT is binary (folded left to right
 /// by the caller); a text function writes its text result through its first parameter.
 NativeBinding native_binding(const StandardFunction& function, Variant variant = Variant::Base);
-/// The binding of the native of the function named `name` (a programming error if none).
-NativeBinding native_binding(std::string_view name, Variant variant = Variant::Base);
+/// The binding of the native of the function named `name`.
+NativeBinding native_binding(NativeFunctionName name, Variant variant = Variant::Base);
 /// Every native binding of every row, all variants: what the VM's standard library registers
 /// for the standard functions.
 std::vector<NativeBinding> standard_function_natives();
