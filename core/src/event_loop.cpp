@@ -1,7 +1,5 @@
 #include "eposp/core/event_loop.hpp"
 
-#include "timer_queue.hpp"
-
 #include <algorithm>
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
@@ -11,9 +9,7 @@
 
 namespace eposp::core {
 
-EventLoop::EventLoop(Pace pace)
-    : pace_(pace), timers_(std::make_unique<TimerQueue>()),
-      wall_origin_(std::chrono::steady_clock::now()) {}
+EventLoop::EventLoop(Pace pace) : pace_(pace), wall_origin_(std::chrono::steady_clock::now()) {}
 
 EventLoop::~EventLoop() = default;
 
@@ -22,18 +18,13 @@ TimePoint EventLoop::wall_now() const {
         std::chrono::duration_cast<Duration>(std::chrono::steady_clock::now() - wall_origin_)};
 }
 
-TimePoint EventLoop::now() const {
-    // In real time, code outside a timer callback (an I/O handler, the caller before run())
-    // sees the wall clock; a timer callback sees its scheduled time unless something already
-    // saw a later wall time: the clock never goes backwards.
-    if (pace_ == Pace::RealTime && !dispatching_) {
-        now_ = std::max(now_, wall_now());
-    }
+TimePoint EventLoop::catch_up_with_wall_clock() const {
+    now_ = std::max(now_, wall_now());
     return now_;
 }
 
 TimerId EventLoop::at(TimePoint when, Callback fn) {
-    return timers_->schedule(std::max(when, now()), Duration::zero(), std::move(fn));
+    return timers_.schedule(std::max(when, now()), Duration::zero(), std::move(fn));
 }
 
 TimerId EventLoop::after(Duration delay, Callback fn) {
@@ -44,58 +35,11 @@ TimerId EventLoop::every(Duration period, TimePoint first, Callback fn) {
     if (period <= Duration::zero()) {
         throw std::invalid_argument("EventLoop::every: the period must be positive");
     }
-    return timers_->schedule(std::max(first, now()), period, std::move(fn));
+    return timers_.schedule(std::max(first, now()), period, std::move(fn));
 }
 
 TimerId EventLoop::every(Duration period, Callback fn) {
     return every(period, now() + period, std::move(fn));
-}
-
-TimerId EventLoop::add_alarm(Callback fn) {
-    return timers_->add_alarm(std::move(fn));
-}
-
-void EventLoop::arm(TimerId alarm, TimePoint when) {
-    timers_->arm(alarm, std::max(when, now()));
-}
-
-void EventLoop::disarm(TimerId alarm) {
-    timers_->disarm(alarm);
-}
-
-void EventLoop::remove_alarm(TimerId alarm) {
-    timers_->remove_alarm(alarm);
-}
-
-bool EventLoop::next_in_line() {
-    if (pace_ != Pace::Virtual || io_ || stop_requested_) {
-        return false;
-    }
-    const std::optional<TimePoint> next = timers_->next_time();
-    return !next || *next > now_;
-}
-
-bool EventLoop::advance_to(TimePoint when) {
-    if (!dispatching_ || when > run_end_ || pace_ != Pace::Virtual || io_ || stop_requested_) {
-        return false;
-    }
-    const std::optional<TimePoint> next = timers_->next_time();
-    if (next && *next <= when) {
-        return false;
-    }
-    now_ = std::max(now_, when);
-    ++dispatched_;
-    return true;
-}
-
-bool EventLoop::cancel(TimerId id) {
-    return timers_->cancel(id);
-}
-bool EventLoop::pending(TimerId id) const {
-    return timers_->pending(id);
-}
-std::size_t EventLoop::pending_count() const {
-    return timers_->size();
 }
 
 boost::asio::io_context& EventLoop::io() {
@@ -114,7 +58,7 @@ void EventLoop::stop() {
 
 void EventLoop::dispatch_next() {
     dispatching_ = true;
-    timers_->run_next(now_);
+    timers_.run_next(now_);
     dispatching_ = false;
     ++dispatched_;
 }
@@ -142,7 +86,7 @@ void EventLoop::run_virtual(TimePoint end) {
         if (io_) {
             io_->poll();
         }
-        const auto next = timers_->next_time();
+        const auto next = timers_.next_time();
         if (!next || *next > end) {
             if (end != TimePoint::max()) {
                 now_ = std::max(now_, end);
@@ -162,7 +106,7 @@ void EventLoop::run_real_time(TimePoint end) {
         if (stop_requested_) {
             return;
         }
-        const auto next = timers_->next_time();
+        const auto next = timers_.next_time();
         const TimePoint target = next ? std::min(*next, end) : end;
         if (target > wall_now()) {
             // Block on file descriptors until the target time; an I/O handler may schedule an
@@ -182,25 +126,6 @@ void EventLoop::run_real_time(TimePoint end) {
             return; // reached `end`
         }
     }
-}
-
-ScopedTimer::ScopedTimer(ScopedTimer&& other) noexcept
-    : loop_(std::exchange(other.loop_, nullptr)), id_(std::exchange(other.id_, TimerId{})) {}
-
-ScopedTimer& ScopedTimer::operator=(ScopedTimer&& other) noexcept {
-    if (this != &other) {
-        cancel();
-        loop_ = std::exchange(other.loop_, nullptr);
-        id_ = std::exchange(other.id_, TimerId{});
-    }
-    return *this;
-}
-
-void ScopedTimer::cancel() {
-    if (loop_ && id_) {
-        loop_->cancel(id_);
-    }
-    id_ = TimerId{};
 }
 
 } // namespace eposp::core

@@ -1,4 +1,4 @@
-#include "timer_queue.hpp"
+#include "eposp/core/timer_queue.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -21,7 +21,7 @@ std::size_t TimerQueue::allocate() {
     return slot;
 }
 
-TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callback fn) {
+TimerId TimerQueue::schedule(TimePoint when, Duration period, Callback fn) {
     const std::size_t slot = allocate();
     Entry& entry = entries_[slot];
     callbacks_[slot] = std::move(fn);
@@ -32,31 +32,13 @@ TimerId TimerQueue::schedule(TimePoint when, Duration period, EventLoop::Callbac
     return TimerId{entry.generation << kSlotBits | (slot + 1)};
 }
 
-TimerId TimerQueue::add_alarm(EventLoop::Callback fn) {
+TimerId TimerQueue::add_alarm(Callback fn) {
     const std::size_t slot = allocate();
     Entry& entry = entries_[slot];
     callbacks_[slot] = std::move(fn);
     entry.period = Duration::zero();
     entry.alarm = true;
     return TimerId{entry.generation << kSlotBits | (slot + 1)};
-}
-
-void TimerQueue::arm(TimerId alarm, TimePoint when) {
-    Entry& entry = entries_[slot_of(alarm.value)];
-    if (!entry.live) {
-        entry.live = true;
-        ++live_count_;
-    }
-    push(when, slot_of(alarm.value));
-}
-
-void TimerQueue::disarm(TimerId alarm) {
-    Entry& entry = entries_[slot_of(alarm.value)];
-    entry.sequence = 0;
-    if (entry.live) {
-        entry.live = false;
-        --live_count_;
-    }
 }
 
 void TimerQueue::remove_alarm(TimerId alarm) {
@@ -77,19 +59,6 @@ void TimerQueue::free_slot(std::size_t slot) {
     free_slots_.push_back(slot);
 }
 
-const TimerQueue::Entry* TimerQueue::live(std::uint64_t id) const {
-    const std::uint64_t slot = slot_of(id);
-    if (slot >= entries_.size()) {
-        return nullptr;
-    }
-    const Entry& entry = entries_[slot];
-    return entry.live && entry.generation == id >> kSlotBits ? &entry : nullptr;
-}
-
-TimerQueue::Entry* TimerQueue::live(std::uint64_t id) {
-    return const_cast<Entry*>(std::as_const(*this).live(id));
-}
-
 // The slot's next timer gets a new generation, so that this id no longer names it.
 void TimerQueue::release(std::uint64_t id) {
     const std::size_t slot = slot_of(id);
@@ -99,27 +68,6 @@ void TimerQueue::release(std::uint64_t id) {
     ++entry.generation;
     --live_count_;
     free_slot(slot);
-}
-
-bool TimerQueue::cancel(TimerId id) {
-    const Entry* entry = live(id.value);
-    if (entry == nullptr || entry->alarm) {
-        return false;
-    }
-    release(id.value);
-    return true;
-}
-
-std::uint32_t TimerQueue::new_link(std::uint64_t sequence, std::size_t entry) {
-    const Link link{sequence, static_cast<std::uint32_t>(entry), kNoLink};
-    if (free_link_ == kNoLink) {
-        links_.push_back(link);
-        return static_cast<std::uint32_t>(links_.size() - 1);
-    }
-    const std::uint32_t index = free_link_;
-    free_link_ = links_[index].next;
-    links_[index] = link;
-    return index;
 }
 
 void TimerQueue::push(TimePoint when, std::size_t entry) {
@@ -147,25 +95,6 @@ void TimerQueue::push(TimePoint when, std::size_t entry) {
         hole = parent;
     }
     heap_[hole] = slot;
-}
-
-void TimerQueue::pop() {
-    Slot& top = heap_.front();
-    const std::uint32_t link = top.link;
-    const std::uint32_t next = links_[link].next;
-    links_[link].next = free_link_;
-    free_link_ = link;
-    if (link == tail_) {
-        tail_ = kNoLink;
-    }
-    if (next == kNoLink) {
-        pop_heap();
-        return;
-    }
-    // The run's next event follows the top directly in (time, sequence): still the least.
-    top.sequence = links_[next].sequence;
-    top.entry = links_[next].entry;
-    top.link = next;
 }
 
 void TimerQueue::pop_heap() {

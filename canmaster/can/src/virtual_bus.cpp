@@ -247,9 +247,7 @@ void VirtualBus::Impl::arbitrate() {
         }
     }
     if (winner != nullptr) {
-        if (suspension_end.id()) { // mostly none: an out-of-line call saved per frame
-            suspension_end.cancel();
-        }
+        suspension_end.cancel();
         start(*winner, *winning_frame);
     } else if (suspended_until) {
         suspension_end =
