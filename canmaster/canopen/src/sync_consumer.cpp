@@ -41,9 +41,7 @@ void SyncConsumer::on_frame(const can::Frame& frame) {
     if (wrong_length) {
         return;
     }
-    if (window_timer_.id()) { // none without a window: an out-of-line call saved per SYNC
-        window_timer_.cancel();
-    }
+    window_timer_.cancel();
     window_open_ = true;
     const core::Duration window = window_length_;
     if (window != core::Duration::zero()) {
