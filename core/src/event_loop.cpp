@@ -8,6 +8,24 @@
 #include <utility>
 
 namespace eposp::core {
+namespace {
+
+/// Sets a variable for a scope and gives it its value back when the scope ends, by a return or
+/// by an exception.
+template <typename T>
+class Restore {
+public:
+    Restore(T& variable, T value) : variable_(variable), saved_(std::exchange(variable, value)) {}
+    ~Restore() { variable_ = saved_; }
+    Restore(const Restore&) = delete;
+    Restore& operator=(const Restore&) = delete;
+
+private:
+    T& variable_;
+    T saved_;
+};
+
+} // namespace
 
 EventLoop::EventLoop(Pace pace) : pace_(pace), wall_origin_(std::chrono::steady_clock::now()) {}
 
@@ -57,23 +75,25 @@ void EventLoop::stop() {
 }
 
 void EventLoop::dispatch_next() {
-    dispatching_ = true;
-    timers_.run_next(now_);
-    dispatching_ = false;
+    {
+        // An inner run (a callback that runs the loop) leaves its callback dispatching.
+        const Restore<bool> dispatching(dispatching_, true);
+        timers_.run_next(now_);
+    }
     ++dispatched_;
 }
 
 std::uint64_t EventLoop::run_until(TimePoint end) {
     stop_requested_ = false;
     const std::uint64_t before = dispatched_;
-    // A callback may run the loop itself: its run's end holds again when that returns.
-    const TimePoint outer_end = std::exchange(run_end_, end);
+    // A callback may run the loop itself: its run's end holds again when that returns, also
+    // when a callback's exception leaves the inner run.
+    const Restore<TimePoint> run_end(run_end_, end);
     if (pace_ == Pace::Virtual) {
         run_virtual(end);
     } else {
         run_real_time(end);
     }
-    run_end_ = outer_end;
     return dispatched_ - before;
 }
 

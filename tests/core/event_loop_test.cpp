@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -314,16 +315,36 @@ TEST(EventLoop, ACallbackAdvancesOnlyWhenNothingElseIsDueByThen) {
     EXPECT_EQ(loop.now(), TimePoint{4ms});
 }
 
-// A callback that runs the loop itself: its own run's end holds again afterwards.
+// A callback that runs the loop itself: its own run's end holds again afterwards, and it is
+// still a callback that may go on in time.
 TEST(EventLoop, AnInnerRunLeavesTheOuterRunsEnd) {
     EventLoop loop;
     std::vector<bool> seen;
     loop.at(TimePoint{1ms}, [&] {
         loop.run_until(TimePoint{1ms}); // nothing more is due: returns at once
+        seen.push_back(loop.advance_to(TimePoint{2ms}));
+        loop.post([] {});
+        EXPECT_EQ(loop.run_until(TimePoint{2ms}), 1U); // runs the posted call
         seen.push_back(loop.advance_to(TimePoint{3ms}));
     });
     loop.run_until(TimePoint{4ms});
-    EXPECT_EQ(seen, std::vector<bool>{true});
+    EXPECT_EQ(seen, (std::vector<bool>{true, true}));
+}
+
+// A callback's exception leaves the inner run it was called from: the outer run's end holds
+// again all the same.
+TEST(EventLoop, AnInnerRunLeftByAnExceptionLeavesTheOuterRunsEnd) {
+    EventLoop loop;
+    std::vector<bool> seen;
+    loop.at(TimePoint{1ms}, [&] {
+        loop.post([] { throw std::runtime_error("a programming error"); });
+        EXPECT_THROW(loop.run_until(TimePoint{2ms}), std::runtime_error);
+        seen.push_back(loop.advance_to(TimePoint{5ms})); // past the outer run's end
+        seen.push_back(loop.advance_to(TimePoint{3ms})); // past the inner run's end only
+    });
+    loop.run_until(TimePoint{4ms});
+    EXPECT_EQ(seen, (std::vector<bool>{false, true}));
+    EXPECT_EQ(loop.now(), TimePoint{4ms});
 }
 
 TEST(EventLoop, RunReturnsWhenNoEventIsLeft) {
