@@ -1,6 +1,5 @@
 #include "eposp/can/virtual_bus.hpp"
 
-#include "eposp/can/arbitration.hpp"
 #include "eposp/can/error_frame.hpp"
 #include "virtual_bus_impl.hpp"
 
@@ -221,7 +220,6 @@ void VirtualBus::Impl::arbitrate() {
     compact_ports();
     const core::TimePoint now = loop.now();
     VirtualPort::Impl* winner = nullptr;
-    const Frame* winning_frame = nullptr;
     std::uint32_t winning_field = 0; // the winner's arbitration field (wins_arbitration)
     std::optional<core::TimePoint> suspended_until;
     for (std::size_t word = 0; word < words; ++word) {
@@ -237,18 +235,15 @@ void VirtualBus::Impl::arbitrate() {
                                            controller.suspended_until);
                 continue;
             }
-            const Frame* frame = controller.next_frame();
-            const std::uint32_t field = arbitration_field(*frame);
-            if (winner == nullptr || field < winning_field) {
+            if (winner == nullptr || controller.offered_field < winning_field) {
                 winner = &controller;
-                winning_frame = frame;
-                winning_field = field;
+                winning_field = controller.offered_field;
             }
         }
     }
     if (winner != nullptr) {
         suspension_end.cancel();
-        start(*winner, *winning_frame);
+        start(*winner, *winner->next_frame());
     } else if (suspended_until) {
         suspension_end =
             core::ScopedTimer(loop, loop.at(*suspended_until, [this] { request_arbitration(); }));
@@ -449,9 +444,7 @@ void VirtualBus::Impl::transmitted(Transmission& transmission) {
     VirtualPort::Impl& sender = *transmission.sender;
     if (transmission.from_queue && !sender.tx_queue.empty()) {
         sender.tx_queue.pop_front();
-        if (sender.tx_queue.empty()) {
-            refresh_queued(sender);
-        }
+        refresh_queued(sender);
     }
     ++sender.counts.tx_frames;
     settle_state(sender, change_counters(

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "eposp/can/arbitration.hpp"
 #include "eposp/can/error_counters.hpp"
 #include "eposp/can/frame_timing.hpp"
 #include "eposp/can/virtual_bus.hpp"
@@ -50,6 +51,9 @@ public:
     std::deque<Frame> rx_queue;
     bool paused = false;
     std::optional<Frame> babbled;
+    /// arbitration_field(*next_frame()) while there is one: set as that frame changes
+    /// (VirtualBus::Impl::refresh_queued()), so that arbitration compares numbers.
+    std::uint32_t offered_field = 0;
     ErrorCounters counters;
     /// Frame and overflow counts; counters and state are read live. rx_frames holds the frames
     /// handed to it; those the bus did not hand it (its filter rejects them and nothing else
@@ -141,12 +145,19 @@ public:
     // nothing to do; the bus visits the others only. One bit per slot of `ports`.
     void index_filter(VirtualPort::Impl& port);
     void refresh_attention(VirtualPort::Impl& port);
-    /// After its transmit queue or babbling changed: whether it takes part in arbitration.
-    /// Inline: every frame sent and every frame carried asks.
+    /// After the frame it offers (its transmit queue's head or its babbled frame) may have
+    /// changed: whether it takes part in arbitration, and with which arbitration field.
+    /// Inline: every frame carried and every frame queued on an empty queue asks.
     void refresh_queued(VirtualPort::Impl& port) {
         const std::uint64_t mask = std::uint64_t{1} << (port.slot % kSlotsPerWord);
         std::uint64_t& word = queued[port.slot / kSlotsPerWord];
-        word = port.next_frame() != nullptr ? word | mask : word & ~mask;
+        const Frame* offered = port.next_frame();
+        if (offered == nullptr) {
+            word &= ~mask;
+            return;
+        }
+        word |= mask;
+        port.offered_field = arbitration_field(*offered);
     }
 
     // The receptions of the controllers not visited: a frame counts for each controller that

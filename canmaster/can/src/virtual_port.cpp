@@ -32,7 +32,9 @@ SendStatus VirtualPort::send(const Frame& frame) {
         return SendStatus::TxOverflow;
     }
     impl_->tx_queue.push_back(frame);
-    bus_->impl_->refresh_queued(*impl_);
+    if (impl_->tx_queue.size() == 1) { // else the frame it offers stays the same
+        bus_->impl_->refresh_queued(*impl_);
+    }
     bus_->impl_->request_arbitration();
     return SendStatus::Queued;
 }
