@@ -70,12 +70,7 @@ Timeline timeline_of(Outcome outcome, const FrameLength& length, bool dominant_f
 
 // --- the controller's side ----------------------------------------------------------------
 
-void VirtualPort::Impl::receive(const Frame& frame, std::size_t capacity) {
-    if (!paused && rx_queue.empty()) {
-        ++counts.rx_frames;
-        port.deliver(frame);
-        return;
-    }
+void VirtualPort::Impl::queue_received(const Frame& frame, std::size_t capacity) {
     if (rx_queue.size() >= capacity) {
         ++counts.rx_overflows;
         report_overflow(Overflow::Receive, frame);
@@ -488,15 +483,16 @@ void VirtualBus::Impl::conclude_with_error(Transmission& transmission) {
 }
 
 void VirtualBus::Impl::finish(bool next_in_line) {
-    const Transmission transmission = std::move(*current);
+    // What is left to do with the transmission, read before it goes (not copied whole).
+    const std::size_t bits = current->timeline.bus_free;
+    const std::size_t stuff_bits = current->length.stuff_bits;
+    VirtualPort::Impl* const sender = current->sender;
     current.reset();
-    const std::size_t bits = transmission.timeline.bus_free;
     stats.bits += bits;
-    stats.stuff_bits += transmission.length.stuff_bits;
+    stats.stuff_bits += stuff_bits;
     stats.busy += bit * static_cast<std::int64_t>(bits);
-    if (transmission.sender != nullptr &&
-        transmission.sender->counters.state() == ErrorState::Passive) {
-        transmission.sender->suspended_until = at_bit(loop.now(), kSuspendTransmissionBits);
+    if (sender != nullptr && sender->counters.state() == ErrorState::Passive) {
+        sender->suspended_until = at_bit(loop.now(), kSuspendTransmissionBits);
     }
     // The deferred arbitration would run next anyway when nothing else is due now: the frames
     // that compete are the same, and the bus saves an event per frame.

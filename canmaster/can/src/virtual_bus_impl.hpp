@@ -34,7 +34,16 @@ public:
         return tx_queue.empty() ? nullptr : &tx_queue.front();
     }
     /// A frame taken from the wire: delivered now, or queued while paused or behind others.
-    void receive(const Frame& frame, std::size_t capacity);
+    /// Inline: a frame goes straight to the handler, the common case, for every receiver.
+    void receive(const Frame& frame, std::size_t capacity) {
+        if (!paused && rx_queue.empty()) {
+            ++counts.rx_frames;
+            port.deliver(frame);
+            return;
+        }
+        queue_received(frame, capacity);
+    }
+    void queue_received(const Frame& frame, std::size_t capacity);
     void report_overflow(Overflow overflow, const Frame& lost) const;
     void notify(ErrorState state) const { port.notify_error_state(state); }
 
