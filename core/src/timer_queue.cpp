@@ -133,8 +133,10 @@ void TimerQueue::drop_cancelled() {
 }
 
 void TimerQueue::run_next(TimePoint& now) {
-    drop_cancelled();
     assert(!heap_.empty());
+    if (!current(heap_.front())) { // the caller asked next_time() just before: mostly current
+        drop_cancelled();
+    }
     const Slot slot = heap_.front();
     pop();
     now = std::max(now, slot.when);
