@@ -149,33 +149,53 @@ constexpr auto kStuffTable8 = stuff_table<8>();
 constexpr auto kStuffTable7 = stuff_table<7>();
 constexpr auto kStuffTable3 = stuff_table<3>();
 
+/// CRC-15 sixteen bits at a time. Sixteen bits M into the register R leave (R * x^16 + M * x^15)
+/// mod the generator, that is V * x^15 with V = (R << 1) ^ M: one entry for each byte of V.
+constexpr std::uint16_t crc15_of_16_bits(std::uint32_t bits) {
+    std::uint16_t crc = 0;
+    for (int bit = 15; bit >= 0; --bit) {
+        crc = crc15_step(crc, ((bits >> bit) & 1U) != 0);
+    }
+    return crc;
+}
+template <unsigned Shift>
+constexpr std::array<std::uint16_t, 256> crc15_word_table() {
+    std::array<std::uint16_t, 256> table{};
+    for (unsigned byte = 0; byte < 256; ++byte) {
+        table[byte] = crc15_of_16_bits(byte << Shift);
+    }
+    return table;
+}
+constexpr auto kCrc15HighByte = crc15_word_table<8>();
+constexpr auto kCrc15LowByte = crc15_word_table<0>();
+
+/// The CRC register over the bits the CRC covers, taken as whole bytes with zeros ahead: zeros
+/// leave a register of 0 unchanged.
+class Crc15 {
+public:
+    void word(std::uint32_t bits) {
+        const std::uint32_t v = ((crc_ << 1) ^ bits) & 0xFFFFU;
+        crc_ = static_cast<std::uint16_t>(kCrc15HighByte[v >> 8] ^ kCrc15LowByte[v & 0xFFU]);
+    }
+    void byte(std::uint32_t bits) {
+        crc_ = static_cast<std::uint16_t>(
+            ((crc_ << 8) ^ kCrc15Table[((crc_ >> 7) ^ bits) & 0xFFU]) & kCrc15Mask);
+    }
+    std::uint16_t value() const { return crc_; }
+
+private:
+    std::uint16_t crc_ = 0;
+};
+
 constexpr unsigned kStateMask = 0x0F00;
 
-/// The CRC register and the stuffing state over the bits sent so far.
-class WireCounter {
+/// The stuffing state over the bits sent so far, a chunk at a time.
+class Stuffing {
 public:
-    /// The low `width` bits of `value` (19, 39 or 15; or 8), most significant first, through the
-    /// stuffing; the CRC covers them when asked. Zeros ahead of the bits leave a CRC register of
-    /// 0 unchanged, so the CRC takes the value as whole bytes while it is still 0 (the header).
-    void send(std::uint64_t value, unsigned width, bool covered_by_crc) {
-        const unsigned lead = width % 8;
-        const unsigned code = state_ >> 8;
-        if (lead == 7) {
-            stuff(kStuffTable7[(code << 7) + (value >> (width - 7) & 0x7FU)]);
-        } else if (lead == 3) {
-            stuff(kStuffTable3[(code << 3) + (value >> (width - 3) & 0x7U)]);
-        }
-        for (unsigned bit = width - lead; bit > 0; bit -= 8) {
-            stuff(kStuffTable8[state_ + (value >> (bit - 8) & 0xFFU)]);
-        }
-        if (covered_by_crc) {
-            for (unsigned bit = width + (8 - lead) % 8; bit > 0; bit -= 8) {
-                crc_byte(static_cast<std::uint8_t>(value >> (bit - 8)));
-            }
-        }
-    }
+    void bits3(std::uint32_t chunk) { take(kStuffTable3[((state_ >> 8) << 3) + (chunk & 0x7U)]); }
+    void bits7(std::uint32_t chunk) { take(kStuffTable7[((state_ >> 8) << 7) + (chunk & 0x7FU)]); }
+    void bits8(std::uint32_t chunk) { take(kStuffTable8[state_ + (chunk & 0xFFU)]); }
 
-    std::uint16_t crc() const { return static_cast<std::uint16_t>(crc_ & kCrc15Mask); }
     /// `sent`: the bits sent, before stuffing.
     FrameLength length(std::size_t sent) const {
         const unsigned code = state_ >> 8;
@@ -187,17 +207,11 @@ public:
     }
 
 private:
-    void stuff(std::uint16_t entry) {
+    void take(std::uint16_t entry) {
         state_ = entry & kStateMask;
         entries_ += entry;
     }
-    // The register's bits above the 15th are left as they come: only bits 7..14 pick the table
-    // entry, and crc() masks them off.
-    void crc_byte(std::uint8_t byte) {
-        crc_ = (crc_ << 8) ^ kCrc15Table[((crc_ >> 7) ^ byte) & 0xFFU];
-    }
 
-    std::uint32_t crc_ = 0;
     unsigned state_ = 0;   ///< StuffState::code() << 8: the row of the 8-bit table
     unsigned entries_ = 0; ///< the sum of the table entries taken: the stuff bits in its low byte
 };
@@ -205,28 +219,50 @@ private:
 } // namespace
 
 // The fields of append_frame_fields() packed into one word: SOF and the arbitration and control
-// fields are 19 bits in a standard frame, 39 in an extended one.
+// fields are 19 bits in a standard frame (3 + 8 + 8 for the stuffing, 16 + 16 with zeros ahead
+// for the CRC), 39 in an extended one (7 + 4 * 8; 8 + 16 + 16).
 FrameLength frame_length(const Frame& frame) {
     assert(frame.valid());
     const std::uint64_t rtr = frame.remote ? 1 : 0;
-    WireCounter wire;
+    Stuffing stuffing;
+    Crc15 crc;
     std::size_t header = 19;
     if (frame.extended) {
         // SOF 0, base identifier, SRR 1, IDE 1, identifier extension, RTR, r1 0, r0 0, DLC.
         header = 39;
-        wire.send(std::uint64_t{frame.id >> 18} << 27 | std::uint64_t{3} << 25 |
-                      std::uint64_t{frame.id & 0x3FFFF} << 7 | rtr << 6 | frame.dlc,
-                  39, true);
+        const std::uint64_t bits = std::uint64_t{frame.id >> 18} << 27 | std::uint64_t{3} << 25 |
+                                   std::uint64_t{frame.id & 0x3FFFF} << 7 | rtr << 6 | frame.dlc;
+        stuffing.bits7(static_cast<std::uint32_t>(bits >> 32));
+        stuffing.bits8(static_cast<std::uint32_t>(bits >> 24));
+        stuffing.bits8(static_cast<std::uint32_t>(bits >> 16));
+        stuffing.bits8(static_cast<std::uint32_t>(bits >> 8));
+        stuffing.bits8(static_cast<std::uint32_t>(bits));
+        crc.byte(static_cast<std::uint32_t>(bits >> 32));
+        crc.word(static_cast<std::uint32_t>(bits >> 16));
+        crc.word(static_cast<std::uint32_t>(bits));
     } else {
         // SOF 0, identifier, RTR, IDE 0, r0 0, DLC.
-        wire.send(std::uint64_t{frame.id} << 7 | rtr << 6 | frame.dlc, 19, true);
+        const std::uint32_t bits = frame.id << 7 | static_cast<std::uint32_t>(rtr) << 6 | frame.dlc;
+        stuffing.bits3(bits >> 16);
+        stuffing.bits8(bits >> 8);
+        stuffing.bits8(bits);
+        crc.word(bits >> 16);
+        crc.word(bits);
     }
     const std::span<const std::uint8_t> payload = frame.payload();
-    for (const std::uint8_t byte : payload) {
-        wire.send(byte, 8, true);
+    const std::size_t n = payload.size();
+    for (std::size_t i = 0; i + 1 < n; i += 2) {
+        stuffing.bits8(payload[i]);
+        stuffing.bits8(payload[i + 1]);
+        crc.word(std::uint32_t{payload[i]} << 8 | payload[i + 1]);
     }
-    wire.send(wire.crc(), 15, false);
-    return wire.length(header + 8 * payload.size() + 15);
+    if (n % 2 != 0) {
+        stuffing.bits8(payload[n - 1]);
+        crc.byte(payload[n - 1]);
+    }
+    stuffing.bits7(crc.value() >> 8U);
+    stuffing.bits8(crc.value());
+    return stuffing.length(header + 8 * n + 15);
 }
 
 core::Duration bit_duration(std::uint32_t bitrate) {
