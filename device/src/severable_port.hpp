@@ -5,9 +5,10 @@
 namespace eposp::device {
 
 /// A simulated node's cable to its bus, which fault injection can cut as if it broke at the
-/// node's connector: while cut, what the node sends is lost (the node is told Queued, as by
-/// can::GatedPort, and goes on as if its controller had sent it) and it hears nothing. Its error
-/// state is the inner port's. The node is handed this port instead of the bus's.
+/// node's connector: while cut, what the node sends is lost (the node is told Queued, as a silent
+/// LSS slave's canopen::ServicesPort tells it, and goes on as if its controller had sent it) and
+/// it hears nothing. Its error state is the inner port's. The node is handed this port instead
+/// of the bus's.
 class SeverablePort : public can::Port {
 public:
     /// Takes over `inner`'s receive and error-state handlers.
