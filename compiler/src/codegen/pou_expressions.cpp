@@ -359,6 +359,35 @@ Operand PouGenerator::bit_mask(const sema::Type& type, std::uint32_t bit, bool i
 
 std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const sema::Type* hint,
                                         const Destination* dest) {
+    auto value = evaluate(expression, hint, dest);
+    if (!value) {
+        return value;
+    }
+    // Types are the typing stage's: code generation takes them from it and derives none. A
+    // subrange's value is of its base type, and two ways of saving a conversion look otherwise:
+    // a value made straight in its destination has the destination's type (a STRING result in
+    // its variable), and a literal is laid out at the type it is converted to (`i * 7` on INTs
+    // computes in DINT, so its 7 is a DINT).
+    const sema::Type* typed = program_.typed().type_of(expression);
+    const bool same = typed != nullptr && value_type(*value->type) == value_type(*typed);
+    const bool in_destination = dest != nullptr && value->type == dest->type;
+    const bool converted_literal =
+        hint != nullptr && value->type == hint &&
+        std::holds_alternative<ast::LiteralExpression>(expression.node);
+    if (!same && !in_destination && !converted_literal) {
+        program_.disagrees_with_typing(expression.range, *value->type, typed);
+        return std::nullopt;
+    }
+    return value;
+}
+
+const sema::Type* PouGenerator::value_type(const sema::Type& type) {
+    const sema::Type& declared = type.renames != nullptr ? *type.renames : type;
+    return declared.range ? &types_.unranged(declared) : &declared;
+}
+
+std::optional<Value> PouGenerator::evaluate(const ast::Expression& expression,
+                                            const sema::Type* hint, const Destination* dest) {
     if (const auto* node = std::get_if<ast::LiteralExpression>(&expression.node)) {
         return literal(expression, *node, hint);
     }

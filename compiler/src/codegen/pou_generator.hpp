@@ -138,9 +138,14 @@ private:
     vm::Operand as_lint_clamped(const Value& value, std::int64_t high);
     /// A LINT, ULINT or UDINT as DINT, beyond DINT's range made its nearest limit.
     Value saturated_dint(const Value& value);
-    /// The value of `expression` of its own type; an untyped literal takes `hint`.
+    /// The value of `expression` of the type the typing stage gave it; an untyped literal takes
+    /// `hint`.
     std::optional<Value> eval(const ast::Expression& expression, const sema::Type* hint,
                               const Destination* dest = nullptr);
+    std::optional<Value> evaluate(const ast::Expression& expression, const sema::Type* hint,
+                                  const Destination* dest);
+    /// What a value of `type` is held as: a subrange's base type, a renamed type's type.
+    const sema::Type* value_type(const sema::Type& type);
     /// `called` if it is a value (a function's), else an error: an FB call has none.
     std::optional<Value> function_value(const std::optional<Value>& called);
     /// The value of `expression` as `want` (implicitly widened, else an error).

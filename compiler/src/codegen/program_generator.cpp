@@ -510,6 +510,15 @@ void ProgramGenerator::refused_by_checks(DiagnosticCode code) {
                                    describe(code).name));
 }
 
+void ProgramGenerator::disagrees_with_typing(const SourceRange& range,
+                                             const sema::Type& computed,
+                                             const sema::Type* typed) {
+    diagnostics_.error(DiagnosticCode::E0001, range,
+                       fmt::format("internal error: code generation computed a {} where the "
+                                   "typing stage gave {}",
+                                   computed.name, typed != nullptr ? typed->name : "no type"));
+}
+
 void ProgramGenerator::add_io_binding(const ast::DirectAddress& address, const sema::Type& type,
                                       std::uint32_t offset) {
     if (address.path.empty()) {

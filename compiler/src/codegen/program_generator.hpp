@@ -81,6 +81,10 @@ public:
     /// stage's file that owns the rule. (Named after the checks, its first users; the standard
     /// functions' generators call it too.)
     void refused_by_checks(DiagnosticCode code);
+    /// Where code generation computed a value of another type than the typing stage gave its
+    /// expression: an internal compiler error (E0001) too.
+    void disagrees_with_typing(const SourceRange& range, const sema::Type& computed,
+                               const sema::Type* typed);
     const OpcodeTable& opcodes() const { return opcodes_; }
     bool if_conversion() const { return options_.if_conversion; }
     /// A global of a configuration or global variable list by name (VAR_EXTERNAL binds to
