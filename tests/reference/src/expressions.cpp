@@ -172,8 +172,14 @@ Value& Evaluator::place(const ast::Expression& expression) {
 }
 
 Value Evaluator::eval(const ast::Expression& expression) {
+    // Named constants, enumerators and literals take the typing stage's value; operators and
+    // calls are computed here even where typing folded them, so that its folding is checked too
+    // (and an INT operation it records cut to INT still feeds its parent in DINT, as computed).
+    const bool computed = std::holds_alternative<ast::UnaryExpression>(expression.node) ||
+                          std::holds_alternative<ast::BinaryExpression>(expression.node) ||
+                          std::holds_alternative<ast::CallExpression>(expression.node);
     const sema::Type* type = program_.type_of(expression);
-    if (type != nullptr) {
+    if (type != nullptr && !computed) {
         if (const types::Constant* value = program_.constant_of(expression)) {
             return constant(*value, *type);
         }
