@@ -360,28 +360,17 @@ void VirtualBus::Impl::for_each_receiver(const Transmission& transmission, const
     // Acceptance filters pass every 29-bit frame.
     const bool everyone = concerning == nullptr || concerning->extended;
     const std::size_t id = everyone ? 0 : concerning->id;
-    const auto next = [this, count, everyone, id](std::size_t from) {
-        if (everyone) {
-            return from;
-        }
-        for (std::size_t word = from / kSlotsPerWord, first = from % kSlotsPerWord;
-             word * kSlotsPerWord < count; ++word, first = 0) {
-            const std::uint64_t concerned =
-                (by_id[id * words + word] | attended[word]) & (~std::uint64_t{0} << first);
-            if (concerned != 0) {
-                return std::min(count, word * kSlotsPerWord +
-                                           static_cast<std::size_t>(std::countr_zero(concerned)));
-            }
-        }
-        return count;
+    // The slots of `word` that the frame concerns, as the index is now.
+    const auto concerned = [this, everyone, id](std::size_t word) {
+        return everyone ? ~std::uint64_t{0} : by_id[id * words + word] | attended[word];
     };
-    for (std::size_t i = next(0); i < count; i = next(i + 1)) {
+    const auto visit_slot = [&](std::size_t i) {
         VirtualPort* port = ports[i];
         visited_up_to = i + 1;
         if (port == nullptr || port->impl_.get() == transmission.sender ||
             port->impl_->sequence >= transmission.receivers_before ||
             port->impl_->counters.state() == ErrorState::BusOff) {
-            continue;
+            return;
         }
         const bool attentive = port->impl_->attentive_indexed;
         const ErrorState before = visit(*port->impl_);
@@ -392,6 +381,19 @@ void VirtualBus::Impl::for_each_receiver(const Transmission& transmission, const
                 refresh_attention(*port->impl_);
             }
             settle_state(*port->impl_, before);
+        }
+    };
+    for (std::size_t word = 0; word * kSlotsPerWord < count; ++word) {
+        for (std::uint64_t left = concerned(word); left != 0;) {
+            const std::size_t place = static_cast<std::size_t>(std::countr_zero(left));
+            const std::size_t i = word * kSlotsPerWord + place;
+            if (i >= count) {
+                break;
+            }
+            // The slots after `i`, read again after the visit (no shift by 64).
+            const std::uint64_t after = ~std::uint64_t{1} << place;
+            visit_slot(i);
+            left = concerned(word) & after;
         }
     }
 }
