@@ -364,11 +364,13 @@ void VirtualBus::Impl::for_each_receiver(const Transmission& transmission, const
     const auto concerned = [this, everyone, id](std::size_t word) {
         return everyone ? ~std::uint64_t{0} : by_id[id * words + word] | attended[word];
     };
+    // The sender does not receive its own frame: its slot is left out. Slots stay put until the
+    // next arbitration compacts the ports, and a slot left by a port that disconnects stays empty.
+    const std::size_t own = transmission.sender != nullptr ? transmission.sender->slot : count;
     const auto visit_slot = [&](std::size_t i) {
         VirtualPort* port = ports[i];
         visited_up_to = i + 1;
-        if (port == nullptr || port->impl_.get() == transmission.sender ||
-            port->impl_->sequence >= transmission.receivers_before ||
+        if (port == nullptr || port->impl_->sequence >= transmission.receivers_before ||
             port->impl_->counters.state() == ErrorState::BusOff) {
             return;
         }
@@ -384,7 +386,10 @@ void VirtualBus::Impl::for_each_receiver(const Transmission& transmission, const
         }
     };
     for (std::size_t word = 0; word * kSlotsPerWord < count; ++word) {
-        for (std::uint64_t left = concerned(word); left != 0;) {
+        const std::uint64_t others = word == own / kSlotsPerWord
+                                         ? ~(std::uint64_t{1} << (own % kSlotsPerWord))
+                                         : ~std::uint64_t{0};
+        for (std::uint64_t left = concerned(word) & others; left != 0;) {
             const std::size_t place = static_cast<std::size_t>(std::countr_zero(left));
             const std::size_t i = word * kSlotsPerWord + place;
             if (i >= count) {
@@ -393,7 +398,7 @@ void VirtualBus::Impl::for_each_receiver(const Transmission& transmission, const
             // The slots after `i`, read again after the visit (no shift by 64).
             const std::uint64_t after = ~std::uint64_t{1} << place;
             visit_slot(i);
-            left = concerned(word) & after;
+            left = concerned(word) & after & others;
         }
     }
 }
