@@ -31,8 +31,10 @@ SendStatus VirtualPort::send(const Frame& frame) {
         impl_->report_overflow(Overflow::Transmit, frame);
         return SendStatus::TxOverflow;
     }
+    // Asked before the push: a deque's empty() is cheaper than its size().
+    const bool was_empty = impl_->tx_queue.empty();
     impl_->tx_queue.push_back(frame);
-    if (impl_->tx_queue.size() == 1) { // else the frame it offers stays the same
+    if (was_empty) { // else the frame it offers stays the same
         bus_->impl_->refresh_queued(*impl_);
     }
     bus_->impl_->request_arbitration();
