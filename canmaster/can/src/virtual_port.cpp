@@ -26,13 +26,15 @@ SendStatus VirtualPort::send(const Frame& frame) {
     if (impl_->counters.state() == ErrorState::BusOff) {
         return SendStatus::BusOff;
     }
-    if (impl_->tx_queue.size() >= impl_->tx_queue_capacity) {
+    // A deque's size() walks its node map, its empty() compares two pointers: the queue is
+    // usually empty when a frame comes.
+    const bool was_empty = impl_->tx_queue.empty();
+    if (was_empty ? impl_->tx_queue_capacity == 0
+                  : impl_->tx_queue.size() >= impl_->tx_queue_capacity) {
         ++impl_->counts.tx_overflows;
         impl_->report_overflow(Overflow::Transmit, frame);
         return SendStatus::TxOverflow;
     }
-    // Asked before the push: a deque's empty() is cheaper than its size().
-    const bool was_empty = impl_->tx_queue.empty();
     impl_->tx_queue.push_back(frame);
     if (was_empty) { // else the frame it offers stays the same
         bus_->impl_->refresh_queued(*impl_);
