@@ -2,6 +2,7 @@
 // natives: type conversions, numeric, bit shift, comparison and string functions (selection in
 // selection_functions.cpp).
 
+#include "../types/expression_typer.hpp"
 #include "eposp/compiler/sema/standard_library.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "eposp/vm/stdlib/manifest.hpp"
@@ -19,41 +20,6 @@ using vm::stdlib::Family;
 using vm::stdlib::Operation;
 
 namespace {
-
-/// The operator a standard function of the arithmetic, logic or comparison family applies.
-ast::BinaryOperator binary_operator(Operation operation) {
-    using Op = ast::BinaryOperator;
-    switch (operation) {
-    case Operation::Add:
-        return Op::Add;
-    case Operation::Multiply:
-        return Op::Multiply;
-    case Operation::Subtract:
-        return Op::Subtract;
-    case Operation::Divide:
-        return Op::Divide;
-    case Operation::Modulo:
-        return Op::Modulo;
-    case Operation::And:
-        return Op::And;
-    case Operation::Or:
-        return Op::Or;
-    case Operation::Xor:
-        return Op::Xor;
-    case Operation::Greater:
-        return Op::Greater;
-    case Operation::GreaterEqual:
-        return Op::GreaterEqual;
-    case Operation::Equal:
-        return Op::Equal;
-    case Operation::LessEqual:
-        return Op::LessEqual;
-    case Operation::Less:
-        return Op::Less;
-    default:
-        return Op::NotEqual;
-    }
-}
 
 /// Nanoseconds per unit when a time converts to or from a number (CODESYS: TIME and TOD in
 /// milliseconds, DATE and DT in seconds, the long forms in nanoseconds).
@@ -326,7 +292,12 @@ std::optional<Value> PouGenerator::numeric_function(const types::CallTarget& tar
     const Family family = function.family;
     if (family == Family::Arithmetic || family == Family::Comparison ||
         (family == Family::Logic && function.operation != Operation::Not)) {
-        const Op op = binary_operator(function.operation);
+        const auto operation = types::operator_of(function.operation);
+        if (!operation) {
+            program_.refused_by_checks(DiagnosticCode::E0305); // the typing stage's
+            return std::nullopt;
+        }
+        const Op op = *operation;
         const bool comparison = op >= Op::Less && op <= Op::NotEqual;
         // The inputs brought to the overload the typing stage chose; an input stores its
         // argument, so a small integer computed in DINT is cut to its type first.

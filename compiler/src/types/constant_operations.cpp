@@ -8,6 +8,7 @@
 #include "eposp/compiler/ascii_case.hpp"
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "eposp/vm/value_semantics.hpp"
+#include "expression_typer.hpp"
 
 #include <algorithm>
 #include <type_traits>
@@ -176,43 +177,6 @@ std::optional<Constant> binary_constant(ast::BinaryOperator op, const Constant& 
         const auto r = scalar_value<T>(right);
         return l && r ? binary_in(op, *l, *r) : std::nullopt;
     });
-}
-
-/// The operators that are functions (ADD, GT, AND, ...), as their operator.
-std::optional<ast::BinaryOperator> operator_of(Operation operation) {
-    using Op = ast::BinaryOperator;
-    switch (operation) {
-    case Operation::Add:
-        return Op::Add;
-    case Operation::Subtract:
-        return Op::Subtract;
-    case Operation::Multiply:
-        return Op::Multiply;
-    case Operation::Divide:
-        return Op::Divide;
-    case Operation::Modulo:
-        return Op::Modulo;
-    case Operation::And:
-        return Op::And;
-    case Operation::Or:
-        return Op::Or;
-    case Operation::Xor:
-        return Op::Xor;
-    case Operation::Less:
-        return Op::Less;
-    case Operation::Greater:
-        return Op::Greater;
-    case Operation::LessEqual:
-        return Op::LessEqual;
-    case Operation::GreaterEqual:
-        return Op::GreaterEqual;
-    case Operation::Equal:
-        return Op::Equal;
-    case Operation::NotEqual:
-        return Op::NotEqual;
-    default:
-        return std::nullopt;
-    }
 }
 
 /// Whether `a <= b` in `type`, as the selection functions compare (codegen's jump_if_at_most).

@@ -5,6 +5,7 @@
 // that an untyped literal takes it (IEC 61131-3 ed. 3, 6.3.3).
 
 #include "eposp/compiler/types/typed_program.hpp"
+#include "eposp/vm/stdlib/manifest.hpp"
 
 #include <optional>
 #include <set>
@@ -12,6 +13,10 @@
 #include <vector>
 
 namespace eposp::compiler::types {
+
+/// The operator a standard function of the arithmetic, logic or comparison family applies (ADD
+/// is `+`, GT is `>`); none for the others.
+std::optional<ast::BinaryOperator> operator_of(vm::stdlib::Operation operation);
 
 class ExpressionTyper {
 public:

@@ -268,4 +268,41 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
                 fmt::format("arithmetic needs numbers, not {}", operands->name));
 }
 
+std::optional<ast::BinaryOperator> operator_of(vm::stdlib::Operation operation) {
+    using Op = ast::BinaryOperator;
+    using vm::stdlib::Operation;
+    switch (operation) {
+    case Operation::Add:
+        return Op::Add;
+    case Operation::Subtract:
+        return Op::Subtract;
+    case Operation::Multiply:
+        return Op::Multiply;
+    case Operation::Divide:
+        return Op::Divide;
+    case Operation::Modulo:
+        return Op::Modulo;
+    case Operation::And:
+        return Op::And;
+    case Operation::Or:
+        return Op::Or;
+    case Operation::Xor:
+        return Op::Xor;
+    case Operation::Less:
+        return Op::Less;
+    case Operation::Greater:
+        return Op::Greater;
+    case Operation::LessEqual:
+        return Op::LessEqual;
+    case Operation::GreaterEqual:
+        return Op::GreaterEqual;
+    case Operation::Equal:
+        return Op::Equal;
+    case Operation::NotEqual:
+        return Op::NotEqual;
+    default:
+        return std::nullopt;
+    }
+}
+
 } // namespace eposp::compiler::types
