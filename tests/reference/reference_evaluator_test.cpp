@@ -200,6 +200,21 @@ TEST(ReferenceEvaluator, TimeFunctionsAndTimeOfDayWrappingAtMidnight) {
     EXPECT_EQ(p.bits("Main.e"), 4'500'000'000u);
 }
 
+TEST(ReferenceEvaluator, LongTimeFunctionsAndTheOverloadedFormsAreTheirTable30Rows) {
+    const auto p = run("a : LTOD; b : LTIME; c : LDT; d : TOD; e : LTIME; f : LTIME;",
+                       "a := ADD_LTOD_LTIME(LTOD#23:00:00, LTIME#2h); b := SUB_LDATE_LDATE("
+                       "LDATE#2024-01-02, D#2024-01-01); c := CONCAT_DATE_LTOD(D#1970-01-01, "
+                       "LTOD#01:00:00); d := SUB(TOD#01:00:00, T#2h); e := MUL(LTIME#1500ms, 3);"
+                       "f := SUB(DT#2024-01-02-00:00:00, LDT#2024-01-01-12:00:00);");
+    constexpr std::uint64_t kHour = 3'600'000'000'000;
+    EXPECT_EQ(p.bits("Main.a"), 1 * kHour);
+    EXPECT_EQ(p.bits("Main.b"), 24 * kHour);
+    EXPECT_EQ(p.bits("Main.c"), 1 * kHour);
+    EXPECT_EQ(p.bits("Main.d"), 23 * kHour);
+    EXPECT_EQ(p.bits("Main.e"), 4'500'000'000u);
+    EXPECT_EQ(p.bits("Main.f"), 12 * kHour);
+}
+
 TEST(ReferenceEvaluator, AStringIsCutAtItsLength) {
     const auto p = run("s : STRING[3];", "s := 'abcdef';");
     EXPECT_EQ(p.string("Main.s"), "abc");

@@ -171,8 +171,11 @@ bool converts_implicitly(const Type& from, const Type& to) {
         if (from.elementary == to.elementary) {
             return true;
         }
-        // TIME and LTIME share their representation; TIME widens to LTIME.
-        if (from.elementary == E::Time && to.elementary == E::Ltime) {
+        // Every time is nanoseconds in 64 bits; each short one widens to its long form.
+        if ((from.elementary == E::Time && to.elementary == E::Ltime) ||
+            (from.elementary == E::Date && to.elementary == E::Ldate) ||
+            (from.elementary == E::TimeOfDay && to.elementary == E::Ltod) ||
+            (from.elementary == E::DateAndTime && to.elementary == E::Ldt)) {
             return true;
         }
         const auto f = chain_of(from.elementary);

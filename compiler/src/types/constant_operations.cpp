@@ -251,8 +251,9 @@ std::optional<Constant> ConstantEvaluator::convert(const Constant& constant, con
                 type.elementary == ast::ElementaryType::Ltime);
     };
     if (&from == &target || (sema::is_time_like(from) && from.elementary == target.elementary) ||
-        (duration(from) && duration(target))) {
-        return constant; // a duration is ns as TIME and as LTIME
+        (duration(from) && duration(target)) ||
+        (sema::is_time_like(from) && sema::converts_implicitly(from, target))) {
+        return constant; // a time is ns in its short and its long form (DATE and LDATE...)
     }
     if (!plain_scalar(from) || !plain_scalar(target)) {
         return std::nullopt;

@@ -18,6 +18,12 @@ namespace eposp::compiler::types {
 /// is `+`, GT is `>`); none for the others.
 std::optional<ast::BinaryOperator> operator_of(vm::stdlib::Operation operation);
 
+/// The elementary type of the manifest's `type` (vm::NativeType lists them in
+/// ast::ElementaryType's order, sema/type.cpp).
+inline ast::ElementaryType elementary_of(vm::NativeType type) {
+    return static_cast<ast::ElementaryType>(type);
+}
+
 class ExpressionTyper {
 public:
     /// `model` resolves the names of what is typed: the program's, or the built-in library's
@@ -74,6 +80,11 @@ private:
     const sema::Type* standard_call(const ast::Expression& expression,
                                     const ast::CallExpression& node, const std::string& name,
                                     const sema::Type* expected);
+    /// ADD, SUB, MUL or DIV whose first input (`first`) is a time: the row of table 30 it takes.
+    const sema::Type* time_call(const ast::Expression& expression,
+                                const vm::stdlib::StandardFunction& function,
+                                const std::vector<const ast::Expression*>& values,
+                                const sema::Type& first);
     const sema::Type* conversion(const ast::Expression& expression, const ast::CallExpression& node,
                                  const std::string& name);
     /// The type `expression` names where SIZEOF sizes one (`SIZEOF(Axis)`, `SIZEOF(LREAL)`):
@@ -93,6 +104,12 @@ private:
     /// A point in time or duration (`left`) added to or subtracted from `right`.
     const sema::Type* time_arithmetic(ast::BinaryOperator op, const sema::Type& left,
                                       const sema::Type& right, const SourceRange& range);
+    /// The row of table 30 that `operation` (ADD, SUB, MUL, DIV, or their operator) takes on
+    /// `left` and `right`: the first whose operand types both convert to (figure 11 widens TIME
+    /// to LTIME, DATE to LDATE, TOD to LTOD, DT to LDT), so a short one where both are short; a
+    /// scaled row takes any number. Null where table 30 has none (a date moved by a duration).
+    const vm::stdlib::StandardFunction* time_row(vm::stdlib::Operation operation,
+                                                 const sema::Type& left, const sema::Type& right);
     /// The smallest type both convert to implicitly (figure 11); null if there is none.
     const sema::Type* common(const sema::Type& a, const sema::Type& b);
     const sema::Type* variable_type(const sema::Symbol& symbol);

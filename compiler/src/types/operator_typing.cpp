@@ -87,23 +87,34 @@ const sema::Type* ExpressionTyper::time_arithmetic(ast::BinaryOperator op, const
                                                    const SourceRange& range) {
     // 6.6.2.5.5 table 30: durations add and subtract, a point in time moves by a duration (a
     // TIME_OF_DAY wraps around midnight), two points of one type subtract to a duration.
-    using Op = ast::BinaryOperator;
-    const auto duration = [](const sema::Type& type) {
-        return type.kind == sema::TypeKind::Elementary &&
-               (type.elementary == E::Time || type.elementary == E::Ltime);
-    };
-    const bool add_or_subtract = op == Op::Add || op == Op::Subtract;
-    if (add_or_subtract && duration(right) && left.elementary != E::Date) {
-        return &left;
-    }
-    if (op == Op::Subtract && left.kind == right.kind && left.elementary == right.elementary) {
-        return &elementary(left.elementary == E::Ltime || left.elementary == E::Ldt ? E::Ltime
-                                                                                    : E::Time);
+    const auto operation = op == ast::BinaryOperator::Add ? vm::stdlib::Operation::Add
+                                                          : vm::stdlib::Operation::Subtract;
+    if (const vm::stdlib::StandardFunction* row = time_row(operation, left, right)) {
+        return &elementary(elementary_of(row->time.result));
     }
     return fail(DiagnosticCode::E0303, range,
                 fmt::format("this operation is not defined on {} and {} (use the functions of "
                             "IEC 61131-3 table 30)",
                             left.name, right.name));
+}
+
+const vm::stdlib::StandardFunction* ExpressionTyper::time_row(vm::stdlib::Operation operation,
+                                                              const sema::Type& left,
+                                                              const sema::Type& right) {
+    const auto takes = [&](const sema::Type& actual, vm::NativeType formal) {
+        return sema::converts_implicitly(program_.types().unranged(actual),
+                                         elementary(elementary_of(formal)));
+    };
+    for (const vm::stdlib::StandardFunction& row : vm::stdlib::standard_functions()) {
+        const vm::stdlib::TimeRule& rule = row.time;
+        if (row.family == vm::stdlib::Family::Time && rule.overloaded &&
+            row.operation == operation && takes(left, rule.first) &&
+            (rule.scaled ? sema::is_numeric(program_.types().unranged(right))
+                         : takes(right, rule.second))) {
+            return &row;
+        }
+    }
+    return nullptr;
 }
 
 const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression*>& operands,

@@ -15,12 +15,6 @@ namespace {
 
 using vm::stdlib::Family;
 
-/// The elementary type of the manifest's `type` (vm::NativeType lists them in
-/// ast::ElementaryType's order, codegen/native_function.cpp).
-ast::ElementaryType elementary_of(vm::NativeType type) {
-    return static_cast<ast::ElementaryType>(type);
-}
-
 } // namespace
 
 const sema::Type* ExpressionTyper::named_type(const ast::Expression& expression) {
@@ -176,8 +170,22 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
     case Family::Arithmetic:
     case Family::Logic:
     case Family::Extreme:
-    case Family::Limit:
-        result = unify(values, expected, range);
+    case Family::Limit: {
+        const sema::Type* first = nullptr;
+        if (family == Family::Arithmetic && !is_untyped_literal(*values[0])) {
+            first = type(*values[0], expected);
+            if (first == nullptr) {
+                for (std::size_t i = 1; i < values.size(); ++i) {
+                    type(*values[i], nullptr);
+                }
+                return nullptr;
+            }
+            if (function->operation != vm::stdlib::Operation::Modulo &&
+                sema::is_time_like(program_.types().unranged(*first))) {
+                return time_call(expression, *function, values, *first);
+            }
+        }
+        result = unify(values, expected, range, first);
         // MAX, MIN and LIMIT compare: elementary values or strings (table 28).
         if (result != nullptr && (family == Family::Extreme || family == Family::Limit) &&
             ((!sema::is_scalar(*result) && result->kind != sema::TypeKind::String) ||
@@ -203,6 +211,7 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
         }
         target.operand = result;
         break;
+    }
     case Family::Comparison:
         target.operand = unify(values, nullptr, range);
         result = target.operand != nullptr ? &elementary(E::Bool) : nullptr;
@@ -317,6 +326,40 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
     }
     target.result = result;
     program_.set_call(expression, target);
+    return result;
+}
+
+const sema::Type* ExpressionTyper::time_call(const ast::Expression& expression,
+                                             const vm::stdlib::StandardFunction& function,
+                                             const std::vector<const ast::Expression*>& values,
+                                             const sema::Type& first) {
+    // Table 30's note: ADD, SUB, MUL and DIV on times are the row of table 30 their operator
+    // takes (ADD(t, lt) is ADD_LTIME), called as that row is.
+    const std::string name(function.name);
+    if (values.size() != 2) {
+        for (std::size_t i = 1; i < values.size(); ++i) {
+            type(*values[i], nullptr);
+        }
+        return fail(DiagnosticCode::E0306, expression.range,
+                    fmt::format("{} takes 2 inputs on times, not {}", name, values.size()));
+    }
+    const bool scaled = function.operation == vm::stdlib::Operation::Multiply ||
+                        function.operation == vm::stdlib::Operation::Divide;
+    const sema::Type* second = type(*values[1], scaled ? &elementary(E::Lint) : nullptr);
+    if (second == nullptr) {
+        return nullptr;
+    }
+    const vm::stdlib::StandardFunction* row = time_row(function.operation, first, *second);
+    if (row == nullptr) {
+        return fail(DiagnosticCode::E0305, expression.range,
+                    fmt::format("{} is not defined on {} and {} (IEC 61131-3 table 30)", name,
+                                first.name, second->name));
+    }
+    const sema::Type* result = &elementary(elementary_of(row->time.result));
+    program_.set_call(expression, CallTarget{.kind = CallKind::StandardFunction,
+                                             .name = std::string(row->name),
+                                             .operand = &elementary(elementary_of(row->time.first)),
+                                             .result = result});
     return result;
 }
 

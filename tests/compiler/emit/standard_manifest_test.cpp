@@ -27,7 +27,8 @@ using vm::stdlib::StandardFunction;
 
 const char* const kDeclarations =
     "r : REAL; d : DINT; i : INT; w : WORD; x : BOOL; s : STRING; arr : ARRAY[1..3] OF INT; "
-    "p : POINTER TO DINT; t : TIME; tod1 : TOD; dt1 : DT; date1 : DATE;";
+    "p : POINTER TO DINT; t : TIME; tod1 : TOD; dt1 : DT; date1 : DATE; ltime1 : LTIME; "
+    "ltod1 : LTOD; ldt1 : LDT; ldate1 : LDATE;";
 
 /// A variable of the manifest's time type.
 std::string time_variable(vm::NativeType type) {
@@ -38,6 +39,14 @@ std::string time_variable(vm::NativeType type) {
         return "dt1";
     case vm::NativeType::Date:
         return "date1";
+    case vm::NativeType::Ltime:
+        return "ltime1";
+    case vm::NativeType::Ltod:
+        return "ltod1";
+    case vm::NativeType::Ldt:
+        return "ldt1";
+    case vm::NativeType::Ldate:
+        return "ldate1";
     default:
         return "t";
     }

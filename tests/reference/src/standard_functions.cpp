@@ -2,6 +2,7 @@
 // definitions; REAL to integer rounds to the nearest integer, ties to even (IEC 60559, as the
 // standard's 6.6.2.5.3 asks), TRUNC truncates.
 
+#include "eposp/vm/stdlib/manifest.hpp"
 #include "evaluator.hpp"
 
 #include <cfenv>
@@ -270,23 +271,22 @@ Value Evaluator::standard_function(const types::CallTarget& target,
                                                               ? bounds.lower
                                                               : bounds.lower + bounds.count - 1));
     }
-    // Table 30; a TIME_OF_DAY wraps around midnight (vm/README.md, as CODESYS).
-    if (name == "ADD_TOD_TIME" || name == "SUB_TOD_TIME") {
-        const std::uint64_t sum =
-            name == "ADD_TOD_TIME" ? in[0].bits + in[1].bits : in[0].bits - in[1].bits;
-        return integer(result,
-                       static_cast<std::uint64_t>(since_midnight(static_cast<std::int64_t>(sum))));
-    }
-    if (name == "ADD_TIME" || name == "ADD_DT_TIME" || name == "CONCAT_DATE_TOD") {
-        return integer(result, in[0].bits + in[1].bits);
-    }
-    if (name == "SUB_TIME" || name == "SUB_DT_TIME" || name == "SUB_DATE_DATE" ||
-        name == "SUB_DT_DT" || name == "SUB_TOD_TOD") {
-        return integer(result, in[0].bits - in[1].bits);
-    }
-    if (name == "MUL_TIME" || name == "DIV_TIME") {
-        return time_arithmetic(name == "MUL_TIME" ? Op::Multiply : Op::Divide, in[0], in[1],
-                               result);
+    // Table 30, short and long forms alike (every time is nanoseconds in 64 bits); a time of
+    // day wraps around midnight (vm/README.md, as CODESYS).
+    const vm::stdlib::StandardFunction* row = vm::stdlib::find_standard_function(name);
+    if (row != nullptr && row->family == vm::stdlib::Family::Time) {
+        using vm::stdlib::Operation;
+        if (row->time.scaled) {
+            return time_arithmetic(row->operation == Operation::Multiply ? Op::Multiply
+                                                                         : Op::Divide,
+                                   in[0], in[1], result);
+        }
+        const std::uint64_t bits =
+            row->operation == Operation::Add ? in[0].bits + in[1].bits : in[0].bits - in[1].bits;
+        const bool of_day = result.elementary == E::TimeOfDay || result.elementary == E::Ltod;
+        return integer(result, of_day ? static_cast<std::uint64_t>(
+                                            since_midnight(static_cast<std::int64_t>(bits)))
+                                      : bits);
     }
     return string_function(name, in, result);
 }

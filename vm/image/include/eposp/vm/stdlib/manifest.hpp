@@ -112,12 +112,14 @@ enum class Operation : std::uint8_t {
 };
 
 /// A table 30 function's operand and result types; `scaled`: the second operand is any number
-/// (MUL_TIME, DIV_TIME) rather than `second`.
+/// (MUL_TIME, DIV_TIME) rather than `second`; `overloaded`: ADD, SUB, MUL, DIV and their
+/// operators take this row on its types (table 30's note; CONCAT_DATE_TOD has no symbol).
 struct TimeRule {
     NativeType first = NativeType::Time;
     NativeType second = NativeType::Time;
     NativeType result = NativeType::Time;
     bool scaled = false;
+    bool overloaded = true;
 };
 
 /// An extensible function takes at most this many inputs.
@@ -286,7 +288,23 @@ inline constexpr std::array kFunctions{
     time("MUL_TIME", Op::Multiply, {T::Time, T::Time, T::Time, true}, N::Factor),
     time("DIV_TIME", Op::Divide, {T::Time, T::Time, T::Time, true}, N::Factor),
     // DATE and TOD are nanoseconds since 1970 and since midnight: their sum is the DT.
-    time("CONCAT_DATE_TOD", Op::Add, {T::Date, T::TimeOfDay, T::DateAndTime}),
+    time("CONCAT_DATE_TOD", Op::Add, {T::Date, T::TimeOfDay, T::DateAndTime, false, false}),
+    // The long forms, after the short ones so that the overloaded forms take the short row where
+    // both fit (types::ExpressionTyper::time_row). Every time is nanoseconds in 64 bits, so they
+    // compute as their short rows do, a long TOD with the TOD's native too (no native of theirs).
+    time("ADD_LTIME", Op::Add, {T::Ltime, T::Ltime, T::Ltime}),
+    time("ADD_LTOD_LTIME", Op::Add, {T::Ltod, T::Ltime, T::Ltod}),
+    time("ADD_LDT_LTIME", Op::Add, {T::Ldt, T::Ltime, T::Ldt}),
+    time("SUB_LTIME", Op::Subtract, {T::Ltime, T::Ltime, T::Ltime}),
+    time("SUB_LDATE_LDATE", Op::Subtract, {T::Ldate, T::Ldate, T::Ltime}),
+    time("SUB_LTOD_LTIME", Op::Subtract, {T::Ltod, T::Ltime, T::Ltod}),
+    time("SUB_LTOD_LTOD", Op::Subtract, {T::Ltod, T::Ltod, T::Ltime}),
+    time("SUB_LDT_LTIME", Op::Subtract, {T::Ldt, T::Ltime, T::Ldt}),
+    time("SUB_LDT_LDT", Op::Subtract, {T::Ldt, T::Ldt, T::Ltime}),
+    time("MUL_LTIME", Op::Multiply, {T::Ltime, T::Ltime, T::Ltime, true}),
+    time("DIV_LTIME", Op::Divide, {T::Ltime, T::Ltime, T::Ltime, true}),
+    // Ed. 3's long form of CONCAT_DATE_TOD: a DATE and an LTOD make an LDT.
+    time("CONCAT_DATE_LTOD", Op::Add, {T::Date, T::Ltod, T::Ldt, false, false}),
 };
 
 } // namespace rows
