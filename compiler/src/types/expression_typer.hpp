@@ -101,6 +101,8 @@ private:
     /// `common` or DINT, and holds its arithmetic operands of small integers in DINT.
     void computed_in(const ast::Expression& expression, const ast::BinaryExpression& node,
                      const sema::Type& common);
+    /// Records that the binary `expression` computes in `type`, its untyped literals too.
+    void computed_at(const ast::Expression& expression, const sema::Type& type);
     /// A point in time or duration (`left`) added to or subtracted from `right`.
     const sema::Type* time_arithmetic(ast::BinaryOperator op, const sema::Type& left,
                                       const sema::Type& right, const SourceRange& range);

@@ -42,10 +42,24 @@ void ExpressionTyper::computed_in(const ast::Expression& expression,
         small(*node.left) && small(*node.right) && (held(*node.left) || held(*node.right));
     for (const ast::Expression* operand : {node.left.get(), node.right.get()}) {
         if (held(*operand)) {
-            program_.set_operands(*operand, dint);
+            computed_at(*operand, dint);
         }
     }
-    program_.set_operands(expression, wide ? dint : common);
+    computed_at(expression, wide ? dint : common);
+}
+
+void ExpressionTyper::computed_at(const ast::Expression& expression, const sema::Type& type) {
+    program_.set_operands(expression, type);
+    // An untyped literal operand is a value of the type its operation computes in (`i * 7` on
+    // INTs computes in DINT: its 7 is a DINT), as unify()'s literals take their common type;
+    // literals have no side effects, so typing one again changes nothing else.
+    const auto& node = std::get<ast::BinaryExpression>(expression.node);
+    for (const ast::Expression* operand : {node.left.get(), node.right.get()}) {
+        if (is_untyped_literal(*operand) && numeric_context(&type) &&
+            program_.type_of(*operand) != &type) {
+            this->type(*operand, &type);
+        }
+    }
 }
 
 const sema::Type* ExpressionTyper::unary(const ast::Expression& expression,
