@@ -365,12 +365,14 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
     }
     // Types are the typing stage's: code generation takes them from it and derives none. A
     // subrange's value is of its base type, and two ways of saving a conversion look otherwise:
-    // a value made straight in its destination has the destination's type (a STRING result in
-    // its variable), and a literal is laid out at the type it is converted to (`i * 7` on INTs
-    // computes in DINT, so its 7 is a DINT).
+    // a value made straight in its destination (that operand) has the destination's type (a
+    // STRING result in its variable), and a literal is laid out at the type it is converted to
+    // (a text at the capacity of the STRING it goes to, NULL as the reference it goes to, an
+    // integer in a REAL context as that REAL).
     const sema::Type* typed = program_.typed().type_of(expression);
     const bool same = typed != nullptr && value_type(*value->type) == value_type(*typed);
-    const bool in_destination = dest != nullptr && value->type == dest->type;
+    const bool in_destination =
+        dest != nullptr && value->type == dest->type && value->operand.raw == dest->operand.raw;
     const bool converted_literal =
         hint != nullptr && value->type == hint &&
         std::holds_alternative<ast::LiteralExpression>(expression.node);
