@@ -525,9 +525,11 @@ void Epos2Drive::control_period() {
             index_latch_ = position_actual();
             counter_at_index_ = encoder_counter();
         }
-        current_averaged_.update(current_actual());
-        i2t_.update(axis_.current_actual(), plant::ServoAxis::kCurrentLoopPeriod);
-        overcurrent_seen = overcurrent_seen || std::abs(axis_.current_actual()) > overcurrent;
+        // Read once: the filters' stores would make the compiler read it again for each use.
+        const double motor_current = axis_.current_actual();
+        current_averaged_.update(polarity_ * motor_current); // current_actual()
+        i2t_.update(motor_current, plant::ServoAxis::kCurrentLoopPeriod);
+        overcurrent_seen = overcurrent_seen || std::abs(motor_current) > overcurrent;
     }
     axis_.reduce_current_limit(i2t_.limit()); // 5.14.1
     watch_power_stage(overcurrent_seen);

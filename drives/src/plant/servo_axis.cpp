@@ -109,25 +109,6 @@ void ServoAxis::reset_controllers() {
     // The outer loop keeps its 1 ms rhythm, so the velocity measurement keeps its interval.
 }
 
-void ServoAxis::step() {
-    if (steps_until_outer_loop_ == 0) {
-        run_outer_loop();
-        steps_until_outer_loop_ = kCurrentStepsPerOuterLoop;
-    }
-    --steps_until_outer_loop_;
-    if (mode_ == ControlMode::PowerOff) {
-        motor_.step_unpowered();
-    } else {
-        const double error = current_demand_ - motor_.state().current;
-        motor_.step(current_controller_.update(error, kCurrentLoopPeriod));
-    }
-    position_ = quadcounts(encoder_angle(), parameters_.encoder_pulses);
-    index_passed_ = !revolution_.holds(position_);
-    if (index_passed_) {
-        revolution_ = revolution_of(position_, parameters_.encoder_pulses);
-    }
-}
-
 void ServoAxis::run_outer_loop() {
     velocity_ = static_cast<double>(position_ - position_at_outer_loop_) / kOuterLoopPeriod;
     position_at_outer_loop_ = position_;

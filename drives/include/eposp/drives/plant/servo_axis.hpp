@@ -87,8 +87,27 @@ public:
     /// EPOS2 FW spec 5.14.1), from the next step on; the configured limit applies when larger.
     void reduce_current_limit(double amperes);
 
-    /// One 0.1 ms step of the current loop and the plant.
-    void step();
+    /// One 0.1 ms step of the current loop and the plant. Always inline: a drive runs ten in a
+    /// row every control period, the call and its register saves cost about as much as the
+    /// current loop's arithmetic, and GCC at -O2 does not inline it by itself.
+    [[gnu::always_inline]] void step() {
+        if (steps_until_outer_loop_ == 0) {
+            run_outer_loop();
+            steps_until_outer_loop_ = kCurrentStepsPerOuterLoop;
+        }
+        --steps_until_outer_loop_;
+        if (mode_ == ControlMode::PowerOff) {
+            motor_.step_unpowered();
+        } else {
+            const double error = current_demand_ - motor_.state().current;
+            motor_.step(current_controller_.update(error, kCurrentLoopPeriod));
+        }
+        position_ = quadcounts(encoder_angle(), parameters_.encoder_pulses);
+        index_passed_ = !revolution_.holds(position_);
+        if (index_passed_) {
+            revolution_ = revolution_of(position_, parameters_.encoder_pulses);
+        }
+    }
 
     /// The encoder's counts as the firmware reads them (EncoderReading), quadcounts.
     std::int64_t position_actual() const { return position_; }
