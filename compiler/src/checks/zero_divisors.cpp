@@ -1,7 +1,6 @@
 // E0408: a divisor of '/', MOD, DIV or MOD() that is a constant zero: the division would fail
 // at every run, so it is refused when compiling.
 
-#include "../types/constant_evaluator.hpp"
 #include "calls.hpp"
 #include "pou_checks.hpp"
 
@@ -9,11 +8,17 @@ namespace eposp::compiler::checks {
 namespace {
 
 void check_divisor(const PouUnderCheck& check, bool divide, const ast::Expression& divisor) {
-    const auto* literal = std::get_if<ast::LiteralExpression>(&divisor.node);
-    const auto* real =
-        literal != nullptr ? std::get_if<ast::RealLiteral>(&literal->value) : nullptr;
-    if ((real != nullptr && real->value == 0.0) ||
-        check.program.constants().fold_integer(divisor) == 0) {
+    // A zero of any number type: `x / 0` divides a REAL by a REAL 0.0.
+    const types::Constant* value = check.program.constant_of(divisor);
+    const auto zero = [](const auto& number) {
+        using V = std::decay_t<decltype(number)>;
+        if constexpr (std::is_same_v<V, bool> || std::is_same_v<V, std::string>) {
+            return false;
+        } else {
+            return number == V{0};
+        }
+    };
+    if (value != nullptr && std::visit(zero, *value)) {
         check.diagnostics.error(DiagnosticCode::E0408, divisor.range,
                                 divide ? "division by zero" : "MOD by zero");
     }

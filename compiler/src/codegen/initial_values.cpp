@@ -12,7 +12,7 @@ namespace eposp::compiler::codegen {
 
 std::optional<std::vector<std::uint8_t>>
 ProgramGenerator::constant_value(const ast::Expression& expression, const sema::Type& type) {
-    auto bytes = types::constant_bytes(expression, type, typed_.constants());
+    auto bytes = types::constant_bytes(expression, type, typed_);
     if (auto* refusal = std::get_if<types::ConstantRefusal>(&bytes)) {
         refused_by_checks(refusal->code); // types/initializers.cpp, types/expression_typer.cpp
         return std::nullopt;

@@ -1,46 +1,40 @@
 #pragma once
 
-// The one constant evaluator of the compiler (IEC 61131-3 ed. 3, 6.4.2, 6.5.1.3): the value of
-// a constant expression as the expression computes at run time. The type table asks it for
-// bounds, lengths and enumeration values (sema::IntegerConstants), the typing stage for initial
-// values (initial_constant.cpp) and for the constant of every typed expression
-// (TypedProgram::constant_of), the checks and code generation for CASE labels, FOR steps,
-// constant indices and divisors.
+// The one constant folder of the compiler (IEC 61131-3 ed. 3, 6.4.2, 6.5.1.3): the constant the
+// typing stage records for every expression it types (TypedProgram::constant_of), the value the
+// expression computes at run time. What the type table asks for before the typing pass reaches
+// it (array and subrange bounds, string lengths, enumeration values: sema::IntegerConstants), and
+// a CONSTANT's value before its declaration is typed, it types on demand with the same rules.
+// The typing stage reads it for initial values (initial_constant.cpp) and CASE labels, the
+// checks and code generation for CASE labels, FOR steps, constant indices and divisors.
 
 #include "eposp/compiler/sema/integer_constants.hpp"
 #include "eposp/compiler/sema/type_table.hpp"
 #include "eposp/compiler/types/typed_program.hpp"
 
 #include <optional>
-#include <unordered_map>
 #include <unordered_set>
 
 namespace eposp::compiler::types {
 
+/// Whether two integer constants are the same number, each held signed or unsigned.
+bool same_number(const Constant& a, const Constant& b);
+
 class ConstantEvaluator final : public sema::IntegerConstants {
 public:
-    /// `program` gives the types of what it has typed; `types` may be still under
-    /// construction: it is used only when asked.
-    ConstantEvaluator(const TypedProgram& program, sema::TypeTable& types)
+    /// `program` gives the types and constants of what it has typed, and takes those typed
+    /// on demand; `types` may be still under construction: it is used only when asked.
+    ConstantEvaluator(TypedProgram& program, sema::TypeTable& types)
         : program_(program), types_(types) {}
 
+    /// The constant of `expression` as a signed number (a ULINT above LINT's range is none),
+    /// the expression typed on demand if the typing pass has not reached it.
     std::optional<std::int64_t> fold_integer(const ast::Expression& expression) const override;
-    std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression) const override;
-    std::optional<std::uint64_t> fold_as(const ast::Expression& expression,
-                                         const sema::Type& type) const override;
-
-    /// A constant REAL or LREAL expression (`1.0 / 3.0`, `Ratio * 2.0`), each part the typing
-    /// stage typed computed in its type (`kSeven / 2` is 3.0, `kTenth * kThird` a REAL product
-    /// in an LREAL too); `single`: a REAL (where the part is not typed),
-    /// whose every value and operation rounds to single precision as it does at run time
-    /// (`16777216.0 + 1.0 + 1.0` is 16777216.0, not 16777218.0 rounded once at the end).
-    std::optional<double> real(const ast::Expression& expression, bool single) const;
-    /// A constant duration or point in time in ns (table 30: `T#1ms * 4`, `DT#... + T#1h`);
-    /// `day_wraps`: a TIME_OF_DAY, whose sums wrap around midnight (not folded).
-    std::optional<std::int64_t> time(const ast::Expression& expression, bool day_wraps) const;
-    /// A BOOL constant: TRUE, FALSE, a BOOL CONSTANT, and NOT, AND, OR, XOR of those.
-    std::optional<bool> boolean(const ast::Expression& expression) const;
-    /// The literal an expression is or a CONSTANT names (a STRING's, a CHAR's, NULL).
+    /// The same as 64 bits, a negative number as its two's complement (the CASE labels of a
+    /// ULINT or LWORD selector).
+    std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression) const;
+    /// The literal an expression is or a CONSTANT names (a STRING's, a WSTRING's, a CHAR's,
+    /// NULL): what an initial value of a text or a reference takes.
     const ast::Literal* literal(const ast::Expression& expression) const;
 
     /// The constant of an expression of `type` as the typing stage records it, bottom up from
@@ -59,40 +53,48 @@ public:
     /// (integers wrap, reals round to nearest and saturate); none between other kinds of value.
     std::optional<Constant> convert(const Constant& constant, const sema::Type& from,
                                     const sema::Type& to) const;
+    /// The arithmetic operation `expression` on constants as computed in its operands' type
+    /// (operands_of), not cut to its own type: its value where its operator holds it in DINT
+    /// (the typing stage's computed_in).
+    std::optional<Constant> computed(const ast::Expression& expression) const;
+    /// Whether the operator of `expression` wrapped around computing its constant from its
+    /// operands' (`32767 + 1` in INT, `0 - 1` in UDINT, a result computed in DINT cut to its
+    /// INT): the constant is not the number the expression means.
+    bool wraps(const ast::Expression& expression) const;
+
+    /// `evaluate()` with the CONSTANT `declaration` marked as being defined: a use of it
+    /// meanwhile is a constant defined through itself (circular()).
+    template <typename Evaluate>
+    auto defining(const ast::VariableDeclaration& declaration, Evaluate evaluate) const
+        -> decltype(evaluate()) {
+        struct Marked {
+            std::unordered_set<const ast::VariableDeclaration*>& evaluating;
+            const ast::VariableDeclaration* declaration;
+            bool outer = evaluating.insert(declaration).second;
+            ~Marked() {
+                if (outer) {
+                    evaluating.erase(declaration);
+                }
+            }
+        } marked{evaluating_, &declaration};
+        return evaluate();
+    }
+    /// Whether the CONSTANT `declaration` was used while it was being defined.
+    bool circular(const ast::VariableDeclaration& declaration) const {
+        return circular_.contains(&declaration);
+    }
 
 private:
-    /// How folded integer arithmetic wraps: in `bits` (32 or 64), signed or not; `type`: the
-    /// integer type computed for (fold_as), whose own bits NOT flips.
-    struct Arithmetic {
-        bool is_unsigned = false;
-        unsigned bits = 64;
-        const sema::Type* type = nullptr;
-    };
-    std::optional<std::uint64_t> integer(const ast::Expression& expression,
-                                         Arithmetic arithmetic) const;
-    /// Whether `expression` has `type` at run time: its literals untyped or of that type, its
-    /// constants declared with it, so that NOT flips that type's bits.
-    bool computes_in(const ast::Expression& expression, const sema::Type& type) const;
     /// The declaration of the CONSTANT `expression` names, with a plain initial value; null
-    /// when it names none, or one being evaluated (a constant defined through itself).
+    /// when it names none, or one being defined (recorded as circular).
     const ast::VariableDeclaration* constant(const ast::Expression& expression) const;
     static const ast::Expression& initial_value(const ast::VariableDeclaration& declaration) {
         return *std::get<ast::ExpressionPtr>(declaration.initial_value->value);
     }
-    /// value() of a CONSTANT's initial value, as its declared type `own` computes it: folded
-    /// (folded_value), else the typing stage's constant of it (typed_as).
-    std::optional<Constant> own_value(const ast::Expression& initial, const sema::Type& own) const;
-    std::optional<Constant> folded_value(const ast::Expression& initial,
-                                         const sema::Type& own) const;
-    /// `evaluate()` with the constant `declaration` marked as being evaluated.
-    template <typename Evaluate>
-    auto within(const ast::VariableDeclaration& declaration, Evaluate evaluate) const
-        -> decltype(evaluate()) {
-        evaluating_.insert(&declaration);
-        auto value = evaluate();
-        evaluating_.erase(&declaration);
-        return value;
-    }
+    /// The constant of `expression`, typed on demand (where `expected`) when the typing pass
+    /// has not typed it yet: a bound, a CONSTANT's initial value used before it is declared.
+    const Constant* typed_constant(const ast::Expression& expression,
+                                   const sema::Type* expected) const;
 
     /// A constant with the type the VM holds it in.
     struct Held {
@@ -115,11 +117,10 @@ private:
     std::optional<Constant> call_value(const ast::Expression& expression,
                                        const ast::CallExpression& node) const;
 
-    const TypedProgram& program_;
+    TypedProgram& program_;
     sema::TypeTable& types_;
-    /// The values of arithmetic on small integers computed wider than their type (held()).
-    mutable std::unordered_map<const ast::Expression*, Constant> held_;
     mutable std::unordered_set<const ast::VariableDeclaration*> evaluating_;
+    mutable std::unordered_set<const ast::VariableDeclaration*> circular_;
 };
 
 } // namespace eposp::compiler::types

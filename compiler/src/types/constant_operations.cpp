@@ -11,6 +11,7 @@
 #include "expression_typer.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <type_traits>
 
 namespace eposp::compiler::types {
@@ -240,6 +241,31 @@ std::optional<Constant> shift(Operation operation, const Constant& value, std::u
     });
 }
 
+/// Whether `op` on `l` and `r` wraps around in T: its exact result is no value of T.
+template <typename T>
+bool wraps_in(ast::BinaryOperator op, T l, T r) {
+    if constexpr (!std::is_integral_v<T>) {
+        return false;
+    } else {
+        T exact{};
+        switch (op) {
+        case ast::BinaryOperator::Add:
+            return __builtin_add_overflow(l, r, &exact);
+        case ast::BinaryOperator::Subtract:
+            return __builtin_sub_overflow(l, r, &exact);
+        case ast::BinaryOperator::Multiply:
+            return __builtin_mul_overflow(l, r, &exact);
+        case ast::BinaryOperator::Divide:
+            if constexpr (std::is_signed_v<T>) {
+                return r == -1 && l == std::numeric_limits<T>::min();
+            }
+            return false;
+        default:
+            return false;
+        }
+    }
+}
+
 } // namespace
 
 std::optional<Constant> ConstantEvaluator::convert(const Constant& constant, const sema::Type& from,
@@ -269,7 +295,7 @@ std::optional<ConstantEvaluator::Held>
 ConstantEvaluator::held(const ast::Expression& expression) const {
     // An arithmetic operation on small integers is held as computed, in DINT, while it feeds
     // its operator (codegen's operand_value, Value::iec); anything else as its type. Its
-    // operator marks it so after it was typed (computed_in), so it is computed again here.
+    // operator marks it so and records its constant as computed (computed_in).
     const Constant* value = program_.constant_of(expression);
     const sema::Type* type = program_.type_of(expression);
     if (value == nullptr || type == nullptr) {
@@ -281,15 +307,13 @@ ConstantEvaluator::held(const ast::Expression& expression) const {
     if (computed == nullptr || computed == &own || !is_arithmetic(binary->op)) {
         return Held{*value, &own};
     }
-    if (const auto wide = held_.find(&expression); wide != held_.end()) {
-        return Held{wide->second, computed};
-    }
-    auto wide = operation(*binary, *computed);
-    if (!wide) {
-        return std::nullopt;
-    }
-    held_.insert_or_assign(&expression, *wide);
-    return Held{std::move(*wide), computed};
+    return Held{*value, computed};
+}
+
+std::optional<Constant> ConstantEvaluator::computed(const ast::Expression& expression) const {
+    const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
+    const sema::Type* in = binary != nullptr ? program_.operands_of(expression) : nullptr;
+    return in != nullptr ? operation(*binary, *in) : std::nullopt;
 }
 
 std::optional<Constant> ConstantEvaluator::operation(const ast::BinaryExpression& node,
@@ -344,13 +368,10 @@ std::optional<Constant> ConstantEvaluator::binary_value(const ast::Expression& e
         return time_value(node, type);
     }
     // As eval() gives it: an arithmetic result computed wider than its type cut to the type
-    // (kept as computed for the operator it feeds, held()).
+    // (recorded as computed where it feeds an operator, computed_in).
     auto value = operation(node, *computed);
     if (!value || std::holds_alternative<bool>(*value)) {
         return value;
-    }
-    if (computed != &type && is_arithmetic(node.op)) {
-        held_.insert_or_assign(&expression, *value);
     }
     return convert(*value, *computed, type);
 }
@@ -575,6 +596,55 @@ std::optional<Constant> ConstantEvaluator::call_value(const ast::Expression& exp
     default:
         return std::nullopt;
     }
+}
+
+bool ConstantEvaluator::wraps(const ast::Expression& expression) const {
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        // -x wraps at the most negative value of a signed type, at any other than 0 of an
+        // unsigned one.
+        const Constant* value = program_.constant_of(*unary->operand);
+        const sema::Type* type = program_.type_of(*unary->operand);
+        if (unary->op != ast::UnaryOperator::Negate || value == nullptr || type == nullptr) {
+            return false;
+        }
+        return with_scalar(sema::scalar_of(types_.unranged(*type)),
+                           [&](auto tag) -> std::optional<bool> {
+                               using T = typename decltype(tag)::type;
+                               if constexpr (!std::is_integral_v<T>) {
+                                   return false;
+                               } else {
+                                   const auto x = scalar_value<T>(*value);
+                                   return x &&
+                                          (std::is_signed_v<T> ? *x == std::numeric_limits<T>::min()
+                                                               : *x != 0);
+                               }
+                           })
+            .value_or(false);
+    }
+    const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
+    const sema::Type* in = binary != nullptr ? program_.operands_of(expression) : nullptr;
+    if (in == nullptr || !is_arithmetic(binary->op) ||
+        (!sema::is_integer(*in) && !sema::is_bit_string(*in))) {
+        return false;
+    }
+    const auto left = held(*binary->left);
+    const auto right = left ? held(*binary->right) : std::nullopt;
+    const auto l = right ? convert(left->value, *left->type, *in) : std::nullopt;
+    const auto r = l ? convert(right->value, *right->type, *in) : std::nullopt;
+    if (!r) {
+        return false;
+    }
+    const bool operation_wraps =
+        with_scalar(sema::scalar_of(*in), [&](auto tag) -> std::optional<bool> {
+            using T = typename decltype(tag)::type;
+            const auto x = scalar_value<T>(*l);
+            const auto y = scalar_value<T>(*r);
+            return x && y && wraps_in(binary->op, *x, *y);
+        }).value_or(false);
+    // A result computed in DINT and cut to its INT where it is not held (as stored).
+    const auto wide = computed(expression);
+    const Constant* recorded = program_.constant_of(expression);
+    return operation_wraps || (wide && recorded != nullptr && !same_number(*wide, *recorded));
 }
 
 } // namespace eposp::compiler::types

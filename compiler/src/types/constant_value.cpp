@@ -1,7 +1,9 @@
-// The constant the typing stage records for an expression (TypedProgram::constant_of).
+// The constant the typing stage records for an expression (TypedProgram::constant_of), and
+// what the stages after it ask of it.
 
 #include "constant_evaluator.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
+#include "expression_typer.hpp"
 
 namespace eposp::compiler::types {
 
@@ -54,14 +56,78 @@ std::optional<Constant> as_constant(const std::optional<T>& value) {
 
 } // namespace
 
-std::optional<Constant> ConstantEvaluator::own_value(const ast::Expression& initial,
-                                                     const sema::Type& own) const {
-    if (auto folded = folded_value(initial, own)) {
-        return folded;
+bool same_number(const Constant& a, const Constant& b) {
+    // Held signed or unsigned: its sign and its bits.
+    const auto number = [](const Constant& c) -> std::optional<std::pair<bool, std::uint64_t>> {
+        if (const auto* i = std::get_if<std::int64_t>(&c)) {
+            return std::pair{*i < 0, static_cast<std::uint64_t>(*i)};
+        }
+        if (const auto* u = std::get_if<std::uint64_t>(&c)) {
+            return std::pair{false, *u};
+        }
+        return std::nullopt;
+    };
+    return number(a) && number(a) == number(b);
+}
+
+const ast::VariableDeclaration*
+ConstantEvaluator::constant(const ast::Expression& expression) const {
+    const auto* name = std::get_if<ast::NameExpression>(&expression.node);
+    const sema::Symbol* symbol = name != nullptr ? types_.model().resolved(name->name) : nullptr;
+    if (symbol == nullptr || symbol->kind != sema::SymbolKind::Variable ||
+        symbol->variable == nullptr || !symbol->variable->initial_value ||
+        !std::holds_alternative<ast::ExpressionPtr>(symbol->variable->initial_value->value) ||
+        !types_.is_constant(*symbol->variable)) {
+        return nullptr;
     }
-    // What the folding above does not cover (a standard function, `SHL(WORD#1, 4)`): the
-    // constant the typing stage gave the initial value, stored into the constant's type.
-    return typed_as(initial, own);
+    if (evaluating_.contains(symbol->variable)) {
+        circular_.insert(symbol->variable);
+        return nullptr;
+    }
+    return symbol->variable;
+}
+
+const Constant* ConstantEvaluator::typed_constant(const ast::Expression& expression,
+                                                  const sema::Type* expected) const {
+    if (program_.type_of(expression) == nullptr) {
+        // Its own place in the program reports its errors, when the typing pass reaches it.
+        Diagnostics unreported;
+        ExpressionTyper(program_, types_.model(), unreported).type_alone(expression, expected);
+    }
+    return program_.constant_of(expression);
+}
+
+std::optional<std::int64_t>
+ConstantEvaluator::fold_integer(const ast::Expression& expression) const {
+    const Constant* constant = typed_constant(expression, nullptr);
+    if (const auto* i = constant != nullptr ? std::get_if<std::int64_t>(constant) : nullptr) {
+        return *i;
+    }
+    const auto* u = constant != nullptr ? std::get_if<std::uint64_t>(constant) : nullptr;
+    if (u == nullptr || *u > static_cast<std::uint64_t>(INT64_MAX)) {
+        return std::nullopt;
+    }
+    return static_cast<std::int64_t>(*u);
+}
+
+std::optional<std::uint64_t>
+ConstantEvaluator::fold_unsigned(const ast::Expression& expression) const {
+    const Constant* constant = typed_constant(expression, nullptr);
+    if (const auto* i = constant != nullptr ? std::get_if<std::int64_t>(constant) : nullptr) {
+        return static_cast<std::uint64_t>(*i);
+    }
+    const auto* u = constant != nullptr ? std::get_if<std::uint64_t>(constant) : nullptr;
+    return u != nullptr ? std::optional(*u) : std::nullopt;
+}
+
+const ast::Literal* ConstantEvaluator::literal(const ast::Expression& expression) const {
+    if (const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node)) {
+        return &literal->value;
+    }
+    const ast::VariableDeclaration* declaration = constant(expression);
+    return declaration != nullptr
+               ? defining(*declaration, [&] { return literal(initial_value(*declaration)); })
+               : nullptr;
 }
 
 std::optional<Constant> ConstantEvaluator::typed_as(const ast::Expression& expression,
@@ -79,39 +145,7 @@ bool ConstantEvaluator::typed_fits(const ast::Expression& expression,
     const auto into = constant != nullptr && from != nullptr
                           ? convert(*constant, types_.unranged(*from), type)
                           : std::nullopt;
-    // The same number, whether held signed or unsigned.
-    const auto number = [](const Constant& c) -> std::optional<std::pair<bool, std::uint64_t>> {
-        if (const auto* i = std::get_if<std::int64_t>(&c)) {
-            return std::pair{*i < 0, static_cast<std::uint64_t>(*i)};
-        }
-        if (const auto* u = std::get_if<std::uint64_t>(&c)) {
-            return std::pair{false, *u};
-        }
-        return std::nullopt;
-    };
-    return into && number(*into) && number(*into) == number(*constant);
-}
-
-std::optional<Constant> ConstantEvaluator::folded_value(const ast::Expression& initial,
-                                                        const sema::Type& own) const {
-    if (sema::is_real(own)) {
-        return as_constant(real(initial, own.size == 4));
-    }
-    if (sema::is_time_like(own)) {
-        return as_constant(time(initial, own.elementary == ast::ElementaryType::TimeOfDay ||
-                                             own.elementary == ast::ElementaryType::Ltod));
-    }
-    if (sema::is_bool(own)) {
-        return as_constant(boolean(initial));
-    }
-    if (own.kind != sema::TypeKind::Enum && (sema::is_integer(own) || sema::is_bit_string(own))) {
-        const auto bits = fold_as(initial, own);
-        if (!bits) {
-            return std::nullopt;
-        }
-        return sema::is_signed(own) ? Constant{static_cast<std::int64_t>(*bits)} : Constant{*bits};
-    }
-    return value(initial, own); // an enumeration value, a CHAR, a STRING
+    return into && same_number(*into, *constant);
 }
 
 std::optional<Constant> ConstantEvaluator::value(const ast::Expression& expression,
@@ -124,10 +158,17 @@ std::optional<Constant> ConstantEvaluator::value(const ast::Expression& expressi
     }
     if (const ast::VariableDeclaration* declaration = constant(expression)) {
         // A CONSTANT has the value its own type computes for its initial value.
+        // Its initial value typed on demand where the typing pass has not reached it yet (a
+        // CONSTANT of a VAR_GLOBAL CONSTANT used in a bound).
         const sema::Type* own = types_.resolve(declaration->type);
-        return own == nullptr ? std::nullopt : within(*declaration, [&] {
-            return own_value(initial_value(*declaration), *own);
-        });
+        if (own == nullptr) {
+            return std::nullopt;
+        }
+        const ast::Expression& initial = initial_value(*declaration);
+        const Constant* constant =
+            defining(*declaration, [&] { return typed_constant(initial, own); });
+        const sema::Type* from = constant != nullptr ? program_.type_of(initial) : nullptr;
+        return from != nullptr ? convert(*constant, types_.unranged(*from), *own) : std::nullopt;
     }
     if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
         return unary_value(*unary);

@@ -32,9 +32,19 @@ void ExpressionTyper::sections(const std::vector<ast::DeclarationSection>& secti
         }
         for (const ast::VariableDeclaration& declaration : variables->variables) {
             type_spec(declaration.type);
-            if (declaration.initial_value) {
-                initializer(*declaration.initial_value, program_.types().resolve(declaration.type));
+            if (!declaration.initial_value) {
+                continue;
             }
+            const sema::Type* type = program_.types().resolve(declaration.type);
+            if (!variables->constant) {
+                initializer(*declaration.initial_value, type);
+                continue;
+            }
+            // A use of the CONSTANT in its own initial value is none (circular()).
+            defining_ = &declaration;
+            program_.constants().defining(declaration,
+                                          [&] { initializer(*declaration.initial_value, type); });
+            defining_ = nullptr;
         }
     }
 }
@@ -76,9 +86,16 @@ void ExpressionTyper::initializer(const ast::Initializer& initializer, const sem
         // The image holds the value folded (a constant defined through itself has none): what
         // code generation writes (codegen/initial_values.cpp).
         if (errors == diagnostics_.error_count()) {
-            const auto bytes = constant_bytes(**expression, *target, program_.constants());
+            const auto bytes = constant_bytes(**expression, *target, program_);
             if (const auto* refusal = std::get_if<ConstantRefusal>(&bytes)) {
-                diagnostics_.error(refusal->code, (*expression)->range, refusal->message);
+                const bool circular = defining_ != nullptr &&
+                                      refusal->code == DiagnosticCode::E0313 &&
+                                      program_.constants().circular(*defining_);
+                diagnostics_.error(refusal->code, (*expression)->range,
+                                   circular
+                                       ? fmt::format("the constant '{}' is defined through itself",
+                                                     defining_->names.front().name)
+                                       : refusal->message);
             }
         }
     } else if (const auto* elements =

@@ -7,6 +7,7 @@
 
 #include "constant_evaluator.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace eposp::compiler::types {
@@ -172,10 +173,30 @@ const sema::Type* ExpressionTyper::type(const ast::Expression& expression,
     if (result != nullptr) {
         program_.set_type(expression, *result);
         if (auto constant = program_.constants().value(expression, *result)) {
-            program_.set_constant(expression, std::move(*constant));
+            record_constant(expression, std::move(*constant));
         }
     }
     return result;
+}
+
+void ExpressionTyper::record_constant(const ast::Expression& expression, Constant value) {
+    program_.set_constant(expression, std::move(value));
+    // Through the operands (a wrapped value divided by 2 is still wrong), but not through a
+    // CONSTANT, whose own declaration refuses its value.
+    const auto operand_wraps = [&]() {
+        if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+            return program_.wraps(*unary->operand);
+        }
+        if (const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node)) {
+            return program_.wraps(*binary->left) || program_.wraps(*binary->right);
+        }
+        const auto* call = std::get_if<ast::CallExpression>(&expression.node);
+        return call != nullptr &&
+               std::ranges::any_of(call->arguments, [&](const ast::Argument& argument) {
+                   return program_.wraps(*argument.value);
+               });
+    };
+    program_.set_wraps(expression, program_.constants().wraps(expression) || operand_wraps());
 }
 
 } // namespace eposp::compiler::types

@@ -35,6 +35,11 @@ public:
     void sections(const std::vector<ast::DeclarationSection>& sections);
     void configuration(const ast::Configuration& configuration);
     void type_declaration(const ast::TypeDeclaration& declaration);
+    /// Types `expression` (`expected`: what its context needs) apart from the pass, for the
+    /// constant folder (a bound, a CONSTANT used before its declaration is typed).
+    void type_alone(const ast::Expression& expression, const sema::Type* expected) {
+        type(expression, expected);
+    }
 
 private:
     using E = ast::ElementaryType;
@@ -62,6 +67,9 @@ private:
     /// expect(), for a value stored into a variable or parameter of type `target`.
     void store(const ast::Expression& expression, const sema::Type& target, const char* what);
 
+    /// Records `value` as the constant of `expression` and whether it wraps (TypedProgram::
+    /// wraps).
+    void record_constant(const ast::Expression& expression, Constant value);
     /// The type of `expression`; `expected` is what its context needs (null: nothing).
     const sema::Type* type(const ast::Expression& expression, const sema::Type* expected);
     const sema::Type* literal(const ast::Expression& expression, const ast::Literal& literal,
@@ -129,6 +137,9 @@ private:
     const sema::SemanticModel& model_;
     Diagnostics& diagnostics_;
     const ast::Pou* current_ = nullptr;
+    /// The CONSTANT whose initial value is being typed (null: none), named where it is
+    /// defined through itself.
+    const ast::VariableDeclaration* defining_ = nullptr;
     /// The call of the CallStatement being typed: it needs no value.
     const ast::Expression* statement_call_ = nullptr;
 };

@@ -3,7 +3,7 @@
 // The value an initial value gives a variable, as the image holds it (IEC 61131-3 ed. 3,
 // 6.5.1.3 and 6.4.2: an initial value is a constant expression of the variable's type). One
 // function for both stages that need it: the typing stage reports what it refuses
-// (types/initializers.cpp), code generation writes the bytes (codegen/initial_values.cpp).
+// (types/declaration_typing.cpp), code generation writes the bytes (codegen/initial_values.cpp).
 
 #include "constant_evaluator.hpp"
 #include "eposp/compiler/diagnostic_code.hpp"
@@ -22,15 +22,13 @@ struct ConstantRefusal {
     std::string message;
 };
 
-/// The bytes of `expression` as a constant of `type`, as `constants` evaluates it: literals,
-/// enumeration values, CONSTANTs (VAR CONSTANT, VAR_GLOBAL CONSTANT) with a plain initial value,
-/// signs, + - * / (and MOD on integers) of those, NOT AND OR XOR on BOOLs and integers (NOT on
-/// literals and constants of the variable's type); durations and dates (but TIME_OF_DAY, which
-/// wraps at midnight) plus or minus a duration, a duration times or divided by an integer (`T#1ms *
-/// 4`), as the VM computes them (a REAL factor rounds at run time and is no constant here).
+/// The bytes of `expression`, typed as a value of `type`, as the image holds it: the constant
+/// the typing stage recorded for it (TypedProgram::constant_of) stored into `type` (E0313 where
+/// there is none; E0311 for an integer that does not fit, or that an operation wrapped); a text
+/// or NULL from its literal, the literal's or the CONSTANT's that it names.
 std::variant<std::vector<std::uint8_t>, ConstantRefusal>
 constant_bytes(const ast::Expression& expression, const sema::Type& type,
-               const ConstantEvaluator& constants);
+               const TypedProgram& program);
 
 /// `value`'s low `size` bytes, little-endian.
 std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size);

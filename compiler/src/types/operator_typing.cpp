@@ -1,6 +1,7 @@
 // Operators typed (table 71): operands brought to their common type by the widening of figure
 // 11, time and date arithmetic (table 30), the operator's own rules.
 
+#include "constant_evaluator.hpp"
 #include "expression_typer.hpp"
 
 #include <fmt/format.h>
@@ -43,6 +44,10 @@ void ExpressionTyper::computed_in(const ast::Expression& expression,
     for (const ast::Expression* operand : {node.left.get(), node.right.get()}) {
         if (held(*operand)) {
             computed_at(*operand, dint);
+            // Its constant is the value this operator computes with, not cut to its type.
+            if (auto value = program_.constants().computed(*operand)) {
+                record_constant(*operand, std::move(*value));
+            }
         }
     }
     computed_at(expression, wide ? dint : common);

@@ -45,6 +45,14 @@ void TypedProgram::set_constant(const ast::Expression& expression, Constant valu
     constants_.set(&expression, &constant_values_.emplace_back(std::move(value)));
 }
 
+void TypedProgram::set_wraps(const ast::Expression& expression, bool wraps) {
+    if (wraps) {
+        wrapping_.insert(&expression);
+    } else {
+        wrapping_.erase(&expression);
+    }
+}
+
 const AccessPath* TypedProgram::access_path(const ast::AccessDeclaration& declaration) const {
     const auto found = access_paths_.find(&declaration);
     return found != access_paths_.end() ? &found->second : nullptr;

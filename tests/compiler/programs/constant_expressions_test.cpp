@@ -206,5 +206,69 @@ TEST(ConstantExpressions, ADivisionByZeroIsNoConstant) {
     EXPECT_EQ(typed->program().constant_of(typed->value(1)), nullptr);
 }
 
+// An arithmetic operand an operator holds in DINT has, as its constant, the value the operator
+// computes with: `USINT#255 + 1` feeds `/` as 256, not as its USINT 0.
+TEST(ConstantExpressions, AnOperandHeldInDintHasTheValueItsOperatorComputesWith) {
+    const auto typed = type_body("x : LINT;", "x := (USINT#255 + 1) / 2;");
+    ASSERT_TRUE(typed->front_end->program) << typed->errors();
+    const auto& quotient = std::get<ast::BinaryExpression>(typed->value(0).node);
+    const types::Constant* held = typed->program().constant_of(*quotient.left);
+    ASSERT_NE(held, nullptr);
+    EXPECT_EQ(*held, types::Constant{std::int64_t{256}});
+    StProgram run("PROGRAM Main VAR x : LINT; END_VAR x := (USINT#255 + 1) / 2; END_PROGRAM");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1));
+    EXPECT_EQ(run.get<std::int64_t>("Main.x"), 128);
+}
+
+// A constant index addresses the element the same index computed at run time does: `UINT#0 - 1`
+// is the UINT 65535, as `u - 1` of a UINT u = 0 is, not -1.
+TEST(ConstantExpressions, AConstantIndexIsTheIndexTheVmComputes) {
+    StProgram run(R"(PROGRAM Main
+VAR a : ARRAY[-1..65535] OF INT; u : UINT; folded : LINT; computed : LINT; END_VAR
+a[-1] := 1; a[65535] := 2;
+folded := a[UINT#0 - 1];
+computed := a[u - 1];
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1));
+    EXPECT_EQ(run.get<std::int64_t>("Main.computed"), 2);
+    EXPECT_EQ(run.get<std::int64_t>("Main.folded"), 2);
+}
+
+// Bounds, subranges, CASE labels and CONSTANTs read the one folder, standard functions
+// included, also a CONSTANT a TYPE declared before it uses.
+TEST(ConstantExpressions, BoundsSubrangesAndCaseLabelsFoldLikeEveryConstant) {
+    StProgram run(R"(TYPE Buffer : ARRAY[0..kSize] OF BYTE; END_TYPE
+VAR_GLOBAL CONSTANT
+    kSize : INT := SHL(INT#1, 2);
+END_VAR
+PROGRAM Main
+VAR CONSTANT kLast : DINT := kSize * 2 + 1; END_VAR
+VAR
+    a : ARRAY[0..SHL(1, 3)] OF INT;
+    b : ARRAY[0..kLast] OF BYTE;
+    buffer : Buffer;
+    s : INT(0..SHL(1, 4)) := SHL(1, 4);
+    upper : DINT; last : DINT; size : DINT; label : DINT;
+END_VAR
+upper := UPPER_BOUND(a, 1);
+last := UPPER_BOUND(b, 1);
+size := UPPER_BOUND(buffer, 1);
+CASE s OF
+SHL(1, 4): label := 16;
+ELSE label := -1;
+END_CASE
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1));
+    EXPECT_EQ(run.get<std::int32_t>("Main.upper"), 8);
+    EXPECT_EQ(run.get<std::int32_t>("Main.last"), 9);
+    EXPECT_EQ(run.get<std::int32_t>("Main.size"), 4);
+    EXPECT_EQ(run.get<std::int32_t>("Main.label"), 16);
+}
+
 } // namespace
 } // namespace eposp::compiler::test

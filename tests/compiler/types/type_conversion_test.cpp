@@ -22,12 +22,6 @@ public:
     std::optional<std::int64_t> fold_integer(const ast::Expression&) const override {
         return std::nullopt;
     }
-    std::optional<std::uint64_t> fold_unsigned(const ast::Expression&) const override {
-        return std::nullopt;
-    }
-    std::optional<std::uint64_t> fold_as(const ast::Expression&, const Type&) const override {
-        return std::nullopt;
-    }
 };
 
 TEST_P(ImplicitConversion, FollowsFigure11) {

@@ -19,6 +19,7 @@
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <variant>
 #include <vector>
 
@@ -84,6 +85,10 @@ public:
     /// Its value when it is constant (a literal, a CONSTANT, an enumeration value, an
     /// operation on constants).
     const Constant* constant_of(const ast::Expression& expression) const;
+    /// Whether an integer operation wrapped around computing that value, the expression's own
+    /// or an operand's (`32767 + 1` in INT): it is not the number the expression means, which
+    /// an initial value refuses (E0311).
+    bool wraps(const ast::Expression& expression) const { return wrapping_.contains(&expression); }
     /// What a CallExpression calls; null for any other expression.
     const CallTarget* call_target(const ast::Expression& expression) const;
     /// The type a BinaryExpression's operands are both brought to and the operation computed
@@ -107,12 +112,13 @@ public:
     const ast::Pou* library_pou(std::string_view name) const { return library_(name); }
     sema::TypeTable& types() { return types_; }
     const sema::TypeTable& types() const { return types_; }
-    /// The one evaluator of constant expressions (types/constant_evaluator.hpp).
+    /// The one folder of constant expressions (types/constant_evaluator.hpp).
     const ConstantEvaluator& constants() const { return *evaluator_; }
 
     // Construction, used by the typing pass.
     void set_type(const ast::Expression& expression, const sema::Type& type);
     void set_constant(const ast::Expression& expression, Constant value);
+    void set_wraps(const ast::Expression& expression, bool wraps);
     void set_call(const ast::Expression& expression, CallTarget target);
     void set_operands(const ast::Expression& expression, const sema::Type& type);
     void add_store(Store store) { stores_.push_back(store); }
@@ -122,7 +128,7 @@ private:
     const sema::SemanticModel& model_;
     std::function<const ast::Pou*(std::string_view)> library_;
     std::function<bool(const ast::VariableDeclaration&)> is_constant_;
-    // Before types_, which it is handed: the evaluator asks the table for constants' types and
+    // Before types_, which it is handed: the folder asks the table for constants' types and
     // the table asks it for bounds.
     std::unique_ptr<ConstantEvaluator> evaluator_;
     sema::TypeTable types_;
@@ -134,6 +140,7 @@ private:
     sema::NodeMap<ast::Expression, Constant> constants_;
     std::deque<CallTarget> call_targets_;
     sema::NodeMap<ast::Expression, CallTarget> calls_;
+    std::unordered_set<const ast::Expression*> wrapping_;
     std::vector<Store> stores_;
     std::unordered_map<const ast::AccessDeclaration*, AccessPath> access_paths_;
 };
