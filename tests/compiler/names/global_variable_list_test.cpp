@@ -173,7 +173,7 @@ TEST(GlobalVariableList, AConstantDefinedThroughItselfHasNoValue) {
     const std::string errors = diagnostics_of(
         "VAR_GLOBAL CONSTANT a : INT := b; END_VAR\nVAR_GLOBAL CONSTANT b : INT := a; END_VAR\n"
         "PROGRAM Main\nVAR x : ARRAY[1..a] OF INT; END_VAR\nEND_PROGRAM\n");
-    EXPECT_THAT(errors, HasSubstr("test.st:1:32: error: the initial value must be a constant INT"));
+    EXPECT_THAT(errors, HasSubstr("test.st:1:32: error: the constant 'a' is defined through itself"));
     EXPECT_THAT(errors, HasSubstr("test.st:4:15: error: array bounds must be constants"));
 }
 
