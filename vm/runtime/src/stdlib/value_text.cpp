@@ -1,7 +1,7 @@
 #include "value_text.hpp"
 
 #include "eposp/vm/stdlib/duration_fraction.hpp"
-#include "time_units.hpp"
+#include "eposp/vm/stdlib/time_units.hpp"
 
 #include <algorithm>
 #include <charconv>
