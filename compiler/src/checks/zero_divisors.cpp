@@ -1,5 +1,5 @@
-// E0408: a divisor of '/', MOD, DIV or MOD() that is a constant zero: the division would fail
-// at every run, so it is refused when compiling.
+// E0408: a divisor of '/', MOD, DIV(), MOD() or DIV_TIME() that is a constant zero: the division
+// would fail at every run, so it is refused when compiling.
 
 #include "calls.hpp"
 #include "pou_checks.hpp"
@@ -24,12 +24,12 @@ void check_divisor(const PouUnderCheck& check, bool divide, const ast::Expressio
     }
 }
 
-// DIV(a, b, ...) and MOD(a, b, ...): every input after the first divides.
+// DIV(a, b, ...), MOD(a, b, ...) and DIV_TIME(t, n): every input after the first divides.
 void check_call(const PouUnderCheck& check, const ast::Expression& expression,
                 const ast::CallExpression& call) {
     const types::CallTarget* target = check.program.call_target(expression);
     if (target == nullptr || target->kind != types::CallKind::StandardFunction ||
-        (target->name != "DIV" && target->name != "MOD")) {
+        (target->name != "DIV" && target->name != "MOD" && target->name != "DIV_TIME")) {
         return;
     }
     bool first = true;
@@ -38,7 +38,7 @@ void check_call(const PouUnderCheck& check, const ast::Expression& expression,
             continue;
         }
         if (!first) {
-            check_divisor(check, target->name == "DIV", *argument.value);
+            check_divisor(check, target->name != "MOD", *argument.value);
         }
         first = false;
     }
