@@ -19,25 +19,6 @@ using S = vm::Scalar;
 using vm::stdlib::Family;
 using vm::stdlib::Operation;
 
-namespace {
-
-/// Nanoseconds per unit when a time converts to or from a number (CODESYS: TIME and TOD in
-/// milliseconds, DATE and DT in seconds, the long forms in nanoseconds).
-std::int64_t time_unit(E type) {
-    switch (type) {
-    case E::Time:
-    case E::TimeOfDay:
-        return 1'000'000;
-    case E::Date:
-    case E::DateAndTime:
-        return 1'000'000'000;
-    default:
-        return 1;
-    }
-}
-
-} // namespace
-
 std::optional<Value> PouGenerator::standard_function(const types::CallTarget& target,
                                                      const ast::Expression& call,
                                                      const sema::Type* hint,
@@ -174,12 +155,12 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         return Value{value.operand, &want}; // the same nanoseconds
     }
     Value source = value;
-    if (from_time && time_unit(from.elementary) != 1) {
+    if (from_time && sema::number_unit(from.elementary) != 1) {
         // Durations and times count in nanoseconds; as numbers they count in their unit.
         const sema::Type& lint = types_.elementary(E::Lint);
         const Operand scaled = temp(lint);
         emit(Opcode::DivI64, scaled, value.operand,
-             integer_constant(lint, time_unit(from.elementary)));
+             integer_constant(lint, sema::number_unit(from.elementary)));
         source = Value{scaled, &lint};
     }
     if (to_time) {
@@ -187,7 +168,7 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
         const auto as_lint = explicit_convert(source, lint, nullptr);
         const Operand result = result_operand(want, dest);
         emit(Opcode::Mul64, result, as_lint->operand,
-             integer_constant(lint, time_unit(want.elementary)));
+             integer_constant(lint, sema::number_unit(want.elementary)));
         return Value{result, &want};
     }
     const S a = sema::scalar_of(*source.type);

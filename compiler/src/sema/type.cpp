@@ -96,6 +96,18 @@ bool is_time_like(const Type& type) {
     return elementary_in(type, {E::Time, E::Ltime, E::Date, E::Ldate, E::TimeOfDay, E::Ltod,
                                 E::DateAndTime, E::Ldt});
 }
+std::int64_t number_unit(ast::ElementaryType type) {
+    switch (type) {
+    case E::Time:
+    case E::TimeOfDay:
+        return 1'000'000;
+    case E::Date:
+    case E::DateAndTime:
+        return 1'000'000'000;
+    default:
+        return 1;
+    }
+}
 bool is_signed(const Type& type) {
     return elementary_in(type, {E::Sint, E::Int, E::Dint, E::Lint}) || is_real(type) ||
            is_time_like(type);

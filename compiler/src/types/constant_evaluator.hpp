@@ -40,8 +40,9 @@ public:
     /// The constant of an expression of `type` as the typing stage records it, bottom up from
     /// its operands' (constant_operations.cpp): literals, enumeration values, CONSTANTs (their
     /// value as their own type computes it), operators, conversions and the pure standard
-    /// functions (ABS, MOVE, ADD..., AND..., GT..., SHL..., SEL, MUX, MIN, MAX, LIMIT), each
-    /// computed as the VM computes it.
+    /// functions (ABS, MOVE, ADD..., AND..., GT..., SHL..., SEL, MUX, MIN, MAX, LIMIT, the real
+    /// functions, table 30, LOWER_BOUND, UPPER_BOUND, LEN of a literal), each computed as the VM
+    /// computes it.
     std::optional<Constant> value(const ast::Expression& expression, const sema::Type& type) const;
     /// The constant the typing stage recorded for `expression` (constant_of), as a value of
     /// `type`; none where it recorded none or it does not convert.
@@ -111,11 +112,41 @@ private:
     std::optional<Constant> binary_value(const ast::Expression& expression,
                                          const ast::BinaryExpression& node,
                                          const sema::Type& type) const;
-    /// Time and date arithmetic (table 30), which has no operands_of.
-    std::optional<Constant> time_value(const ast::BinaryExpression& node,
-                                       const sema::Type& type) const;
     std::optional<Constant> call_value(const ast::Expression& expression,
                                        const ast::CallExpression& node) const;
+
+    // The families folded by the VM's own functions, each in its file.
+    /// SQRT ... ATAN2, EXPT of `inputs`, values of `real` (constant_real_functions.cpp).
+    std::optional<Constant> real_function(std::string_view name,
+                                          const std::vector<Constant>& inputs,
+                                          const sema::Type& real) const;
+    /// `a ** b` of the real type `type`.
+    std::optional<Constant> power_value(const ast::BinaryExpression& node,
+                                        const sema::Type& type) const;
+    /// Time and date arithmetic (table 30), which has no operands_of
+    /// (constant_time_operations.cpp).
+    std::optional<Constant> time_value(const ast::BinaryExpression& node,
+                                       const sema::Type& type) const;
+    /// A point in time or duration moved by a duration, or two subtracted, into `result`.
+    std::optional<Constant> moved_time(bool add, std::int64_t left, std::int64_t right,
+                                       const sema::Type& result) const;
+    /// A duration times or divided by a number.
+    std::optional<Constant> scaled_time(bool multiply, std::int64_t time, const Constant& factor,
+                                        const sema::Type& factor_type) const;
+    /// ADD_TIME, ADD_TOD_TIME, MUL_TIME ... of `values`, of `types`.
+    std::optional<Constant> time_function(std::string_view name,
+                                          const std::vector<Constant>& values,
+                                          const std::vector<const sema::Type*>& types,
+                                          const sema::Type& result) const;
+    /// A conversion `from` -> `to` (table 22) as code generation's explicit_convert: convert()
+    /// and to and from the times (TIME_TO_DINT, DINT_TO_TIME, DT_TO_DATE).
+    std::optional<Constant> explicit_conversion(const Constant& constant, const sema::Type& from,
+                                                const sema::Type& to) const;
+    /// LOWER_BOUND or UPPER_BOUND of an array of fixed bounds (constant_array_bounds.cpp).
+    std::optional<Constant> bound_value(const ast::CallExpression& node, bool upper) const;
+    /// LEN of a STRING literal (constant_texts.cpp).
+    std::optional<Constant> text_function(const std::string& name,
+                                          const ast::CallExpression& node) const;
 
     TypedProgram& program_;
     sema::TypeTable& types_;

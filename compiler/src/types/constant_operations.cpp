@@ -363,9 +363,12 @@ std::optional<Constant> ConstantEvaluator::unary_value(const ast::UnaryExpressio
 std::optional<Constant> ConstantEvaluator::binary_value(const ast::Expression& expression,
                                                         const ast::BinaryExpression& node,
                                                         const sema::Type& type) const {
+    if (node.op == ast::BinaryOperator::Power) {
+        return power_value(node, type); // constant_real_functions.cpp
+    }
     const sema::Type* computed = program_.operands_of(expression);
     if (computed == nullptr) {
-        return time_value(node, type);
+        return time_value(node, type); // constant_time_operations.cpp
     }
     // As eval() gives it: an arithmetic result computed wider than its type cut to the type
     // (recorded as computed where it feeds an operator, computed_in).
@@ -376,57 +379,29 @@ std::optional<Constant> ConstantEvaluator::binary_value(const ast::Expression& e
     return convert(*value, *computed, type);
 }
 
-std::optional<Constant> ConstantEvaluator::time_value(const ast::BinaryExpression& node,
-                                                      const sema::Type& type) const {
-    // Table 30 as the VM computes it (time_functions.cpp): sums and differences modulo 2^64,
-    // TIME * n and TIME / n by an integer; a TIME_OF_DAY wraps at midnight and a REAL factor
-    // rounds (neither folded here), a pointer moved is no constant.
-    using Op = ast::BinaryOperator;
-    const Constant* left = program_.constant_of(*node.left);
-    const Constant* right = program_.constant_of(*node.right);
-    const auto* l = left != nullptr ? std::get_if<std::int64_t>(left) : nullptr;
-    const sema::Type* right_type = program_.type_of(*node.right);
-    if (l == nullptr || right == nullptr || right_type == nullptr || !sema::is_time_like(type) ||
-        type.elementary == ast::ElementaryType::TimeOfDay ||
-        type.elementary == ast::ElementaryType::Ltod) {
-        return std::nullopt;
-    }
-    const bool scale = node.op == Op::Multiply || node.op == Op::Divide;
-    const auto r = (scale ? sema::is_integer(*right_type) : sema::is_time_like(*right_type))
-                       ? raw_bits(*right)
-                       : std::nullopt;
-    if (!r) {
-        return std::nullopt;
-    }
-    const auto ul = static_cast<std::uint64_t>(*l);
-    switch (node.op) {
-    case Op::Add:
-        return static_cast<std::int64_t>(ul + *r);
-    case Op::Subtract:
-        return static_cast<std::int64_t>(ul - *r);
-    case Op::Multiply:
-        return static_cast<std::int64_t>(ul * *r); // the factor as LINT, modulo 2^64
-    case Op::Divide:
-        // As DIV_TIME by a LINT: / -1 wraps, / 0 is no constant.
-        if (*r == 0 ||
-            (!sema::is_signed(*right_type) && *r > static_cast<std::uint64_t>(INT64_MAX))) {
-            return std::nullopt;
-        }
-        return vs::divide(*l, static_cast<std::int64_t>(*r));
-    default:
-        return std::nullopt;
-    }
-}
-
 std::optional<Constant> ConstantEvaluator::call_value(const ast::Expression& expression,
                                                       const ast::CallExpression& node) const {
     const CallTarget* target = program_.call_target(expression);
-    if (target == nullptr || target->result == nullptr || target->operand == nullptr ||
+    if (target == nullptr || target->result == nullptr ||
         (target->kind != CallKind::Conversion && target->kind != CallKind::StandardFunction)) {
         return std::nullopt;
     }
+    // The families without an overload's operand type: an array's bounds (its argument is no
+    // constant) and the string functions.
+    const vm::stdlib::StandardFunction* function = vm::stdlib::find_standard_function(target->name);
+    const bool text = function != nullptr && function->family == Family::Text;
+    if (function != nullptr && function->family == Family::Bound) {
+        return bound_value(node, target->name == "UPPER_BOUND"); // constant_array_bounds.cpp
+    }
+    if (target->operand == nullptr && !text) {
+        return std::nullopt;
+    }
     // Most calls have an input that is no constant. A call with EN may not run: no constant.
+    // ENO (of a call without EN, TRUE) is an output: not the function's value.
     for (const ast::Argument& argument : node.arguments) {
+        if (argument.name && equal_ignoring_case(argument.name->name, "ENO")) {
+            continue;
+        }
         if (program_.constant_of(*argument.value) == nullptr ||
             (argument.name && equal_ignoring_case(argument.name->name, "EN"))) {
             return std::nullopt;
@@ -451,11 +426,15 @@ std::optional<Constant> ConstantEvaluator::call_value(const ast::Expression& exp
     if (values.empty()) {
         return std::nullopt;
     }
+    if (text) {
+        return text_function(target->name, node); // constant_texts.cpp
+    }
     const sema::Type& operand = *target->operand;
     if (target->kind == CallKind::Conversion) {
         const auto source = convert(values[0], *types[0], operand);
         if (!source || target->name != "TRUNC") {
-            return source ? convert(*source, operand, *target->result) : std::nullopt;
+            // constant_time_operations.cpp: TIME_TO_DINT, DINT_TO_TIME, DT_TO_DATE...
+            return source ? explicit_conversion(*source, operand, *target->result) : std::nullopt;
         }
         // TRUNC as code generation computes it: toward zero into LINT, then through LREAL
         // into DINT, saturating.
@@ -464,7 +443,6 @@ std::optional<Constant> ConstantEvaluator::call_value(const ast::Expression& exp
                                      static_cast<double>(vs::truncate<std::int64_t>(*real)))))
                                : std::nullopt;
     }
-    const vm::stdlib::StandardFunction* function = vm::stdlib::find_standard_function(target->name);
     if (function == nullptr) {
         return std::nullopt;
     }
@@ -550,6 +528,14 @@ std::optional<Constant> ConstantEvaluator::call_value(const ast::Expression& exp
         const bool* g = std::get_if<bool>(&values[0]);
         return in && g != nullptr ? std::optional((*in)[*g ? 1 : 0]) : std::nullopt;
     }
+    case Family::Real:
+    case Family::Power: {
+        // constant_real_functions.cpp; EXPT's exponent is converted to the base's real type too.
+        const auto in = inputs(0);
+        return in ? real_function(target->name, *in, operand) : std::nullopt;
+    }
+    case Family::Time: // constant_time_operations.cpp
+        return time_function(target->name, values, types, *target->result);
     case Family::Multiplex: {
         // 6.6.2.5.9: K selects IN0..INn; out of range gives IN0 (codegen's selection()).
         const auto in = inputs(1);

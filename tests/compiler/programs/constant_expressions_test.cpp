@@ -140,16 +140,95 @@ const std::vector<Folded> kExpressions = {
     {Kind::Time, "T#1s - T#1500ms"},
     {Kind::Time, "MAX(T#1s, T#2s)"},
     {Kind::Time, "DT#2020-01-01-00:00:00 - DT#2019-12-31-23:00:00"},
+    // The real functions (vm/stdlib/real_functions.hpp), REAL's in single precision; an
+    // integer input is taken as LREAL; infinities are constants.
+    {Kind::Real, "SQRT(2.0)"},
+    {Kind::Real, "SQRT(REAL#2.0)"},
+    {Kind::Real, "SQRT(16)"},
+    {Kind::Real, "SQRT(SQRT(kR))"},
+    {Kind::Real, "LN(10.0)"},
+    {Kind::Real, "LN(REAL#10.0)"},
+    {Kind::Real, "LN(0.0)"},
+    {Kind::Real, "LOG(REAL#7.0)"},
+    {Kind::Real, "EXP(1.0)"},
+    {Kind::Real, "EXP(kR)"},
+    {Kind::Real, "EXP(1000.0)"},
+    {Kind::Real, "SIN(kR)"},
+    {Kind::Real, "SIN(1.0E22)"},
+    {Kind::Real, "COS(1.0)"},
+    {Kind::Real, "TAN(REAL#0.5)"},
+    {Kind::Real, "ASIN(0.5)"},
+    {Kind::Real, "ACOS(REAL#0.25)"},
+    {Kind::Real, "ATAN(2.0)"},
+    {Kind::Real, "ATAN2(1.0, -1.0)"},
+    {Kind::Real, "ATAN2(Y := REAL#1.0, X := kR)"},
+    {Kind::Real, "EXPT(2.0, 10)"},
+    {Kind::Real, "EXPT(kR, kI)"},
+    {Kind::Real, "EXPT(-2.0, 3)"},
+    {Kind::Real, "kR ** 2"},
+    {Kind::Real, "2.0 ** 0.5"},
+    {Kind::Real, "(kI + kI) ** 1.0"},
+    {Kind::Signed, "TRUNC(SQRT(17.0))"},
+    {Kind::Signed, "REAL_TO_DINT(LN(kR) * 1000.0)"},
+    // Conversions to and from the times: TIME and TOD count in ms, DATE and DT in s, the long
+    // forms in ns; DT_TO_DATE and DT_TO_TOD take a DT apart.
+    {Kind::Signed, "TIME_TO_DINT(T#1.5s)"},
+    {Kind::Signed, "TIME_TO_DINT(T#-1.5ms)"},
+    {Kind::Signed, "TIME_TO_LINT(kT)"},
+    {Kind::Signed, "LTIME_TO_LINT(LTIME#1ms)"},
+    {Kind::Signed, "TIME_TO_SINT(T#300ms)"},
+    {Kind::Real, "TIME_TO_REAL(T#1500ms)"},
+    {Kind::Signed, "TOD_TO_DINT(TOD#12:00:00.5)"},
+    {Kind::Signed, "DATE_TO_LINT(D#2020-01-02)"},
+    {Kind::Signed, "DT_TO_LINT(DT#2020-01-01-10:00:00)"},
+    {Kind::Signed, "DATE_TO_LINT(DT_TO_DATE(DT#2020-01-01-10:00:00))"},
+    {Kind::Signed, "TOD_TO_LINT(DT_TO_TOD(DT#2020-01-01-10:00:00))"},
+    {Kind::Time, "DINT_TO_TIME(1500)"},
+    {Kind::Time, "TO_TIME(kI)"},
+    {Kind::Time, "REAL_TO_TIME(2.5)"},
+    {Kind::Time, "LINT_TO_TIME(kBig)"},
+    {Kind::Signed, "TOD_TO_LINT(DINT_TO_TOD(1000))"},
+    {Kind::Signed, "LTIME_TO_LINT(TIME_TO_LTIME(T#1s))"},
+    // Table 30: a TIME_OF_DAY wraps at midnight, a TIME times a real rounds to the ns.
+    {Kind::Signed, "TOD_TO_LINT(TOD#23:00:00 + T#2h)"},
+    {Kind::Signed, "TOD_TO_LINT(TOD#01:00:00 - T#2h)"},
+    {Kind::Signed, "DT_TO_LINT(DT#2020-01-01-23:00:00 + T#2h)"},
+    {Kind::Time, "T#1s * 1.5"},
+    {Kind::Time, "kT * REAL#0.1"},
+    {Kind::Time, "T#1s / 3.0"},
+    {Kind::Time, "T#1ms * kI"},
+    {Kind::Time, "ADD_TIME(T#1s, T#2s)"},
+    {Kind::Time, "MUL_TIME(T#1s, 3)"},
+    {Kind::Time, "MUL_TIME(T#1s, 0.3)"},
+    {Kind::Time, "DIV_TIME(kT, -1)"},
+    {Kind::Time, "SUB_DT_DT(DT#2020-01-02-00:00:00, DT#2020-01-01-12:00:00)"},
+    {Kind::Time, "SUB_TOD_TOD(TOD#01:00:00, TOD#02:00:00)"},
+    {Kind::Signed, "TOD_TO_LINT(ADD_TOD_TIME(TOD#23:59:59, T#2s))"},
+    {Kind::Signed, "TOD_TO_LINT(SUB_TOD_TIME(TOD#00:00:01, T#2s))"},
+    {Kind::Signed, "DT_TO_LINT(CONCAT_DATE_TOD(D#2020-01-01, TOD#12:00:00))"},
+    // The bounds of an array of fixed bounds; ENO of a call without EN; LEN of a literal.
+    {Kind::Signed, "LOWER_BOUND(arr, 1)"},
+    {Kind::Signed, "UPPER_BOUND(arr, 1)"},
+    {Kind::Signed, "UPPER_BOUND(arr, 2)"},
+    {Kind::Bits, "SHL(IN := kB, N := 2, ENO => eno)"},
+    {Kind::Signed, "ABS(IN := -5, ENO => eno)"},
+    {Kind::Signed, "LEN('hello')"},
+    {Kind::Signed, "LEN('')"},
 };
 
-const char* kConstants = R"(VAR CONSTANT
+/// The operands the expressions name, CONSTANTs (`VAR CONSTANT`) or variables (`VAR`).
+std::string operands(const char* section) {
+    return std::string(section) + R"(
     kI : INT := 30000; kMinI : INT := -32768; kMinD : DINT := -2147483648;
     kMaxD : DINT := 2147483647; kU : UINT := 60000; kB : BYTE := 16#0F;
     kR : REAL := 1.1; kSeven : DINT := 7; kBig : LINT := 9007199254740993; kT : TIME := T#5ms;
 END_VAR
+VAR arr : ARRAY[-2..5, 1..3] OF INT; eno : BOOL; END_VAR
 )";
+}
 
-TEST(ConstantExpressions, TheTypingStagesConstantIsTheValueTheVmComputes) {
+/// PROGRAM Main assigning each expression to its variable, the operands in `section`.
+std::string program(const char* section) {
     std::string declarations = "VAR\n";
     std::string body;
     for (std::size_t i = 0; i < kExpressions.size(); ++i) {
@@ -157,11 +236,18 @@ TEST(ConstantExpressions, TheTypingStagesConstantIsTheValueTheVmComputes) {
             "    x" + std::to_string(i) + " : " + variable_type(kExpressions[i].kind) + ";\n";
         body += "x" + std::to_string(i) + " := " + kExpressions[i].expression + ";\n";
     }
-    const std::string source = "PROGRAM Main\n" + std::string(kConstants) + declarations +
-                               "END_VAR\n" + body + "END_PROGRAM\n";
-    const auto typed = type_source(source);
+    return "PROGRAM Main\n" + operands(section) + declarations + "END_VAR\n" + body +
+           "END_PROGRAM\n";
+}
+
+// Each constant is compared with what the VM computes for the expression, its operands
+// CONSTANTs and again variables (which no stage can fold).
+class ConstantExpressions : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ConstantExpressions, TheTypingStagesConstantIsTheValueTheVmComputes) {
+    const auto typed = type_source(program("VAR CONSTANT"));
     ASSERT_TRUE(typed->front_end->program) << typed->errors();
-    StProgram run(source);
+    StProgram run(program(GetParam()));
     ASSERT_TRUE(run.ok()) << run.errors();
     ASSERT_TRUE(run.scans(1));
     for (std::size_t i = 0; i < kExpressions.size(); ++i) {
@@ -199,8 +285,10 @@ TEST(ConstantExpressions, TheTypingStagesConstantIsTheValueTheVmComputes) {
     }
 }
 
+INSTANTIATE_TEST_SUITE_P(Operands, ConstantExpressions, ::testing::Values("VAR CONSTANT", "VAR"));
+
 // A division by zero is no constant: it stops the task at run time.
-TEST(ConstantExpressions, ADivisionByZeroIsNoConstant) {
+TEST(ConstantExpressionsOf, ADivisionByZeroIsNoConstant) {
     const auto typed = type_body("x : DINT; k : DINT;", "x := 1 / (k - k); x := DIV(1, 0);");
     ASSERT_TRUE(typed->front_end->program) << typed->errors();
     EXPECT_EQ(typed->program().constant_of(typed->value(1)), nullptr);
@@ -268,6 +356,40 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int32_t>("Main.last"), 9);
     EXPECT_EQ(run.get<std::int32_t>("Main.size"), 4);
     EXPECT_EQ(run.get<std::int32_t>("Main.label"), 16);
+}
+
+// A real function's NaN (a domain error) is left to run time, as are a DIV_TIME by zero (which
+// stops the task), LEN of anything but a STRING literal and the bounds of an ARRAY[*].
+TEST(ConstantExpressionsOf, WhatTheVmDoesNotGiveTheSameWayIsNoConstant) {
+    const auto typed = type_source(R"(
+FUNCTION Last : DINT
+VAR_IN_OUT a : ARRAY[*] OF INT; END_VAR
+Last := UPPER_BOUND(a, 1);
+END_FUNCTION
+PROGRAM Main
+VAR CONSTANT kText : STRING := 'abc'; END_VAR
+VAR r : LREAL; t : TIME; n : INT; END_VAR
+r := SQRT(-1.0);
+r := LN(REAL#-1.0);
+r := ACOS(2.0);
+r := EXPT(-8.0, 1.0 / 3.0);
+r := (-8.0) ** (1.0 / 3.0);
+t := DIV_TIME(T#1s, 0);
+t := DIV_TIME(T#1s, 0.0);
+n := LEN("abc");
+n := LEN(kText);
+r := SQRT(2.0);
+END_PROGRAM
+)");
+    ASSERT_TRUE(typed->front_end->program) << typed->errors();
+    for (std::size_t i = 0; i < 9; ++i) {
+        EXPECT_EQ(typed->program().constant_of(typed->value(i)), nullptr) << i;
+    }
+    EXPECT_NE(typed->program().constant_of(typed->value(9)), nullptr);
+    const ast::Pou& last = typed->front_end->units.back().pous.front();
+    EXPECT_EQ(typed->program().constant_of(
+                  *std::get<ast::AssignmentStatement>(last.body.at(0).node).value),
+              nullptr);
 }
 
 } // namespace

@@ -98,6 +98,10 @@ bool is_real(const Type& type);       ///< ANY_REAL
 bool is_numeric(const Type& type);    ///< ANY_NUM
 bool is_bool(const Type& type);
 bool is_time_like(const Type& type); ///< TIME, LTIME, DATE, TOD, DT and long forms
+/// Nanoseconds per unit when a time converts to or from a number (TIME_TO_DINT, DINT_TO_DT):
+/// CODESYS's, TIME and TOD in milliseconds, DATE and DT in seconds, the long forms (and anything
+/// else) in nanoseconds.
+std::int64_t number_unit(ast::ElementaryType type);
 bool is_signed(const Type& type);
 /// Types held in one VM scalar (elementary, enum, reference).
 bool is_scalar(const Type& type);
