@@ -7,6 +7,7 @@
 #include "codegen_harness.hpp"
 #include "typing_helpers.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <gtest/gtest.h>
 #include <string>
@@ -390,6 +391,27 @@ END_PROGRAM
     EXPECT_EQ(typed->program().constant_of(
                   *std::get<ast::AssignmentStatement>(last.body.at(0).node).value),
               nullptr);
+}
+
+// An initial value the walk of constant_evaluator.cpp does not fold takes the typing stage's
+// constant: these were refused (E0313) before the real functions and table 30 were folded.
+TEST(ConstantExpressionsOf, InitialValuesTakeTheFoldedConstants) {
+    StProgram run(R"(
+PROGRAM Main
+VAR
+    t : TIME := T#1s * 1.5;
+    d : TOD := TOD#23:00:00 + T#2h;
+    r : LREAL := SQRT(2.0);
+    n : DINT := TIME_TO_DINT(T#2s);
+END_VAR
+t := t;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    EXPECT_EQ(run.get<std::int64_t>("Main.t"), 1'500'000'000);
+    EXPECT_EQ(run.get<std::int64_t>("Main.d"), 3'600'000'000'000);
+    EXPECT_EQ(run.get<double>("Main.r"), std::sqrt(2.0));
+    EXPECT_EQ(run.get<std::int32_t>("Main.n"), 2000);
 }
 
 } // namespace
