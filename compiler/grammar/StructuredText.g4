@@ -157,9 +157,10 @@ expression
     // Tables 29 and 30 list the operators MOD, AND, OR and XOR as functions as well. NOT(x)
     // needs no rule of its own: NOT applied to (x) is the same value, and a second way to read
     // it would make the parser look to the closing parenthesis at every NOT (. Its formal
-    // form, NOT(IN := x) as CODESYS writes it, is told apart by the ':=' after the name.
+    // form, NOT(IN := x) as CODESYS writes it (with EN and ENO beside it if wanted), is told
+    // apart by the ':=' after the name.
     | callee=(MOD | AND | OR | XOR) '(' arguments=argumentList? ')'         # operatorCall
-    | callee=NOT '(' input=formalInput ')'                                  # formalNot
+    | callee=NOT '(' input=formalInput (',' more+=argument)* ')'            # formalNot
     | address=DIRECT_ADDRESS                                                # directAddressExpression
     // One alternative for both, so that what follows a '.' is expected as "a name or an integer".
     | base=expression '.' (member=identifier | bit=INTEGER)                 # memberAccess

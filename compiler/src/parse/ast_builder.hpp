@@ -81,6 +81,7 @@ public:
     // ast_builder_expressions.cpp
     ast::ExpressionPtr expression(P::ExpressionContext& context);
     std::vector<ast::Argument> arguments(P::ArgumentListContext* context);
+    ast::Argument argument(P::ArgumentContext& context);
 
     ast::Identifier identifier(P::IdentifierContext& context);
     SourceRange range(antlr4::ParserRuleContext& context) const;

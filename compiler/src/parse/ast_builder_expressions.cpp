@@ -48,12 +48,15 @@ ast::ExpressionPtr AstBuilder::expression(P::ExpressionContext& context) {
         return nodes_.operator_call(*call->callee, arguments(call->arguments), range(context));
     }
     if (auto* call = alternative<P::FormalNotContext>(&context)) {
-        std::vector<ast::Argument> input(1);
-        input[0].kind = ast::Argument::Kind::Input;
-        input[0].range = range(*call->input);
-        input[0].name = identifier(*call->input->identifier());
-        input[0].value = expression(*call->input->expression());
-        return nodes_.operator_call(*call->callee, std::move(input), range(context));
+        std::vector<ast::Argument> inputs(1);
+        inputs[0].kind = ast::Argument::Kind::Input;
+        inputs[0].range = range(*call->input);
+        inputs[0].name = identifier(*call->input->identifier());
+        inputs[0].value = expression(*call->input->expression());
+        for (P::ArgumentContext* more : call->more) {
+            inputs.push_back(argument(*more));
+        }
+        return nodes_.operator_call(*call->callee, std::move(inputs), range(context));
     }
     if (auto* located = alternative<P::DirectAddressExpressionContext>(&context)) {
         return nodes_.direct_address_expression(*located->address);
@@ -68,24 +71,27 @@ std::vector<ast::Argument> AstBuilder::arguments(P::ArgumentListContext* context
         return result;
     }
     for (P::ArgumentContext* argument : context->argument()) {
-        ast::Argument built;
-        built.range = range(*argument);
-        if (auto* input = alternative<P::InputArgumentContext>(argument)) {
-            built.kind = ast::Argument::Kind::Input;
-            built.name = identifier(*input->identifier());
-            built.value = expression(*input->expression());
-        } else if (auto* output = alternative<P::OutputArgumentContext>(argument)) {
-            built.kind = ast::Argument::Kind::Output;
-            built.name = identifier(*output->identifier());
-            built.negated = output->NOT() != nullptr;
-            built.value = expression(*output->expression());
-        } else {
-            built.value =
-                expression(*static_cast<P::PositionalArgumentContext&>(*argument).expression());
-        }
-        result.push_back(std::move(built));
+        result.push_back(this->argument(*argument));
     }
     return result;
+}
+
+ast::Argument AstBuilder::argument(P::ArgumentContext& context) {
+    ast::Argument built;
+    built.range = range(context);
+    if (auto* input = alternative<P::InputArgumentContext>(&context)) {
+        built.kind = ast::Argument::Kind::Input;
+        built.name = identifier(*input->identifier());
+        built.value = expression(*input->expression());
+    } else if (auto* output = alternative<P::OutputArgumentContext>(&context)) {
+        built.kind = ast::Argument::Kind::Output;
+        built.name = identifier(*output->identifier());
+        built.negated = output->NOT() != nullptr;
+        built.value = expression(*output->expression());
+    } else {
+        built.value = expression(*static_cast<P::PositionalArgumentContext&>(context).expression());
+    }
+    return built;
 }
 
 ast::Identifier AstBuilder::identifier(P::IdentifierContext& context) {

@@ -104,13 +104,15 @@ ast::ExpressionPtr DescentParser::prefixed() {
     const std::size_t type = cursor_.type();
     if (type == P::NOT && cursor_.type(1) == P::LEFT_PAREN && at_identifier(2) &&
         cursor_.type(3) == P::ASSIGN) {
-        // NOT(IN := x): the formal call of the function NOT (grammar: formalNot).
+        // NOT(IN := x, ENO => e): the formal call of the function NOT (grammar: formalNot).
         const antlr4::Token& callee = cursor_.take();
         cursor_.take();
-        std::vector<ast::Argument> input;
-        input.push_back(argument());
+        std::vector<ast::Argument> inputs;
+        do {
+            inputs.push_back(argument());
+        } while (cursor_.accept(P::COMMA));
         cursor_.expect(P::RIGHT_PAREN);
-        return postfixed(nodes_.operator_call(callee, std::move(input), range_from(callee)));
+        return postfixed(nodes_.operator_call(callee, std::move(inputs), range_from(callee)));
     }
     if (type == P::MINUS || type == P::PLUS || type == P::NOT) {
         const antlr4::Token& op = cursor_.take();

@@ -276,6 +276,7 @@ TEST(ParserEquivalence, EveryRuleAndAlternative) {
         // calls: formal, informal, output, negated output, operators as functions, REF
         "f(); f(1, 2); f(a := 1, b => c, NOT d => e); x := f(a := 1)(2); fb.q(1);",
         "x := MOD(7, 3); x := AND(a, b); x := OR(a); x := XOR(); x := REF(a); x := REF(a.b[1]);",
+        "x := NOT(IN := a); x := NOT(IN := a, ENO => e); x := NOT(EN := c, IN := a, NOT ENO => e);",
         "x := f(a := b := 1);", "f(a => );", "x := AND a;", "x := REF a;",
         // statements that do nothing, assignments to what is not a variable
         "x = 1;", "x=1;", "x  =  1;", "a + b;", "1 := 2;", "f() := 1;", "-x := 1;", ";", ";;",

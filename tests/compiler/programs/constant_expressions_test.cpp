@@ -213,6 +213,7 @@ const std::vector<Folded> kExpressions = {
     {Kind::Signed, "UPPER_BOUND(arr, 2)"},
     {Kind::Bits, "SHL(IN := kB, N := 2, ENO => eno)"},
     {Kind::Signed, "ABS(IN := -5, ENO => eno)"},
+    {Kind::Bits, "NOT(IN := kB, ENO => eno)"},
     {Kind::Signed, "LEN('hello')"},
     {Kind::Signed, "LEN('')"},
 };

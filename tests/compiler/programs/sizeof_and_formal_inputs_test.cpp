@@ -79,6 +79,24 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::uint16_t>("Main.mixed"), 0x0F00);
 }
 
+// NOT's formal call takes EN and ENO beside IN, as every standard function's does.
+TEST(FormalInputOfOneInputFunctions, NotTakesEnAndEno) {
+    StProgram run(R"(PROGRAM Main
+VAR
+    w : WORD := 16#00FF; flipped : WORD; enabled : WORD;
+    done : BOOL; skipped : BOOL := TRUE;
+END_VAR
+flipped := NOT(IN := w, ENO => done);
+enabled := NOT(EN := FALSE, IN := w, ENO => skipped);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1));
+    EXPECT_EQ(run.get<std::uint16_t>("Main.flipped"), 0xFF00);
+    EXPECT_EQ(run.get<std::uint8_t>("Main.done"), 1);
+    EXPECT_EQ(run.get<std::uint8_t>("Main.skipped"), 0);
+}
+
 TEST(FormalInputOfOneInputFunctions, NotHasNoOtherInput) {
     EXPECT_NE(diagnostics_of(R"(PROGRAM Main
 VAR w : WORD; END_VAR
