@@ -40,15 +40,11 @@ inline std::int64_t round_to_ns(double ns) {
     return detail::convert<std::int64_t>(ns);
 }
 
-inline std::int64_t wrapping_mul(std::int64_t a, std::int64_t b) {
-    return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) * static_cast<std::uint64_t>(b));
-}
-
 // MUL_TIME / DIV_TIME (IN1: TIME, IN2: ANY_NUM): integer factors (as LINT) wrap like LINT
 // arithmetic, real ones (as LREAL) round to the nanosecond. A division by zero is none: the
 // native stops the task.
 inline std::int64_t mul_time(std::int64_t time, std::int64_t factor) {
-    return wrapping_mul(time, factor);
+    return detail::mul(time, factor); // Mul64
 }
 inline std::int64_t mul_time(std::int64_t time, double factor) {
     return round_to_ns(static_cast<double>(time) * factor);
@@ -57,7 +53,7 @@ inline std::optional<std::int64_t> div_time(std::int64_t time, std::int64_t divi
     if (divisor == 0) {
         return std::nullopt;
     }
-    return divisor == -1 ? wrapping_mul(time, -1) : time / divisor;
+    return detail::divide(time, divisor); // DivI64: MIN / -1 wraps
 }
 inline std::optional<std::int64_t> div_time(std::int64_t time, double divisor) {
     if (divisor == 0.0) {
