@@ -69,6 +69,15 @@ bool is_untyped_literal(const ast::Expression& expression) {
     return real != nullptr && !real->type;
 }
 
+bool is_context_literal(const ast::Expression& expression) {
+    if (is_untyped_literal(expression)) {
+        return true;
+    }
+    const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
+    return literal != nullptr && (std::holds_alternative<ast::StringLiteral>(literal->value) ||
+                                  std::holds_alternative<ast::NullLiteral>(literal->value));
+}
+
 ExpressionTyper::ExpressionTyper(TypedProgram& program, const sema::SemanticModel& model,
                                  Diagnostics& diagnostics)
     : program_(program), model_(model), diagnostics_(diagnostics) {}

@@ -109,6 +109,9 @@ private:
     /// `common` or DINT, and holds its arithmetic operands of small integers in DINT.
     void computed_in(const ast::Expression& expression, const ast::BinaryExpression& node,
                      const sema::Type& common);
+    /// An input of EXPT (`**`) computed in `real`: an untyped integer literal is laid out in it
+    /// where its own type widens to it (figure 11), as `r := 2` is.
+    void power_input(const ast::Expression& input, const sema::Type& real);
     /// Records that the binary `expression` computes in `type`, its untyped literals too.
     void computed_at(const ast::Expression& expression, const sema::Type& type);
     /// A point in time or duration (`left`) added to or subtracted from `right`.
@@ -147,6 +150,10 @@ private:
 /// An integer or real literal without a type prefix, or the negation of one: it takes the type
 /// of its context.
 bool is_untyped_literal(const ast::Expression& expression);
+
+/// A literal whose type its context gives: an untyped number, a text (STRING or WSTRING of the
+/// capacity it goes to) or NULL (the reference it goes to).
+bool is_context_literal(const ast::Expression& expression);
 
 /// Why a value of `actual` cannot be stored where `target` is expected (`what`: "a value", "an
 /// initial value", "a CASE label", ...).

@@ -99,18 +99,26 @@ const sema::Type* ExpressionTyper::literal(const ast::Expression& expression,
         if (text->type == E::Char || text->type == E::Wchar) {
             return &elementary(text->type);
         }
-        // No value is a STRING[0] (a declaration refuses it): '' is a STRING[1], as code
-        // generation lays it out.
-        const std::size_t length =
-            std::visit([](const auto& value) { return value.size(); }, text->value);
-        return &program_.types().string(
-            static_cast<std::uint32_t>(std::max<std::size_t>(length, 1)), text->type == E::Wstring);
+        // Of the capacity of the STRING it goes to where it fits, so that storing it is one
+        // copy; else of its own length. No value is a STRING[0] (a declaration refuses it): ''
+        // is a STRING[1].
+        const bool wide = text->type == E::Wstring;
+        const auto length = static_cast<std::uint32_t>(std::max<std::size_t>(
+            std::visit([](const auto& value) { return value.size(); }, text->value), 1));
+        if (expected != nullptr && expected->kind == sema::TypeKind::String &&
+            expected->wide == wide && expected->capacity >= length) {
+            return expected;
+        }
+        return &program_.types().string(length, wide);
     }
     if (std::holds_alternative<ast::EnumValueLiteral>(literal)) {
         const sema::Symbol* value = model_.enum_value(expression);
         return value != nullptr ? program_.types().enumeration_of(*value) : nullptr;
     }
-    return &program_.types().null();
+    // NULL is the reference it goes to.
+    return expected != nullptr && expected->kind == sema::TypeKind::Reference
+               ? expected
+               : &program_.types().null();
 }
 
 const sema::Type* ExpressionTyper::name(const ast::Expression& expression,

@@ -53,6 +53,14 @@ void ExpressionTyper::computed_in(const ast::Expression& expression,
     computed_at(expression, wide ? dint : common);
 }
 
+void ExpressionTyper::power_input(const ast::Expression& input, const sema::Type& real) {
+    const sema::Type* own = program_.type_of(input);
+    if (is_untyped_literal(input) && own != nullptr && sema::is_integer(*own) &&
+        sema::converts_implicitly(*own, real)) {
+        type(input, &real);
+    }
+}
+
 void ExpressionTyper::computed_at(const ast::Expression& expression, const sema::Type& type) {
     program_.set_operands(expression, type);
     // An untyped literal operand is a value of the type its operation computes in (`i * 7` on
@@ -147,7 +155,12 @@ const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression
             if (is_untyped_literal(*operand) != literals) {
                 continue;
             }
-            const sema::Type* context = result != nullptr ? result : expected;
+            // A text or NULL takes the others' type only (at the end), not the one expected of
+            // the result: `SEL(c, 'a', 'bc')` is a STRING[2] wherever it goes.
+            const bool text_or_null = is_context_literal(*operand) && !is_untyped_literal(*operand);
+            const sema::Type* context = result != nullptr ? result
+                                        : text_or_null    ? nullptr
+                                                          : expected;
             if (literals && result != nullptr && !numeric_context(result)) {
                 context = nullptr;
             }
@@ -177,10 +190,11 @@ const sema::Type* ExpressionTyper::unify(const std::vector<const ast::Expression
     if (failed) {
         return nullptr;
     }
-    // A literal typed before a wider one (`5 > 3000000000`) takes the common type after all;
-    // literals have no side effects, so typing one again changes nothing else.
+    // A literal typed before a wider one (`5 > 3000000000`, `'abc' = s`) takes the common type
+    // after all; literals have no side effects, so typing one again changes nothing else.
     for (const ast::Expression* operand : operands) {
-        if (is_untyped_literal(*operand) && numeric_context(result) &&
+        if (is_context_literal(*operand) &&
+            (numeric_context(result) || !is_untyped_literal(*operand)) &&
             program_.type_of(*operand) != result) {
             type(*operand, result);
         }
@@ -208,7 +222,10 @@ const sema::Type* ExpressionTyper::binary(const ast::Expression& expression,
                             fmt::format("'**' needs numbers, not {}", operand->name));
             }
         }
-        return sema::is_real(*base) ? base : &elementary(E::Lreal);
+        const sema::Type& real = sema::is_real(*base) ? *base : elementary(E::Lreal);
+        power_input(*node.left, real);
+        power_input(*node.right, real);
+        return &real;
     }
     case Op::Less:
     case Op::Greater:

@@ -165,6 +165,9 @@ const sema::Type* ExpressionTyper::standard_call(const ast::Expression& expressi
             return nullptr;
         }
         target.operand = result = sema::is_real(*base) ? base : &elementary(E::Lreal);
+        if (family == Family::Power) {
+            power_input(*values[1], *result);
+        }
         break;
     }
     case Family::Arithmetic:

@@ -30,29 +30,54 @@ TEST(TypingLiterals, WithoutContextIntegersAreDintOrLintAndRealsLreal) {
 }
 
 TEST(TypingLiterals, ATypedLiteralKeepsItsTypeAndIsFolded) {
-    const auto t = type_body("u : ULINT; d : DINT; s : STRING;",
+    const auto t = type_body("u : ULINT; d : DINT; s : STRING[5];",
                              "u := ULINT#9542150923762281093; d := -7; s := 'abc';");
     ASSERT_TRUE(t->front_end->program) << t->errors();
     EXPECT_EQ(t->type_of(0), "ULINT");
     EXPECT_EQ(std::get<std::uint64_t>(*t->program().constant_of(t->value(0))),
               9542150923762281093U);
     EXPECT_EQ(std::get<std::int64_t>(*t->program().constant_of(t->value(1))), -7);
-    EXPECT_EQ(t->type_of(2), "STRING[3]");
+    EXPECT_EQ(t->type_of(2), "STRING[5]");
     EXPECT_EQ(std::get<std::string>(*t->program().constant_of(t->value(2))), "abc");
 }
 
-// No value is a STRING[0] (issue 17): an empty literal is a STRING[1], and a selection of
-// empty literals alone has a type code generation can lay out.
-TEST(TypingLiterals, AnEmptyStringIsAStringOfOne) {
-    const auto t = type_body("s : STRING; w : WSTRING; b : BOOL; i : INT;",
-                             "s := ''; w := \"\"; s := SEL(b, '', ''); s := MAX('', ''); "
-                             "s := MUX(i, 'a', '', 'abc');");
+// A text takes the capacity of the STRING it goes to where it fits (code generation stores it
+// in one copy), else its own length; NULL takes the reference it goes to, on either side of a
+// comparison (issue 17).
+TEST(TypingLiterals, ATextOrNullTakesTheTypeItGoesTo) {
+    const auto t = type_body("s : STRING[5]; w : WSTRING[4]; b : BOOL; p : REF_TO INT;",
+                             "s := 'abc'; s := 'abcdef'; w := \"ab\"; b := 'ab' = s; p := NULL; "
+                             "b := NULL = p;");
     ASSERT_TRUE(t->front_end->program) << t->errors();
-    EXPECT_EQ(t->type_of(0), "STRING[1]");
-    EXPECT_EQ(t->type_of(1), "WSTRING[1]");
+    EXPECT_EQ(t->type_of(0), "STRING[5]");
+    EXPECT_EQ(t->type_of(1), "STRING[6]"); // cut where it is stored (W0406)
+    EXPECT_EQ(t->type_of(2), "WSTRING[4]");
+    const auto& text = std::get<ast::BinaryExpression>(t->value(3).node);
+    EXPECT_EQ(t->program().type_of(*text.left)->name, "STRING[5]");
+    EXPECT_EQ(t->type_of(4), "REF_TO INT");
+    const auto& null = std::get<ast::BinaryExpression>(t->value(5).node);
+    EXPECT_EQ(t->program().type_of(*null.left)->name, "REF_TO INT");
+}
+
+// No value is a STRING[0] (issue 17): an empty literal without a STRING to go to is a
+// STRING[1], and a selection of empty literals alone has a type code generation can lay out.
+TEST(TypingLiterals, AnEmptyStringIsAStringOfOne) {
+    const auto t =
+        type_body("s : STRING; w : WSTRING; b : BOOL; i : INT;",
+                  "b := '' = ''; b := \"\" = \"\"; s := SEL(b, '', ''); s := MAX('', ''); "
+                  "s := MUX(i, 'a', '', 'abc'); s := '';");
+    ASSERT_TRUE(t->front_end->program) << t->errors();
+    const auto operand = [&](int statement) {
+        return t->program()
+            .type_of(*std::get<ast::BinaryExpression>(t->value(statement).node).left)
+            ->name;
+    };
+    EXPECT_EQ(operand(0), "STRING[1]");
+    EXPECT_EQ(operand(1), "WSTRING[1]");
     EXPECT_EQ(t->type_of(2), "STRING[1]");
     EXPECT_EQ(t->type_of(3), "STRING[1]");
     EXPECT_EQ(t->type_of(4), "STRING[3]");
+    EXPECT_EQ(t->type_of(5), "STRING[80]"); // the STRING it goes to
 }
 
 TEST(TypingLiterals, AConstantIsFoldedWhereItIsUsed) {
