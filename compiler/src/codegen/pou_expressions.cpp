@@ -12,15 +12,6 @@ using E = ast::ElementaryType;
 using vm::Opcode;
 using vm::Operand;
 
-bool PouGenerator::context_literal(const ast::Expression& expression) {
-    if (types::is_untyped_literal(expression)) {
-        return true;
-    }
-    const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node);
-    return literal != nullptr && (std::holds_alternative<ast::StringLiteral>(literal->value) ||
-                                  std::holds_alternative<ast::NullLiteral>(literal->value));
-}
-
 bool PouGenerator::contains_call(const ast::Expression& expression) {
     return std::visit(
         [](const auto& node) -> bool {
@@ -363,20 +354,17 @@ std::optional<Value> PouGenerator::eval(const ast::Expression& expression, const
     if (!value) {
         return value;
     }
-    // Types are the typing stage's: code generation takes them from it and derives none. A
-    // subrange's value is of its base type, and two ways of saving a conversion look otherwise:
-    // a value made straight in its destination (that operand) has the destination's type (a
-    // STRING result in its variable), and a literal is laid out at the type it is converted to
-    // (a text at the capacity of the STRING it goes to, NULL as the reference it goes to, an
-    // integer in a REAL context as that REAL).
+    // Types are the typing stage's: code generation takes them from it and derives none (a
+    // literal too: typing gives it its context's type, literal()). A subrange's value is of its
+    // base type, and a value made straight in its destination (that operand) has the
+    // destination's type: a STRING result written into the variable it is stored in has that
+    // variable's capacity, which code generation chooses, where typing gives the expression
+    // its own (CONCAT's, TO_STRING's) wherever it is used.
     const sema::Type* typed = program_.typed().type_of(expression);
     const bool same = typed != nullptr && value_type(*value->type) == value_type(*typed);
     const bool in_destination =
         dest != nullptr && value->type == dest->type && value->operand.raw == dest->operand.raw;
-    const bool converted_literal =
-        hint != nullptr && value->type == hint &&
-        std::holds_alternative<ast::LiteralExpression>(expression.node);
-    if (!same && !in_destination && !converted_literal) {
+    if (!same && !in_destination) {
         program_.disagrees_with_typing(expression.range, *value->type, typed);
         return std::nullopt;
     }
@@ -390,8 +378,8 @@ const sema::Type* PouGenerator::value_type(const sema::Type& type) {
 
 std::optional<Value> PouGenerator::evaluate(const ast::Expression& expression,
                                             const sema::Type* hint, const Destination* dest) {
-    if (const auto* node = std::get_if<ast::LiteralExpression>(&expression.node)) {
-        return literal(expression, *node, hint);
+    if (std::holds_alternative<ast::LiteralExpression>(expression.node)) {
+        return literal(expression);
     }
     if (const sema::Symbol* symbol = model_.enum_value(expression)) {
         const sema::Type* type = types_.enumeration_of(*symbol);
@@ -463,36 +451,14 @@ std::optional<Value> PouGenerator::evaluate(const ast::Expression& expression,
     return std::nullopt;
 }
 
-std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
-                                           const ast::LiteralExpression& node,
-                                           const sema::Type* hint) {
-    // The typing stage's type: an untyped number has the one its context gave it.
+std::optional<Value> PouGenerator::literal(const ast::Expression& expression) {
+    // The typing stage's type, its context's for an untyped number, a text or NULL: an integer
+    // as the operation that takes it computes, a text at the capacity of the STRING it goes to
+    // (one copy to store it), NULL as the reference it goes to.
     const sema::Type* type = program_.typed().type_of(expression);
     if (type == nullptr) {
         program_.refused_by_checks(DiagnosticCode::E0311); // types/operand_typing.cpp
         return std::nullopt;
-    }
-    if (types::is_untyped_literal(expression) && sema::is_integer(*type) && hint != nullptr &&
-        types::numeric_context(hint) && sema::converts_implicitly(*type, *hint)) {
-        // An integer laid out as the operation that takes it computes (a small integer's in
-        // DINT), so that it needs no conversion; the value is the same.
-        type = hint;
-    } else if (const auto* text = std::get_if<ast::StringLiteral>(&node.value)) {
-        if (text->type == E::Char || text->type == E::Wchar) {
-            return character(expression, text->type);
-        }
-        const bool wide = text->type == E::Wstring || text->type == E::Wchar;
-        const std::size_t length = wide ? std::get<std::u16string>(text->value).size()
-                                        : std::get<std::string>(text->value).size();
-        // Laid out at the capacity of the string it goes to, so that assigning it is one copy.
-        // Never at a capacity of 0: the typing stage gives `'' = ''` a STRING of none.
-        type = hint != nullptr && hint->kind == sema::TypeKind::String && hint->wide == wide &&
-                       hint->capacity >= std::max<std::size_t>(length, 1)
-                   ? hint
-                   : &types_.string(static_cast<std::uint32_t>(std::max<std::size_t>(length, 1)),
-                                    wide);
-    } else if (std::holds_alternative<ast::NullLiteral>(node.value)) {
-        type = hint != nullptr && hint->kind == sema::TypeKind::Reference ? hint : &types_.null();
     }
     auto bytes = program_.constant_value(expression, *type);
     if (!bytes) {
@@ -500,16 +466,6 @@ std::optional<Value> PouGenerator::literal(const ast::Expression& expression,
         return std::nullopt;
     }
     return Value{program_.constant(*bytes, std::max<std::uint32_t>(type->align, 1)), type};
-}
-
-std::optional<Value> PouGenerator::character(const ast::Expression& expression, E type) {
-    const sema::Type& character_type = types_.elementary(type);
-    const auto bytes = program_.constant_value(expression, character_type);
-    if (!bytes) {
-        // constant_value() reported it (types/operand_typing.cpp refuses such literals)
-        return std::nullopt;
-    }
-    return Value{program_.constant(*bytes, character_type.size), &character_type};
 }
 
 std::optional<Value> PouGenerator::convert(const Value& value, const sema::Type& want,
@@ -559,7 +515,7 @@ std::optional<Value> PouGenerator::value_as(const Value& value, const sema::Type
 }
 
 std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& expression) {
-    if (!context_literal(expression)) {
+    if (!types::is_context_literal(expression)) {
         return std::nullopt;
     }
     const auto value = program_.typed().constants().fold_integer(expression);
@@ -572,10 +528,11 @@ std::optional<std::int32_t> PouGenerator::small_literal(const ast::Expression& e
 std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Expression& left,
                                                               const ast::Expression& right,
                                                               const sema::Type& type) {
-    // An untyped literal is evaluated after the other side (literals have no side effects).
+    // A literal typed by its context (types::is_context_literal) is evaluated after the other
+    // side (literals have no side effects).
     std::optional<Value> l;
     std::optional<Value> r;
-    if (context_literal(left) && !context_literal(right)) {
+    if (types::is_context_literal(left) && !types::is_context_literal(right)) {
         r = operand_as(right, type);
         l = r ? operand_as(left, type) : std::nullopt;
     } else {
@@ -757,7 +714,7 @@ std::optional<Value> PouGenerator::binary(const ast::Expression& expression,
     const sema::Type* iec = !comparison && typed != &type ? typed : nullptr;
     const bool bitwise = node.op == Op::And || node.op == Op::Or || node.op == Op::Xor;
     const auto immediate = (node.op == Op::Add || node.op == Op::Subtract) &&
-                                   !context_literal(*node.left) &&
+                                   !types::is_context_literal(*node.left) &&
                                    (sema::is_integer(type) || sema::is_bit_string(type))
                                ? small_literal(*node.right)
                                : std::nullopt;

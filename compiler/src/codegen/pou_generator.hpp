@@ -160,10 +160,8 @@ private:
     std::optional<Value> bit_word(const ast::BitAccessExpression& node);
     /// The constant `1 << bit` (or its complement) of `type`.
     vm::Operand bit_mask(const sema::Type& type, std::uint32_t bit, bool inverted);
-    /// CHAR#'A' or WCHAR#"A": the character's code as a CHAR / WCHAR constant.
-    std::optional<Value> character(const ast::Expression& expression, ast::ElementaryType type);
-    std::optional<Value> literal(const ast::Expression& expression,
-                                 const ast::LiteralExpression& node, const sema::Type* hint);
+    /// A literal as a constant of the type the typing stage gave it.
+    std::optional<Value> literal(const ast::Expression& expression);
     std::optional<Value> unary(const ast::UnaryExpression& node, const sema::Type* hint,
                                const Destination* dest);
     /// A binary operator computed in the type the typing stage gives its operands
@@ -196,10 +194,6 @@ private:
     /// `pointer + bytes`, `pointer - bytes`: CODESYS pointer arithmetic, in bytes.
     std::optional<Value> pointer_offset(bool add, const Value& pointer,
                                         const ast::Expression& bytes, const Destination* dest);
-    /// A literal laid out as its context needs, so evaluated after the other operand: an untyped
-    /// number (types::is_untyped_literal), of the other operand's type; a string literal, at the
-    /// capacity of the string it meets; NULL, as the reference it meets.
-    static bool context_literal(const ast::Expression& expression);
     static bool contains_call(const ast::Expression& expression);
     /// `P` of `P.x`: a PROGRAM named as its single instance (CODESYS).
     bool names_program(const ast::Expression& expression) const;
