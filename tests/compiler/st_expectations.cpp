@@ -3,42 +3,72 @@
 //
 //     x := totl;               // expect: E0201
 //     y := a / 0 + b / 0;      // expect: E0408 E0408
+//     k : INT := k + 1;        // expect: E0313 "defined through itself"
 //     // expect-unlocated: W0407      (a diagnostic about the program as a whole)
 //
-// Every diagnostic must be expected on its line (by code), and every expectation met; ctest runs
+// Every diagnostic must be expected on its line (by code, and by a text its message contains
+// where one is quoted after the code), and every expectation met; ctest runs
 // this once per file of tests/compiler/diagnostics (registered by glob when configuring).
 // Exit status 0 when the file's diagnostics are exactly its expectations, 1 otherwise.
 #include "eposp/compiler/compiler.hpp"
 #include "eposp/compiler/diagnostic_code.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <fmt/format.h>
 #include <map>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace {
 
-using Expectations = std::map<std::uint32_t, std::multiset<std::string>>; // line 0: unlocated
+/// A diagnostic expected: its code, and a text its message contains (none: any message).
+struct Expected {
+    std::string code;
+    std::string text;
+};
+using Expectations = std::map<std::uint32_t, std::vector<Expected>>; // line 0: unlocated
 
-void add_codes(std::multiset<std::string>& to, std::string_view codes) {
+void add_codes(std::vector<Expected>& to, std::string_view codes) {
     std::size_t at = 0;
     while (at < codes.size()) {
         while (at < codes.size() && std::isspace(static_cast<unsigned char>(codes[at]))) {
             ++at;
+        }
+        if (at < codes.size() && codes[at] == '"' && !to.empty()) {
+            const std::size_t close = std::min(codes.find('"', at + 1), codes.size());
+            to.back().text = std::string(codes.substr(at + 1, close - at - 1));
+            at = close + 1;
+            continue;
         }
         std::size_t end = at;
         while (end < codes.size() && !std::isspace(static_cast<unsigned char>(codes[end]))) {
             ++end;
         }
         if (end > at) {
-            to.insert(std::string(codes.substr(at, end - at)));
+            to.push_back({std::string(codes.substr(at, end - at)), {}});
         }
         at = end;
     }
+}
+
+/// Takes the expectation `diagnostic` meets from `expected`: one whose text its message contains
+/// before one that expects any message.
+bool meet(std::vector<Expected>& expected, const std::string& code, const std::string& message) {
+    auto it = std::find_if(expected.begin(), expected.end(), [&](const Expected& e) {
+        return e.code == code && !e.text.empty() && message.find(e.text) != std::string::npos;
+    });
+    if (it == expected.end()) {
+        it = std::find_if(expected.begin(), expected.end(),
+                          [&](const Expected& e) { return e.code == code && e.text.empty(); });
+    }
+    if (it == expected.end()) {
+        return false;
+    }
+    expected.erase(it);
+    return true;
 }
 
 // The expectations of each line, and the names in them that are no code (a typo would otherwise
@@ -64,9 +94,9 @@ Expectations read_expectations(const eposp::compiler::SourceManager& sources,
         }
     }
     for (const auto& [line, codes] : expected) {
-        for (const std::string& code : codes) {
-            if (!eposp::compiler::find_diagnostic_code(code)) {
-                bad.push_back(fmt::format("line {}: '{}' is no diagnostic code", line, code));
+        for (const Expected& one : codes) {
+            if (!eposp::compiler::find_diagnostic_code(one.code)) {
+                bad.push_back(fmt::format("line {}: '{}' is no diagnostic code", line, one.code));
             }
         }
     }
@@ -95,18 +125,16 @@ int main(int argc, char** argv) {
     for (const auto& diagnostic : diagnostics.all()) {
         const std::string code(eposp::compiler::describe(diagnostic.code).name);
         const std::uint32_t line = diagnostic.range.file == *file ? diagnostic.range.begin.line : 0;
-        auto& codes = expected[line];
-        if (const auto it = codes.find(code); it != codes.end()) {
-            codes.erase(it);
-        } else {
+        if (!meet(expected[line], code, diagnostic.message)) {
             problems.push_back("unexpected: " + render(diagnostic, sources));
         }
     }
     for (const auto& [line, codes] : expected) {
-        for (const std::string& code : codes) {
+        for (const auto& [code, text] : codes) {
+            const std::string what = text.empty() ? code : fmt::format("{} \"{}\"", code, text);
             problems.push_back(
-                line == 0 ? fmt::format("expected {} (unlocated), not reported", code)
-                          : fmt::format("{}:{}: expected {}, not reported", argv[1], line, code));
+                line == 0 ? fmt::format("expected {} (unlocated), not reported", what)
+                          : fmt::format("{}:{}: expected {}, not reported", argv[1], line, what));
         }
     }
     for (const std::string& problem : problems) {

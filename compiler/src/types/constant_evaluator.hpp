@@ -14,6 +14,7 @@
 
 #include <optional>
 #include <unordered_set>
+#include <vector>
 
 namespace eposp::compiler::types {
 
@@ -69,23 +70,26 @@ public:
     auto defining(const ast::VariableDeclaration& declaration, Evaluate evaluate) const
         -> decltype(evaluate()) {
         struct Marked {
-            std::unordered_set<const ast::VariableDeclaration*>& evaluating;
-            const ast::VariableDeclaration* declaration;
-            bool outer = evaluating.insert(declaration).second;
+            std::vector<const ast::VariableDeclaration*>& evaluating;
+            bool outer;
             ~Marked() {
                 if (outer) {
-                    evaluating.erase(declaration);
+                    evaluating.pop_back();
                 }
             }
-        } marked{evaluating_, &declaration};
+        } marked{evaluating_, enter(declaration)};
         return evaluate();
     }
-    /// Whether the CONSTANT `declaration` was used while it was being defined.
+    /// Whether the CONSTANT `declaration` was used while it was being defined, or is one of the
+    /// CONSTANTs that such a use went through (`a := b + 1; b := a + 1`: both).
     bool circular(const ast::VariableDeclaration& declaration) const {
         return circular_.contains(&declaration);
     }
 
 private:
+    /// Marks `declaration` as being defined, above the CONSTANTs whose definitions use it;
+    /// false when it is already.
+    bool enter(const ast::VariableDeclaration& declaration) const;
     /// The declaration of the CONSTANT `expression` names, with a plain initial value; null
     /// when it names none, or one being defined (recorded as circular).
     const ast::VariableDeclaration* constant(const ast::Expression& expression) const;
@@ -150,7 +154,8 @@ private:
 
     TypedProgram& program_;
     sema::TypeTable& types_;
-    mutable std::unordered_set<const ast::VariableDeclaration*> evaluating_;
+    /// The CONSTANTs being defined, each used by the definition of the one below it.
+    mutable std::vector<const ast::VariableDeclaration*> evaluating_;
     mutable std::unordered_set<const ast::VariableDeclaration*> circular_;
 };
 

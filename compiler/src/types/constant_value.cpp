@@ -5,6 +5,8 @@
 #include "eposp/compiler/sema/symbol.hpp"
 #include "expression_typer.hpp"
 
+#include <algorithm>
+
 namespace eposp::compiler::types {
 
 namespace {
@@ -80,11 +82,21 @@ ConstantEvaluator::constant(const ast::Expression& expression) const {
         !types_.is_constant(*symbol->variable)) {
         return nullptr;
     }
-    if (evaluating_.contains(symbol->variable)) {
-        circular_.insert(symbol->variable);
+    if (const auto used = std::find(evaluating_.begin(), evaluating_.end(), symbol->variable);
+        used != evaluating_.end()) {
+        // Each CONSTANT from it up to the one using it again is defined through itself.
+        circular_.insert(used, evaluating_.end());
         return nullptr;
     }
     return symbol->variable;
+}
+
+bool ConstantEvaluator::enter(const ast::VariableDeclaration& declaration) const {
+    if (std::find(evaluating_.begin(), evaluating_.end(), &declaration) != evaluating_.end()) {
+        return false;
+    }
+    evaluating_.push_back(&declaration);
+    return true;
 }
 
 const Constant* ConstantEvaluator::typed_constant(const ast::Expression& expression,
