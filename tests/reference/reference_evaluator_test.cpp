@@ -200,6 +200,20 @@ TEST(ReferenceEvaluator, TimeFunctionsAndTimeOfDayWrappingAtMidnight) {
     EXPECT_EQ(p.bits("Main.e"), 4'500'000'000u);
 }
 
+// Table 30's rows as operators compute as the functions do: a time of day wraps at midnight.
+TEST(ReferenceEvaluator, TimeOfDayOperatorsWrapAtMidnightAsTheFunctionsDo) {
+    const auto p = run("late : TOD := TOD#23:00:00; early : LTOD := LTOD#01:00:00;"
+                       "a, b : TOD; c, d : LTOD; e : TIME;",
+                       "a := late + T#2h; b := late - T#49h; c := early - LTIME#2h;"
+                       "d := early + LTIME#26h; e := late - TOD#01:00:00;");
+    constexpr std::uint64_t kHour = 3'600'000'000'000;
+    EXPECT_EQ(p.bits("Main.a"), 1 * kHour);
+    EXPECT_EQ(p.bits("Main.b"), 22 * kHour);
+    EXPECT_EQ(p.bits("Main.c"), 23 * kHour);
+    EXPECT_EQ(p.bits("Main.d"), 3 * kHour);
+    EXPECT_EQ(p.bits("Main.e"), 22 * kHour); // two times of day subtract to a duration
+}
+
 TEST(ReferenceEvaluator, LongTimeFunctionsAndTheOverloadedFormsAreTheirTable30Rows) {
     const auto p = run("a : LTOD; b : LTIME; c : LDT; d : TOD; e : LTIME; f : LTIME;",
                        "a := ADD_LTOD_LTIME(LTOD#23:00:00, LTIME#2h); b := SUB_LDATE_LDATE("

@@ -294,6 +294,15 @@ Value Evaluator::time_arithmetic(ast::BinaryOperator op, const Value& left, cons
     switch (op) {
     case Op::Add:
     case Op::Subtract:
+        if (type.elementary == E::TimeOfDay || type.elementary == E::Ltod) {
+            // Table 30: a time of day moved by a duration wraps around midnight (vm/README.md,
+            // as CODESYS); of the operands' times of day, so that no sum of 64 bits wraps first.
+            const std::int64_t l = since_midnight(left.as_signed());
+            const std::int64_t r = since_midnight(right.as_signed());
+            return integer(
+                type, static_cast<std::uint64_t>(since_midnight(op == Op::Add ? l + r : l - r)));
+        }
+        return arithmetic(op, left, right, type);
     case Op::Multiply:
         return arithmetic(op, left, right, type);
     case Op::Divide:

@@ -17,7 +17,6 @@ namespace {
 
 constexpr std::int64_t kNsPerMs = 1'000'000;
 constexpr std::int64_t kNsPerS = 1'000'000'000;
-constexpr std::int64_t kNsPerDay = 86'400 * kNsPerS;
 
 double math(const std::string& name, double x) {
     static const std::map<std::string, double (*)(double)> functions = {
@@ -109,11 +108,6 @@ float math(const std::string& name, float x) {
          }},
     };
     return functions.at(name)(x);
-}
-
-std::int64_t since_midnight(std::int64_t ns) {
-    const std::int64_t r = ns % kNsPerDay;
-    return r < 0 ? r + kNsPerDay : r;
 }
 
 std::int64_t position(const Value& value) {
@@ -271,8 +265,8 @@ Value Evaluator::standard_function(const types::CallTarget& target,
                                                               ? bounds.lower
                                                               : bounds.lower + bounds.count - 1));
     }
-    // Table 30, short and long forms alike (every time is nanoseconds in 64 bits); a time of
-    // day wraps around midnight (vm/README.md, as CODESYS).
+    // Table 30, short and long forms alike (every time is nanoseconds in 64 bits), as their
+    // operators compute.
     const vm::stdlib::StandardFunction* row = vm::stdlib::find_standard_function(name);
     if (row != nullptr && row->family == vm::stdlib::Family::Time) {
         using vm::stdlib::Operation;
@@ -281,12 +275,9 @@ Value Evaluator::standard_function(const types::CallTarget& target,
                                                                          : Op::Divide,
                                    in[0], in[1], result);
         }
-        const std::uint64_t bits =
-            row->operation == Operation::Add ? in[0].bits + in[1].bits : in[0].bits - in[1].bits;
-        const bool of_day = result.elementary == E::TimeOfDay || result.elementary == E::Ltod;
-        return integer(result, of_day ? static_cast<std::uint64_t>(
-                                            since_midnight(static_cast<std::int64_t>(bits)))
-                                      : bits);
+        // CONCAT_DATE_TOD adds too: DATE and TOD are nanoseconds since 1970 and since midnight.
+        return time_arithmetic(row->operation == Operation::Add ? Op::Add : Op::Subtract, in[0],
+                               in[1], result);
     }
     return string_function(name, in, result);
 }

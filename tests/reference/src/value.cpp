@@ -98,4 +98,10 @@ Value text(const sema::Type& type, std::string characters) {
     return value;
 }
 
+std::int64_t since_midnight(std::int64_t ns) {
+    constexpr std::int64_t kNsPerDay = 86'400'000'000'000;
+    const std::int64_t r = ns % kNsPerDay;
+    return r < 0 ? r + kNsPerDay : r;
+}
+
 } // namespace eposp::reference

@@ -58,5 +58,7 @@ std::uint64_t wrap(std::uint64_t raw, unsigned width, bool is_signed);
 Value integer(const sema::Type& type, std::uint64_t raw);
 Value real(const sema::Type& type, double value);
 Value text(const sema::Type& type, std::string value);
+/// The time of day of a count of nanoseconds since a midnight, also before it (vm/README.md).
+std::int64_t since_midnight(std::int64_t ns);
 
 } // namespace eposp::reference
