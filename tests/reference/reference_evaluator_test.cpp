@@ -229,6 +229,16 @@ TEST(ReferenceEvaluator, LongTimeFunctionsAndTheOverloadedFormsAreTheirTable30Ro
     EXPECT_EQ(p.bits("Main.f"), 12 * kHour);
 }
 
+// ADD and MUL are extensible (table 24); on times each step is a row of table 30.
+TEST(ReferenceEvaluator, ExtensibleAddAndMulOnTimesStepFromLeftToRight) {
+    const auto p = run("late : TOD := TOD#23:00:00; t : TIME := T#1h; a : TOD; b, c : TIME;",
+                       "a := ADD(late, t, t); b := ADD(t, t, T#1s); c := MUL(t, 2, 3);");
+    constexpr std::uint64_t kHour = 3'600'000'000'000;
+    EXPECT_EQ(p.bits("Main.a"), 1 * kHour);
+    EXPECT_EQ(p.bits("Main.b"), 2 * kHour + 1'000'000'000);
+    EXPECT_EQ(p.bits("Main.c"), 6 * kHour);
+}
+
 TEST(ReferenceEvaluator, AStringIsCutAtItsLength) {
     const auto p = run("s : STRING[3];", "s := 'abcdef';");
     EXPECT_EQ(p.string("Main.s"), "abc");

@@ -42,8 +42,12 @@ std::optional<Value> PouGenerator::standard_function(const types::CallTarget& ta
         return conversion(target, arguments, dest);
     }
     const vm::stdlib::StandardFunction* function = vm::stdlib::find_standard_function(name);
+    // ADD and MUL on times are extensible, each a row of table 30 (time_functions.cpp).
+    const bool extended_time =
+        function != nullptr && function->family == Family::Time && function->time.overloaded &&
+        (function->operation == Operation::Add || function->operation == Operation::Multiply);
     if (function == nullptr || arguments.size() < function->min_inputs ||
-        arguments.size() > function->max_inputs) {
+        (arguments.size() > function->max_inputs && !extended_time)) {
         program_.refused_by_checks(DiagnosticCode::E0306); // the typing stage's
         return std::nullopt;
     }

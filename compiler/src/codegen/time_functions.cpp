@@ -25,24 +25,24 @@ std::optional<Value> PouGenerator::time_function(const types::CallTarget& target
     const auto type = [&](vm::NativeType t) -> const sema::Type& {
         return types_.elementary(static_cast<E>(t));
     };
-    const ast::Expression& first = *arguments[0]->value;
-    const ast::Expression& second = *arguments[1]->value;
-    const auto left = value_as(first, type(rule.first));
-    if (!left) {
-        return std::nullopt;
+    // An extensible ADD or MUL (table 24) steps from left to right, each step with the row the
+    // typing stage recorded for the last: ADD(tod, t1, t2) is (tod + t1) + t2.
+    auto result = value_as(*arguments[0]->value, type(rule.first));
+    const auto op = function.operation == Operation::Add ? ast::BinaryOperator::Add
+                                                         : ast::BinaryOperator::Subtract;
+    for (std::size_t i = 1; result && i < arguments.size(); ++i) {
+        const Destination* into = i + 1 == arguments.size() ? dest : nullptr;
+        const ast::Expression& next = *arguments[i]->value;
+        if (rule.scaled) {
+            result = scale_time(function.operation == Operation::Multiply, *result, next,
+                                *target.result, into);
+            continue;
+        }
+        const auto right = value_as(next, type(rule.second));
+        // CONCAT_DATE_TOD adds too: DATE and TOD are nanoseconds since 1970 and since midnight.
+        result = right ? time_arithmetic(op, *result, *right, *target.result, into) : std::nullopt;
     }
-    if (rule.scaled) {
-        return scale_time(function.operation == Operation::Multiply, *left, second, *target.result,
-                          dest);
-    }
-    const auto right = value_as(second, type(rule.second));
-    if (!right) {
-        return std::nullopt;
-    }
-    // CONCAT_DATE_TOD adds too: DATE and TOD are nanoseconds since 1970 and since midnight.
-    return time_arithmetic(function.operation == Operation::Add ? ast::BinaryOperator::Add
-                                                                : ast::BinaryOperator::Subtract,
-                           *left, *right, *target.result, dest);
+    return result;
 }
 
 std::optional<Value> PouGenerator::time_arithmetic(ast::BinaryOperator op, const Value& left,

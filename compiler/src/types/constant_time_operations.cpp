@@ -82,19 +82,26 @@ ConstantEvaluator::time_function(std::string_view name, const std::vector<Consta
                                  const std::vector<const sema::Type*>& types,
                                  const sema::Type& result) const {
     // Table 30's functions: the first input as its row's type (the same nanoseconds, TIME or
-    // LTIME), then the operation the operator of that name computes.
+    // LTIME), then the operation the operator of that name computes; an extensible ADD or MUL
+    // (table 24) from left to right, each step as its last row.
     const vm::stdlib::StandardFunction* function = vm::stdlib::find_standard_function(name);
-    const auto time = values.size() == 2 ? nanoseconds(values[0]) : std::nullopt;
-    if (function == nullptr || !time) {
+    if (function == nullptr) {
         return std::nullopt;
     }
     using vm::stdlib::Operation;
-    if (function->time.scaled) {
-        return scaled_time(function->operation == Operation::Multiply, *time, values[1], *types[1]);
+    const bool add = function->operation == Operation::Add;
+    const bool multiply = function->operation == Operation::Multiply;
+    std::optional<Constant> time = nanoseconds(values.front());
+    for (std::size_t i = 1; time && i < values.size(); ++i) {
+        const std::int64_t ns = std::get<std::int64_t>(*time);
+        if (function->time.scaled) {
+            time = scaled_time(multiply, ns, values[i], *types[i]);
+            continue;
+        }
+        const auto other = nanoseconds(values[i]);
+        time = other ? moved_time(add, ns, *other, result) : std::nullopt;
     }
-    const auto other = nanoseconds(values[1]);
-    return other ? moved_time(function->operation == Operation::Add, *time, *other, result)
-                 : std::nullopt;
+    return time;
 }
 
 std::optional<Constant> ConstantEvaluator::explicit_conversion(const Constant& constant,

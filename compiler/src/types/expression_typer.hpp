@@ -88,7 +88,8 @@ private:
     const sema::Type* standard_call(const ast::Expression& expression,
                                     const ast::CallExpression& node, const std::string& name,
                                     const sema::Type* expected);
-    /// ADD, SUB, MUL or DIV whose first input (`first`) is a time: the row of table 30 it takes.
+    /// ADD, SUB, MUL or DIV whose first input (`first`) is a time: the row of table 30 it takes
+    /// (at each step of an extensible ADD or MUL, the last recorded).
     const sema::Type* time_call(const ast::Expression& expression,
                                 const vm::stdlib::StandardFunction& function,
                                 const std::vector<const ast::Expression*>& values,

@@ -337,28 +337,35 @@ const sema::Type* ExpressionTyper::time_call(const ast::Expression& expression,
                                              const std::vector<const ast::Expression*>& values,
                                              const sema::Type& first) {
     // Table 30's note: ADD, SUB, MUL and DIV on times are the row of table 30 their operator
-    // takes (ADD(t, lt) is ADD_LTIME), called as that row is.
+    // takes (ADD(t, lt) is ADD_LTIME), called as that row is. ADD and MUL are extensible
+    // (table 24): ADD(tod, t1, t2) is (tod + t1) + t2, each step a row.
     const std::string name(function.name);
-    if (values.size() != 2) {
-        for (std::size_t i = 1; i < values.size(); ++i) {
+    const auto type_from = [&](std::size_t i) {
+        for (; i < values.size(); ++i) {
             type(*values[i], nullptr);
         }
-        return fail(DiagnosticCode::E0306, expression.range,
-                    fmt::format("{} takes 2 inputs on times, not {}", name, values.size()));
-    }
+    };
     const bool scaled = function.operation == vm::stdlib::Operation::Multiply ||
                         function.operation == vm::stdlib::Operation::Divide;
-    const sema::Type* second = type(*values[1], scaled ? &elementary(E::Lint) : nullptr);
-    if (second == nullptr) {
-        return nullptr;
+    const sema::Type* result = &first;
+    const vm::stdlib::StandardFunction* row = nullptr;
+    for (std::size_t i = 1; i < values.size(); ++i) {
+        const sema::Type* next = type(*values[i], scaled ? &elementary(E::Lint) : nullptr);
+        if (next == nullptr) {
+            type_from(i + 1);
+            return nullptr;
+        }
+        row = time_row(function.operation, *result, *next);
+        if (row == nullptr) {
+            type_from(i + 1);
+            return fail(DiagnosticCode::E0305, expression.range,
+                        fmt::format("{} is not defined on {} and {} (IEC 61131-3 table 30)", name,
+                                    result->name, next->name));
+        }
+        result = &elementary(elementary_of(row->time.result));
     }
-    const vm::stdlib::StandardFunction* row = time_row(function.operation, first, *second);
-    if (row == nullptr) {
-        return fail(DiagnosticCode::E0305, expression.range,
-                    fmt::format("{} is not defined on {} and {} (IEC 61131-3 table 30)", name,
-                                first.name, second->name));
-    }
-    const sema::Type* result = &elementary(elementary_of(row->time.result));
+    // The last step's row: the earlier ones are of the same kind, short or long, and every time
+    // is nanoseconds in 64 bits, so that code generation and the folder take it for each step.
     program_.set_call(expression, CallTarget{.kind = CallKind::StandardFunction,
                                              .name = std::string(row->name),
                                              .operand = &elementary(elementary_of(row->time.first)),

@@ -106,5 +106,48 @@ TEST(TimeArithmetic, EveryRowOfTable30InEachFormComputesItsValueAtItsType) {
     }
 }
 
+// ADD and MUL are extensible (table 24): on times each step from left to right is a row of
+// table 30, on variables as on constants (folded: a CONSTANT's initial value must be one).
+TEST(TimeArithmetic, ExtensibleAddAndMulStepThroughTable30FromLeftToRight) {
+    struct Extended {
+        const char* type;
+        const char* variables; ///< on the inputs
+        const char* constants; ///< the same on literals
+        std::int64_t expected;
+    };
+    const Extended kExtended[] = {
+        {"TIME", "ADD(t, t, T#250ms)", "ADD(T#1s, T#1s, T#250ms)", 2 * kSecond + kSecond / 4},
+        {"TOD", "ADD(tod1, t, t)", "ADD(TOD#23:59:59, T#1s, T#1s)", kSecond}, // past midnight
+        {"LTOD", "ADD(tod1, lt, t)", "ADD(TOD#23:59:59, LTIME#2us, T#1s)", 2'000},
+        {"LTIME", "ADD(t, lt, t, lt)", "ADD(T#1s, LTIME#2us, T#1s, LTIME#2us)",
+         2 * kSecond + 4'000},
+        {"DT", "ADD(dt1, t, T#1h)", "ADD(DT#2024-01-31-12:00:00, T#1s, T#1h)",
+         kJanuary31 + kNoon + 3'601 * kSecond},
+        {"TIME", "MUL(t, n, r)", "MUL(T#1s, 3, 2.5)", 7 * kSecond + kSecond / 2},
+        {"LTIME", "MUL(lt, n, n, 2)", "MUL(LTIME#2us, 3, 3, 2)", 36'000},
+    };
+    // Each on variables into `variables<i>`; on literals into the CONSTANT `constants<i>`, which
+    // `copy<i>` holds in the image.
+    std::string variables;
+    std::string constants;
+    std::string body;
+    for (std::size_t i = 0; i < std::size(kExtended); ++i) {
+        const Extended& row = kExtended[i];
+        variables += fmt::format("    variables{0}, copy{0} : {1};\n", i, row.type);
+        constants += fmt::format("    constants{} : {} := {};\n", i, row.type, row.constants);
+        body += fmt::format("variables{0} := {1};\ncopy{0} := constants{0};\n", i, row.variables);
+    }
+    StProgram run(fmt::format("PROGRAM Main\nVAR{}\n{}END_VAR\nVAR CONSTANT\n{}END_VAR\n{}"
+                              "END_PROGRAM\n",
+                              kInputs, variables, constants, body));
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    for (std::size_t i = 0; i < std::size(kExtended); ++i) {
+        SCOPED_TRACE(kExtended[i].variables);
+        EXPECT_EQ(run.get<std::int64_t>(fmt::format("Main.variables{}", i)), kExtended[i].expected);
+        EXPECT_EQ(run.get<std::int64_t>(fmt::format("Main.copy{}", i)), kExtended[i].expected);
+    }
+}
+
 } // namespace
 } // namespace eposp::compiler::test

@@ -14,7 +14,7 @@ using Case = TypingCase;
 
 const char* const kDeclarations = "n : DINT; w : WORD; x : BOOL; r : REAL; s : STRING; "
                                   "ws : WSTRING; arr : ARRAY[1..3] OF INT; p : POINTER TO INT; "
-                                  "st : TON;";
+                                  "st : TON; tm : TIME; tod : TOD;";
 
 class StandardFunctionErrors : public testing::TestWithParam<Case> {};
 
@@ -49,6 +49,12 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"ShiftsABitString", "r := SHL(r, 1);", {"E0305"}},
         Case{"ShiftCountIsAnInteger", "w := SHL(w, r);", {"E0305"}},
         Case{"TimeScalesByANumber", "n := TIME_TO_DINT(MUL_TIME(T#1s, s));", {"E0305"}},
+        // ADD and MUL on times extend step by step through table 30's rows (table 24).
+        Case{"AddStepOnTwoTimesOfDay", "tod := ADD(tod, tod, tm);", {"E0305"}},
+        Case{"AddStepOnADurationAndATimeOfDay", "tm := ADD(tm, tm, tod);", {"E0305"}},
+        Case{"MulStepByATime", "tm := MUL(tm, 2, tm);", {"E0305"}},
+        Case{"SubOnTimesTakesTwo", "tm := SUB(tm, tm, tm);", {"E0306"}},
+        Case{"NamedTimeFunctionsTakeTwo", "tm := ADD_TIME(tm, tm, tm);", {"E0306"}},
         // What the rows accept.
         Case{"FormalInputsInAnyOrder",
              "n := LIMIT(MX := 9, IN := n, MN := 0); n := MUX(K := 0, IN0 := 1, IN1 := 2); "

@@ -266,18 +266,20 @@ Value Evaluator::standard_function(const types::CallTarget& target,
                                                               : bounds.lower + bounds.count - 1));
     }
     // Table 30, short and long forms alike (every time is nanoseconds in 64 bits), as their
-    // operators compute.
+    // operators compute; ADD and MUL are extensible (table 24), from left to right.
     const vm::stdlib::StandardFunction* row = vm::stdlib::find_standard_function(name);
     if (row != nullptr && row->family == vm::stdlib::Family::Time) {
         using vm::stdlib::Operation;
-        if (row->time.scaled) {
-            return time_arithmetic(row->operation == Operation::Multiply ? Op::Multiply
-                                                                         : Op::Divide,
-                                   in[0], in[1], result);
-        }
         // CONCAT_DATE_TOD adds too: DATE and TOD are nanoseconds since 1970 and since midnight.
-        return time_arithmetic(row->operation == Operation::Add ? Op::Add : Op::Subtract, in[0],
-                               in[1], result);
+        const Op op = row->operation == Operation::Add        ? Op::Add
+                      : row->operation == Operation::Subtract ? Op::Subtract
+                      : row->operation == Operation::Multiply ? Op::Multiply
+                                                              : Op::Divide;
+        Value value = in[0];
+        for (std::size_t i = 1; i < in.size(); ++i) {
+            value = time_arithmetic(op, value, in[i], result);
+        }
+        return value;
     }
     return string_function(name, in, result);
 }
