@@ -8,7 +8,7 @@
 //   st_difftest --file PROGRAM.st        one program (a reduced one, edited) on every executor
 //   options: --scans K (4), --no-reduce, --ties (real-to-integer conversions of ties),
 //            --without FEATURE (reals strings arrays structs loops case in-out
-//            huge-case-labels string-max-min-limit constants; repeatable)
+//            huge-case-labels string-max-min-limit constants times; repeatable)
 
 #include "eposp/differential/differential_check.hpp"
 #include "eposp/differential/executors.hpp"
@@ -51,6 +51,7 @@ bool switch_off(GeneratorOptions& options, const std::string& feature) {
         {"huge-case-labels", &GeneratorOptions::huge_case_labels},
         {"string-max-min-limit", &GeneratorOptions::string_max_min_limit},
         {"constants", &GeneratorOptions::constants},
+        {"times", &GeneratorOptions::times},
     };
     for (const auto& [name, member] : features) {
         if (feature == name) {

@@ -104,6 +104,8 @@ private:
     Expr bit_string_expr(Ty type, int depth);
     Expr bool_expr(int depth);
     Expr real_expr(Ty type, int depth);
+    /// A TIME from table 30's arithmetic on durations, times of day and dates and times.
+    Expr duration(int depth);
     Expr string_expr(int depth, int max_length);
     std::optional<Expr> selection(Ty type, int depth, int max_length);
     std::optional<Expr> call(Ty type, int depth, int max_length);
@@ -345,6 +347,10 @@ Expr Generator::signed_expr(Ty type, int depth) {
     case 4:
         return pattern("ABS($0 MOD " + k + ")", {sub()}, r);
     case 5:
+        if (type == Ty::Lint && options_.times && chance(50)) {
+            // LTIME counts nanoseconds (st-language.md): a duration's, unrounded.
+            return pattern("LTIME_TO_LINT(TIME_TO_LTIME($0))", {duration(depth - 1)}, r);
+        }
         if (type == Ty::Int && options_.strings) {
             return chance(50)
                        ? pattern("LEN($0)", {string_expr(depth - 1, 80)}, r)
@@ -358,6 +364,51 @@ Expr Generator::signed_expr(Ty type, int depth) {
             return pattern("TRUNC(LIMIT(-1.0E9, $0, 1.0E9))", {expr(Ty::Lreal, depth - 1)}, r);
         }
         return conversion_to(type, depth);
+    }
+}
+
+Expr Generator::duration(int depth) {
+    const std::string r = "T#1ms";
+    if (depth <= 0 || chance(25)) {
+        return chance(50) ? leaf("T#" + std::to_string(below(200'000) - 100'000) + "ms", r)
+                          : pattern("DINT_TO_TIME($0)", {expr(Ty::Dint, depth - 1)}, r);
+    }
+    auto sub = [&] {
+        return duration(depth - 1);
+    };
+    // Integer factors, kept small, and divisors of the form 4m + 2 (never 0 nor -1).
+    auto factor = [&] {
+        return pattern("($0 MOD 1000)", {expr(Ty::Dint, depth - 1)}, "1");
+    };
+    auto sign = [&] {
+        return std::string(chance(50) ? " + " : " - ");
+    };
+    // Points in time away from midnight and the epoch, moved and taken back to durations: a
+    // time of day wraps around midnight (table 30).
+    const std::string tod = "TOD#" + std::to_string(below(24)) + ":" + std::to_string(below(60)) +
+                            ":" + std::to_string(below(60)) + "." + std::to_string(below(1000));
+    const std::string dt = "DT#2024-01-31-12:00:00";
+    switch (below(6)) {
+    case 0:
+        return pattern("($0" + sign() + "$1)", {sub(), sub()}, r);
+    case 1:
+        return pattern("($0 * $1)", {sub(), factor()}, r);
+    case 2:
+        return pattern("($0 / ($1 * 4 + 2))", {sub(), factor()}, r);
+    case 3:
+        return pattern("((" + tod + sign() + "$0) - TOD#00:00:00)", {sub()}, r);
+    case 4:
+        return pattern("((" + dt + sign() + "$0) - DT#2024-01-01-00:00:00)", {sub()}, r);
+    default:
+        // ADD and MUL are extensible, each step a row of table 30 (table 24).
+        switch (below(3)) {
+        case 0:
+            return pattern("ADD($0, $1, $2)", {sub(), sub(), sub()}, r);
+        case 1:
+            return pattern("MUL($0, $1, $2)", {sub(), factor(), factor()}, r);
+        default:
+            return pattern("(ADD(" + tod + ", $0, $1) - TOD#00:00:00)", {sub(), sub()}, r);
+        }
     }
 }
 

@@ -30,6 +30,8 @@ struct GeneratorOptions {
     bool loops = true; ///< FOR, WHILE, REPEAT (with EXIT and CONTINUE)
     bool case_statements = true;
     bool in_out = true; ///< VAR_IN_OUT parameters
+    /// TIME, TOD and DT arithmetic (table 30), each taken back to a duration in LINT nanoseconds.
+    bool times = true;
     /// CASE on ULINT with labels above 2^63 - 1.
     bool huge_case_labels = true;
     /// MAX, MIN and LIMIT on STRING (SEL and MUX take strings whenever `strings` is on).
