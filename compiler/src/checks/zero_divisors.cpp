@@ -12,7 +12,8 @@ void check_divisor(const PouUnderCheck& check, bool divide, const ast::Expressio
     const types::Constant* value = check.program.constant_of(divisor);
     const auto zero = [](const auto& number) {
         using V = std::decay_t<decltype(number)>;
-        if constexpr (std::is_same_v<V, bool> || std::is_same_v<V, std::string>) {
+        if constexpr (std::is_same_v<V, bool> || std::is_same_v<V, std::string> ||
+                      std::is_same_v<V, std::u16string>) {
             return false;
         } else {
             return number == V{0};

@@ -34,16 +34,16 @@ public:
     /// The same as 64 bits, a negative number as its two's complement (the CASE labels of a
     /// ULINT or LWORD selector).
     std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression) const;
-    /// The literal an expression is or a CONSTANT names (a STRING's, a WSTRING's, a CHAR's,
-    /// NULL): what an initial value of a text or a reference takes.
+    /// The literal an expression is or a CONSTANT names (a CHAR's, a WCHAR's, NULL): what an
+    /// initial value of a character or a reference takes.
     const ast::Literal* literal(const ast::Expression& expression) const;
 
     /// The constant of an expression of `type` as the typing stage records it, bottom up from
     /// its operands' (constant_operations.cpp): literals, enumeration values, CONSTANTs (their
     /// value as their own type computes it), operators, conversions and the pure standard
     /// functions (ABS, MOVE, ADD..., AND..., GT..., SHL..., SEL, MUX, MIN, MAX, LIMIT, the real
-    /// functions, table 30, LOWER_BOUND, UPPER_BOUND, LEN of a literal), each computed as the VM
-    /// computes it.
+    /// functions, table 30, LOWER_BOUND, UPPER_BOUND, the string functions), each computed as
+    /// the VM computes it.
     std::optional<Constant> value(const ast::Expression& expression, const sema::Type& type) const;
     /// The constant the typing stage recorded for `expression` (constant_of), as a value of
     /// `type`; none where it recorded none or it does not convert.
@@ -52,7 +52,8 @@ public:
     /// Whether that constant, an integer, is a value of `type` unchanged (no bits cut).
     bool typed_fits(const ast::Expression& expression, const sema::Type& type) const;
     /// `constant`, a value of `from`, as a value of `to`, converted as the VM converts
-    /// (integers wrap, reals round to nearest and saturate); none between other kinds of value.
+    /// (integers wrap, reals round to nearest and saturate, a text is cut at a STRING's
+    /// capacity); none between other kinds of value.
     std::optional<Constant> convert(const Constant& constant, const sema::Type& from,
                                     const sema::Type& to) const;
     /// The arithmetic operation `expression` on constants as computed in its operands' type
@@ -148,9 +149,11 @@ private:
                                                 const sema::Type& to) const;
     /// LOWER_BOUND or UPPER_BOUND of an array of fixed bounds (constant_array_bounds.cpp).
     std::optional<Constant> bound_value(const ast::CallExpression& node, bool upper) const;
-    /// LEN of a STRING literal (constant_texts.cpp).
-    std::optional<Constant> text_function(const std::string& name,
-                                          const ast::CallExpression& node) const;
+    /// LEN, LEFT ... FIND of `values` (the texts, then the lengths and positions), a value of
+    /// `result` (constant_texts.cpp).
+    std::optional<Constant> text_function(std::string_view name,
+                                          const std::vector<Constant>& values,
+                                          const sema::Type& result) const;
 
     TypedProgram& program_;
     sema::TypeTable& types_;

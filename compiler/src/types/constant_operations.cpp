@@ -77,7 +77,7 @@ std::optional<T> scalar_value(const Constant& constant) {
     return std::visit(
         [](const auto& value) -> std::optional<T> {
             using V = std::decay_t<decltype(value)>;
-            if constexpr (std::is_same_v<V, std::string>) {
+            if constexpr (std::is_same_v<V, std::string> || std::is_same_v<V, std::u16string>) {
                 return std::nullopt;
             } else if constexpr (std::is_same_v<V, bool>) {
                 return vs::convert<T>(static_cast<vm::BoolByte>(value ? 1 : 0));
@@ -271,6 +271,20 @@ bool wraps_in(ast::BinaryOperator op, T l, T r) {
 std::optional<Constant> ConstantEvaluator::convert(const Constant& constant, const sema::Type& from,
                                                    const sema::Type& to) const {
     const sema::Type& target = types_.unranged(to);
+    const auto* text = std::get_if<std::string>(&constant);
+    const auto* wide = std::get_if<std::u16string>(&constant);
+    if (text != nullptr || wide != nullptr || target.kind == sema::TypeKind::String) {
+        // A STRING or WSTRING keeps the characters its capacity holds, as when stored.
+        const bool strings = from.kind == sema::TypeKind::String &&
+                             target.kind == sema::TypeKind::String && from.wide == target.wide;
+        if (strings && !target.wide && text != nullptr) {
+            return text->substr(0, target.capacity);
+        }
+        if (strings && target.wide && wide != nullptr) {
+            return wide->substr(0, target.capacity);
+        }
+        return std::nullopt;
+    }
     const auto duration = [](const sema::Type& type) {
         return type.kind == sema::TypeKind::Elementary &&
                (type.elementary == ast::ElementaryType::Time ||
@@ -427,7 +441,7 @@ std::optional<Constant> ConstantEvaluator::call_value(const ast::Expression& exp
         return std::nullopt;
     }
     if (text) {
-        return text_function(target->name, node); // constant_texts.cpp
+        return text_function(target->name, values, *target->result); // constant_texts.cpp
     }
     const sema::Type& operand = *target->operand;
     if (target->kind == CallKind::Conversion) {

@@ -43,7 +43,14 @@ std::optional<Constant> literal_value(const ast::Literal& literal, const sema::T
                     return static_cast<std::uint64_t>(
                         text->empty() ? 0 : static_cast<unsigned char>(text->front()));
                 }
-                return text != nullptr ? std::optional<Constant>(*text) : std::nullopt;
+                if (text != nullptr) {
+                    return *text;
+                }
+                // A WSTRING's units; a WCHAR's code is left to run time.
+                const auto* wide = std::get_if<std::u16string>(&value.value);
+                return wide != nullptr && value.type == ast::ElementaryType::Wstring
+                           ? std::optional<Constant>(*wide)
+                           : std::nullopt;
             } else {
                 return std::nullopt;
             }

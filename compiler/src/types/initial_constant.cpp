@@ -19,20 +19,11 @@ std::vector<std::uint8_t> bytes_of(T value) {
     return bytes;
 }
 
-std::optional<std::vector<std::uint8_t>> text_bytes(const ast::Literal* literal,
-                                                    const sema::Type& type) {
+std::optional<std::vector<std::uint8_t>> character_bytes(const ast::Literal* literal,
+                                                         const sema::Type& type) {
     const auto* text = literal != nullptr ? std::get_if<ast::StringLiteral>(literal) : nullptr;
     if (text == nullptr) {
         return std::nullopt;
-    }
-    if (type.kind == sema::TypeKind::String) {
-        if (const auto* narrow = std::get_if<std::string>(&text->value)) {
-            return type.wide ? std::nullopt
-                             : std::optional(vm::stdlib::string_image(type.capacity, *narrow));
-        }
-        return type.wide ? std::optional(vm::stdlib::wstring_image(
-                               type.capacity, std::get<std::u16string>(text->value)))
-                         : std::nullopt;
     }
     // CHAR#'A' / WCHAR#"A": the one character's code (the decoder checked the length).
     if (text->type != type.elementary) {
@@ -69,9 +60,20 @@ constant_bytes(const ast::Expression& expression, const sema::Type& type,
         }
         return not_constant;
     };
-    if (type.kind == sema::TypeKind::String || type.elementary == ast::ElementaryType::Char ||
+    if (type.kind == sema::TypeKind::String) {
+        // The text the typing stage folded (a literal's, a CONSTANT's, a string function's),
+        // cut at the capacity.
+        const auto text = constants.typed_as(expression, type);
+        const auto* narrow = text ? std::get_if<std::string>(&*text) : nullptr;
+        const auto* wide = text ? std::get_if<std::u16string>(&*text) : nullptr;
+        return or_refused(
+            narrow != nullptr ? std::optional(vm::stdlib::string_image(type.capacity, *narrow))
+            : wide != nullptr ? std::optional(vm::stdlib::wstring_image(type.capacity, *wide))
+                              : std::nullopt);
+    }
+    if (type.elementary == ast::ElementaryType::Char ||
         type.elementary == ast::ElementaryType::Wchar) {
-        return or_refused(text_bytes(constants.literal(expression), type));
+        return or_refused(character_bytes(constants.literal(expression), type));
     }
     if (type.kind == sema::TypeKind::Reference) {
         const ast::Literal* literal = constants.literal(expression);
@@ -98,7 +100,8 @@ constant_bytes(const ast::Expression& expression, const sema::Type& type,
                 return integer_bytes(v ? 1 : 0, type.size);
             } else if constexpr (std::is_same_v<V, double>) {
                 return type.size == 4 ? bytes_of(static_cast<float>(v)) : bytes_of(v);
-            } else if constexpr (std::is_same_v<V, std::string>) {
+            } else if constexpr (std::is_same_v<V, std::string> ||
+                                 std::is_same_v<V, std::u16string>) {
                 return not_constant;
             } else {
                 return integer_bytes(static_cast<std::int64_t>(v), type.size);

@@ -15,6 +15,15 @@ std::string constant_text(const Constant& value) {
                 return v ? "TRUE" : "FALSE";
             } else if constexpr (std::is_same_v<V, std::string>) {
                 return fmt::format("'{}'", v);
+            } else if constexpr (std::is_same_v<V, std::u16string>) {
+                // As a WSTRING literal writes it: ASCII as itself, any other unit as $hhhh.
+                std::string text = "\"";
+                for (const char16_t unit : v) {
+                    text += unit >= 0x20 && unit < 0x7F && unit != u'"' && unit != u'$'
+                                ? std::string(1, static_cast<char>(unit))
+                                : fmt::format("${:04X}", static_cast<unsigned>(unit));
+                }
+                return text + "\"";
             } else if constexpr (std::is_same_v<V, double>) {
                 return fmt::format("{}", v); // the shortest text that reads back as the same value
             } else {

@@ -16,9 +16,10 @@
 namespace eposp::compiler::test {
 namespace {
 
-/// What an expression's value is read back as: stored into a LINT, ULINT, LWORD, LREAL, BOOL
-/// or TIME variable, which every type of its kind widens into exactly.
-enum class Kind { Signed, Unsigned, Bits, Real, Bool, Time };
+/// What an expression's value is read back as: stored into a LINT, ULINT, LWORD, LREAL, BOOL,
+/// TIME, STRING[100] or WSTRING[100] variable, which every type of its kind widens into exactly
+/// (every text here is shorter).
+enum class Kind { Signed, Unsigned, Bits, Real, Bool, Time, Text, Wide };
 
 struct Folded {
     Kind kind;
@@ -37,6 +38,10 @@ const char* variable_type(Kind kind) {
         return "LREAL";
     case Kind::Bool:
         return "BOOL";
+    case Kind::Text:
+        return "STRING[100]";
+    case Kind::Wide:
+        return "WSTRING[100]";
     default:
         return "TIME";
     }
@@ -216,14 +221,114 @@ const std::vector<Folded> kExpressions = {
     {Kind::Bits, "NOT(IN := kB, ENO => eno)"},
     {Kind::Signed, "LEN('hello')"},
     {Kind::Signed, "LEN('')"},
+    // The string functions of table 29 (vm/stdlib/text_functions.hpp) on STRING constants: a
+    // CONSTANT's text cut at its declared length (kCut is 'abc'), lengths below 0 count as 0,
+    // past the end are cut, a position outside selects nothing (INSERT clamps it), a length or
+    // position beyond DINT saturates, a result is cut at the capacity it is computed in
+    // (CONCAT's at 65535: LEN 65535 as INT is -1), LEN and FIND are INT.
+    {Kind::Signed, "LEN(kS)"},
+    {Kind::Signed, "LEN(kE)"},
+    {Kind::Signed, "LEN(kCut)"},
+    {Kind::Signed, "LEN(kLong)"},
+    {Kind::Signed, "LEN(CONCAT(kLong, kLong))"},
+    {Kind::Signed, "LEN(CONCAT(kLong, kLong, kS))"},
+    {Kind::Signed, "LEN(CONCAT(kCut, kCut))"},
+    {Kind::Text, "LEFT(kS, 2)"},
+    {Kind::Text, "LEFT(kS, 0)"},
+    {Kind::Text, "LEFT(kS, -1)"},
+    {Kind::Text, "LEFT(kS, 99)"},
+    {Kind::Text, "LEFT(kS, kBig)"},
+    {Kind::Text, "LEFT(kS, kMinD)"},
+    {Kind::Text, "LEFT(kS, kSi + kSi)"},
+    {Kind::Text, "LEFT(kE, 3)"},
+    {Kind::Text, "LEFT(kLong, 3)"},
+    {Kind::Text, "LEFT(IN := kS, L := 2, ENO => eno)"},
+    {Kind::Text, "RIGHT(kS, 2)"},
+    {Kind::Text, "RIGHT(kS, -3)"},
+    {Kind::Text, "RIGHT(kS, 10)"},
+    {Kind::Text, "RIGHT(kCut, 2)"},
+    {Kind::Text, "MID(kS, 2, 2)"},
+    {Kind::Text, "MID(kS, 2, 10)"},
+    {Kind::Text, "MID(kS, 0, 2)"},
+    {Kind::Text, "MID(kS, 6, 2)"},
+    {Kind::Text, "MID(kS, -1, 2)"},
+    {Kind::Text, "MID(kS, 2, 5)"},
+    {Kind::Text, "MID(kS, 2, 6)"},
+    {Kind::Text, "MID(kS, 2, 0)"},
+    {Kind::Text, "MID(kS, 2, -1)"},
+    {Kind::Text, "MID(kS, kU, 1)"},
+    {Kind::Text, "MID(P := 3, IN := kS, L := 2)"},
+    {Kind::Text, "CONCAT(kS, 'x')"},
+    {Kind::Text, "CONCAT(kE, kE)"},
+    {Kind::Text, "CONCAT(kS, kCut, kS)"},
+    {Kind::Text, "CONCAT(kCut, ' ', kS, '!')"},
+    {Kind::Text, "INSERT(kS, 'XY', 2)"},
+    {Kind::Text, "INSERT(kS, 'XY', 0)"},
+    {Kind::Text, "INSERT(kS, 'XY', -4)"},
+    {Kind::Text, "INSERT(kS, 'XY', 5)"},
+    {Kind::Text, "INSERT(kS, 'XY', 99)"},
+    {Kind::Text, "INSERT(kE, kS, 1)"},
+    {Kind::Text, "INSERT(kCut, kCut, 1)"},
+    {Kind::Text, "DELETE(kS, 2, 2)"},
+    {Kind::Text, "DELETE(kS, 2, 0)"},
+    {Kind::Text, "DELETE(kS, 2, 6)"},
+    {Kind::Text, "DELETE(kS, 2, -2)"},
+    {Kind::Text, "DELETE(kS, 0, 2)"},
+    {Kind::Text, "DELETE(kS, 2, 5)"},
+    {Kind::Text, "DELETE(kS, 9, 1)"},
+    {Kind::Text, "DELETE(kS, -1, 1)"},
+    {Kind::Text, "REPLACE(kS, 'XY', 2, 2)"},
+    {Kind::Text, "REPLACE(kS, 'XY', 0, 2)"},
+    {Kind::Text, "REPLACE(kS, 'XY', -1, 2)"},
+    {Kind::Text, "REPLACE(kS, 'XY', 9, 1)"},
+    {Kind::Text, "REPLACE(kS, 'XY', 2, 6)"},
+    {Kind::Text, "REPLACE(kS, 'XY', 2, 0)"},
+    {Kind::Text, "REPLACE(kS, kE, 1, 1)"},
+    {Kind::Text, "REPLACE(kCut, kS, 1, 3)"},
+    {Kind::Signed, "FIND(kS, 'l')"},
+    {Kind::Signed, "FIND(kS, 'lo')"},
+    {Kind::Signed, "FIND(kS, 'z')"},
+    {Kind::Signed, "FIND(kS, kE)"},
+    {Kind::Signed, "FIND(kE, 'a')"},
+    {Kind::Signed, "FIND(kE, kE)"},
+    {Kind::Signed, "FIND(kS, 'hello!')"},
+    {Kind::Signed, "FIND(kS, kS)"},
+    {Kind::Signed, "FIND(kCut, 'c')"},
+    {Kind::Signed, "FIND(kCut, 'd')"},
+    {Kind::Text, "MID(CONCAT(kS, kS), 3, 4)"},
+    {Kind::Text, "LEFT(REPLACE(kS, kCut, 1, 1), 4)"},
+    {Kind::Text, "SEL(TRUE, kCut, kS)"},
+    {Kind::Text, "MUX(1, kS, kCut)"},
+    {Kind::Text, "kCut"},
+    // The same natives of WSTRING (LEFT_WSTRING...), on UTF-16 units.
+    {Kind::Signed, "LEN(kW)"},
+    {Kind::Signed, "LEN(kWCut)"},
+    {Kind::Signed, "LEN(\"\")"},
+    {Kind::Signed, "FIND(kW, \"$00E9l\")"},
+    {Kind::Signed, "FIND(kW, \"z\")"},
+    {Kind::Wide, "kWCut"},
+    {Kind::Wide, "LEFT(kW, 2)"},
+    {Kind::Wide, "RIGHT(kW, -1)"},
+    {Kind::Wide, "MID(kW, 3, 2)"},
+    {Kind::Wide, "MID(kW, 1, 9)"},
+    {Kind::Wide, "CONCAT(kW, kWCut, \"!\")"},
+    {Kind::Wide, "INSERT(kW, kWCut, 99)"},
+    {Kind::Wide, "DELETE(kW, 2, 2)"},
+    {Kind::Wide, "REPLACE(kWCut, kW, 1, 2)"},
+    {Kind::Wide, "REPLACE(kW, \"XY\", 0, 2)"},
 };
 
 /// The operands the expressions name, CONSTANTs (`VAR CONSTANT`) or variables (`VAR`).
 std::string operands(const char* section) {
-    return std::string(section) + R"(
+    std::string text = std::string(section) + R"(
     kI : INT := 30000; kMinI : INT := -32768; kMinD : DINT := -2147483648;
     kMaxD : DINT := 2147483647; kU : UINT := 60000; kB : BYTE := 16#0F;
     kR : REAL := 1.1; kSeven : DINT := 7; kBig : LINT := 9007199254740993; kT : TIME := T#5ms;
+    kS : STRING := 'hello'; kE : STRING := ''; kCut : STRING[3] := 'abcdef'; kSi : SINT := 100;
+    kW : WSTRING := "h$00E9llo"; kWCut : WSTRING[3] := "abcdef";
+    kLong : STRING[40000] := ')";
+    text += std::string(40000, 'x');
+    return text + R"(';
 END_VAR
 VAR arr : ARRAY[-2..5, 1..3] OF INT; eno : BOOL; END_VAR
 )";
@@ -281,6 +386,15 @@ TEST_P(ConstantExpressions, TheTypingStagesConstantIsTheValueTheVmComputes) {
         case Kind::Bool:
             ASSERT_TRUE(std::holds_alternative<bool>(*constant)) << folded.expression;
             EXPECT_EQ(std::get<bool>(*constant), run.get<std::uint8_t>(path) != 0)
+                << folded.expression;
+            break;
+        case Kind::Text:
+            ASSERT_TRUE(std::holds_alternative<std::string>(*constant)) << folded.expression;
+            EXPECT_EQ(std::get<std::string>(*constant), run.get_string(path)) << folded.expression;
+            break;
+        case Kind::Wide:
+            ASSERT_TRUE(std::holds_alternative<std::u16string>(*constant)) << folded.expression;
+            EXPECT_TRUE(std::get<std::u16string>(*constant) == run.get_wstring(path))
                 << folded.expression;
             break;
         }
@@ -361,7 +475,7 @@ END_PROGRAM
 }
 
 // A real function's NaN (a domain error) is left to run time, as are a DIV_TIME by zero (which
-// stops the task), LEN of anything but a STRING literal and the bounds of an ARRAY[*].
+// stops the task), a call with EN and the bounds of an ARRAY[*].
 TEST(ConstantExpressionsOf, WhatTheVmDoesNotGiveTheSameWayIsNoConstant) {
     const auto typed = type_source(R"(
 FUNCTION Last : DINT
@@ -378,16 +492,19 @@ r := EXPT(-8.0, 1.0 / 3.0);
 r := (-8.0) ** (1.0 / 3.0);
 t := DIV_TIME(T#1s, 0);
 t := DIV_TIME(T#1s, 0.0);
-n := LEN("abc");
+n := LEN(EN := TRUE, IN := kText);
 n := LEN(kText);
+n := LEN("abc");
 r := SQRT(2.0);
 END_PROGRAM
 )");
     ASSERT_TRUE(typed->front_end->program) << typed->errors();
-    for (std::size_t i = 0; i < 9; ++i) {
+    for (std::size_t i = 0; i < 8; ++i) {
         EXPECT_EQ(typed->program().constant_of(typed->value(i)), nullptr) << i;
     }
-    EXPECT_NE(typed->program().constant_of(typed->value(9)), nullptr);
+    for (std::size_t i = 8; i < 11; ++i) {
+        EXPECT_NE(typed->program().constant_of(typed->value(i)), nullptr) << i;
+    }
     const ast::Pou& last = typed->front_end->units.back().pous.front();
     EXPECT_EQ(typed->program().constant_of(
                   *std::get<ast::AssignmentStatement>(last.body.at(0).node).value),
@@ -413,6 +530,53 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int64_t>("Main.d"), 3'600'000'000'000);
     EXPECT_EQ(run.get<double>("Main.r"), std::sqrt(2.0));
     EXPECT_EQ(run.get<std::int32_t>("Main.n"), 2000);
+}
+
+// A STRING's or WSTRING's initial value takes the folded text: a string function of constants
+// (E0313 before), a CONSTANT's text cut at its declared length (its literal's whole text
+// before), cut again at the variable's capacity as a literal is; the values are the VM's for
+// the same calls.
+TEST(ConstantExpressionsOf, AStringsInitialValueIsTheFoldedText) {
+    StProgram run(R"(
+VAR_GLOBAL CONSTANT kName : STRING[3] := 'abcdef'; END_VAR
+PROGRAM Main
+VAR CONSTANT kHello : STRING := 'hello'; kWide : WSTRING[2] := "xyz"; END_VAR
+VAR
+    joined : STRING := CONCAT('a', 'b', kName);
+    name : STRING[10] := kName;
+    cut : STRING[4] := CONCAT(kHello, kName);
+    part : STRING := MID(REPLACE(kHello, 'XY', 2, 2), 3, 2);
+    wide : WSTRING[4] := CONCAT("$00E9", kWide);
+    length : INT := LEN(CONCAT(kName, kHello));
+    found : INT := FIND(kHello, 'l');
+    joined_now : STRING; name_now : STRING[10]; cut_now : STRING[4]; part_now : STRING;
+    length_now : INT; found_now : INT; wide_now : WSTRING[4];
+END_VAR
+joined_now := CONCAT('a', 'b', kName);
+name_now := kName;
+cut_now := CONCAT(kHello, kName);
+part_now := MID(REPLACE(kHello, 'XY', 2, 2), 3, 2);
+length_now := LEN(CONCAT(kName, kHello));
+found_now := FIND(kHello, 'l');
+wide_now := CONCAT("$00E9", kWide);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    EXPECT_EQ(run.get_string("Main.joined"), "ababc");
+    EXPECT_EQ(run.get_string("Main.name"), "abc");
+    EXPECT_EQ(run.get_string("Main.cut"), "hell");
+    EXPECT_EQ(run.get_string("Main.part"), "XYl");
+    EXPECT_TRUE(run.get_wstring("Main.wide") == u"\u00E9xy");
+    EXPECT_EQ(run.get<std::int16_t>("Main.length"), 8);
+    EXPECT_EQ(run.get<std::int16_t>("Main.found"), 3);
+    ASSERT_TRUE(run.scans(1));
+    for (const char* name : {"joined", "name", "cut", "part"}) {
+        const std::string path = std::string("Main.") + name;
+        EXPECT_EQ(run.get_string(path), run.get_string(path + "_now")) << name;
+    }
+    EXPECT_EQ(run.get<std::int16_t>("Main.length"), run.get<std::int16_t>("Main.length_now"));
+    EXPECT_EQ(run.get<std::int16_t>("Main.found"), run.get<std::int16_t>("Main.found_now"));
+    EXPECT_TRUE(run.get_wstring("Main.wide") == run.get_wstring("Main.wide_now"));
 }
 
 } // namespace

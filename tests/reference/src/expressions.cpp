@@ -99,6 +99,8 @@ Value Evaluator::constant(const types::Constant& value, const sema::Type& type) 
                 return integer(type, static_cast<std::uint64_t>(v));
             } else if constexpr (std::is_same_v<T, double>) {
                 return real(type, v);
+            } else if constexpr (std::is_same_v<T, std::u16string>) {
+                throw Unsupported("a WSTRING");
             } else {
                 Value result;
                 result.type = &type;

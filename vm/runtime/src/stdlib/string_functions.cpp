@@ -1,64 +1,27 @@
 // IEC 61131-3 (3rd ed.) 6.6.2.5.12, table 43: the character string functions, written once on
 // the character type and registered for STRING (`LEFT`, `EQ_STRING`) and WSTRING
-// (`LEFT_WSTRING`, `EQ_WSTRING`). Positions are 1-based and count characters (UTF-16 units in a
-// WSTRING). Where the standard leaves out-of-range arguments open, the result is the part of the
-// request that exists (CODESYS behaves so for LEFT/RIGHT/MID): lengths below 0 count as 0,
-// lengths past the end are cut, and a position outside the string selects nothing (MID, DELETE,
-// REPLACE) or is clamped to the nearest end (INSERT).
+// (`LEFT_WSTRING`, `EQ_WSTRING`). What each computes is text_functions.hpp's, which the compiler
+// folds constants with; here the inputs are read from and the result stored into VM memory.
 
+#include "eposp/vm/stdlib/text_functions.hpp"
 #include "library_parts.hpp"
 #include "string_arguments.hpp"
 
-#include <algorithm>
 #include <compare>
 #include <string>
 
 namespace eposp::vm::stdlib {
 namespace {
 
-/// `count` clamped to 0..limit.
-std::size_t clamp_count(std::int32_t count, std::size_t limit) {
-    return count <= 0 ? 0 : std::min<std::size_t>(static_cast<std::size_t>(count), limit);
-}
-
-/// The 0-based index of 1-based position `position` if it names a character of `text`.
+/// Stores the result `pieces` make into the string parameter 0 points to, cut at its capacity.
+/// Assembled first: a piece may lie inside the destination.
 template <typename Char>
-std::optional<std::size_t> index_of(std::basic_string_view<Char> text, std::int32_t position) {
-    if (position < 1 || static_cast<std::size_t>(position) > text.size()) {
-        return std::nullopt;
+void store_pieces(NativeArgs& args, const TextPieces<Char>& pieces) {
+    TextBuffer<Char> out;
+    for (const Text<Char> piece : pieces) {
+        out.append(piece);
     }
-    return static_cast<std::size_t>(position - 1);
-}
-
-template <typename Char>
-std::basic_string_view<Char> mid(std::basic_string_view<Char> text, std::int32_t length,
-                                 std::int32_t position) {
-    const auto start = index_of(text, position);
-    return start ? text.substr(*start, clamp_count(length, text.size() - *start))
-                 : std::basic_string_view<Char>{};
-}
-
-/// `text` with `length` characters from `position` replaced by `insert`.
-template <typename Char>
-void splice(TextBuffer<Char>& out, std::basic_string_view<Char> text, std::int32_t length,
-            std::int32_t position, std::basic_string_view<Char> insert) {
-    const auto start = index_of(text, position);
-    if (!start) {
-        out.append(text);
-        return;
-    }
-    out.append(text.substr(0, *start));
-    out.append(insert);
-    out.append(text.substr(*start + clamp_count(length, text.size() - *start)));
-}
-
-template <typename Char>
-std::int32_t find(std::basic_string_view<Char> haystack, std::basic_string_view<Char> needle) {
-    if (needle.empty()) {
-        return 0;
-    }
-    const auto at = haystack.find(needle);
-    return at == std::basic_string_view<Char>::npos ? 0 : static_cast<std::int32_t>(at + 1);
+    store_text(args, 0, out.view());
 }
 
 /// The natives of one string type, all bound as the manifest describes them: the standard
@@ -110,22 +73,19 @@ void register_functions_of(NativeRegistry& registry) {
     });
     add_standard(registry, native_binding("LEFT", N::kVariant), [](NativeArgs& args) {
         if (const StringParameter<Char> text(args, 1); text) {
-            const View in = text.view();
-            store_text(args, 0, in.substr(0, clamp_count(args.get<std::int32_t>(2), in.size())));
+            store_text(args, 0, left_of(text.view(), args.get<std::int32_t>(2)));
         }
     });
     add_standard(registry, native_binding("RIGHT", N::kVariant), [](NativeArgs& args) {
         if (const StringParameter<Char> text(args, 1); text) {
-            const View in = text.view();
-            const auto count = clamp_count(args.get<std::int32_t>(2), in.size());
-            store_text(args, 0, in.substr(in.size() - count));
+            store_text(args, 0, right_of(text.view(), args.get<std::int32_t>(2)));
         }
     });
     // MID(IN, L, P)
     add_standard(registry, native_binding("MID", N::kVariant), [](NativeArgs& args) {
         if (const StringParameter<Char> text(args, 1); text) {
             store_text(args, 0,
-                       mid(text.view(), args.get<std::int32_t>(2), args.get<std::int32_t>(3)));
+                       mid_of(text.view(), args.get<std::int32_t>(2), args.get<std::int32_t>(3)));
         }
     });
     // CONCAT is binary here: an n-ary call is folded left to right into its destination
@@ -138,10 +98,7 @@ void register_functions_of(NativeRegistry& registry) {
         }
         const StringParameter<Char> b(args, 2);
         if (b) {
-            TextBuffer<Char> out;
-            out.append(a.view());
-            out.append(b.view());
-            store_text(args, 0, out.view());
+            store_pieces(args, concat_of(a.view(), b.view()));
         }
     });
     // INSERT(IN1, IN2, P): IN2 after the first P characters of IN1; P is clamped to 0..LEN(IN1).
@@ -152,21 +109,14 @@ void register_functions_of(NativeRegistry& registry) {
         }
         const StringParameter<Char> insert(args, 2);
         if (insert) {
-            const View in = text.view();
-            const auto split = clamp_count(args.get<std::int32_t>(3), in.size());
-            TextBuffer<Char> out;
-            out.append(in.substr(0, split));
-            out.append(insert.view());
-            out.append(in.substr(split));
-            store_text(args, 0, out.view());
+            store_pieces(args, insert_of(text.view(), insert.view(), args.get<std::int32_t>(3)));
         }
     });
     // DELETE(IN, L, P)
     add_standard(registry, native_binding("DELETE", N::kVariant), [](NativeArgs& args) {
         if (const StringParameter<Char> text(args, 1); text) {
-            TextBuffer<Char> out;
-            splice(out, text.view(), args.get<std::int32_t>(2), args.get<std::int32_t>(3), View{});
-            store_text(args, 0, out.view());
+            store_pieces(args, replace_of(text.view(), View{}, args.get<std::int32_t>(2),
+                                          args.get<std::int32_t>(3)));
         }
     });
     // REPLACE(IN1, IN2, L, P)
@@ -177,10 +127,8 @@ void register_functions_of(NativeRegistry& registry) {
         }
         const StringParameter<Char> insert(args, 2);
         if (insert) {
-            TextBuffer<Char> out;
-            splice(out, text.view(), args.get<std::int32_t>(3), args.get<std::int32_t>(4),
-                   insert.view());
-            store_text(args, 0, out.view());
+            store_pieces(args, replace_of(text.view(), insert.view(), args.get<std::int32_t>(3),
+                                          args.get<std::int32_t>(4)));
         }
     });
     add_standard(registry, native_binding("FIND", N::kVariant), [](NativeArgs& args) {
@@ -190,7 +138,7 @@ void register_functions_of(NativeRegistry& registry) {
         }
         const StringParameter<Char> needle(args, 1);
         if (needle) {
-            args.set_result(find(haystack.view(), needle.view()));
+            args.set_result(find_in(haystack.view(), needle.view()));
         }
     });
     // Table 22: CHAR_TO_STRING(dst, c) is the string of that one character, STRING_TO_CHAR(s)

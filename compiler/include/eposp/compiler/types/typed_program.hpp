@@ -28,8 +28,10 @@ namespace eposp::compiler::types {
 class ConstantEvaluator;
 
 /// A folded constant: BOOL, a signed or unsigned integer (also bit strings, TIME and dates in
-/// ns, enumeration values), a real number, or a string's characters.
-using Constant = std::variant<bool, std::int64_t, std::uint64_t, double, std::string>;
+/// ns, enumeration values), a real number, a STRING's characters (Latin-1 bytes) or a WSTRING's
+/// (UTF-16 units).
+using Constant =
+    std::variant<bool, std::int64_t, std::uint64_t, double, std::string, std::u16string>;
 
 enum class CallKind {
     Function,              ///< a user FUNCTION
