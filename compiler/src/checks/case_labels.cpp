@@ -1,6 +1,6 @@
 #include "case_labels.hpp"
 
-#include "../types/constant_evaluator.hpp"
+#include "../types/constant_folder.hpp"
 
 namespace eposp::compiler::checks {
 

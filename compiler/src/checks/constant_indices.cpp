@@ -1,7 +1,7 @@
 // E0409: an array index known when compiling lies inside the array's bounds; code generation
 // then needs no run-time check for it.
 
-#include "../types/constant_evaluator.hpp"
+#include "../types/constant_folder.hpp"
 #include "pou_checks.hpp"
 
 #include <fmt/format.h>

@@ -1,7 +1,7 @@
 // E0410: a constant stored into a subrange variable or parameter lies inside its bounds
 // (IEC 61131-3 ed. 3, 6.4.4.4); other values are checked at run time by code generation.
 
-#include "../types/constant_evaluator.hpp"
+#include "../types/constant_folder.hpp"
 #include "pou_checks.hpp"
 
 #include <fmt/format.h>

@@ -3,7 +3,7 @@
 // its body does not assign it, and a constant step is not 0 (the loop would never end) nor
 // negative on an unsigned control variable.
 
-#include "../types/constant_evaluator.hpp"
+#include "../types/constant_folder.hpp"
 #include "pou_checks.hpp"
 
 #include <cstdint>

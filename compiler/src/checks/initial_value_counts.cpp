@@ -3,7 +3,7 @@
 // Every initial value is looked at: of variables (in the POUs whose code runs), globals, and
 // the members and defaults of declared types.
 
-#include "../types/constant_evaluator.hpp"
+#include "../types/constant_folder.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "pou_checks.hpp"
 

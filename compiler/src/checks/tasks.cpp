@@ -3,7 +3,7 @@
 // at least one tick; and the `{attribute 'event' := '…'}` that releases a task on an event of the
 // host instead (docs/st-language.md, "Tasks").
 
-#include "../types/constant_evaluator.hpp"
+#include "../types/constant_folder.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "eposp/vm/image_limits.hpp"
 #include "pou_checks.hpp"

@@ -2,12 +2,12 @@
 // the DINTs code generation writes for them (pou_conformant_arrays.cpp). The bounds of an
 // ARRAY[*] parameter come with each call: no constant.
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 
 namespace eposp::compiler::types {
 
-std::optional<Constant> ConstantEvaluator::bound_value(const ast::CallExpression& node,
-                                                       bool upper) const {
+std::optional<Constant> ConstantFolder::bound_value(const ast::CallExpression& node,
+                                                    bool upper) const {
     if (node.arguments.size() != 2) {
         return std::nullopt;
     }

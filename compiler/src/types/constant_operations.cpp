@@ -4,7 +4,7 @@
 // gives the operands (operands_of: a small integer inside an expression in DINT), each
 // operation wrapping at its width, a division by zero no constant (it traps at run time).
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "eposp/compiler/ascii_case.hpp"
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "eposp/vm/value_semantics.hpp"
@@ -268,8 +268,8 @@ bool wraps_in(ast::BinaryOperator op, T l, T r) {
 
 } // namespace
 
-std::optional<Constant> ConstantEvaluator::convert(const Constant& constant, const sema::Type& from,
-                                                   const sema::Type& to) const {
+std::optional<Constant> ConstantFolder::convert(const Constant& constant, const sema::Type& from,
+                                                const sema::Type& to) const {
     const sema::Type& target = types_.unranged(to);
     const auto* text = std::get_if<std::string>(&constant);
     const auto* wide = std::get_if<std::u16string>(&constant);
@@ -305,8 +305,7 @@ std::optional<Constant> ConstantEvaluator::convert(const Constant& constant, con
     });
 }
 
-std::optional<ConstantEvaluator::Held>
-ConstantEvaluator::held(const ast::Expression& expression) const {
+std::optional<ConstantFolder::Held> ConstantFolder::held(const ast::Expression& expression) const {
     // An arithmetic operation on small integers is held as computed, in DINT, while it feeds
     // its operator (codegen's operand_value, Value::iec); anything else as its type. Its
     // operator marks it so and records its constant as computed (computed_in).
@@ -324,14 +323,14 @@ ConstantEvaluator::held(const ast::Expression& expression) const {
     return Held{*value, computed};
 }
 
-std::optional<Constant> ConstantEvaluator::computed(const ast::Expression& expression) const {
+std::optional<Constant> ConstantFolder::computed(const ast::Expression& expression) const {
     const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
     const sema::Type* in = binary != nullptr ? program_.operands_of(expression) : nullptr;
     return in != nullptr ? operation(*binary, *in) : std::nullopt;
 }
 
-std::optional<Constant> ConstantEvaluator::operation(const ast::BinaryExpression& node,
-                                                     const sema::Type& computed) const {
+std::optional<Constant> ConstantFolder::operation(const ast::BinaryExpression& node,
+                                                  const sema::Type& computed) const {
     const auto left = held(*node.left);
     const auto right = left ? held(*node.right) : std::nullopt;
     if (!right) {
@@ -342,7 +341,7 @@ std::optional<Constant> ConstantEvaluator::operation(const ast::BinaryExpression
     return r ? binary_constant(node.op, *l, *r, computed) : std::nullopt;
 }
 
-std::optional<Constant> ConstantEvaluator::unary_value(const ast::UnaryExpression& node) const {
+std::optional<Constant> ConstantFolder::unary_value(const ast::UnaryExpression& node) const {
     // Computed in its operand's type, as code generation's unary() does (its operand cut to
     // its type by eval()).
     const Constant* value = program_.constant_of(*node.operand);
@@ -374,9 +373,9 @@ std::optional<Constant> ConstantEvaluator::unary_value(const ast::UnaryExpressio
     });
 }
 
-std::optional<Constant> ConstantEvaluator::binary_value(const ast::Expression& expression,
-                                                        const ast::BinaryExpression& node,
-                                                        const sema::Type& type) const {
+std::optional<Constant> ConstantFolder::binary_value(const ast::Expression& expression,
+                                                     const ast::BinaryExpression& node,
+                                                     const sema::Type& type) const {
     if (node.op == ast::BinaryOperator::Power) {
         return power_value(node, type); // constant_real_functions.cpp
     }
@@ -393,8 +392,8 @@ std::optional<Constant> ConstantEvaluator::binary_value(const ast::Expression& e
     return convert(*value, *computed, type);
 }
 
-std::optional<Constant> ConstantEvaluator::call_value(const ast::Expression& expression,
-                                                      const ast::CallExpression& node) const {
+std::optional<Constant> ConstantFolder::call_value(const ast::Expression& expression,
+                                                   const ast::CallExpression& node) const {
     const CallTarget* target = program_.call_target(expression);
     if (target == nullptr || target->result == nullptr ||
         (target->kind != CallKind::Conversion && target->kind != CallKind::StandardFunction)) {
@@ -598,7 +597,7 @@ std::optional<Constant> ConstantEvaluator::call_value(const ast::Expression& exp
     }
 }
 
-bool ConstantEvaluator::wraps(const ast::Expression& expression) const {
+bool ConstantFolder::wraps(const ast::Expression& expression) const {
     if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
         // -x wraps at the most negative value of a signed type, at any other than 0 of an
         // unsigned one.

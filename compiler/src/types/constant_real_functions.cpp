@@ -4,7 +4,7 @@
 // error: SQRT(-1.0), LN(-1.0)) is no constant: it is left to run time, which gives it as the
 // VM's libm does; infinities are constants.
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "eposp/vm/stdlib/real_functions.hpp"
 
 #include <cmath>
@@ -37,9 +37,9 @@ std::optional<Constant> apply(std::string_view name, const std::vector<Constant>
 
 } // namespace
 
-std::optional<Constant> ConstantEvaluator::real_function(std::string_view name,
-                                                         const std::vector<Constant>& inputs,
-                                                         const sema::Type& real) const {
+std::optional<Constant> ConstantFolder::real_function(std::string_view name,
+                                                      const std::vector<Constant>& inputs,
+                                                      const sema::Type& real) const {
     switch (sema::scalar_of(real)) {
     case vm::Scalar::F32:
         return apply<float>(name, inputs);
@@ -50,8 +50,8 @@ std::optional<Constant> ConstantEvaluator::real_function(std::string_view name,
     }
 }
 
-std::optional<Constant> ConstantEvaluator::power_value(const ast::BinaryExpression& node,
-                                                       const sema::Type& type) const {
+std::optional<Constant> ConstantFolder::power_value(const ast::BinaryExpression& node,
+                                                    const sema::Type& type) const {
     // As code generation computes `**`: both operands converted to the result's real type,
     // then EXPT of that type.
     std::vector<Constant> inputs;

@@ -5,7 +5,7 @@
 // of the string code generation computes it into (the typing stage's, vm::stdlib::
 // text_capacity).
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "eposp/vm/stdlib/text_functions.hpp"
 
@@ -104,9 +104,9 @@ std::optional<Constant> fold(std::string_view name, const std::vector<Constant>&
 
 } // namespace
 
-std::optional<Constant> ConstantEvaluator::text_function(std::string_view name,
-                                                         const std::vector<Constant>& values,
-                                                         const sema::Type& result) const {
+std::optional<Constant> ConstantFolder::text_function(std::string_view name,
+                                                      const std::vector<Constant>& values,
+                                                      const sema::Type& result) const {
     const stdlib::StandardFunction* function = stdlib::find_standard_function(name);
     if (function == nullptr || function->family != stdlib::Family::Text) {
         return std::nullopt;

@@ -6,7 +6,7 @@
 // nanosecond), a time counted as a number in its unit (sema::number_unit). A division by zero
 // is no constant: it stops the task at run time.
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "eposp/vm/stdlib/time_arithmetic.hpp"
 
@@ -28,8 +28,8 @@ std::optional<std::int64_t> nanoseconds(const Constant& constant) {
 
 } // namespace
 
-std::optional<Constant> ConstantEvaluator::time_value(const ast::BinaryExpression& node,
-                                                      const sema::Type& type) const {
+std::optional<Constant> ConstantFolder::time_value(const ast::BinaryExpression& node,
+                                                   const sema::Type& type) const {
     using Op = ast::BinaryOperator;
     const Constant* left = program_.constant_of(*node.left);
     const Constant* right = program_.constant_of(*node.right);
@@ -48,18 +48,17 @@ std::optional<Constant> ConstantEvaluator::time_value(const ast::BinaryExpressio
     return moved_time(node.op == Op::Add, *l, *r, type);
 }
 
-std::optional<Constant> ConstantEvaluator::moved_time(bool add, std::int64_t left,
-                                                      std::int64_t right,
-                                                      const sema::Type& result) const {
+std::optional<Constant> ConstantFolder::moved_time(bool add, std::int64_t left, std::int64_t right,
+                                                   const sema::Type& result) const {
     if (time_of_day(result)) {
         return add ? vm::stdlib::add_tod_time(left, right) : vm::stdlib::sub_tod_time(left, right);
     }
     return add ? vs::add(left, right) : vs::sub(left, right); // Add64, Sub64
 }
 
-std::optional<Constant> ConstantEvaluator::scaled_time(bool multiply, std::int64_t time,
-                                                       const Constant& factor,
-                                                       const sema::Type& factor_type) const {
+std::optional<Constant> ConstantFolder::scaled_time(bool multiply, std::int64_t time,
+                                                    const Constant& factor,
+                                                    const sema::Type& factor_type) const {
     const bool real = sema::is_real(factor_type);
     if (!real && !sema::is_integer(factor_type)) {
         return std::nullopt;
@@ -77,10 +76,10 @@ std::optional<Constant> ConstantEvaluator::scaled_time(bool multiply, std::int64
     return multiply ? std::optional(vm::stdlib::mul_time(time, n)) : vm::stdlib::div_time(time, n);
 }
 
-std::optional<Constant>
-ConstantEvaluator::time_function(std::string_view name, const std::vector<Constant>& values,
-                                 const std::vector<const sema::Type*>& types,
-                                 const sema::Type& result) const {
+std::optional<Constant> ConstantFolder::time_function(std::string_view name,
+                                                      const std::vector<Constant>& values,
+                                                      const std::vector<const sema::Type*>& types,
+                                                      const sema::Type& result) const {
     // Table 30's functions: the first input as its row's type (the same nanoseconds, TIME or
     // LTIME), then the operation the operator of that name computes; an extensible ADD or MUL
     // (table 24) from left to right, each step as its last row.
@@ -104,9 +103,9 @@ ConstantEvaluator::time_function(std::string_view name, const std::vector<Consta
     return time;
 }
 
-std::optional<Constant> ConstantEvaluator::explicit_conversion(const Constant& constant,
-                                                               const sema::Type& from,
-                                                               const sema::Type& to) const {
+std::optional<Constant> ConstantFolder::explicit_conversion(const Constant& constant,
+                                                            const sema::Type& from,
+                                                            const sema::Type& to) const {
     const sema::Type& target = types_.unranged(to);
     const bool from_time = sema::is_time_like(from);
     const bool to_time = sema::is_time_like(target);

@@ -1,7 +1,7 @@
 // The constant the typing stage records for an expression (TypedProgram::constant_of), and
 // what the stages after it ask of it.
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "expression_typer.hpp"
 
@@ -79,8 +79,7 @@ bool same_number(const Constant& a, const Constant& b) {
     return number(a) && number(a) == number(b);
 }
 
-const ast::VariableDeclaration*
-ConstantEvaluator::constant(const ast::Expression& expression) const {
+const ast::VariableDeclaration* ConstantFolder::constant(const ast::Expression& expression) const {
     const auto* name = std::get_if<ast::NameExpression>(&expression.node);
     const sema::Symbol* symbol = name != nullptr ? types_.model().resolved(name->name) : nullptr;
     if (symbol == nullptr || symbol->kind != sema::SymbolKind::Variable ||
@@ -98,7 +97,7 @@ ConstantEvaluator::constant(const ast::Expression& expression) const {
     return symbol->variable;
 }
 
-bool ConstantEvaluator::enter(const ast::VariableDeclaration& declaration) const {
+bool ConstantFolder::enter(const ast::VariableDeclaration& declaration) const {
     if (std::find(evaluating_.begin(), evaluating_.end(), &declaration) != evaluating_.end()) {
         return false;
     }
@@ -106,8 +105,8 @@ bool ConstantEvaluator::enter(const ast::VariableDeclaration& declaration) const
     return true;
 }
 
-const Constant* ConstantEvaluator::typed_constant(const ast::Expression& expression,
-                                                  const sema::Type* expected) const {
+const Constant* ConstantFolder::typed_constant(const ast::Expression& expression,
+                                               const sema::Type* expected) const {
     if (program_.type_of(expression) == nullptr) {
         // Its own place in the program reports its errors, when the typing pass reaches it.
         Diagnostics unreported;
@@ -116,8 +115,7 @@ const Constant* ConstantEvaluator::typed_constant(const ast::Expression& express
     return program_.constant_of(expression);
 }
 
-std::optional<std::int64_t>
-ConstantEvaluator::fold_integer(const ast::Expression& expression) const {
+std::optional<std::int64_t> ConstantFolder::fold_integer(const ast::Expression& expression) const {
     const Constant* constant = typed_constant(expression, nullptr);
     if (const auto* i = constant != nullptr ? std::get_if<std::int64_t>(constant) : nullptr) {
         return *i;
@@ -130,7 +128,7 @@ ConstantEvaluator::fold_integer(const ast::Expression& expression) const {
 }
 
 std::optional<std::uint64_t>
-ConstantEvaluator::fold_unsigned(const ast::Expression& expression) const {
+ConstantFolder::fold_unsigned(const ast::Expression& expression) const {
     const Constant* constant = typed_constant(expression, nullptr);
     if (const auto* i = constant != nullptr ? std::get_if<std::int64_t>(constant) : nullptr) {
         return static_cast<std::uint64_t>(*i);
@@ -139,7 +137,7 @@ ConstantEvaluator::fold_unsigned(const ast::Expression& expression) const {
     return u != nullptr ? std::optional(*u) : std::nullopt;
 }
 
-const ast::Literal* ConstantEvaluator::literal(const ast::Expression& expression) const {
+const ast::Literal* ConstantFolder::literal(const ast::Expression& expression) const {
     if (const auto* literal = std::get_if<ast::LiteralExpression>(&expression.node)) {
         return &literal->value;
     }
@@ -149,16 +147,15 @@ const ast::Literal* ConstantEvaluator::literal(const ast::Expression& expression
                : nullptr;
 }
 
-std::optional<Constant> ConstantEvaluator::typed_as(const ast::Expression& expression,
-                                                    const sema::Type& type) const {
+std::optional<Constant> ConstantFolder::typed_as(const ast::Expression& expression,
+                                                 const sema::Type& type) const {
     const Constant* constant = program_.constant_of(expression);
     const sema::Type* from = program_.type_of(expression);
     return constant != nullptr && from != nullptr ? convert(*constant, types_.unranged(*from), type)
                                                   : std::nullopt;
 }
 
-bool ConstantEvaluator::typed_fits(const ast::Expression& expression,
-                                   const sema::Type& type) const {
+bool ConstantFolder::typed_fits(const ast::Expression& expression, const sema::Type& type) const {
     const Constant* constant = program_.constant_of(expression);
     const sema::Type* from = program_.type_of(expression);
     const auto into = constant != nullptr && from != nullptr
@@ -167,8 +164,8 @@ bool ConstantEvaluator::typed_fits(const ast::Expression& expression,
     return into && same_number(*into, *constant);
 }
 
-std::optional<Constant> ConstantEvaluator::value(const ast::Expression& expression,
-                                                 const sema::Type& type) const {
+std::optional<Constant> ConstantFolder::value(const ast::Expression& expression,
+                                              const sema::Type& type) const {
     if (const sema::Symbol* value = types_.model().enum_value(expression)) {
         return as_constant(types_.enumerator(*value));
     }

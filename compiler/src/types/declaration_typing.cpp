@@ -1,7 +1,7 @@
 // Declarations typed: a POU's sections, TYPE declarations, STRUCT members, and every initial
 // value checked against its variable's type and folded as the image holds it (ed. 3, 6.5.1.3).
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "expression_typer.hpp"
 #include "initial_constant.hpp"

@@ -5,7 +5,7 @@
 
 #include "expression_typer.hpp"
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>

@@ -50,7 +50,7 @@ std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) 
 std::variant<std::vector<std::uint8_t>, ConstantRefusal>
 constant_bytes(const ast::Expression& expression, const sema::Type& type,
                const TypedProgram& program) {
-    const ConstantEvaluator& constants = program.constants();
+    const ConstantFolder& constants = program.constants();
     const ConstantRefusal not_constant{
         DiagnosticCode::E0313, fmt::format("the initial value must be a constant {}", type.name)};
     const auto or_refused = [&](std::optional<std::vector<std::uint8_t>> bytes)

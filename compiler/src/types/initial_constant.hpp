@@ -5,7 +5,7 @@
 // function for both stages that need it: the typing stage reports what it refuses
 // (types/declaration_typing.cpp), code generation writes the bytes (codegen/initial_values.cpp).
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "eposp/compiler/diagnostic_code.hpp"
 
 #include <cstdint>

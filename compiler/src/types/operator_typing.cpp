@@ -1,7 +1,7 @@
 // Operators typed (table 71): operands brought to their common type by the widening of figure
 // 11, time and date arithmetic (table 30), the operator's own rules.
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "expression_typer.hpp"
 
 #include <fmt/format.h>

@@ -1,7 +1,7 @@
 // The standard functions of IEC 61131-3 ed. 3, tables 22-36, typed by the ANY_* signature of their
 // family in the manifest (vm/stdlib/manifest.hpp).
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "expression_typer.hpp"

@@ -1,7 +1,7 @@
 // Statements typed (ed. 3, 7.3.3): assignments, calls, conditions, CASE selectors and labels,
 // FOR bounds.
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "eposp/compiler/sema/symbol.hpp"
 #include "expression_typer.hpp"
 
@@ -17,7 +17,7 @@ void ExpressionTyper::statements(const ast::StatementList& list) {
 
 void ExpressionTyper::case_label_constant(const ast::CaseLabel& label, const sema::Type& selector) {
     // As code generation folds them: a ULINT or LWORD selector's labels as unsigned numbers.
-    const ConstantEvaluator& constants = program_.constants();
+    const ConstantFolder& constants = program_.constants();
     const bool unsigned64 = sema::scalar_of(selector) == vm::Scalar::U64;
     const auto folds = [&](const ast::ExpressionPtr& bound, bool as_unsigned) {
         return !bound || (as_unsigned ? constants.fold_unsigned(*bound).has_value()

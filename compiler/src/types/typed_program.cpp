@@ -1,6 +1,6 @@
 #include "eposp/compiler/types/typed_program.hpp"
 
-#include "constant_evaluator.hpp"
+#include "constant_folder.hpp"
 #include "expression_typer.hpp"
 
 #include <unordered_set>
@@ -12,8 +12,8 @@ TypedProgram::TypedProgram(const sema::SemanticModel& model,
                            std::function<bool(const ast::VariableDeclaration&)> is_constant,
                            Diagnostics& diagnostics)
     : model_(model), library_(library), is_constant_(is_constant),
-      evaluator_(std::make_unique<ConstantEvaluator>(*this, types_)),
-      types_(model, diagnostics, std::move(library), std::move(is_constant), *evaluator_) {}
+      folder_(std::make_unique<ConstantFolder>(*this, types_)),
+      types_(model, diagnostics, std::move(library), std::move(is_constant), *folder_) {}
 
 TypedProgram::~TypedProgram() = default;
 

@@ -511,8 +511,8 @@ END_PROGRAM
               nullptr);
 }
 
-// An initial value the walk of constant_evaluator.cpp does not fold takes the typing stage's
-// constant: these were refused (E0313) before the real functions and table 30 were folded.
+// An initial value takes the constant the typing stage folds: these were refused (E0313)
+// before the real functions and table 30 were folded.
 TEST(ConstantExpressionsOf, InitialValuesTakeTheFoldedConstants) {
     StProgram run(R"(
 PROGRAM Main

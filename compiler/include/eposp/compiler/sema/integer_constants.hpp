@@ -2,7 +2,7 @@
 
 // What the type table asks of constant integer expressions (array and subrange bounds, string
 // lengths, enumeration values), and what the later stages ask through it. The typing stage's
-// constant folder (types/constant_evaluator.hpp) answers: a constant needs its declared type
+// constant folder (types/constant_folder.hpp) answers: a constant needs its declared type
 // and a type its constants, so the table, which comes first, names the question here and the
 // typing stage that owns both hands it the answer.
 

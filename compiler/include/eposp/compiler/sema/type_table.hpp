@@ -17,8 +17,8 @@ namespace eposp::compiler::sema {
 /// Owns every type of a program and gives each declaration its type and layout (IEC 61131-3
 /// ed. 3, 6.4): elementary, STRING[n] and REF_TO types are interned, so two of them are the
 /// same type exactly when they are the same object. Constant expressions in types (array
-/// bounds, string lengths, enumeration values) are the typing stage's constant evaluator's
-/// (types/constant_evaluator.cpp), which the table is handed as `constants`.
+/// bounds, string lengths, enumeration values) are the typing stage's constant folder's
+/// (types/constant_folder.hpp), which the table is handed as `constants`.
 class TypeTable {
 public:
     /// `library` finds the POU implementing a standard FB (`TON`) in the built-in library;

@@ -25,7 +25,7 @@
 
 namespace eposp::compiler::types {
 
-class ConstantEvaluator;
+class ConstantFolder;
 
 /// A folded constant: BOOL, a signed or unsigned integer (also bit strings, TIME and dates in
 /// ns, enumeration values), a real number, a STRING's characters (Latin-1 bytes) or a WSTRING's
@@ -114,8 +114,8 @@ public:
     const ast::Pou* library_pou(std::string_view name) const { return library_(name); }
     sema::TypeTable& types() { return types_; }
     const sema::TypeTable& types() const { return types_; }
-    /// The one folder of constant expressions (types/constant_evaluator.hpp).
-    const ConstantEvaluator& constants() const { return *evaluator_; }
+    /// The one folder of constant expressions (types/constant_folder.hpp).
+    const ConstantFolder& constants() const { return *folder_; }
 
     // Construction, used by the typing pass.
     void set_type(const ast::Expression& expression, const sema::Type& type);
@@ -132,7 +132,7 @@ private:
     std::function<bool(const ast::VariableDeclaration&)> is_constant_;
     // Before types_, which it is handed: the folder asks the table for constants' types and
     // the table asks it for bounds.
-    std::unique_ptr<ConstantEvaluator> evaluator_;
+    std::unique_ptr<ConstantFolder> folder_;
     sema::TypeTable types_;
     sema::NodeMap<ast::Expression, sema::Type> types_of_;
     sema::NodeMap<ast::Expression, sema::Type> operands_of_;

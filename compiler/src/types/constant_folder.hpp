@@ -21,11 +21,11 @@ namespace eposp::compiler::types {
 /// Whether two integer constants are the same number, each held signed or unsigned.
 bool same_number(const Constant& a, const Constant& b);
 
-class ConstantEvaluator final : public sema::IntegerConstants {
+class ConstantFolder final : public sema::IntegerConstants {
 public:
     /// `program` gives the types and constants of what it has typed, and takes those typed
     /// on demand; `types` may be still under construction: it is used only when asked.
-    ConstantEvaluator(TypedProgram& program, sema::TypeTable& types)
+    ConstantFolder(TypedProgram& program, sema::TypeTable& types)
         : program_(program), types_(types) {}
 
     /// The constant of `expression` as a signed number (a ULINT above LINT's range is none),
