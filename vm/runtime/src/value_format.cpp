@@ -1,7 +1,7 @@
 #include "eposp/vm/value_format.hpp"
 
 #include "eposp/vm/stdlib/string_layout.hpp"
-#include "stdlib/value_text.hpp"
+#include "eposp/vm/stdlib/value_text.hpp"
 
 #include <algorithm>
 #include <cstring>

@@ -36,8 +36,7 @@ struct Names {
     using CharacterCode = std::conditional_t<kWide, std::uint16_t, std::uint8_t>;
 };
 
-// Lexicographic order of the character codes as unsigned numbers, as CODESYS compares
-// (char_traits compares char as unsigned char and char16_t as an unsigned 16-bit code).
+// EQ_STRING ... GE_WSTRING: whether the texts' order (text_order) `holds`.
 template <typename Char>
 void add_comparison(NativeRegistry& registry, Operation operation,
                     bool (*holds)(std::strong_ordering)) {
@@ -49,7 +48,7 @@ void add_comparison(NativeRegistry& registry, Operation operation,
             }
             const StringParameter<Char> b(args, 1);
             if (b) {
-                args.set_result(static_cast<std::uint8_t>(holds(a.view().compare(b.view()) <=> 0)));
+                args.set_result(static_cast<std::uint8_t>(holds(text_order(a.view(), b.view()))));
             }
         });
 }
@@ -142,7 +141,7 @@ void register_functions_of(NativeRegistry& registry) {
         }
     });
     // Table 22: CHAR_TO_STRING(dst, c) is the string of that one character, STRING_TO_CHAR(s)
-    // its first character, or 0 when it is empty (as CODESYS); the same for WCHAR and WSTRING.
+    // its first character (first_character); the same for WCHAR and WSTRING.
     add_standard(registry, to_text_binding(N::kCharacter, kWidthOf<Char>), [](NativeArgs& args) {
         const auto character = static_cast<Char>(args.get<typename N::CharacterCode>(1));
         store_text(args, 0, View{&character, 1});
@@ -150,7 +149,7 @@ void register_functions_of(NativeRegistry& registry) {
     add_standard(registry, from_text_binding(N::kCharacter, kWidthOf<Char>), [](NativeArgs& args) {
         if (const StringParameter<Char> text(args, 0); text) {
             using Code = typename N::CharacterCode;
-            args.set_result(text.view().empty() ? Code{0} : static_cast<Code>(text.view()[0]));
+            args.set_result(static_cast<Code>(first_character(text.view())));
         }
     });
     using Op = Operation;

@@ -1,7 +1,7 @@
 // The conversions between WSTRING and STRING (the other string functions are shared,
-// string_functions.cpp). STRING characters are Latin-1 (CODESYS's default code page); a UTF-16
-// unit above 255 has no STRING character and becomes '?', as in CODESYS's WSTRING_TO_STRING.
+// string_functions.cpp), character by character as text_functions.hpp converts one.
 
+#include "eposp/vm/stdlib/text_functions.hpp"
 #include "library_parts.hpp"
 #include "string_arguments.hpp"
 
@@ -15,7 +15,7 @@ void register_wstring_functions(NativeRegistry& registry) {
         }
         TextBuffer<char> text;
         for (const char16_t unit : source.view()) {
-            const char c = unit <= 0xFF ? static_cast<char>(unit) : '?';
+            const char c = narrow_character(unit);
             text.append({&c, 1});
         }
         store_string(args, 0, text.view());
@@ -27,7 +27,7 @@ void register_wstring_functions(NativeRegistry& registry) {
         }
         TextBuffer<char16_t> units;
         for (const char c : *source) {
-            const auto unit = static_cast<char16_t>(static_cast<unsigned char>(c));
+            const char16_t unit = wide_character(c);
             units.append({&unit, 1});
         }
         store_text(args, 0, units.view());

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <compare>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -94,6 +95,32 @@ std::int32_t find_in(Text<Char> haystack, Text<Char> needle) {
     }
     const auto at = haystack.find(needle);
     return at == Text<Char>::npos ? 0 : static_cast<std::int32_t>(at + 1);
+}
+
+/// The order EQ_STRING, LT_STRING... compare texts in: lexicographic on the character codes as
+/// unsigned numbers, as CODESYS compares (char_traits compares char as unsigned char and
+/// char16_t as an unsigned 16-bit code).
+template <typename Char>
+std::strong_ordering text_order(Text<Char> a, Text<Char> b) {
+    return a.compare(b) <=> 0;
+}
+
+/// STRING_TO_CHAR(IN), WSTRING_TO_WCHAR: the code of the first character, 0 when there is none
+/// (as CODESYS).
+template <typename Char>
+Char first_character(Text<Char> text) {
+    return text.empty() ? Char{0} : text.front();
+}
+
+/// WSTRING_TO_STRING of one UTF-16 unit: STRING characters are Latin-1 (CODESYS's default code
+/// page), a unit above 255 has none and becomes '?', as in CODESYS.
+inline char narrow_character(char16_t unit) {
+    return unit <= 0xFF ? static_cast<char>(unit) : '?';
+}
+
+/// STRING_TO_WSTRING of one Latin-1 character.
+inline char16_t wide_character(char c) {
+    return static_cast<char16_t>(static_cast<unsigned char>(c));
 }
 
 } // namespace eposp::vm::stdlib

@@ -1,4 +1,4 @@
-#include "value_text.hpp"
+#include "eposp/vm/stdlib/value_text.hpp"
 
 #include "eposp/vm/stdlib/duration_fraction.hpp"
 #include "eposp/vm/stdlib/time_units.hpp"
@@ -381,6 +381,57 @@ std::int64_t parse_date_and_time(std::string_view text) {
     }
     const auto time = read_time_of_day(c);
     return time ? to_ns(*days, *time).value_or(0) : 0;
+}
+
+std::optional<TextForm> text_form(NativeType type) {
+    for (const TypeTextForm& entry : kTextForms) {
+        if (entry.type == type) {
+            return entry.form;
+        }
+    }
+    return std::nullopt;
+}
+
+void format_value(ValueText& out, TextForm form, std::int64_t value) {
+    switch (form) {
+    case TextForm::Bool:
+        out.append(value != 0 ? "TRUE" : "FALSE");
+        return;
+    case TextForm::Signed:
+        return format_signed(out, value);
+    case TextForm::Unsigned:
+        return format_unsigned(out, static_cast<std::uint64_t>(value));
+    case TextForm::Real: // format_real's
+        return;
+    case TextForm::Time:
+        return format_duration(out, value, "T#");
+    case TextForm::LongTime:
+        return format_duration(out, value, "LTIME#");
+    case TextForm::Date:
+        return format_date(out, value);
+    case TextForm::TimeOfDay:
+        return format_time_of_day(out, value);
+    case TextForm::DateAndTime:
+        return format_date_and_time(out, value);
+    }
+}
+
+std::int64_t parse_value(std::string_view text, TextForm form) {
+    switch (form) {
+    case TextForm::Bool:
+        return parse_bool(text) ? 1 : 0;
+    case TextForm::Time:
+    case TextForm::LongTime:
+        return parse_duration(text);
+    case TextForm::Date:
+        return parse_date(text);
+    case TextForm::TimeOfDay:
+        return parse_time_of_day(text);
+    case TextForm::DateAndTime:
+        return parse_date_and_time(text);
+    default:
+        return parse_integer(text);
+    }
 }
 
 } // namespace eposp::vm::stdlib

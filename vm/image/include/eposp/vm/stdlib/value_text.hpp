@@ -2,13 +2,53 @@
 
 // The text forms of elementary values for *_TO_STRING and STRING_TO_*: what CODESYS prints, and
 // what it reads back (IEC 61131-3 literal syntax, 6.3). Formatting writes into a fixed buffer,
-// so conversions never allocate.
+// so conversions never allocate. The VM's natives (string_conversions.cpp) and the compiler's
+// constant folder both convert with these.
+
+#include "eposp/vm/native_type.hpp"
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 namespace eposp::vm::stdlib {
+
+/// How a value of an elementary type is written and read as text.
+enum class TextForm : std::uint8_t {
+    Bool,
+    Signed,
+    Unsigned,
+    Real,
+    Time,
+    LongTime,
+    Date,
+    TimeOfDay,
+    DateAndTime
+};
+
+struct TypeTextForm {
+    NativeType type;
+    TextForm form;
+};
+
+/// The types that convert to and from STRING (table 22), each with its form. BYTE..LWORD print
+/// in decimal, as CODESYS's BYTE_TO_STRING does.
+inline constexpr TypeTextForm kTextForms[] = {
+    {NativeType::Bool, TextForm::Bool},           {NativeType::Sint, TextForm::Signed},
+    {NativeType::Int, TextForm::Signed},          {NativeType::Dint, TextForm::Signed},
+    {NativeType::Lint, TextForm::Signed},         {NativeType::Usint, TextForm::Unsigned},
+    {NativeType::Uint, TextForm::Unsigned},       {NativeType::Udint, TextForm::Unsigned},
+    {NativeType::Ulint, TextForm::Unsigned},      {NativeType::Byte, TextForm::Unsigned},
+    {NativeType::Word, TextForm::Unsigned},       {NativeType::Dword, TextForm::Unsigned},
+    {NativeType::Lword, TextForm::Unsigned},      {NativeType::Real, TextForm::Real},
+    {NativeType::Lreal, TextForm::Real},          {NativeType::Time, TextForm::Time},
+    {NativeType::Ltime, TextForm::LongTime},      {NativeType::Date, TextForm::Date},
+    {NativeType::TimeOfDay, TextForm::TimeOfDay}, {NativeType::DateAndTime, TextForm::DateAndTime},
+};
+
+/// The form of `type`; none for a type that has no conversion to STRING.
+std::optional<TextForm> text_form(NativeType type);
 
 /// Enough for any value's text: the longest is an LTIME of 292 years in every unit.
 class ValueText {
@@ -21,6 +61,13 @@ private:
     std::array<char, 64> chars_{};
     std::size_t size_ = 0;
 };
+
+/// <TYPE>_TO_STRING of a value of `form`, any but Real (format_real): a BOOL as 0 or 1, an
+/// integer sign- or zero-extended to 64 bits as its type is signed or not, a time in ns.
+void format_value(ValueText& out, TextForm form, std::int64_t value);
+/// STRING_TO_<TYPE> of a `form` other than Real (parse_real): the value as 64 bits, which the
+/// conversion then cuts to the type's width.
+std::int64_t parse_value(std::string_view text, TextForm form);
 
 void format_signed(ValueText& out, std::int64_t value);
 void format_unsigned(ValueText& out, std::uint64_t value);
