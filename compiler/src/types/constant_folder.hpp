@@ -34,8 +34,8 @@ public:
     /// The same as 64 bits, a negative number as its two's complement (the CASE labels of a
     /// ULINT or LWORD selector).
     std::optional<std::uint64_t> fold_unsigned(const ast::Expression& expression) const;
-    /// The literal an expression is or a CONSTANT names (a CHAR's, a WCHAR's, NULL): what an
-    /// initial value of a character or a reference takes.
+    /// The literal an expression is or a CONSTANT names (NULL): what an initial value of a
+    /// reference takes.
     const ast::Literal* literal(const ast::Expression& expression) const;
 
     /// The constant of an expression of `type` as the typing stage records it, bottom up from
@@ -144,9 +144,13 @@ private:
                                           const std::vector<const sema::Type*>& types,
                                           const sema::Type& result) const;
     /// A conversion `from` -> `to` (table 22) as code generation's explicit_convert: convert()
-    /// and to and from the times (TIME_TO_DINT, DINT_TO_TIME, DT_TO_DATE).
+    /// and to and from the times (TIME_TO_DINT, DINT_TO_TIME, DT_TO_DATE) and the texts.
     std::optional<Constant> explicit_conversion(const Constant& constant, const sema::Type& from,
                                                 const sema::Type& to) const;
+    /// A conversion to or from a STRING or WSTRING: INT_TO_STRING, STRING_TO_REAL,
+    /// CHAR_TO_STRING, STRING_TO_WSTRING... (constant_text_conversions.cpp).
+    std::optional<Constant> text_conversion(const Constant& constant, const sema::Type& from,
+                                            const sema::Type& to) const;
     /// LOWER_BOUND or UPPER_BOUND of an array of fixed bounds (constant_array_bounds.cpp).
     std::optional<Constant> bound_value(const ast::CallExpression& node, bool upper) const;
     /// LEN, LEFT ... FIND of `values` (the texts, then the lengths and positions), a value of

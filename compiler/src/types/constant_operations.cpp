@@ -7,6 +7,7 @@
 #include "constant_folder.hpp"
 #include "eposp/compiler/ascii_case.hpp"
 #include "eposp/vm/stdlib/manifest.hpp"
+#include "eposp/vm/stdlib/text_functions.hpp"
 #include "eposp/vm/value_semantics.hpp"
 #include "expression_typer.hpp"
 
@@ -169,9 +170,34 @@ std::optional<Constant> binary_in(ast::BinaryOperator op, T l, T r) {
     }
 }
 
+/// A comparison of two texts of one kind (EQ_STRING, LT_WSTRING...): their order
+/// (vm/stdlib/text_functions.hpp) compared with 0.
+std::optional<Constant> text_comparison(ast::BinaryOperator op, const Constant& left,
+                                        const Constant& right) {
+    return std::visit(
+        [op](const auto& l, const auto& r) -> std::optional<Constant> {
+            using L = std::decay_t<decltype(l)>;
+            if constexpr (!std::is_same_v<L, std::decay_t<decltype(r)>> ||
+                          (!std::is_same_v<L, std::string> && !std::is_same_v<L, std::u16string>)) {
+                return std::nullopt;
+            } else {
+                using Char = typename L::value_type;
+                const std::strong_ordering order = vm::stdlib::text_order<Char>(l, r);
+                const std::int32_t sign = order < 0 ? -1 : order > 0 ? 1 : 0;
+                return op >= ast::BinaryOperator::Less && op <= ast::BinaryOperator::NotEqual
+                           ? binary_in<std::int32_t>(op, sign, 0)
+                           : std::nullopt;
+            }
+        },
+        left, right);
+}
+
 /// A binary operation on two constants of `type`'s values.
 std::optional<Constant> binary_constant(ast::BinaryOperator op, const Constant& left,
                                         const Constant& right, const sema::Type& type) {
+    if (type.kind == sema::TypeKind::String) {
+        return text_comparison(op, left, right);
+    }
     return with_scalar(sema::scalar_of(type), [&](auto tag) -> std::optional<Constant> {
         using T = typename decltype(tag)::type;
         const auto l = scalar_value<T>(left);
@@ -444,10 +470,18 @@ std::optional<Constant> ConstantFolder::call_value(const ast::Expression& expres
     }
     const sema::Type& operand = *target->operand;
     if (target->kind == CallKind::Conversion) {
-        const auto source = convert(values[0], *types[0], operand);
+        // A text is converted as it is, of its own type, not cut to the STRING[80] of
+        // STRING_TO_INT's input (codegen's conversion() passes it at its own capacity).
+        const bool whole_text = types[0]->kind == sema::TypeKind::String &&
+                                operand.kind == sema::TypeKind::String &&
+                                types[0]->wide == operand.wide;
+        const auto source =
+            whole_text ? std::optional(values[0]) : convert(values[0], *types[0], operand);
         if (!source || target->name != "TRUNC") {
             // constant_time_operations.cpp: TIME_TO_DINT, DINT_TO_TIME, DT_TO_DATE...
-            return source ? explicit_conversion(*source, operand, *target->result) : std::nullopt;
+            return source ? explicit_conversion(*source, whole_text ? *types[0] : operand,
+                                                *target->result)
+                          : std::nullopt;
         }
         // TRUNC as code generation computes it: toward zero into LINT, then through LREAL
         // into DINT, saturating.

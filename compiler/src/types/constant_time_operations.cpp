@@ -107,6 +107,9 @@ std::optional<Constant> ConstantFolder::explicit_conversion(const Constant& cons
                                                             const sema::Type& from,
                                                             const sema::Type& to) const {
     const sema::Type& target = types_.unranged(to);
+    if (from.kind == sema::TypeKind::String || target.kind == sema::TypeKind::String) {
+        return text_conversion(constant, from, target); // constant_text_conversions.cpp
+    }
     const bool from_time = sema::is_time_like(from);
     const bool to_time = sema::is_time_like(target);
     if (!from_time && !to_time) {

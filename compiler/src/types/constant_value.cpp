@@ -46,8 +46,11 @@ std::optional<Constant> literal_value(const ast::Literal& literal, const sema::T
                 if (text != nullptr) {
                     return *text;
                 }
-                // A WSTRING's units; a WCHAR's code is left to run time.
+                // A WSTRING's units; a WCHAR is its unit's code.
                 const auto* wide = std::get_if<std::u16string>(&value.value);
+                if (wide != nullptr && value.type == ast::ElementaryType::Wchar) {
+                    return static_cast<std::uint64_t>(wide->empty() ? 0 : wide->front());
+                }
                 return wide != nullptr && value.type == ast::ElementaryType::Wstring
                            ? std::optional<Constant>(*wide)
                            : std::nullopt;

@@ -19,23 +19,6 @@ std::vector<std::uint8_t> bytes_of(T value) {
     return bytes;
 }
 
-std::optional<std::vector<std::uint8_t>> character_bytes(const ast::Literal* literal,
-                                                         const sema::Type& type) {
-    const auto* text = literal != nullptr ? std::get_if<ast::StringLiteral>(literal) : nullptr;
-    if (text == nullptr) {
-        return std::nullopt;
-    }
-    // CHAR#'A' / WCHAR#"A": the one character's code (the decoder checked the length).
-    if (text->type != type.elementary) {
-        return std::nullopt;
-    }
-    const std::int64_t code =
-        type.elementary == ast::ElementaryType::Char
-            ? static_cast<std::uint8_t>(std::get<std::string>(text->value).front())
-            : std::int64_t{std::get<std::u16string>(text->value).front()};
-    return integer_bytes(code, type.size);
-}
-
 } // namespace
 
 std::vector<std::uint8_t> integer_bytes(std::int64_t value, std::uint32_t size) {
@@ -70,10 +53,6 @@ constant_bytes(const ast::Expression& expression, const sema::Type& type,
             narrow != nullptr ? std::optional(vm::stdlib::string_image(type.capacity, *narrow))
             : wide != nullptr ? std::optional(vm::stdlib::wstring_image(type.capacity, *wide))
                               : std::nullopt);
-    }
-    if (type.elementary == ast::ElementaryType::Char ||
-        type.elementary == ast::ElementaryType::Wchar) {
-        return or_refused(character_bytes(constants.literal(expression), type));
     }
     if (type.kind == sema::TypeKind::Reference) {
         const ast::Literal* literal = constants.literal(expression);

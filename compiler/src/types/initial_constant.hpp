@@ -25,8 +25,7 @@ struct ConstantRefusal {
 /// The bytes of `expression`, typed as a value of `type`, as the image holds it: the constant
 /// the typing stage recorded for it (TypedProgram::constant_of) stored into `type` (E0313 where
 /// there is none; E0311 for an integer that does not fit, or that an operation wrapped), a text
-/// cut at the capacity; a CHAR, a WCHAR or NULL from its literal, the literal's or the
-/// CONSTANT's that it names.
+/// cut at the capacity; NULL from its literal, the literal's or the CONSTANT's that it names.
 std::variant<std::vector<std::uint8_t>, ConstantRefusal>
 constant_bytes(const ast::Expression& expression, const sema::Type& type,
                const TypedProgram& program);
