@@ -116,32 +116,26 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     }
     const bool from_string = from.kind == sema::TypeKind::String;
     const bool to_string = want.kind == sema::TypeKind::String;
-    if (from_string || to_string) {
-        if (from_string && to_string) {
-            const Operand result = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
-                                           dest->type->wide == want.wide
-                                       ? dest->operand
-                                       : temp(want);
-            const sema::Type& target =
-                dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
-            const auto native = vm::stdlib::text_width_binding(sema::char_width(want));
-            call_native(native.name, native.signature, {Value{result, &target}, value});
-            return Value{result, &target};
-        }
-        // Table 22 (types/call_typing.cpp): a WSTRING to and from WCHAR only, a STRING to and
-        // from every other elementary type.
-        if (to_string) {
-            const Operand result = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
-                                           dest->type->wide == want.wide
-                                       ? dest->operand
-                                       : temp(want);
-            const sema::Type& target =
-                dest != nullptr && result.raw == dest->operand.raw ? *dest->type : want;
-            const auto native =
-                vm::stdlib::to_text_binding(sema::native_type(from), sema::char_width(want));
-            call_native(native.name, native.signature, {Value{result, &target}, value});
-            return Value{result, &target};
-        }
+    if (to_string) {
+        // Made straight in a text destination only where that holds no more than the typed
+        // result: `s200 := TO_STRING(s100)` is the STRING[80] it is typed, cut at 80 characters.
+        const bool in_destination = dest != nullptr && dest->type->kind == sema::TypeKind::String &&
+                                    dest->type->wide == want.wide &&
+                                    dest->type->capacity <= want.capacity;
+        const Operand result = in_destination ? dest->operand : temp(want);
+        const sema::Type& target = in_destination ? *dest->type : want;
+        // Table 22 (types/call_typing.cpp): a text of the same width is assigned (TO_STRING of a
+        // STRING[10]), one of the other width converted character by character; a WSTRING
+        // comes from WCHAR only, a STRING from every other elementary type.
+        const auto native =
+            !from_string
+                ? vm::stdlib::to_text_binding(sema::native_type(from), sema::char_width(want))
+            : from.wide == want.wide ? vm::stdlib::text_assignment_binding(sema::char_width(want))
+                                     : vm::stdlib::text_width_binding(sema::char_width(want));
+        call_native(native.name, native.signature, {Value{result, &target}, value});
+        return Value{result, &target};
+    }
+    if (from_string) {
         const auto native =
             vm::stdlib::from_text_binding(sema::native_type(want), sema::char_width(from));
         call_native(native.name, native.signature, {value});

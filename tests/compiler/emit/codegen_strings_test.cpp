@@ -176,5 +176,49 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::uint16_t>("Main.wfirst"), 0x20AC);
 }
 
+// A text converted to its own width is assigned, cut at the capacity it goes to: these called
+// the other width's conversion, which read a STRING as a WSTRING ('?c' for 'abc').
+TEST(Wstrings, ConversionToTheSameWidthIsAnAssignment) {
+    StProgram run(R"(
+PROGRAM Main
+VAR
+  s : STRING[10] := 'abc'; w : WSTRING[10] := "d€f";
+  whole, same : STRING; cut : STRING[2]; wide : WSTRING; wcut : WSTRING[2];
+END_VAR
+whole := TO_STRING(s);
+same := STRING_TO_STRING(s);
+cut := TO_STRING(s);
+wide := TO_WSTRING(w);
+wcut := WSTRING_TO_WSTRING(w);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get_string("Main.whole"), "abc");
+    EXPECT_EQ(run.get_string("Main.same"), "abc");
+    EXPECT_EQ(run.get_string("Main.cut"), "ab");
+    EXPECT_EQ(run.get_wstring("Main.wide"), u"d€f");
+    EXPECT_EQ(run.get_wstring("Main.wcut"), u"d€");
+}
+
+// A conversion's result is the STRING[80] or WSTRING[80] it is typed, also when stored straight
+// into a longer text: these kept all 90 characters of s100.
+TEST(Wstrings, AConversionIntoALongerTextIsCutAtItsOwnCapacity) {
+    StProgram run(R"(
+PROGRAM Main
+VAR
+  s100 : STRING[100]; s200 : STRING[200]; w100 : WSTRING[100];
+END_VAR
+s100 := '123456789012345678901234567890123456789012345678901234567890123456789012345678901234567890';
+s200 := TO_STRING(s100);
+w100 := STRING_TO_WSTRING(s100);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    ASSERT_TRUE(run.scans(1)) << run.fault();
+    EXPECT_EQ(run.get_string("Main.s200").size(), 80U);
+    EXPECT_EQ(run.get_wstring("Main.w100").size(), 80U);
+}
+
 } // namespace
 } // namespace eposp::compiler::test
