@@ -86,16 +86,15 @@ std::optional<Constant> ConstantFolder::text_conversion(const Constant& constant
     const auto* narrow = std::get_if<std::string>(&constant);
     const auto* wide = std::get_if<std::u16string>(&constant);
     if (to.kind == sema::TypeKind::String) {
-        // Cut at the result's capacity (STRING[80]) where it is not stored into its destination
-        // at once, at the destination's where it is: a text longer than that is left to run time.
+        // Only a text that fits the result's capacity (STRING[80]) is folded; a longer one, which
+        // the VM cuts at that capacity (codegen's explicit_convert), is left to run time.
         const auto fitting = [&to](auto text) -> std::optional<Constant> {
             return text.size() <= to.capacity ? std::optional<Constant>(std::move(text))
                                               : std::nullopt;
         };
         if (from.kind == sema::TypeKind::String) {
-            // A text of the type asked for is itself. Code generation calls WSTRING_TO_STRING
-            // for a STRING converted to a STRING of another capacity, which reads it as a
-            // WSTRING: left to run time.
+            // A text of the type asked for is itself; one of the same width and another
+            // capacity (assigned by ASSIGN_STRING at run time) is not folded.
             if (from.wide == to.wide) {
                 return &from == &to ? std::optional(constant) : std::nullopt;
             }
