@@ -71,18 +71,22 @@ INSTANTIATE_TEST_SUITE_P(
 
 INSTANTIATE_TEST_SUITE_P(
     TimesAndDates, ToString,
-    ::testing::Values(ToStringCase{"TIME_TO_STRING", value((3600 + 120 + 3) * kS + 4 * kMs),
-                                   "T#1h2m3s4ms"},
-                      ToStringCase{"TIME_TO_STRING", value(std::int64_t{0}), "T#0ms"},
-                      ToStringCase{"TIME_TO_STRING", value(-1500 * kMs), "T#-1s500ms"},
-                      ToStringCase{"TIME_TO_STRING", value(kDay + 1), "T#1d1ns"},
-                      ToStringCase{"LTIME_TO_STRING", value(2 * kS + 3'000), "LTIME#2s3us"},
-                      ToStringCase{"DATE_TO_STRING", value(kDate20240131), "D#2024-01-31"},
-                      ToStringCase{"DATE_TO_STRING", value(-kDay), "D#1969-12-31"},
-                      ToStringCase{"TOD_TO_STRING", value(kTod123456789), "TOD#12:34:56.789"},
-                      ToStringCase{"TOD_TO_STRING", value(std::int64_t{0}), "TOD#00:00:00"},
-                      ToStringCase{"DT_TO_STRING", value(kDate20240131 + kTod123456789),
-                                   "DT#2024-01-31-12:34:56.789"}));
+    ::testing::Values(
+        ToStringCase{"TIME_TO_STRING", value((3600 + 120 + 3) * kS + 4 * kMs), "T#1h2m3s4ms"},
+        ToStringCase{"TIME_TO_STRING", value(std::int64_t{0}), "T#0ms"},
+        ToStringCase{"TIME_TO_STRING", value(-1500 * kMs), "T#-1s500ms"},
+        ToStringCase{"TIME_TO_STRING", value(kDay + 1), "T#1d1ns"},
+        ToStringCase{"LTIME_TO_STRING", value(2 * kS + 3'000), "LTIME#2s3us"},
+        ToStringCase{"DATE_TO_STRING", value(kDate20240131), "D#2024-01-31"},
+        ToStringCase{"DATE_TO_STRING", value(-kDay), "D#1969-12-31"},
+        ToStringCase{"TOD_TO_STRING", value(kTod123456789), "TOD#12:34:56.789"},
+        ToStringCase{"TOD_TO_STRING", value(std::int64_t{0}), "TOD#00:00:00"},
+        ToStringCase{"DT_TO_STRING", value(kDate20240131 + kTod123456789),
+                     "DT#2024-01-31-12:34:56.789"},
+        ToStringCase{"LDATE_TO_STRING", value(kDate20240131), "LDATE#2024-01-31"},
+        ToStringCase{"LTIME_OF_DAY_TO_STRING", value(kTod123456789 + 1), "LTOD#12:34:56.789000001"},
+        ToStringCase{"LDATE_AND_TIME_TO_STRING", value(kDate20240131 - 1),
+                     "LDT#2024-01-30-23:59:59.999999999"}));
 
 TEST(ToString, TextIsCutAtTheDestinationCapacity) {
     StdlibCall call;
@@ -158,12 +162,27 @@ INSTANTIATE_TEST_SUITE_P(
         FromStringCase{"STRING_TO_TOD", "TIME_OF_DAY#24:00:00", 0},
         FromStringCase{"STRING_TO_DT", "DT#2024-01-31-12:34:56.789",
                        bits(kDate20240131 + kTod123456789)},
-        FromStringCase{"STRING_TO_DT", "DT#2024-01-31", 0}));
+        FromStringCase{"STRING_TO_DT", "DT#2024-01-31", 0},
+        FromStringCase{"STRING_TO_LDATE", "LDATE#2024-01-31", bits(kDate20240131)},
+        FromStringCase{"STRING_TO_LDATE", "LD#2024-01-31", bits(kDate20240131)},
+        FromStringCase{"STRING_TO_DATE", "LDATE#2024-01-31", bits(kDate20240131)},
+        FromStringCase{"STRING_TO_LTIME_OF_DAY", "LTOD#12:34:56.789", bits(kTod123456789)},
+        FromStringCase{"STRING_TO_LTIME_OF_DAY", "LTIME_OF_DAY#00:00:00.000000001", 1},
+        FromStringCase{"STRING_TO_LDATE_AND_TIME", "LDT#2024-01-31-12:34:56.789",
+                       bits(kDate20240131 + kTod123456789)},
+        FromStringCase{"STRING_TO_LDATE_AND_TIME", "LDATE_AND_TIME#1969-12-31-23:59:59.999999999",
+                       bits(std::int64_t{-1})}));
 
 TEST(FromString, EveryPrintedValueReadsBack) {
     const std::pair<const char*, std::int64_t> values[] = {
-        {"TIME", -(kDay + 7 * kMs + 3)},           {"DATE", kDate20240131}, {"TOD", kTod123456789},
-        {"DT", kDate20240131 + kTod123456789 + 1}, {"LINT", -77},
+        {"TIME", -(kDay + 7 * kMs + 3)},
+        {"DATE", kDate20240131},
+        {"TOD", kTod123456789},
+        {"DT", kDate20240131 + kTod123456789 + 1},
+        {"LINT", -77},
+        {"LDATE", -kDate20240131},
+        {"LTIME_OF_DAY", kTod123456789 + 3},
+        {"LDATE_AND_TIME", -(kDate20240131 + 11)},
     };
     for (const auto& [type, v] : values) {
         StdlibCall call;

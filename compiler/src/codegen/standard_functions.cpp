@@ -144,13 +144,14 @@ std::optional<Value> PouGenerator::explicit_convert(const Value& value, const se
     const bool from_time = sema::is_time_like(from);
     const bool to_time = sema::is_time_like(want);
     if (from_time && to_time) {
-        if (from.elementary == E::DateAndTime && want.elementary != E::DateAndTime &&
-            (want.elementary == E::Date || want.elementary == E::TimeOfDay)) {
-            const auto native = vm::stdlib::date_time_part_binding(sema::native_type(want));
-            call_native(native.name, native.signature, {value});
-            return native_result(native.signature, want, dest);
+        const sema::TimePart part = sema::time_part(from, want);
+        if (part == sema::TimePart::All) {
+            return Value{value.operand, &want}; // the same nanoseconds
         }
-        return Value{value.operand, &want}; // the same nanoseconds
+        const auto native = vm::stdlib::date_time_part_binding(
+            part == sema::TimePart::Day ? vm::NativeType::Date : vm::NativeType::TimeOfDay);
+        call_native(native.name, native.signature, {value});
+        return native_result(native.signature, want, dest);
     }
     Value source = value;
     if (from_time && sema::number_unit(from.elementary) != 1) {

@@ -96,6 +96,21 @@ bool is_time_like(const Type& type) {
     return elementary_in(type, {E::Time, E::Ltime, E::Date, E::Ldate, E::TimeOfDay, E::Ltod,
                                 E::DateAndTime, E::Ldt});
 }
+TimePart time_part(const Type& from, const Type& to) {
+    const auto is_date = [](const Type& type) {
+        return elementary_in(type, {E::Date, E::Ldate});
+    };
+    const auto is_time_of_day = [](const Type& type) {
+        return elementary_in(type, {E::TimeOfDay, E::Ltod});
+    };
+    if (is_date(to) && !is_date(from)) {
+        return TimePart::Day;
+    }
+    if (is_time_of_day(to) && !is_time_of_day(from)) {
+        return TimePart::TimeOfDay;
+    }
+    return TimePart::All;
+}
 std::int64_t number_unit(ast::ElementaryType type) {
     switch (type) {
     case E::Time:

@@ -3,7 +3,7 @@
 // text form and read back from one (vm/stdlib/value_text.hpp), a CHAR or WCHAR made a text of
 // one character and taken back as the first one, a text's characters converted one by one
 // between STRING and WSTRING (vm/stdlib/text_functions.hpp). A text result is cut at the
-// capacity of the STRING[80] or WSTRING[80] that code generation computes it into.
+// capacity of its type, as code generation's conversion cuts it (STRING[80], WSTRING[80]).
 
 #include "constant_folder.hpp"
 #include "eposp/vm/stdlib/text_functions.hpp"
@@ -86,20 +86,22 @@ std::optional<Constant> ConstantFolder::text_conversion(const Constant& constant
     const auto* narrow = std::get_if<std::string>(&constant);
     const auto* wide = std::get_if<std::u16string>(&constant);
     if (to.kind == sema::TypeKind::String) {
-        // Only a text that fits the result's capacity (STRING[80]) is folded; a longer one, which
-        // the VM cuts at that capacity (codegen's explicit_convert), is left to run time.
-        const auto fitting = [&to](auto text) -> std::optional<Constant> {
-            return text.size() <= to.capacity ? std::optional<Constant>(std::move(text))
-                                              : std::nullopt;
+        // The result is cut at its type's capacity, as code generation cuts it wherever it
+        // puts the result (also straight into a longer variable).
+        const auto cut = [&to](auto text) -> Constant {
+            if (text.size() > to.capacity) {
+                text.resize(to.capacity);
+            }
+            return text;
         };
         if (from.kind == sema::TypeKind::String) {
-            // A text of the type asked for is itself; one of the same width and another
-            // capacity (assigned by ASSIGN_STRING at run time) is not folded.
             if (from.wide == to.wide) {
-                return &from == &to ? std::optional(constant) : std::nullopt;
+                return narrow != nullptr ? std::optional(cut(*narrow))
+                       : wide != nullptr ? std::optional(cut(*wide))
+                                         : std::nullopt;
             }
-            return narrow != nullptr ? fitting(other_width<char16_t>(*narrow))
-                   : wide != nullptr ? fitting(other_width<char>(*wide))
+            return narrow != nullptr ? std::optional(cut(other_width<char16_t>(*narrow)))
+                   : wide != nullptr ? std::optional(cut(other_width<char>(*wide)))
                                      : std::nullopt;
         }
         if (is_character(from)) {
@@ -112,7 +114,7 @@ std::optional<Constant> ConstantFolder::text_conversion(const Constant& constant
                            : Constant(std::string(1, static_cast<char>(*code)));
         }
         const auto text = value_text(constant, from);
-        return text ? fitting(*text) : std::nullopt;
+        return text ? std::optional(cut(*text)) : std::nullopt;
     }
     if (is_character(to)) {
         // STRING_TO_CHAR, WSTRING_TO_WCHAR: the code of the first character, as a CHAR literal's.

@@ -116,14 +116,12 @@ std::optional<Constant> ConstantFolder::explicit_conversion(const Constant& cons
         return convert(constant, from, target);
     }
     if (from_time && to_time) {
+        // DT_TO_DATE and DT_TO_TOD's natives take the day and the time of day of any time.
         const auto ns = nanoseconds(constant);
-        if (!ns || from.elementary != E::DateAndTime) {
-            return ns; // the same nanoseconds
-        }
-        // DT_TO_DATE and DT_TO_TOD: the natives that take a DT apart.
-        return target.elementary == E::Date        ? vm::stdlib::floor_to_day(*ns)
-               : target.elementary == E::TimeOfDay ? vm::stdlib::wrap_to_day(*ns)
-                                                   : *ns;
+        const sema::TimePart part = sema::time_part(from, target);
+        return !ns || part == sema::TimePart::All ? ns
+               : part == sema::TimePart::Day      ? vm::stdlib::floor_to_day(*ns)
+                                                  : vm::stdlib::wrap_to_day(*ns);
     }
     const sema::Type& lint = types_.elementary(E::Lint);
     if (from_time) {

@@ -176,7 +176,7 @@ const std::vector<Folded> kExpressions = {
     {Kind::Signed, "TRUNC(SQRT(17.0))"},
     {Kind::Signed, "REAL_TO_DINT(LN(kR) * 1000.0)"},
     // Conversions to and from the times: TIME and TOD count in ms, DATE and DT in s, the long
-    // forms in ns; DT_TO_DATE and DT_TO_TOD take a DT apart.
+    // forms in ns; a DATE is the day and a TOD the time of day of any other time (DT_TO_DATE).
     {Kind::Signed, "TIME_TO_DINT(T#1.5s)"},
     {Kind::Signed, "TIME_TO_DINT(T#-1.5ms)"},
     {Kind::Signed, "TIME_TO_LINT(kT)"},
@@ -188,6 +188,10 @@ const std::vector<Folded> kExpressions = {
     {Kind::Signed, "DT_TO_LINT(DT#2020-01-01-10:00:00)"},
     {Kind::Signed, "DATE_TO_LINT(DT_TO_DATE(DT#2020-01-01-10:00:00))"},
     {Kind::Signed, "TOD_TO_LINT(DT_TO_TOD(DT#2020-01-01-10:00:00))"},
+    {Kind::Signed, "LTOD_TO_LINT(LDT_TO_LTOD(kLdt))"},
+    {Kind::Signed, "LDATE_TO_LINT(LDT_TO_LDATE(kLdt))"},
+    {Kind::Signed, "TOD_TO_LINT(TIME_TO_TOD(-kT))"},
+    {Kind::Signed, "DATE_TO_LINT(TOD_TO_DATE(TOD#12:00:00))"},
     {Kind::Time, "DINT_TO_TIME(1500)"},
     {Kind::Time, "TO_TIME(kI)"},
     {Kind::Time, "REAL_TO_TIME(2.5)"},
@@ -391,6 +395,10 @@ const std::vector<Folded> kExpressions = {
     {Kind::Text, "DATE_TO_STRING(D#2020-02-29)"},
     {Kind::Text, "TOD_TO_STRING(TOD#12:34:56.789)"},
     {Kind::Text, "DT_TO_STRING(DT#1969-12-31-23:59:59.5)"},
+    {Kind::Text, "LDATE_TO_STRING(LDATE#2024-01-31)"},
+    {Kind::Text, "LTOD_TO_STRING(LTOD#12:34:56.123456789)"},
+    {Kind::Text, "LDT_TO_STRING(LDT#1969-12-31-23:59:59.5)"},
+    {Kind::Text, "TO_STRING(kLdt)"},
     {Kind::Text, "TO_STRING(kI)"},
     {Kind::Text, "TO_STRING(-7)"},
     {Kind::Text, "CHAR_TO_STRING(kC)"},
@@ -438,6 +446,9 @@ const std::vector<Folded> kExpressions = {
     {Kind::Signed, "DATE_TO_LINT(STRING_TO_DATE('2020-02-30'))"},
     {Kind::Signed, "TOD_TO_LINT(STRING_TO_TOD('TOD#12:00:00.25'))"},
     {Kind::Signed, "DT_TO_LINT(STRING_TO_DT('DT#2020-01-01-10:00:00'))"},
+    {Kind::Signed, "LDATE_TO_LINT(STRING_TO_LDATE('LDATE#2020-01-02'))"},
+    {Kind::Signed, "LTOD_TO_LINT(STRING_TO_LTOD('LTOD#12:00:00.000000025'))"},
+    {Kind::Signed, "LDT_TO_LINT(STRING_TO_LDT(LDT_TO_STRING(kLdt)))"},
     {Kind::Unsigned, "CHAR_TO_USINT(STRING_TO_CHAR(kS))"},
     {Kind::Unsigned, "CHAR_TO_USINT(STRING_TO_CHAR(kHigh))"},
     {Kind::Unsigned, "CHAR_TO_USINT(STRING_TO_CHAR(kE))"},
@@ -455,6 +466,16 @@ const std::vector<Folded> kExpressions = {
     {Kind::Text, "WSTRING_TO_STRING(\"a$20ACb\")"},
     {Kind::Text, "TO_STRING(kWCut)"},
     {Kind::Signed, "LEN(WSTRING_TO_STRING(kW))"},
+    // A text result is cut at the capacity of its type, STRING[80] or WSTRING[80], also where
+    // it is stored straight into the longer variable that reads it back here.
+    {Kind::Wide, "STRING_TO_WSTRING(kLong)"},
+    {Kind::Text, "WSTRING_TO_STRING(STRING_TO_WSTRING(kLong))"},
+    {Kind::Text, "TO_STRING(kLong)"},
+    {Kind::Text, "STRING_TO_STRING(kLong)"},
+    {Kind::Text, "TO_STRING(kCut)"},
+    {Kind::Wide, "TO_WSTRING(kW)"},
+    {Kind::Signed, "LEN(TO_STRING(kLong))"},
+    {Kind::Text, "CONCAT(TO_STRING(kCut), TO_STRING(kS))"},
 };
 
 /// The operands the expressions name, CONSTANTs (`VAR CONSTANT`) or variables (`VAR`).
@@ -466,7 +487,7 @@ std::string operands(const char* section) {
     kS : STRING := 'hello'; kE : STRING := ''; kCut : STRING[3] := 'abcdef'; kSi : SINT := 100;
     kW : WSTRING := "h$00E9llo"; kWCut : WSTRING[3] := "abcdef"; kHigh : STRING := '$E9t$E9';
     kNumber : STRING := '  -17'; kReal : STRING := '1.5E3'; kC : CHAR := CHAR#'q';
-    kWc : WCHAR := WCHAR#"$00E9";
+    kWc : WCHAR := WCHAR#"$00E9"; kLdt : LDT := LDT#2024-01-31-12:34:56.000000001;
     kLong : STRING[40000] := ')";
     text += std::string(40000, 'x');
     return text + R"(';
@@ -612,11 +633,7 @@ END_PROGRAM
 }
 
 // A real function's NaN (a domain error) is left to run time, as are a DIV_TIME by zero (which
-// stops the task), a text converted to the other width longer than the WSTRING[80] it is
-// converted into (the VM converts it into its destination where it is stored at once: the
-// text depends on where it goes), a STRING converted to a STRING of another capacity (which
-// code generation converts through WSTRING_TO_STRING), a call with EN and the bounds of an
-// ARRAY[*].
+// stops the task), a call with EN and the bounds of an ARRAY[*].
 TEST(ConstantExpressionsOf, WhatTheVmDoesNotGiveTheSameWayIsNoConstant) {
     const auto typed = type_source(std::string(R"(
 FUNCTION Last : DINT
@@ -624,9 +641,8 @@ VAR_IN_OUT a : ARRAY[*] OF INT; END_VAR
 Last := UPPER_BOUND(a, 1);
 END_FUNCTION
 PROGRAM Main
-VAR CONSTANT kText : STRING := 'abc'; kShort : STRING[3] := 'abc'; kLong : STRING[90] := ')" +
-                                               std::string(90, 'x') + R"('; END_VAR
-VAR r : LREAL; t : TIME; n : INT; s : STRING; w : WSTRING[100]; END_VAR
+VAR CONSTANT kText : STRING := 'abc'; END_VAR
+VAR r : LREAL; t : TIME; n : INT; END_VAR
 r := SQRT(-1.0);
 r := LN(REAL#-1.0);
 r := ACOS(2.0);
@@ -634,8 +650,6 @@ r := EXPT(-8.0, 1.0 / 3.0);
 r := (-8.0) ** (1.0 / 3.0);
 t := DIV_TIME(T#1s, 0);
 t := DIV_TIME(T#1s, 0.0);
-w := STRING_TO_WSTRING(kLong);
-s := TO_STRING(kShort);
 n := LEN(EN := TRUE, IN := kText);
 n := LEN(kText);
 n := LEN("abc");
@@ -643,10 +657,10 @@ r := SQRT(2.0);
 END_PROGRAM
 )"));
     ASSERT_TRUE(typed->front_end->program) << typed->errors();
-    for (std::size_t i = 0; i < 10; ++i) {
+    for (std::size_t i = 0; i < 8; ++i) {
         EXPECT_EQ(typed->program().constant_of(typed->value(i)), nullptr) << i;
     }
-    for (std::size_t i = 10; i < 13; ++i) {
+    for (std::size_t i = 8; i < 11; ++i) {
         EXPECT_NE(typed->program().constant_of(typed->value(i)), nullptr) << i;
     }
     const ast::Pou& last = typed->front_end->units.back().pous.front();
@@ -789,6 +803,32 @@ END_PROGRAM
     EXPECT_EQ(run.get<float>("Main.ratio"), run.get<float>("Main.ratio_now"));
     EXPECT_EQ(run.get<std::uint16_t>("Main.wide"), run.get<std::uint16_t>("Main.wide_now"));
     EXPECT_TRUE(run.get_wstring("Main.text") == run.get_wstring("Main.text_now"));
+}
+
+// A conversion's text is cut at the capacity of its type (STRING[80], WSTRING[80]) in an
+// initial value as at run time, also where the variable is longer.
+TEST(ConstantExpressionsOf, AConvertedTextIsCutAtItsTypesCapacityInAnInitialValue) {
+    const std::string ninety(90, 'x');
+    StProgram run(R"(
+PROGRAM Main
+VAR CONSTANT kLong : STRING[90] := ')" +
+                  ninety + R"('; END_VAR
+VAR
+    wide : WSTRING[100] := STRING_TO_WSTRING(kLong);
+    same : STRING[100] := TO_STRING(kLong);
+    wide_now : WSTRING[100]; same_now : STRING[100]; long : STRING[90] := ')" +
+                  ninety + R"(';
+END_VAR
+wide_now := STRING_TO_WSTRING(long);
+same_now := TO_STRING(long);
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    EXPECT_TRUE(run.get_wstring("Main.wide") == std::u16string(80, u'x'));
+    EXPECT_EQ(run.get_string("Main.same"), std::string(80, 'x'));
+    ASSERT_TRUE(run.scans(1));
+    EXPECT_TRUE(run.get_wstring("Main.wide") == run.get_wstring("Main.wide_now"));
+    EXPECT_EQ(run.get_string("Main.same"), run.get_string("Main.same_now"));
 }
 
 } // namespace

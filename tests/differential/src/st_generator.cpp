@@ -388,7 +388,7 @@ Expr Generator::duration(int depth) {
     const std::string tod = "TOD#" + std::to_string(below(24)) + ":" + std::to_string(below(60)) +
                             ":" + std::to_string(below(60)) + "." + std::to_string(below(1000));
     const std::string dt = "DT#2024-01-31-12:00:00";
-    switch (below(6)) {
+    switch (below(7)) {
     case 0:
         return pattern("($0" + sign() + "$1)", {sub(), sub()}, r);
     case 1:
@@ -399,6 +399,21 @@ Expr Generator::duration(int depth) {
         return pattern("((" + tod + sign() + "$0) - TOD#00:00:00)", {sub()}, r);
     case 4:
         return pattern("((" + dt + sign() + "$0) - DT#2024-01-01-00:00:00)", {sub()}, r);
+    case 5:
+        // Table 22: a date is the day and a time of day the time since midnight of any time,
+        // at either width.
+        switch (below(4)) {
+        case 0:
+            return pattern("(TIME_TO_TOD($0) - TOD#00:00:00)", {sub()}, r);
+        case 1:
+            return pattern("(DT_TO_DATE(" + dt + sign() + "$0) - D#2024-01-01)", {sub()}, r);
+        case 2:
+            return pattern("LTIME_TO_TIME(LDT_TO_LTOD(DT_TO_LDT(" + dt + sign() +
+                               "$0)) - LTOD#00:00:00)",
+                           {sub()}, r);
+        default:
+            return pattern("TOD_TO_TIME(DT_TO_TOD(" + dt + sign() + "$0))", {sub()}, r);
+        }
     default:
         // ADD and MUL are extensible, each step a row of table 30 (table 24).
         switch (below(3)) {

@@ -397,19 +397,21 @@ Value Evaluator::conversion(const types::CallTarget& target, const Value& value)
     const bool time_source = sema::is_time_like(from);
     const bool time_result = sema::is_time_like(to);
     if (time_source && time_result) {
-        // The day and the time since midnight, also before 1970 (vm/README.md).
-        if (from.elementary == E::DateAndTime && to.elementary == E::Date) {
+        // A date is a day at midnight and a time of day is since midnight, whatever it is made
+        // of, also before 1970 (DT_TO_DATE, DT_TO_TOD, vm/README.md); the rest keep the value.
+        const bool to_date = to.elementary == E::Date || to.elementary == E::Ldate;
+        const bool to_time_of_day = to.elementary == E::TimeOfDay || to.elementary == E::Ltod;
+        const auto same_kind = [&](E a, E b) {
+            return from.elementary == a || from.elementary == b;
+        };
+        if (to_date && !same_kind(E::Date, E::Ldate)) {
             return integer(to, static_cast<std::uint64_t>(value.as_signed() -
                                                           since_midnight(value.as_signed())));
         }
-        if (from.elementary == E::DateAndTime && to.elementary == E::TimeOfDay) {
+        if (to_time_of_day && !same_kind(E::TimeOfDay, E::Ltod)) {
             return integer(to, static_cast<std::uint64_t>(since_midnight(value.as_signed())));
         }
-        if ((from.elementary == E::Time || from.elementary == E::Ltime) &&
-            (to.elementary == E::Time || to.elementary == E::Ltime)) {
-            return integer(to, value.bits);
-        }
-        throw Unsupported("the conversion " + target.name);
+        return integer(to, value.bits);
     }
     if (time_source || time_result) {
         const std::int64_t scale = unit(time_source ? from.elementary : to.elementary);

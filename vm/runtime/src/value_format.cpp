@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstring>
 #include <fmt/format.h>
+#include <optional>
+#include <utility>
 
 namespace eposp::vm {
 namespace {
@@ -17,16 +19,34 @@ T load(std::span<const std::uint8_t> memory, std::uint32_t offset) {
     return value;
 }
 
-// TIME, DATE, TOD and DT are all I64 nanoseconds (vm/README.md): the type's name says which.
+// The times and dates are all I64 nanoseconds (vm/README.md): the type's name says which.
+std::optional<stdlib::TextForm> time_form(std::string_view type) {
+    using F = stdlib::TextForm;
+    static constexpr std::pair<std::string_view, F> kForms[] = {
+        {"TIME", F::Time},
+        {"LTIME", F::LongTime},
+        {"DATE", F::Date},
+        {"LDATE", F::LongDate},
+        {"TIME_OF_DAY", F::TimeOfDay},
+        {"TOD", F::TimeOfDay},
+        {"LTIME_OF_DAY", F::LongTimeOfDay},
+        {"LTOD", F::LongTimeOfDay},
+        {"DATE_AND_TIME", F::DateAndTime},
+        {"DT", F::DateAndTime},
+        {"LDATE_AND_TIME", F::LongDateAndTime},
+        {"LDT", F::LongDateAndTime},
+    };
+    for (const auto& [name, form] : kForms) {
+        if (name == type) {
+            return form;
+        }
+    }
+    return std::nullopt;
+}
+
 void format_time_value(stdlib::ValueText& out, std::string_view type, std::int64_t ns) {
-    if (type == "TIME" || type == "LTIME") {
-        stdlib::format_duration(out, ns, type == "TIME" ? "T#" : "LTIME#");
-    } else if (type == "DATE") {
-        stdlib::format_date(out, ns);
-    } else if (type == "TIME_OF_DAY" || type == "TOD") {
-        stdlib::format_time_of_day(out, ns);
-    } else if (type == "DATE_AND_TIME" || type == "DT") {
-        stdlib::format_date_and_time(out, ns);
+    if (const auto form = time_form(type)) {
+        stdlib::format_value(out, *form, ns);
     } else {
         stdlib::format_signed(out, ns);
     }

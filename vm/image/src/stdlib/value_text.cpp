@@ -269,19 +269,19 @@ void format_duration(ValueText& out, std::int64_t ns, std::string_view prefix) {
     }
 }
 
-void format_date(ValueText& out, std::int64_t ns) {
-    out.append("D#");
+void format_date(ValueText& out, std::int64_t ns, std::string_view prefix) {
+    out.append(prefix);
     append_civil_date(out, floor_div(ns, kNsPerDay));
 }
 
-void format_time_of_day(ValueText& out, std::int64_t ns) {
-    out.append("TOD#");
+void format_time_of_day(ValueText& out, std::int64_t ns, std::string_view prefix) {
+    out.append(prefix);
     append_clock(out, ns - floor_div(ns, kNsPerDay) * kNsPerDay);
 }
 
-void format_date_and_time(ValueText& out, std::int64_t ns) {
+void format_date_and_time(ValueText& out, std::int64_t ns, std::string_view prefix) {
     const auto days = floor_div(ns, kNsPerDay);
-    out.append("DT#");
+    out.append(prefix);
     append_civil_date(out, days);
     out.append("-");
     append_clock(out, ns - days * kNsPerDay);
@@ -361,20 +361,20 @@ std::optional<std::int64_t> to_ns(std::int64_t days, std::int64_t ns_of_day) {
 
 std::int64_t parse_date(std::string_view text) {
     Cursor c(text);
-    accept_any(c, {"DATE#", "D#"});
+    accept_any(c, {"LDATE#", "LD#", "DATE#", "D#"});
     const auto days = read_date(c);
     return days ? to_ns(*days, 0).value_or(0) : 0;
 }
 
 std::int64_t parse_time_of_day(std::string_view text) {
     Cursor c(text);
-    accept_any(c, {"TIME_OF_DAY#", "TOD#"});
+    accept_any(c, {"LTIME_OF_DAY#", "LTOD#", "TIME_OF_DAY#", "TOD#"});
     return read_time_of_day(c).value_or(0);
 }
 
 std::int64_t parse_date_and_time(std::string_view text) {
     Cursor c(text);
-    accept_any(c, {"DATE_AND_TIME#", "DT#"});
+    accept_any(c, {"LDATE_AND_TIME#", "LDT#", "DATE_AND_TIME#", "DT#"});
     const auto days = read_date(c);
     if (!days || !c.accept('-')) {
         return 0;
@@ -408,11 +408,17 @@ void format_value(ValueText& out, TextForm form, std::int64_t value) {
     case TextForm::LongTime:
         return format_duration(out, value, "LTIME#");
     case TextForm::Date:
-        return format_date(out, value);
+        return format_date(out, value, "D#");
+    case TextForm::LongDate:
+        return format_date(out, value, "LDATE#");
     case TextForm::TimeOfDay:
-        return format_time_of_day(out, value);
+        return format_time_of_day(out, value, "TOD#");
+    case TextForm::LongTimeOfDay:
+        return format_time_of_day(out, value, "LTOD#");
     case TextForm::DateAndTime:
-        return format_date_and_time(out, value);
+        return format_date_and_time(out, value, "DT#");
+    case TextForm::LongDateAndTime:
+        return format_date_and_time(out, value, "LDT#");
     }
 }
 
@@ -424,10 +430,13 @@ std::int64_t parse_value(std::string_view text, TextForm form) {
     case TextForm::LongTime:
         return parse_duration(text);
     case TextForm::Date:
+    case TextForm::LongDate:
         return parse_date(text);
     case TextForm::TimeOfDay:
+    case TextForm::LongTimeOfDay:
         return parse_time_of_day(text);
     case TextForm::DateAndTime:
+    case TextForm::LongDateAndTime:
         return parse_date_and_time(text);
     default:
         return parse_integer(text);

@@ -98,6 +98,13 @@ bool is_real(const Type& type);       ///< ANY_REAL
 bool is_numeric(const Type& type);    ///< ANY_NUM
 bool is_bool(const Type& type);
 bool is_time_like(const Type& type); ///< TIME, LTIME, DATE, TOD, DT and long forms
+/// What a conversion between two times or dates keeps of its nanoseconds.
+enum class TimePart : std::uint8_t {
+    All,       ///< the same nanoseconds (TOD_TO_DT, DATE_TO_LDATE, TIME_TO_LTIME...)
+    Day,       ///< the day at midnight, as DT_TO_DATE: a DATE or LDATE made of any other
+    TimeOfDay, ///< the time since midnight, as DT_TO_TOD: a TOD or LTOD made of any other
+};
+TimePart time_part(const Type& from, const Type& to);
 /// Nanoseconds per unit when a time converts to or from a number (TIME_TO_DINT, DINT_TO_DT):
 /// CODESYS's, TIME and TOD in milliseconds, DATE and DT in seconds, the long forms (and anything
 /// else) in nanoseconds.

@@ -23,8 +23,11 @@ enum class TextForm : std::uint8_t {
     Time,
     LongTime,
     Date,
+    LongDate,
     TimeOfDay,
-    DateAndTime
+    LongTimeOfDay,
+    DateAndTime,
+    LongDateAndTime
 };
 
 struct TypeTextForm {
@@ -44,7 +47,9 @@ inline constexpr TypeTextForm kTextForms[] = {
     {NativeType::Lword, TextForm::Unsigned},      {NativeType::Real, TextForm::Real},
     {NativeType::Lreal, TextForm::Real},          {NativeType::Time, TextForm::Time},
     {NativeType::Ltime, TextForm::LongTime},      {NativeType::Date, TextForm::Date},
-    {NativeType::TimeOfDay, TextForm::TimeOfDay}, {NativeType::DateAndTime, TextForm::DateAndTime},
+    {NativeType::Ldate, TextForm::LongDate},      {NativeType::TimeOfDay, TextForm::TimeOfDay},
+    {NativeType::Ltod, TextForm::LongTimeOfDay},  {NativeType::DateAndTime, TextForm::DateAndTime},
+    {NativeType::Ldt, TextForm::LongDateAndTime},
 };
 
 /// The form of `type`; none for a type that has no conversion to STRING.
@@ -75,18 +80,23 @@ void format_unsigned(ValueText& out, std::uint64_t value);
 void format_real(ValueText& out, double value, bool single_precision);
 /// T#1d2h3m4s5ms6us7ns with the zero units left out; T#0ms for zero; `prefix` is T# or LTIME#.
 void format_duration(ValueText& out, std::int64_t ns, std::string_view prefix);
-void format_date(ValueText& out, std::int64_t ns);          ///< D#2024-01-31
-void format_time_of_day(ValueText& out, std::int64_t ns);   ///< TOD#12:34:56.789
-void format_date_and_time(ValueText& out, std::int64_t ns); ///< DT#2024-01-31-12:34:56.789
+/// `prefix` 2024-01-31: D# or LDATE#.
+void format_date(ValueText& out, std::int64_t ns, std::string_view prefix);
+/// `prefix` 12:34:56.789, the fraction to the nanosecond without trailing zeros: TOD# or LTOD#.
+void format_time_of_day(ValueText& out, std::int64_t ns, std::string_view prefix);
+/// `prefix` 2024-01-31-12:34:56.789: DT# or LDT#.
+void format_date_and_time(ValueText& out, std::int64_t ns, std::string_view prefix);
 
 // Parsing takes leading blanks, then as much of the form as is there; text that does not start
 // with a valid form gives 0 (CODESYS does not signal errors from STRING_TO_*).
 std::int64_t parse_integer(std::string_view text); ///< [+-]digits, 2#, 8#, 16#, underscores
 double parse_real(std::string_view text);
-bool parse_bool(std::string_view text);                  ///< TRUE (any case) or a non-zero number
-std::int64_t parse_duration(std::string_view text);      ///< [T#|TIME#|LTIME#][-]1d2h3m4.5s6ms...
-std::int64_t parse_date(std::string_view text);          ///< [D#|DATE#]YYYY-MM-DD
-std::int64_t parse_time_of_day(std::string_view text);   ///< [TOD#|TIME_OF_DAY#]hh:mm:ss[.f]
-std::int64_t parse_date_and_time(std::string_view text); ///< [DT#|DATE_AND_TIME#]date-tod
+bool parse_bool(std::string_view text);             ///< TRUE (any case) or a non-zero number
+std::int64_t parse_duration(std::string_view text); ///< [T#|TIME#|LTIME#][-]1d2h3m4.5s6ms...
+std::int64_t parse_date(std::string_view text);     ///< [D#|DATE#|LD#|LDATE#]YYYY-MM-DD
+/// [TOD#|TIME_OF_DAY#|LTOD#|LTIME_OF_DAY#]hh:mm:ss[.f]
+std::int64_t parse_time_of_day(std::string_view text);
+/// [DT#|DATE_AND_TIME#|LDT#|LDATE_AND_TIME#]date-tod
+std::int64_t parse_date_and_time(std::string_view text);
 
 } // namespace eposp::vm::stdlib
