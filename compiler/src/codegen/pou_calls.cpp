@@ -116,14 +116,23 @@ std::optional<Value> PouGenerator::call_function(const ast::Pou& function,
     }
     // First the arguments that call a function: the callee's frame is the out area, so they
     // run before any argument is placed there. Host functions (string comparisons and
-    // functions, conversions) in the others take their block after the arguments placed.
+    // functions, conversions) in the others take their block after the arguments placed. An
+    // input before a later argument that may write variables is taken here too, in order:
+    // arguments are evaluated from left to right.
+    const auto last_writer = std::find_if(bound.rbegin(), bound.rend(), [this](const Bound& b) {
+        return may_write_variables(*b.argument->value);
+    });
+    const auto written_later = [&](const Bound& b) {
+        return &b < &*last_writer;
+    };
     for (Bound& b : bound) {
         if (b.field->section == ast::VarSectionKind::InOut) {
             const auto target = place(*b.argument->value);
             b.value = target ? in_out_argument(*target, *b.field) : std::nullopt;
             ok = ok && b.value.has_value();
         } else if (b.field->section == ast::VarSectionKind::Input &&
-                   contains_call(*b.argument->value)) {
+                   (contains_call(*b.argument->value) ||
+                    (last_writer != bound.rend() && written_later(b)))) {
             const Operand slot = temp(*b.field->type);
             const Destination into{slot, b.field->type};
             b.value = value_as(*b.argument->value, *b.field->type, &into);

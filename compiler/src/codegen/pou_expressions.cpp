@@ -6,40 +6,64 @@
 #include "eposp/vm/stdlib/manifest.hpp"
 #include "pou_generator.hpp"
 
+#include <algorithm>
+
 namespace eposp::compiler::codegen {
 
 using E = ast::ElementaryType;
 using vm::Opcode;
 using vm::Operand;
 
-bool PouGenerator::contains_call(const ast::Expression& expression) {
+namespace {
+
+/// Whether `expression` holds a call that `counts` (a predicate on the call node); the
+/// arguments of a call that does not count are looked into.
+template <typename Counts>
+bool has_call(const ast::Expression& expression, const Counts& counts) {
+    const auto any = [&](const ast::Expression& inner) {
+        return has_call(inner, counts);
+    };
     return std::visit(
-        [](const auto& node) -> bool {
+        [&](const auto& node) -> bool {
             using T = std::decay_t<decltype(node)>;
             if constexpr (std::is_same_v<T, ast::CallExpression>) {
-                return true;
+                return counts(node) ||
+                       std::any_of(node.arguments.begin(), node.arguments.end(),
+                                   [&](const ast::Argument& a) { return any(*a.value); });
             } else if constexpr (std::is_same_v<T, ast::MemberExpression> ||
                                  std::is_same_v<T, ast::BitAccessExpression>) {
-                return contains_call(*node.object);
+                return any(*node.object);
             } else if constexpr (std::is_same_v<T, ast::IndexExpression>) {
-                bool any = contains_call(*node.array);
-                for (const auto& index : node.indices) {
-                    any = any || contains_call(*index);
-                }
-                return any;
+                return any(*node.array) ||
+                       std::any_of(node.indices.begin(), node.indices.end(),
+                                   [&](const auto& index) { return any(*index); });
             } else if constexpr (std::is_same_v<T, ast::DereferenceExpression>) {
-                return contains_call(*node.reference);
+                return any(*node.reference);
             } else if constexpr (std::is_same_v<T, ast::ReferenceExpression>) {
-                return contains_call(*node.target);
+                return any(*node.target);
             } else if constexpr (std::is_same_v<T, ast::UnaryExpression>) {
-                return contains_call(*node.operand);
+                return any(*node.operand);
             } else if constexpr (std::is_same_v<T, ast::BinaryExpression>) {
-                return contains_call(*node.left) || contains_call(*node.right);
+                return any(*node.left) || any(*node.right);
             } else {
                 return false;
             }
         },
         expression.node);
+}
+
+} // namespace
+
+bool PouGenerator::contains_call(const ast::Expression& expression) {
+    return has_call(expression, [](const ast::CallExpression&) { return true; });
+}
+
+bool PouGenerator::may_write_variables(const ast::Expression& expression) const {
+    return has_call(expression, [this](const ast::CallExpression& call) {
+        const auto* name = std::get_if<ast::NameExpression>(&call.callee->node);
+        const sema::Symbol* symbol = name != nullptr ? model_.resolved(name->name) : nullptr;
+        return symbol == nullptr || symbol->kind != sema::SymbolKind::StandardFunction;
+    });
 }
 
 bool PouGenerator::names_program(const ast::Expression& expression) const {
@@ -536,7 +560,7 @@ std::optional<std::pair<Value, Value>> PouGenerator::operands(const ast::Express
         r = operand_as(right, type);
         l = r ? operand_as(left, type) : std::nullopt;
     } else {
-        l = operand_as(left, type);
+        l = before(right, [&] { return operand_as(left, type); });
         r = l ? operand_as(right, type) : std::nullopt;
     }
     if (!l || !r) {
@@ -665,7 +689,7 @@ std::optional<Value> PouGenerator::binary(const ast::Expression& expression,
             program_.refused_by_checks(DiagnosticCode::E0305); // types/operator_typing.cpp
             return std::nullopt;
         }
-        const auto base = eval(*node.left, real);
+        const auto base = before(*node.right, [&] { return eval(*node.left, real); });
         const auto exponent = base ? eval(*node.right, real) : std::nullopt;
         if (!exponent) {
             return std::nullopt;
@@ -692,7 +716,7 @@ std::optional<Value> PouGenerator::binary(const ast::Expression& expression,
         return std::nullopt;
     }
     if (computed == nullptr) {
-        const auto left = operand_value(*node.left, hint);
+        const auto left = before(*node.right, [&] { return operand_value(*node.left, hint); });
         if (!left) {
             return std::nullopt;
         }

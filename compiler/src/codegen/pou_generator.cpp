@@ -234,6 +234,11 @@ void PouGenerator::move(Operand dst, const sema::Type& dst_type, const Value& sr
 Value PouGenerator::load(const Place& place, const Destination* dest) {
     // A subrange variable's value computes as its base type (pou_subranges.cpp).
     const sema::Type& type = types_.unranged(*place.type);
+    if (place.kind == Place::Kind::Direct && hold_loads_ && !is_temporary(place.operand)) {
+        const Operand copy = temp(type);
+        move(copy, type, Value{place.operand, &type});
+        return {copy, &type};
+    }
     if (place.kind == Place::Kind::Direct) {
         return {place.operand, &type};
     }

@@ -8,6 +8,7 @@
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 namespace eposp::compiler::codegen {
@@ -195,6 +196,30 @@ private:
     std::optional<Value> pointer_offset(bool add, const Value& pointer,
                                         const ast::Expression& bytes, const Destination* dest);
     static bool contains_call(const ast::Expression& expression);
+    /// Whether evaluating `expression` may write variables: it calls a user function or
+    /// anything but a standard function (whose inputs are values).
+    bool may_write_variables(const ast::Expression& expression) const;
+    /// Evaluates `evaluate` with every variable it loads copied into a temporary where
+    /// `later` (an operand evaluated after it) may write variables: operands are evaluated from
+    /// left to right (IEC 61131-3 7.3.2), so `x + F(x)` adds the x before F changes it.
+    template <typename Evaluate>
+    auto before(const ast::Expression& later, Evaluate evaluate) {
+        const HeldLoads held(*this, may_write_variables(later));
+        return evaluate();
+    }
+    /// Loads are held (`before`) while it lives, where `hold` says so.
+    class HeldLoads {
+    public:
+        HeldLoads(PouGenerator& generator, bool hold)
+            : flag_(generator.hold_loads_), saved_(std::exchange(flag_, flag_ || hold)) {}
+        HeldLoads(const HeldLoads&) = delete;
+        HeldLoads& operator=(const HeldLoads&) = delete;
+        ~HeldLoads() { flag_ = saved_; }
+
+    private:
+        bool& flag_;
+        bool saved_;
+    };
     /// `P` of `P.x`: a PROGRAM named as its single instance (CODESYS).
     bool names_program(const ast::Expression& expression) const;
 
@@ -380,6 +405,8 @@ private:
     std::vector<Loop> loops_;
     std::vector<std::uint32_t> for_variables_; // operands of the enclosing FOR loops
     ValueCache cache_;
+    /// Loads copy a variable's value into a temporary (`before`).
+    bool hold_loads_ = false;
     std::unordered_map<std::uint16_t, std::uint32_t> array_bytes_; // per descriptor
     vm::Label end_;
 };

@@ -41,6 +41,12 @@ std::optional<Value> PouGenerator::standard_function(const types::CallTarget& ta
     if (sema::is_conversion_function(name)) {
         return conversion(target, arguments, dest);
     }
+    // An input is what it is before a later input's call may change it (left to right).
+    const HeldLoads held(*this, arguments.size() > 1 &&
+                                    std::any_of(std::next(arguments.begin()), arguments.end(),
+                                                [this](const ast::Argument* argument) {
+                                                    return may_write_variables(*argument->value);
+                                                }));
     const vm::stdlib::StandardFunction* function = vm::stdlib::find_standard_function(name);
     // ADD and MUL on times are extensible, each a row of table 30 (time_functions.cpp).
     const bool extended_time =
