@@ -3,6 +3,7 @@
 #include "codegen_harness.hpp"
 
 #include <gtest/gtest.h>
+#include <limits>
 
 namespace eposp::compiler::test {
 namespace {
@@ -118,6 +119,30 @@ END_PROGRAM
     EXPECT_EQ(run.get<std::int32_t>("Main.down.CV"), 7);
     EXPECT_EQ(run.get<std::int16_t>("Main.both.CV"), 3);
     EXPECT_TRUE(run.get<bool>("Main.both.QU"));
+}
+
+// A counter counts down to the least value of its type and up to the greatest, and no further
+// (CTD_LINT stopped one above LINT's least value).
+TEST(Counters, StopAtTheLimitsOfTheirType) {
+    StProgram run(R"(
+PROGRAM Main
+VAR in : BOOL; loaded : BOOL := TRUE;
+    down : CTD_LINT; down_int : CTD; up : CTUD_ULINT; both : CTUD_DINT; END_VAR
+down(CD := in, LD := loaded, PV := LINT#-9223372036854775806);
+down_int(CD := in, LD := loaded, PV := -32767);
+up(CU := in, CD := FALSE, R := FALSE, LD := loaded, PV := ULINT#18446744073709551614);
+both(CU := FALSE, CD := in, R := FALSE, LD := loaded, PV := -2147483647);
+loaded := FALSE;
+END_PROGRAM
+)");
+    ASSERT_TRUE(run.ok()) << run.errors();
+    for (bool input : {false, true, false, true, false, true, false, true}) {
+        scan(run, input);
+    }
+    EXPECT_EQ(run.get<std::int64_t>("Main.down.CV"), std::numeric_limits<std::int64_t>::min());
+    EXPECT_EQ(run.get<std::int16_t>("Main.down_int.CV"), -32768);
+    EXPECT_EQ(run.get<std::uint64_t>("Main.up.CV"), std::numeric_limits<std::uint64_t>::max());
+    EXPECT_EQ(run.get<std::int32_t>("Main.both.CV"), std::numeric_limits<std::int32_t>::min());
 }
 
 } // namespace
