@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <memory>
 #include <memory_resource>
+#include <type_traits>
 #include <utility>
 
 namespace eposp::compiler::ast {
@@ -30,7 +31,12 @@ public:
     template <typename Node, typename... Args>
     NodePtr<Node> make(Args&&... args) {
         void* place = memory_.allocate(sizeof(Node), alignof(Node));
-        return NodePtr<Node>(new (place) Node(std::forward<Args>(args)...));
+        if constexpr (std::is_aggregate_v<Node>) {
+            // Braces: clang 14 has no parenthesised aggregate initialisation (P0960).
+            return NodePtr<Node>(new (place) Node{std::forward<Args>(args)...});
+        } else {
+            return NodePtr<Node>(new (place) Node(std::forward<Args>(args)...));
+        }
     }
 
 private:
