@@ -442,11 +442,9 @@ std::optional<Value> PouGenerator::evaluate(const ast::Expression& expression,
     if (std::holds_alternative<ast::CallExpression>(expression.node)) {
         return function_value(call(expression, hint, dest));
     }
-    if (const auto* node = std::get_if<ast::UnaryExpression>(&expression.node)) {
-        return unary(*node, hint, dest);
-    }
-    if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
-        auto value = binary(expression, *node, hint, dest);
+    if (std::holds_alternative<ast::UnaryExpression>(expression.node) ||
+        std::holds_alternative<ast::BinaryExpression>(expression.node)) {
+        auto value = operand_value(expression, hint, dest);
         if (value && value->iec != nullptr) {
             // Computed wider than its type (see binary): cut to the type here.
             const sema::Type& type = *value->iec;
@@ -576,25 +574,37 @@ std::optional<Value> PouGenerator::operand_as(const ast::Expression& expression,
     return value ? convert(*value, type, nullptr) : std::nullopt;
 }
 
-std::optional<Value> PouGenerator::unary(const ast::UnaryExpression& node, const sema::Type* hint,
+std::optional<Value> PouGenerator::unary(const ast::Expression& expression,
+                                         const ast::UnaryExpression& node, const sema::Type* hint,
                                          const Destination* dest) {
     if (node.op == ast::UnaryOperator::Plus) {
         return eval(*node.operand, hint, dest);
+    }
+    if (node.op == ast::UnaryOperator::Negate) {
+        // Computed in DINT where the typing stage holds a small integer there (operands_of),
+        // and held so, as binary() holds its result, while it feeds another operation.
+        const sema::Type* computed = program_.typed().operands_of(expression);
+        const sema::Type* typed = program_.typed().type_of(expression);
+        const auto value =
+            computed != nullptr ? operand_as(*node.operand, *computed) : eval(*node.operand, hint);
+        if (!value) {
+            return std::nullopt;
+        }
+        const sema::Type& type = *value->type;
+        if (!sema::is_numeric(type) && !(sema::is_time_like(type) && type.elementary <= E::Ltime)) {
+            program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
+            return std::nullopt;
+        }
+        const sema::Type* iec = typed != nullptr && typed != &type ? typed : nullptr;
+        const Operand result = result_operand(type, iec == nullptr ? dest : nullptr);
+        emit(op_width("Neg", type), result, value->operand);
+        return Value{result, &type, iec};
     }
     const auto value = eval(*node.operand, hint);
     if (!value) {
         return std::nullopt;
     }
     const sema::Type& type = *value->type;
-    if (node.op == ast::UnaryOperator::Negate) {
-        if (!sema::is_numeric(type) && !(sema::is_time_like(type) && type.elementary <= E::Ltime)) {
-            program_.refused_by_checks(DiagnosticCode::E0304); // types/operator_typing.cpp
-            return std::nullopt;
-        }
-        const Operand result = result_operand(type, dest);
-        emit(op_width("Neg", type), result, value->operand);
-        return Value{result, &type};
-    }
     const Operand result = result_operand(type, dest);
     if (sema::is_bool(type)) {
         emit(Opcode::NotB, result, value->operand);
@@ -659,11 +669,14 @@ std::optional<Value> PouGenerator::compare(ast::BinaryOperator op, const Value& 
 }
 
 std::optional<Value> PouGenerator::operand_value(const ast::Expression& expression,
-                                                 const sema::Type* hint) {
-    if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
-        return binary(expression, *node, hint, nullptr);
+                                                 const sema::Type* hint, const Destination* dest) {
+    if (const auto* node = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        return unary(expression, *node, hint, dest);
     }
-    return eval(expression, hint);
+    if (const auto* node = std::get_if<ast::BinaryExpression>(&expression.node)) {
+        return binary(expression, *node, hint, dest);
+    }
+    return eval(expression, hint, dest);
 }
 
 Operand PouGenerator::dimension_constant(std::int64_t lower, std::uint32_t count) {

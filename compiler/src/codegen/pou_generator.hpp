@@ -163,8 +163,9 @@ private:
     vm::Operand bit_mask(const sema::Type& type, std::uint32_t bit, bool inverted);
     /// A literal as a constant of the type the typing stage gave it.
     std::optional<Value> literal(const ast::Expression& expression);
-    std::optional<Value> unary(const ast::UnaryExpression& node, const sema::Type* hint,
-                               const Destination* dest);
+    /// A unary operator; a negation computed in DINT (operands_of) is held so, as binary().
+    std::optional<Value> unary(const ast::Expression& expression, const ast::UnaryExpression& node,
+                               const sema::Type* hint, const Destination* dest);
     /// A binary operator computed in the type the typing stage gives its operands
     /// (types::TypedProgram::operands_of); an arithmetic result computed wider than its type
     /// is held so while it is an operand (Value::iec).
@@ -172,7 +173,8 @@ private:
                                 const ast::BinaryExpression& node, const sema::Type* hint,
                                 const Destination* dest);
     /// An operand of an operator: like eval, but a nested operation may stay wide.
-    std::optional<Value> operand_value(const ast::Expression& expression, const sema::Type* hint);
+    std::optional<Value> operand_value(const ast::Expression& expression, const sema::Type* hint,
+                                       const Destination* dest = nullptr);
     /// `value` as a constant of the integer (or bit string, enumeration) type `type`.
     vm::Operand integer_constant(const sema::Type& type, std::int64_t value);
     /// The bounds IdxDim checks one index against: lower (DINT) then count (UDINT).

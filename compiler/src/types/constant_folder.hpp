@@ -56,9 +56,9 @@ public:
     /// capacity); none between other kinds of value.
     std::optional<Constant> convert(const Constant& constant, const sema::Type& from,
                                     const sema::Type& to) const;
-    /// The arithmetic operation `expression` on constants as computed in its operands' type
-    /// (operands_of), not cut to its own type: its value where its operator holds it in DINT
-    /// (the typing stage's computed_in).
+    /// The arithmetic operation or negation `expression` on constants as computed in its
+    /// operands' type (operands_of), not cut to its own type: its value where its operator
+    /// holds it in DINT (the typing stage's hold()).
     std::optional<Constant> computed(const ast::Expression& expression) const;
     /// Whether the operator of `expression` wrapped around computing its constant from its
     /// operands' (`32767 + 1` in INT, `0 - 1` in UDINT, a result computed in DINT cut to its
@@ -108,12 +108,17 @@ private:
         const sema::Type* type = nullptr;
     };
     /// An operand's constant as its operator reads it (codegen's operand_value): an
-    /// arithmetic operation on small integers as computed, in DINT; else its constant.
+    /// arithmetic operation or negation on small integers as computed, in DINT; else its
+    /// constant.
     std::optional<Held> held(const ast::Expression& expression) const;
     /// A binary operator's operands, as held, converted to `computed` and operated on there.
     std::optional<Constant> operation(const ast::BinaryExpression& node,
                                       const sema::Type& computed) const;
-    std::optional<Constant> unary_value(const ast::UnaryExpression& node) const;
+    /// `-x`: its operand, as held, converted to `computed` and negated there.
+    std::optional<Constant> negation(const ast::UnaryExpression& node,
+                                     const sema::Type& computed) const;
+    std::optional<Constant> unary_value(const ast::Expression& expression,
+                                        const ast::UnaryExpression& node) const;
     std::optional<Constant> binary_value(const ast::Expression& expression,
                                          const ast::BinaryExpression& node,
                                          const sema::Type& type) const;

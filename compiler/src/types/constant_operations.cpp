@@ -105,6 +105,16 @@ bool is_arithmetic(ast::BinaryOperator op) {
            op == Op::Modulo;
 }
 
+/// Whether the typing stage may hold `expression` in DINT while it feeds its operator: an
+/// arithmetic operation or a negation (ExpressionTyper::held).
+bool holdable(const ast::Expression& expression) {
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        return unary->op == ast::UnaryOperator::Negate;
+    }
+    const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
+    return binary != nullptr && is_arithmetic(binary->op);
+}
+
 template <typename T>
 std::optional<Constant> binary_in(ast::BinaryOperator op, T l, T r) {
     using Op = ast::BinaryOperator;
@@ -332,27 +342,29 @@ std::optional<Constant> ConstantFolder::convert(const Constant& constant, const 
 }
 
 std::optional<ConstantFolder::Held> ConstantFolder::held(const ast::Expression& expression) const {
-    // An arithmetic operation on small integers is held as computed, in DINT, while it feeds
-    // its operator (codegen's operand_value, Value::iec); anything else as its type. Its
-    // operator marks it so and records its constant as computed (computed_in).
+    // An operation on small integers is held as computed, in DINT, while it feeds its operator
+    // (codegen's operand_value, Value::iec); anything else as its type. Its operator marks it
+    // so and records its constant as computed (the typing stage's hold()).
     const Constant* value = program_.constant_of(expression);
     const sema::Type* type = program_.type_of(expression);
     if (value == nullptr || type == nullptr) {
         return std::nullopt;
     }
     const sema::Type& own = types_.unranged(*type);
-    const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
-    const sema::Type* computed = binary != nullptr ? program_.operands_of(expression) : nullptr;
-    if (computed == nullptr || computed == &own || !is_arithmetic(binary->op)) {
-        return Held{*value, &own};
-    }
-    return Held{*value, computed};
+    const sema::Type* computed = holdable(expression) ? program_.operands_of(expression) : nullptr;
+    return Held{*value, computed != nullptr ? computed : &own};
 }
 
 std::optional<Constant> ConstantFolder::computed(const ast::Expression& expression) const {
+    const sema::Type* in = program_.operands_of(expression);
+    if (in == nullptr) {
+        return std::nullopt;
+    }
+    if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
+        return negation(*unary, *in);
+    }
     const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
-    const sema::Type* in = binary != nullptr ? program_.operands_of(expression) : nullptr;
-    return in != nullptr ? operation(*binary, *in) : std::nullopt;
+    return binary != nullptr ? operation(*binary, *in) : std::nullopt;
 }
 
 std::optional<Constant> ConstantFolder::operation(const ast::BinaryExpression& node,
@@ -367,9 +379,28 @@ std::optional<Constant> ConstantFolder::operation(const ast::BinaryExpression& n
     return r ? binary_constant(node.op, *l, *r, computed) : std::nullopt;
 }
 
-std::optional<Constant> ConstantFolder::unary_value(const ast::UnaryExpression& node) const {
-    // Computed in its operand's type, as code generation's unary() does (its operand cut to
-    // its type by eval()).
+std::optional<Constant> ConstantFolder::negation(const ast::UnaryExpression& node,
+                                                 const sema::Type& computed) const {
+    const auto operand = held(*node.operand);
+    const auto value = operand ? convert(operand->value, *operand->type, computed) : std::nullopt;
+    if (!value) {
+        return std::nullopt;
+    }
+    return with_scalar(sema::scalar_of(computed), [&](auto tag) -> std::optional<Constant> {
+        using T = typename decltype(tag)::type;
+        const auto x = scalar_value<T>(*value);
+        if constexpr (std::is_same_v<T, vm::BoolByte>) {
+            return std::nullopt;
+        } else {
+            return x ? std::optional(to_constant(vs::neg(*x))) : std::nullopt;
+        }
+    });
+}
+
+std::optional<Constant> ConstantFolder::unary_value(const ast::Expression& expression,
+                                                    const ast::UnaryExpression& node) const {
+    // Computed as code generation's unary() does: in its operand's type, or in DINT where the
+    // typing stage holds it there (operands_of), then cut to its type.
     const Constant* value = program_.constant_of(*node.operand);
     const sema::Type* operand_type = program_.type_of(*node.operand);
     if (value == nullptr || operand_type == nullptr) {
@@ -382,7 +413,11 @@ std::optional<Constant> ConstantFolder::unary_value(const ast::UnaryExpression& 
     if (!plain_scalar(type) && (node.op == ast::UnaryOperator::Not || !sema::is_time_like(type))) {
         return std::nullopt;
     }
-    const bool negate = node.op == ast::UnaryOperator::Negate;
+    if (node.op == ast::UnaryOperator::Negate) {
+        const sema::Type* in = program_.operands_of(expression);
+        const auto negated = negation(node, in != nullptr ? *in : type);
+        return negated && in != nullptr ? convert(*negated, *in, type) : negated;
+    }
     return with_scalar(sema::scalar_of(type), [&](auto tag) -> std::optional<Constant> {
         using T = typename decltype(tag)::type;
         const auto x = scalar_value<T>(*value);
@@ -390,11 +425,11 @@ std::optional<Constant> ConstantFolder::unary_value(const ast::UnaryExpression& 
             return std::nullopt;
         }
         if constexpr (std::is_same_v<T, vm::BoolByte>) {
-            return negate ? std::nullopt : std::optional<Constant>(*x == vm::BoolByte{0});
+            return std::optional<Constant>(*x == vm::BoolByte{0});
         } else if constexpr (std::is_floating_point_v<T>) {
-            return negate ? std::optional(to_constant(vs::neg(*x))) : std::nullopt;
+            return std::nullopt;
         } else {
-            return to_constant(negate ? vs::neg(*x) : static_cast<T>(~*x));
+            return to_constant(static_cast<T>(~*x));
         }
     });
 }
@@ -632,27 +667,35 @@ std::optional<Constant> ConstantFolder::call_value(const ast::Expression& expres
 }
 
 bool ConstantFolder::wraps(const ast::Expression& expression) const {
+    // A result computed in DINT and cut to its INT where it is not held (as stored).
+    const auto cut = [&] {
+        const auto wide = computed(expression);
+        const Constant* recorded = program_.constant_of(expression);
+        return wide && recorded != nullptr && !same_number(*wide, *recorded);
+    };
     if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
         // -x wraps at the most negative value of a signed type, at any other than 0 of an
         // unsigned one.
-        const Constant* value = program_.constant_of(*unary->operand);
-        const sema::Type* type = program_.type_of(*unary->operand);
-        if (unary->op != ast::UnaryOperator::Negate || value == nullptr || type == nullptr) {
+        const auto operand =
+            unary->op == ast::UnaryOperator::Negate ? held(*unary->operand) : std::nullopt;
+        if (!operand) {
             return false;
         }
-        return with_scalar(sema::scalar_of(types_.unranged(*type)),
-                           [&](auto tag) -> std::optional<bool> {
-                               using T = typename decltype(tag)::type;
-                               if constexpr (!std::is_integral_v<T>) {
-                                   return false;
-                               } else {
-                                   const auto x = scalar_value<T>(*value);
-                                   return x &&
-                                          (std::is_signed_v<T> ? *x == std::numeric_limits<T>::min()
-                                                               : *x != 0);
-                               }
-                           })
-            .value_or(false);
+        const sema::Type* computed_in = program_.operands_of(expression);
+        const sema::Type& in = computed_in != nullptr ? *computed_in : *operand->type;
+        const auto value = convert(operand->value, *operand->type, in);
+        const bool negation_wraps =
+            value && with_scalar(sema::scalar_of(in), [&](auto tag) -> std::optional<bool> {
+                         using T = typename decltype(tag)::type;
+                         if constexpr (!std::is_integral_v<T>) {
+                             return false;
+                         } else {
+                             const auto x = scalar_value<T>(*value);
+                             return x && (std::is_signed_v<T> ? *x == std::numeric_limits<T>::min()
+                                                              : *x != 0);
+                         }
+                     }).value_or(false);
+        return negation_wraps || (computed_in != nullptr && cut());
     }
     const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node);
     const sema::Type* in = binary != nullptr ? program_.operands_of(expression) : nullptr;
@@ -674,10 +717,7 @@ bool ConstantFolder::wraps(const ast::Expression& expression) const {
             const auto y = scalar_value<T>(*r);
             return x && y && wraps_in(binary->op, *x, *y);
         }).value_or(false);
-    // A result computed in DINT and cut to its INT where it is not held (as stored).
-    const auto wide = computed(expression);
-    const Constant* recorded = program_.constant_of(expression);
-    return operation_wraps || (wide && recorded != nullptr && !same_number(*wide, *recorded));
+    return operation_wraps || cut();
 }
 
 } // namespace eposp::compiler::types

@@ -190,7 +190,7 @@ std::optional<Constant> ConstantFolder::value(const ast::Expression& expression,
         return from != nullptr ? convert(*constant, types_.unranged(*from), *own) : std::nullopt;
     }
     if (const auto* unary = std::get_if<ast::UnaryExpression>(&expression.node)) {
-        return unary_value(*unary);
+        return unary_value(expression, *unary);
     }
     if (const auto* binary = std::get_if<ast::BinaryExpression>(&expression.node)) {
         // Most operations are on variables: no constant, and nothing more to look at.

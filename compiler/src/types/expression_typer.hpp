@@ -106,6 +106,11 @@ private:
     const sema::Type* unify(const std::vector<const ast::Expression*>& operands,
                             const sema::Type* expected, const SourceRange& range,
                             const sema::Type* first = nullptr);
+    /// Whether `operand` is an operation on small integers that an operator holds in DINT: an
+    /// arithmetic binary operation or a negation (of no literal).
+    bool held(const ast::Expression& operand) const;
+    /// Holds `operand` (held()) in DINT: computed there, its constant as computed.
+    void hold(const ast::Expression& operand);
     /// Records the type `expression`'s operands are computed in (TypedProgram::operands_of),
     /// `common` or DINT, and holds its arithmetic operands of small integers in DINT.
     void computed_in(const ast::Expression& expression, const ast::BinaryExpression& node,
@@ -113,7 +118,7 @@ private:
     /// An input of EXPT (`**`) computed in `real`: an untyped integer literal is laid out in it
     /// where its own type widens to it (figure 11), as `r := 2` is.
     void power_input(const ast::Expression& input, const sema::Type& real);
-    /// Records that the binary `expression` computes in `type`, its untyped literals too.
+    /// Records that the operator `expression` computes in `type`, its untyped literals too.
     void computed_at(const ast::Expression& expression, const sema::Type& type);
     /// A point in time or duration (`left`) added to or subtracted from `right`.
     const sema::Type* time_arithmetic(ast::BinaryOperator op, const sema::Type& left,

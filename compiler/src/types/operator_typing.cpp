@@ -22,35 +22,47 @@ bool is_arithmetic(ast::BinaryOperator op) {
 
 } // namespace
 
+bool ExpressionTyper::held(const ast::Expression& operand) const {
+    const sema::Type* type = program_.type_of(operand);
+    if (type == nullptr || !is_small_integer(program_.types().unranged(*type))) {
+        return false;
+    }
+    if (const auto* binary = std::get_if<ast::BinaryExpression>(&operand.node)) {
+        return is_arithmetic(binary->op);
+    }
+    const auto* unary = std::get_if<ast::UnaryExpression>(&operand.node);
+    return unary != nullptr && unary->op == ast::UnaryOperator::Negate &&
+           !is_untyped_literal(operand);
+}
+
+void ExpressionTyper::hold(const ast::Expression& operand) {
+    computed_at(operand, elementary(E::Dint));
+    // Its constant is the value its operator computes with, not cut to its type.
+    if (auto value = program_.constants().computed(operand)) {
+        record_constant(operand, std::move(*value));
+    }
+}
+
 void ExpressionTyper::computed_in(const ast::Expression& expression,
                                   const ast::BinaryExpression& node, const sema::Type& common) {
     // SINT, INT, USINT and UINT are computed in DINT inside an expression and cut to their type
     // where the result is stored, as CODESYS and C do (docs/st-language.md): `(a * b) MOD 1000`
-    // does not overflow at INT. An arithmetic operand of small integers is held in DINT, and an
-    // operation on one is computed in DINT too; AND, OR and XOR then cut their result at once
-    // to their type, whose bits they are. An input of a function stores its argument, so the
-    // operands of ADD, GT, ... are not held (standard_function_typing.cpp).
-    const sema::Type& dint = elementary(E::Dint);
+    // does not overflow at INT. An arithmetic operand of small integers (held()) is held in
+    // DINT, and an operation on one is computed in DINT too; AND, OR and XOR then cut their
+    // result at once to their type, whose bits they are. An input of a function stores its
+    // argument, so the operands of ADD, GT, ... are not held (standard_function_typing.cpp).
     const auto small = [&](const ast::Expression& operand) {
         const sema::Type* type = program_.type_of(operand);
         return type != nullptr && is_small_integer(program_.types().unranged(*type));
-    };
-    const auto held = [&](const ast::Expression& operand) {
-        const auto* inner = std::get_if<ast::BinaryExpression>(&operand.node);
-        return inner != nullptr && is_arithmetic(inner->op) && small(operand);
     };
     const bool wide =
         small(*node.left) && small(*node.right) && (held(*node.left) || held(*node.right));
     for (const ast::Expression* operand : {node.left.get(), node.right.get()}) {
         if (held(*operand)) {
-            computed_at(*operand, dint);
-            // Its constant is the value this operator computes with, not cut to its type.
-            if (auto value = program_.constants().computed(*operand)) {
-                record_constant(*operand, std::move(*value));
-            }
+            hold(*operand);
         }
     }
-    computed_at(expression, wide ? dint : common);
+    computed_at(expression, wide ? elementary(E::Dint) : common);
 }
 
 void ExpressionTyper::power_input(const ast::Expression& input, const sema::Type& real) {
@@ -65,9 +77,13 @@ void ExpressionTyper::computed_at(const ast::Expression& expression, const sema:
     program_.set_operands(expression, type);
     // An untyped literal operand is a value of the type its operation computes in (`i * 7` on
     // INTs computes in DINT: its 7 is a DINT), as unify()'s literals take their common type;
-    // literals have no side effects, so typing one again changes nothing else.
-    const auto& node = std::get<ast::BinaryExpression>(expression.node);
-    for (const ast::Expression* operand : {node.left.get(), node.right.get()}) {
+    // literals have no side effects, so typing one again changes nothing else. (A negation
+    // held in DINT has no literal operand: held().)
+    const auto* node = std::get_if<ast::BinaryExpression>(&expression.node);
+    if (node == nullptr) {
+        return;
+    }
+    for (const ast::Expression* operand : {node->left.get(), node->right.get()}) {
         if (is_untyped_literal(*operand) && numeric_context(&type) &&
             program_.type_of(*operand) != &type) {
             this->type(*operand, &type);
@@ -93,6 +109,12 @@ const sema::Type* ExpressionTyper::unary(const ast::Expression& expression,
     if (!sema::is_numeric(plain) && plain.elementary != E::Time && plain.elementary != E::Ltime) {
         return fail(DiagnosticCode::E0304, expression.range,
                     fmt::format("'-' needs a number, not {}", plain.name));
+    }
+    // `-(a * b)` on small integers negates the product held in DINT (computed_in), and so is
+    // computed in DINT itself; `-i` is computed in DINT where its operator holds it.
+    if (node.op == ast::UnaryOperator::Negate && held(*node.operand)) {
+        hold(*node.operand);
+        computed_at(expression, elementary(E::Dint));
     }
     return &plain;
 }

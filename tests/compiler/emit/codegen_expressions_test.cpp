@@ -144,6 +144,17 @@ INSTANTIATE_TEST_SUITE_P(
         // The operator keeps a product of INTs in DINT as an operand (CODESYS).
         IntCase{"ComparisonOperatorKeepsAnIntProductInDint", "a, b : INT := 300; c : INT := 25000;",
                 "x := BOOL_TO_LINT(a * b > c);", 1},
+        // So is a negation of INTs: -(-32768) is 32768 inside an expression, cut where stored.
+        IntCase{"NegationOfAnIntIsComputedInDint", "i : INT := -32768;",
+                "x := BOOL_TO_LINT(-i > 0);", 1},
+        IntCase{"NegationOfAUsintIsComputedInDint", "u : USINT := 5;", "x := BOOL_TO_LINT(-u < 0);",
+                1},
+        IntCase{"NegationOfAnIntProductIsComputedInDint", "a, b : INT := 300;",
+                "x := BOOL_TO_LINT(-(a * b) < -30000);", 1},
+        IntCase{"NegationHeldInDintFeedsArithmetic", "i : INT := -32768;", "x := (-i + 1) / 2;",
+                16384},
+        IntCase{"StoredNegationIsCutToItsType", "i : INT := -32768; d : DINT;", "d := -i; x := d;",
+                -32768},
         IntCase{"Move", "", "x := MOVE(42);", 42},
         IntCase{"ArrayElement", "a : ARRAY[1..5] OF INT := [1, 2(7), 3];", "x := a[3] + a[4];", 10},
         IntCase{"ArrayIndexedByVariable",

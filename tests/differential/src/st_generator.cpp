@@ -504,6 +504,15 @@ Expr Generator::bool_expr(int depth) {
         const Ty type = options_.strings && chance(25) ? Ty::String : any_scalar_type();
         const std::string op = std::array{
             " = ", " <> ", " < ", " <= ", " > ", " >= "}[static_cast<std::size_t>(below(6))];
+        // A variable of a small integer type negated: computed in DINT, so -(-32768) > 0 and
+        // -(USINT 5) < 0 (docs/st-language.md). A variable, not an expression, so that no
+        // constant wraps.
+        if ((is_signed(type) || is_unsigned(type)) && bits_of(type) < 32 && chance(25)) {
+            if (auto negated = read(type, 0, 40)) {
+                return pattern("(-$0" + op + "$1)",
+                               {std::move(*negated), expr(type, depth - 1, 40)}, r);
+            }
+        }
         return pattern("($0" + op + "$1)", {expr(type, depth - 1, 40), expr(type, depth - 1, 40)},
                        r);
     }
