@@ -110,6 +110,19 @@ TEST(ReferenceEvaluator, AForOverASubrangeEndsAtItsLastValue) {
     EXPECT_EQ(p.bits("Main.n"), 55u);
 }
 
+TEST(ReferenceEvaluator, AForUpToTheEndOfItsTypeEndsThereWrapped) {
+    const auto p = run("u : USINT; s : SINT; t : USINT(250..255); n, m, k : DINT;",
+                       "FOR u := 250 TO 255 DO n := n + 1; END_FOR;"
+                       "FOR s := -120 TO -128 BY -4 DO m := m + 1; END_FOR;"
+                       "FOR t := 250 TO 255 DO k := k + 1; END_FOR;");
+    EXPECT_EQ(p.bits("Main.n"), 6u);
+    EXPECT_EQ(p.bits("Main.u"), 0u);
+    EXPECT_EQ(p.bits("Main.m"), 3u);
+    EXPECT_EQ(p.bits("Main.s"), 124u);
+    EXPECT_EQ(p.bits("Main.k"), 6u);
+    EXPECT_EQ(p.bits("Main.t"), 255u);
+}
+
 TEST(ReferenceEvaluator, ShiftsAndRotationsWorkAtTheTypesWidth) {
     const auto p =
         run("a, b, c : BYTE; w : WORD; d : DWORD; l : LWORD; x : BYTE;",

@@ -43,6 +43,24 @@ TEST(ControlFlow, ForLoopBackEdgeCountsDown) {
     EXPECT_EQ(h.get<std::int64_t>(kI), -2);
 }
 
+// FOR u := 250 TO 255 DO n := n + 1; END_FOR on a USINT: the step past 255 wraps to 0 and
+// ends the loop (it never ended).
+TEST(ControlFlow, ForLoopBackEdgeEndsAtTheTopOfItsType) {
+    Harness h;
+    constexpr std::uint32_t kU = 0, kLimit = 1, kN = 4;
+    h.init<std::uint8_t>(kLimit, 255);
+    auto body = h.builder.label();
+    h.builder.emit(Opcode::Ldi8, self(kU), Operand::imm(250));
+    h.builder.bind(body);
+    h.builder.emit(Opcode::AddI32, self(kN), self(kN), imm(1));
+    h.builder.for_loop(Opcode::ForU8, body, self(kU), self(kLimit), 1);
+    h.builder.emit(Opcode::Ret);
+    h.end_main();
+    ASSERT_EQ(h.run(), RunState::Finished);
+    EXPECT_EQ(h.get<std::int32_t>(kN), 6);
+    EXPECT_EQ(h.get<std::uint8_t>(kU), 0);
+}
+
 TEST(ControlFlow, ConditionalJumpsOnBool) {
     Harness h;
     h.init<std::uint8_t>(0, 1);

@@ -424,8 +424,23 @@ void PouGenerator::for_statement(const ast::ForStatement& node, const SourceRang
         builder_.for_loop(program_.opcodes().get("For", suffix), body, control->operand,
                           limit->operand, static_cast<std::int16_t>(step));
     } else {
-        emit(op_width("Add", type), control->operand, control->operand, computed_step->operand);
+        // As For<I>: a step past the end of the type (the sum wraps around) ends the loop.
+        const Operand next = temp(counter);
+        emit(op_width("Add", type), next, control->operand, computed_step->operand);
+        const vm::Label down = builder_.label();
+        const vm::Label advance = builder_.label();
+        const vm::Label wrapped = builder_.label();
+        builder_.jump(less, down, computed_step->operand,
+                      program_.constant(std::vector<std::uint8_t>(type.size, 0), type.align));
+        builder_.jump(less, wrapped, next, control->operand);
+        builder_.jump(Opcode::Jmp, advance);
+        bind(down);
+        builder_.jump(less, wrapped, control->operand, next);
+        bind(advance);
+        move(control->operand, counter, Value{next, &counter});
         builder_.jump(Opcode::Jmp, check);
+        bind(wrapped);
+        move(control->operand, counter, Value{next, &counter});
     }
     bind(loop.exit);
     if (type.range) {

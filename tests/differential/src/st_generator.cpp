@@ -934,12 +934,15 @@ void Generator::for_statement(Scope& scope, int depth, Block& out) {
     const std::string name = counter(scope);
     const int from = below(4) - 1;
     const bool down = chance(20);
+    // Now and then at the end of DINT, where a step past it wraps around and ends the loop.
+    const std::int64_t offset = !chance(15) ? 0 : down ? -2147483644 : 2147483643;
     std::string head = "FOR " + name + " := ";
-    Expr limit = pattern("($0 MOD 5)", {expr(Ty::Dint, 1)}, "DINT#1");
+    Expr limit = pattern(offset == 0 ? "($0 MOD 5)" : "(" + std::to_string(offset) + " + $0 MOD 5)",
+                         {expr(Ty::Dint, 1)}, "DINT#1");
     if (down) {
-        head += std::to_string(from + 3) + " TO $e BY -" + std::to_string(1 + below(2));
+        head += std::to_string(offset + from + 3) + " TO $e BY -" + std::to_string(1 + below(2));
     } else {
-        head += std::to_string(from) + " TO $e" + (chance(30) ? " BY 2" : "");
+        head += std::to_string(offset + from) + " TO $e" + (chance(30) ? " BY 2" : "");
     }
     ++scope.loops;
     scope.places.push_back(scalar(name, Ty::Dint, 0, false));

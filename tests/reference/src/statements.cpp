@@ -138,18 +138,20 @@ Evaluator::Flow Evaluator::for_loop(const ast::ForStatement& node) {
             return flow;
         }
         step();
-        // The increment past the type's range is where engines differ: refuse it.
+        // A step past the end of the type ends the loop as one past `to` does, the variable
+        // then wrapped around (docs/st-language.md): FOR i := 250 TO 255 on a USINT ends.
         const Value next = integer(type, control->bits + by.bits);
-        if (down ? order(next, *control) > 0 : order(next, *control) < 0) {
-            throw Unsupported("a FOR control variable stepping past its type's range");
-        }
+        const bool wrapped = down ? order(next, *control) > 0 : order(next, *control) < 0;
         // A subrange control variable keeps its last value rather than step past its range
         // (docs/st-language.md); a value inside `to` but outside the range is a fault.
-        const bool passed = down ? order(next, to) < 0 : order(next, to) > 0;
+        const bool passed = wrapped || (down ? order(next, to) < 0 : order(next, to) > 0);
         if (type.range && !type.range->contains(next.as_signed()) && passed) {
             return Flow::Next;
         }
         *control = store(next, type);
+        if (wrapped) {
+            return Flow::Next;
+        }
     }
     return Flow::Next;
 }

@@ -220,9 +220,13 @@ inline bool call_native(const Program& program, std::uint32_t import, std::uint8
 #define VM_EXEC_For(T, T2)                                                                         \
     {                                                                                              \
         const auto step = static_cast<std::int16_t>(ip->aux);                                      \
-        const T next = add(load<T>(A), static_cast<T>(step));                                      \
+        const T last = load<T>(A);                                                                 \
+        const T next = add(last, static_cast<T>(step));                                            \
         store<T>(A, next);                                                                         \
-        VM_BRANCH_IF(step > 0 ? next <= load<T>(B) : next >= load<T>(B), ip->c);                   \
+        /* A step past the end of T (it wrapped) ends the loop, as a step past the limit. */       \
+        VM_BRANCH_IF(step > 0 ? next > last && next <= load<T>(B)                                  \
+                              : next < last && next >= load<T>(B),                                 \
+                     ip->c);                                                                       \
     }
 #define VM_EXEC_Sqrt(T, T2) VM_UNARY(T, T, std::sqrt(x))
 #define VM_EXEC_Trunc(T, R) VM_UNARY(T, R, (truncate<R>(x)))

@@ -154,21 +154,30 @@ bool Translator::emit_JNTst(const Instruction& ins) {
     return bit_test_branch<T>(ins, false);
 }
 
-// [A] += step, then loop while [A] <= [B] (step > 0) or [A] >= [B], compared as T.
+// [A] += step, then loop while [A] <= [B] (step > 0) or [A] >= [B], compared as T, and the
+// addition did not wrap around T (a loop up to T's greatest value ends there).
 template <typename T, typename R>
 bool Translator::emit_For(const Instruction& ins) {
     constexpr int bytes = sizeof(T);
     const auto step = static_cast<std::int16_t>(ins.aux);
     charge_block();
     load(rax, ins.a, bytes, false);
-    add(work(rax, bytes), step);
+    add(part(rax, bytes), step); // at T's width, so that its flags tell whether it wrapped
     store(ins.a, bytes, rax);
-    if constexpr (bytes < 4) {
-        std::is_signed_v<T> ? movsx(eax, part(rax, bytes)) : movzx(eax, part(rax, bytes));
-    }
-    const Cond cond =
-        compare<T>(ins.a, ins.b, step > 0 ? Cond::LE : Cond::GE, step > 0 ? Cond::BE : Cond::AE);
-    branch_if(cond, ins.c);
+    branch(ins.c, [&](Xbyak::Label& skip) {
+        // The flags of the addition: overflow for a signed T; for an unsigned
+        // one a carry adding a positive step, none adding a negative (two's complement) one.
+        if constexpr (std::is_signed_v<T>) {
+            jo(skip);
+        } else if (step > 0) {
+            jc(skip);
+        } else {
+            jnc(skip);
+        }
+        const Cond cond = compare<T>(ins.a, ins.b, step > 0 ? Cond::LE : Cond::GE,
+                                     step > 0 ? Cond::BE : Cond::AE);
+        jump_if(negate(cond), skip);
+    });
     return true;
 }
 

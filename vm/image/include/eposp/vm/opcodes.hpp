@@ -61,8 +61,8 @@
 //  JLt/JLe<T>        [x]      [y]      target   compare and branch                (safe point)
 //  Abs<T>            [dst]    [x]      -        absolute value (MIN stays MIN)
 //  For<I>            [var]    [limit]  target   FOR loop back-edge, step in aux: [A] += step;
-//                                               if step > 0 ? [A] <= [B] : [A] >= [B] goto C
-//                                                                             (safe point)
+//                                               if it did not wrap around I and step > 0 ?
+//                                               [A] <= [B] : [A] >= [B] goto C (safe point)
 //  Add/Sub/Mul/Neg/Eq/Ne/JEq/JNe/Sqrt<F>        IEEE 754 (F32, F64)
 //  Cvt<T><U>         [dst U]  [src T]  -        IEC conversion: ints wrap, to BOOL is <> 0,
 //                                               REAL to int rounds to nearest, ties to
