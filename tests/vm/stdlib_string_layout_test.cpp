@@ -37,6 +37,20 @@ TEST(StringLayout, InconsistentOrCutHeadersAreNotStrings) {
     EXPECT_EQ(string_capacity(whole), 4);
 }
 
+// A capacity above the longest string (32767, so that LEN's INT holds every length) is no
+// string even where the bytes are there: a native counting it would give a negative INT.
+TEST(StringLayout, ACapacityAboveTheLongestStringIsNoString) {
+    std::vector<std::uint8_t> bytes(kStringHeaderSize + 40001, 'x');
+    bytes[0] = 40000 & 0xFF;
+    bytes[1] = 40000 >> 8;
+    bytes[2] = 40000 & 0xFF;
+    bytes[3] = 40000 >> 8;
+    EXPECT_FALSE(string_capacity(bytes));
+    EXPECT_FALSE(read_string(bytes));
+    EXPECT_THROW(string_image(kMaxStringCapacity + 1, ""), std::logic_error);
+    EXPECT_EQ(string_capacity(string_image(kMaxStringCapacity, "")), 32767);
+}
+
 TEST(StringLayout, WritingMayReadFromTheStringItself) {
     auto bytes = string_image(8, "abcdef");
     const auto text = *read_string(bytes);

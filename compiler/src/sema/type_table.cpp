@@ -159,7 +159,7 @@ const Type* TypeTable::resolve_uncached(const ast::TypeSpec& spec) {
             const auto folded = constants_.fold_integer(*node->length);
             if (!folded || *folded < 1 || *folded > vm::stdlib::kMaxStringCapacity) {
                 diagnostics_.error(DiagnosticCode::E0313, node->length->range,
-                                   "a string length must be a constant from 1 to 65535");
+                                   "a string length must be a constant from 1 to 32767");
                 return nullptr;
             }
             capacity = *folded;

@@ -497,8 +497,8 @@ std::string operands(const char* section) {
     kW : WSTRING := "h$00E9llo"; kWCut : WSTRING[3] := "abcdef"; kHigh : STRING := '$E9t$E9';
     kNumber : STRING := '  -17'; kReal : STRING := '1.5E3'; kC : CHAR := CHAR#'q';
     kWc : WCHAR := WCHAR#"$00E9"; kLdt : LDT := LDT#2024-01-31-12:34:56.000000001;
-    kLong : STRING[40000] := ')";
-    text += std::string(40000, 'x');
+    kLong : STRING[20000] := ')";
+    text += std::string(20000, 'x');
     return text + R"(';
 END_VAR
 VAR arr : ARRAY[-2..5, 1..3] OF INT; eno : BOOL; END_VAR

@@ -19,7 +19,7 @@ std::uint16_t get_u16(const std::uint8_t* at) {
 
 void check_capacity(std::uint32_t capacity) {
     if (capacity == 0 || capacity > kMaxStringCapacity) {
-        throw std::logic_error("string capacity outside 1..65535");
+        throw std::logic_error("string capacity outside 1..32767");
     }
 }
 
@@ -47,7 +47,8 @@ std::optional<std::uint16_t> string_capacity(std::span<const std::uint8_t> bytes
     }
     const auto capacity = get_u16(bytes.data());
     const auto length = get_u16(bytes.data() + 2);
-    if (capacity == 0 || length > capacity || bytes.size() < string_size(capacity, width)) {
+    if (capacity == 0 || capacity > kMaxStringCapacity || length > capacity ||
+        bytes.size() < string_size(capacity, width)) {
         return std::nullopt;
     }
     return capacity;

@@ -22,7 +22,9 @@ namespace eposp::vm::stdlib {
 
 inline constexpr std::uint32_t kStringHeaderSize = 4;
 inline constexpr std::uint32_t kStringAlign = 2;
-inline constexpr std::uint32_t kMaxStringCapacity = 0xFFFF;
+/// So that a length or position fits the INT that LEN, FIND, LEFT, MID, ... count in (IEC
+/// 61131-3 table 43, as CODESYS and TwinCAT declare them).
+inline constexpr std::uint32_t kMaxStringCapacity = 0x7FFF;
 /// IEC 61131-3 leaves the length of a bare `STRING` to the implementer; CODESYS uses 80.
 inline constexpr std::uint32_t kDefaultStringCapacity = 80;
 
